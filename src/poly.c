@@ -1,0 +1,113 @@
+/* Polynomial roots through gsl_poly_complex_solve, guarded so that GSL's error handler (which
+ * aborts by default and belongs to the host process) is never reached:
+ * - workspaces are built here with our own malloc (GSL's allocator reports out-of-memory
+ *   through the handler), sized exactly for each degree;
+ * - every documented GSL_EINVAL path (n < 2, zero leading coefficient, workspace size) is
+ *   excluded before the call, and non-finite coefficients never reach it.
+ * The one remaining GSL error path is QR non-convergence after 60 sweeps, which does not occur
+ * for the finite, normalised polynomials of degree <= 8 we pass; if a host has turned the
+ * handler off and GSL still fails, the status is returned and the caller falls back. */
+#include "poly.h"
+
+#include <float.h>
+#include <math.h>
+#include <stdlib.h>
+
+#include <gsl/gsl_poly.h>
+
+struct cd_poly_ws {
+    /* ws[d] solves degree d (d + 1 coefficients), for 2 <= d <= CD_POLY_MAX_DEGREE. */
+    gsl_poly_complex_workspace ws[CD_POLY_MAX_DEGREE + 1];
+    double matrix[CD_POLY_MAX_DEGREE * CD_POLY_MAX_DEGREE * (CD_POLY_MAX_DEGREE + 1)];
+};
+
+cd_poly_ws *cd_poly_ws_new(void)
+{
+    cd_poly_ws *w = calloc(1, sizeof *w);
+    if (!w) return NULL;
+    double *m = w->matrix;
+    for (int d = 2; d <= CD_POLY_MAX_DEGREE; d++) {
+        w->ws[d].nc = (size_t)d; /* GSL wants nc == n - 1 == degree */
+        w->ws[d].matrix = m;
+        m += d * d;
+    }
+    return w;
+}
+
+void cd_poly_ws_free(cd_poly_ws *ws) { free(ws); }
+
+double cd_poly_eval(const double *coef, int degree, double x, double *deriv)
+{
+    double p = coef[degree], dp = 0.0;
+    for (int i = degree - 1; i >= 0; i--) {
+        dp = fma(dp, x, p);
+        p = fma(p, x, coef[i]);
+    }
+    if (deriv) *deriv = dp;
+    return p;
+}
+
+static void sort_ascending(double *x, int n)
+{
+    for (int i = 1; i < n; i++) {
+        double v = x[i];
+        int j = i - 1;
+        while (j >= 0 && x[j] > v) {
+            x[j + 1] = x[j];
+            j--;
+        }
+        x[j + 1] = v;
+    }
+}
+
+/* A few Newton steps on the polynomial; a step is kept only while it reduces |p|. */
+static double polish(const double *a, int deg, double x)
+{
+    double dp, p = cd_poly_eval(a, deg, x, &dp);
+    for (int it = 0; it < 4 && p != 0.0 && dp != 0.0; it++) {
+        double xn = x - p / dp, dpn;
+        double pn = cd_poly_eval(a, deg, xn, &dpn);
+        if (!(fabs(pn) < fabs(p))) break;
+        x = xn;
+        p = pn;
+        dp = dpn;
+    }
+    return x;
+}
+
+int cd_poly_real_roots(cd_poly_ws *ws, const double *coef, int degree, double imag_tol, double *roots)
+{
+    if (!ws || degree < 0 || degree > CD_POLY_MAX_DEGREE) return CD_POLY_FAIL;
+    double a[CD_POLY_MAX_DEGREE + 1];
+    double maxc = 0.0;
+    for (int i = 0; i <= degree; i++) {
+        if (!isfinite(coef[i])) return CD_POLY_FAIL;
+        if (fabs(coef[i]) > maxc) maxc = fabs(coef[i]);
+    }
+    if (maxc == 0.0) return CD_POLY_ZERO;
+    /* Normalise (roots unchanged), then drop leading coefficients that are rounding noise
+     * relative to the largest: they only contribute roots of magnitude ~1/eps. */
+    for (int i = 0; i <= degree; i++) a[i] = coef[i] / maxc;
+    int deg = degree;
+    while (deg > 0 && fabs(a[deg]) <= 4.0 * DBL_EPSILON) deg--;
+    int n = 0;
+    /* Exact zero constant terms: roots at 0, factored out. */
+    int low = 0;
+    while (low < deg && a[low] == 0.0) low++;
+    if (low > 0) roots[n++] = 0.0;
+    const double *b = a + low;
+    int bd = deg - low;
+    if (bd == 1) {
+        roots[n++] = -b[0] / b[1];
+    } else if (bd >= 2) {
+        double z[2 * CD_POLY_MAX_DEGREE];
+        if (gsl_poly_complex_solve(b, (size_t)bd + 1, &ws->ws[bd], z) != 0) return CD_POLY_FAIL;
+        for (int i = 0; i < bd; i++) {
+            double re = z[2 * i], im = z[2 * i + 1];
+            if (!isfinite(re) || !isfinite(im)) continue;
+            if (fabs(im) <= imag_tol * (1.0 + hypot(re, im))) roots[n++] = polish(b, bd, re);
+        }
+    }
+    sort_ascending(roots, n);
+    return n;
+}

@@ -1,0 +1,27 @@
+/* The library's only contact with GSL's polynomial solver. GSL types stay inside poly.c. */
+#ifndef CDIST_POLY_H
+#define CDIST_POLY_H
+
+#define CD_POLY_MAX_DEGREE 8
+
+typedef struct cd_poly_ws cd_poly_ws;
+
+/* Workspaces for every degree up to CD_POLY_MAX_DEGREE. NULL when memory runs out. */
+cd_poly_ws *cd_poly_ws_new(void);
+void cd_poly_ws_free(cd_poly_ws *ws);
+
+/* Real roots of sum_{i=0}^{degree} coef[i] x^i (ascending order), sorted ascending, written to
+ * roots (room for `degree` values). Leading coefficients below a relative threshold are
+ * dropped; roots whose imaginary part is at most imag_tol * (1 + |z|) count as real (callers
+ * polish every root on their true function, so extra candidates are harmless). Each root is
+ * polished by Newton on the polynomial.
+ * Returns the number of roots, CD_POLY_ZERO when every coefficient is zero, or
+ * CD_POLY_FAIL when a coefficient is not finite, degree is out of range, or GSL failed. */
+#define CD_POLY_ZERO (-1)
+#define CD_POLY_FAIL (-2)
+int cd_poly_real_roots(cd_poly_ws *ws, const double *coef, int degree, double imag_tol, double *roots);
+
+/* Horner evaluation of the polynomial and its derivative. */
+double cd_poly_eval(const double *coef, int degree, double x, double *deriv);
+
+#endif

@@ -1,0 +1,50 @@
+#!/usr/bin/python3
+"""The exported symbols, the version script and the public header agree.
+
+usage: check_symbols.py LIBRARY VERSION_SCRIPT HEADER
+- every function declared CDIST_API in the header is in the version script and vice versa;
+- the library exports exactly those, each with a version node from the script;
+- the soname is libcircledist.so.<major>.
+"""
+import re
+import subprocess
+import sys
+
+lib, mapfile, header = sys.argv[1:4]
+hdr = open(header).read()
+declared = set(re.findall(r"CDIST_API\s[^;(]*?\b(cdist_\w+)\s*\(", hdr, re.S))
+maptext = re.sub(r"/\*.*?\*/", "", open(mapfile).read(), flags=re.S)
+nodes = {}
+for node, body in re.findall(r"([\w.]+)\s*{(.*?)}", maptext, re.S):
+    glob = body.split("local:")[0].replace("global:", "")
+    for sym in re.findall(r"\b(cdist_\w+)\s*;", glob):
+        nodes[sym] = node
+out = subprocess.run(["objdump", "-T", lib], capture_output=True, text=True, check=True).stdout
+exported = {}
+for line in out.splitlines():
+    parts = line.split()
+    if len(parts) >= 7 and " .text" in line and "DF" in line:
+        exported[parts[-1]] = parts[-2]
+dyn = subprocess.run(["objdump", "-p", lib], capture_output=True, text=True, check=True).stdout
+soname = re.search(r"SONAME\s+(\S+)", dyn)
+
+failed = 0
+passed = 0
+def check(cond, msg):
+    global failed, passed
+    if cond:
+        passed += 1
+    else:
+        failed += 1
+        print("FAIL:", msg)
+
+check(len(declared) > 10, "header declarations found: %d" % len(declared))
+check(declared == set(nodes), "header vs map: only header %s, only map %s"
+      % (sorted(declared - set(nodes)), sorted(set(nodes) - declared)))
+check(set(exported) == set(nodes), "exports vs map: only exported %s, only map %s"
+      % (sorted(set(exported) - set(nodes)), sorted(set(nodes) - set(exported))))
+for sym, ver in exported.items():
+    check(ver.strip("()") == nodes.get(sym), "%s has version %s, map says %s" % (sym, ver, nodes.get(sym)))
+check(soname is not None and soname.group(1) == "libcircledist.so.1", "soname %s" % (soname and soname.group(1)))
+print("check_symbols: %d passed, %d failed" % (passed, failed))
+sys.exit(1 if failed else 0)

@@ -1,0 +1,147 @@
+/* Point-circle and point-disk: exact constructions, far-from-origin, near-axis, properties. */
+#include "check.h"
+
+static cdist_query *q;
+
+static cdist_circle circ(double cx, double cy, double cz, double nx, double ny, double nz, double r)
+{
+    cdist_circle c = {tv(cx, cy, cz), tv(nx, ny, nz), r};
+    return c;
+}
+
+static void exact_cases(void)
+{
+    cdist_result r;
+    cdist_circle c = circ(0, 0, 0, 0, 0, 1, 2);
+    cdist_vec3 p = tv(3, 4, 12); /* rho 5, h 12: distance sqrt(9 + 144) */
+    CHECK(cdist_point_circle(q, &p, &c, &r) == CDIST_OK, "status");
+    CHECK_NEAR(r.distance, sqrt(153.0), 1e-15 * 13, "pc distance");
+    CHECK(r.num_pairs == 1 && !r.equidistant, "one pair");
+    CHECK_NEAR(r.pairs[0].point[1].x, 1.2, 4e-16, "closest x");
+    CHECK_NEAR(r.pairs[0].point[1].y, 1.6, 4e-16, "closest y");
+    CHECK_NEAR(r.pairs[0].point[1].z, 0.0, 0, "closest z");
+    CHECK(r.pairs[0].point[0].x == 3 && r.pairs[0].point[0].z == 12, "first point is p");
+    CHECK(isnan(r.pairs[0].param[0]), "point param NaN");
+    /* The angle reproduces the point through cdist_circle_point. */
+    cdist_vec3 k;
+    CHECK(cdist_circle_point(&c, r.pairs[0].param[1], &k) == CDIST_OK, "circle_point");
+    CHECK(tdist(k, r.pairs[0].point[1]) < 1e-15 * 4, "angle reproduces the point");
+
+    /* On the axis: equidistant, distance sqrt(r^2 + h^2). */
+    p = tv(0, 0, -3);
+    CHECK(cdist_point_circle(q, &p, &c, &r) == CDIST_OK, "axis status");
+    CHECK(r.equidistant == 1 && r.num_pairs == 1, "axis equidistant");
+    CHECK_NEAR(r.distance, sqrt(13.0), 8e-16, "axis distance");
+    CHECK_NEAR(tdist(r.pairs[0].point[1], tv(0, 0, 0)), 2.0, 4e-16, "representative on circle");
+    /* The centre itself. */
+    p = tv(0, 0, 0);
+    CHECK(cdist_point_circle(q, &p, &c, &r) == CDIST_OK && r.equidistant && r.distance == 2.0, "centre");
+    /* Point on the circle. */
+    p = tv(0, -2, 0);
+    CHECK(cdist_point_circle(q, &p, &c, &r) == CDIST_OK && r.distance == 0.0, "on circle: %g", r.distance);
+    /* Radius 0: the circle is its centre. */
+    cdist_circle z = circ(1, 2, 3, 0, 1, 0, 0);
+    p = tv(4, 6, 3);
+    CHECK(cdist_point_circle(q, &p, &z, &r) == CDIST_OK && r.distance == 5.0 && !r.equidistant,
+          "radius 0: %g", r.distance);
+    CHECK(cdist_point_disk(q, &p, &z, &r) == CDIST_OK && r.distance == 5.0, "radius 0 disk");
+
+    /* Near the axis: 1e-12 off the axis of a unit circle at height 1 (sqrt(|D|^2 - h^2) would
+     * give 0 or 1.5e-8 here). */
+    cdist_circle u = circ(0, 0, 0, 0, 0, 1, 1);
+    p = tv(1e-12, 0, 1);
+    CHECK(cdist_point_circle(q, &p, &u, &r) == CDIST_OK && !r.equidistant, "near axis");
+    CHECK_NEAR(r.distance, sqrt((1 - 1e-12) * (1 - 1e-12) + 1.0), 4e-16, "near axis distance");
+    CHECK_NEAR(r.pairs[0].point[1].x, 1.0, 0, "near axis closest point");
+
+    /* Disk: inside projection -> plane distance; outside -> rim. */
+    cdist_circle d = circ(0, 0, 0, 0, 0, 1, 2);
+    p = tv(1, 1, 5);
+    CHECK(cdist_point_disk(q, &p, &d, &r) == CDIST_OK && r.distance == 5.0, "disk face: %g", r.distance);
+    CHECK(r.pairs[0].point[1].x == 1 && r.pairs[0].point[1].y == 1 && r.pairs[0].point[1].z == 0, "disk foot");
+    CHECK(!r.equidistant && r.num_pairs == 1, "disk unique");
+    p = tv(0, 0, 5);
+    CHECK(cdist_point_disk(q, &p, &d, &r) == CDIST_OK && r.distance == 5.0 && !r.equidistant, "disk centre");
+    CHECK(isnan(r.pairs[0].param[1]), "disk centre param NaN");
+    p = tv(6, 0, 3);
+    CHECK(cdist_point_disk(q, &p, &d, &r) == CDIST_OK && r.distance == 5.0, "disk rim: %g", r.distance);
+    p = tv(1, 0, 0);
+    CHECK(cdist_point_disk(q, &p, &d, &r) == CDIST_OK && r.distance == 0.0, "in disk");
+
+    /* Far from the origin: a 1e8 offset must not cost digits relative to the unit scale. */
+    cdist_circle f = circ(1e8 + 0.5, -3e8, 7e7, 0, 0, 1, 1);
+    p = tv(1e8 + 0.5 + 3, -3e8, 7e7 + 4);
+    CHECK(cdist_point_circle(q, &p, &f, &r) == CDIST_OK, "far");
+    CHECK_NEAR(r.distance, sqrt(20.0), 1e-15 * 5, "far distance");
+
+    /* Non-unit normal within tolerance is normalised; outside is rejected. */
+    cdist_circle nu = circ(0, 0, 0, 0, 0, 1 + 1e-9, 2);
+    p = tv(3, 4, 12);
+    CHECK(cdist_point_circle(q, &p, &nu, &r) == CDIST_OK, "near-unit normal accepted");
+    CHECK_NEAR(r.distance, sqrt(153.0), 1e-14, "near-unit normal distance");
+    nu.normal.z = 2;
+    CHECK(cdist_point_circle(q, &p, &nu, &r) == CDIST_ERR_NOT_UNIT, "length 2 normal rejected");
+    cdist_query_set_unit_tolerance(q, INFINITY);
+    CHECK(cdist_point_circle(q, &p, &nu, &r) == CDIST_OK, "any length with infinite tolerance");
+    CHECK_NEAR(r.distance, sqrt(153.0), 1e-14, "normalised distance");
+    cdist_query_set_unit_tolerance(q, 1e-6);
+}
+
+/* Properties on random inputs: invariance, the pair lies on the circle and realises the distance,
+ * and no sampled circle point is closer. */
+static void properties(void)
+{
+    cdist_result r, r2;
+    for (int it = 0; it < 2000; it++) {
+        cdist_circle c = {tv(srand1(), srand1(), srand1()), rand_unit(), 0.1 + 2 * urand()};
+        cdist_vec3 p = tv(2 * srand1(), 2 * srand1(), 2 * srand1());
+        if (it % 5 == 0) { /* near the axis */
+            double h = srand1();
+            double e = pow(10.0, -15 * urand());
+            cdist_vec3 side = rand_unit();
+            p = tv(c.center.x + h * c.normal.x + e * side.x, c.center.y + h * c.normal.y + e * side.y,
+                   c.center.z + h * c.normal.z + e * side.z);
+        }
+        for (int disk = 0; disk < 2; disk++) {
+            cdist_status st = disk ? cdist_point_disk(q, &p, &c, &r) : cdist_point_circle(q, &p, &c, &r);
+            CHECK(st == CDIST_OK, "status");
+            long double ref = disk ? ref_point_disk(p, c) : ref_point_circle(p, c);
+            double L = fmax(c.radius, tdist(p, c.center));
+            CHECK_NEAR(r.distance, (double)ref, 4e-16 * L, "vs long double");
+            cdist_vec3 k = r.pairs[0].point[1];
+            double on = (double)(disk ? ref_point_disk(k, c) : ref_point_circle(k, c));
+            CHECK(on <= 1e-15 * L, "closest point off the object by %g", on);
+            CHECK_NEAR(tdist(p, k), r.distance, 1e-15 * L, "pair realises distance");
+            /* Sampled points are never closer. */
+            cdist_vec3 u, v;
+            cdist_circle_basis(&c, &u, &v);
+            for (int s = 0; s < 64; s++) {
+                double a = 2 * M_PI * s / 64, rad = disk ? c.radius * urand() : c.radius;
+                cdist_vec3 x = tv(c.center.x + rad * (cos(a) * u.x + sin(a) * v.x),
+                                  c.center.y + rad * (cos(a) * u.y + sin(a) * v.y),
+                                  c.center.z + rad * (cos(a) * u.z + sin(a) * v.z));
+                CHECK(tdist(p, x) >= r.distance - 1e-15 * L, "sample closer");
+            }
+            /* Invariance under rotation, translation and scale. */
+            trot R = rand_rotation();
+            double s = pow(10.0, 3 * srand1());
+            cdist_vec3 t = tv(100 * srand1(), 100 * srand1(), 100 * srand1());
+            cdist_circle c2 = xform_circle(&R, s, t, c);
+            cdist_vec3 p2 = xform_point(&R, s, t, p);
+            st = disk ? cdist_point_disk(q, &p2, &c2, &r2) : cdist_point_circle(q, &p2, &c2, &r2);
+            CHECK(st == CDIST_OK, "status");
+            double L2 = s * L + 1e-16 * 300 * s; /* translation rounding */
+            CHECK_NEAR(r2.distance, s * r.distance, 1e-13 * (L2 + 100), "invariance");
+        }
+    }
+}
+
+int main(void)
+{
+    q = cdist_query_new();
+    CHECK(q != NULL, "handle");
+    exact_cases();
+    properties();
+    cdist_query_free(q);
+    return check_summary("test_point");
+}
