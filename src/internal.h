@@ -117,6 +117,13 @@ cdist_status cd_linear_disk(cdist_query *q, cdist_method method, vec3 B, vec3 M,
 /* Circle c0 to circle c1 (c0->c at the origin, c1 relative to it). iterations may be NULL. */
 cdist_status cd_circle_circle_core(cdist_query *q, cdist_method method, const cd_circle *c0, const cd_circle *c1,
                                    cd_best *b, int *iterations);
+/* The non-robust circle-circle methods (src/cc_poly.c, src/cc_iteration.c), called by the
+ * dispatcher in src/circle_circle.c with c0->c at the origin. Each handles every configuration
+ * (setting b->equidistant where infinitely many pairs are closest) and offers its candidates to
+ * b, or returns a non-OK status to make the dispatcher fall back to the robust method. */
+cdist_status cd_cc_polynomial(cdist_query *q, const cd_circle *c0, const cd_circle *c1, cd_best *b);
+cdist_status cd_cc_iteration(cdist_query *q, const cd_circle *c0, const cd_circle *c1, cd_best *b, int *iterations);
+
 /* Every critical angle on c0 (in c0's basis) of theta -> dist^2(c0(theta), c1); returns the
  * count (at most cap), or -1 when the function is constant (every angle critical). */
 int cd_circle_circle_critical(cdist_query *q, const cd_circle *c0, const cd_circle *c1, double *theta0, int cap);
