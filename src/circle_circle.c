@@ -71,7 +71,7 @@ cdist_status cdist_circle_circle_batch(cdist_query *q, size_t n, const cdist_cir
         if (statuses) statuses[i] = st;
         if (st != CDIST_OK && first == CDIST_OK) {
             first = st;
-            snprintf(first_msg, sizeof first_msg, "batch entry %zu: %s", i, q->message);
+            snprintf(first_msg, sizeof first_msg, "batch entry %zu: %.200s", i, q->message);
         }
     }
     if (first != CDIST_OK) return cd_fail(q, first, "%s", first_msg);
