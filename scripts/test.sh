@@ -1,0 +1,31 @@
+#!/bin/sh
+# The whole test suite: a release-style build and an ASan/UBSan build, every meson test in
+# both. Prints a closing "N passed, N failed" line. usage: scripts/test.sh
+set -u
+cd "$(dirname "$0")/.."
+total_ok=0
+total_fail=0
+run_suite() { # DIR [meson setup options...]
+  dir=$1
+  shift
+  if [ ! -d "$dir" ]; then
+    meson setup "$dir" "$@" || return 1
+  fi
+  meson compile -C "$dir" || return 1
+  meson test -C "$dir" --print-errorlogs --num-processes 2
+  rc=$?
+  log="$dir/meson-logs/testlog.json"
+  ok=$(grep -c '"result": "OK"' "$log" 2>/dev/null || true)
+  fail=$(grep -c '"result": "\(FAIL\|TIMEOUT\|ERROR\)"' "$log" 2>/dev/null || true)
+  total_ok=$((total_ok + ok))
+  total_fail=$((total_fail + fail))
+  return $rc
+}
+status=0
+run_suite build || status=1
+# Sanitizers: ASan + UBSan, aborting on any report.
+ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 \
+  run_suite build-sanitize -Db_sanitize=address,undefined -Db_lundef=false --buildtype=debug || status=1
+[ "$status" -ne 0 ] && [ "$total_fail" -eq 0 ] && total_fail=1
+echo "test suites: $total_ok passed, $total_fail failed"
+exit $status
