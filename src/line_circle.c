@@ -77,29 +77,31 @@ static inline double f_at(const lc_model *m, double s)
     return fma(h, h, dr * dr);
 }
 
-/* Root of F' in [lo, hi] where F' increases: Newton steps safeguarded by bisection. Every
- * operation commutes with s -> -s when F' is odd, so mirrored brackets give mirrored roots. */
+/* Root of F' in [lo, hi] where F' increases: Newton steps safeguarded by bisection (a Newton
+ * step is taken only when it stays inside the bracket and shrinks faster than bisection would,
+ * as in rtsafe). Every operation commutes with s -> -s when F' is odd, so mirrored brackets give
+ * mirrored roots. */
 static double solve(const lc_model *m, double lo, double hi)
 {
     if (!(lo < hi)) return lo;
-    double x = 0.5 * (lo + hi), dxold = hi - lo;
+    double x = 0.5 * (lo + hi), dxold = hi - lo, dx = dxold;
     for (int it = 0; it < 200; it++) {
         double f = fp(m, x);
         if (f == 0.0) return x;
         if (f < 0.0) lo = x;
         else hi = x;
-        if (!(hi - lo > 0x1p-62)) break;
-        double df = fpp(m, x), xn = x;
-        int newton = 0;
-        if (df > 0.0) {
-            xn = x - f / df;
-            newton = xn > lo && xn < hi && fabs(xn - x) <= 0.5 * dxold;
+        double df = fpp(m, x), step = f / df, xn = x - step;
+        if (df > 0.0 && (fabs(step) <= 2.0 * EPS * fabs(x) || fabs(step) <= 0x1p-62)) return xn; /* converged */
+        if (!(df > 0.0) || !(xn > lo && xn < hi) || fabs(2.0 * f) > fabs(dxold * df)) {
+            dxold = dx;
+            xn = 0.5 * (lo + hi);
+            dx = fabs(xn - x);
+        } else {
+            dxold = dx;
+            dx = fabs(xn - x);
         }
-        if (!newton) xn = 0.5 * (lo + hi);
-        double dx = fabs(xn - x);
-        dxold = dx;
         x = xn;
-        if (dx <= 2.0 * EPS * fabs(x) || dx <= 0x1p-62) break;
+        if (dx <= 2.0 * EPS * fabs(x) || !(hi - lo > 0x1p-62)) break;
     }
     return x;
 }
@@ -204,6 +206,43 @@ static void offer_end(lc_ctx *x, double t)
     vec3 K = on_axis ? circle_pt(c, 0, 0, &ang) : circle_pt(c, v_dot(c->u, w), v_dot(c->v, w), &ang);
     double dr = rho - c->r;
     push(x, fma(dr, dr, h * h), P, K, t, ang, on_axis && c->r > 0.0);
+}
+
+/* Two candidates are the same minimum unless the distance rises between them by more than the
+ * tie tolerance: near a flat minimum (a tangent line, F ~ s^4) the solvers may stop at several
+ * points of the flat bottom, which are not distinct minima, so only the lowest is kept. Genuine
+ * pairs of minima (symmetric configurations) have a maximum between them. */
+static void merge_basins(lc_ctx *x, const lc_model *m, double tol)
+{
+    /* sort by t */
+    for (int i = 1; i < x->n; i++)
+        for (int j = i; j > 0 && x->cand[j].param[0] < x->cand[j - 1].param[0]; j--) {
+            cd_cand tc = x->cand[j];
+            x->cand[j] = x->cand[j - 1];
+            x->cand[j - 1] = tc;
+            int te = x->eq[j];
+            x->eq[j] = x->eq[j - 1];
+            x->eq[j - 1] = te;
+        }
+    int e = ilogb(x->sigma);
+    for (int i = 0; i + 1 < x->n;) {
+        double sa = (x->cand[i].param[0] - x->t0) * x->sigma - x->uO;
+        double sb = (x->cand[i + 1].param[0] - x->t0) * x->sigma - x->uO;
+        double fmaxv = 0.0;
+        for (int k = 1; k <= 3; k++) fmaxv = fmax(fmaxv, f_at(m, sa + 0.25 * k * (sb - sa)));
+        double dmid = ldexp(sqrt(fmaxv), -e);
+        double d0 = sqrt(x->cand[i].d2), d1 = sqrt(x->cand[i + 1].d2);
+        if (dmid > fmax(d0, d1) + tol) {
+            i++;
+            continue;
+        }
+        int drop = (x->cand[i + 1].d2 < x->cand[i].d2) ? i : i + 1;
+        for (int j = drop; j + 1 < x->n; j++) {
+            x->cand[j] = x->cand[j + 1];
+            x->eq[j] = x->eq[j + 1];
+        }
+        x->n--;
+    }
 }
 
 /* ---- the two solvers on the general model (m0 > 0) ---- */
@@ -392,6 +431,7 @@ static cdist_status linear_circle(cdist_query *q, cdist_method method, vec3 B, v
     for (int i = 0; i < nr; i++) offer_model(&x, &m, roots[i]);
     if (isfinite(tmin)) offer_end(&x, tmin);
     if (isfinite(tmax)) offer_end(&x, tmax);
+    merge_basins(&x, &m, CD_TIE_ULPS * EPS * b->scale);
 
 done:;
     /* Offer everything; the equidistant flag is set when our best candidate is an on-axis
