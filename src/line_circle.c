@@ -21,7 +21,6 @@
  * rho - r is computed as ((|x1| - r)(|x1| + r) + x2^2) / (rho + r), free of cancellation.
  */
 #include <math.h>
-#include <stdio.h>
 
 #include "internal.h"
 
@@ -427,6 +426,10 @@ static cdist_status linear_circle(cdist_query *q, cdist_method method, vec3 B, v
         nr = poly_roots(q, &m, smin, smax, roots);
         if (nr < 0 && used) *used = CDIST_METHOD_ROBUST; /* polynomial module failed: fall back */
     }
+    if (nr == 0 && !isfinite(smin) && !isfinite(smax)) {
+        nr = -1; /* a whole line always has a minimum: the polynomial path lost it, fall back */
+        if (used) *used = CDIST_METHOD_ROBUST;
+    }
     if (nr < 0) robust_roots(&m, smin, smax, roots, &nr);
     for (int i = 0; i < nr; i++) offer_model(&x, &m, roots[i]);
     if (isfinite(tmin)) offer_end(&x, tmin);
@@ -470,52 +473,60 @@ static double range_scale(vec3 B, vec3 M, double tmin, double tmax, double r)
     return fmax(r, v_norm(v_axpy(B, t, M)));
 }
 
-static cdist_status run(cdist_query *q, vec3 origin, vec3 M, double tmin, double tmax, const cd_circle *cc,
-                        cdist_result *r, double *scale_out)
+/* Runs the core for the points origin + t D, t in [tmin, tmax] (D as the caller passed it, M its
+ * unit direction, len its length); pairs' param[0] is that t. The origin is first moved along D,
+ * in absolute coordinates, to the point nearest the circle centre (one fma per coordinate with the
+ * caller's own D, so the new origin is on the caller's line to within its own rounding), and only
+ * then translated to the centre: an origin far along the line would otherwise lose
+ * eps * |origin - C| in the translation and eps * |t| in the normalisation of D. */
+static cdist_status run(cdist_query *q, vec3 origin, vec3 D, vec3 M, double len, double tmin, double tmax,
+                        const cd_circle *cc, cdist_result *r)
 {
-    vec3 B = v_sub(origin, cc->c);
+    double t0 = -v_dot(v_sub(origin, cc->c), D) / v_sqr(D);
+    vec3 B = v_sub(v_axpy(origin, t0, D), cc->c);
+    double lo = (tmin - t0) * len, hi = (tmax - t0) * len;
+    if (tmin == t0) lo = 0.0;
+    if (tmax == t0) hi = 0.0;
     cd_best b;
-    double L = range_scale(B, M, tmin, tmax, cc->r);
-    cd_best_init(&b, L);
+    cd_best_init(&b, range_scale(B, M, lo, hi, cc->r));
     cdist_method used;
-    cdist_status st = cd_linear_circle_ex(q, cd_pick_method(q, LC_METHODS, CDIST_METHOD_ROBUST), B, M, tmin, tmax,
-                                          cc, &b, &used);
+    cdist_status st = cd_linear_circle_ex(q, cd_pick_method(q, LC_METHODS, CDIST_METHOD_ROBUST), B, M, lo, hi, cc,
+                                          &b, &used);
     if (st) return st;
     if (b.n == 0) return cd_fail(q, CDIST_ERR_INTERNAL, "line-circle: no candidate");
     cd_best_to_result(&b, cc->c, 0, r);
-    if (scale_out) *scale_out = L;
+    for (int i = 0; i < r->num_pairs; i++) {
+        double t = t0 + r->pairs[i].param[0] / len;
+        r->pairs[i].param[0] = fmin(fmax(t, tmin), tmax);
+    }
     return cd_ok(q, r, used);
 }
 
 static cdist_status linear_public(cdist_query *q, const cdist_vec3 *origin, const cdist_vec3 *dir, const void *obj,
-                                  const char *what, double tmin, double tmax, const cdist_circle *c, cdist_result *r)
+                                  int is_ray, double tmin, double tmax, const cdist_circle *c, cdist_result *r)
 {
     cdist_status st = cd_check_handle(q, r);
     if (st) return st;
-    if ((st = cd_check_ptr(q, obj, what))) return st;
-    char buf[32], dbuf[32];
-    snprintf(buf, sizeof buf, "%s origin", what);
-    snprintf(dbuf, sizeof dbuf, "%s direction", what);
+    if ((st = cd_check_ptr(q, obj, is_ray ? "ray" : "line"))) return st;
     cd_circle cc;
     vec3 M;
     double len;
-    if ((st = cd_check_point(q, origin, buf)) || (st = cd_check_direction(q, dir, dbuf, 1, &M, &len)) ||
+    if ((st = cd_check_point(q, origin, is_ray ? "ray origin" : "line origin")) ||
+        (st = cd_check_direction(q, dir, is_ray ? "ray direction" : "line direction", 1, &M, &len)) ||
         (st = cd_check_circle(q, c, "circle", &cc)))
         return st;
-    if ((st = run(q, *origin, M, tmin, tmax, &cc, r, NULL))) return st;
-    /* t refers to the unit direction; report it for the direction as passed. */
-    for (int i = 0; i < r->num_pairs; i++) r->pairs[i].param[0] /= len;
-    return CDIST_OK;
+    /* t is reported for the direction as passed */
+    return run(q, *origin, *dir, M, len, tmin, tmax, &cc, r);
 }
 
 cdist_status cdist_line_circle(cdist_query *q, const cdist_line *l, const cdist_circle *c, cdist_result *r)
 {
-    return linear_public(q, l ? &l->origin : NULL, l ? &l->direction : NULL, l, "line", -INFINITY, INFINITY, c, r);
+    return linear_public(q, l ? &l->origin : NULL, l ? &l->direction : NULL, l, 0, -INFINITY, INFINITY, c, r);
 }
 
 cdist_status cdist_ray_circle(cdist_query *q, const cdist_ray *l, const cdist_circle *c, cdist_result *r)
 {
-    return linear_public(q, l ? &l->origin : NULL, l ? &l->direction : NULL, l, "ray", 0.0, INFINITY, c, r);
+    return linear_public(q, l ? &l->origin : NULL, l ? &l->direction : NULL, l, 1, 0.0, INFINITY, c, r);
 }
 
 cdist_status cdist_segment_circle(cdist_query *q, const cdist_segment *s, const cdist_circle *c, cdist_result *r)
@@ -544,12 +555,8 @@ cdist_status cdist_segment_circle(cdist_query *q, const cdist_segment *s, const 
     vec3 M;
     double len;
     if ((st = cd_check_direction(q, &D, "segment direction p1 - p0", 0, &M, &len))) return st;
-    if ((st = run(q, s->p0, M, 0.0, len, &cc, r, NULL))) return st;
-    for (int i = 0; i < r->num_pairs; i++) {
-        double sp = r->pairs[i].param[0] / len;
-        sp = fmin(fmax(sp, 0.0), 1.0);
-        r->pairs[i].param[0] = sp;
-        if (sp == 0.0) r->pairs[i].point[0] = s->p0; /* exactly the caller's start point */
-    }
+    if ((st = run(q, s->p0, D, M, len, 0.0, 1.0, &cc, r))) return st;
+    for (int i = 0; i < r->num_pairs; i++)
+        if (r->pairs[i].param[0] == 0.0) r->pairs[i].point[0] = s->p0; /* exactly the caller's start point */
     return CDIST_OK;
 }

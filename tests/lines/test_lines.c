@@ -267,6 +267,64 @@ static void methods_agree(void)
     printf("methods agree on random lines: max difference %.3g of scale; vs brute force %.3g\n", worst, worstb);
 }
 
+/* ---- degenerate families against the long double brute force ---- */
+
+static void degenerate_families(void)
+{
+    double worst = 0;
+    for (int it = 0; it < 4000; it++) {
+        cdist_circle c = circ(tv(srand1(), srand1(), srand1()), rand_unit(), 0.1 + 2 * urand());
+        cdist_vec3 n = c.normal, e = unitv(sub(rand_unit(), scl(dot(rand_unit(), n), n)));
+        e = unitv(sub(e, scl(dot(e, n), n)));
+        cdist_vec3 f = tv(n.y * e.z - n.z * e.y, n.z * e.x - n.x * e.z, n.x * e.y - n.y * e.x);
+        double k = pow(10.0, -3 - 12 * urand()), r = c.radius;
+        cdist_vec3 B, M;
+        switch (it % 6) {
+        case 0: /* nearly perpendicular to the plane, anywhere near the circle */
+            M = unitv(add(n, scl(k, e)));
+            B = add(c.center, scl(r, tv(1.5 * srand1(), 1.5 * srand1(), 1.5 * srand1())));
+            break;
+        case 1: /* nearly parallel, nearly tangent (inside or outside), at some height */
+            M = unitv(add(e, scl(k * srand1(), n)));
+            B = add(add(c.center, scl(r * (1 + k * srand1()), f)), scl(r * srand1() * (it % 12 < 6), n));
+            break;
+        case 2: /* nearly through the centre */
+            M = rand_unit();
+            B = add(c.center, scl(k * r, rand_unit()));
+            break;
+        case 3: /* nearly the axis */
+            M = unitv(add(n, scl(k, rand_unit())));
+            B = add(c.center, add(scl(k * r, e), scl(3 * srand1(), n)));
+            break;
+        case 4: /* far from the circle, or a tiny circle */
+            M = rand_unit();
+            B = add(c.center, scl(1e3 * r, rand_unit()));
+            if (it % 12 < 6) c.radius = r * k;
+            break;
+        default: /* origin far along the line */
+            M = rand_unit();
+            B = add(add(c.center, scl(r, tv(srand1(), srand1(), srand1()))), scl(1e4 * srand1(), M));
+            break;
+        }
+        cdist_vec3 rel = sub(B, c.center);
+        double t0 = -dot(rel, M);
+        cdist_vec3 B0 = add(rel, scl(t0, M));
+        double L = fmax(c.radius, norm(B0)), R = 2 * L + 1;
+        ldprob p = mkprob(B, M, c);
+        long double ref = brute(&p, t0 - R, t0 + R, NULL);
+        for (int mi = 0; mi < 2; mi++) {
+            cdist_result res;
+            CHECK(line_q(mi, B, M, c, &res) == CDIST_OK, "degenerate status");
+            double err = (double)fabsl(res.distance - ref) / L;
+            worst = fmax(worst, err);
+            CHECK(err <= 1e-13, "degenerate family %d, k %.3g (%s): %.17g vs brute force %.17Lg (%.3g of scale)",
+                  it % 6, k, mname[mi], res.distance, ref, err);
+            check_pairs("degenerate", &res, B, M, c, 1e-13 * fmax(L, norm(rel)));
+        }
+    }
+    printf("degenerate families vs brute force: max error %.3g of scale\n", worst);
+}
+
 /* ---- rays and segments against the long double brute force ---- */
 
 static void rays_segments(void)
@@ -439,6 +497,7 @@ int main(void)
     q = cdist_query_new();
     special_cases();
     methods_agree();
+    degenerate_families();
     rays_segments();
     properties();
     bad_input();
