@@ -478,12 +478,27 @@ static double range_scale(vec3 B, vec3 M, double tmin, double tmax, double r)
  * in absolute coordinates, to the point nearest the circle centre (one fma per coordinate with the
  * caller's own D, so the new origin is on the caller's line to within its own rounding), and only
  * then translated to the centre: an origin far along the line would otherwise lose
- * eps * |origin - C| in the translation and eps * |t| in the normalisation of D. */
+ * eps * |origin - C| in the translation and eps * |t| in the normalisation of D. The move is done
+ * on origin - C kept exactly as two doubles, so nothing is rounded to the grid of the absolute
+ * coordinates either (objects far from the coordinate origin). */
+/* a - b = hi + lo exactly (Knuth's TwoSum). */
+static inline double two_diff(double a, double b, double *lo)
+{
+    double s = a - b, a1 = s + b, b1 = s - a1;
+    *lo = (a - a1) - (b + b1);
+    return s;
+}
+
 static cdist_status run(cdist_query *q, vec3 origin, vec3 D, vec3 M, double len, double tmin, double tmax,
                         const cd_circle *cc, cdist_result *r)
 {
-    double t0 = -v_dot(v_sub(origin, cc->c), D) / v_sqr(D);
-    vec3 B = v_sub(v_axpy(origin, t0, D), cc->c);
+    /* origin - C = hi + lo exactly; B = hi + t0 D + lo, rounded once at the scale of B */
+    vec3 lo3, hi3;
+    hi3.x = two_diff(origin.x, cc->c.x, &lo3.x);
+    hi3.y = two_diff(origin.y, cc->c.y, &lo3.y);
+    hi3.z = two_diff(origin.z, cc->c.z, &lo3.z);
+    double t0 = -v_dot(hi3, D) / v_sqr(D);
+    vec3 B = v_add(v_axpy(hi3, t0, D), lo3);
     double lo = (tmin - t0) * len, hi = (tmax - t0) * len;
     if (tmin == t0) lo = 0.0;
     if (tmax == t0) hi = 0.0;
