@@ -26,6 +26,14 @@
 
 #define EPS DBL_EPSILON
 
+/* Multiply-add in the model's hot loop: one rounding with a hardware fma, two otherwise (fma()
+ * without hardware support is a slow library call; the model needs no single rounding there). */
+#ifdef FP_FAST_FMA
+#define MADD(a, b, c) fma(a, b, c)
+#else
+#define MADD(a, b, c) ((a) * (b) + (c))
+#endif
+
 typedef struct lc_model {
     double r;         /* radius (scaled) */
     double a;         /* N . M */
@@ -39,29 +47,29 @@ typedef struct lc_model {
 /* rho - r without cancellation, given x2 and rho. */
 static inline double rho_minus_r(const lc_model *m, double x2, double rho)
 {
-    return fma(x2, x2, (m->ax1 - m->r) * (m->ax1 + m->r)) / (rho + m->r);
+    return MADD(x2, x2, (m->ax1 - m->r) * (m->ax1 + m->r)) / (rho + m->r);
 }
 
 /* F'/2 at height h and in-plane coordinate x2. On the axis (rho = 0) F' is undefined: side = -1
  * or +1 gives the one-sided limit (x2/rho -> side), side = 0 the mean of both. */
 static inline double fp_at(const lc_model *m, double h, double x2, int side)
 {
-    double rho = sqrt(fma(m->x1, m->x1, x2 * x2));
+    double rho = sqrt(MADD(m->x1, m->x1, x2 * x2));
     if (rho == 0.0) return m->a * h - side * m->r * m->m0;
-    return fma(m->a, h, m->m0 * x2 * (rho_minus_r(m, x2, rho) / rho));
+    return MADD(m->a, h, m->m0 * x2 * (rho_minus_r(m, x2, rho) / rho));
 }
 
 static inline double fp(const lc_model *m, double s)
 {
-    return fp_at(m, fma(m->a, s, m->h), fma(m->m0, s, m->c2), 0);
+    return fp_at(m, MADD(m->a, s, m->h), MADD(m->m0, s, m->c2), 0);
 }
 
 /* F''/2 */
 static inline double fpp(const lc_model *m, double s)
 {
-    double x2 = fma(m->m0, s, m->c2);
-    double rho = sqrt(fma(m->x1, m->x1, x2 * x2));
-    double k = fma(m->a, m->a, m->m0 * m->m0);
+    double x2 = MADD(m->m0, s, m->c2);
+    double rho = sqrt(MADD(m->x1, m->x1, x2 * x2));
+    double k = MADD(m->a, m->a, m->m0 * m->m0);
     if (rho == 0.0) return -INFINITY;
     double q = m->ax1 / rho;
     return k - m->r * m->m0 * m->m0 * q * q / rho;
@@ -70,10 +78,10 @@ static inline double fpp(const lc_model *m, double s)
 /* Squared distance (scaled) at s. */
 static inline double f_at(const lc_model *m, double s)
 {
-    double h = fma(m->a, s, m->h), x2 = fma(m->m0, s, m->c2);
-    double rho = sqrt(fma(m->x1, m->x1, x2 * x2));
+    double h = MADD(m->a, s, m->h), x2 = MADD(m->m0, s, m->c2);
+    double rho = sqrt(MADD(m->x1, m->x1, x2 * x2));
     double dr = rho_minus_r(m, x2, rho);
-    return fma(h, h, dr * dr);
+    return MADD(h, h, dr * dr);
 }
 
 /* Root of F' in [lo, hi] where F' increases: Newton steps safeguarded by bisection (a Newton
@@ -179,14 +187,14 @@ static vec3 circle_pt(const cd_circle *c, double X, double Y, double *ang)
 /* A critical point of the model at s. */
 static void offer_model(lc_ctx *x, const lc_model *m, double s)
 {
-    double h = fma(m->a, s, m->h), x2 = fma(m->m0, s, m->c2);
-    double rho = sqrt(fma(m->x1, m->x1, x2 * x2));
+    double h = MADD(m->a, s, m->h), x2 = MADD(m->m0, s, m->c2);
+    double rho = sqrt(MADD(m->x1, m->x1, x2 * x2));
     double dr = rho_minus_r(m, x2, rho);
-    double d2 = ldexp(fma(h, h, dr * dr), -2 * ilogb(x->sigma));
+    double d2 = ldexp(MADD(h, h, dr * dr), -2 * ilogb(x->sigma));
     double t = x->t0 + (x->uO + s) / x->sigma;
     vec3 P = v_axpy(x->B, t, x->M);
     /* X = x1 e1 + x2 e2, e1 = (-e2y, e2x) */
-    double X = fma(m->x1, -m->e2y, x2 * m->e2x), Y = fma(m->x1, m->e2x, x2 * m->e2y);
+    double X = MADD(m->x1, -m->e2y, x2 * m->e2x), Y = MADD(m->x1, m->e2x, x2 * m->e2y);
     double ang;
     vec3 K = circle_pt(x->c, X, Y, &ang);
     push(x, d2, P, K, t, ang, rho <= x->eqtol);
@@ -373,7 +381,7 @@ static cdist_status linear_circle(cdist_query *q, cdist_method method, vec3 B, v
     double m2x = v_dot(c->v, w), m2y = -v_dot(c->u, w);
     double b2x = v_dot(c->v, nb), b2y = -v_dot(c->u, nb);
     double a = v_dot(N, M), h0 = v_dot(N, B0s);
-    double m0 = hypot(m2x, m2y);
+    double m0 = sqrt(m2x * m2x + m2y * m2y); /* scaled: no overflow or harmful underflow */
 
     if (tmin == tmax) {
         offer_end(&x, tmin);
@@ -386,7 +394,7 @@ static cdist_status linear_circle(cdist_query *q, cdist_method method, vec3 B, v
          * the axis every circle point is equally close (equidistant, also for rays/segments). */
         double u = fmin(fmax(-h0 / a, umin), umax);
         double X = fma(u, m2x, b2x), Y = fma(u, m2y, b2y);
-        double rho = hypot(X, Y), h = fma(a, u, h0), dr = rho - rs;
+        double rho = sqrt(X * X + Y * Y), h = fma(a, u, h0), dr = rho - rs;
         double t = x.t0 + u / sg;
         if (u == umin && isfinite(tmin)) t = tmin;
         if (u == umax && isfinite(tmax)) t = tmax;
@@ -489,16 +497,23 @@ static inline double two_diff(double a, double b, double *lo)
     return s;
 }
 
-static cdist_status run(cdist_query *q, vec3 origin, vec3 D, vec3 M, double len, double tmin, double tmax,
-                        const cd_circle *cc, cdist_result *r)
+vec3 cd_line_near_centre(vec3 origin, vec3 D, vec3 C, double *t0)
 {
     /* origin - C = hi + lo exactly; B = hi + t0 D + lo, rounded once at the scale of B */
     vec3 lo3, hi3;
-    hi3.x = two_diff(origin.x, cc->c.x, &lo3.x);
-    hi3.y = two_diff(origin.y, cc->c.y, &lo3.y);
-    hi3.z = two_diff(origin.z, cc->c.z, &lo3.z);
-    double t0 = -v_dot(hi3, D) / v_sqr(D);
-    vec3 B = v_add(v_axpy(hi3, t0, D), lo3);
+    hi3.x = two_diff(origin.x, C.x, &lo3.x);
+    hi3.y = two_diff(origin.y, C.y, &lo3.y);
+    hi3.z = two_diff(origin.z, C.z, &lo3.z);
+    double t = -v_dot(hi3, D) / v_sqr(D);
+    *t0 = t;
+    return v_add(v_axpy(hi3, t, D), lo3);
+}
+
+static cdist_status run(cdist_query *q, vec3 origin, vec3 D, vec3 M, double len, double tmin, double tmax,
+                        const cd_circle *cc, cdist_result *r)
+{
+    double t0;
+    vec3 B = cd_line_near_centre(origin, D, cc->c, &t0);
     double lo = (tmin - t0) * len, hi = (tmax - t0) * len;
     if (tmin == t0) lo = 0.0;
     if (tmax == t0) hi = 0.0;
