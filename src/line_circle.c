@@ -484,7 +484,8 @@ static double range_scale(vec3 B, vec3 M, double tmin, double tmax, double r)
 /* Runs the core for the points origin + t D, t in [tmin, tmax] (D as the caller passed it, M its
  * unit direction, len its length); pairs' param[0] is that t. The origin is first moved along D,
  * in absolute coordinates, to the point nearest the circle centre (one fma per coordinate with the
- * caller's own D, so the new origin is on the caller's line to within its own rounding), and only
+ * caller's own D, so the new origin is on the caller's line to within its own rounding; clamped
+ * to the ray or segment), and only
  * then translated to the centre: an origin far along the line would otherwise lose
  * eps * |origin - C| in the translation and eps * |t| in the normalisation of D. The move is done
  * on origin - C kept exactly as two doubles, so nothing is rounded to the grid of the absolute
@@ -497,14 +498,18 @@ static inline double two_diff(double a, double b, double *lo)
     return s;
 }
 
-vec3 cd_line_near_centre(vec3 origin, vec3 D, vec3 C, double *t0)
+vec3 cd_line_near_centre(vec3 origin, vec3 D, vec3 C, double tmin, double tmax, double *t0)
 {
     /* origin - C = hi + lo exactly; B = hi + t0 D + lo, rounded once at the scale of B */
     vec3 lo3, hi3;
     hi3.x = two_diff(origin.x, C.x, &lo3.x);
     hi3.y = two_diff(origin.y, C.y, &lo3.y);
     hi3.z = two_diff(origin.z, C.z, &lo3.z);
-    double t = -v_dot(hi3, D) / v_sqr(D);
+    double m = v_maxabs(D);
+    vec3 Ds = v_scale(1.0 / m, D); /* |D|^2 may underflow or overflow, |Ds|^2 cannot */
+    double t = -(v_dot(hi3, Ds) / v_sqr(Ds)) / m;
+    if (!isfinite(t)) t = 0.0;
+    t = fmin(fmax(t, tmin), tmax); /* rays and segments: stay on the object (no cancellation in t) */
     *t0 = t;
     return v_add(v_axpy(hi3, t, D), lo3);
 }
@@ -513,7 +518,7 @@ static cdist_status run(cdist_query *q, vec3 origin, vec3 D, vec3 M, double len,
                         const cd_circle *cc, cdist_result *r)
 {
     double t0;
-    vec3 B = cd_line_near_centre(origin, D, cc->c, &t0);
+    vec3 B = cd_line_near_centre(origin, D, cc->c, tmin, tmax, &t0);
     double lo = (tmin - t0) * len, hi = (tmax - t0) * len;
     if (tmin == t0) lo = 0.0;
     if (tmax == t0) hi = 0.0;

@@ -446,6 +446,57 @@ static void properties(void)
     cdist_query_set_method(q, CDIST_METHOD_AUTO);
 }
 
+/* ---- extreme magnitudes ---- */
+
+static void extremes(void)
+{
+    /* power-of-two scalings are exact: the distance must scale exactly (to rounding) */
+    for (int it = 0; it < 400; it++) {
+        cdist_vec3 B, M;
+        cdist_circle c;
+        random_problem(&B, &M, &c);
+        int mi = it & 1;
+        cdist_result r, rs;
+        CHECK(line_q(mi, B, M, c, &r) == CDIST_OK, "extremes status");
+        double L = fmax(c.radius, r.distance);
+        for (int e = -480; e <= 480; e += 240) {
+            double f = ldexp(1.0, e);
+            cdist_circle cs = circ(scl(f, c.center), c.normal, f * c.radius);
+            CHECK(line_q(mi, scl(f, B), M, cs, &rs) == CDIST_OK, "scaled status");
+            CHECK(fabs(rs.distance / f - r.distance) <= 1e-14 * (L + norm(sub(B, c.center))),
+                  "scaled by 2^%d: %.17g vs %.17g", e, rs.distance / f, r.distance);
+            CHECK(rs.num_pairs == r.num_pairs && rs.equidistant == r.equidistant, "scaled by 2^%d: pairs", e);
+        }
+    }
+    cdist_circle c = circ(tv(0, 0, 0), tv(0, 0, 1), 2);
+    cdist_result r;
+    for (int mi = 0; mi < 2; mi++) {
+        /* a segment of length 1e-200 is (nearly) a point */
+        cdist_vec3 p0 = tv(3, 0, 0.5);
+        CHECK(seg_q(mi, p0, add(p0, tv(1e-200, 0, 0)), c, &r) == CDIST_OK, "tiny segment status");
+        CHECK_NEAR(r.distance, sqrt(1.25), 4e-16, "tiny segment");
+        CHECK(r.pairs[0].param[0] >= 0 && r.pairs[0].param[0] <= 1, "tiny segment param");
+        /* a direction of length 1e-300 (any length accepted) */
+        cdist_query_set_unit_tolerance(q, INFINITY);
+        CHECK(line_q(mi, tv(0, 1, 0.5), tv(1e-300, 0, 0), c, &r) == CDIST_OK, "tiny direction status");
+        CHECK_NEAR(r.distance, 0.5, 4e-16, "tiny direction");
+        CHECK(r.num_pairs == 2 && isfinite(r.pairs[0].param[0]) && isfinite(r.pairs[1].param[0]),
+              "tiny direction: two pairs with finite parameters (%d)", r.num_pairs);
+        CHECK(line_q(mi, tv(0, 1, 0.5), tv(1e100, 0, 0), c, &r) == CDIST_OK && fabs(r.distance - 0.5) <= 4e-16,
+              "huge direction");
+        cdist_query_set_unit_tolerance(q, 1e-6);
+        /* coordinates near the 1e150 limit */
+        cdist_circle big = circ(tv(5e149, -5e149, 5e149), tv(0, 0, 1), 5e149);
+        CHECK(line_q(mi, tv(5e149, -2.5e149, 7.5e149), tv(1, 0, 0), big, &r) == CDIST_OK, "huge status");
+        CHECK(fabs(r.distance - 2.5e149) <= 1e-15 * 2.5e149 && r.num_pairs == 2,
+              "huge coordinates: %.17g, %d pairs", r.distance, r.num_pairs);
+        /* a ray far from a tiny circle */
+        cdist_circle tiny = circ(tv(0, 0, 0), tv(0, 0, 1), 1e-300);
+        CHECK(ray_q(mi, tv(1, 1, 1), tv(0, 0, 1), tiny, &r) == CDIST_OK, "tiny circle status");
+        CHECK_NEAR(r.distance, sqrt(3.0), 4e-16, "tiny circle");
+    }
+}
+
 /* ---- bad input ---- */
 
 static void bad_input(void)
@@ -507,6 +558,7 @@ int main(void)
     degenerate_families();
     rays_segments();
     properties();
+    extremes();
     bad_input();
     cdist_query_free(q);
     return check_summary("lines");
