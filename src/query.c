@@ -240,20 +240,37 @@ cdist_status cd_check_direction(cdist_query *q, const cdist_vec3 *d, const char 
     return CDIST_OK;
 }
 
+/* Fast acceptance test; the message-building checks below run only when it fails, so a valid
+ * query formats no strings. */
+static int circle_plainly_valid(const cdist_query *q, const cdist_circle *c)
+{
+    if (!v_isfinite(c->center) || !v_isfinite(c->normal) || !isfinite(c->radius)) return 0;
+    if (v_maxabs(c->center) > CD_MAX_ABS || v_maxabs(c->normal) > CD_MAX_ABS || c->radius > CD_MAX_ABS) return 0;
+    if (!(c->radius >= 0.0)) return 0;
+    double m = v_maxabs(c->normal);
+    if (m == 0.0) return 0;
+    double len = m * v_norm(v_scale(1.0 / m, c->normal));
+    return fabs(len - 1.0) <= q->unit_tol;
+}
+
 cdist_status cd_check_circle(cdist_query *q, const cdist_circle *c, const char *what, cd_circle *out)
 {
-    char buf[64];
     if (!c) return cd_fail(q, CDIST_ERR_NULL_ARGUMENT, "%s pointer is NULL", what);
-    snprintf(buf, sizeof buf, "%s centre", what);
-    cdist_status st = cd_check_point(q, &c->center, buf);
-    if (st) return st;
-    snprintf(buf, sizeof buf, "%s normal", what);
-    st = cd_check_direction(q, &c->normal, buf, 1, &out->n, NULL);
-    if (st) return st;
-    snprintf(buf, sizeof buf, "%s radius", what);
-    st = cd_check_scalar(q, c->radius, buf);
-    if (st) return st;
-    if (c->radius < 0.0) return cd_fail(q, CDIST_ERR_NEGATIVE_RADIUS, "%s radius is negative (%g)", what, c->radius);
+    if (!q || !circle_plainly_valid(q, c)) {
+        char buf[64];
+        snprintf(buf, sizeof buf, "%s centre", what);
+        cdist_status st = cd_check_point(q, &c->center, buf);
+        if (st) return st;
+        snprintf(buf, sizeof buf, "%s normal", what);
+        st = cd_check_direction(q, &c->normal, buf, 1, NULL, NULL);
+        if (st) return st;
+        snprintf(buf, sizeof buf, "%s radius", what);
+        st = cd_check_scalar(q, c->radius, buf);
+        if (st) return st;
+        if (c->radius < 0.0)
+            return cd_fail(q, CDIST_ERR_NEGATIVE_RADIUS, "%s radius is negative (%g)", what, c->radius);
+    }
+    cd_check_direction(q, &c->normal, "normal", 0, &out->n, NULL);
     out->c = c->center;
     out->r = c->radius;
     v_basis(out->n, &out->u, &out->v);
