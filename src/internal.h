@@ -40,6 +40,7 @@ typedef struct cd_circle {
 #define CD_BEST_KEEP 4
 
 typedef struct cd_cand {
+    int equidistant; /* this candidate stands for infinitely many equally close pairs */
     double d2;
     vec3 p[2];
     double param[2];
@@ -48,7 +49,7 @@ typedef struct cd_cand {
 typedef struct cd_best {
     double scale;    /* problem scale L, for the tie and distinctness tests */
     int n;           /* candidates kept, sorted by d2 */
-    int equidistant; /* set by the family when infinitely many pairs are closest */
+    int equidistant; /* set by a family whose whole configuration has infinitely many closest pairs */
     cd_cand c[CD_BEST_KEEP];
 } cd_best;
 
@@ -61,6 +62,9 @@ void cd_best_init(cd_best *b, double scale);
 /* Offer a candidate: p0 on the first object, p1 on the second, d2 = its squared distance
  * computed as accurately as the family can (usually from the true distance function). */
 void cd_best_offer(cd_best *b, double d2, vec3 p0, vec3 p1, double param0, double param1);
+/* Same, for a candidate that represents infinitely many equally close pairs (e.g. a point on a
+ * circle's axis): the result is flagged equidistant only if this candidate is the best. */
+void cd_best_offer_equidistant(cd_best *b, double d2, vec3 p0, vec3 p1, double param0, double param1);
 /* Same, d2 computed as |p0 - p1|^2. */
 void cd_best_offer_points(cd_best *b, vec3 p0, vec3 p1, double param0, double param1);
 /* Write the result: the best pair and, on a tie, the second; points moved by `offset`

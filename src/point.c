@@ -20,6 +20,12 @@ static void split(vec3 p, const cd_circle *c, double *h, vec3 *w, double *rho)
 /* The point is on the axis when its axis distance is below the rounding noise of |N x D|. */
 static int on_axis(vec3 p, double rho) { return rho <= 2.0 * DBL_EPSILON * v_norm(p); }
 
+static void offer_one(cd_best *b, int equi, double d2, vec3 p0, vec3 p1, double a0, double a1)
+{
+    if (equi) cd_best_offer_equidistant(b, d2, p0, p1, a0, a1);
+    else cd_best_offer(b, d2, p0, p1, a0, a1);
+}
+
 void cd_point_circle_core(vec3 p, const cd_circle *c, cd_best *b, int swap)
 {
     double h, rho;
@@ -27,6 +33,7 @@ void cd_point_circle_core(vec3 p, const cd_circle *c, cd_best *b, int swap)
     split(p, c, &h, &w, &rho);
     vec3 k;
     double ang;
+    int equi = 0;
     if (c->r == 0.0) {
         k = v3(0, 0, 0);
         ang = NAN;
@@ -34,7 +41,7 @@ void cd_point_circle_core(vec3 p, const cd_circle *c, cd_best *b, int swap)
         /* Every circle point is closest; angle 0 is the representative. */
         k = v_scale(c->r, c->u);
         ang = 0.0;
-        b->equidistant = 1;
+        equi = 1;
     } else {
         double wn = v_norm(w);
         k = v_scale(c->r / wn, w);
@@ -42,8 +49,8 @@ void cd_point_circle_core(vec3 p, const cd_circle *c, cd_best *b, int swap)
     }
     double dr = rho - c->r;
     double d2 = fma(dr, dr, h * h);
-    if (swap) cd_best_offer(b, d2, k, p, ang, NAN);
-    else cd_best_offer(b, d2, p, k, NAN, ang);
+    if (swap) offer_one(b, equi, d2, k, p, ang, NAN);
+    else offer_one(b, equi, d2, p, k, NAN, ang);
 }
 
 void cd_point_disk_core(vec3 p, const cd_circle *c, cd_best *b, int swap)

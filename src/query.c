@@ -334,10 +334,10 @@ static int cand_distinct(const cd_best *b, const cd_cand *x, const cd_cand *y)
     return sep > CD_DISTINCT_REL * b->scale;
 }
 
-void cd_best_offer(cd_best *b, double d2, vec3 p0, vec3 p1, double param0, double param1)
+static void offer(cd_best *b, int equi, double d2, vec3 p0, vec3 p1, double param0, double param1)
 {
     if (!(d2 >= 0.0)) return; /* NaN candidates are ignored */
-    cd_cand c = {d2, {p0, p1}, {param0, param1}};
+    cd_cand c = {equi, d2, {p0, p1}, {param0, param1}};
     /* Merge with a kept candidate describing the same pair: keep the smaller distance. */
     for (int i = 0; i < b->n; i++) {
         if (!cand_distinct(b, &c, &b->c[i])) {
@@ -356,6 +356,16 @@ void cd_best_offer(cd_best *b, double d2, vec3 p0, vec3 p1, double param0, doubl
     if (b->n < CD_BEST_KEEP) b->n++;
 }
 
+void cd_best_offer(cd_best *b, double d2, vec3 p0, vec3 p1, double param0, double param1)
+{
+    offer(b, 0, d2, p0, p1, param0, param1);
+}
+
+void cd_best_offer_equidistant(cd_best *b, double d2, vec3 p0, vec3 p1, double param0, double param1)
+{
+    offer(b, 1, d2, p0, p1, param0, param1);
+}
+
 void cd_best_offer_points(cd_best *b, vec3 p0, vec3 p1, double param0, double param1)
 {
     cd_best_offer(b, v_sqr(v_sub(p0, p1)), p0, p1, param0, param1);
@@ -368,9 +378,9 @@ void cd_best_to_result(const cd_best *b, vec3 offset, int swap, cdist_result *r)
     double d0 = sqrt(b->c[0].d2);
     r->distance = d0;
     r->sqr_distance = b->c[0].d2;
-    r->equidistant = b->equidistant;
+    r->equidistant = b->equidistant || b->c[0].equidistant;
     int np = 1;
-    if (b->n > 1 && !b->equidistant) {
+    if (b->n > 1 && !r->equidistant) {
         double d1 = sqrt(b->c[1].d2);
         if (d1 - d0 <= CD_TIE_ULPS * DBL_EPSILON * b->scale) np = 2;
     }
