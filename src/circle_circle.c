@@ -58,10 +58,17 @@
 
 #define CC_INIT_INTERVALS 16
 #define CC_MIN_WIDTH (1.0 / 1073741824.0) /* 2^-30 rad */
-#define CC_EVAL_BUDGET 1500
+#define CC_EVAL_BUDGET 400
 #define CC_DENSE_SAMPLES 512
 #define CC_STACK 96
 #define CC_EQUI_ULPS 32.0
+
+#ifdef CC_STATS
+long cc_stat_evals, cc_stat_refine_its, cc_stat_brackets, cc_stat_dense, cc_stat_leaves_narrow;
+#define STAT(x) (x)
+#else
+#define STAT(x) ((void)0)
+#endif
 
 /* The parameterised circle A at the origin and the other circle B. */
 typedef struct cc_frame {
@@ -182,13 +189,28 @@ static void frame_init(cc_frame *f, const cd_circle *A, vec3 C, const cd_circle 
     f->epsL = eps * (f->R + Lc);
 }
 
+/* Hot-path arithmetic without fma(): the library is built for baseline x86-64, where fma() is a
+ * libm call; plain products are accurate enough for sampling and Newton steps (the final
+ * distance of each pair is recomputed in pair_at). */
+static inline double dot3(vec3 a, vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+/* w = al c + be s + ga and w' = be c - al s */
+static inline void w_at(const cc_frame *f, double c, double s, vec3 *w, vec3 *w1)
+{
+    w->x = f->al.x * c + f->be.x * s + f->ga.x;
+    w->y = f->al.y * c + f->be.y * s + f->ga.y;
+    w->z = f->al.z * c + f->be.z * s + f->ga.z;
+    w1->x = f->be.x * c - f->al.x * s;
+    w1->y = f->be.y * c - f->al.y * s;
+    w1->z = f->be.z * c - f->al.z * s;
+}
+
 /* Everything at angle t with (c, s) = (cos t, sin t). */
 static void cc_eval(const cc_frame *f, double t, double c, double s, cc_pt *p)
 {
-    vec3 w = v_axpy(v_axpy(f->ga, c, f->al), s, f->be);
-    vec3 w1 = v_axpy(v_scale(c, f->be), -s, f->al);
-    double Q = v_dot(w, w), g = v_dot(w, w1);
-    double g1 = v_dot(w1, w1) + v_dot(w, f->ga) - Q; /* w'.w' + w.w'', w'' = ga - w */
+    vec3 w, w1;
+    w_at(f, c, s, &w, &w1);
+    double Q = dot3(w, w), g = dot3(w, w1);
+    double g1 = dot3(w1, w1) + dot3(w, f->ga) - Q; /* w'.w' + w.w'', w'' = ga - w */
     double sig = f->R * (f->Cu * s - f->Cv * c), sig1 = f->R * (f->Cu * c + f->Cv * s);
     double s2 = f->s * f->s;
     p->t = t;
@@ -197,38 +219,41 @@ static void cc_eval(const cc_frame *f, double t, double c, double s, cc_pt *p)
     p->H = Q * sig * sig - s2 * g * g;
     p->H1 = 2 * g * sig * sig + 2 * Q * sig * sig1 - 2 * s2 * g * g1;
     double rho = sqrt(Q);
-    double h = fma(f->ha, c, fma(f->hb, s, f->hc)), h1 = f->hb * c - f->ha * s;
+    double h = f->ha * c + f->hb * s + f->hc, h1 = f->hb * c - f->ha * s;
     double rp = rho > 0 ? g / rho : 0.0;
     double dr = rho - f->s;
-    p->F1 = fma(dr, rp, h * h1);
-    p->F = fma(dr, dr, h * h);
+    p->F1 = dr * rp + h * h1;
+    p->F = dr * dr + h * h;
 }
 
 /* F'/2 and F''/2 only (for the refinement). */
 static void cc_deriv(const cc_frame *f, double c, double s, double *F1, double *F2)
 {
-    vec3 w = v_axpy(v_axpy(f->ga, c, f->al), s, f->be);
-    vec3 w1 = v_axpy(v_scale(c, f->be), -s, f->al);
-    double Q = v_dot(w, w), g = v_dot(w, w1);
-    double g1 = v_dot(w1, w1) + v_dot(w, f->ga) - Q;
+    vec3 w, w1;
+    w_at(f, c, s, &w, &w1);
+    double Q = dot3(w, w), g = dot3(w, w1);
     double rho = sqrt(Q);
-    double h = fma(f->ha, c, fma(f->hb, s, f->hc)), h1 = f->hb * c - f->ha * s, h2 = f->hc - h;
+    double h = f->ha * c + f->hb * s + f->hc, h1 = f->hb * c - f->ha * s, h2 = f->hc - h;
     double dr = rho - f->s;
     double rp = rho > 0 ? g / rho : 0.0;
-    *F1 = fma(dr, rp, h * h1);
-    if (F2) {
-        double rpp = rho > 0 ? (g1 - rp * rp) / rho : 0.0;
-        *F2 = rp * rp + dr * rpp + h1 * h1 + h * h2;
-    }
+    *F1 = dr * rp + h * h1;
+    double g1 = dot3(w1, w1) + dot3(w, f->ga) - Q;
+    double rpp = rho > 0 ? (g1 - rp * rp) / rho : 0.0;
+    *F2 = rp * rp + dr * rpp + h1 * h1 + h * h2;
 }
 
 /* A root of F' in [a, b] where F'(a) and F'(b) have opposite signs (dir = +1 for (-,+), -1 for
  * (+,-)): safeguarded Newton on the true F', falling back to bisection. */
-static double refine(const cc_frame *f, double a, double b, int dir)
+static double refine(const cc_frame *f, const cc_pt *a, const cc_pt *b, int dir)
 {
-    double lo = a, hi = b; /* dir * F'(lo) <= 0 <= dir * F'(hi) */
-    double x = 0.5 * (lo + hi), dxold = hi - lo, dx = dxold;
+    double lo = a->t, hi = b->t; /* dir * F'(lo) < 0 <= dir * F'(hi) */
+    double fa = dir * a->F1, fb = dir * b->F1;
+    /* Start from the secant point of the bracket. */
+    double x = (fb > fa) ? lo + (hi - lo) * (-fa / (fb - fa)) : 0.5 * (lo + hi);
+    if (!(x > lo && x < hi)) x = 0.5 * (lo + hi);
+    double dxold = hi - lo;
     for (int it = 0; it < 100; it++) {
+        STAT(cc_stat_refine_its++);
         double c, s, F1, F2;
         sincos(x, &s, &c);
         cc_deriv(f, c, s, &F1, &F2);
@@ -238,15 +263,19 @@ static double refine(const cc_frame *f, double a, double b, int dir)
         if (F1 < 0) lo = x;
         else hi = x;
         double xn = x - F1 / F2;
-        if (!(F2 > 0) || !(xn > lo && xn < hi) || fabs(2 * (x - xn)) > fabs(dxold)) {
-            dxold = dx;
+        int newton = 1;
+        if (!(F2 > 0) || !(xn > lo && xn < hi) || fabs(2 * (x - xn)) > dxold) {
             xn = 0.5 * (lo + hi);
-            dx = xn - x;
-        } else {
-            dxold = dx;
-            dx = xn - x;
+            newton = 0;
         }
-        if (xn == x || hi - lo <= 2 * DBL_EPSILON * fmax(1.0, fabs(x))) return xn;
+        double dx = fabs(xn - x);
+#ifdef CC_TRACE
+        fprintf(stderr, "it %d x %.17g F1 %.3g F2 %.3g newton %d dx %.3g\n", it, x, F1, F2, newton, dx);
+#endif
+        /* Quadratic convergence: after a Newton step this small the error is below rounding. */
+        if (newton && dx <= 1e-9) return xn;
+        dxold = dx;
+        if (dx <= 4 * DBL_EPSILON || hi - lo <= 4 * DBL_EPSILON) return xn;
         x = xn;
     }
     return x;
@@ -303,7 +332,8 @@ static void emit(cc_sink *k, const cc_pt *a, const cc_pt *b)
     if (a->F1 < 0 && b->F1 >= 0) dir = 1;
     else if (k->want_max && a->F1 > 0 && b->F1 <= 0) dir = -1;
     if (!dir) return;
-    double t = refine(k->f, a->t, b->t, dir);
+    STAT(cc_stat_brackets++);
+    double t = refine(k->f, a, b, dir);
     if (!k->best) {
         double ta = (t <= -M_PI) ? t + 2 * M_PI : (t > M_PI ? t - 2 * M_PI : t);
         if (k->count < k->cap) k->out[k->count] = ta;
@@ -344,6 +374,7 @@ static int certified(const cc_frame *f, const cc_pt *a, const cc_pt *b)
 /* Dense sampling fallback: F' signs on CC_DENSE_SAMPLES points. */
 static void scan_dense(const cc_frame *f, cc_sink *k, double *Fmax)
 {
+    STAT(cc_stat_dense++);
     cc_pt first = {0}, prev = {0}, cur;
     double step = 2 * M_PI / CC_DENSE_SAMPLES;
     for (int i = 0; i <= CC_DENSE_SAMPLES; i++) {
@@ -373,10 +404,14 @@ static void scan(const cc_frame *f, cc_sink *k, double *Fmax)
         return;
     }
     cc_pt init[CC_INIT_INTERVALS + 1];
+    /* cos and sin of -pi + i pi / 8 (exact to rounding). */
+    static const double ic[16] = {-1, -0.92387953251128674, -0.70710678118654757, -0.38268343236508978, 0,
+                                  0.38268343236508978, 0.70710678118654757, 0.92387953251128674, 1,
+                                  0.92387953251128674, 0.70710678118654757, 0.38268343236508978, 0,
+                                  -0.38268343236508978, -0.70710678118654757, -0.92387953251128674};
     for (int i = 0; i < CC_INIT_INTERVALS; i++) {
-        double t = -M_PI + i * (2 * M_PI / CC_INIT_INTERVALS), c, s;
-        sincos(t, &s, &c);
-        cc_eval(f, t, c, s, &init[i]);
+        double t = -M_PI + i * (2 * M_PI / CC_INIT_INTERVALS);
+        cc_eval(f, t, ic[i], -ic[(i + 4) % 16], &init[i]);
     }
     init[CC_INIT_INTERVALS] = init[0];
     init[CC_INIT_INTERVALS].t = M_PI;
@@ -384,13 +419,22 @@ static void scan(const cc_frame *f, cc_sink *k, double *Fmax)
     /* Depth-first, left to right, so consecutive leaves share their endpoints. */
     typedef struct {
         cc_pt a, b;
+        int level;
     } ival;
+    /* 1 / (2 cos(w/2)) for the interval width 2 pi / CC_INIT_INTERVALS / 2^level. */
+    static const double half_sec[] = {
+#define HS(l) 0.5 / cos(M_PI / CC_INIT_INTERVALS / (double)(1L << (l)))
+        HS(0),  HS(1),  HS(2),  HS(3),  HS(4),  HS(5),  HS(6),  HS(7),  HS(8),  HS(9),  HS(10),
+        HS(11), HS(12), HS(13), HS(14), HS(15), HS(16), HS(17), HS(18), HS(19), HS(20), HS(21),
+        HS(22), HS(23), HS(24), HS(25), HS(26), HS(27), HS(28), HS(29), HS(30), HS(31)
+#undef HS
+    };
     ival st[CC_STACK];
     int sp = 0, evals = 0, over = 0;
     /* First pass decides certification; brackets are emitted only when it succeeded (else the
      * dense scan does the emitting). Leaves are buffered implicitly: re-walk is avoided by
      * emitting as we go and restarting densely on overflow with a fresh sink count. */
-    for (int i = CC_INIT_INTERVALS - 1; i >= 0; i--) st[sp++] = (ival){init[i], init[i + 1]};
+    for (int i = CC_INIT_INTERVALS - 1; i >= 0; i--) st[sp++] = (ival){init[i], init[i + 1], 0};
     int saved_count = k->count;
     cd_best saved_best;
     double saved_dmin = k->dmin, saved_rho = k->rho_min;
@@ -399,23 +443,24 @@ static void scan(const cc_frame *f, cc_sink *k, double *Fmax)
         ival iv = st[--sp];
         if (iv.a.F > *Fmax) *Fmax = iv.a.F;
         double w = iv.b.t - iv.a.t;
-        if (certified(f, &iv.a, &iv.b) || w <= CC_MIN_WIDTH) {
+        if (certified(f, &iv.a, &iv.b) || (w <= CC_MIN_WIDTH && (STAT(cc_stat_leaves_narrow++), 1))) {
             emit(k, &iv.a, &iv.b);
             continue;
         }
-        if (evals >= CC_EVAL_BUDGET || sp + 2 > CC_STACK) {
+        if (evals >= CC_EVAL_BUDGET || sp + 2 > CC_STACK || iv.level >= 31) {
             over = 1;
             break;
         }
         /* Midpoint from the endpoint cosines/sines (no transcendental call). */
-        double hc = 1.0 / (2 * cos(0.5 * w));
+        double hc = half_sec[iv.level];
         double cm = (iv.a.c + iv.b.c) * hc, sm = (iv.a.s + iv.b.s) * hc;
         double nrm = 1.0 / sqrt(cm * cm + sm * sm);
         cc_pt mid;
         cc_eval(f, 0.5 * (iv.a.t + iv.b.t), cm * nrm, sm * nrm, &mid);
         evals++;
-        st[sp++] = (ival){mid, iv.b};
-        st[sp++] = (ival){iv.a, mid};
+        STAT(cc_stat_evals++);
+        st[sp++] = (ival){mid, iv.b, iv.level + 1};
+        st[sp++] = (ival){iv.a, mid, iv.level + 1};
     }
     if (over) {
         k->count = saved_count;
