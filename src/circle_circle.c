@@ -290,6 +290,7 @@ typedef struct cc_sink {
     cd_best *best;  /* robust mode */
     int swapped;    /* robust mode: A is the second circle */
     const cd_circle *A, *B;
+    double tmin, Fmin; /* partition point with the smallest F */
     double dmin;  /* smallest refined distance */
     double rho_min; /* axis distance of the point giving dmin */
 } cc_sink;
@@ -386,6 +387,10 @@ static void scan_dense(const cc_frame *f, cc_sink *k, double *Fmax)
             sincos(t, &s, &c);
             cc_eval(f, t, c, s, &cur);
             if (cur.F > *Fmax) *Fmax = cur.F;
+            if (cur.F < k->Fmin) {
+                k->Fmin = cur.F;
+                k->tmin = cur.t;
+            }
         }
         if (i == 0) first = cur;
         else emit(k, &prev, &cur);
@@ -442,6 +447,10 @@ static void scan(const cc_frame *f, cc_sink *k, double *Fmax)
     while (sp > 0) {
         ival iv = st[--sp];
         if (iv.a.F > *Fmax) *Fmax = iv.a.F;
+        if (iv.a.F < k->Fmin) {
+            k->Fmin = iv.a.F;
+            k->tmin = iv.a.t;
+        }
         double w = iv.b.t - iv.a.t;
         if (certified(f, &iv.a, &iv.b) || (w <= CC_MIN_WIDTH && (STAT(cc_stat_leaves_narrow++), 1))) {
             emit(k, &iv.a, &iv.b);
@@ -515,9 +524,11 @@ static cdist_status cc_robust(cdist_query *q, const cd_circle *c0, const cd_circ
     }
     cc_frame f;
     frame_init(&f, A, CB, B);
-    cc_sink k = {&f, 0, NULL, 0, 0, b, sw, A, B, INFINITY, INFINITY};
+    cc_sink k = {&f, 0, NULL, 0, 0, b, sw, A, B, 0.0, INFINITY, INFINITY, INFINITY};
     double Fmax;
     scan(&f, &k, &Fmax);
+    /* F' never went from - to +: F is constant to rounding; any point is a closest one. */
+    if (b->n == 0 && isfinite(k.Fmin)) pair_at(&f, k.tmin, &k);
     if (b->n == 0 || !isfinite(k.dmin)) return cd_fail(q, CDIST_ERR_INTERNAL, "circle-circle: no minimum found");
     /* (a) F constant on A; (b) the closest point of A on B's axis. */
     if (sqrt(Fmax) - k.dmin <= CC_EQUI_ULPS * DBL_EPSILON * L) b->equidistant = 1;
@@ -599,7 +610,7 @@ int cd_circle_circle_critical(cdist_query *q, const cd_circle *c0, const cd_circ
     vec3 C = v_sub(c1->c, c0->c);
     cc_frame f;
     frame_init(&f, c0, C, c1);
-    cc_sink k = {&f, 1, theta0, cap, 0, NULL, 0, c0, c1, INFINITY, INFINITY};
+    cc_sink k = {&f, 1, theta0, cap, 0, NULL, 0, c0, c1, 0.0, INFINITY, INFINITY, INFINITY};
     double Fmax;
     scan(&f, &k, &Fmax);
     int n = k.count < cap ? k.count : cap;
