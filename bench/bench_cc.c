@@ -16,7 +16,7 @@
 static double now(void)
 {
     struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts); /* CPU time: robust to a loaded machine */
     return ts.tv_sec + 1e-9 * ts.tv_nsec;
 }
 
@@ -58,21 +58,28 @@ int main(int argc, char **argv)
                                CDIST_METHOD_ITERATION};
     double sink = 0;
     int fails = 0;
-    for (int k = 0; k < 4; k++) {
-        cdist_query_set_method(q, ms[k]);
-        cdist_result r;
-        int answered = -1;
-        double t0 = now();
-        for (int rep = 0; rep < reps; rep++)
-            for (size_t i = 0; i < n; i++) {
-                if (cdist_circle_circle(q, &a[i], &b[i], &r) != CDIST_OK) fails++;
-                sink += r.distance;
-                answered = r.method;
-            }
-        double t = (now() - t0) / ((double)reps * n);
-        printf("cc %-10s %8.1f ns/query  (%zu queries x %d, answered by method %d)\n", names[k], 1e9 * t, n, reps,
-               answered);
-    }
+    /* Rounds interleave the methods; the fastest round of each is reported (the machine may be
+     * shared, and the minimum is the least disturbed measurement). */
+    double best[4] = {INFINITY, INFINITY, INFINITY, INFINITY};
+    int answered[4] = {-1, -1, -1, -1};
+    int rounds = reps >= 5 ? 5 : 1, per = reps >= 5 ? reps / 5 : reps;
+    for (int round = 0; round < rounds; round++)
+        for (int k = 0; k < 4; k++) {
+            cdist_query_set_method(q, ms[k]);
+            cdist_result r;
+            double t0 = now();
+            for (int rep = 0; rep < per; rep++)
+                for (size_t i = 0; i < n; i++) {
+                    if (cdist_circle_circle(q, &a[i], &b[i], &r) != CDIST_OK) fails++;
+                    sink += r.distance;
+                    answered[k] = r.method;
+                }
+            double t = (now() - t0) / ((double)per * n);
+            if (t < best[k]) best[k] = t;
+        }
+    for (int k = 0; k < 4; k++)
+        printf("cc %-10s %8.1f ns/query  (%zu queries x %d, best of %d rounds, answered by method %d)\n", names[k],
+               1e9 * best[k], n, per, rounds, answered[k]);
     /* Bare GSL degree-8 solve (companion matrix QR) on polynomials with random coefficients. */
     gsl_error_handler_t *old = gsl_set_error_handler_off();
     gsl_poly_complex_workspace *ws = gsl_poly_complex_workspace_alloc(9);
@@ -87,14 +94,20 @@ int main(int argc, char **argv)
             coef[i][j] = (double)(s >> 11) / 9007199254740992.0 * 2 - 1;
         }
     int gfail = 0;
-    double t0 = now();
+    double tg = INFINITY;
     long m = 0;
-    for (int rep = 0; rep < reps * 8; rep++)
-        for (int i = 0; i < NP; i++, m++) {
-            if (gsl_poly_complex_solve(coef[i], 9, ws, z) != GSL_SUCCESS) gfail++;
-            sink += z[0];
-        }
-    double tg = (now() - t0) / m;
+    for (int round = 0; round < rounds; round++) {
+        double t0 = now();
+        long mm = 0;
+        for (int rep = 0; rep < per * 8; rep++)
+            for (int i = 0; i < NP; i++, mm++) {
+                if (gsl_poly_complex_solve(coef[i], 9, ws, z) != GSL_SUCCESS) gfail++;
+                sink += z[0];
+            }
+        double t = (now() - t0) / mm;
+        if (t < tg) tg = t;
+        m += mm;
+    }
     printf("gsl_poly_complex_solve degree 8: %8.1f ns/solve (%ld solves, %d failures)\n", 1e9 * tg, m, gfail);
     gsl_poly_complex_workspace_free(ws);
     gsl_set_error_handler(old);

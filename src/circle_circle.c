@@ -262,7 +262,10 @@ static double refine(const cc_frame *f, const cc_pt *a, const cc_pt *b, int dir)
         if (F1 == 0.0) return x;
         if (F1 < 0) lo = x;
         else hi = x;
-        double xn = x - F1 / F2;
+        double step = F1 / F2;
+        /* Converged: the Newton step is below the resolution of x. */
+        if (F2 > 0 && fabs(step) <= 2 * DBL_EPSILON * fmax(1.0, fabs(x))) return x;
+        double xn = x - step;
         int newton = 1;
         if (!(F2 > 0) || !(xn > lo && xn < hi) || fabs(2 * (x - xn)) > dxold) {
             xn = 0.5 * (lo + hi);
@@ -416,14 +419,16 @@ static void scan(const cc_frame *f, cc_sink *k, double *Fmax)
                                   -0.38268343236508978, -0.70710678118654757, -0.92387953251128674};
     for (int i = 0; i < CC_INIT_INTERVALS; i++) {
         double t = -M_PI + i * (2 * M_PI / CC_INIT_INTERVALS);
-        cc_eval(f, t, ic[i], -ic[(i + 4) % 16], &init[i]);
+        int j = i * (16 / CC_INIT_INTERVALS);
+        cc_eval(f, t, ic[j], -ic[(j + 4) % 16], &init[i]);
     }
     init[CC_INIT_INTERVALS] = init[0];
     init[CC_INIT_INTERVALS].t = M_PI;
 
-    /* Depth-first, left to right, so consecutive leaves share their endpoints. */
+    /* Depth-first, left to right, so consecutive leaves share their endpoints: the current
+     * interval is refined in place, right halves wait on the stack. */
     typedef struct {
-        cc_pt a, b;
+        cc_pt b;
         int level;
     } ival;
     /* 1 / (2 cos(w/2)) for the interval width 2 pi / CC_INIT_INTERVALS / 2^level. */
@@ -435,41 +440,45 @@ static void scan(const cc_frame *f, cc_sink *k, double *Fmax)
 #undef HS
     };
     ival st[CC_STACK];
-    int sp = 0, evals = 0, over = 0;
-    /* First pass decides certification; brackets are emitted only when it succeeded (else the
-     * dense scan does the emitting). Leaves are buffered implicitly: re-walk is avoided by
-     * emitting as we go and restarting densely on overflow with a fresh sink count. */
-    for (int i = CC_INIT_INTERVALS - 1; i >= 0; i--) st[sp++] = (ival){init[i], init[i + 1], 0};
+    int evals = 0, over = 0;
     int saved_count = k->count;
     cd_best saved_best;
     double saved_dmin = k->dmin, saved_rho = k->rho_min;
     if (k->best) saved_best = *k->best;
-    while (sp > 0) {
-        ival iv = st[--sp];
-        if (iv.a.F > *Fmax) *Fmax = iv.a.F;
-        if (iv.a.F < k->Fmin) {
-            k->Fmin = iv.a.F;
-            k->tmin = iv.a.t;
+    for (int i = 0; i < CC_INIT_INTERVALS && !over; i++) {
+        cc_pt a = init[i], b = init[i + 1];
+        int level = 0, sp = 0;
+        for (;;) {
+            if (a.F > *Fmax) *Fmax = a.F;
+            if (a.F < k->Fmin) {
+                k->Fmin = a.F;
+                k->tmin = a.t;
+            }
+            double w = b.t - a.t;
+            if (certified(f, &a, &b) || (w <= CC_MIN_WIDTH && (STAT(cc_stat_leaves_narrow++), 1))) {
+                emit(k, &a, &b);
+                if (sp == 0) break;
+                a = b;
+                b = st[--sp].b;
+                level = st[sp].level;
+                continue;
+            }
+            if (evals >= CC_EVAL_BUDGET || sp + 1 > CC_STACK || level >= 31) {
+                over = 1;
+                break;
+            }
+            /* Midpoint from the endpoint cosines/sines (no transcendental call). */
+            double hc = half_sec[level];
+            double cm = (a.c + b.c) * hc, sm = (a.s + b.s) * hc;
+            cc_pt mid;
+            cc_eval(f, 0.5 * (a.t + b.t), cm, sm, &mid);
+            evals++;
+            STAT(cc_stat_evals++);
+            level++;
+            st[sp].b = b;
+            st[sp++].level = level;
+            b = mid;
         }
-        double w = iv.b.t - iv.a.t;
-        if (certified(f, &iv.a, &iv.b) || (w <= CC_MIN_WIDTH && (STAT(cc_stat_leaves_narrow++), 1))) {
-            emit(k, &iv.a, &iv.b);
-            continue;
-        }
-        if (evals >= CC_EVAL_BUDGET || sp + 2 > CC_STACK || iv.level >= 31) {
-            over = 1;
-            break;
-        }
-        /* Midpoint from the endpoint cosines/sines (no transcendental call). */
-        double hc = half_sec[iv.level];
-        double cm = (iv.a.c + iv.b.c) * hc, sm = (iv.a.s + iv.b.s) * hc;
-        double nrm = 1.0 / sqrt(cm * cm + sm * sm);
-        cc_pt mid;
-        cc_eval(f, 0.5 * (iv.a.t + iv.b.t), cm * nrm, sm * nrm, &mid);
-        evals++;
-        STAT(cc_stat_evals++);
-        st[sp++] = (ival){mid, iv.b, iv.level + 1};
-        st[sp++] = (ival){iv.a, mid, iv.level + 1};
     }
     if (over) {
         k->count = saved_count;
@@ -536,6 +545,50 @@ static cdist_status cc_robust(cdist_query *q, const cd_circle *c0, const cd_circ
     return CDIST_OK;
 }
 
+/* Distance from X to circle c (closed form, |N x D| for the axis distance). */
+static double pc_dist(vec3 X, const cd_circle *c, double *rho_out)
+{
+    vec3 D = v_sub(X, c->c);
+    vec3 w = v_cross(c->n, D);
+    double rho = v_norm(w), h = v_dot(c->n, D), dr = rho - c->r;
+    if (rho_out) *rho_out = rho;
+    return sqrt(fma(dr, dr, h * h));
+}
+
+/* The equidistance tests (a) and (b) of the header comment, method independent, applied to the
+ * answer of the polynomial and iteration methods: (b) a closest point on the other circle's
+ * axis; (a) 16 equally spaced points of either circle all at the minimum distance (the scan
+ * stops at the first point that is not, so a generic query pays two evaluations). */
+static void cc_equidistant_post(const cd_circle *c0, const cd_circle *c1, cd_best *b)
+{
+    if (b->equidistant || b->n == 0) return;
+    const cd_circle *cs[2] = {c0, c1};
+    double d = sqrt(b->c[0].d2), Cn = v_norm(v_sub(c1->c, c0->c));
+    double L = fmax(fmax(c0->r, c1->r), Cn), tol = CC_EQUI_ULPS * DBL_EPSILON * L;
+    for (int side = 0; side < 2; side++) {
+        const cd_circle *me = cs[side], *other = cs[1 - side];
+        if (other->r > 0 && me->r >= 0) {
+            double rho;
+            pc_dist(b->c[0].p[side], other, &rho);
+            if (rho <= 8 * DBL_EPSILON * (me->r + other->r + Cn)) {
+                b->equidistant = 1;
+                return;
+            }
+        }
+        if (me->r == 0) continue;
+        int j;
+        for (j = 0; j < 16; j++) {
+            double t = j * (M_PI / 8), c = cos(t), sn = sin(t);
+            vec3 X = v_add(me->c, v_add(v_scale(me->r * c, me->u), v_scale(me->r * sn, me->v)));
+            if (fabs(pc_dist(X, other, NULL) - d) > tol) break;
+        }
+        if (j == 16) {
+            b->equidistant = 1;
+            return;
+        }
+    }
+}
+
 /* Runs `method`; the robust method answers AUTO and is the fallback of a method that fails.
  * *answered: the method that produced the result. */
 static cdist_status cc_core(cdist_query *q, cdist_method method, const cd_circle *c0, const cd_circle *c1,
@@ -551,6 +604,8 @@ static cdist_status cc_core(cdist_query *q, cdist_method method, const cd_circle
         if (iterations) *iterations = 0;
         *answered = CDIST_METHOD_ROBUST;
         st = cc_robust(q, c0, c1, b);
+    } else {
+        cc_equidistant_post(c0, c1, b);
     }
     return st;
 }
