@@ -56,9 +56,9 @@
 
 #include "internal.h"
 
-#define CC_INIT_INTERVALS 16
+#define CC_INIT_INTERVALS 8
 #define CC_MIN_WIDTH (1.0 / 1073741824.0) /* 2^-30 rad */
-#define CC_EVAL_BUDGET 400
+#define CC_EVAL_BUDGET 200
 #define CC_DENSE_SAMPLES 512
 #define CC_STACK 96
 #define CC_EQUI_ULPS 32.0
@@ -78,16 +78,17 @@ typedef struct cc_frame {
     vec3 al, be, ga;   /* w(t) = m x (P(t) - C) = al cos t + be sin t + ga */
     double ha, hb, hc; /* h(t) = m.(P(t) - C) = ha cos t + hb sin t + hc */
     double Cu, Cv;     /* sigma = D.D' = R (Cu sin t - Cv cos t) */
-    double M1, M2;     /* |H'| <= M1, |H''| <= M2 */
-    double eH, eH1;    /* rounding bounds of the computed H, H' */
+    double M1, M2, M3; /* |H'| <= M1, |H''| <= M2, |H'''| <= M3 */
+    double eH, eH1, eH2; /* rounding bounds of the computed H, H', H'' */
     double Hc;         /* sum of |Fourier coefficients| of H */
     double epsL;       /* eps * (R + |C|): absolute rounding of positions */
+    double L;          /* problem scale max(R, s, |C|) */
 } cc_frame;
 
 /* Values at one angle. */
 typedef struct cc_pt {
     double t, c, s;
-    double H, H1; /* H, H' */
+    double H, H1, H2; /* H, H', H'' */
     double F1;    /* F'/2 */
     double F;     /* F */
 } cc_pt;
@@ -161,18 +162,20 @@ static void frame_init(cc_frame *f, const cd_circle *A, vec3 C, const cd_circle 
     tp_mul(&Q, &T, &H);
     tp_mul(&G, &G, &T);
     double s2 = f->s * f->s;
-    f->M1 = f->M2 = f->Hc = 0;
+    f->M1 = f->M2 = f->M3 = f->Hc = 0;
     for (int i = 0; i < 9; i++) {
         double c = hypot(H.re[i] - s2 * T.re[i], H.im[i] - s2 * T.im[i]);
         double k = fabs((double)(i - 4));
         f->Hc += c;
         f->M1 += k * c;
         f->M2 += k * k * c;
+        f->M3 += k * k * k * c;
     }
     /* Rounding of the coefficient arithmetic, then a margin. */
     double eps = DBL_EPSILON;
     f->M1 = f->M1 * (1 + 1e-9) + 1e-300;
     f->M2 = f->M2 * (1 + 1e-9) + 1e-300;
+    f->M3 = f->M3 * (1 + 1e-9) + 1e-300;
 
     /* First-order rounding bounds of H and H' as evaluated in cc_eval (all terms). */
     double Lc = v_norm(C);
@@ -186,7 +189,10 @@ static void frame_init(cc_frame *f, const cd_circle *A, vec3 C, const cd_circle 
     f->eH = 2 * (dQ * sm * sm + 2 * Qm * sm * dsm + 2 * s2 * gm * dg + 6 * eps * (Qm * sm * sm + s2 * gm * gm));
     f->eH1 = 2 * (2 * (dg * sm * sm + 2 * gm * sm * dsm) + 2 * (dQ * sm * sm + 2 * Qm * sm * dsm) +
                   2 * s2 * (dg * g1m + gm * dg1) + 10 * eps * (gm * sm * sm + Qm * sm * sm + s2 * gm * g1m));
+    /* H'' has the terms of H' with one more derivative (factors <= 4 on each): */
+    f->eH2 = 4 * (f->eH1 + f->eH);
     f->epsL = eps * (f->R + Lc);
+    f->L = fmax(fmax(f->R, f->s), Lc);
 }
 
 /* Hot-path arithmetic without fma(): the library is built for baseline x86-64, where fma() is a
@@ -218,6 +224,8 @@ static void cc_eval(const cc_frame *f, double t, double c, double s, cc_pt *p)
     p->s = s;
     p->H = Q * sig * sig - s2 * g * g;
     p->H1 = 2 * g * sig * sig + 2 * Q * sig * sig1 - 2 * s2 * g * g1;
+    double g2 = 3 * (dot3(w1, f->ga) - g) - g; /* 3 w'.w'' + w.w''' with w''' = -w' */
+    p->H2 = 2 * g1 * sig * sig + 8 * g * sig * sig1 + 2 * Q * (sig1 * sig1 - sig * sig) - 2 * s2 * (g1 * g1 + g * g2);
     double rho = sqrt(Q);
     double h = f->ha * c + f->hb * s + f->hc, h1 = f->hb * c - f->ha * s;
     double rp = rho > 0 ? g / rho : 0.0;
@@ -293,6 +301,7 @@ typedef struct cc_sink {
     cd_best *best;  /* robust mode */
     int swapped;    /* robust mode: A is the second circle */
     const cd_circle *A, *B;
+    int dense_ok; /* on budget overflow: sample densely (else report the overflow) */
     double tmin, Fmin; /* partition point with the smallest F */
     double dmin;  /* smallest refined distance */
     double rho_min; /* axis distance of the point giving dmin */
@@ -353,24 +362,36 @@ static void emit(cc_sink *k, const cc_pt *a, const cc_pt *b)
     }
 }
 
-/* Certificates on [a, b] (see the header comment). 1: resolved (<= 1 root of H). */
+/* Certificates on [a, b] (see the header comment). 1: resolved (<= 1 root of H). First order
+ * with the global bounds M1, M2; second order with the endpoint values of H'' and M3 (from each
+ * end over half the interval, the cubic lower bound taken at its worst, x = w/2). */
 static int certified(const cc_frame *f, const cc_pt *a, const cc_pt *b)
 {
-    double w = b->t - a->t;
+    double w = b->t - a->t, x = 0.5 * w;
     if ((a->H > 0 && b->H > 0) || (a->H < 0 && b->H < 0)) {
         double sg = a->H > 0 ? 1.0 : -1.0;
         double A = fabs(a->H) - f->eH, B = fabs(b->H) - f->eH;
         if (A > 0 && B > 0) {
             if (A + B > f->M1 * w) return 1;
-            double x = 0.5 * w;
             double la = A + (sg * a->H1 - f->eH1) * x - 0.5 * f->M2 * x * x;
             double lb = B - (sg * b->H1 + f->eH1) * x - 0.5 * f->M2 * x * x;
+            if (la > 0 && lb > 0) return 1;
+            double c3 = f->M3 * x * x * x / 6;
+            la = A - (fmax(0.0, -sg * a->H1) + f->eH1) * x - (fmax(0.0, -sg * a->H2) + f->eH2) * 0.5 * x * x - c3;
+            lb = B - (fmax(0.0, sg * b->H1) + f->eH1) * x - (fmax(0.0, -sg * b->H2) + f->eH2) * 0.5 * x * x - c3;
             if (la > 0 && lb > 0) return 1;
         }
     }
     if ((a->H1 > 0 && b->H1 > 0) || (a->H1 < 0 && b->H1 < 0)) {
+        double sg = a->H1 > 0 ? 1.0 : -1.0;
         double A = fabs(a->H1) - f->eH1, B = fabs(b->H1) - f->eH1;
-        if (A > 0 && B > 0 && A + B > f->M2 * w) return 1;
+        if (A > 0 && B > 0) {
+            if (A + B > f->M2 * w) return 1;
+            double c2 = 0.5 * f->M3 * x * x;
+            double la = A - (fmax(0.0, -sg * a->H2) + f->eH2) * x - c2;
+            double lb = B - (fmax(0.0, sg * b->H2) + f->eH2) * x - c2;
+            if (la > 0 && lb > 0) return 1;
+        }
     }
     return 0;
 }
@@ -402,15 +423,11 @@ static void scan_dense(const cc_frame *f, cc_sink *k, double *Fmax)
 }
 
 /* Walks [-pi, pi) (see the header comment) and hands every critical bracket to the sink.
- * Fmax: largest F at the partition points. */
-static void scan(const cc_frame *f, cc_sink *k, double *Fmax)
+ * Fmax: largest F at the partition points. Returns 1 when the certification gave up and the
+ * sink does not allow the dense scan (nothing was emitted then), else 0. */
+static int scan(const cc_frame *f, cc_sink *k, double *Fmax)
 {
     *Fmax = 0;
-    /* H vanishing to rounding: certificates are meaningless, sample densely. */
-    if (f->Hc <= 16 * f->eH) {
-        scan_dense(f, k, Fmax);
-        return;
-    }
     cc_pt init[CC_INIT_INTERVALS + 1];
     /* cos and sin of -pi + i pi / 8 (exact to rounding). */
     static const double ic[16] = {-1, -0.92387953251128674, -0.70710678118654757, -0.38268343236508978, 0,
@@ -424,6 +441,25 @@ static void scan(const cc_frame *f, cc_sink *k, double *Fmax)
     }
     init[CC_INIT_INTERVALS] = init[0];
     init[CC_INIT_INTERVALS].t = M_PI;
+    /* H vanishing to rounding (coaxial circles, constant F): certificates are meaningless. When
+     * the samples show F constant to the equidistance tolerance, one of them is the answer. */
+    if (f->Hc <= 16 * f->eH) {
+        double lo = INFINITY, hi = 0;
+        int arg = 0;
+        for (int i = 0; i < CC_INIT_INTERVALS; i++) {
+            if (init[i].F < lo) lo = init[i].F, arg = i;
+            if (init[i].F > hi) hi = init[i].F;
+        }
+        if (sqrt(hi) - sqrt(lo) <= CC_EQUI_ULPS * DBL_EPSILON * f->L) {
+            *Fmax = hi;
+            k->Fmin = lo;
+            k->tmin = init[arg].t;
+            return 0;
+        }
+        if (!k->dense_ok) return 1;
+        scan_dense(f, k, Fmax);
+        return 0;
+    }
 
     /* Depth-first, left to right, so consecutive leaves share their endpoints: the current
      * interval is refined in place, right halves wait on the stack. */
@@ -484,9 +520,12 @@ static void scan(const cc_frame *f, cc_sink *k, double *Fmax)
         k->count = saved_count;
         k->dmin = saved_dmin;
         k->rho_min = saved_rho;
+        k->Fmin = INFINITY;
         if (k->best) *k->best = saved_best;
+        if (!k->dense_ok) return 1;
         scan_dense(f, k, Fmax);
     }
+    return 0;
 }
 
 /* The antisymmetric choice of the circle to parameterise: 1 when it is c1. */
@@ -503,9 +542,13 @@ static int param_second(const cd_circle *c0, const cd_circle *c1, vec3 C)
     return 0;
 }
 
-static cdist_status cc_robust(cdist_query *q, const cd_circle *c0, const cd_circle *c1, cd_best *b)
+/* The robust method. dense_ok = 0: when the certified scan gives up (multiple roots at the
+ * rounding level, e.g. tangent circles), return with *over = 1 and b untouched so that AUTO can
+ * ask the polynomial method; dense_ok = 1: fall back to dense sampling. */
+static cdist_status cc_robust(cdist_query *q, const cd_circle *c0, const cd_circle *c1, cd_best *b, int dense_ok,
+                              int *over)
 {
-    (void)q;
+    *over = 0;
     vec3 C = v_sub(c1->c, c0->c); /* c0->c is the origin here; kept general */
     int sw = param_second(c0, c1, C);
     const cd_circle *A = sw ? c1 : c0, *B = sw ? c0 : c1;
@@ -533,9 +576,13 @@ static cdist_status cc_robust(cdist_query *q, const cd_circle *c0, const cd_circ
     }
     cc_frame f;
     frame_init(&f, A, CB, B);
-    cc_sink k = {&f, 0, NULL, 0, 0, b, sw, A, B, 0.0, INFINITY, INFINITY, INFINITY};
+    cc_sink k = {.f = &f, .best = b, .swapped = sw, .A = A, .B = B, .dense_ok = dense_ok, .Fmin = INFINITY,
+                 .dmin = INFINITY, .rho_min = INFINITY};
     double Fmax;
-    scan(&f, &k, &Fmax);
+    if (scan(&f, &k, &Fmax)) {
+        *over = 1;
+        return CDIST_OK;
+    }
     /* F' never went from - to +: F is constant to rounding; any point is a closest one. */
     if (b->n == 0 && isfinite(k.Fmin)) pair_at(&f, k.tmin, &k);
     if (b->n == 0 || !isfinite(k.dmin)) return cd_fail(q, CDIST_ERR_INTERNAL, "circle-circle: no minimum found");
@@ -599,11 +646,28 @@ static cdist_status cc_core(cdist_query *q, cdist_method method, const cd_circle
     if (method == CDIST_METHOD_POLYNOMIAL) st = cd_cc_polynomial(q, c0, c1, b);
     else if (method == CDIST_METHOD_ITERATION) st = cd_cc_iteration(q, c0, c1, b, iterations);
     *answered = method;
-    if (method == CDIST_METHOD_ROBUST || method == CDIST_METHOD_AUTO || st != CDIST_OK) {
+    if (method == CDIST_METHOD_AUTO) {
+        /* The certified robust scan; where it gives up (degenerate multiple roots) the
+         * polynomial method, and the dense robust scan if that fails too. */
+        int over;
+        cd_best_init(b, b->scale);
+        *answered = CDIST_METHOD_ROBUST;
+        st = cc_robust(q, c0, c1, b, 0, &over);
+        if (st != CDIST_OK || !over) return st;
+        st = cd_cc_polynomial(q, c0, c1, b);
+        if (st == CDIST_OK) {
+            *answered = CDIST_METHOD_POLYNOMIAL;
+            cc_equidistant_post(c0, c1, b);
+            return st;
+        }
+        method = CDIST_METHOD_ROBUST;
+    }
+    if (method == CDIST_METHOD_ROBUST || st != CDIST_OK) {
+        int over;
         cd_best_init(b, b->scale);
         if (iterations) *iterations = 0;
         *answered = CDIST_METHOD_ROBUST;
-        st = cc_robust(q, c0, c1, b);
+        st = cc_robust(q, c0, c1, b, 1, &over);
     } else {
         cc_equidistant_post(c0, c1, b);
     }
@@ -665,7 +729,8 @@ int cd_circle_circle_critical(cdist_query *q, const cd_circle *c0, const cd_circ
     vec3 C = v_sub(c1->c, c0->c);
     cc_frame f;
     frame_init(&f, c0, C, c1);
-    cc_sink k = {&f, 1, theta0, cap, 0, NULL, 0, c0, c1, 0.0, INFINITY, INFINITY, INFINITY};
+    cc_sink k = {.f = &f, .want_max = 1, .out = theta0, .cap = cap, .A = c0, .B = c1, .dense_ok = 1,
+                 .Fmin = INFINITY, .dmin = INFINITY, .rho_min = INFINITY};
     double Fmax;
     scan(&f, &k, &Fmax);
     int n = k.count < cap ? k.count : cap;
@@ -697,7 +762,7 @@ cdist_status cdist_circle_circle(cdist_query *q, const cdist_circle *c0, const c
     cd_best_init(&best, fmax(fmax(a.r, b.r), v_norm(b.c)));
     cdist_method m = cd_pick_method(q, CD_HAS(CDIST_METHOD_POLYNOMIAL) | CD_HAS(CDIST_METHOD_ROBUST) |
                                            CD_HAS(CDIST_METHOD_ITERATION),
-                                    CDIST_METHOD_ROBUST);
+                                    CDIST_METHOD_AUTO);
     int iterations = 0;
     cdist_method answered;
     st = cc_core(q, m, &a, &b, &best, &iterations, &answered);
