@@ -111,19 +111,17 @@ static void tp_term(tpoly *p, int k, double a, double b)
     p->re[4 - k] += 0.5 * a;
     p->im[4 - k] += 0.5 * b;
 }
-static void tp_mul(const tpoly *x, const tpoly *y, tpoly *z)
+/* z = x y for x of degree dx and y of degree dy (dx + dy <= 4). */
+static void tp_mul(const tpoly *x, int dx, const tpoly *y, int dy, tpoly *z)
 {
     tpoly r;
     tp_zero(&r);
-    for (int i = 0; i < 9; i++) {
-        if (x->re[i] == 0.0 && x->im[i] == 0.0) continue;
-        for (int j = 0; j < 9; j++) {
+    for (int i = 4 - dx; i <= 4 + dx; i++)
+        for (int j = 4 - dy; j <= 4 + dy; j++) {
             int k = i + j - 4;
-            if (k < 0 || k > 8) continue;
             r.re[k] += x->re[i] * y->re[j] - x->im[i] * y->im[j];
             r.im[k] += x->re[i] * y->im[j] + x->im[i] * y->re[j];
         }
-    }
     *z = r;
 }
 
@@ -158,13 +156,14 @@ static void frame_init(cc_frame *f, const cd_circle *A, vec3 C, const cd_circle 
     tp_zero(&G);
     tp_term(&G, 1, bg, -ag);
     tp_term(&G, 2, ab, 0.5 * (bb - aa));
-    tp_mul(&S, &S, &T);
-    tp_mul(&Q, &T, &H);
-    tp_mul(&G, &G, &T);
+    tp_mul(&S, 1, &S, 1, &T);
+    tp_mul(&Q, 2, &T, 2, &H);
+    tp_mul(&G, 2, &G, 2, &T);
     double s2 = f->s * f->s;
     f->M1 = f->M2 = f->M3 = f->Hc = 0;
     for (int i = 0; i < 9; i++) {
-        double c = hypot(H.re[i] - s2 * T.re[i], H.im[i] - s2 * T.im[i]);
+        double cr = H.re[i] - s2 * T.re[i], ci = H.im[i] - s2 * T.im[i];
+        double c = sqrt(cr * cr + ci * ci); /* the problem is scaled to L ~ 1: no overflow */
         double k = fabs((double)(i - 4));
         f->Hc += c;
         f->M1 += k * c;
@@ -301,6 +300,7 @@ typedef struct cc_sink {
     cd_best *best;  /* robust mode */
     int swapped;    /* robust mode: A is the second circle */
     const cd_circle *A, *B;
+    double unscale; /* robust mode: the factor undoing the problem's scaling */
     int dense_ok; /* on budget overflow: sample densely (else report the overflow) */
     double tmin, Fmin; /* partition point with the smallest F */
     double dmin;  /* smallest refined distance */
@@ -330,9 +330,9 @@ static void pair_at(const cc_frame *f, double t, cc_sink *k)
     vec3 K = v_add(f->C, dir);
     double ta = (t <= -M_PI) ? t + 2 * M_PI : (t > M_PI ? t - 2 * M_PI : t);
     if (k->B->r == 0.0) tb = NAN;
-    if (!k->swapped) cd_best_offer(k->best, d2, P, K, ta, tb);
-    else cd_best_offer(k->best, d2, v_sub(K, f->C), v_sub(P, f->C), tb, ta); /* + c1's centre */
-    double d = sqrt(d2);
+    double u = k->unscale, d = sqrt(d2);
+    if (!k->swapped) cd_best_offer(k->best, d2 * u * u, v_scale(u, P), v_scale(u, K), ta, tb);
+    else cd_best_offer(k->best, d2 * u * u, v_scale(u, v_sub(K, f->C)), v_scale(u, v_sub(P, f->C)), tb, ta);
     if (d < k->dmin) {
         k->dmin = d;
         k->rho_min = rho;
@@ -574,9 +574,22 @@ static cdist_status cc_robust(cdist_query *q, const cd_circle *c0, const cd_circ
         }
         return CDIST_OK;
     }
+    /* Scale the problem by a power of two (exact) so that L is about 1: H has terms of order
+     * L^6, which would overflow or underflow for coordinates near the 1e150 limit. */
+    int ex;
+    frexp(L, &ex);
+    double sc = ldexp(1.0, -ex), unsc = ldexp(1.0, ex);
+    cd_circle As = *A, Bs = *B;
+    As.c = v_scale(sc, A->c);
+    As.r = sc * A->r;
+    Bs.c = v_scale(sc, B->c);
+    Bs.r = sc * B->r;
+    CB = v_scale(sc, CB);
+    A = &As;
+    B = &Bs;
     cc_frame f;
     frame_init(&f, A, CB, B);
-    cc_sink k = {.f = &f, .best = b, .swapped = sw, .A = A, .B = B, .dense_ok = dense_ok, .Fmin = INFINITY,
+    cc_sink k = {.f = &f, .best = b, .unscale = unsc, .swapped = sw, .A = A, .B = B, .dense_ok = dense_ok, .Fmin = INFINITY,
                  .dmin = INFINITY, .rho_min = INFINITY};
     double Fmax;
     if (scan(&f, &k, &Fmax)) {
@@ -587,7 +600,7 @@ static cdist_status cc_robust(cdist_query *q, const cd_circle *c0, const cd_circ
     if (b->n == 0 && isfinite(k.Fmin)) pair_at(&f, k.tmin, &k);
     if (b->n == 0 || !isfinite(k.dmin)) return cd_fail(q, CDIST_ERR_INTERNAL, "circle-circle: no minimum found");
     /* (a) F constant on A; (b) the closest point of A on B's axis. */
-    if (sqrt(Fmax) - k.dmin <= CC_EQUI_ULPS * DBL_EPSILON * L) b->equidistant = 1;
+    if (sqrt(Fmax) - k.dmin <= CC_EQUI_ULPS * DBL_EPSILON * f.L) b->equidistant = 1;
     if (k.rho_min <= 8 * f.epsL) b->equidistant = 1;
     return CDIST_OK;
 }
@@ -727,6 +740,18 @@ int cd_circle_circle_critical(cdist_query *q, const cd_circle *c0, const cd_circ
     if (cap < 0) cap = 0;
     if (c0->r == 0.0) return -1; /* a point: every angle gives the same point */
     vec3 C = v_sub(c1->c, c0->c);
+    /* Angles do not change under scaling: work at L ~ 1 (see cc_robust). */
+    int ex;
+    frexp(fmax(fmax(c0->r, c1->r), v_norm(C)), &ex);
+    double sc = ldexp(1.0, -ex);
+    cd_circle a = *c0, b = *c1;
+    a.c = v3(0, 0, 0);
+    a.r *= sc;
+    b.c = v_scale(sc, C);
+    b.r *= sc;
+    c0 = &a;
+    c1 = &b;
+    C = b.c;
     cc_frame f;
     frame_init(&f, c0, C, c1);
     cc_sink k = {.f = &f, .want_max = 1, .out = theta0, .cap = cap, .A = c0, .B = c1, .dense_ok = 1,

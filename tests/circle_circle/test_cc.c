@@ -8,6 +8,9 @@
 #include "check.h"
 
 static cdist_query *q;
+/* Tolerance of the extreme-scale checks: a few ulps for the robust method (AUTO uses it), the
+ * project's 1e-13 of scale for the others. */
+static double scale_tol = 4 * 2.220446049250313e-16;
 static const double EPS = 2.220446049250313e-16;
 
 static cdist_circle circ(double cx, double cy, double cz, double nx, double ny, double nz, double r)
@@ -346,6 +349,34 @@ static void random_checks(int count)
     printf("random: max error vs brute force %.3g of scale, max asymmetry %.3g of scale\n", worst, worst_sym);
 }
 
+/* Extreme magnitudes: the same configurations scaled by 2^-480 .. 2^480 (about 1e-145 ..
+ * 1e145) give the scaled distance (scaling by a power of two is exact). */
+static void extreme_scales(void)
+{
+    for (int i = 0; i < 40; i++) {
+        cdist_circle a = rand_circle(1.5), b = rand_circle(1.5);
+        if (i % 4 == 1) b = a, b.center.x += 0.25, b.normal = rand_unit(); /* linked-ish */
+        if (i % 4 == 2) b.normal = a.normal;                                /* parallel */
+        cdist_result r0, r;
+        CHECK(cdist_circle_circle(q, &a, &b, &r0) == CDIST_OK, "scale base %d", i);
+        for (int e = -480; e <= 480; e += 160) {
+            double f = ldexp(1.0, e);
+            cdist_circle x = a, y = b;
+            x.center = tv(f * a.center.x, f * a.center.y, f * a.center.z);
+            y.center = tv(f * b.center.x, f * b.center.y, f * b.center.z);
+            x.radius *= f;
+            y.radius *= f;
+            CHECK(cdist_circle_circle(q, &x, &y, &r) == CDIST_OK, "scale 2^%d status %s", e,
+                  cdist_query_last_error(q));
+            double L = scale_of(&x, &y, r.distance);
+            CHECK(fabs(r.distance - f * r0.distance) <= scale_tol * L, "scale 2^%d case %d: %.17g vs %.17g", e, i,
+                  r.distance, f * r0.distance);
+            CHECK(r.num_pairs == r0.num_pairs && r.equidistant == r0.equidistant, "scale 2^%d case %d: flags", e,
+                  i);
+        }
+    }
+}
+
 static void batch(void)
 {
     cdist_circle a[3] = {circ(0, 0, 0, 0, 0, 1, 1), circ(0, 0, 0, 0, 0, 1, 1), circ(0, 0, 0, 0, 0, 1, 2)};
@@ -377,9 +408,11 @@ int main(int argc, char **argv)
                                                     : CDIST_METHOD_AUTO;
     q = cdist_query_new();
     cdist_query_set_method(q, m);
+    if (m == CDIST_METHOD_POLYNOMIAL || m == CDIST_METHOD_ITERATION) scale_tol = 1e-13;
     paper_examples();
     exact_families();
     random_checks(400);
+    extreme_scales();
     batch();
     cdist_query_free(q);
     return check_summary("circle_circle");
