@@ -64,7 +64,7 @@
 #define CC_EQUI_ULPS 32.0
 
 #ifdef CC_STATS
-long cc_stat_evals, cc_stat_refine_its, cc_stat_brackets, cc_stat_dense, cc_stat_leaves_narrow;
+long cc_stat_pruned, cc_stat_evals, cc_stat_refine_its, cc_stat_brackets, cc_stat_dense, cc_stat_leaves_narrow;
 #define STAT(x) (x)
 #else
 #define STAT(x) ((void)0)
@@ -91,6 +91,7 @@ typedef struct cc_pt {
     double H, H1, H2; /* H, H', H'' */
     double F1;    /* F'/2 */
     double F;     /* F */
+    double d;     /* sqrt(F) */
 } cc_pt;
 
 /* ---- trigonometric polynomials of degree <= 4 as complex coefficients c_k, k = -4..4 ---- */
@@ -231,6 +232,7 @@ static void cc_eval(const cc_frame *f, double t, double c, double s, cc_pt *p)
     double dr = rho - f->s;
     p->F1 = dr * rp + h * h1;
     p->F = dr * dr + h * h;
+    p->d = sqrt(p->F);
 }
 
 /* F'/2 and F''/2 only (for the refinement). */
@@ -362,6 +364,7 @@ static void emit(cc_sink *k, const cc_pt *a, const cc_pt *b)
     }
 }
 
+#define POS(x) ((x) > 0 ? (x) : 0.0)
 /* Certificates on [a, b] (see the header comment). 1: resolved (<= 1 root of H). First order
  * with the global bounds M1, M2; second order with the endpoint values of H'' and M3 (from each
  * end over half the interval, the cubic lower bound taken at its worst, x = w/2). */
@@ -377,8 +380,8 @@ static int certified(const cc_frame *f, const cc_pt *a, const cc_pt *b)
             double lb = B - (sg * b->H1 + f->eH1) * x - 0.5 * f->M2 * x * x;
             if (la > 0 && lb > 0) return 1;
             double c3 = f->M3 * x * x * x / 6;
-            la = A - (fmax(0.0, -sg * a->H1) + f->eH1) * x - (fmax(0.0, -sg * a->H2) + f->eH2) * 0.5 * x * x - c3;
-            lb = B - (fmax(0.0, sg * b->H1) + f->eH1) * x - (fmax(0.0, -sg * b->H2) + f->eH2) * 0.5 * x * x - c3;
+            la = A - (POS(-sg * a->H1) + f->eH1) * x - (POS(-sg * a->H2) + f->eH2) * 0.5 * x * x - c3;
+            lb = B - (POS(sg * b->H1) + f->eH1) * x - (POS(-sg * b->H2) + f->eH2) * 0.5 * x * x - c3;
             if (la > 0 && lb > 0) return 1;
         }
     }
@@ -388,8 +391,8 @@ static int certified(const cc_frame *f, const cc_pt *a, const cc_pt *b)
         if (A > 0 && B > 0) {
             if (A + B > f->M2 * w) return 1;
             double c2 = 0.5 * f->M3 * x * x;
-            double la = A - (fmax(0.0, -sg * a->H2) + f->eH2) * x - c2;
-            double lb = B - (fmax(0.0, sg * b->H2) + f->eH2) * x - c2;
+            double la = A - (POS(-sg * a->H2) + f->eH2) * x - c2;
+            double lb = B - (POS(sg * b->H2) + f->eH2) * x - c2;
             if (la > 0 && lb > 0) return 1;
         }
     }
@@ -477,6 +480,9 @@ static int scan(const cc_frame *f, cc_sink *k, double *Fmax)
     };
     ival st[CC_STACK];
     int evals = 0, over = 0;
+    double dbest = INFINITY; /* smallest sampled distance: the minimum is at most this */
+    for (int i = 0; i < CC_INIT_INTERVALS; i++)
+        if (init[i].d < dbest) dbest = init[i].d;
     int saved_count = k->count;
     cd_best saved_best;
     double saved_dmin = k->dmin, saved_rho = k->rho_min;
@@ -491,6 +497,17 @@ static int scan(const cc_frame *f, cc_sink *k, double *Fmax)
                 k->tmin = a.t;
             }
             double w = b.t - a.t;
+            /* Robust mode prunes: the distance is R-Lipschitz in the angle, so on [a, b] it is at
+             * least (d(a) + d(b) - R w) / 2; above an attained distance (a sample or a refined
+             * minimum) the interval cannot hold the global minimum. */
+            if (k->best && 0.5 * (a.d + b.d - f->R * w) > fmin(dbest, k->dmin) * (1 + 8 * DBL_EPSILON)) {
+                STAT(cc_stat_pruned++);
+                if (sp == 0) break;
+                a = b;
+                b = st[--sp].b;
+                level = st[sp].level;
+                continue;
+            }
             if (certified(f, &a, &b) || (w <= CC_MIN_WIDTH && (STAT(cc_stat_leaves_narrow++), 1))) {
                 emit(k, &a, &b);
                 if (sp == 0) break;
