@@ -94,6 +94,8 @@ typedef struct cc_pt {
     double d;     /* sqrt(F) */
 } cc_pt;
 
+static inline double dot3(vec3 a, vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+
 /* ---- trigonometric polynomials of degree <= 4 as complex coefficients c_k, k = -4..4 ---- */
 typedef struct tpoly {
     double re[9], im[9];
@@ -112,17 +114,25 @@ static void tp_term(tpoly *p, int k, double a, double b)
     p->re[4 - k] += 0.5 * a;
     p->im[4 - k] += 0.5 * b;
 }
-/* z = x y for x of degree dx and y of degree dy (dx + dy <= 4). */
+/* z = x y for x of degree dx and y of degree dy (dx + dy <= 4); only the coefficients k >= 0
+ * are formed (c_{-k} = conj(c_k) for real functions; every user reads k >= 0 only). */
 static void tp_mul(const tpoly *x, int dx, const tpoly *y, int dy, tpoly *z)
 {
     tpoly r;
     tp_zero(&r);
-    for (int i = 4 - dx; i <= 4 + dx; i++)
-        for (int j = 4 - dy; j <= 4 + dy; j++) {
-            int k = i + j - 4;
-            r.re[k] += x->re[i] * y->re[j] - x->im[i] * y->im[j];
-            r.im[k] += x->re[i] * y->im[j] + x->im[i] * y->re[j];
+    for (int k = 0; k <= dx + dy; k++) {
+        int lo = k - dy > -dx ? k - dy : -dx, hi = k + dy < dx ? k + dy : dx;
+        double re = 0, im = 0;
+        for (int i = lo; i <= hi; i++) {
+            int j = k - i;
+            re += x->re[4 + i] * y->re[4 + j] - x->im[4 + i] * y->im[4 + j];
+            im += x->re[4 + i] * y->im[4 + j] + x->im[4 + i] * y->re[4 + j];
         }
+        r.re[4 + k] = re;
+        r.im[4 + k] = im;
+        r.re[4 - k] = re;
+        r.im[4 - k] = -im;
+    }
     *z = r;
 }
 
@@ -138,15 +148,15 @@ static void frame_init(cc_frame *f, const cd_circle *A, vec3 C, const cd_circle 
     f->al = v_scale(f->R, v_cross(m, A->u));
     f->be = v_scale(f->R, v_cross(m, A->v));
     f->ga = v_neg(v_cross(m, C));
-    f->ha = f->R * v_dot(m, A->u);
-    f->hb = f->R * v_dot(m, A->v);
-    f->hc = -v_dot(m, C);
-    f->Cu = v_dot(C, A->u);
-    f->Cv = v_dot(C, A->v);
+    f->ha = f->R * dot3(m, A->u);
+    f->hb = f->R * dot3(m, A->v);
+    f->hc = -dot3(m, C);
+    f->Cu = dot3(C, A->u);
+    f->Cv = dot3(C, A->v);
 
     /* Fourier coefficients of Q, sigma, g = w.w' and H = Q sigma^2 - s^2 g^2. */
-    double aa = v_dot(f->al, f->al), bb = v_dot(f->be, f->be), ab = v_dot(f->al, f->be);
-    double ag = v_dot(f->al, f->ga), bg = v_dot(f->be, f->ga), gg = v_dot(f->ga, f->ga);
+    double aa = dot3(f->al, f->al), bb = dot3(f->be, f->be), ab = dot3(f->al, f->be);
+    double ag = dot3(f->al, f->ga), bg = dot3(f->be, f->ga), gg = dot3(f->ga, f->ga);
     tpoly Q, S, G, T, H;
     tp_zero(&Q);
     tp_term(&Q, 0, 0.5 * (aa + bb) + gg, 0);
@@ -162,10 +172,11 @@ static void frame_init(cc_frame *f, const cd_circle *A, vec3 C, const cd_circle 
     tp_mul(&G, 2, &G, 2, &T);
     double s2 = f->s * f->s;
     f->M1 = f->M2 = f->M3 = f->Hc = 0;
-    for (int i = 0; i < 9; i++) {
+    for (int i = 4; i < 9; i++) {
         double cr = H.re[i] - s2 * T.re[i], ci = H.im[i] - s2 * T.im[i];
-        double c = sqrt(cr * cr + ci * ci); /* the problem is scaled to L ~ 1: no overflow */
-        double k = fabs((double)(i - 4));
+        /* the problem is scaled to L ~ 1: no overflow; c_{-k} has the same modulus */
+        double c = (i == 4 ? 1 : 2) * sqrt(cr * cr + ci * ci);
+        double k = (double)(i - 4);
         f->Hc += c;
         f->M1 += k * c;
         f->M2 += k * k * c;
@@ -198,7 +209,6 @@ static void frame_init(cc_frame *f, const cd_circle *A, vec3 C, const cd_circle 
 /* Hot-path arithmetic without fma(): the library is built for baseline x86-64, where fma() is a
  * libm call; plain products are accurate enough for sampling and Newton steps (the final
  * distance of each pair is recomputed in pair_at). */
-static inline double dot3(vec3 a, vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
 /* w = al c + be s + ga and w' = be c - al s */
 static inline void w_at(const cc_frame *f, double c, double s, vec3 *w, vec3 *w1)
 {
