@@ -60,15 +60,9 @@
 #define CC_MIN_WIDTH (1.0 / 1073741824.0) /* 2^-30 rad */
 #define CC_EVAL_BUDGET 200
 #define CC_DENSE_SAMPLES 512
-#define CC_STACK 96
+#define CC_STACK 40 /* > the deepest level (31) */
 #define CC_EQUI_ULPS 32.0
 
-#ifdef CC_STATS
-long cc_stat_pruned, cc_stat_evals, cc_stat_refine_its, cc_stat_brackets, cc_stat_dense, cc_stat_leaves_narrow;
-#define STAT(x) (x)
-#else
-#define STAT(x) ((void)0)
-#endif
 
 /* The parameterised circle A at the origin and the other circle B. */
 typedef struct cc_frame {
@@ -272,7 +266,6 @@ static double refine(const cc_frame *f, const cc_pt *a, const cc_pt *b, int dir)
     if (!(x > lo && x < hi)) x = 0.5 * (lo + hi);
     double dxold = hi - lo;
     for (int it = 0; it < 100; it++) {
-        STAT(cc_stat_refine_its++);
         double c, s, F1, F2;
         sincos(x, &s, &c);
         cc_deriv(f, c, s, &F1, &F2);
@@ -291,9 +284,6 @@ static double refine(const cc_frame *f, const cc_pt *a, const cc_pt *b, int dir)
             newton = 0;
         }
         double dx = fabs(xn - x);
-#ifdef CC_TRACE
-        fprintf(stderr, "it %d x %.17g F1 %.3g F2 %.3g newton %d dx %.3g\n", it, x, F1, F2, newton, dx);
-#endif
         /* Quadratic convergence: after a Newton step this small the error is below rounding. */
         if (newton && dx <= 1e-9) return xn;
         dxold = dx;
@@ -357,7 +347,6 @@ static void emit(cc_sink *k, const cc_pt *a, const cc_pt *b)
     if (a->F1 < 0 && b->F1 >= 0) dir = 1;
     else if (k->want_max && a->F1 > 0 && b->F1 <= 0) dir = -1;
     if (!dir) return;
-    STAT(cc_stat_brackets++);
     double t = refine(k->f, a, b, dir);
     if (!k->best) {
         double ta = (t <= -M_PI) ? t + 2 * M_PI : (t > M_PI ? t - 2 * M_PI : t);
@@ -412,7 +401,6 @@ static int certified(const cc_frame *f, const cc_pt *a, const cc_pt *b)
 /* Dense sampling fallback: F' signs on CC_DENSE_SAMPLES points. */
 static void scan_dense(const cc_frame *f, cc_sink *k, double *Fmax)
 {
-    STAT(cc_stat_dense++);
     cc_pt first = {0}, prev = {0}, cur;
     double step = 2 * M_PI / CC_DENSE_SAMPLES;
     for (int i = 0; i <= CC_DENSE_SAMPLES; i++) {
@@ -511,14 +499,13 @@ static int scan(const cc_frame *f, cc_sink *k, double *Fmax)
              * least (d(a) + d(b) - R w) / 2; above an attained distance (a sample or a refined
              * minimum) the interval cannot hold the global minimum. */
             if (k->best && 0.5 * (a.d + b.d - f->R * w) > fmin(dbest, k->dmin) * (1 + 8 * DBL_EPSILON)) {
-                STAT(cc_stat_pruned++);
                 if (sp == 0) break;
                 a = b;
                 b = st[--sp].b;
                 level = st[sp].level;
                 continue;
             }
-            if (certified(f, &a, &b) || (w <= CC_MIN_WIDTH && (STAT(cc_stat_leaves_narrow++), 1))) {
+            if (certified(f, &a, &b) || w <= CC_MIN_WIDTH) {
                 emit(k, &a, &b);
                 if (sp == 0) break;
                 a = b;
@@ -536,7 +523,6 @@ static int scan(const cc_frame *f, cc_sink *k, double *Fmax)
             cc_pt mid;
             cc_eval(f, 0.5 * (a.t + b.t), cm, sm, &mid);
             evals++;
-            STAT(cc_stat_evals++);
             level++;
             st[sp].b = b;
             st[sp++].level = level;
