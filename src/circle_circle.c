@@ -16,25 +16,33 @@
  *     H(t) = Q sigma^2 - s^2 (w.w')^2              (paper eq. (8)),
  * which has at most 8 roots unless it vanishes identically.
  *
- * Root bounding (no polynomial is solved): H's nine Fourier coefficients are formed by exact
+ * Root bounding (no polynomial is solved): H's Fourier coefficients c_k are formed by exact
  * products of the coefficient arrays of Q, sigma and w.w', which gives rigorous bounds
- * M1 >= |H'|, M2 >= |H''| (sums of |k| |c_k| and k^2 |c_k|). [-pi, pi) is split into 16
- * intervals and each interval is subdivided until it is certified to hold
- *   - no root of H: a root t would need |H(a) + H'(a)(t-a)| <= M2 (t-a)^2 / 2 from both ends
- *     (tested at the midpoint, where the concave lower bounds are weakest), or |H(a)|+|H(b)| <=
- *     M1 (b-a); or
- *   - at most one root: H' keeps its sign, |H'(a)| + |H'(b)| > M2 (b-a),
+ * M_j = sum |k|^j |c_k| >= |H^(j)|. [-pi, pi) is split into 8 intervals and each interval is
+ * bisected until it is certified to hold
+ *   - no root of H: from each end over half the interval, the Taylor lower bound
+ *     |H(a)| - |H'(a)| x - M2 x^2/2 (or, second order, with H''(a) and M3 x^3/6) stays positive,
+ *     or |H(a)| + |H(b)| > M1 (b - a); or
+ *   - at most one root: H' keeps its sign (the same tests one derivative up),
  * with every value reduced by a first-order bound of its rounding error, or until it is
  * narrower than 2^-30 rad. Between two consecutive partition points F' then changes sign at most
  * once, so every local minimum of F is bracketed by a (-,+) sign pair of the true F' at
- * consecutive points; it is refined by safeguarded Newton/bisection on the true F' and offered
- * with the point-circle closest point on B. A narrow unresolved interval (near a multiple root,
- * e.g. where A crosses B's axis, a double root of H) can hide a min/max pair of F only with a
- * dip of order |F'''| (2^-30)^3, far below rounding. A concave kink of F (A crossing B's axis
- * transversally: F = smooth - 2 s |linear|) is never a local minimum; when A is tangent to
- * B's axis F is C^1 and the minimum there is bracketed like any other.
- * When H vanishes to rounding (coaxial circles, the constant cases below) or the subdivision
- * exceeds its budget, F' is sampled on 512 points instead.
+ * consecutive points (the partition points share their values, so a sign read at rounding level
+ * still brackets every transition exactly once); it is refined by safeguarded Newton/bisection
+ * on the true F' and offered with the point-circle closest point on B. Intervals narrower than
+ * 2^-30 rad that stay uncertified (multiple roots of H: symmetric configurations, tangencies,
+ * A crossing B's axis, where H has a double root) are only sign-checked; a further min/max pair
+ * of F hidden inside one would lie within 2^-30 rad. A concave kink of F (A crossing B's axis
+ * transversally: F = smooth - 2 s |linear|) is never a local minimum; when A is tangent to B's
+ * axis, F is C^1 and the minimum there is bracketed like any other.
+ * Pruning: the distance sqrt(F) is R-Lipschitz in t, so an interval whose lower bound
+ * (d(a) + d(b) - R (b - a)) / 2 exceeds an attained distance (a sample, a refined minimum)
+ * cannot hold the global minimum and is dropped (not in the critical-angle mode).
+ * Fallbacks: when H vanishes to rounding (coaxial circles, constant F) and the samples show F
+ * constant, a sample is the answer; otherwise, or when the subdivision exceeds its budget of
+ * 200 evaluations (multiple roots at rounding level, e.g. tangent circles), ROBUST samples F'
+ * on 512 points, and AUTO asks the polynomial method instead (then the dense scan if it fails).
+ * The problem is scaled by a power of two (exact) to L ~ 1 first: H has terms of order L^6.
  *
  * Which circle is parameterised: the larger one (ties broken by a rule that is antisymmetric
  * in the arguments), translated to the origin. With the dispatcher translating to the first
@@ -49,6 +57,11 @@
  *       the minimum distance <= 32 eps L.
  *   (b) The closest point of A lies on B's axis (rho <= 8 eps (R + |C|)): all of B is equally
  *       close to it (e.g. the meridian case seen from the larger circle).
+ * The tolerances are relative to L, so a configuration that is equidistant only up to the
+ * rounding of coordinates much larger than L (far from the origin) may come out with one or two
+ * pairs instead (the distance is right either way). The same two tests (with 16 samples per
+ * circle for (a), stopping at the first that differs) are applied to the answers of the
+ * polynomial and iteration methods (cc_equidistant_post).
  * Radius 0: a zero-radius circle is a point and the point-circle core answers. */
 #include <math.h>
 #include <stdio.h>
@@ -62,7 +75,6 @@
 #define CC_DENSE_SAMPLES 512
 #define CC_STACK 40 /* > the deepest level (31) */
 #define CC_EQUI_ULPS 32.0
-
 
 /* The parameterised circle A at the origin and the other circle B. */
 typedef struct cc_frame {
