@@ -304,6 +304,24 @@ static void random_checks(int count)
             b.center = tv(b.center.x + k * d.x, b.center.y + k * d.y, b.center.z + k * d.z);
         } else if (kind == 5) { /* very different radii */
             b.radius = a.radius * 1e-4 * (1 + urand());
+        } else if (kind == 7) { /* an exact family perturbed by 1e-6 .. 1e-14 */
+            static const cdist_circle fam[][2] = {
+                {{{0, 0, 0}, {0, 0, 1}, 2}, {{2, 0, 0}, {0, 1, 0}, 1}},                   /* meridian */
+                {{{0, 0, 0}, {0, 0, 1}, 2}, {{0, 1, 0}, {-0.5, 0, 0.86602540378443865}, 2}}, /* villarceau */
+                {{{0, 0, 0}, {0, 0, 1}, 1}, {{0, 0, 0.5}, {0, 0, 1}, 1.5}},                /* coaxial */
+                {{{0, 0, 0}, {0, 0, 1}, 1}, {{1, 0, 0}, {0, 1, 0}, 1}},                    /* hopf */
+                {{{0, 0, 0}, {0, 0, 1}, 1}, {{2, 0, 0}, {0, 0, 1}, 1}},                    /* external tangent */
+                {{{0, 0, 0}, {0, 0, 1}, 2}, {{0, 0, 0.3}, {1, 0, 0}, 1}},                  /* axes perpendicular */
+            };
+            int fi = (i / 8) % 6;
+            double eps = pow(10.0, -6 - 8 * urand());
+            a = fam[fi][0];
+            b = fam[fi][1];
+            b.center = tv(b.center.x + eps * srand1(), b.center.y + eps * srand1(), b.center.z + eps * srand1());
+            cdist_vec3 n = tv(b.normal.x + eps * srand1(), b.normal.y + eps * srand1(), b.normal.z + eps * srand1());
+            double nn = sqrt(n.x * n.x + n.y * n.y + n.z * n.z);
+            b.normal = tv(n.x / nn, n.y / nn, n.z / nn);
+            b.radius *= 1 + eps * srand1();
         } else if (kind == 6) { /* centre near the other's axis */
             double h = 2 * srand1();
             b.center = tv(a.center.x + h * a.normal.x + 1e-8 * srand1(), a.center.y + h * a.normal.y,
@@ -318,8 +336,11 @@ static void random_checks(int count)
         double sym = fabs(r.distance - rs.distance) / L;
         if (err > worst) worst = err;
         if (sym > worst_sym) worst_sym = sym;
-        CHECK(err <= 1e-13, "random %d (kind %d): distance %.17g brute force %.20Lg (err %.3g of scale)", i, kind,
-              r.distance, e, err);
+        CHECK(err <= 1e-13,
+              "random %d (kind %d): distance %.17g brute force %.20Lg (err %.3g of scale)\n  cc %.17g %.17g %.17g "
+              "%.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g",
+              i, kind, r.distance, e, err, a.center.x, a.center.y, a.center.z, a.normal.x, a.normal.y, a.normal.z,
+              a.radius, b.center.x, b.center.y, b.center.z, b.normal.x, b.normal.y, b.normal.z, b.radius);
         CHECK(sym <= 4 * EPS, "random %d (kind %d): f(a,b) %.17g f(b,a) %.17g", i, kind, r.distance, rs.distance);
         CHECK(r.num_pairs == rs.num_pairs && r.equidistant == rs.equidistant, "random %d: swapped flags differ", i);
         if (r.num_pairs == rs.num_pairs && r.num_pairs >= 1) {
@@ -400,8 +421,12 @@ static void batch(void)
 int main(int argc, char **argv)
 {
     const char *method = "auto";
-    for (int i = 1; i < argc; i++)
+    int count = 400;
+    for (int i = 1; i < argc; i++) {
         if (!strncmp(argv[i], "--method=", 9)) method = argv[i] + 9;
+        if (!strncmp(argv[i], "--count=", 8)) count = atoi(argv[i] + 8);
+        if (!strncmp(argv[i], "--seed=", 7)) check_rng_state = strtoull(argv[i] + 7, NULL, 10) | 1;
+    }
     cdist_method m = !strcmp(method, "polynomial") ? CDIST_METHOD_POLYNOMIAL
                      : !strcmp(method, "robust")   ? CDIST_METHOD_ROBUST
                      : !strcmp(method, "iteration") ? CDIST_METHOD_ITERATION
@@ -411,7 +436,7 @@ int main(int argc, char **argv)
     if (m == CDIST_METHOD_POLYNOMIAL || m == CDIST_METHOD_ITERATION) scale_tol = 1e-13;
     paper_examples();
     exact_families();
-    random_checks(400);
+    random_checks(count);
     extreme_scales();
     batch();
     cdist_query_free(q);
