@@ -89,10 +89,10 @@ cdist_status cd_cc_iteration(cdist_query *q, const cd_circle *c0, const cd_circl
     if (sn <= 1e-13) { /* §2.3: parallel axes, closed forms, polished */
         double t0[4];
         int k = cd_cc_parallel_candidates(&g, t0);
-        for (int i = 0; i < k; i++) {
-            double F;
-            cd_cc_offer(&g, 0, cd_cc_polish(&g, 0, t0[i], &F), b);
-        }
+        int sd[4] = {0, 0, 0, 0};
+        double F[4];
+        for (int i = 0; i < k; i++) t0[i] = cd_cc_polish(&g, 0, t0[i], &F[i]);
+        cd_cc_offer_minima(&g, k, sd, t0, F, b);
         return CDIST_OK;
     }
     int cap = q->max_iterations > 0 ? q->max_iterations : CD_DEFAULT_MAX_ITERATIONS;
@@ -151,11 +151,13 @@ cdist_status cd_cc_iteration(cdist_query *q, const cd_circle *c0, const cd_circl
             fp[nf].t = a, fp[nf].F = F, fp[nf].iters = fp[i].iters, nf++;
         }
     }
-    int ib = 0;
+    int ib = 0, sd[sizeof fp / sizeof fp[0]];
+    double ft[sizeof fp / sizeof fp[0]], fF[sizeof fp / sizeof fp[0]];
     for (int i = 0; i < nf; i++) {
-        cd_cc_offer(&g, 0, fp[i].t, b);
+        sd[i] = 0, ft[i] = fp[i].t, fF[i] = fp[i].F;
         if (fp[i].F < fp[ib].F) ib = i;
     }
+    cd_cc_offer_minima(&g, nf, sd, ft, fF, b);
     *iterations = nf ? fp[ib].iters : 0;
     return CDIST_OK;
 }

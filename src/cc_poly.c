@@ -124,6 +124,41 @@ void cd_cc_offer(const cd_cc *g, int side, double t, cd_best *b)
     else cd_best_offer(b, F, K, v_add(P, g->D), af, am);
 }
 
+/* Angle on c0 of the pair found at angle t of side s. */
+static double c0_angle(const cd_cc *g, int side, double t)
+{
+    if (side == 0) return t;
+    vec3 K;
+    cd_cc_eval(g, 1, t, NULL, NULL, NULL, &K);
+    double a = cd_circle_angle(g->c[0], K);
+    return isnan(a) ? 0.0 : a;
+}
+
+void cd_cc_offer_minima(const cd_cc *g, int n, const int *side, const double *t, const double *F, cd_best *b)
+{
+    if (n <= 0) return;
+    int ib = 0;
+    for (int i = 1; i < n; i++)
+        if (F[i] < F[ib]) ib = i;
+    double dbest = sqrt(F[ib]), tie = CD_TIE_ULPS * DBL_EPSILON * g->L;
+    double abest = c0_angle(g, side[ib], t[ib]);
+    cd_cc_offer(g, side[ib], t[ib], b);
+    for (int i = 0; i < n; i++) {
+        if (i == ib) continue;
+        if (sqrt(F[i]) - dbest <= tie) {
+            /* A tie: two closest pairs only when both arcs of c0 between them rise above the
+             * tie level (distinct minima, e.g. mirror images); otherwise they are points of
+             * one flat minimum and the best represents it. */
+            double ai = c0_angle(g, side[i], t[i]);
+            double mid = ai + 0.5 * remainder(abest - ai, 2.0 * M_PI);
+            double f1 = cd_cc_eval(g, 0, mid, NULL, NULL, NULL, NULL);
+            double f2 = cd_cc_eval(g, 0, mid + M_PI, NULL, NULL, NULL, NULL);
+            if (!(sqrt(f1) - dbest > tie && sqrt(f2) - dbest > tie)) continue;
+        }
+        cd_cc_offer(g, side[i], t[i], b);
+    }
+}
+
 /* Normals parallel to rounding: below this |n0 x n1| the planes are treated as parallel. */
 #define CC_PARALLEL 1e-13
 /* Closed-form candidates for parallel planes are added up to this |n0 x n1| (they are only
@@ -147,12 +182,17 @@ int cd_cc_closed_form(const cd_cc *g, cd_best *b)
         return 1;
     }
     /* Coaxial (Eberly §5.1 (a), §5.2; Li et al. §2.4): every point of either circle is equally
-     * far from the other, distance sqrt((r1 - r0)^2 + h^2). The tolerances are rounding of the
-     * normals and of D; the representative pair is polished on the true distance so that a
-     * configuration that is coaxial only to rounding still gets its exact minimum. */
+     * far from the other, distance sqrt((r1 - r0)^2 + h^2). Doubles are rarely exactly coaxial,
+     * so the test is the one cd_best applies to ties: the distance varies over the circle by less
+     * than CD_TIE_ULPS ulps of the scale. Bound of that variation, for a point of c1 against c0
+     * (s = |n0 x n1|, d0 = |n0 x D| the centre's offset from c0's axis): its height over c0's plane
+     * varies by <= 2 r1 s, its axis distance by <= 2 d0 + r1 s^2, and the point-circle distance is
+     * 1-Lipschitz in both; likewise with the roles exchanged. The representative pair is polished
+     * on the true distance, so the distance is the exact minimum of the doubles given. */
     double sn = v_norm(v_cross(c0->n, c1->n));
-    double off = v_norm(v_cross(c0->n, g->D));
-    if (sn <= 16.0 * DBL_EPSILON && off <= 16.0 * DBL_EPSILON * fmax(g->L, v_norm(g->D))) {
+    double d0 = v_norm(v_cross(c0->n, g->D)), d1 = v_norm(v_cross(c1->n, g->D));
+    double var = fmin(2.0 * d0 + c1->r * sn * (2.0 + sn), 2.0 * d1 + c0->r * sn * (2.0 + sn));
+    if (var <= CD_TIE_ULPS * DBL_EPSILON * g->L) {
         double F;
         double t = cd_cc_polish(g, 0, 0.0, &F);
         cd_cc_offer(g, 0, t, b);
@@ -276,7 +316,7 @@ static void finish_candidates(const cd_cc *g, cc_cands *c, cd_best *b)
             ps[np] = ps[i], pt[np] = t, pF[np] = F, np++;
         }
     }
-    for (int i = 0; i < np; i++) cd_cc_offer(g, ps[i], pt[i], b);
+    cd_cc_offer_minima(g, np, ps, pt, pF, b);
 }
 
 /* Candidates shared by both sides' special structure: parallel closed forms, and the points

@@ -155,6 +155,9 @@ int cd_cc_parallel_candidates(const cd_cc *g, double *t0);
 /* When the axes meet (within a loose tolerance), the unit normal m of the mirror plane through
  * both axes; returns 0 otherwise. */
 int cd_cc_mirror(const cd_cc *g, vec3 *m);
+/* Offer polished minima (side, angle, F): the best, and the others unless they tie with it
+ * without a barrier between them on c0 (one flat basin, not two symmetric minima). */
+void cd_cc_offer_minima(const cd_cc *g, int n, const int *side, const double *t, const double *F, cd_best *b);
 /* ---- end of cc_methods block ---- */
 
 #endif
