@@ -134,7 +134,18 @@ static double c0_angle(const cd_cc *g, int side, double t)
     return isnan(a) ? 0.0 : a;
 }
 
-void cd_cc_offer_minima(const cd_cc *g, int n, const int *side, const double *t, const double *F, cd_best *b)
+/* Is F_s within `tie` of dbest (in distance) at 32 evenly spread angles? */
+static int flat_side(const cd_cc *g, int s, double dbest, double tie)
+{
+    for (int i = 0; i < 32; i++) {
+        double F = cd_cc_eval(g, s, -M_PI + (M_PI / 16.0) * (i + 0.37), NULL, NULL, NULL, NULL);
+        if (!(sqrt(F) - dbest <= tie)) return 0;
+    }
+    return 1;
+}
+
+void cd_cc_offer_minima(const cd_cc *g, int n, const int *side, const double *t, const double *F, double Fhi,
+                        cd_best *b)
 {
     if (n <= 0) return;
     int ib = 0;
@@ -143,6 +154,10 @@ void cd_cc_offer_minima(const cd_cc *g, int n, const int *side, const double *t,
     double dbest = sqrt(F[ib]), tie = CD_TIE_ULPS * DBL_EPSILON * g->L;
     double abest = c0_angle(g, side[ib], t[ib]);
     cd_cc_offer(g, side[ib], t[ib], b);
+    if (sqrt(Fhi) - dbest <= tie && (flat_side(g, 0, dbest, tie) || flat_side(g, 1, dbest, tie))) {
+        b->equidistant = 1;
+        return;
+    }
     for (int i = 0; i < n; i++) {
         if (i == ib) continue;
         if (sqrt(F[i]) - dbest <= tie) {
@@ -316,7 +331,9 @@ static void finish_candidates(const cd_cc *g, cc_cands *c, cd_best *b)
             ps[np] = ps[i], pt[np] = t, pF[np] = F, np++;
         }
     }
-    cd_cc_offer_minima(g, np, ps, pt, pF, b);
+    double Fhi = 0.0;
+    for (int i = 0; i < c->n; i++) Fhi = fmax(Fhi, c->F[i]);
+    cd_cc_offer_minima(g, np, ps, pt, pF, Fhi, b);
 }
 
 /* Candidates shared by both sides' special structure: parallel closed forms, and the points
