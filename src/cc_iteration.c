@@ -92,13 +92,13 @@ cdist_status cd_cc_iteration(cdist_query *q, const cd_circle *c0, const cd_circl
         int sd[4] = {0, 0, 0, 0};
         double F[4];
         for (int i = 0; i < k; i++) t0[i] = cd_cc_polish(&g, 0, t0[i], &F[i]);
-        cd_cc_offer_minima(&g, k, sd, t0, F, INFINITY, b);
+        cd_cc_offer_minima(&g, k, sd, t0, F, b);
         return CDIST_OK;
     }
     int cap = q->max_iterations > 0 ? q->max_iterations : CD_DEFAULT_MAX_ITERATIONS;
     fixed_pt fp[CC_STARTS + 4 + 2 * (CC_STARTS + 4)];
     int nf = 0;
-    double best = INFINITY, Fhi = INFINITY;
+    double best = INFINITY;
     for (int s = 0; s < CC_STARTS + 4; s++) {
         vec3 x1;
         double a;
@@ -111,14 +111,12 @@ cdist_status cd_cc_iteration(cdist_query *q, const cd_circle *c0, const cd_circl
         } else if (s == 8) {
             /* the final check: the lowest of CC_CHECKS samples of F on c0, if it is below every
              * fixed point found (a basin no start reached) */
-            double Fs = INFINITY, ts = 0.0, Fmax = 0.0;
+            double Fs = INFINITY, ts = 0.0;
             for (int i = 0; i < CC_CHECKS; i++) {
                 double t = -M_PI + (2.0 * M_PI / CC_CHECKS) * (i + 0.5);
                 double F = cd_cc_eval(&g, 0, t, NULL, NULL, NULL, NULL);
                 if (F < Fs) Fs = F, ts = t;
-                if (F > Fmax) Fmax = F;
             }
-            Fhi = Fmax;
             if (!(Fs < best)) break;
             x1 = project(c1, g.D, v_axpy(v_scale(c0->r * cos(ts), c0->u), c0->r * sin(ts), c0->v));
         } else {
@@ -159,7 +157,7 @@ cdist_status cd_cc_iteration(cdist_query *q, const cd_circle *c0, const cd_circl
         sd[i] = 0, ft[i] = fp[i].t, fF[i] = fp[i].F;
         if (fp[i].F < fp[ib].F) ib = i;
     }
-    cd_cc_offer_minima(&g, nf, sd, ft, fF, Fhi, b);
+    cd_cc_offer_minima(&g, nf, sd, ft, fF, b);
     *iterations = nf ? fp[ib].iters : 0;
     return CDIST_OK;
 }

@@ -144,8 +144,7 @@ static int flat_side(const cd_cc *g, int s, double dbest, double tie)
     return 1;
 }
 
-void cd_cc_offer_minima(const cd_cc *g, int n, const int *side, const double *t, const double *F, double Fhi,
-                        cd_best *b)
+void cd_cc_offer_minima(const cd_cc *g, int n, const int *side, const double *t, const double *F, cd_best *b)
 {
     if (n <= 0) return;
     int ib = 0;
@@ -154,9 +153,19 @@ void cd_cc_offer_minima(const cd_cc *g, int n, const int *side, const double *t,
     double dbest = sqrt(F[ib]), tie = CD_TIE_ULPS * DBL_EPSILON * g->L;
     double abest = c0_angle(g, side[ib], t[ib]);
     cd_cc_offer(g, side[ib], t[ib], b);
-    if (sqrt(Fhi) - dbest <= tie && (flat_side(g, 0, dbest, tie) || flat_side(g, 1, dbest, tie))) {
-        b->equidistant = 1;
-        return;
+    /* A circle at constant distance from the other has F_s'' = 0 everywhere; only then are the
+     * samples taken (a flat minimum that is not constant fails them). */
+    vec3 K;
+    double f2[2];
+    int sb = side[ib];
+    cd_cc_eval(g, sb, t[ib], NULL, &f2[sb], NULL, &K);
+    double ao = cd_circle_angle(g->c[1 - sb], K);
+    cd_cc_eval(g, 1 - sb, isnan(ao) ? 0.0 : ao, NULL, &f2[1 - sb], NULL, NULL);
+    for (int s = 0; s < 2; s++) {
+        if (fabs(f2[s]) <= 1e-9 * g->c[s]->r * g->L && flat_side(g, s, dbest, tie)) {
+            b->equidistant = 1;
+            return;
+        }
     }
     for (int i = 0; i < n; i++) {
         if (i == ib) continue;
@@ -331,9 +340,7 @@ static void finish_candidates(const cd_cc *g, cc_cands *c, cd_best *b)
             ps[np] = ps[i], pt[np] = t, pF[np] = F, np++;
         }
     }
-    double Fhi = 0.0;
-    for (int i = 0; i < c->n; i++) Fhi = fmax(Fhi, c->F[i]);
-    cd_cc_offer_minima(g, np, ps, pt, pF, Fhi, b);
+    cd_cc_offer_minima(g, np, ps, pt, pF, b);
 }
 
 /* Candidates shared by both sides' special structure: parallel closed forms, and the points

@@ -156,12 +156,10 @@ int cd_cc_parallel_candidates(const cd_cc *g, double *t0);
  * both axes; returns 0 otherwise. */
 int cd_cc_mirror(const cd_cc *g, vec3 *m);
 /* Offer polished minima (side, angle, F): the best, and the others unless they tie with it
- * without a barrier between them on c0 (one flat basin, not two symmetric minima). Fhi: the
- * largest F the method saw while searching; when even that ties with the minimum, either circle
- * may be at constant distance from the other (e.g. equal perpendicular circles through each
- * other's centre), which is tested by sampling and flagged equidistant. */
-void cd_cc_offer_minima(const cd_cc *g, int n, const int *side, const double *t, const double *F, double Fhi,
-                        cd_best *b);
+ * without a barrier between them on c0 (one flat basin, not two symmetric minima). When F_s''
+ * vanishes at the minimum, circle s may be at constant distance from the other (e.g. equal
+ * perpendicular circles through each other's centre): tested by sampling, flagged equidistant. */
+void cd_cc_offer_minima(const cd_cc *g, int n, const int *side, const double *t, const double *F, cd_best *b);
 /* ---- end of cc_methods block ---- */
 
 #endif
