@@ -44,36 +44,46 @@
 /* Shared helpers (prototypes in the cc_methods block of internal.h)                          */
 /* ---------------------------------------------------------------------------------------- */
 
-double cd_cc_eval(const cd_cc *g, int side, double t, double *f1, double *f2, vec3 *P, vec3 *K)
+/* Plain arithmetic on purpose: without hardware FMA in the build flags fma() is a library call,
+ * and this function is the inner loop of every method. */
+static inline double eval_cs(const cd_cc *g, int side, double ct, double st, double *f1, double *f2, vec3 *P,
+                             vec3 *K)
 {
     const cd_circle *m = g->c[side], *f = g->c[1 - side];
-    vec3 dmf = side ? g->D : v_neg(g->D); /* moving centre relative to the fixed centre */
-    double ct = cos(t), st = sin(t);
-    vec3 p = v_axpy(v_scale(m->r * ct, m->u), m->r * st, m->v);
-    vec3 dp = v_axpy(v_scale(-m->r * st, m->u), m->r * ct, m->v);
-    vec3 dl = v_add(dmf, p);
-    double h = v_dot(f->n, dl);
-    vec3 nd = v_cross(f->n, dl);
-    double rho = v_norm(nd);
+    double sg = side ? 1.0 : -1.0; /* moving centre relative to the fixed centre: +-D */
+    double a = m->r * ct, bb = m->r * st;
+    vec3 p = v3(a * m->u.x + bb * m->v.x, a * m->u.y + bb * m->v.y, a * m->u.z + bb * m->v.z);
+    vec3 dp = v3(a * m->v.x - bb * m->u.x, a * m->v.y - bb * m->u.y, a * m->v.z - bb * m->u.z);
+    vec3 dl = v3(sg * g->D.x + p.x, sg * g->D.y + p.y, sg * g->D.z + p.z);
+    vec3 n = f->n;
+    double h = n.x * dl.x + n.y * dl.y + n.z * dl.z;
+    vec3 nd = v_cross(n, dl);
+    double rho = sqrt(nd.x * nd.x + nd.y * nd.y + nd.z * nd.z);
     double e = rho - f->r;
-    double F = fma(e, e, h * h);
+    double F = e * e + h * h;
     vec3 k, E;
     double d2f = 2.0 * m->r * m->r;
     if (rho > 0.0) {
-        vec3 w = v_cross(nd, f->n);
-        k = v_scale(f->r / rho, w);
-        E = v_axpy(v_scale(h, f->n), e / rho, w);
-        double tp = v_dot(nd, dp);
-        d2f -= 2.0 * f->r * (tp / rho) * (tp / rho) / rho;
+        vec3 w = v_cross(nd, n);
+        double kr = f->r / rho, er = e / rho;
+        k = v3(kr * w.x, kr * w.y, kr * w.z);
+        E = v3(h * n.x + er * w.x, h * n.y + er * w.y, h * n.z + er * w.z);
+        double tp = (nd.x * dp.x + nd.y * dp.y + nd.z * dp.z) / rho;
+        d2f -= 2.0 * f->r * tp * tp / rho;
     } else { /* on the other circle's axis: every point of it is closest (a kink of F) */
         k = v_scale(f->r, f->u);
         E = v_sub(dl, k);
     }
-    if (f1) *f1 = 2.0 * v_dot(E, dp);
-    if (f2) *f2 = d2f - 2.0 * v_dot(E, p);
+    if (f1) *f1 = 2.0 * (E.x * dp.x + E.y * dp.y + E.z * dp.z);
+    if (f2) *f2 = d2f - 2.0 * (E.x * p.x + E.y * p.y + E.z * p.z);
     if (P) *P = p;
     if (K) *K = k;
     return F;
+}
+
+double cd_cc_eval(const cd_cc *g, int side, double t, double *f1, double *f2, vec3 *P, vec3 *K)
+{
+    return eval_cs(g, side, cos(t), sin(t), f1, f2, P, K);
 }
 
 double cd_cc_polish(const cd_cc *g, int side, double t, double *Fout)
@@ -278,20 +288,25 @@ int cd_cc_mirror(const cd_cc *g, vec3 *m)
 
 #define CC_MAXCAND 48
 
+/* Candidates are kept as (cos t, sin t): roots come as (gamma, sigma), and most candidates are
+ * only evaluated, never polished, so atan2/sincos are spent only on the few that are. */
 typedef struct cc_cands {
     int n;
     int side[CC_MAXCAND];
-    double t[CC_MAXCAND];
+    double ct[CC_MAXCAND], st[CC_MAXCAND];
     double F[CC_MAXCAND];
 } cc_cands;
 
-static void cand_add(cc_cands *c, int side, double t)
+static void cand_add_cs(cc_cands *c, int side, double ct, double st)
 {
-    if (c->n >= CC_MAXCAND || !isfinite(t)) return;
+    if (c->n >= CC_MAXCAND || !isfinite(ct) || !isfinite(st)) return;
     c->side[c->n] = side;
-    c->t[c->n] = t;
+    c->ct[c->n] = ct;
+    c->st[c->n] = st;
     c->n++;
 }
+
+static void cand_add(cc_cands *c, int side, double t) { cand_add_cs(c, side, cos(t), sin(t)); }
 
 /* Angle on circle `side` of the mirror image (plane through both axes, normal m) of the point
  * at angle t. */
@@ -309,7 +324,7 @@ static void finish_candidates(const cd_cc *g, cc_cands *c, cd_best *b)
 {
     double Fmin = INFINITY;
     for (int i = 0; i < c->n; i++) {
-        c->F[i] = cd_cc_eval(g, c->side[i], c->t[i], NULL, NULL, NULL, NULL);
+        c->F[i] = eval_cs(g, c->side[i], c->ct[i], c->st[i], NULL, NULL, NULL, NULL);
         if (c->F[i] < Fmin) Fmin = c->F[i];
     }
     /* A root found to ~sqrt(eps) (near a double root) has F within ~1e-8 L^2 of its minimum;
@@ -324,10 +339,12 @@ static void finish_candidates(const cd_cc *g, cc_cands *c, cd_best *b)
         if (!(c->F[i] <= Fmin + margin)) continue;
         int dup = 0;
         for (int j = 0; j < i; j++)
-            if (c->side[j] == c->side[i] && c->t[j] == c->t[i] && c->F[j] <= Fmin + margin) dup = 1;
+            if (c->side[j] == c->side[i] && c->ct[j] == c->ct[i] && c->st[j] == c->st[i] &&
+                c->F[j] <= Fmin + margin)
+                dup = 1;
         if (dup) continue;
         double F;
-        double t = cd_cc_polish(g, c->side[i], c->t[i], &F);
+        double t = cd_cc_polish(g, c->side[i], atan2(c->st[i], c->ct[i]), &F);
         ps[np] = c->side[i], pt[np] = t, pF[np] = F, np++;
         if (F < best) best = F;
     }
@@ -374,7 +391,7 @@ static int pmul(const double *a, int da, const double *b, int db, double *out)
 {
     for (int i = 0; i <= da + db; i++) out[i] = 0.0;
     for (int i = 0; i <= da; i++)
-        for (int j = 0; j <= db; j++) out[i + j] = fma(a[i], b[j], out[i + j]);
+        for (int j = 0; j <= db; j++) out[i + j] += a[i] * b[j];
     return da + db;
 }
 
@@ -383,7 +400,7 @@ static int paxpy(double *out, int da, double s, const double *b, int db)
 {
     int d = da > db ? da : db;
     for (int i = da + 1; i <= d; i++) out[i] = 0.0;
-    for (int i = 0; i <= db; i++) out[i] = fma(s, b[i], out[i]);
+    for (int i = 0; i <= db; i++) out[i] += s * b[i];
     return d;
 }
 
@@ -464,18 +481,19 @@ cdist_status cd_cc_polynomial(cdist_query *q, const cd_circle *c0, const cd_circ
             if (!(fabs(gm) <= 1.0 + 1e-6)) continue;
             gm = fmax(-1.0, fmin(1.0, gm));
             double sg = sqrt((1.0 - gm) * (1.0 + gm));
-            double v6 = cd_poly_eval(p6, 4, gm, NULL), v7 = cd_poly_eval(p7, 3, gm, NULL);
+            double v6 = (((p6[4] * gm + p6[3]) * gm + p6[2]) * gm + p6[1]) * gm + p6[0];
+            double v7 = ((p7[3] * gm + p7[2]) * gm + p7[1]) * gm + p7[0];
             if (fabs(v7) <= 1e-6 * s7 || fabs(v6) <= 1e-6 * s6) {
-                cand_add(&c, side, atan2(sg, gm));
-                if (sg > 0.0) cand_add(&c, side, atan2(-sg, gm));
+                cand_add_cs(&c, side, gm, sg);
+                if (sg > 0.0) cand_add_cs(&c, side, gm, -sg);
             } else {
-                cand_add(&c, side, atan2((v6 > 0.0) == (v7 > 0.0) ? -sg : sg, gm));
+                cand_add_cs(&c, side, gm, (v6 > 0.0) == (v7 > 0.0) ? -sg : sg);
             }
         }
     }
     /* Safety samples: four angles of the moving circle (only polished when they beat every
      * root, i.e. if the solver missed the minimum's basin). */
-    for (int i = 0; i < 4; i++) cand_add(&c, side, -0.75 * M_PI + 0.5 * M_PI * i);
+    for (int i = 0; i < 4; i++) cand_add_cs(&c, side, (i == 1 || i == 2) ? M_SQRT1_2 : -M_SQRT1_2, i < 2 ? -M_SQRT1_2 : M_SQRT1_2);
     finish_candidates(&g, &c, b);
     return CDIST_OK;
 }
