@@ -78,7 +78,21 @@ typedef struct fixed_pt {
     int iters;
 } fixed_pt;
 
+static cdist_status iteration(cdist_query *q, const cd_circle *c0, const cd_circle *c1, cd_best *b, int *iterations);
+
 cdist_status cd_cc_iteration(cdist_query *q, const cd_circle *c0, const cd_circle *c1, cd_best *b, int *iterations)
+{
+    cd_circle a, bb;
+    double s;
+    cd_cc_scale(c0, c1, b->scale, &a, &bb, &s);
+    cd_best sb;
+    cd_best_init(&sb, b->scale * s);
+    cdist_status st = iteration(q, &a, &bb, &sb, iterations);
+    if (st == CDIST_OK) cd_cc_unscale(&sb, s, b);
+    return st;
+}
+
+static cdist_status iteration(cdist_query *q, const cd_circle *c0, const cd_circle *c1, cd_best *b, int *iterations)
 {
     cd_cc g = {{c0, c1}, c1->c, b->scale};
     int dummy;

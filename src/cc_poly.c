@@ -20,9 +20,10 @@
  * circle of radius r0 is, squared to remove the root |N0 x Delta|,
  *     H(g, s) = (p0 + s p1)(p2 + s p3)^2 - r0^2 (p4 + s p5)^2 = p6(g) + s p7(g),  g = cos t,
  * s = sin t, and eliminating s with s^2 = 1 - g^2 gives phi(g) = p6^2 - (1 - g^2) p7^2 (degree
- * <= 8). Conditioning: the fixed circle is the LARGER one, scaled to the unit circle at the
- * origin (r0 = 1, everything divided by its radius), so the moving circle's radius is <= 1 and
- * the coefficients have comparable sizes. a5 - a7 = r1^2 ((N0.V1)^2 - (N0.U1)^2) is formed as a
+ * <= 8). Conditioning: the fixed circle is the LARGER one at the origin, scaled to the unit
+ * circle (everything divided by its radius, or by the centre distance when that is larger:
+ * H is homogeneous, so only over/underflow depends on the scale), so the moving circle's
+ * radius is <= 1 and the coefficients have comparable sizes. a5 - a7 = r1^2 ((N0.V1)^2 - (N0.U1)^2) is formed as a
  * product (it vanishes for parallel planes), a2, a3, a4 from the cross product N0 x D. For each
  * real root, s = -p6/p7; when p7 (or p6) is within rounding of zero at the root (the p7 = 0
  * branch; p7 == 0 identically when the centres lie on the normal line, §5.3) both signs
@@ -132,6 +133,30 @@ void cd_cc_offer(const cd_cc *g, int side, double t, cd_best *b)
     if (f->r == 0.0) af = NAN;
     if (side == 0) cd_best_offer(b, F, P, v_add(K, g->D), am, af);
     else cd_best_offer(b, F, K, v_add(P, g->D), af, am);
+}
+
+void cd_cc_scale(const cd_circle *c0, const cd_circle *c1, double L, cd_circle *a, cd_circle *b, double *s)
+{
+    int e = 0;
+    frexp(L > 0.0 && isfinite(L) ? L : 1.0, &e); /* L = m 2^e, m in [0.5, 1) */
+    double k = ldexp(1.0, 1 - e);                /* L k in [1, 2) */
+    *a = *c0;
+    *b = *c1;
+    a->c = v3(0, 0, 0);
+    a->r = c0->r * k;
+    b->c = v_scale(k, c1->c);
+    b->r = c1->r * k;
+    *s = k;
+}
+
+void cd_cc_unscale(const cd_best *sc, double s, cd_best *b)
+{
+    double is = 1.0 / s; /* a power of two: exact */
+    for (int i = 0; i < sc->n; i++) {
+        const cd_cand *c = &sc->c[i];
+        cd_best_offer(b, c->d2 * is * is, v_scale(is, c->p[0]), v_scale(is, c->p[1]), c->param[0], c->param[1]);
+    }
+    b->equidistant |= sc->equidistant;
 }
 
 /* Angle on c0 of the pair found at angle t of side s. */
@@ -404,14 +429,17 @@ static int paxpy(double *out, int da, double s, const double *b, int db)
     return d;
 }
 
-/* Eberly (19)-(21) for the moving circle `side` against the fixed circle, scaled so the fixed
- * circle has radius 1. Writes p6 (deg 4), p7 (deg 3), phi (deg 8). */
+/* Eberly (19)-(21) for the moving circle `side` against the fixed circle. H is homogeneous of
+ * degree 6 in the lengths, so a common scale changes no root: lengths are divided by
+ * max(r_fixed, |D|) (the fixed circle becomes the unit circle unless the circles are far apart,
+ * when the centre distance becomes 1) so that no coefficient overflows. Writes p6 (deg 4),
+ * p7 (deg 3), phi (deg 8). */
 static void build_phi(const cd_cc *g, int side, double *p6, double *p7, double *phi)
 {
     const cd_circle *m = g->c[side], *f = g->c[1 - side];
-    double k = 1.0 / f->r;
+    double k = 1.0 / fmax(f->r, v_norm(g->D));
     vec3 D = v_scale(side ? k : -k, g->D);
-    double r1 = m->r * k;
+    double r1 = m->r * k, r0 = f->r * k, r02 = r0 * r0;
     vec3 N0 = f->n, U1 = m->u, V1 = m->v;
     vec3 ND = v_cross(N0, D), NU = v_cross(N0, U1), NV = v_cross(N0, V1);
     double nu = v_dot(N0, U1), nv = v_dot(N0, V1);
@@ -434,23 +462,23 @@ static void build_phi(const cd_cc *g, int side, double *p6, double *p7, double *
     pmul(P2, 1, P2, 1, S);
     double p33 = P3[0] * P3[0];
     paxpy(S, 2, p33, OM, 2);
-    /* p6 = p0 S + (1 - g^2) 2 p1 p2 p3 - (p4^2 + (1 - g^2) p5^2) */
+    /* p6 = p0 S + (1 - g^2) 2 p1 p2 p3 - r0^2 (p4^2 + (1 - g^2) p5^2) */
     pmul(P0, 2, S, 2, p6); /* deg 4 */
     pmul(P1, 1, P2, 1, t1); /* deg 2 */
     pmul(t1, 2, OM, 2, t2); /* deg 4 */
     paxpy(p6, 4, 2.0 * P3[0], t2, 4);
     pmul(P4, 2, P4, 2, t1); /* deg 4 */
-    paxpy(p6, 4, -1.0, t1, 4);
+    paxpy(p6, 4, -r02, t1, 4);
     pmul(P5, 1, P5, 1, t3); /* deg 2 */
     pmul(t3, 2, OM, 2, t4); /* deg 4 */
-    paxpy(p6, 4, -1.0, t4, 4);
-    /* p7 = 2 p0 p2 p3 + p1 S - 2 p4 p5 */
+    paxpy(p6, 4, -r02, t4, 4);
+    /* p7 = 2 p0 p2 p3 + p1 S - 2 r0^2 p4 p5 */
     pmul(P0, 2, P2, 1, p7); /* deg 3 */
     for (int i = 0; i <= 3; i++) p7[i] *= 2.0 * P3[0];
     pmul(P1, 1, S, 2, t1); /* deg 3 */
     paxpy(p7, 3, 1.0, t1, 3);
     pmul(P4, 2, P5, 1, t1); /* deg 3 */
-    paxpy(p7, 3, -2.0, t1, 3);
+    paxpy(p7, 3, -2.0 * r02, t1, 3);
     /* phi = p6^2 - (1 - g^2) p7^2 */
     pmul(p6, 4, p6, 4, phi);
     pmul(p7, 3, p7, 3, t1); /* deg 6 */
@@ -458,7 +486,21 @@ static void build_phi(const cd_cc *g, int side, double *p6, double *p7, double *
     paxpy(phi, 8, -1.0, t2, 8);
 }
 
+static cdist_status polynomial(cdist_query *q, const cd_circle *c0, const cd_circle *c1, cd_best *b);
+
 cdist_status cd_cc_polynomial(cdist_query *q, const cd_circle *c0, const cd_circle *c1, cd_best *b)
+{
+    cd_circle a, bb;
+    double s;
+    cd_cc_scale(c0, c1, b->scale, &a, &bb, &s);
+    cd_best sb;
+    cd_best_init(&sb, b->scale * s);
+    cdist_status st = polynomial(q, &a, &bb, &sb);
+    if (st == CDIST_OK) cd_cc_unscale(&sb, s, b);
+    return st;
+}
+
+static cdist_status polynomial(cdist_query *q, const cd_circle *c0, const cd_circle *c1, cd_best *b)
 {
     cd_cc g = {{c0, c1}, c1->c, b->scale};
     if (cd_cc_closed_form(&g, b)) return CDIST_OK;
