@@ -169,11 +169,12 @@ static double c0_angle(const cd_cc *g, int side, double t)
     return isnan(a) ? 0.0 : a;
 }
 
-/* Is F_s within `tie` of dbest (in distance) at 32 evenly spread angles? */
+/* Is F_s within `tie` of dbest (in distance) at 64 evenly spread angles? (A smooth variation
+ * is seen at >= cos(pi / 64) of its amplitude.) */
 static int flat_side(const cd_cc *g, int s, double dbest, double tie)
 {
-    for (int i = 0; i < 32; i++) {
-        double F = cd_cc_eval(g, s, -M_PI + (M_PI / 16.0) * (i + 0.37), NULL, NULL, NULL, NULL);
+    for (int i = 0; i < 64; i++) {
+        double F = cd_cc_eval(g, s, -M_PI + (M_PI / 32.0) * (i + 0.37), NULL, NULL, NULL, NULL);
         if (!(sqrt(F) - dbest <= tie)) return 0;
     }
     return 1;

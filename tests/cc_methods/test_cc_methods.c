@@ -4,8 +4,9 @@
  * double brute force (dense sampling + golden section on the closed-form point-circle
  * distance) on random linked and near-degenerate configurations.
  *
- * Because the dispatcher falls back to the robust method when a method fails, the fallback is
- * checked separately by test_cc_core (which calls the methods directly). */
+ * The dispatcher falls back to the robust method when a method fails and then reports
+ * method ROBUST: every answer here must come from the method asked for (test_cc_core also calls
+ * the methods directly). */
 #include <string.h>
 
 #include "check.h"
@@ -132,6 +133,8 @@ static int run(const cdist_circle *a, const cdist_circle *b, cdist_result *r)
 {
     cdist_status st = cdist_circle_circle(q, a, b, r);
     CHECK(st == CDIST_OK, "%s: status %s: %s", mname, cdist_status_name(st), cdist_query_last_error(q));
+    /* the method itself answered (the dispatcher reports a fallback to the robust method) */
+    CHECK(st != CDIST_OK || r->method == (int)method, "%s: answered by method %d", mname, r->method);
     return st == CDIST_OK;
 }
 
