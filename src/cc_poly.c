@@ -28,8 +28,10 @@
  * real root, s = -p6/p7; when p7 (or p6) is within rounding of zero at the root (the p7 = 0
  * branch; p7 == 0 identically when the centres lie on the normal line, §5.3) both signs
  * s = +-sqrt(1 - g^2) are tried. Double roots (tangency, §5.3's (g^2 - 1)^2 factor) come out of
- * the eigenvalue solver as complex pairs with imaginary parts ~ sqrt(eps): roots are accepted
- * with imaginary part up to 1e-6.
+ * the eigenvalue solver as complex pairs with imaginary parts ~ sqrt(eps) or more: roots are
+ * accepted with imaginary part up to 1e-2 (CC_IMAG_TOL), and real parts up to 1 + 1e-3 in
+ * magnitude (clamped). Every candidate is evaluated on F; those within 1e-3 F_min + 1e-4 L^2 of
+ * the lowest are polished (an inaccurate root of a near-double pair is still in its basin).
  * Special cases: zero radii (point-circle), coaxial circles (§5.1 concentric, §5.2 with the
  * centres on the common axis: equidistant), parallel planes (§5.1 separated / tangent /
  * overlapping / containing, §5.2): closed-form candidates; centres on the normal line (§5.3) and,
@@ -313,6 +315,11 @@ int cd_cc_mirror(const cd_cc *g, vec3 *m)
 /* ---------------------------------------------------------------------------------------- */
 
 #define CC_MAXCAND 48
+/* Roots of phi are accepted with imaginary parts up to this (relative): near-symmetric
+ * configurations make true and spurious roots near-double, and rounding splits them into
+ * complex pairs (imaginary parts ~1e-4 were seen with a centre 2e-6 off the other's axis).
+ * Their real parts are only candidates, evaluated and polished on the true distance. */
+#define CC_IMAG_TOL 1e-2
 
 /* Candidates are kept as (cos t, sin t): roots come as (gamma, sigma), and most candidates are
  * only evaluated, never polished, so atan2/sincos are spent only on the few that are. */
@@ -355,7 +362,7 @@ static void finish_candidates(const cd_cc *g, cc_cands *c, cd_best *b)
     }
     /* A root found to ~sqrt(eps) (near a double root) has F within ~1e-8 L^2 of its minimum;
      * the margin keeps every candidate that could polish below the best. */
-    double margin = 1e-3 * Fmin + 1e-6 * g->L * g->L;
+    double margin = 1e-3 * Fmin + 1e-4 * g->L * g->L;
     vec3 m;
     int mir = cd_cc_mirror(g, &m);
     double pt[CC_MAXCAND], pF[CC_MAXCAND];
@@ -514,14 +521,14 @@ static cdist_status polynomial(cdist_query *q, const cd_circle *c0, const cd_cir
     if (sn > CC_PARALLEL || c.n == 0) {
         double p6[5], p7[4], phi[9], roots[8];
         build_phi(&g, side, p6, p7, phi);
-        int nr = cd_poly_real_roots(q->poly, phi, 8, 1e-6, roots);
+        int nr = cd_poly_real_roots(q->poly, phi, 8, CC_IMAG_TOL, roots);
         if (nr == CD_POLY_FAIL) return cd_fail(q, CDIST_ERR_INTERNAL, "circle-circle: polynomial solver failed");
         double s6 = 0.0, s7 = 0.0;
         for (int i = 0; i <= 4; i++) s6 += fabs(p6[i]);
         for (int i = 0; i <= 3; i++) s7 += fabs(p7[i]);
         for (int i = 0; i < nr; i++) {
             double gm = roots[i];
-            if (!(fabs(gm) <= 1.0 + 1e-6)) continue;
+            if (!(fabs(gm) <= 1.0 + 1e-3)) continue;
             gm = fmax(-1.0, fmin(1.0, gm));
             double sg = sqrt((1.0 - gm) * (1.0 + gm));
             double v6 = (((p6[4] * gm + p6[3]) * gm + p6[2]) * gm + p6[1]) * gm + p6[0];

@@ -232,6 +232,30 @@ static void paper_examples(void)
     }
 }
 
+/* Regression: a larger circle whose centre is within ~1e-6 of the smaller one's axis. The
+ * squared polynomial has near-double roots there that the eigenvalue solver returned as complex
+ * pairs with imaginary parts ~1e-4, so the global minimum's root was dropped (error 1e-7). */
+static void near_axis_regressions(void)
+{
+    static const double cases[][14] = {
+        {-0.6767925028284858, -0.72991175437528488, -0.02447527240523395, -0.43698077029309257, 0.89448571097331886,
+         0.094568066801705916, 0.43865023552353088, -0.24290945637718478, -1.618056523363524, -0.11837051431510687,
+         -0.13040742873502192, -0.32854399180594412, -0.93544254124929338, 2.8481373494283444},
+        {0.044213901007447376, -0.33130656072870623, 0.66799619287580891, -0.16230292079392325, 0.98275180755107461,
+         -0.088637727051505619, 0.7407999949688846, 0.32772059472221043, -2.0479529053423882, 0.82282637858152152,
+         -0.40381133001865255, 0.30971737078732475, 0.86082028320733339, 3.0599076678879173},
+        {0.9804649721761256, -0.64153638064841667, -0.38736735765739549, -0.10786863504954793, 0.69221699299367745,
+         0.71358250551939573, 0.9335707786835542, 0.84260046380387432, 0.24321622872759355, 0.52469344141796492,
+         0.86279591192411909, -0.47167212418379639, -0.18195774683968038, 3.2670542110104854},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        const double *v = cases[i];
+        cdist_circle a = circ(v[0], v[1], v[2], tv(v[3], v[4], v[5]), v[6]);
+        cdist_circle b = circ(v[7], v[8], v[9], tv(v[10], v[11], v[12]), v[13]);
+        expect_brute("centre near the smaller circle's axis", a, b, 1e-14, 0);
+    }
+}
+
 static void families(void)
 {
     cdist_vec3 mZ = tv(0, 0, -1);
@@ -379,6 +403,7 @@ int main(int argc, char **argv)
         check_rng_state = 0x9E3779B97F4A7C15ull;
         paper_examples();
         families();
+        near_axis_regressions();
         random_brute(nrand);
         if (method == CDIST_METHOD_ITERATION) iteration_cap();
     }
