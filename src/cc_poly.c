@@ -23,15 +23,18 @@
  * <= 8). Conditioning: the fixed circle is the LARGER one at the origin, scaled to the unit
  * circle (everything divided by its radius, or by the centre distance when that is larger:
  * H is homogeneous, so only over/underflow depends on the scale), so the moving circle's
- * radius is <= 1 and the coefficients have comparable sizes. a5 - a7 = r1^2 ((N0.V1)^2 - (N0.U1)^2) is formed as a
- * product (it vanishes for parallel planes), a2, a3, a4 from the cross product N0 x D. For each
- * real root, s = -p6/p7; when p7 (or p6) is within rounding of zero at the root (the p7 = 0
- * branch; p7 == 0 identically when the centres lie on the normal line, §5.3) both signs
- * s = +-sqrt(1 - g^2) are tried. Double roots (tangency, §5.3's (g^2 - 1)^2 factor) come out of
- * the eigenvalue solver as complex pairs with imaginary parts ~ sqrt(eps) or more: roots are
- * accepted with imaginary part up to 1e-2 (CC_IMAG_TOL), and real parts up to 1 + 1e-3 in
- * magnitude (clamped). Every candidate is evaluated on F; those within 1e-3 F_min + 1e-4 L^2 of
- * the lowest are polished (an inaccurate root of a near-double pair is still in its basin).
+ * radius is <= 1 and the coefficients have comparable sizes. a5 - a7 = r1^2 ((N0.V1)^2 -
+ * (N0.U1)^2) is formed as a product (it vanishes for parallel planes), a2, a3, a4 from the cross
+ * product N0 x D. For each real root, s = -p6/p7 gives the sign of sin t (both signs where p7
+ * is within rounding of zero: the p7 = 0 branch; p7 == 0 identically when the centres lie on
+ * the normal line, §5.3). Near-symmetric configurations make true and spurious roots
+ * near-double, and then even a clearly non-zero -p6/p7 can have the wrong sign (seen: nearly
+ * coplanar overlapping circles); the other sign costs one evaluation, so it is always offered
+ * as well. Double roots come out of the eigenvalue solver as complex pairs with imaginary parts
+ * ~ sqrt(eps) or more: roots are accepted with imaginary part up to 1e-2 (CC_IMAG_TOL) and
+ * real part up to 1 + 1e-3 in magnitude (clamped). Four samples of the moving circle are
+ * candidates too. Every candidate is evaluated on F; those within 1e-3 F_min + 1e-4 L^2 of the
+ * lowest are polished (an inaccurate root of a near-double pair is still in its basin).
  * Special cases: zero radii (point-circle), coaxial circles (§5.1 concentric, §5.2 with the
  * centres on the common axis: equidistant), parallel planes (§5.1 separated / tangent /
  * overlapping / containing, §5.2): closed-form candidates; centres on the normal line (§5.3) and,
@@ -225,7 +228,7 @@ void cd_cc_offer_minima(const cd_cc *g, int n, const int *side, const double *t,
 #define CC_PARALLEL 1e-13
 /* Closed-form candidates for parallel planes are added up to this |n0 x n1| (they are only
  * starting points; the polish finds the true minima of slightly tilted circles). */
-#define CC_NEAR_PARALLEL 1e-4
+#define CC_NEAR_PARALLEL 1e-2
 
 int cd_cc_closed_form(const cd_cc *g, cd_best *b)
 {
@@ -523,8 +526,7 @@ static cdist_status polynomial(cdist_query *q, const cd_circle *c0, const cd_cir
         build_phi(&g, side, p6, p7, phi);
         int nr = cd_poly_real_roots(q->poly, phi, 8, CC_IMAG_TOL, roots);
         if (nr == CD_POLY_FAIL) return cd_fail(q, CDIST_ERR_INTERNAL, "circle-circle: polynomial solver failed");
-        double s6 = 0.0, s7 = 0.0;
-        for (int i = 0; i <= 4; i++) s6 += fabs(p6[i]);
+        double s7 = 0.0;
         for (int i = 0; i <= 3; i++) s7 += fabs(p7[i]);
         for (int i = 0; i < nr; i++) {
             double gm = roots[i];
@@ -533,12 +535,14 @@ static cdist_status polynomial(cdist_query *q, const cd_circle *c0, const cd_cir
             double sg = sqrt((1.0 - gm) * (1.0 + gm));
             double v6 = (((p6[4] * gm + p6[3]) * gm + p6[2]) * gm + p6[1]) * gm + p6[0];
             double v7 = ((p7[3] * gm + p7[2]) * gm + p7[1]) * gm + p7[0];
-            if (fabs(v7) <= 1e-6 * s7 || fabs(v6) <= 1e-6 * s6) {
-                cand_add_cs(&c, side, gm, sg);
-                if (sg > 0.0) cand_add_cs(&c, side, gm, -sg);
-            } else {
-                cand_add_cs(&c, side, gm, (v6 > 0.0) == (v7 > 0.0) ? -sg : sg);
-            }
+            /* sigma = -p6/p7 (Eberly); where p7 is within rounding of zero (the p7 = 0 branch)
+             * both signs. Near-double roots (near-symmetric configurations) make even a
+             * clearly non-zero p6/p7 sign unreliable, and the other sign costs one evaluation
+             * (no measurable time), so it is always offered second. */
+            double sgn = (v6 > 0.0) == (v7 > 0.0) ? -sg : sg;
+            if (fabs(v7) <= 1e-6 * s7) sgn = sg;
+            cand_add_cs(&c, side, gm, sgn);
+            if (sg > 0.0) cand_add_cs(&c, side, gm, -sgn);
         }
     }
     /* Safety samples: four angles of the moving circle (only polished when they beat every

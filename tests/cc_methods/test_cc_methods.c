@@ -232,9 +232,11 @@ static void paper_examples(void)
     }
 }
 
-/* Regression: a larger circle whose centre is within ~1e-6 of the smaller one's axis. The
- * squared polynomial has near-double roots there that the eigenvalue solver returned as complex
- * pairs with imaginary parts ~1e-4, so the global minimum's root was dropped (error 1e-7). */
+/* Regressions found by stress testing against the robust method. (1-3) a larger circle whose
+ * centre is within ~1e-6 of the smaller one's axis: the squared polynomial has near-double roots
+ * that the eigenvalue solver returned as complex pairs with imaginary parts ~1e-4, so the global
+ * minimum's root was dropped (error 1e-7). (4) nearly coplanar overlapping circles of radius
+ * 123, normals 1.4e-4 apart: -p6/p7 gave the wrong sign of sin t at a near-double root. */
 static void near_axis_regressions(void)
 {
     static const double cases[][14] = {
@@ -247,6 +249,9 @@ static void near_axis_regressions(void)
         {0.9804649721761256, -0.64153638064841667, -0.38736735765739549, -0.10786863504954793, 0.69221699299367745,
          0.71358250551939573, 0.9335707786835542, 0.84260046380387432, 0.24321622872759355, 0.52469344141796492,
          0.86279591192411909, -0.47167212418379639, -0.18195774683968038, 3.2670542110104854},
+        {8356.2686475893006, -381.66957929993509, 2844.1919778138217, 0.76909818137855435, -0.18398715163472648,
+         -0.61207574321609926, 123.01567705614073, 8281.0860370908395, -442.04863093311542, 2767.8060915990841,
+         0.76906770035413852, -0.1838698528825943, -0.6121492869169497, 123.0319943181189},
     };
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
         const double *v = cases[i];
