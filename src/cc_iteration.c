@@ -8,7 +8,7 @@
  * (1)/(2)); here both projections are done in vector form (closed-form point-circle projection
  * with |N x Delta|), which is the same map. Algorithm 2 (parallel axes) is the same alternating
  * projection with both projections in C0's frame: in vector form it is identical, so one loop
- * serves both; for exactly parallel planes the paper's closed forms of §2.3 (separated,
+ * serves both; for parallel planes (|N0 x N1| <= 1e-13) the paper's closed forms of §2.3 (separated,
  * overlapping: two pairs at distance |pz|, contained) are used instead (shared with the
  * polynomial method: cd_cc_parallel_candidates), and §2.4 (coincident axes: every pair
  * closest, distance sqrt((R1 - R)^2 + pz^2), equidistant) by cd_cc_closed_form. Remark 1
@@ -27,8 +27,11 @@
  * - Axes that meet: the paper reflects the C0 point about the plane through both axes and
  *   iterates again for the second pair; here the reflected point is polished directly, so both
  *   symmetric pairs come out equally accurate.
+ * - Scale: the query runs on a copy scaled by a power of two (cd_cc_scale), so squares neither
+ *   overflow nor underflow; ties, flat minima and circles at constant distance from the other
+ *   are sorted out by cd_cc_offer_minima, shared with the polynomial method.
  * The iteration count reported is that of the start which produced the reported pair (<= the
- * cap); closed forms report 0. */
+ * cap); closed forms (points, coaxial, parallel planes) report 0. */
 #include <math.h>
 
 #include "internal.h"

@@ -42,7 +42,6 @@
  * axes, so the points of the moving circle in that plane are candidates and every minimum's
  * mirror image is polished too (symmetric pairs come out equally accurate). */
 #include <math.h>
-#include <string.h>
 
 #include "internal.h"
 
