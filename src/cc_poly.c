@@ -1,6 +1,552 @@
-/* Circle-circle by the degree-8 polynomial (distance-to-circles-3d §5). */
-#include "stub.h"
+/* Circle-circle by the degree-8 polynomial (Eberly, distance-to-circles-3d §5), plus the helpers
+ * shared with the geometric iteration (src/cc_iteration.c): the true distance function with its
+ * derivatives, the Newton polish, and the closed forms of the special configurations.
+ *
+ * Frame. The dispatcher puts c0's centre at the origin and c1 at D. For a point P on circle s
+ * (the "moving" circle, angle t in its own basis u, v) the distance to the other circle f is
+ * closed form (point-circle, §2): with Delta = P - C_f, h = n_f . Delta, rho = |n_f x Delta|,
+ *     F_s(t) = (rho - r_f)^2 + h^2                           (rho from the cross product: no
+ *                                                              cancellation near the axis).
+ * With E = Delta - K the vector from the closest point K = C_f + r_f w / rho (w the in-plane part
+ * of Delta) to P, the gradient of the squared point-circle distance is 2E and its Hessian is
+ * 2(I - (r_f / rho) tau tau^T) with tau = (n_f x Delta) / rho the circle's tangent at K, so
+ *     F'  = 2 E . P',        P' = r_s(-sin t u + cos t v),
+ *     F'' = 2 (r_s^2 - r_f (tau_rho . P')^2 / rho^3) - 2 E . P      (tau_rho = n_f x Delta).
+ * E is formed as h n_f + ((rho - r_f) / rho) w, which stays accurate when the distance is tiny.
+ * Every candidate angle (polynomial root, closed form, sample) is polished by safeguarded Newton
+ * on F' and evaluated on F: the polynomial only brackets.
+ *
+ * Polynomial (§5). Eberly's F'(t) = 0 for the point P(t) of the moving circle against the fixed
+ * circle of radius r0 is, squared to remove the root |N0 x Delta|,
+ *     H(g, s) = (p0 + s p1)(p2 + s p3)^2 - r0^2 (p4 + s p5)^2 = p6(g) + s p7(g),  g = cos t,
+ * s = sin t, and eliminating s with s^2 = 1 - g^2 gives phi(g) = p6^2 - (1 - g^2) p7^2 (degree
+ * <= 8). Conditioning: the fixed circle is the LARGER one at the origin, scaled to the unit
+ * circle (everything divided by its radius, or by the centre distance when that is larger:
+ * H is homogeneous, so only over/underflow depends on the scale), so the moving circle's
+ * radius is <= 1 and the coefficients have comparable sizes. a5 - a7 = r1^2 ((N0.V1)^2 -
+ * (N0.U1)^2) is formed as a product (it vanishes for parallel planes), a2, a3, a4 from the cross
+ * product N0 x D. For each real root, s = -p6/p7 gives the sign of sin t (both signs where p7
+ * is within rounding of zero: the p7 = 0 branch; p7 == 0 identically when the centres lie on
+ * the normal line, §5.3). Near-symmetric configurations make true and spurious roots
+ * near-double, and then even a clearly non-zero -p6/p7 can have the wrong sign (seen: nearly
+ * coplanar overlapping circles); the other sign costs one evaluation, so it is always offered
+ * as well. Double roots come out of the eigenvalue solver as complex pairs with imaginary parts
+ * ~ sqrt(eps) or more: roots are accepted with imaginary part up to 1e-2 (CC_IMAG_TOL) and
+ * real part up to 1 + 1e-3 in magnitude (clamped). Four samples of the moving circle are
+ * candidates too. Every candidate is evaluated on F; those within 1e-3 F_min + 1e-4 L^2 of the
+ * lowest are polished (an inaccurate root of a near-double pair is still in its basin).
+ * Special cases: zero radii (point-circle), coaxial circles (§5.1 concentric, §5.2 with the
+ * centres on the common axis: equidistant), parallel planes (§5.1 separated / tangent /
+ * overlapping / containing, §5.2): closed-form candidates; centres on the normal line (§5.3) and,
+ * more generally, axes that meet: the configuration is symmetric about the plane through both
+ * axes, so the points of the moving circle in that plane are candidates and every minimum's
+ * mirror image is polished too (symmetric pairs come out equally accurate). */
+#include <math.h>
+
+#include "internal.h"
+
+/* ---------------------------------------------------------------------------------------- */
+/* Shared helpers (prototypes in the cc_methods block of internal.h)                          */
+/* ---------------------------------------------------------------------------------------- */
+
+/* Plain arithmetic on purpose: without hardware FMA in the build flags fma() is a library call,
+ * and this function is the inner loop of every method. */
+static inline double eval_cs(const cd_cc *g, int side, double ct, double st, double *f1, double *f2, vec3 *P,
+                             vec3 *K)
+{
+    const cd_circle *m = g->c[side], *f = g->c[1 - side];
+    double sg = side ? 1.0 : -1.0; /* moving centre relative to the fixed centre: +-D */
+    double a = m->r * ct, bb = m->r * st;
+    vec3 p = v3(a * m->u.x + bb * m->v.x, a * m->u.y + bb * m->v.y, a * m->u.z + bb * m->v.z);
+    vec3 dp = v3(a * m->v.x - bb * m->u.x, a * m->v.y - bb * m->u.y, a * m->v.z - bb * m->u.z);
+    vec3 dl = v3(sg * g->D.x + p.x, sg * g->D.y + p.y, sg * g->D.z + p.z);
+    vec3 n = f->n;
+    double h = n.x * dl.x + n.y * dl.y + n.z * dl.z;
+    vec3 nd = v_cross(n, dl);
+    double rho = sqrt(nd.x * nd.x + nd.y * nd.y + nd.z * nd.z);
+    double e = rho - f->r;
+    double F = e * e + h * h;
+    vec3 k, E;
+    double d2f = 2.0 * m->r * m->r;
+    if (rho > 0.0) {
+        vec3 w = v_cross(nd, n);
+        double kr = f->r / rho, er = e / rho;
+        k = v3(kr * w.x, kr * w.y, kr * w.z);
+        E = v3(h * n.x + er * w.x, h * n.y + er * w.y, h * n.z + er * w.z);
+        double tp = (nd.x * dp.x + nd.y * dp.y + nd.z * dp.z) / rho;
+        d2f -= 2.0 * f->r * tp * tp / rho;
+    } else { /* on the other circle's axis: every point of it is closest (a kink of F) */
+        k = v_scale(f->r, f->u);
+        E = v_sub(dl, k);
+    }
+    if (f1) *f1 = 2.0 * (E.x * dp.x + E.y * dp.y + E.z * dp.z);
+    if (f2) *f2 = d2f - 2.0 * (E.x * p.x + E.y * p.y + E.z * p.z);
+    if (P) *P = p;
+    if (K) *K = k;
+    return F;
+}
+
+double cd_cc_eval(const cd_cc *g, int side, double t, double *f1, double *f2, vec3 *P, vec3 *K)
+{
+    return eval_cs(g, side, cos(t), sin(t), f1, f2, P, K);
+}
+
+double cd_cc_polish(const cd_cc *g, int side, double t, double *Fout)
+{
+    double f1, f2;
+    double F = cd_cc_eval(g, side, t, &f1, &f2, NULL, NULL);
+    double L = g->L;
+    for (int it = 0; it < 60; it++) {
+        double step;
+        if (f2 > 0.0) step = -f1 / f2;
+        else if (f1 != 0.0) step = (f1 > 0.0) ? -0.25 : 0.25; /* concave: walk downhill */
+        else break;                                             /* a stationary point; keep it */
+        if (step > 0.5) step = 0.5;
+        if (step < -0.5) step = -0.5;
+        /* F carries rounding of about eps * L * (|E| + eps L); a step must not increase it more. */
+        double tolF = 8.0 * DBL_EPSILON * L * (sqrt(F) + DBL_EPSILON * L);
+        double tn = t, Fn = F, g1 = f1, g2 = f2;
+        int ok = 0;
+        for (int half = 0; half < 40; half++) {
+            tn = t + step;
+            Fn = cd_cc_eval(g, side, tn, &g1, &g2, NULL, NULL);
+            if (Fn <= F + tolF) {
+                ok = 1;
+                break;
+            }
+            step *= 0.5;
+        }
+        if (!ok) break;
+        t = tn;
+        F = Fn;
+        f1 = g1;
+        f2 = g2;
+        if (fabs(step) <= 4.0 * DBL_EPSILON) break;
+    }
+    if (Fout) *Fout = F;
+    return t;
+}
+
+void cd_cc_offer(const cd_cc *g, int side, double t, cd_best *b)
+{
+    vec3 P, K;
+    double F = cd_cc_eval(g, side, t, NULL, NULL, &P, &K);
+    const cd_circle *m = g->c[side], *f = g->c[1 - side];
+    double am = cd_circle_angle(m, P), af = cd_circle_angle(f, K);
+    if (m->r == 0.0) am = NAN;
+    if (f->r == 0.0) af = NAN;
+    if (side == 0) cd_best_offer(b, F, P, v_add(K, g->D), am, af);
+    else cd_best_offer(b, F, K, v_add(P, g->D), af, am);
+}
+
+void cd_cc_scale(const cd_circle *c0, const cd_circle *c1, double L, cd_circle *a, cd_circle *b, double *s)
+{
+    int e = 0;
+    frexp(L > 0.0 && isfinite(L) ? L : 1.0, &e); /* L = m 2^e, m in [0.5, 1) */
+    double k = ldexp(1.0, 1 - e);                /* L k in [1, 2) */
+    *a = *c0;
+    *b = *c1;
+    a->c = v3(0, 0, 0);
+    a->r = c0->r * k;
+    b->c = v_scale(k, c1->c);
+    b->r = c1->r * k;
+    *s = k;
+}
+
+void cd_cc_unscale(const cd_best *sc, double s, cd_best *b)
+{
+    double is = 1.0 / s; /* a power of two: exact */
+    for (int i = 0; i < sc->n; i++) {
+        const cd_cand *c = &sc->c[i];
+        cd_best_offer(b, c->d2 * is * is, v_scale(is, c->p[0]), v_scale(is, c->p[1]), c->param[0], c->param[1]);
+    }
+    b->equidistant |= sc->equidistant;
+}
+
+/* Angle on c0 of the pair found at angle t of side s. */
+static double c0_angle(const cd_cc *g, int side, double t)
+{
+    if (side == 0) return t;
+    vec3 K;
+    cd_cc_eval(g, 1, t, NULL, NULL, NULL, &K);
+    double a = cd_circle_angle(g->c[0], K);
+    return isnan(a) ? 0.0 : a;
+}
+
+/* Is F_s within `tie` of dbest (in distance) at 64 evenly spread angles? (A smooth variation
+ * is seen at >= cos(pi / 64) of its amplitude.) */
+static int flat_side(const cd_cc *g, int s, double dbest, double tie)
+{
+    for (int i = 0; i < 64; i++) {
+        double F = cd_cc_eval(g, s, -M_PI + (M_PI / 32.0) * (i + 0.37), NULL, NULL, NULL, NULL);
+        if (!(sqrt(F) - dbest <= tie)) return 0;
+    }
+    return 1;
+}
+
+void cd_cc_offer_minima(const cd_cc *g, int n, const int *side, const double *t, const double *F, cd_best *b)
+{
+    if (n <= 0) return;
+    int ib = 0;
+    for (int i = 1; i < n; i++)
+        if (F[i] < F[ib]) ib = i;
+    double dbest = sqrt(F[ib]), tie = CD_TIE_ULPS * DBL_EPSILON * g->L;
+    double abest = c0_angle(g, side[ib], t[ib]);
+    cd_cc_offer(g, side[ib], t[ib], b);
+    /* A circle at constant distance from the other has F_s'' = 0 everywhere; only then are the
+     * samples taken (a flat minimum that is not constant fails them). */
+    vec3 K;
+    double f2[2];
+    int sb = side[ib];
+    cd_cc_eval(g, sb, t[ib], NULL, &f2[sb], NULL, &K);
+    double ao = cd_circle_angle(g->c[1 - sb], K);
+    cd_cc_eval(g, 1 - sb, isnan(ao) ? 0.0 : ao, NULL, &f2[1 - sb], NULL, NULL);
+    for (int s = 0; s < 2; s++) {
+        if (fabs(f2[s]) <= 1e-9 * g->c[s]->r * g->L && flat_side(g, s, dbest, tie)) {
+            b->equidistant = 1;
+            return;
+        }
+    }
+    for (int i = 0; i < n; i++) {
+        if (i == ib) continue;
+        if (sqrt(F[i]) - dbest <= tie) {
+            /* A tie: two closest pairs only when both arcs of c0 between them rise above the
+             * tie level (distinct minima, e.g. mirror images); otherwise they are points of
+             * one flat minimum and the best represents it. */
+            double ai = c0_angle(g, side[i], t[i]);
+            double mid = ai + 0.5 * remainder(abest - ai, 2.0 * M_PI);
+            double f1 = cd_cc_eval(g, 0, mid, NULL, NULL, NULL, NULL);
+            double f2 = cd_cc_eval(g, 0, mid + M_PI, NULL, NULL, NULL, NULL);
+            if (!(sqrt(f1) - dbest > tie && sqrt(f2) - dbest > tie)) continue;
+        }
+        cd_cc_offer(g, side[i], t[i], b);
+    }
+}
+
+/* Normals parallel to rounding: below this |n0 x n1| the planes are treated as parallel. */
+#define CC_PARALLEL 1e-13
+/* Closed-form candidates for parallel planes are added up to this |n0 x n1| (they are only
+ * starting points; the polish finds the true minima of slightly tilted circles). */
+#define CC_NEAR_PARALLEL 1e-2
+
+int cd_cc_closed_form(const cd_cc *g, cd_best *b)
+{
+    const cd_circle *c0 = g->c[0], *c1 = g->c[1];
+    if (c1->r == 0.0) { /* c1 is the point D (c0 may be a point too) */
+        cd_point_circle_core(g->D, c0, b, 1);
+        return 1;
+    }
+    if (c0->r == 0.0) { /* c0 is the origin: point-circle relative to c1, moved back by D */
+        cd_best t;
+        cd_best_init(&t, b->scale);
+        cd_point_circle_core(v_neg(g->D), c1, &t, 0);
+        for (int i = 0; i < t.n; i++)
+            cd_best_offer(b, t.c[i].d2, v3(0, 0, 0), v_add(t.c[i].p[1], g->D), NAN, t.c[i].param[1]);
+        b->equidistant |= t.equidistant;
+        return 1;
+    }
+    /* Coaxial (Eberly §5.1 (a), §5.2; Li et al. §2.4): every point of either circle is equally
+     * far from the other, distance sqrt((r1 - r0)^2 + h^2). Doubles are rarely exactly coaxial,
+     * so the test is the one cd_best applies to ties: the distance varies over the circle by less
+     * than CD_TIE_ULPS ulps of the scale. Bound of that variation, for a point of c1 against c0
+     * (s = |n0 x n1|, d0 = |n0 x D| the centre's offset from c0's axis): its height over c0's plane
+     * varies by <= 2 r1 s, its axis distance by <= 2 d0 + r1 s^2, and the point-circle distance is
+     * 1-Lipschitz in both; likewise with the roles exchanged. The representative pair is polished
+     * on the true distance, so the distance is the exact minimum of the doubles given. */
+    double sn = v_norm(v_cross(c0->n, c1->n));
+    double d0 = v_norm(v_cross(c0->n, g->D)), d1 = v_norm(v_cross(c1->n, g->D));
+    double var = fmin(2.0 * d0 + c1->r * sn * (2.0 + sn), 2.0 * d1 + c0->r * sn * (2.0 + sn));
+    if (var <= CD_TIE_ULPS * DBL_EPSILON * g->L) {
+        double F;
+        double t = cd_cc_polish(g, 0, 0.0, &F);
+        cd_cc_offer(g, 0, t, b);
+        b->equidistant = 1;
+        return 1;
+    }
+    return 0;
+}
+
+static double angle_of(const cd_circle *c, vec3 dir)
+{
+    double a = cd_circle_angle(c, dir);
+    return isnan(a) ? 0.0 : a;
+}
+
+int cd_cc_parallel_candidates(const cd_cc *g, double *t0)
+{
+    const cd_circle *c0 = g->c[0], *c1 = g->c[1];
+    vec3 n = c0->n;
+    vec3 nd = v_cross(n, g->D);
+    double din = v_norm(nd);
+    if (!(din > 0.0)) {
+        t0[0] = 0.0, t0[1] = 0.5 * M_PI, t0[2] = M_PI, t0[3] = -0.5 * M_PI;
+        return 4;
+    }
+    vec3 W = v_scale(1.0 / din, v_cross(nd, n)); /* in-plane direction towards c1's centre */
+    vec3 T = v_scale(1.0 / din, nd);             /* n x W */
+    double r0 = c0->r, r1 = c1->r;
+    int k = 0;
+    if (din >= r0 + r1 || din + r1 <= r0) {
+        t0[k++] = angle_of(c0, W); /* separated, tangent, or c1 inside c0 */
+    } else if (din + r0 <= r1) {
+        t0[k++] = angle_of(c0, v_neg(W)); /* c0 inside c1 */
+    } else {
+        /* overlapping projections: the two crossings x W +- y T, x = (d^2 + r0^2 - r1^2) / 2d */
+        double x = 0.5 * (din + (r0 - r1) * (r0 + r1) / din);
+        double y2 = (r0 - x) * (r0 + x);
+        double y = y2 > 0.0 ? sqrt(y2) : 0.0;
+        t0[k++] = angle_of(c0, v_axpy(v_scale(x, W), y, T));
+        t0[k++] = angle_of(c0, v_axpy(v_scale(x, W), -y, T));
+    }
+    return k;
+}
+
+int cd_cc_mirror(const cd_cc *g, vec3 *m)
+{
+    vec3 c = v_cross(g->c[0]->n, g->c[1]->n);
+    double s = v_norm(c);
+    if (!(s > CC_PARALLEL)) return 0;
+    vec3 mm = v_scale(1.0 / s, c);
+    if (fabs(v_dot(g->D, mm)) > 1e-9 * g->L) return 0;
+    *m = mm;
+    return 1;
+}
+
+/* ---------------------------------------------------------------------------------------- */
+/* Candidate bookkeeping shared by the polynomial method                                    */
+/* ---------------------------------------------------------------------------------------- */
+
+#define CC_MAXCAND 48
+/* Roots of phi are accepted with imaginary parts up to this (relative): near-symmetric
+ * configurations make true and spurious roots near-double, and rounding splits them into
+ * complex pairs (imaginary parts ~1e-4 were seen with a centre 2e-6 off the other's axis).
+ * Their real parts are only candidates, evaluated and polished on the true distance. */
+#define CC_IMAG_TOL 1e-2
+
+/* Candidates are kept as (cos t, sin t): roots come as (gamma, sigma), and most candidates are
+ * only evaluated, never polished, so atan2/sincos are spent only on the few that are. */
+typedef struct cc_cands {
+    int n;
+    int side[CC_MAXCAND];
+    double ct[CC_MAXCAND], st[CC_MAXCAND];
+    double F[CC_MAXCAND];
+} cc_cands;
+
+static void cand_add_cs(cc_cands *c, int side, double ct, double st)
+{
+    if (c->n >= CC_MAXCAND || !isfinite(ct) || !isfinite(st)) return;
+    c->side[c->n] = side;
+    c->ct[c->n] = ct;
+    c->st[c->n] = st;
+    c->n++;
+}
+
+static void cand_add(cc_cands *c, int side, double t) { cand_add_cs(c, side, cos(t), sin(t)); }
+
+/* Angle on circle `side` of the mirror image (plane through both axes, normal m) of the point
+ * at angle t. */
+static double mirror_angle(const cd_cc *g, int side, vec3 m, double t)
+{
+    const cd_circle *c = g->c[side];
+    vec3 p = v_axpy(v_scale(cos(t), c->u), sin(t), c->v);
+    p = v_axpy(p, -2.0 * v_dot(p, m), m);
+    return angle_of(c, p);
+}
+
+/* Evaluate every candidate, polish those near the best value, add mirror images when the axes
+ * meet, offer the polished minima. */
+static void finish_candidates(const cd_cc *g, cc_cands *c, cd_best *b)
+{
+    double Fmin = INFINITY;
+    for (int i = 0; i < c->n; i++) {
+        c->F[i] = eval_cs(g, c->side[i], c->ct[i], c->st[i], NULL, NULL, NULL, NULL);
+        if (c->F[i] < Fmin) Fmin = c->F[i];
+    }
+    /* A root found to ~sqrt(eps) (near a double root) has F within ~1e-8 L^2 of its minimum;
+     * the margin keeps every candidate that could polish below the best. */
+    double margin = 1e-3 * Fmin + 1e-4 * g->L * g->L;
+    vec3 m;
+    int mir = cd_cc_mirror(g, &m);
+    double pt[CC_MAXCAND], pF[CC_MAXCAND];
+    int ps[CC_MAXCAND], np = 0;
+    double best = INFINITY;
+    for (int i = 0; i < c->n; i++) {
+        if (!(c->F[i] <= Fmin + margin)) continue;
+        int dup = 0;
+        for (int j = 0; j < i; j++)
+            if (c->side[j] == c->side[i] && c->ct[j] == c->ct[i] && c->st[j] == c->st[i] &&
+                c->F[j] <= Fmin + margin)
+                dup = 1;
+        if (dup) continue;
+        double F;
+        double t = cd_cc_polish(g, c->side[i], atan2(c->st[i], c->ct[i]), &F);
+        ps[np] = c->side[i], pt[np] = t, pF[np] = F, np++;
+        if (F < best) best = F;
+    }
+    int n0 = np;
+    if (mir) {
+        for (int i = 0; i < n0 && np < CC_MAXCAND; i++) {
+            if (!(pF[i] <= best + margin)) continue;
+            double F;
+            double t = cd_cc_polish(g, ps[i], mirror_angle(g, ps[i], m, pt[i]), &F);
+            ps[np] = ps[i], pt[np] = t, pF[np] = F, np++;
+        }
+    }
+    cd_cc_offer_minima(g, np, ps, pt, pF, b);
+}
+
+/* Candidates shared by both sides' special structure: parallel closed forms, and the points
+ * of each circle in the mirror plane when the axes meet (critical by symmetry; §5.3's
+ * t = 0, pi when the centres are on the normal line). */
+static void special_candidates(const cd_cc *g, cc_cands *c)
+{
+    double sn = v_norm(v_cross(g->c[0]->n, g->c[1]->n));
+    if (sn <= CC_NEAR_PARALLEL) {
+        double t0[4];
+        int k = cd_cc_parallel_candidates(g, t0);
+        for (int i = 0; i < k; i++) cand_add(c, 0, t0[i]);
+    }
+    vec3 m;
+    if (cd_cc_mirror(g, &m)) {
+        for (int s = 0; s < 2; s++) {
+            vec3 dir = v_cross(m, g->c[s]->n);
+            double a = angle_of(g->c[s], dir);
+            cand_add(c, s, a);
+            cand_add(c, s, a > 0.0 ? a - M_PI : a + M_PI);
+        }
+    }
+}
+
+/* ---------------------------------------------------------------------------------------- */
+/* The polynomial                                                                            */
+/* ---------------------------------------------------------------------------------------- */
+
+/* out = a * b (degrees da, db); out must not alias. */
+static int pmul(const double *a, int da, const double *b, int db, double *out)
+{
+    for (int i = 0; i <= da + db; i++) out[i] = 0.0;
+    for (int i = 0; i <= da; i++)
+        for (int j = 0; j <= db; j++) out[i + j] += a[i] * b[j];
+    return da + db;
+}
+
+/* out = a + s * b (out may alias a), returns the degree max(da, db). */
+static int paxpy(double *out, int da, double s, const double *b, int db)
+{
+    int d = da > db ? da : db;
+    for (int i = da + 1; i <= d; i++) out[i] = 0.0;
+    for (int i = 0; i <= db; i++) out[i] += s * b[i];
+    return d;
+}
+
+/* Eberly (19)-(21) for the moving circle `side` against the fixed circle. H is homogeneous of
+ * degree 6 in the lengths, so a common scale changes no root: lengths are divided by
+ * max(r_fixed, |D|) (the fixed circle becomes the unit circle unless the circles are far apart,
+ * when the centre distance becomes 1) so that no coefficient overflows. Writes p6 (deg 4),
+ * p7 (deg 3), phi (deg 8). */
+static void build_phi(const cd_cc *g, int side, double *p6, double *p7, double *phi)
+{
+    const cd_circle *m = g->c[side], *f = g->c[1 - side];
+    double k = 1.0 / fmax(f->r, v_norm(g->D));
+    vec3 D = v_scale(side ? k : -k, g->D);
+    double r1 = m->r * k, r0 = f->r * k, r02 = r0 * r0;
+    vec3 N0 = f->n, U1 = m->u, V1 = m->v;
+    vec3 ND = v_cross(N0, D), NU = v_cross(N0, U1), NV = v_cross(N0, V1);
+    double nu = v_dot(N0, U1), nv = v_dot(N0, V1);
+    double a0 = r1 * v_dot(D, U1), a1 = r1 * v_dot(D, V1);
+    double a2 = v_sqr(ND);
+    double a3 = r1 * v_dot(ND, NU), a4 = r1 * v_dot(ND, NV);
+    double r12 = r1 * r1;
+    double a6 = r12 * v_dot(NU, NV), a7 = r12 * v_sqr(NV);
+    double a57 = r12 * (nv - nu) * (nv + nu); /* a5 - a7 */
+    double P0[3] = {a2 + a7, 2.0 * a3, a57};
+    double P1[2] = {2.0 * a4, 2.0 * a6};
+    double P2[2] = {0.0, a1};
+    double P3[1] = {-a0};
+    double P4[3] = {-a6, a4, 2.0 * a6};
+    double P5[2] = {-a3, -a57};
+    const double OM[3] = {1.0, 0.0, -1.0}; /* 1 - g^2 */
+    double t1[9], t2[9], t3[9], t4[9];
+    /* S = p2^2 + (1 - g^2) p3^2 (deg 2) */
+    double S[3];
+    pmul(P2, 1, P2, 1, S);
+    double p33 = P3[0] * P3[0];
+    paxpy(S, 2, p33, OM, 2);
+    /* p6 = p0 S + (1 - g^2) 2 p1 p2 p3 - r0^2 (p4^2 + (1 - g^2) p5^2) */
+    pmul(P0, 2, S, 2, p6); /* deg 4 */
+    pmul(P1, 1, P2, 1, t1); /* deg 2 */
+    pmul(t1, 2, OM, 2, t2); /* deg 4 */
+    paxpy(p6, 4, 2.0 * P3[0], t2, 4);
+    pmul(P4, 2, P4, 2, t1); /* deg 4 */
+    paxpy(p6, 4, -r02, t1, 4);
+    pmul(P5, 1, P5, 1, t3); /* deg 2 */
+    pmul(t3, 2, OM, 2, t4); /* deg 4 */
+    paxpy(p6, 4, -r02, t4, 4);
+    /* p7 = 2 p0 p2 p3 + p1 S - 2 r0^2 p4 p5 */
+    pmul(P0, 2, P2, 1, p7); /* deg 3 */
+    for (int i = 0; i <= 3; i++) p7[i] *= 2.0 * P3[0];
+    pmul(P1, 1, S, 2, t1); /* deg 3 */
+    paxpy(p7, 3, 1.0, t1, 3);
+    pmul(P4, 2, P5, 1, t1); /* deg 3 */
+    paxpy(p7, 3, -2.0 * r02, t1, 3);
+    /* phi = p6^2 - (1 - g^2) p7^2 */
+    pmul(p6, 4, p6, 4, phi);
+    pmul(p7, 3, p7, 3, t1); /* deg 6 */
+    pmul(t1, 6, OM, 2, t2); /* deg 8 */
+    paxpy(phi, 8, -1.0, t2, 8);
+}
+
+static cdist_status polynomial(cdist_query *q, const cd_circle *c0, const cd_circle *c1, cd_best *b);
+
 cdist_status cd_cc_polynomial(cdist_query *q, const cd_circle *c0, const cd_circle *c1, cd_best *b)
 {
-    return cd_fail(q, CDIST_ERR_INTERNAL, "circle-circle polynomial method is not implemented yet");
+    cd_circle a, bb;
+    double s;
+    cd_cc_scale(c0, c1, b->scale, &a, &bb, &s);
+    cd_best sb;
+    cd_best_init(&sb, b->scale * s);
+    cdist_status st = polynomial(q, &a, &bb, &sb);
+    if (st == CDIST_OK) cd_cc_unscale(&sb, s, b);
+    return st;
+}
+
+static cdist_status polynomial(cdist_query *q, const cd_circle *c0, const cd_circle *c1, cd_best *b)
+{
+    cd_cc g = {{c0, c1}, c1->c, b->scale};
+    if (cd_cc_closed_form(&g, b)) return CDIST_OK;
+    cc_cands c;
+    c.n = 0;
+    special_candidates(&g, &c);
+    double sn = v_norm(v_cross(c0->n, c1->n));
+    /* Moving circle: the smaller; the larger is the fixed unit circle of the polynomial. */
+    int side = (c1->r <= c0->r) ? 1 : 0;
+    if (sn > CC_PARALLEL || c.n == 0) {
+        double p6[5], p7[4], phi[9], roots[8];
+        build_phi(&g, side, p6, p7, phi);
+        int nr = cd_poly_real_roots(q->poly, phi, 8, CC_IMAG_TOL, roots);
+        if (nr == CD_POLY_FAIL) return cd_fail(q, CDIST_ERR_INTERNAL, "circle-circle: polynomial solver failed");
+        double s7 = 0.0;
+        for (int i = 0; i <= 3; i++) s7 += fabs(p7[i]);
+        for (int i = 0; i < nr; i++) {
+            double gm = roots[i];
+            if (!(fabs(gm) <= 1.0 + 1e-3)) continue;
+            gm = fmax(-1.0, fmin(1.0, gm));
+            double sg = sqrt((1.0 - gm) * (1.0 + gm));
+            double v6 = (((p6[4] * gm + p6[3]) * gm + p6[2]) * gm + p6[1]) * gm + p6[0];
+            double v7 = ((p7[3] * gm + p7[2]) * gm + p7[1]) * gm + p7[0];
+            /* sigma = -p6/p7 (Eberly); where p7 is within rounding of zero (the p7 = 0 branch)
+             * both signs. Near-double roots (near-symmetric configurations) make even a
+             * clearly non-zero p6/p7 sign unreliable, and the other sign costs one evaluation
+             * (no measurable time), so it is always offered second. */
+            double sgn = (v6 > 0.0) == (v7 > 0.0) ? -sg : sg;
+            if (fabs(v7) <= 1e-6 * s7) sgn = sg;
+            cand_add_cs(&c, side, gm, sgn);
+            if (sg > 0.0) cand_add_cs(&c, side, gm, -sgn);
+        }
+    }
+    /* Safety samples: four angles of the moving circle (only polished when they beat every
+     * root, i.e. if the solver missed the minimum's basin). */
+    for (int i = 0; i < 4; i++) cand_add_cs(&c, side, (i == 1 || i == 2) ? M_SQRT1_2 : -M_SQRT1_2, i < 2 ? -M_SQRT1_2 : M_SQRT1_2);
+    finish_candidates(&g, &c, b);
+    return CDIST_OK;
 }
