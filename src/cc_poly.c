@@ -158,7 +158,8 @@ void cd_cc_unscale(const cd_best *sc, double s, cd_best *b)
     double is = 1.0 / s; /* a power of two: exact */
     for (int i = 0; i < sc->n; i++) {
         const cd_cand *c = &sc->c[i];
-        cd_best_offer(b, c->d2 * is * is, v_scale(is, c->p[0]), v_scale(is, c->p[1]), c->param[0], c->param[1]);
+        cd_best_offer_flag(b, c->equidistant, c->d2 * is * is, v_scale(is, c->p[0]), v_scale(is, c->p[1]),
+                           c->param[0], c->param[1]);
     }
     b->equidistant |= sc->equidistant;
 }
@@ -241,7 +242,8 @@ int cd_cc_closed_form(const cd_cc *g, cd_best *b)
         cd_best_init(&t, b->scale);
         cd_point_circle_core(v_neg(g->D), c1, &t, 0);
         for (int i = 0; i < t.n; i++)
-            cd_best_offer(b, t.c[i].d2, v3(0, 0, 0), v_add(t.c[i].p[1], g->D), NAN, t.c[i].param[1]);
+            cd_best_offer_flag(b, t.c[i].equidistant, t.c[i].d2, v3(0, 0, 0), v_add(t.c[i].p[1], g->D), NAN,
+                               t.c[i].param[1]);
         b->equidistant |= t.equidistant;
         return 1;
     }

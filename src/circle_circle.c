@@ -775,8 +775,8 @@ static cdist_status cc_robust(cdist_query *q, const cd_circle *c0, const cd_circ
             cd_best_init(&t, b->scale);
             cd_point_circle_core(CB, c1, &t, 0);
             for (int i = 0; i < t.n; i++)
-                cd_best_offer(b, t.c[i].d2, v_add(t.c[i].p[0], C), v_add(t.c[i].p[1], C), t.c[i].param[0],
-                              t.c[i].param[1]);
+                cd_best_offer_flag(b, t.c[i].equidistant, t.c[i].d2, v_add(t.c[i].p[0], C), v_add(t.c[i].p[1], C),
+                                   t.c[i].param[0], t.c[i].param[1]);
             if (t.equidistant) b->equidistant = 1;
         }
         return CDIST_OK;
@@ -960,39 +960,13 @@ int cd_circle_circle_critical(cdist_query *q, const cd_circle *c0, const cd_circ
     return n < cap ? n : cap;
 }
 
-/* The validation of cd_check_circle without its message formatting (three snprintf calls, a
- * fifth of a random query): the same tests and the same arithmetic for the unit normal, so the
- * result is bit-identical. Returns 0 on any doubt; the caller then runs cd_check_circle, which
- * reports the error. (Could go once cd_check_circle formats its messages only on failure.) */
-static int cc_fast_circle(const cdist_query *q, const cdist_circle *c, cd_circle *out)
-{
-    if (!c) return 0;
-    vec3 p = c->center, d = c->normal;
-    double r = c->radius;
-    if (!v_isfinite(p) || !v_isfinite(d) || !isfinite(r)) return 0;
-    if (v_maxabs(p) > CD_MAX_ABS || v_maxabs(d) > CD_MAX_ABS || fabs(r) > CD_MAX_ABS || r < 0.0) return 0;
-    double m = v_maxabs(d);
-    if (m == 0.0) return 0;
-    vec3 sd = v_scale(1.0 / m, d);
-    double ns = v_norm(sd), len = m * ns;
-    if (!(fabs(len - 1.0) <= q->unit_tol)) return 0;
-    out->n = v_scale(1.0 / ns, sd);
-    out->c = p;
-    out->r = r;
-    v_basis(out->n, &out->u, &out->v);
-    return 1;
-}
-
 cdist_status cdist_circle_circle(cdist_query *q, const cdist_circle *c0, const cdist_circle *c1, cdist_result *r)
 {
     cdist_status st = cd_check_handle(q, r);
     if (st) return st;
     cd_circle a, b;
-    if (!cc_fast_circle(q, c0, &a) || !cc_fast_circle(q, c1, &b)) {
-        if ((st = cd_check_circle(q, c0, "first circle", &a)) ||
-            (st = cd_check_circle(q, c1, "second circle", &b)))
-            return st;
-    }
+    if ((st = cd_check_circle(q, c0, "first circle", &a)) || (st = cd_check_circle(q, c1, "second circle", &b)))
+        return st;
     /* Work relative to the first centre. */
     vec3 offset = a.c;
     a.c = v3(0, 0, 0);

@@ -65,6 +65,9 @@ void cd_best_offer(cd_best *b, double d2, vec3 p0, vec3 p1, double param0, doubl
 /* Same, for a candidate that represents infinitely many equally close pairs (e.g. a point on a
  * circle's axis): the result is flagged equidistant only if this candidate is the best. */
 void cd_best_offer_equidistant(cd_best *b, double d2, vec3 p0, vec3 p1, double param0, double param1);
+/* Either of the two above by a flag: for moving candidates from one collector to another
+ * (pass the source candidate's .equidistant). */
+void cd_best_offer_flag(cd_best *b, int equidistant, double d2, vec3 p0, vec3 p1, double param0, double param1);
 /* Same, d2 computed as |p0 - p1|^2. */
 void cd_best_offer_points(cd_best *b, vec3 p0, vec3 p1, double param0, double param1);
 /* Write the result: the best pair and, on a tie, the second; points moved by `offset`

@@ -20,12 +20,6 @@ static void split(vec3 p, const cd_circle *c, double *h, vec3 *w, double *rho)
 /* The point is on the axis when its axis distance is below the rounding noise of |N x D|. */
 static int on_axis(vec3 p, double rho) { return rho <= 2.0 * DBL_EPSILON * v_norm(p); }
 
-static void offer_one(cd_best *b, int equi, double d2, vec3 p0, vec3 p1, double a0, double a1)
-{
-    if (equi) cd_best_offer_equidistant(b, d2, p0, p1, a0, a1);
-    else cd_best_offer(b, d2, p0, p1, a0, a1);
-}
-
 void cd_point_circle_core(vec3 p, const cd_circle *c, cd_best *b, int swap)
 {
     double h, rho;
@@ -49,8 +43,8 @@ void cd_point_circle_core(vec3 p, const cd_circle *c, cd_best *b, int swap)
     }
     double dr = rho - c->r;
     double d2 = fma(dr, dr, h * h);
-    if (swap) offer_one(b, equi, d2, k, p, ang, NAN);
-    else offer_one(b, equi, d2, p, k, NAN, ang);
+    if (swap) cd_best_offer_flag(b, equi, d2, k, p, ang, NAN);
+    else cd_best_offer_flag(b, equi, d2, p, k, NAN, ang);
 }
 
 void cd_point_disk_core(vec3 p, const cd_circle *c, cd_best *b, int swap)

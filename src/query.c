@@ -240,37 +240,42 @@ cdist_status cd_check_direction(cdist_query *q, const cdist_vec3 *d, const char 
     return CDIST_OK;
 }
 
-/* Fast acceptance test; the message-building checks below run only when it fails, so a valid
- * query formats no strings. */
-static int circle_plainly_valid(const cdist_query *q, const cdist_circle *c)
+/* Validation without message formatting: a valid circle formats no strings (that was a fifth
+ * of a random circle-circle query). Returns 0 on any doubt; cd_check_circle then finds and
+ * reports the problem. */
+static int circle_fast(const cdist_query *q, const cdist_circle *c, cd_circle *out)
 {
-    if (!v_isfinite(c->center) || !v_isfinite(c->normal) || !isfinite(c->radius)) return 0;
-    if (v_maxabs(c->center) > CD_MAX_ABS || v_maxabs(c->normal) > CD_MAX_ABS || c->radius > CD_MAX_ABS) return 0;
-    if (!(c->radius >= 0.0)) return 0;
-    double m = v_maxabs(c->normal);
+    vec3 p = c->center, d = c->normal;
+    double r = c->radius;
+    if (!v_isfinite(p) || !v_isfinite(d) || !isfinite(r)) return 0;
+    if (v_maxabs(p) > CD_MAX_ABS || v_maxabs(d) > CD_MAX_ABS || fabs(r) > CD_MAX_ABS || r < 0.0) return 0;
+    double m = v_maxabs(d);
     if (m == 0.0) return 0;
-    double len = m * v_norm(v_scale(1.0 / m, c->normal));
-    return fabs(len - 1.0) <= q->unit_tol;
+    vec3 sd = v_scale(1.0 / m, d); /* same arithmetic as cd_check_direction */
+    double ns = v_norm(sd), len = m * ns;
+    if (!(fabs(len - 1.0) <= q->unit_tol)) return 0;
+    out->n = v_scale(1.0 / ns, sd);
+    out->c = p;
+    out->r = r;
+    v_basis(out->n, &out->u, &out->v);
+    return 1;
 }
 
 cdist_status cd_check_circle(cdist_query *q, const cdist_circle *c, const char *what, cd_circle *out)
 {
     if (!c) return cd_fail(q, CDIST_ERR_NULL_ARGUMENT, "%s pointer is NULL", what);
-    if (!q || !circle_plainly_valid(q, c)) {
-        char buf[64];
-        snprintf(buf, sizeof buf, "%s centre", what);
-        cdist_status st = cd_check_point(q, &c->center, buf);
-        if (st) return st;
-        snprintf(buf, sizeof buf, "%s normal", what);
-        st = cd_check_direction(q, &c->normal, buf, 1, NULL, NULL);
-        if (st) return st;
-        snprintf(buf, sizeof buf, "%s radius", what);
-        st = cd_check_scalar(q, c->radius, buf);
-        if (st) return st;
-        if (c->radius < 0.0)
-            return cd_fail(q, CDIST_ERR_NEGATIVE_RADIUS, "%s radius is negative (%g)", what, c->radius);
-    }
-    cd_check_direction(q, &c->normal, "normal", 0, &out->n, NULL);
+    if (q && circle_fast(q, c, out)) return CDIST_OK;
+    char buf[64];
+    snprintf(buf, sizeof buf, "%s centre", what);
+    cdist_status st = cd_check_point(q, &c->center, buf);
+    if (st) return st;
+    snprintf(buf, sizeof buf, "%s normal", what);
+    st = cd_check_direction(q, &c->normal, buf, 1, &out->n, NULL);
+    if (st) return st;
+    snprintf(buf, sizeof buf, "%s radius", what);
+    st = cd_check_scalar(q, c->radius, buf);
+    if (st) return st;
+    if (c->radius < 0.0) return cd_fail(q, CDIST_ERR_NEGATIVE_RADIUS, "%s radius is negative (%g)", what, c->radius);
     out->c = c->center;
     out->r = c->radius;
     v_basis(out->n, &out->u, &out->v);
@@ -334,7 +339,7 @@ static int cand_distinct(const cd_best *b, const cd_cand *x, const cd_cand *y)
     return sep > CD_DISTINCT_REL * b->scale;
 }
 
-static void offer(cd_best *b, int equi, double d2, vec3 p0, vec3 p1, double param0, double param1)
+void cd_best_offer_flag(cd_best *b, int equi, double d2, vec3 p0, vec3 p1, double param0, double param1)
 {
     if (!(d2 >= 0.0)) return; /* NaN candidates are ignored */
     cd_cand c = {equi, d2, {p0, p1}, {param0, param1}};
@@ -358,12 +363,12 @@ static void offer(cd_best *b, int equi, double d2, vec3 p0, vec3 p1, double para
 
 void cd_best_offer(cd_best *b, double d2, vec3 p0, vec3 p1, double param0, double param1)
 {
-    offer(b, 0, d2, p0, p1, param0, param1);
+    cd_best_offer_flag(b, 0, d2, p0, p1, param0, param1);
 }
 
 void cd_best_offer_equidistant(cd_best *b, double d2, vec3 p0, vec3 p1, double param0, double param1)
 {
-    offer(b, 1, d2, p0, p1, param0, param1);
+    cd_best_offer_flag(b, 1, d2, p0, p1, param0, param1);
 }
 
 void cd_best_offer_points(cd_best *b, vec3 p0, vec3 p1, double param0, double param1)
