@@ -36,7 +36,7 @@
 
 #include "internal.h"
 
-#define CC_ITER_TOL 1e-9
+#define CC_ITER_TOL 1e-6
 #define CC_STARTS 8
 #define CC_CHECKS 16
 
@@ -44,11 +44,14 @@
  * cc. On the axis every point is a foot; the basis direction u is taken. */
 static vec3 project(const cd_circle *c, vec3 cc, vec3 x)
 {
-    vec3 d = v_sub(x, cc);
-    vec3 nd = v_cross(c->n, d);
-    double rho = v_norm(nd);
-    vec3 w = rho > 0.0 ? v_scale(c->r / rho, v_cross(nd, c->n)) : v_scale(c->r, c->u);
-    return v_add(cc, w);
+    /* plain arithmetic: the inner loop (fma() is a library call without hardware FMA flags) */
+    double dx = x.x - cc.x, dy = x.y - cc.y, dz = x.z - cc.z;
+    vec3 n = c->n;
+    double ax = n.y * dz - n.z * dy, ay = n.z * dx - n.x * dz, az = n.x * dy - n.y * dx; /* n x d */
+    double rho = sqrt(ax * ax + ay * ay + az * az);
+    if (!(rho > 0.0)) return v3(cc.x + c->r * c->u.x, cc.y + c->r * c->u.y, cc.z + c->r * c->u.z);
+    double k = c->r / rho; /* (n x d) x n is the in-plane part of d, length rho */
+    return v3(cc.x + k * (ay * n.z - az * n.y), cc.y + k * (az * n.x - ax * n.z), cc.z + k * (ax * n.y - ay * n.x));
 }
 
 /* Alternating projection starting from the point x1 of c1. Returns the angle of the final
@@ -64,8 +67,10 @@ static double iterate(const cd_cc *g, vec3 x1, int cap, int *count)
         k++;
         vec3 p1 = project(c1, g->D, k0);
         vec3 k0n = project(c0, zero, p1);
-        double d2n = v_sqr(v_sub(k0n, p1));
-        double move = v_norm(v_sub(k0n, k0));
+        double ex = k0n.x - p1.x, ey = k0n.y - p1.y, ez = k0n.z - p1.z;
+        double mx = k0n.x - k0.x, my = k0n.y - k0.y, mz = k0n.z - k0.z;
+        double d2n = ex * ex + ey * ey + ez * ez;
+        double move = sqrt(mx * mx + my * my + mz * mz);
         int stop = move <= CC_ITER_TOL * g->L || !(d2n < d2);
         if (d2n <= d2) k0 = k0n;
         d2 = fmin(d2, d2n);
@@ -142,14 +147,17 @@ static cdist_status iteration(cdist_query *q, const cd_circle *c0, const cd_circ
         int cnt;
         double t = iterate(&g, x1, cap, &cnt);
         double F;
-        /* distinct fixed points only */
+        t = cd_cc_polish(&g, 0, t, &F);
+        /* distinct fixed points only (after the Newton finish, so distinct close minima stay) */
         int dup = -1;
         for (int i = 0; i < nf; i++) {
             double dt = fabs(remainder(t - fp[i].t, 2.0 * M_PI));
-            if (dt <= 1e-7) dup = i;
+            if (dt <= 1e-9) dup = i;
         }
-        if (dup >= 0) continue;
-        t = cd_cc_polish(&g, 0, t, &F);
+        if (dup >= 0) {
+            if (cnt < fp[dup].iters) fp[dup].iters = cnt;
+            continue;
+        }
         fp[nf].t = t, fp[nf].F = F, fp[nf].iters = cnt, nf++;
         if (F < best) best = F;
     }

@@ -522,7 +522,25 @@ static cdist_status polynomial(cdist_query *q, const cd_circle *c0, const cd_cir
     double sn = v_norm(v_cross(c0->n, c1->n));
     /* Moving circle: the smaller; the larger is the fixed unit circle of the polynomial. */
     int side = (c1->r <= c0->r) ? 1 : 0;
-    if (sn > CC_PARALLEL || c.n == 0) {
+    /* Concentric (to 1e-6): F(t + pi) = F(t), phi is (nearly) even, and GSL's QR has been seen
+     * to fail to converge on such a polynomial (its error handler aborts by default), so the
+     * closed-form critical points of concentric circles are used instead: |P| is constant, so
+     * F' = 0 where (N_f . e)(N_f . e') = 0, e(t) = cos t u + sin t v: e orthogonal to N_f (the
+     * line where the planes meet) or e' orthogonal to N_f (the points furthest from the other
+     * plane). Both sides; the small offset moves the minima by O(|D|), well inside their basins. */
+    int concentric = v_norm(c1->c) <= 1e-6 * fmax(c0->r, c1->r);
+    if (concentric) {
+        for (int s = 0; s < 2; s++) {
+            const cd_circle *m = g.c[s], *f = g.c[1 - s];
+            double nu = v_dot(f->n, m->u), nv = v_dot(f->n, m->v);
+            double a1 = atan2(-nu, nv), a2 = atan2(nv, nu);
+            cand_add(&c, s, a1);
+            cand_add(&c, s, a1 + M_PI);
+            cand_add(&c, s, a2);
+            cand_add(&c, s, a2 + M_PI);
+        }
+    }
+    if (!concentric && (sn > CC_PARALLEL || c.n == 0)) {
         double p6[5], p7[4], phi[9], roots[8];
         build_phi(&g, side, p6, p7, phi);
         int nr = cd_poly_real_roots(q->poly, phi, 8, CC_IMAG_TOL, roots);

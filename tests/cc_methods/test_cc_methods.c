@@ -236,7 +236,9 @@ static void paper_examples(void)
  * centre is within ~1e-6 of the smaller one's axis: the squared polynomial has near-double roots
  * that the eigenvalue solver returned as complex pairs with imaginary parts ~1e-4, so the global
  * minimum's root was dropped (error 1e-7). (4) nearly coplanar overlapping circles of radius
- * 123, normals 1.4e-4 apart: -p6/p7 gave the wrong sign of sin t at a near-double root. */
+ * 123, normals 1.4e-4 apart: -p6/p7 gave the wrong sign of sin t at a near-double root.
+ * (5) equal circles concentric to 1e-12 in different planes: the nearly even phi made GSL's QR
+ * fail to converge, and GSL's default error handler aborted the process. */
 static void near_axis_regressions(void)
 {
     static const double cases[][14] = {
@@ -252,6 +254,9 @@ static void near_axis_regressions(void)
         {8356.2686475893006, -381.66957929993509, 2844.1919778138217, 0.76909818137855435, -0.18398715163472648,
          -0.61207574321609926, 123.01567705614073, 8281.0860370908395, -442.04863093311542, 2767.8060915990841,
          0.76906770035413852, -0.1838698528825943, -0.6121492869169497, 123.0319943181189},
+        {2.9368356841831482, 4.7479266927957102, -2.083669375650802, -0.40753672600826185, -0.55819017183296182,
+         0.72272923631437225, 0.078836229095138349, 2.9368356841841097, 4.7479266927995507, -2.0836693756472937,
+         0.51384541626788582, 0.27605729705515591, -0.81225319754562042, 0.078836229100625668},
     };
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
         const double *v = cases[i];
