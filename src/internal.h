@@ -132,4 +132,14 @@ int cd_circle_circle_critical(cdist_query *q, const cd_circle *c0, const cd_circ
 cdist_status cd_circle_disk_core(cdist_query *q, cdist_method method, const cd_circle *c, const cd_circle *d,
                                  cd_best *b);
 
+/* ---- lines family (src/line_circle.c) ----
+ * cd_linear_circle semantics: candidates are every local minimum of the squared distance inside
+ * [tmin, tmax] plus the finite ends (point-circle), with param[1] the circle angle. method is
+ * POLYNOMIAL or anything else (= ROBUST). b->equidistant is set when the closest point found is
+ * on the circle's axis (the line is the axis, or a ray/segment end or clamped point lies on it)
+ * and that candidate is then the best in b. cd_linear_circle_ex also reports the method that
+ * answered (ROBUST when the polynomial module failed and the robust path took over). */
+cdist_status cd_linear_circle_ex(cdist_query *q, cdist_method method, vec3 B, vec3 M, double tmin, double tmax,
+                                 const cd_circle *c, cd_best *b, cdist_method *used);
+
 #endif

@@ -1,11 +1,515 @@
-/* Lines, rays and segments to circles. */
-#include "stub.h"
-CD_STUB(cdist_line_circle, cdist_query *q, const cdist_line *l, const cdist_circle *c, cdist_result *r)
-CD_STUB(cdist_ray_circle, cdist_query *q, const cdist_ray *l, const cdist_circle *c, cdist_result *r)
-CD_STUB(cdist_segment_circle, cdist_query *q, const cdist_segment *s, const cdist_circle *c, cdist_result *r)
+/* Lines, rays and segments to circles (Eberly, "Distance to Circles in 3D" §4; "Distance Between
+ * Line and Circle or Disk in 3D" §1). Derivation notes: docs/lines.md.
+ *
+ * Model. The circle is centred at the origin with unit normal N and basis {U, V, N}. The line is
+ * B + t M (M unit). We first move B to B0, the line point nearest the centre (t = t0), and scale
+ * everything by a power of two so that max(r, |B0|) is in [1, 2) (exact; no overflow or
+ * underflow in squares). In-plane 2D coordinates (in the basis U, V) are taken from cross
+ * products, which stay accurate for nearly parallel vectors:
+ *   in-plane part of M = (N x M) x N  ->  m2d,   in-plane part of B0 = (N x B0) x N  ->  b2d.
+ * With m0 = |m2d|, e2 = m2d / m0, e1 = e2 turned by +90 degrees, the line becomes, in a
+ * parameter s along M measured from a frame origin O = B0 + uO M,
+ *   height     h(s)  = hO + a s,                  a = N . M
+ *   in-plane   X(s)  = x1 e1 + x2(s) e2,         x2(s) = c2 + m0 s,  x1 constant
+ *   rho(s) = |X(s)| = |N x P(s)|,  F(s) = h^2 + (rho - r)^2 = squared distance to the circle.
+ * Preferably O is the point where x2 = 0 (c2 = 0): the paper's canonical form (§4.2.1, with
+ * b1 = |x1|, m2 b2 = a hO), where F is exactly even in s whenever the configuration is
+ * symmetric (a = 0 or hO = 0), so symmetric minima come out bit-identical.
+ *   F'(s)/2 = a h + m0 x2 (rho - r)/rho            (form used for evaluation: small factors
+ *           = s + mu - G(s),  G = r m0 x2 / rho,     stay relatively accurate near distance 0)
+ *   mu = a hO + m0 c2 = M . O,   G in (-r m0, r m0),   G'(s) = r m0^2 x1^2 / rho^3 <= r m0^2/|x1|.
+ * rho - r is computed as ((|x1| - r)(|x1| + r) + x2^2) / (rho + r), free of cancellation.
+ */
+#include <math.h>
+#include <stdio.h>
+
+#include "internal.h"
+
+#define EPS DBL_EPSILON
+
+typedef struct lc_model {
+    double r;         /* radius (scaled) */
+    double a;         /* N . M */
+    double m0;        /* length of the in-plane part of M */
+    double x1, ax1;   /* in-plane offset of the line across e2, and |x1| */
+    double c2;        /* x2 at s = 0 */
+    double h;         /* height at s = 0 */
+    double e2x, e2y;  /* e2 in the circle basis (U, V) */
+} lc_model;
+
+/* rho - r without cancellation, given x2 and rho. */
+static inline double rho_minus_r(const lc_model *m, double x2, double rho)
+{
+    return fma(x2, x2, (m->ax1 - m->r) * (m->ax1 + m->r)) / (rho + m->r);
+}
+
+/* F'/2 at height h and in-plane coordinate x2. On the axis (rho = 0) F' is undefined: side = -1
+ * or +1 gives the one-sided limit (x2/rho -> side), side = 0 the mean of both. */
+static inline double fp_at(const lc_model *m, double h, double x2, int side)
+{
+    double rho = sqrt(fma(m->x1, m->x1, x2 * x2));
+    if (rho == 0.0) return m->a * h - side * m->r * m->m0;
+    return fma(m->a, h, m->m0 * x2 * (rho_minus_r(m, x2, rho) / rho));
+}
+
+static inline double fp(const lc_model *m, double s)
+{
+    return fp_at(m, fma(m->a, s, m->h), fma(m->m0, s, m->c2), 0);
+}
+
+/* F''/2 */
+static inline double fpp(const lc_model *m, double s)
+{
+    double x2 = fma(m->m0, s, m->c2);
+    double rho = sqrt(fma(m->x1, m->x1, x2 * x2));
+    double k = fma(m->a, m->a, m->m0 * m->m0);
+    if (rho == 0.0) return -INFINITY;
+    double q = m->ax1 / rho;
+    return k - m->r * m->m0 * m->m0 * q * q / rho;
+}
+
+/* Squared distance (scaled) at s. */
+static inline double f_at(const lc_model *m, double s)
+{
+    double h = fma(m->a, s, m->h), x2 = fma(m->m0, s, m->c2);
+    double rho = sqrt(fma(m->x1, m->x1, x2 * x2));
+    double dr = rho_minus_r(m, x2, rho);
+    return fma(h, h, dr * dr);
+}
+
+/* Root of F' in [lo, hi] where F' increases: Newton steps safeguarded by bisection. Every
+ * operation commutes with s -> -s when F' is odd, so mirrored brackets give mirrored roots. */
+static double solve(const lc_model *m, double lo, double hi)
+{
+    if (!(lo < hi)) return lo;
+    double x = 0.5 * (lo + hi), dxold = hi - lo;
+    for (int it = 0; it < 200; it++) {
+        double f = fp(m, x);
+        if (f == 0.0) return x;
+        if (f < 0.0) lo = x;
+        else hi = x;
+        if (!(hi - lo > 0x1p-62)) break;
+        double df = fpp(m, x), xn = x;
+        int newton = 0;
+        if (df > 0.0) {
+            xn = x - f / df;
+            newton = xn > lo && xn < hi && fabs(xn - x) <= 0.5 * dxold;
+        }
+        if (!newton) xn = 0.5 * (lo + hi);
+        double dx = fabs(xn - x);
+        dxold = dx;
+        x = xn;
+        if (dx <= 2.0 * EPS * fabs(x) || dx <= 0x1p-62) break;
+    }
+    return x;
+}
+
+/* Newton on F' from a polynomial root, kept only while |F'| decreases. */
+static double polish(const lc_model *m, double x)
+{
+    double f = fp(m, x);
+    for (int it = 0; it < 60 && f != 0.0; it++) {
+        double df = fpp(m, x);
+        if (!(df != 0.0) || !isfinite(df)) break;
+        double xn = x - f / df;
+        double fn = fp(m, xn);
+        if (!(fabs(fn) < fabs(f))) break;
+        double dx = fabs(xn - x);
+        x = xn;
+        f = fn;
+        if (dx <= 2.0 * EPS * fabs(x) || dx <= 0x1p-62) break;
+    }
+    return x;
+}
+
+/* ---- candidates ---- */
+
+#define LC_MAX_CAND 8
+
+typedef struct lc_ctx {
+    const cd_circle *c;
+    vec3 B, M;        /* the caller's line (unscaled, relative to the centre) */
+    double t0;        /* t of B0 */
+    double sigma;     /* scale factor (power of two) */
+    double uO;        /* frame origin, scaled u */
+    double rs;        /* scaled radius */
+    double eqtol;     /* on-axis tolerance for rho (scaled) */
+    int n;
+    cd_cand cand[LC_MAX_CAND];
+    int eq[LC_MAX_CAND];
+} lc_ctx;
+
+static void push(lc_ctx *x, double d2, vec3 P, vec3 K, double t, double ang, int eq)
+{
+    if (x->n >= LC_MAX_CAND) return;
+    cd_cand *c = &x->cand[x->n];
+    c->d2 = d2;
+    c->p[0] = P;
+    c->p[1] = K;
+    c->param[0] = t;
+    c->param[1] = ang;
+    x->eq[x->n] = eq;
+    x->n++;
+}
+
+static double angle2(double x, double y)
+{
+    if (x == 0.0 && y == 0.0) return NAN;
+    double a = atan2(y, x);
+    return (a == -M_PI) ? M_PI : a;
+}
+
+/* Circle point in direction (X, Y) of the basis; (0, 0) gives the representative angle 0. */
+static vec3 circle_pt(const cd_circle *c, double X, double Y, double *ang)
+{
+    double n = hypot(X, Y);
+    if (c->r == 0.0) {
+        *ang = NAN;
+        return v3(0, 0, 0);
+    }
+    if (n == 0.0) {
+        *ang = 0.0;
+        return v_scale(c->r, c->u);
+    }
+    *ang = angle2(X, Y);
+    return v_add(v_scale(c->r * (X / n), c->u), v_scale(c->r * (Y / n), c->v));
+}
+
+/* A critical point of the model at s. */
+static void offer_model(lc_ctx *x, const lc_model *m, double s)
+{
+    double h = fma(m->a, s, m->h), x2 = fma(m->m0, s, m->c2);
+    double rho = sqrt(fma(m->x1, m->x1, x2 * x2));
+    double dr = rho_minus_r(m, x2, rho);
+    double d2 = ldexp(fma(h, h, dr * dr), -2 * ilogb(x->sigma));
+    double t = x->t0 + (x->uO + s) / x->sigma;
+    vec3 P = v_axpy(x->B, t, x->M);
+    /* X = x1 e1 + x2 e2, e1 = (-e2y, e2x) */
+    double X = fma(m->x1, -m->e2y, x2 * m->e2x), Y = fma(m->x1, m->e2x, x2 * m->e2y);
+    double ang;
+    vec3 K = circle_pt(x->c, X, Y, &ang);
+    push(x, d2, P, K, t, ang, rho <= x->eqtol);
+}
+
+/* A finite end of the range: point-circle (cd_point_circle_core semantics, parameter t). */
+static void offer_end(lc_ctx *x, double t)
+{
+    const cd_circle *c = x->c;
+    vec3 P = v_axpy(x->B, t, x->M);
+    vec3 np = v_cross(c->n, P);
+    double h = v_dot(c->n, P), rho = v_norm(np);
+    vec3 w = v_cross(np, c->n);
+    int on_axis = rho <= 2.0 * EPS * v_norm(P);
+    double ang;
+    vec3 K = on_axis ? circle_pt(c, 0, 0, &ang) : circle_pt(c, v_dot(c->u, w), v_dot(c->v, w), &ang);
+    double dr = rho - c->r;
+    push(x, fma(dr, dr, h * h), P, K, t, ang, on_axis && c->r > 0.0);
+}
+
+/* ---- the two solvers on the general model (m0 > 0) ---- */
+
+/* §4.2: brackets from the shape of G (odd, increasing, slope at most r m0^2/|x1| at x2 = 0),
+ * local minima only, each found by safeguarded bisection. */
+static void robust_roots(const lc_model *m, double smin, double smax, double *roots, int *nr)
+{
+    double mu = fma(m->a, m->h, m->m0 * m->c2);
+    double lo = -mu - m->r * m->m0, hi = -mu + m->r * m->m0;
+    *nr = 0;
+    double br[2][2];
+    int nb = 0;
+    if (m->r * m->m0 * m->m0 <= m->ax1) {
+        /* G' <= 1 everywhere: F' increasing, one root. */
+        br[nb][0] = lo;
+        br[nb][1] = hi;
+        nb++;
+    } else {
+        /* Tangent points of slope 1: rho^3 = r m0^2 x1^2 (eq. (14)), x2 = -+ x2hat. F' increases
+         * left of sL, decreases between, increases right of sR. A local minimum on the left
+         * branch exists iff F'(sL) >= 0, on the right branch iff F'(sR) <= 0. */
+        double cm = cbrt(m->m0 * m->ax1);
+        double rhohat = cbrt(m->r) * cm * cm;
+        double x2hat = sqrt(fmax(0.0, (rhohat - m->ax1) * (rhohat + m->ax1)));
+        double sc = -m->c2 / m->m0;
+        double sL = sc - x2hat / m->m0, sR = sc + x2hat / m->m0;
+        double fL = fp_at(m, fma(m->a, sL, m->h), -x2hat, -1);
+        double fR = fp_at(m, fma(m->a, sR, m->h), x2hat, +1);
+        int left = fL >= 0.0, right = fR <= 0.0;
+        /* Exactly, F'(sL) > F'(sR), so one of them holds; near a flat tangency rounding can
+         * break that, and then both branches are searched. */
+        if (!left && !right) left = right = 1;
+        if (left && lo <= sL) {
+            br[nb][0] = lo;
+            br[nb][1] = fmin(sL, hi);
+            nb++;
+        }
+        if (right && sR <= hi) {
+            br[nb][0] = fmax(sR, lo);
+            br[nb][1] = hi;
+            nb++;
+        }
+    }
+    for (int i = 0; i < nb; i++) {
+        double a = fmax(br[i][0], smin), b = fmin(br[i][1], smax);
+        if (a > b) continue;
+        roots[(*nr)++] = solve(m, a, b);
+    }
+}
+
+/* §4.1: the quartic H(s) = (s + mu)^2 |N x Delta|^2 - r^2 (N x M . N x Delta)^2 (eq. (9), the d0..d4
+ * of line-circle-disk §1 with a1 = 1), in the frame of the model:
+ *   |N x Delta|^2 = m0^2 s^2 + 2 c2 m0 s + (x1^2 + c2^2),  N x M . N x Delta = m0 (m0 s + c2).
+ * Every real root (generous imaginary tolerance: tangent lines give a root of multiplicity 4,
+ * which the solver returns spread by ~eps^(1/4)) is polished by Newton on the true F'.
+ * Returns the number of candidates, or -1 when the polynomial module failed. */
+static int poly_roots(cdist_query *q, const lc_model *m, double smin, double smax, double *roots)
+{
+    double mu = fma(m->a, m->h, m->m0 * m->c2);
+    double m0 = m->m0, c2 = m->c2, r2 = m->r * m->r;
+    double A2 = m0 * m0, A1 = 2.0 * c2 * m0, A0 = fma(m->x1, m->x1, c2 * c2);
+    double d[5];
+    d[4] = A2;
+    d[3] = fma(2.0 * mu, A2, A1);
+    d[2] = A0 + 2.0 * mu * A1 + mu * mu * A2 - r2 * A2 * A2;
+    d[1] = 2.0 * mu * A0 + mu * mu * A1 - 2.0 * r2 * A2 * m0 * c2;
+    d[0] = mu * mu * A0 - r2 * A2 * c2 * c2;
+    double z[4];
+    int n = cd_poly_real_roots(q->poly, d, 4, 1e-3, z);
+    if (n < 0) return -1;
+    int k = 0;
+    for (int i = 0; i < n; i++) {
+        double s = polish(m, z[i]);
+        if (s >= smin && s <= smax) roots[k++] = s;
+    }
+    return k;
+}
+
+/* ---- the core ---- */
+
+static cdist_status linear_circle(cdist_query *q, cdist_method method, vec3 B, vec3 M, double tmin, double tmax,
+                                  const cd_circle *c, cd_best *b, cdist_method *used)
+{
+    if (method != CDIST_METHOD_POLYNOMIAL) method = CDIST_METHOD_ROBUST;
+    if (used) *used = method;
+    if (!(tmin <= tmax) || isnan(tmin) || isnan(tmax) || !v_isfinite(B) || !v_isfinite(M))
+        return cd_fail(q, CDIST_ERR_INTERNAL, "line-circle core: bad range [%g, %g] or input", tmin, tmax);
+    lc_ctx x;
+    x.c = c;
+    x.B = B;
+    x.M = M;
+    x.n = 0;
+    /* B0: the line point nearest the centre (one correction step for orthogonality). */
+    double t0 = -v_dot(B, M);
+    vec3 B0 = v_axpy(B, t0, M);
+    double dt = -v_dot(B0, M);
+    if (dt != 0.0) {
+        t0 += dt;
+        B0 = v_axpy(B, t0, M);
+    }
+    x.t0 = t0;
+    double umin = tmin - t0, umax = tmax - t0; /* unscaled u = t - t0 */
+    if (tmin == tmax) umin = umax;
+
+    if (c->r == 0.0) {
+        /* The circle is its centre: nearest point of the range to the origin. */
+        double u = fmin(fmax(0.0, umin), umax);
+        double t = (u == 0.0) ? t0 : t0 + u;
+        if (tmin == tmax) t = tmin;
+        vec3 P = (u == 0.0) ? B0 : v_axpy(B, t, M);
+        push(&x, v_sqr(P), P, v3(0, 0, 0), t, NAN, 0);
+        goto done;
+    }
+
+    double S = fmax(c->r, v_norm(B0));
+    int e = ilogb(S);
+    double sg = ldexp(1.0, -e);
+    x.sigma = sg;
+    vec3 B0s = v_scale(sg, B0);
+    double rs = c->r * sg;
+    x.rs = rs;
+    x.eqtol = 4.0 * EPS * fmax(1.0, sg * v_norm(B));
+    umin *= sg;
+    umax *= sg;
+
+    const vec3 N = c->n;
+    vec3 w = v_cross(N, M), nb = v_cross(N, B0s);
+    double m2x = v_dot(c->v, w), m2y = -v_dot(c->u, w);
+    double b2x = v_dot(c->v, nb), b2y = -v_dot(c->u, nb);
+    double a = v_dot(N, M), h0 = v_dot(N, B0s);
+    double m0 = hypot(m2x, m2y);
+
+    if (tmin == tmax) {
+        offer_end(&x, tmin);
+        goto done;
+    }
+
+    if (m0 <= 4.0 * EPS) {
+        /* Perpendicular to the plane (§4.1 cases 1, 2): F = (h0 + a u)^2 + (rho - r)^2 with rho
+         * constant to rounding, so the minimum is the plane crossing, clamped to the range. On
+         * the axis every circle point is equally close (equidistant, also for rays/segments). */
+        double u = fmin(fmax(-h0 / a, umin), umax);
+        double X = fma(u, m2x, b2x), Y = fma(u, m2y, b2y);
+        double rho = hypot(X, Y), h = fma(a, u, h0), dr = rho - rs;
+        double t = x.t0 + u / sg;
+        if (u == umin && isfinite(tmin)) t = tmin;
+        if (u == umax && isfinite(tmax)) t = tmax;
+        vec3 P = v_axpy(B, t, M);
+        double ang;
+        vec3 K = circle_pt(c, X, Y, &ang);
+        push(&x, ldexp(fma(h, h, dr * dr), 2 * e), P, K, t, ang, rho <= x.eqtol);
+        goto done;
+    }
+
+    lc_model m;
+    m.r = rs;
+    m.a = a;
+    m.m0 = m0;
+    m.e2x = m2x / m0;
+    m.e2y = m2y / m0;
+    m.x1 = m.e2x * b2y - m.e2y * b2x;
+    m.ax1 = fabs(m.x1);
+    double c2 = fma(m.e2x, b2x, m.e2y * b2y);
+    /* Frame origin: the canonical point x2 = 0 when it is near (|uO| <= 4 in scaled units);
+     * otherwise (nearly perpendicular lines) B0 itself, to keep t free of cancellation. */
+    double us = -c2 / m0;
+    if (fabs(us) <= 4.0) {
+        x.uO = us;
+        m.c2 = 0.0;
+        m.h = fma(a, us, h0);
+    } else {
+        x.uO = 0.0;
+        m.c2 = c2;
+        m.h = h0;
+    }
+    double smin = umin - x.uO, smax = umax - x.uO;
+
+    double roots[4];
+    int nr = -1;
+    if (method == CDIST_METHOD_POLYNOMIAL) {
+        nr = poly_roots(q, &m, smin, smax, roots);
+        if (nr < 0 && used) *used = CDIST_METHOD_ROBUST; /* polynomial module failed: fall back */
+    }
+    if (nr < 0) robust_roots(&m, smin, smax, roots, &nr);
+    for (int i = 0; i < nr; i++) offer_model(&x, &m, roots[i]);
+    if (isfinite(tmin)) offer_end(&x, tmin);
+    if (isfinite(tmax)) offer_end(&x, tmax);
+
+done:;
+    /* Offer everything; the equidistant flag is set when our best candidate is an on-axis
+     * point and it is the best in b (an on-axis endpoint that is not the minimum sets nothing). */
+    int best = -1;
+    for (int i = 0; i < x.n; i++) {
+        cd_cand *k = &x.cand[i];
+        if (best < 0 || k->d2 < x.cand[best].d2) best = i;
+        cd_best_offer(b, k->d2, k->p[0], k->p[1], k->param[0], k->param[1]);
+    }
+    if (best >= 0 && x.eq[best] && b->n > 0 && x.cand[best].d2 <= b->c[0].d2) b->equidistant = 1;
+    return CDIST_OK;
+}
+
 cdist_status cd_linear_circle(cdist_query *q, cdist_method method, vec3 B, vec3 M, double tmin, double tmax,
                               const cd_circle *c, cd_best *b)
 {
-    (void)method; (void)B; (void)M; (void)tmin; (void)tmax; (void)c; (void)b;
-    return cd_fail(q, CDIST_ERR_INTERNAL, "line-circle is not implemented yet");
+    return linear_circle(q, method, B, M, tmin, tmax, c, b, NULL);
+}
+
+cdist_status cd_linear_circle_ex(cdist_query *q, cdist_method method, vec3 B, vec3 M, double tmin, double tmax,
+                                 const cd_circle *c, cd_best *b, cdist_method *used)
+{
+    return linear_circle(q, method, B, M, tmin, tmax, c, b, used);
+}
+
+/* ---- public queries ---- */
+
+#define LC_METHODS (CD_HAS(CDIST_METHOD_POLYNOMIAL) | CD_HAS(CDIST_METHOD_ROBUST))
+
+/* Scale L for tie and distinctness tests: max(r, distance from the centre to the nearest point
+ * of the line, ray or segment), the quantity ../shared/cases/README.md measures errors against. */
+static double range_scale(vec3 B, vec3 M, double tmin, double tmax, double r)
+{
+    double t = fmin(fmax(-v_dot(B, M), tmin), tmax);
+    return fmax(r, v_norm(v_axpy(B, t, M)));
+}
+
+static cdist_status run(cdist_query *q, vec3 origin, vec3 M, double tmin, double tmax, const cd_circle *cc,
+                        cdist_result *r, double *scale_out)
+{
+    vec3 B = v_sub(origin, cc->c);
+    cd_best b;
+    double L = range_scale(B, M, tmin, tmax, cc->r);
+    cd_best_init(&b, L);
+    cdist_method used;
+    cdist_status st = cd_linear_circle_ex(q, cd_pick_method(q, LC_METHODS, CDIST_METHOD_ROBUST), B, M, tmin, tmax,
+                                          cc, &b, &used);
+    if (st) return st;
+    if (b.n == 0) return cd_fail(q, CDIST_ERR_INTERNAL, "line-circle: no candidate");
+    cd_best_to_result(&b, cc->c, 0, r);
+    if (scale_out) *scale_out = L;
+    return cd_ok(q, r, used);
+}
+
+static cdist_status linear_public(cdist_query *q, const cdist_vec3 *origin, const cdist_vec3 *dir, const void *obj,
+                                  const char *what, double tmin, double tmax, const cdist_circle *c, cdist_result *r)
+{
+    cdist_status st = cd_check_handle(q, r);
+    if (st) return st;
+    if ((st = cd_check_ptr(q, obj, what))) return st;
+    char buf[32], dbuf[32];
+    snprintf(buf, sizeof buf, "%s origin", what);
+    snprintf(dbuf, sizeof dbuf, "%s direction", what);
+    cd_circle cc;
+    vec3 M;
+    double len;
+    if ((st = cd_check_point(q, origin, buf)) || (st = cd_check_direction(q, dir, dbuf, 1, &M, &len)) ||
+        (st = cd_check_circle(q, c, "circle", &cc)))
+        return st;
+    if ((st = run(q, *origin, M, tmin, tmax, &cc, r, NULL))) return st;
+    /* t refers to the unit direction; report it for the direction as passed. */
+    for (int i = 0; i < r->num_pairs; i++) r->pairs[i].param[0] /= len;
+    return CDIST_OK;
+}
+
+cdist_status cdist_line_circle(cdist_query *q, const cdist_line *l, const cdist_circle *c, cdist_result *r)
+{
+    return linear_public(q, l ? &l->origin : NULL, l ? &l->direction : NULL, l, "line", -INFINITY, INFINITY, c, r);
+}
+
+cdist_status cdist_ray_circle(cdist_query *q, const cdist_ray *l, const cdist_circle *c, cdist_result *r)
+{
+    return linear_public(q, l ? &l->origin : NULL, l ? &l->direction : NULL, l, "ray", 0.0, INFINITY, c, r);
+}
+
+cdist_status cdist_segment_circle(cdist_query *q, const cdist_segment *s, const cdist_circle *c, cdist_result *r)
+{
+    cdist_status st = cd_check_handle(q, r);
+    if (st) return st;
+    if ((st = cd_check_ptr(q, s, "segment"))) return st;
+    cd_circle cc;
+    if ((st = cd_check_point(q, &s->p0, "segment p0")) || (st = cd_check_point(q, &s->p1, "segment p1")) ||
+        (st = cd_check_circle(q, c, "circle", &cc)))
+        return st;
+    vec3 D = v_sub(s->p1, s->p0);
+    if (D.x == 0.0 && D.y == 0.0 && D.z == 0.0) {
+        /* p0 == p1: the segment is a point; s = 0. */
+        vec3 rel = v_sub(s->p0, cc.c);
+        cd_best b;
+        cd_best_init(&b, fmax(cc.r, v_norm(rel)));
+        cd_point_circle_core(rel, &cc, &b, 0);
+        cd_best_to_result(&b, cc.c, 0, r);
+        for (int i = 0; i < r->num_pairs; i++) {
+            r->pairs[i].point[0] = s->p0;
+            r->pairs[i].param[0] = 0.0;
+        }
+        return cd_ok(q, r, cd_pick_method(q, LC_METHODS, CDIST_METHOD_ROBUST));
+    }
+    vec3 M;
+    double len;
+    if ((st = cd_check_direction(q, &D, "segment direction p1 - p0", 0, &M, &len))) return st;
+    if ((st = run(q, s->p0, M, 0.0, len, &cc, r, NULL))) return st;
+    for (int i = 0; i < r->num_pairs; i++) {
+        double sp = r->pairs[i].param[0] / len;
+        sp = fmin(fmax(sp, 0.0), 1.0);
+        r->pairs[i].param[0] = sp;
+        if (sp == 0.0) r->pairs[i].point[0] = s->p0; /* exactly the caller's start point */
+    }
+    return CDIST_OK;
 }
