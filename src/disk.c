@@ -153,31 +153,6 @@ static void cdk_offer(const cdk *k, double t, cd_best *b)
     cd_best_offer(b, d2, P, K, k->rho > 0.0 ? wrap_angle(t) : NAN, polar_angle(x, y));
 }
 
-/* Polish a critical point of F by safeguarded Newton on F' (the true derivative). Keeps the
- * best F seen, so the result is never worse than the start. */
-static double cdk_polish(const cdk *k, double t)
-{
-    double f1, f2, F = cdk_rim(k, t, &f1, &f2);
-    double best_t = t, best_F = F;
-    for (int it = 0; it < 12; it++) {
-        if (!(f2 > 0.0) || f1 == 0.0) break;
-        double step = f1 / f2;
-        if (fabs(step) > 0.5) step = copysign(0.5, step);
-        double tn = t - step;
-        double f1n, f2n, Fn = cdk_rim(k, tn, &f1n, &f2n);
-        if (Fn > best_F + 4.0 * DBL_EPSILON * (fabs(best_F) + 1e-300) && fabs(step) > 1e-6) break;
-        t = tn;
-        f1 = f1n;
-        f2 = f2n;
-        if (Fn <= best_F) {
-            best_F = Fn;
-            best_t = tn;
-        }
-        if (fabs(step) <= 1e-16 * (1.0 + fabs(t))) break;
-    }
-    return best_t;
-}
-
 /* Bracketed root of F' in [a, b] with F'(a) < 0 < F'(b) (a minimum of F): Newton steps kept
  * inside the bracket, bisection otherwise. */
 static double cdk_bracket(const cdk *k, double a, double b)
@@ -245,7 +220,7 @@ static int cdk_poly_critical(cdist_query *q, const cdk *k, double *ts)
     double R2 = (k->R * s) * (k->R * s);
     for (int i = 0; i < 9; i++) a[i] = fma(-R2, bq[i], a[i]);
     double roots[8];
-    int nr = cd_poly_real_roots(q->poly, a, 8, 1e-6, roots);
+    int nr = cd_poly_real_roots(q->poly, a, 8, 1e-3, roots);
     if (nr == CD_POLY_ZERO) return -1;
     if (nr < 0) return -2;
     int n = 0;
@@ -254,30 +229,113 @@ static int cdk_poly_critical(cdist_query *q, const cdk *k, double *ts)
     return n;
 }
 
+/* The local minimum of F reached by walking downhill from t: steps doubling from 1e-9 until F'
+ * changes sign, then the bracketed solver on the true derivative. */
+static double cdk_descend(const cdk *k, double t)
+{
+    double f1;
+    cdk_rim(k, t, &f1, NULL);
+    if (f1 == 0.0) return t;
+    double dir = f1 < 0.0 ? 1.0 : -1.0, prev = t;
+    for (double h = 1e-9; h < 4.0; h *= 2.0) {
+        double tn = t + dir * h, g;
+        cdk_rim(k, tn, &g, NULL);
+        if (dir > 0.0 ? g >= 0.0 : g <= 0.0) return dir > 0.0 ? cdk_bracket(k, prev, tn) : cdk_bracket(k, tn, prev);
+        prev = tn;
+    }
+    return prev;
+}
+
+/* Minima of F hidden in [a, b] next to the critical point t1 (a minimum-maximum-minimum cluster
+ * narrower than the sampling): F' at t1 -+ 1e-9 2^j covers every dyadic shell around t1, so the
+ * sign change of a neighbour at distance >= 2e-9 is seen (closer ones differ from F(t1) by
+ * ~1e-36 of scale^2). Every - to + change away from t1 is bracketed and solved. */
+static int cdk_scan(const cdk *k, double t1, double a, double b, double *out, int cap)
+{
+    double p[2 * 36 + 3], f[2 * 36 + 3];
+    int m = 0, jl = 0, jr = 0;
+    p[m++] = a;
+    while (jl < 34 && 1e-9 * ldexp(1.0, jl + 1) < t1 - a) jl++;
+    for (int j = jl; j >= 0; j--)
+        if (t1 - 1e-9 * ldexp(1.0, j) > a) p[m++] = t1 - 1e-9 * ldexp(1.0, j);
+    int i1 = m;
+    p[m++] = t1;
+    while (jr < 34 && 1e-9 * ldexp(1.0, jr + 1) < b - t1) jr++;
+    for (int j = 0; j <= jr; j++)
+        if (t1 + 1e-9 * ldexp(1.0, j) < b) p[m++] = t1 + 1e-9 * ldexp(1.0, j);
+    p[m++] = b;
+    for (int i = 0; i < m; i++) cdk_rim(k, p[i], &f[i], NULL);
+    int n = 0;
+    for (int i = 0; i + 1 < m && n < cap; i++) {
+        if (i == i1 - 1 || i == i1) continue; /* the brackets touching t1 hold t1 itself */
+        if (f[i] < 0.0 && f[i + 1] >= 0.0) out[n++] = cdk_bracket(k, p[i], p[i + 1]);
+    }
+    return n;
+}
+
 /* Critical points of F by sampling F' on a uniform grid, and a bracketed Newton/bisection on
  * every sign change from - to + (a minimum of F). Returns the number of angles written. */
 #define CDK_SAMPLES 48
-static int cdk_robust_critical(const cdk *k, double *ts, int cap)
+#define CDK_CAP 48
+static int cdk_robust_critical(const cdk *k, double *ts, int cap, double scale)
 {
     double f1s[CDK_SAMPLES + 1], Fs[CDK_SAMPLES + 1];
     const double h = TWO_PI / CDK_SAMPLES;
     for (int i = 0; i < CDK_SAMPLES; i++) Fs[i] = cdk_rim(k, -M_PI + i * h, &f1s[i], NULL);
     f1s[CDK_SAMPLES] = f1s[0];
     Fs[CDK_SAMPLES] = Fs[0];
+    double Fmin = Fs[0];
+    for (int i = 1; i < CDK_SAMPLES; i++) Fmin = fmin(Fmin, Fs[i]);
+    /* A cluster can only hold the global minimum where F is within this margin of the best. */
+    double margin = Fmin + 0.01 * scale * scale;
     int n = 0;
     for (int i = 0; i < CDK_SAMPLES && n < cap; i++) {
         double a = -M_PI + i * h, b = a + h;
+        double t1;
         if (f1s[i] < 0.0 && f1s[i + 1] >= 0.0) {
-            ts[n++] = (f1s[i + 1] == 0.0) ? b : cdk_bracket(k, a, b);
-        } else if (f1s[i] == 0.0) {
-            ts[n++] = a;
+            t1 = (f1s[i + 1] == 0.0) ? b : cdk_bracket(k, a, b);
+            ts[n++] = t1;
+        } else if (f1s[i] > 0.0 && f1s[i + 1] <= 0.0 && fmin(Fs[i], Fs[i + 1]) <= margin) {
+            /* A maximum: minima may hide on both sides of it. Locate it by bisection on F'. */
+            double lo = a, hi = b;
+            for (int it = 0; it < 60; it++) {
+                double mid = 0.5 * (lo + hi), g;
+                cdk_rim(k, mid, &g, NULL);
+                if (g > 0.0) lo = mid;
+                else hi = mid;
+            }
+            t1 = 0.5 * (lo + hi);
+        } else {
+            continue;
         }
+        if (fmin(Fs[i], Fs[i + 1]) <= margin) n += cdk_scan(k, t1, a, b, ts + n, cap - n);
     }
-    /* Safety net for a minimum/maximum pair closer than the grid: the smallest sample. */
+    /* Safety net: downhill from the smallest sample. */
     int im = 0;
     for (int i = 1; i < CDK_SAMPLES; i++)
         if (Fs[i] < Fs[im]) im = i;
-    if (n < cap) ts[n++] = cdk_polish(k, -M_PI + im * h);
+    if (n < cap) ts[n++] = cdk_descend(k, -M_PI + im * h);
+    return n;
+}
+
+/* The polynomial candidates, each walked downhill to a true minimum of F; the best ones are
+ * scanned for hidden neighbours (a root cluster that GSL resolves only to ~eps^(1/3)). */
+static int cdk_poly_minima(cdist_query *q, const cdk *k, double *ts, int cap, double scale)
+{
+    double roots[16];
+    int nr = cdk_poly_critical(q, k, roots);
+    if (nr < 0) return nr;
+    int n = 0;
+    double Fbest = INFINITY;
+    for (int i = 0; i < nr && n < cap; i++) {
+        ts[n] = cdk_descend(k, roots[i]);
+        Fbest = fmin(Fbest, cdk_rim(k, ts[n], NULL, NULL));
+        n++;
+    }
+    int n0 = n;
+    for (int i = 0; i < n0 && n < cap; i++)
+        if (cdk_rim(k, ts[i], NULL, NULL) <= Fbest + 0.01 * scale * scale)
+            n += cdk_scan(k, ts[i], ts[i] - 0.15, ts[i] + 0.15, ts + n, cap - n);
     return n;
 }
 
@@ -332,17 +390,16 @@ static cdist_status cdk_solve(cdist_query *q, cdist_method method, const cdk *k,
         }
     }
     /* Critical points of the rim distance. */
-    double ts[16];
+    double ts[CDK_CAP];
+    double scale = fmax(fmax(k->rho, k->R), hypot(k->X[0], hypot(k->Y[0], k->Z[0])));
     int n = -2;
     if (method == CDIST_METHOD_POLYNOMIAL) {
-        n = cdk_poly_critical(q, k, ts);
+        n = cdk_poly_minima(q, k, ts, CDK_CAP, scale);
         if (n == -1) n = 0; /* F constant: the rim gives no isolated candidate; z candidates rule */
-        if (n >= 0)
-            for (int i = 0; i < n; i++) ts[i] = cdk_polish(k, ts[i]);
     }
     if (n < 0) {
         *used = CDIST_METHOD_ROBUST;
-        n = cdk_robust_critical(k, ts, 16);
+        n = cdk_robust_critical(k, ts, CDK_CAP, scale);
     }
     for (int i = 0; i < n; i++) cdk_offer(k, ts[i], b);
     return CDIST_OK;
@@ -478,9 +535,11 @@ static void lin_offer(vec3 B, vec3 M, double t, const cd_circle *d, cd_best *b)
     for (int i = 0; i < tmp.n; i++) cd_best_offer(b, tmp.c[i].d2, tmp.c[i].p[0], tmp.c[i].p[1], t, tmp.c[i].param[1]);
 }
 
-cdist_status cd_linear_disk(cdist_query *q, cdist_method method, vec3 B, vec3 M, double tmin, double tmax,
-                            const cd_circle *d, cd_best *b)
+static cdist_status linear_disk(cdist_query *q, cdist_method method, vec3 B, vec3 M, double tmin, double tmax,
+                                const cd_circle *d, cd_best *b, cdist_method *used)
 {
+    *used = method == CDIST_METHOD_POLYNOMIAL ? method : CDIST_METHOD_ROBUST;
+    cdist_method u1 = *used;
     double R = d->r;
     double mn = v_dot(d->n, M), hB = v_dot(d->n, B);
     /* In-plane parts of B and M. */
@@ -529,21 +588,24 @@ cdist_status cd_linear_disk(cdist_query *q, cdist_method method, vec3 B, vec3 M,
         if (tmin < lo) {
             cd_best t;
             cd_best_init(&t, b->scale);
-            if ((st = cd_linear_circle(q, method, B, M, tmin, lo, d, &t))) return st;
+            if ((st = cd_linear_circle_ex(q, method, B, M, tmin, lo, d, &t, &u1))) return st;
+            if (u1 == CDIST_METHOD_ROBUST) *used = u1;
             double m2 = merge_best(&loc, &t, v3(0, 0, 0), 0);
             if (t.equidistant && m2 < eq_d2) eq_d2 = m2;
         }
         if (hi < tmax) {
             cd_best t;
             cd_best_init(&t, b->scale);
-            if ((st = cd_linear_circle(q, method, B, M, hi, tmax, d, &t))) return st;
+            if ((st = cd_linear_circle_ex(q, method, B, M, hi, tmax, d, &t, &u1))) return st;
+            if (u1 == CDIST_METHOD_ROBUST) *used = u1;
             double m2 = merge_best(&loc, &t, v3(0, 0, 0), 0);
             if (t.equidistant && m2 < eq_d2) eq_d2 = m2;
         }
     } else {
         cd_best t;
         cd_best_init(&t, b->scale);
-        if ((st = cd_linear_circle(q, method, B, M, tmin, tmax, d, &t))) return st;
+        if ((st = cd_linear_circle_ex(q, method, B, M, tmin, tmax, d, &t, &u1))) return st;
+        if (u1 == CDIST_METHOD_ROBUST) *used = u1;
         double m2 = merge_best(&loc, &t, v3(0, 0, 0), 0);
         if (t.equidistant) eq_d2 = m2;
     }
@@ -554,6 +616,13 @@ cdist_status cd_linear_disk(cdist_query *q, cdist_method method, vec3 B, vec3 M,
     merge_best(b, &loc, v3(0, 0, 0), 0);
     if (loc.equidistant) b->equidistant = 1;
     return CDIST_OK;
+}
+
+cdist_status cd_linear_disk(cdist_query *q, cdist_method method, vec3 B, vec3 M, double tmin, double tmax,
+                            const cd_circle *d, cd_best *b)
+{
+    cdist_method used;
+    return linear_disk(q, method, B, M, tmin, tmax, d, b, &used);
 }
 
 #define CD_LINE_METHODS (CD_HAS(CDIST_METHOD_POLYNOMIAL) | CD_HAS(CDIST_METHOD_ROBUST))
@@ -568,12 +637,12 @@ static cdist_status linear_disk_query(cdist_query *q, vec3 origin, vec3 dir, dou
     d.c = v3(0, 0, 0);
     vec3 B = v_sub(origin, offset);
     /* Scale: the radius and the distance from the centre to the nearest point of the line. */
-    double tn = -v_dot(B, dir);
+    double tn = fmin(fmax(-v_dot(B, dir), tmin), tmax);
     double L = fmax(d.r, v_norm(v_axpy(B, tn, dir)));
     cd_best best;
     cd_best_init(&best, L);
     cdist_method m = cd_pick_method(q, CD_LINE_METHODS, CDIST_METHOD_ROBUST);
-    cdist_status st = cd_linear_disk(q, m, B, dir, tmin, tmax, &d, &best);
+    cdist_status st = linear_disk(q, m, B, dir, tmin, tmax, &d, &best, &m);
     if (st) return st;
     if (best.n == 0) return cd_fail(q, CDIST_ERR_INTERNAL, "line-disk found no candidate");
     for (int i = 0; i < best.n; i++) best.c[i].param[0] *= pscale;
