@@ -106,29 +106,38 @@ static void cdk_init(cdk *k, const cd_circle *c, const cd_circle *d)
 static inline double trig1(const double *a, double cs, double sn) { return fma(a[1], cs, fma(a[2], sn, a[0])); }
 static inline double trig1d(const double *a, double cs, double sn) { return fma(a[2], cs, -a[1] * sn); }
 
-/* Half squared rim distance F = ((rho - R)^2 + z^2) / 2 along the circle: value, F', F''. */
-static double cdk_rim(const cdk *k, double t, double *f1, double *f2)
+/* Half squared rim distance F = ((rho - R)^2 + z^2) / 2 along the circle: value, F', F''.
+ * The hot path of the search: plain arithmetic (fma() is a library call without -mfma, and
+ * hypot is slow; squares cannot overflow for inputs below 1e150). */
+static double cdk_rim_cs(const cdk *k, double cs, double sn, double *f1, double *f2)
 {
-    double sn, cs;
-    sincos(t, &sn, &cs);
-    double x = trig1(k->X, cs, sn), y = trig1(k->Y, cs, sn), z = trig1(k->Z, cs, sn);
-    double xp = trig1d(k->X, cs, sn), yp = trig1d(k->Y, cs, sn), zp = trig1d(k->Z, cs, sn);
-    double xpp = k->X[0] - x, ypp = k->Y[0] - y, zpp = k->Z[0] - z; /* x'' = -(x - x0) */
-    double rho = hypot(x, y);
-    double T = fma(x, xp, y * yp);
+    const double *X = k->X, *Y = k->Y, *Z = k->Z;
+    double x = X[0] + X[1] * cs + X[2] * sn, y = Y[0] + Y[1] * cs + Y[2] * sn, z = Z[0] + Z[1] * cs + Z[2] * sn;
+    double xp = X[2] * cs - X[1] * sn, yp = Y[2] * cs - Y[1] * sn, zp = Z[2] * cs - Z[1] * sn;
+    double rho = sqrt(x * x + y * y);
     double dr = rho - k->R;
-    double F = 0.5 * fma(dr, dr, z * z);
+    double F = 0.5 * (dr * dr + z * z);
     if (rho > 0.0) {
-        double r1 = T / rho;
-        double r2 = (fma(xp, xp, yp * yp) + fma(x, xpp, y * ypp) - r1 * r1) / rho;
-        if (f1) *f1 = fma(dr, r1, z * zp);
-        if (f2) *f2 = r1 * r1 + dr * r2 + zp * zp + z * zpp;
+        double r1 = (x * xp + y * yp) / rho;
+        if (f1) *f1 = dr * r1 + z * zp;
+        if (f2) {
+            double xpp = X[0] - x, ypp = Y[0] - y, zpp = Z[0] - z; /* x'' = -(x - x0) */
+            double r2 = (xp * xp + yp * yp + x * xpp + y * ypp - r1 * r1) / rho;
+            *f2 = r1 * r1 + dr * r2 + zp * zp + z * zpp;
+        }
     } else {
         /* On the disk's axis: F has a cusp (a maximum); any finite values do. */
         if (f1) *f1 = z * zp;
         if (f2) *f2 = 1.0;
     }
     return F;
+}
+
+static double cdk_rim(const cdk *k, double t, double *f1, double *f2)
+{
+    double sn, cs;
+    sincos(t, &sn, &cs);
+    return cdk_rim_cs(k, cs, sn, f1, f2);
 }
 
 /* Offer the circle point at angle t with its closest disk point (the true point-disk distance). */
@@ -153,14 +162,21 @@ static void cdk_offer(const cdk *k, double t, cd_best *b)
     cd_best_offer(b, d2, P, K, k->rho > 0.0 ? wrap_angle(t) : NAN, polar_angle(x, y));
 }
 
-/* Bracketed root of F' in [a, b] with F'(a) < 0 < F'(b) (a minimum of F): Newton steps kept
- * inside the bracket, bisection otherwise. */
-static double cdk_bracket(const cdk *k, double a, double b)
+/* Bracketed root of F' in [a, b] with sg F'(a) < 0 < sg F'(b) (sg = 1: a minimum of F, -1: a
+ * maximum): Newton steps kept inside the bracket, bisection otherwise. */
+static double cdk_bracket_sg(const cdk *k, double a, double b, double sg, double fa, double fb)
 {
+    /* Start from the secant point when the end values are known. */
     double t = 0.5 * (a + b);
+    if (isfinite(fa) && isfinite(fb) && fb != fa) {
+        double ts = a - fa * (b - a) / (fb - fa);
+        if (ts > a && ts < b) t = ts;
+    }
     for (int it = 0; it < 100; it++) {
         double f1, f2;
         cdk_rim(k, t, &f1, &f2);
+        f1 *= sg;
+        f2 *= sg;
         if (f1 == 0.0) return t;
         if (f1 < 0.0) a = t;
         else b = t;
@@ -174,6 +190,8 @@ static double cdk_bracket(const cdk *k, double a, double b)
     }
     return t;
 }
+
+static double cdk_bracket(const cdk *k, double a, double b) { return cdk_bracket_sg(k, a, b, 1.0, NAN, NAN); }
 
 /* (c0 + c1 cos t + c2 sin t)(1 + tau^2) as a quadratic in tau = tan(t/2), ascending. */
 static void trig_to_quad(const double *c, double s, double *q)
@@ -231,13 +249,13 @@ static int cdk_poly_critical(cdist_query *q, const cdk *k, double *ts)
 
 /* The local minimum of F reached by walking downhill from t: steps doubling from 1e-9 until F'
  * changes sign, then the bracketed solver on the true derivative. */
-static double cdk_descend(const cdk *k, double t)
+static double cdk_descend(const cdk *k, double t, double h0)
 {
     double f1;
     cdk_rim(k, t, &f1, NULL);
     if (f1 == 0.0) return t;
     double dir = f1 < 0.0 ? 1.0 : -1.0, prev = t;
-    for (double h = 1e-9; h < 4.0; h *= 2.0) {
+    for (double h = h0; h < 4.0; h *= 2.0) {
         double tn = t + dir * h, g;
         cdk_rim(k, tn, &g, NULL);
         if (dir > 0.0 ? g >= 0.0 : g <= 0.0) return dir > 0.0 ? cdk_bracket(k, prev, tn) : cdk_bracket(k, tn, prev);
@@ -277,44 +295,93 @@ static int cdk_scan(const cdk *k, double t1, double a, double b, double *out, in
  * every sign change from - to + (a minimum of F). Returns the number of angles written. */
 #define CDK_SAMPLES 48
 #define CDK_CAP 48
+#define CDK_FLAT 0.05
+static const double cdk_grid_cs[CDK_SAMPLES][2] = {
+    {-1, -1.2246467991473532e-16},
+    {-0.99144486137381038, -0.13052619222005157},
+    {-0.9659258262890682, -0.25881904510252102},
+    {-0.92387953251128674, -0.38268343236508989},
+    {-0.86602540378443871, -0.49999999999999994},
+    {-0.79335334029123505, -0.60876142900872088},
+    {-0.70710678118654746, -0.70710678118654757},
+    {-0.60876142900872066, -0.79335334029123517},
+    {-0.50000000000000022, -0.86602540378443849},
+    {-0.38268343236508973, -0.92387953251128674},
+    {-0.25881904510252063, -0.96592582628906831},
+    {-0.1305261922200516, -0.99144486137381038},
+    {6.123233995736766e-17, -1},
+    {0.13052619222005171, -0.99144486137381038},
+    {0.25881904510252074, -0.96592582628906831},
+    {0.38268343236508962, -0.92387953251128685},
+    {0.49999999999999989, -0.86602540378443871},
+    {0.60876142900872077, -0.79335334029123505},
+    {0.70710678118654757, -0.70710678118654746},
+    {0.79335334029123505, -0.60876142900872077},
+    {0.86602540378443871, -0.49999999999999983},
+    {0.92387953251128674, -0.38268343236508978},
+    {0.9659258262890682, -0.25881904510252091},
+    {0.99144486137381038, -0.13052619222005188},
+    {1, 0},
+    {0.99144486137381038, 0.13052619222005188},
+    {0.9659258262890682, 0.25881904510252091},
+    {0.92387953251128674, 0.38268343236508978},
+    {0.86602540378443871, 0.49999999999999983},
+    {0.79335334029123505, 0.60876142900872077},
+    {0.70710678118654791, 0.70710678118654724},
+    {0.60876142900872077, 0.79335334029123505},
+    {0.50000000000000033, 0.86602540378443849},
+    {0.38268343236508939, 0.92387953251128696},
+    {0.25881904510252052, 0.96592582628906831},
+    {0.13052619222005149, 0.99144486137381038},
+    {6.123233995736766e-17, 1},
+    {-0.13052619222005138, 0.99144486137381049},
+    {-0.25881904510252041, 0.96592582628906842},
+    {-0.38268343236508928, 0.92387953251128696},
+    {-0.50000000000000022, 0.86602540378443849},
+    {-0.60876142900871999, 0.79335334029123572},
+    {-0.70710678118654746, 0.70710678118654757},
+    {-0.79335334029123505, 0.60876142900872088},
+    {-0.86602540378443849, 0.50000000000000033},
+    {-0.92387953251128685, 0.38268343236508945},
+    {-0.96592582628906809, 0.25881904510252146},
+    {-0.99144486137381038, 0.13052619222005157},
+};
 static int cdk_robust_critical(const cdk *k, double *ts, int cap, double scale)
 {
     double f1s[CDK_SAMPLES + 1], Fs[CDK_SAMPLES + 1];
     const double h = TWO_PI / CDK_SAMPLES;
-    for (int i = 0; i < CDK_SAMPLES; i++) Fs[i] = cdk_rim(k, -M_PI + i * h, &f1s[i], NULL);
+    for (int i = 0; i < CDK_SAMPLES; i++) Fs[i] = cdk_rim_cs(k, cdk_grid_cs[i][0], cdk_grid_cs[i][1], &f1s[i], NULL);
     f1s[CDK_SAMPLES] = f1s[0];
     Fs[CDK_SAMPLES] = Fs[0];
     double Fmin = Fs[0];
     for (int i = 1; i < CDK_SAMPLES; i++) Fmin = fmin(Fmin, Fs[i]);
     /* A cluster can only hold the global minimum where F is within this margin of the best. */
     double margin = Fmin + 0.01 * scale * scale;
+    double flat = CDK_FLAT * k->rho * scale;
     int n = 0;
     for (int i = 0; i < CDK_SAMPLES && n < cap; i++) {
         double a = -M_PI + i * h, b = a + h;
         double t1;
         if (f1s[i] < 0.0 && f1s[i + 1] >= 0.0) {
-            t1 = (f1s[i + 1] == 0.0) ? b : cdk_bracket(k, a, b);
+            t1 = (f1s[i + 1] == 0.0) ? b : cdk_bracket_sg(k, a, b, 1.0, f1s[i], f1s[i + 1]);
             ts[n++] = t1;
         } else if (f1s[i] > 0.0 && f1s[i + 1] <= 0.0 && fmin(Fs[i], Fs[i + 1]) <= margin) {
-            /* A maximum: minima may hide on both sides of it. Locate it by bisection on F'. */
-            double lo = a, hi = b;
-            for (int it = 0; it < 60; it++) {
-                double mid = 0.5 * (lo + hi), g;
-                cdk_rim(k, mid, &g, NULL);
-                if (g > 0.0) lo = mid;
-                else hi = mid;
-            }
-            t1 = 0.5 * (lo + hi);
+            /* A maximum: minima may hide on both sides of it. */
+            t1 = cdk_bracket_sg(k, a, b, -1.0, -f1s[i], -f1s[i + 1]);
         } else {
             continue;
         }
-        if (fmin(Fs[i], Fs[i + 1]) <= margin) n += cdk_scan(k, t1, a, b, ts + n, cap - n);
+        /* Only a flat extremum can have a hidden neighbour: F' ~ c (t - t1)(t - m)(t - t2) gives
+         * |F''(t1)| ~ c w^2 for a cluster of width w below the grid step. */
+        double f2;
+        cdk_rim(k, t1, NULL, &f2);
+        if (fmin(Fs[i], Fs[i + 1]) <= margin && fabs(f2) <= flat) n += cdk_scan(k, t1, a, b, ts + n, cap - n);
     }
     /* Safety net: downhill from the smallest sample. */
     int im = 0;
     for (int i = 1; i < CDK_SAMPLES; i++)
         if (Fs[i] < Fs[im]) im = i;
-    if (n < cap) ts[n++] = cdk_descend(k, -M_PI + im * h);
+    if (n < cap) ts[n++] = cdk_descend(k, -M_PI + im * h, h / 256);
     return n;
 }
 
@@ -327,14 +394,20 @@ static int cdk_poly_minima(cdist_query *q, const cdk *k, double *ts, int cap, do
     if (nr < 0) return nr;
     int n = 0;
     double Fbest = INFINITY;
+    double Fv[16], f2v[16], flat = CDK_FLAT * k->rho * scale;
     for (int i = 0; i < nr && n < cap; i++) {
-        ts[n] = cdk_descend(k, roots[i]);
-        Fbest = fmin(Fbest, cdk_rim(k, ts[n], NULL, NULL));
+        double f1, f2;
+        cdk_rim(k, roots[i], &f1, &f2);
+        /* A clean maximum: its neighbouring minima are roots of their own. */
+        if (f2 < -flat && fabs(f1) <= 1e-6 * fabs(f2)) continue;
+        ts[n] = cdk_descend(k, roots[i], 1e-9);
+        Fv[n] = cdk_rim(k, ts[n], NULL, &f2v[n]);
+        Fbest = fmin(Fbest, Fv[n]);
         n++;
     }
     int n0 = n;
     for (int i = 0; i < n0 && n < cap; i++)
-        if (cdk_rim(k, ts[i], NULL, NULL) <= Fbest + 0.01 * scale * scale)
+        if (Fv[i] <= Fbest + 0.01 * scale * scale && fabs(f2v[i]) <= flat)
             n += cdk_scan(k, ts[i], ts[i] - 0.15, ts[i] + 0.15, ts + n, cap - n);
     return n;
 }
@@ -438,7 +511,7 @@ cdist_status cd_circle_disk_core(cdist_query *q, cdist_method method, const cd_c
 }
 
 #define CD_DISK_METHODS (CD_HAS(CDIST_METHOD_POLYNOMIAL) | CD_HAS(CDIST_METHOD_ROBUST))
-#define CD_DISK_AUTO CDIST_METHOD_POLYNOMIAL
+#define CD_DISK_AUTO CDIST_METHOD_ROBUST
 
 cdist_status cdist_circle_disk(cdist_query *q, const cdist_circle *c, const cdist_circle *d, cdist_result *r)
 {

@@ -283,7 +283,7 @@ static void exact_circle_disk(void)
         cdist_vec3 k;
         cdist_circle_point(&c, r.pairs[0].param[0], &k);
         CHECK(near_pt(k, r.pairs[0].point[0], 1e-14), "circle angle reproduces the circle point");
-        CHECK(r.method == (m == 2 ? CDIST_METHOD_ROBUST : CDIST_METHOD_POLYNOMIAL), "method reported %d", r.method);
+        CHECK(r.method == (m == 1 ? CDIST_METHOD_POLYNOMIAL : CDIST_METHOD_ROBUST), "method reported %d", r.method);
     }
     cdist_query_set_method(q, CDIST_METHOD_AUTO);
 }
