@@ -400,6 +400,10 @@ static int cdk_poly_minima(cdist_query *q, const cdk *k, double *ts, int cap, do
         cdk_rim(k, roots[i], &f1, &f2);
         /* A clean maximum: its neighbouring minima are roots of their own. */
         if (f2 < -flat && fabs(f1) <= 1e-6 * fabs(f2)) continue;
+        /* An extraneous root of the squared equation (S rho = -R T, where F' = 2 S) or the real
+         * part of a complex pair far from any critical point: F' is of the order rho L there,
+         * while a root of F' (even one of a cluster, resolved to ~eps^(1/3)) has |F'| ~ 1e-15. */
+        if (fabs(f1) > 1e-6 * k->rho * scale) continue;
         ts[n] = cdk_descend(k, roots[i], 1e-9);
         Fv[n] = cdk_rim(k, ts[n], NULL, &f2v[n]);
         Fbest = fmin(Fbest, Fv[n]);
