@@ -483,8 +483,8 @@ static cdist_status cdk_solve(cdist_query *q, cdist_method method, const cdk *k,
 }
 
 /* Circle c (centre at the origin) to disk d (centre relative to c's). */
-static cdist_status circle_disk_core(cdist_query *q, cdist_method method, const cd_circle *c, const cd_circle *d,
-                                     cd_best *b, cdist_method *used)
+static cdist_status circle_disk_solve(cdist_query *q, cdist_method method, const cd_circle *c, const cd_circle *d,
+                                      cd_best *b, cdist_method *used)
 {
     *used = method;
     if (c->r == 0.0) {
@@ -492,9 +492,9 @@ static cdist_status circle_disk_core(cdist_query *q, cdist_method method, const 
         cd_best t;
         cd_best_init(&t, b->scale);
         cd_point_disk_core(v_neg(d->c), d, &t, 0);
+        for (int i = 0; i < t.n; i++) t.c[i].param[0] = NAN;
         merge_best(b, &t, d->c, 0);
-        if (t.equidistant) b->equidistant = 1;
-        for (int i = 0; i < b->n; i++) b->c[i].param[0] = NAN;
+        b->equidistant = t.equidistant;
         return CDIST_OK;
     }
     if (d->r == 0.0) {
@@ -505,6 +505,21 @@ static cdist_status circle_disk_core(cdist_query *q, cdist_method method, const 
     cdk k;
     cdk_init(&k, c, d);
     return cdk_solve(q, method, &k, b, used);
+}
+
+/* Solved into a fresh collector, then merged into b: b may already hold other candidates (a
+ * caller combining several objects), and an equidistant set here only makes b equidistant when
+ * it attains b's minimum. */
+static cdist_status circle_disk_core(cdist_query *q, cdist_method method, const cd_circle *c, const cd_circle *d,
+                                     cd_best *b, cdist_method *used)
+{
+    cd_best t;
+    cd_best_init(&t, b->scale);
+    cdist_status st = circle_disk_solve(q, method, c, d, &t, used);
+    if (st) return st;
+    double d2 = merge_best(b, &t, v3(0, 0, 0), 0);
+    if (t.equidistant) settle_equidistant(b, d2);
+    return CDIST_OK;
 }
 
 cdist_status cd_circle_disk_core(cdist_query *q, cdist_method method, const cd_circle *c, const cd_circle *d,
@@ -690,8 +705,8 @@ static cdist_status linear_disk(cdist_query *q, cdist_method method, vec3 B, vec
     if (isfinite(tmax)) lin_offer(B, M, tmax, d, &loc);
     settle_equidistant(&loc, eq_d2);
     convex_contact(&loc);
-    merge_best(b, &loc, v3(0, 0, 0), 0);
-    if (loc.equidistant) b->equidistant = 1;
+    double d2 = merge_best(b, &loc, v3(0, 0, 0), 0);
+    if (loc.equidistant) settle_equidistant(b, d2);
     return CDIST_OK;
 }
 

@@ -573,21 +573,24 @@ static void brute_one_lin(int kind, cdist_vec3 B, cdist_vec3 M, cdist_circle d, 
 static void brute_force(void)
 {
     char what[64];
-    for (int i = 0; i < 300; i++) {
+    /* DISK_STRESS=k multiplies the case counts (exploration; the default runs in seconds). */
+    int mult = getenv("DISK_STRESS") ? atoi(getenv("DISK_STRESS")) : 1;
+    if (mult < 1) mult = 1;
+    for (int i = 0; i < 300 * mult; i++) {
         cdist_circle c = rand_circle(1.5), d = rand_circle(1.5);
         snprintf(what, sizeof what, "random %d", i);
         brute_one_cd(c, d, what);
-        if (i < 150) brute_one_dd(c, d, what);
+        if (i < 150 * mult) brute_one_dd(c, d, what);
     }
-    for (int i = 0; i < 400; i++) {
+    for (int i = 0; i < 400 * mult; i++) {
         cdist_circle c, d;
         degenerate_pair(i, &c, &d, 1);
         snprintf(what, sizeof what, "degenerate %d (family %d)", i, i % 8);
         brute_one_cd(c, d, what);
         brute_one_cd(d, c, what);
-        if (i < 200) brute_one_dd(c, d, what);
+        if (i < 200 * mult) brute_one_dd(c, d, what);
     }
-    for (int i = 0; i < 600; i++) {
+    for (int i = 0; i < 600 * mult; i++) {
         cdist_circle d = rand_circle(1.0);
         cdist_vec3 B = tv(2 * srand1(), 2 * srand1(), 2 * srand1()), M = rand_unit();
         int fam = i % 6;
