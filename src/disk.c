@@ -600,9 +600,6 @@ cdist_status cdist_disk_disk(cdist_query *q, const cdist_circle *d0, const cdist
      * beyond it is caught the other way round. */
     if (b0.equidistant) settle_equidistant(&best, d0sq);
     if (b1.equidistant) settle_equidistant(&best, d1sq);
-    if (a.r == 0.0 || e.r == 0.0) {
-        /* A point: one closest pair unless the other disk is a circle-equidistant case. */
-    }
     convex_contact(&best);
     cd_best_to_result(&best, offset, swap, r);
     return cd_ok(q, r, used0 == CDIST_METHOD_ROBUST || used1 == CDIST_METHOD_ROBUST ? CDIST_METHOD_ROBUST : m);
