@@ -141,5 +141,11 @@ cdist_status cd_circle_disk_core(cdist_query *q, cdist_method method, const cd_c
  * answered (ROBUST when the polynomial module failed and the robust path took over). */
 cdist_status cd_linear_circle_ex(cdist_query *q, cdist_method method, vec3 B, vec3 M, double tmin, double tmax,
                                  const cd_circle *c, cd_best *b, cdist_method *used);
+/* Accuracy: the core is exact for the B it gets, so B should be near the centre. For a caller's
+ * origin + t D, t in [tmin, tmax] (D as passed, any length), this returns B = (origin + t0 D) - C
+ * for the point of the range nearest C, with origin - C kept exact (TwoSum) and one rounding at
+ * the scale of B, and t0 (in units of D). Then call the core with M = D/|D| and the range
+ * (tmin - t0)|D| .. (tmax - t0)|D|; a candidate's parameter in units of D is t0 + t/|D|. */
+vec3 cd_line_near_centre(vec3 origin, vec3 D, vec3 C, double tmin, double tmax, double *t0);
 
 #endif

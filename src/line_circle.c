@@ -21,11 +21,18 @@
  * rho - r is computed as ((|x1| - r)(|x1| + r) + x2^2) / (rho + r), free of cancellation.
  */
 #include <math.h>
-#include <stdio.h>
 
 #include "internal.h"
 
 #define EPS DBL_EPSILON
+
+/* Multiply-add in the model's hot loop: one rounding with a hardware fma, two otherwise (fma()
+ * without hardware support is a slow library call; the model needs no single rounding there). */
+#ifdef FP_FAST_FMA
+#define MADD(a, b, c) fma(a, b, c)
+#else
+#define MADD(a, b, c) ((a) * (b) + (c))
+#endif
 
 typedef struct lc_model {
     double r;         /* radius (scaled) */
@@ -40,29 +47,29 @@ typedef struct lc_model {
 /* rho - r without cancellation, given x2 and rho. */
 static inline double rho_minus_r(const lc_model *m, double x2, double rho)
 {
-    return fma(x2, x2, (m->ax1 - m->r) * (m->ax1 + m->r)) / (rho + m->r);
+    return MADD(x2, x2, (m->ax1 - m->r) * (m->ax1 + m->r)) / (rho + m->r);
 }
 
 /* F'/2 at height h and in-plane coordinate x2. On the axis (rho = 0) F' is undefined: side = -1
  * or +1 gives the one-sided limit (x2/rho -> side), side = 0 the mean of both. */
 static inline double fp_at(const lc_model *m, double h, double x2, int side)
 {
-    double rho = sqrt(fma(m->x1, m->x1, x2 * x2));
+    double rho = sqrt(MADD(m->x1, m->x1, x2 * x2));
     if (rho == 0.0) return m->a * h - side * m->r * m->m0;
-    return fma(m->a, h, m->m0 * x2 * (rho_minus_r(m, x2, rho) / rho));
+    return MADD(m->a, h, m->m0 * x2 * (rho_minus_r(m, x2, rho) / rho));
 }
 
 static inline double fp(const lc_model *m, double s)
 {
-    return fp_at(m, fma(m->a, s, m->h), fma(m->m0, s, m->c2), 0);
+    return fp_at(m, MADD(m->a, s, m->h), MADD(m->m0, s, m->c2), 0);
 }
 
 /* F''/2 */
 static inline double fpp(const lc_model *m, double s)
 {
-    double x2 = fma(m->m0, s, m->c2);
-    double rho = sqrt(fma(m->x1, m->x1, x2 * x2));
-    double k = fma(m->a, m->a, m->m0 * m->m0);
+    double x2 = MADD(m->m0, s, m->c2);
+    double rho = sqrt(MADD(m->x1, m->x1, x2 * x2));
+    double k = MADD(m->a, m->a, m->m0 * m->m0);
     if (rho == 0.0) return -INFINITY;
     double q = m->ax1 / rho;
     return k - m->r * m->m0 * m->m0 * q * q / rho;
@@ -71,35 +78,37 @@ static inline double fpp(const lc_model *m, double s)
 /* Squared distance (scaled) at s. */
 static inline double f_at(const lc_model *m, double s)
 {
-    double h = fma(m->a, s, m->h), x2 = fma(m->m0, s, m->c2);
-    double rho = sqrt(fma(m->x1, m->x1, x2 * x2));
+    double h = MADD(m->a, s, m->h), x2 = MADD(m->m0, s, m->c2);
+    double rho = sqrt(MADD(m->x1, m->x1, x2 * x2));
     double dr = rho_minus_r(m, x2, rho);
-    return fma(h, h, dr * dr);
+    return MADD(h, h, dr * dr);
 }
 
-/* Root of F' in [lo, hi] where F' increases: Newton steps safeguarded by bisection. Every
- * operation commutes with s -> -s when F' is odd, so mirrored brackets give mirrored roots. */
+/* Root of F' in [lo, hi] where F' increases: Newton steps safeguarded by bisection (a Newton
+ * step is taken only when it stays inside the bracket and shrinks faster than bisection would,
+ * as in rtsafe). Every operation commutes with s -> -s when F' is odd, so mirrored brackets give
+ * mirrored roots. */
 static double solve(const lc_model *m, double lo, double hi)
 {
     if (!(lo < hi)) return lo;
-    double x = 0.5 * (lo + hi), dxold = hi - lo;
+    double x = 0.5 * (lo + hi), dxold = hi - lo, dx = dxold;
     for (int it = 0; it < 200; it++) {
         double f = fp(m, x);
         if (f == 0.0) return x;
         if (f < 0.0) lo = x;
         else hi = x;
-        if (!(hi - lo > 0x1p-62)) break;
-        double df = fpp(m, x), xn = x;
-        int newton = 0;
-        if (df > 0.0) {
-            xn = x - f / df;
-            newton = xn > lo && xn < hi && fabs(xn - x) <= 0.5 * dxold;
+        double df = fpp(m, x), step = f / df, xn = x - step;
+        if (df > 0.0 && (fabs(step) <= 2.0 * EPS * fabs(x) || fabs(step) <= 0x1p-62)) return xn; /* converged */
+        if (!(df > 0.0) || !(xn > lo && xn < hi) || fabs(2.0 * f) > fabs(dxold * df)) {
+            dxold = dx;
+            xn = 0.5 * (lo + hi);
+            dx = fabs(xn - x);
+        } else {
+            dxold = dx;
+            dx = fabs(xn - x);
         }
-        if (!newton) xn = 0.5 * (lo + hi);
-        double dx = fabs(xn - x);
-        dxold = dx;
         x = xn;
-        if (dx <= 2.0 * EPS * fabs(x) || dx <= 0x1p-62) break;
+        if (dx <= 2.0 * EPS * fabs(x) || !(hi - lo > 0x1p-62)) break;
     }
     return x;
 }
@@ -178,14 +187,14 @@ static vec3 circle_pt(const cd_circle *c, double X, double Y, double *ang)
 /* A critical point of the model at s. */
 static void offer_model(lc_ctx *x, const lc_model *m, double s)
 {
-    double h = fma(m->a, s, m->h), x2 = fma(m->m0, s, m->c2);
-    double rho = sqrt(fma(m->x1, m->x1, x2 * x2));
+    double h = MADD(m->a, s, m->h), x2 = MADD(m->m0, s, m->c2);
+    double rho = sqrt(MADD(m->x1, m->x1, x2 * x2));
     double dr = rho_minus_r(m, x2, rho);
-    double d2 = ldexp(fma(h, h, dr * dr), -2 * ilogb(x->sigma));
+    double d2 = ldexp(MADD(h, h, dr * dr), -2 * ilogb(x->sigma));
     double t = x->t0 + (x->uO + s) / x->sigma;
     vec3 P = v_axpy(x->B, t, x->M);
     /* X = x1 e1 + x2 e2, e1 = (-e2y, e2x) */
-    double X = fma(m->x1, -m->e2y, x2 * m->e2x), Y = fma(m->x1, m->e2x, x2 * m->e2y);
+    double X = MADD(m->x1, -m->e2y, x2 * m->e2x), Y = MADD(m->x1, m->e2x, x2 * m->e2y);
     double ang;
     vec3 K = circle_pt(x->c, X, Y, &ang);
     push(x, d2, P, K, t, ang, rho <= x->eqtol);
@@ -204,6 +213,43 @@ static void offer_end(lc_ctx *x, double t)
     vec3 K = on_axis ? circle_pt(c, 0, 0, &ang) : circle_pt(c, v_dot(c->u, w), v_dot(c->v, w), &ang);
     double dr = rho - c->r;
     push(x, fma(dr, dr, h * h), P, K, t, ang, on_axis && c->r > 0.0);
+}
+
+/* Two candidates are the same minimum unless the distance rises between them by more than the
+ * tie tolerance: near a flat minimum (a tangent line, F ~ s^4) the solvers may stop at several
+ * points of the flat bottom, which are not distinct minima, so only the lowest is kept. Genuine
+ * pairs of minima (symmetric configurations) have a maximum between them. */
+static void merge_basins(lc_ctx *x, const lc_model *m, double tol)
+{
+    /* sort by t */
+    for (int i = 1; i < x->n; i++)
+        for (int j = i; j > 0 && x->cand[j].param[0] < x->cand[j - 1].param[0]; j--) {
+            cd_cand tc = x->cand[j];
+            x->cand[j] = x->cand[j - 1];
+            x->cand[j - 1] = tc;
+            int te = x->eq[j];
+            x->eq[j] = x->eq[j - 1];
+            x->eq[j - 1] = te;
+        }
+    int e = ilogb(x->sigma);
+    for (int i = 0; i + 1 < x->n;) {
+        double sa = (x->cand[i].param[0] - x->t0) * x->sigma - x->uO;
+        double sb = (x->cand[i + 1].param[0] - x->t0) * x->sigma - x->uO;
+        double fmaxv = 0.0;
+        for (int k = 1; k <= 3; k++) fmaxv = fmax(fmaxv, f_at(m, sa + 0.25 * k * (sb - sa)));
+        double dmid = ldexp(sqrt(fmaxv), -e);
+        double d0 = sqrt(x->cand[i].d2), d1 = sqrt(x->cand[i + 1].d2);
+        if (dmid > fmax(d0, d1) + tol) {
+            i++;
+            continue;
+        }
+        int drop = (x->cand[i + 1].d2 < x->cand[i].d2) ? i : i + 1;
+        for (int j = drop; j + 1 < x->n; j++) {
+            x->cand[j] = x->cand[j + 1];
+            x->eq[j] = x->eq[j + 1];
+        }
+        x->n--;
+    }
 }
 
 /* ---- the two solvers on the general model (m0 > 0) ---- */
@@ -335,7 +381,7 @@ static cdist_status linear_circle(cdist_query *q, cdist_method method, vec3 B, v
     double m2x = v_dot(c->v, w), m2y = -v_dot(c->u, w);
     double b2x = v_dot(c->v, nb), b2y = -v_dot(c->u, nb);
     double a = v_dot(N, M), h0 = v_dot(N, B0s);
-    double m0 = hypot(m2x, m2y);
+    double m0 = sqrt(m2x * m2x + m2y * m2y); /* scaled: no overflow or harmful underflow */
 
     if (tmin == tmax) {
         offer_end(&x, tmin);
@@ -348,7 +394,7 @@ static cdist_status linear_circle(cdist_query *q, cdist_method method, vec3 B, v
          * the axis every circle point is equally close (equidistant, also for rays/segments). */
         double u = fmin(fmax(-h0 / a, umin), umax);
         double X = fma(u, m2x, b2x), Y = fma(u, m2y, b2y);
-        double rho = hypot(X, Y), h = fma(a, u, h0), dr = rho - rs;
+        double rho = sqrt(X * X + Y * Y), h = fma(a, u, h0), dr = rho - rs;
         double t = x.t0 + u / sg;
         if (u == umin && isfinite(tmin)) t = tmin;
         if (u == umax && isfinite(tmax)) t = tmax;
@@ -388,10 +434,15 @@ static cdist_status linear_circle(cdist_query *q, cdist_method method, vec3 B, v
         nr = poly_roots(q, &m, smin, smax, roots);
         if (nr < 0 && used) *used = CDIST_METHOD_ROBUST; /* polynomial module failed: fall back */
     }
+    if (nr == 0 && !isfinite(smin) && !isfinite(smax)) {
+        nr = -1; /* a whole line always has a minimum: the polynomial path lost it, fall back */
+        if (used) *used = CDIST_METHOD_ROBUST;
+    }
     if (nr < 0) robust_roots(&m, smin, smax, roots, &nr);
     for (int i = 0; i < nr; i++) offer_model(&x, &m, roots[i]);
     if (isfinite(tmin)) offer_end(&x, tmin);
     if (isfinite(tmax)) offer_end(&x, tmax);
+    merge_basins(&x, &m, CD_TIE_ULPS * EPS * b->scale);
 
 done:;
     /* Offer everything; the equidistant flag is set when our best candidate is an on-axis
@@ -430,52 +481,87 @@ static double range_scale(vec3 B, vec3 M, double tmin, double tmax, double r)
     return fmax(r, v_norm(v_axpy(B, t, M)));
 }
 
-static cdist_status run(cdist_query *q, vec3 origin, vec3 M, double tmin, double tmax, const cd_circle *cc,
-                        cdist_result *r, double *scale_out)
+/* Runs the core for the points origin + t D, t in [tmin, tmax] (D as the caller passed it, M its
+ * unit direction, len its length); pairs' param[0] is that t. The origin is first moved along D,
+ * in absolute coordinates, to the point nearest the circle centre (one fma per coordinate with the
+ * caller's own D, so the new origin is on the caller's line to within its own rounding; clamped
+ * to the ray or segment), and only
+ * then translated to the centre: an origin far along the line would otherwise lose
+ * eps * |origin - C| in the translation and eps * |t| in the normalisation of D. The move is done
+ * on origin - C kept exactly as two doubles, so nothing is rounded to the grid of the absolute
+ * coordinates either (objects far from the coordinate origin). */
+/* a - b = hi + lo exactly (Knuth's TwoSum). */
+static inline double two_diff(double a, double b, double *lo)
 {
-    vec3 B = v_sub(origin, cc->c);
+    double s = a - b, a1 = s + b, b1 = s - a1;
+    *lo = (a - a1) - (b + b1);
+    return s;
+}
+
+vec3 cd_line_near_centre(vec3 origin, vec3 D, vec3 C, double tmin, double tmax, double *t0)
+{
+    /* origin - C = hi + lo exactly; B = hi + t0 D + lo, rounded once at the scale of B */
+    vec3 lo3, hi3;
+    hi3.x = two_diff(origin.x, C.x, &lo3.x);
+    hi3.y = two_diff(origin.y, C.y, &lo3.y);
+    hi3.z = two_diff(origin.z, C.z, &lo3.z);
+    double m = v_maxabs(D);
+    vec3 Ds = v_scale(1.0 / m, D); /* |D|^2 may underflow or overflow, |Ds|^2 cannot */
+    double t = -(v_dot(hi3, Ds) / v_sqr(Ds)) / m;
+    if (!isfinite(t)) t = 0.0;
+    t = fmin(fmax(t, tmin), tmax); /* rays and segments: stay on the object (no cancellation in t) */
+    *t0 = t;
+    return v_add(v_axpy(hi3, t, D), lo3);
+}
+
+static cdist_status run(cdist_query *q, vec3 origin, vec3 D, vec3 M, double len, double tmin, double tmax,
+                        const cd_circle *cc, cdist_result *r)
+{
+    double t0;
+    vec3 B = cd_line_near_centre(origin, D, cc->c, tmin, tmax, &t0);
+    double lo = (tmin - t0) * len, hi = (tmax - t0) * len;
+    if (tmin == t0) lo = 0.0;
+    if (tmax == t0) hi = 0.0;
     cd_best b;
-    double L = range_scale(B, M, tmin, tmax, cc->r);
-    cd_best_init(&b, L);
+    cd_best_init(&b, range_scale(B, M, lo, hi, cc->r));
     cdist_method used;
-    cdist_status st = cd_linear_circle_ex(q, cd_pick_method(q, LC_METHODS, CDIST_METHOD_ROBUST), B, M, tmin, tmax,
-                                          cc, &b, &used);
+    cdist_status st = cd_linear_circle_ex(q, cd_pick_method(q, LC_METHODS, CDIST_METHOD_ROBUST), B, M, lo, hi, cc,
+                                          &b, &used);
     if (st) return st;
     if (b.n == 0) return cd_fail(q, CDIST_ERR_INTERNAL, "line-circle: no candidate");
     cd_best_to_result(&b, cc->c, 0, r);
-    if (scale_out) *scale_out = L;
+    for (int i = 0; i < r->num_pairs; i++) {
+        double t = t0 + r->pairs[i].param[0] / len;
+        r->pairs[i].param[0] = fmin(fmax(t, tmin), tmax);
+    }
     return cd_ok(q, r, used);
 }
 
 static cdist_status linear_public(cdist_query *q, const cdist_vec3 *origin, const cdist_vec3 *dir, const void *obj,
-                                  const char *what, double tmin, double tmax, const cdist_circle *c, cdist_result *r)
+                                  int is_ray, double tmin, double tmax, const cdist_circle *c, cdist_result *r)
 {
     cdist_status st = cd_check_handle(q, r);
     if (st) return st;
-    if ((st = cd_check_ptr(q, obj, what))) return st;
-    char buf[32], dbuf[32];
-    snprintf(buf, sizeof buf, "%s origin", what);
-    snprintf(dbuf, sizeof dbuf, "%s direction", what);
+    if ((st = cd_check_ptr(q, obj, is_ray ? "ray" : "line"))) return st;
     cd_circle cc;
     vec3 M;
     double len;
-    if ((st = cd_check_point(q, origin, buf)) || (st = cd_check_direction(q, dir, dbuf, 1, &M, &len)) ||
+    if ((st = cd_check_point(q, origin, is_ray ? "ray origin" : "line origin")) ||
+        (st = cd_check_direction(q, dir, is_ray ? "ray direction" : "line direction", 1, &M, &len)) ||
         (st = cd_check_circle(q, c, "circle", &cc)))
         return st;
-    if ((st = run(q, *origin, M, tmin, tmax, &cc, r, NULL))) return st;
-    /* t refers to the unit direction; report it for the direction as passed. */
-    for (int i = 0; i < r->num_pairs; i++) r->pairs[i].param[0] /= len;
-    return CDIST_OK;
+    /* t is reported for the direction as passed */
+    return run(q, *origin, *dir, M, len, tmin, tmax, &cc, r);
 }
 
 cdist_status cdist_line_circle(cdist_query *q, const cdist_line *l, const cdist_circle *c, cdist_result *r)
 {
-    return linear_public(q, l ? &l->origin : NULL, l ? &l->direction : NULL, l, "line", -INFINITY, INFINITY, c, r);
+    return linear_public(q, l ? &l->origin : NULL, l ? &l->direction : NULL, l, 0, -INFINITY, INFINITY, c, r);
 }
 
 cdist_status cdist_ray_circle(cdist_query *q, const cdist_ray *l, const cdist_circle *c, cdist_result *r)
 {
-    return linear_public(q, l ? &l->origin : NULL, l ? &l->direction : NULL, l, "ray", 0.0, INFINITY, c, r);
+    return linear_public(q, l ? &l->origin : NULL, l ? &l->direction : NULL, l, 1, 0.0, INFINITY, c, r);
 }
 
 cdist_status cdist_segment_circle(cdist_query *q, const cdist_segment *s, const cdist_circle *c, cdist_result *r)
@@ -504,12 +590,8 @@ cdist_status cdist_segment_circle(cdist_query *q, const cdist_segment *s, const 
     vec3 M;
     double len;
     if ((st = cd_check_direction(q, &D, "segment direction p1 - p0", 0, &M, &len))) return st;
-    if ((st = run(q, s->p0, M, 0.0, len, &cc, r, NULL))) return st;
-    for (int i = 0; i < r->num_pairs; i++) {
-        double sp = r->pairs[i].param[0] / len;
-        sp = fmin(fmax(sp, 0.0), 1.0);
-        r->pairs[i].param[0] = sp;
-        if (sp == 0.0) r->pairs[i].point[0] = s->p0; /* exactly the caller's start point */
-    }
+    if ((st = run(q, s->p0, D, M, len, 0.0, 1.0, &cc, r))) return st;
+    for (int i = 0; i < r->num_pairs; i++)
+        if (r->pairs[i].param[0] == 0.0) r->pairs[i].point[0] = s->p0; /* exactly the caller's start point */
     return CDIST_OK;
 }
