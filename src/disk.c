@@ -82,11 +82,14 @@ typedef struct cdk {
     double R;            /* disk radius */
     double rho;          /* circle radius */
     vec3 A, B, D, n, u, v;
+    const cd_circle *c, *d; /* the circle (centre at the origin) and the disk */
 } cdk;
 
 static void cdk_init(cdk *k, const cd_circle *c, const cd_circle *d)
 {
     vec3 D = d->c;
+    k->c = c;
+    k->d = d;
     k->D = D;
     k->n = d->n;
     k->u = d->u;
@@ -402,8 +405,10 @@ static int cdk_poly_minima(cdist_query *q, const cdk *k, double *ts, int cap, do
         if (f2 < -flat && fabs(f1) <= 1e-6 * fabs(f2)) continue;
         /* An extraneous root of the squared equation (S rho = -R T, where F' = 2 S) or the real
          * part of a complex pair far from any critical point: F' is of the order rho L there,
-         * while a root of F' (even one of a cluster, resolved to ~eps^(1/3)) has |F'| ~ 1e-15. */
-        if (fabs(f1) > 1e-6 * k->rho * scale) continue;
+         * while a root of F' (even one of a cluster, resolved to ~eps^(1/3)) has |F'| ~ 1e-15 --
+         * unless F'' is huge (a disk much smaller than the circle: features of width R / rho), so
+         * a seed whose Newton step is short is kept. */
+        if (fabs(f1) > 1e-6 * k->rho * scale && !(f2 > 0.0 && fabs(f1) < 1e-3 * f2)) continue;
         ts[n] = cdk_descend(k, roots[i], 1e-9);
         Fv[n] = cdk_rim(k, ts[n], NULL, &f2v[n]);
         Fbest = fmin(Fbest, Fv[n]);
@@ -475,8 +480,29 @@ static cdist_status cdk_solve(cdist_query *q, cdist_method method, const cdk *k,
         if (n == -1) n = 0; /* F constant: the rim gives no isolated candidate; z candidates rule */
     }
     if (n < 0) {
+        /* ROBUST: every critical angle of F with certified root isolation (circle-circle robust
+         * method, Fourier bounds on the squared derivative, src/circle_circle.c), the rim being a
+         * circle; its own sampling as the fallback. */
         *used = CDIST_METHOD_ROBUST;
-        n = cdk_robust_critical(k, ts, CDK_CAP, scale);
+        n = cd_circle_circle_critical(q, k->c, k->d, ts, CDK_CAP);
+        if (n == -1) {
+            n = 0; /* F constant: the rim gives no isolated candidate; z candidates rule */
+            ts[n++] = 0.0;
+        } else if (n <= 0) {
+            n = cdk_robust_critical(k, ts, CDK_CAP, scale);
+        } else {
+            /* Flat minima near the best: a neighbour of a cluster below the certification width
+             * (multiple roots) is looked for by the dyadic scan. */
+            double Fv[CDK_CAP], f2v[CDK_CAP], Fbest = INFINITY, flat = CDK_FLAT * k->rho * scale;
+            for (int i = 0; i < n; i++) {
+                Fv[i] = cdk_rim(k, ts[i], NULL, &f2v[i]);
+                Fbest = fmin(Fbest, Fv[i]);
+            }
+            int n0 = n;
+            for (int i = 0; i < n0 && n < CDK_CAP; i++)
+                if (Fv[i] <= Fbest + 0.01 * scale * scale && fabs(f2v[i]) <= flat)
+                    n += cdk_scan(k, ts[i], ts[i] - 0.15, ts[i] + 0.15, ts + n, CDK_CAP - n);
+        }
     }
     for (int i = 0; i < n; i++) cdk_offer(k, ts[i], b);
     return CDIST_OK;

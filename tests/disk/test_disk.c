@@ -425,7 +425,7 @@ static void degenerate_pair(int k, cdist_circle *a, cdist_circle *b, int far)
     double R = 0.5 + urand();
     *b = circ(0, 0, 0, 0, 0, 1, R);
     double rho = 0.2 + urand();
-    switch (k % 8) {
+    switch (k % 10) {
     case 0: /* nearly parallel, over the face */
         *a = circ(srand1() * R, 0, 0.5 * srand1(), tiny, 0, 1, rho);
         break;
@@ -453,9 +453,27 @@ static void degenerate_pair(int k, cdist_circle *a, cdist_circle *b, int far)
     case 6: /* parallel, projection near-tangent to the rim */
         *a = circ(R + rho + tiny * srand1(), 0, 0.7, 0, 0, 1, rho);
         break;
-    default: /* centre on the axis, tilted */
+    case 7: /* centre on the axis, tilted */
         *a = circ(0, 0, srand1(), srand1(), srand1(), 1, rho);
         break;
+    case 8: /* a disk 1e-1..1e-4 of the circle's size, within a few of its radii of the circle */
+    {
+        double r = pow(10.0, -1 - 3 * urand()) * R;
+        cdist_vec3 n = rand_unit(), m = rand_unit();
+        cdist_vec3 w = tv(n.y * m.z - n.z * m.y, n.z * m.x - n.x * m.z, n.x * m.y - n.y * m.x);
+        double wn = sqrt(w.x * w.x + w.y * w.y + w.z * w.z);
+        *a = circ(-R * w.x / wn + 3 * r * srand1(), -R * w.y / wn + 3 * r * srand1(), -R * w.z / wn + 3 * r * srand1(),
+                  n.x, n.y, n.z, R);
+        *b = circ(0, 0, 0, 0, 0, 1, r);
+        break;
+    }
+    default: /* a circle 1e-3 of the disk's size near its rim, random orientation */
+    {
+        double r = pow(10.0, -1 - 3 * urand()) * R;
+        cdist_vec3 n = rand_unit();
+        *a = circ(R + 2 * r * srand1(), 2 * r * srand1(), 2 * r * srand1(), n.x, n.y, n.z, r);
+        break;
+    }
     }
     double n = sqrt(a->normal.x * a->normal.x + a->normal.y * a->normal.y + a->normal.z * a->normal.z);
     a->normal = tv(a->normal.x / n, a->normal.y / n, a->normal.z / n);
@@ -585,7 +603,7 @@ static void brute_force(void)
     for (int i = 0; i < 400 * mult; i++) {
         cdist_circle c, d;
         degenerate_pair(i, &c, &d, 1);
-        snprintf(what, sizeof what, "degenerate %d (family %d)", i, i % 8);
+        snprintf(what, sizeof what, "degenerate %d (family %d)", i, i % 10);
         brute_one_cd(c, d, what);
         brute_one_cd(d, c, what);
         if (i < 200 * mult) brute_one_dd(c, d, what);
