@@ -742,25 +742,62 @@ cdist_status cd_linear_disk(cdist_query *q, cdist_method method, vec3 B, vec3 M,
 
 #define CD_LINE_METHODS (CD_HAS(CDIST_METHOD_POLYNOMIAL) | CD_HAS(CDIST_METHOD_ROBUST))
 
-/* Shared driver: the linear object is origin + t dir (dir unit), t in [tmin, tmax]; `pscale`
- * converts t to the caller's parameter (1/length for a segment given by its end points). */
-static cdist_status linear_disk_query(cdist_query *q, vec3 origin, vec3 dir, double tmin, double tmax, double pscale,
-                                      const cd_circle *dk, cdist_result *r)
+/* a - b = hi + lo exactly (Knuth's TwoSum with -b). */
+static double two_diff(double a, double b, double *lo)
+{
+    double s = a - b, bb = s - a;
+    *lo = (a - (s - bb)) + (-b - bb);
+    return s;
+}
+
+/* The point of the segment p0 + s (p1 - p0), s in [0, 1], nearest C, relative to C, from the
+ * exact differences p0 - C and p1 - p0 (a rounded p1 - p0 would tilt the segment: 1e-8 off at
+ * 1e8 from its start); one rounding at the scale of the result. */
+static vec3 segment_near_centre(vec3 p0, vec3 p1, vec3 C, double *s0)
+{
+    double a[3], al[3], dd[3], dl[3];
+    const double P0[3] = {p0.x, p0.y, p0.z}, P1[3] = {p1.x, p1.y, p1.z}, CC[3] = {C.x, C.y, C.z};
+    for (int i = 0; i < 3; i++) {
+        a[i] = two_diff(P0[i], CC[i], &al[i]);
+        dd[i] = two_diff(P1[i], P0[i], &dl[i]);
+    }
+    double m = fmax(fabs(dd[0]), fmax(fabs(dd[1]), fabs(dd[2])));
+    double num = 0.0, den = 0.0;
+    for (int i = 0; i < 3; i++) {
+        num += (a[i] / m) * (dd[i] / m);
+        den += (dd[i] / m) * (dd[i] / m);
+    }
+    double t = (den > 0.0) ? -num / den : 0.0;
+    t = fmin(fmax(t, 0.0), 1.0);
+    *s0 = t;
+    double B[3];
+    for (int i = 0; i < 3; i++) B[i] = fma(t, dd[i], a[i]) + fma(t, dl[i], al[i]);
+    return v3(B[0], B[1], B[2]);
+}
+
+/* Shared driver: the linear object is origin + t D for t in [tmin, tmax], D exactly as the
+ * caller gave it (|D| = len, unit direction M = D / len). The parameter reported is t.
+ * p1 (segments only): the end point, so that origin - C and p1 - origin are taken exactly. */
+static cdist_status linear_disk_query(cdist_query *q, vec3 origin, vec3 D, double len, vec3 M, double tmin,
+                                      double tmax, const vec3 *p1, const cd_circle *dk, cdist_result *r)
 {
     cd_circle d = *dk;
     vec3 offset = d.c;
     d.c = v3(0, 0, 0);
-    vec3 B = v_sub(origin, offset);
-    /* Scale: the radius and the distance from the centre to the nearest point of the line. */
-    double tn = fmin(fmax(-v_dot(B, dir), tmin), tmax);
-    double L = fmax(d.r, v_norm(v_axpy(B, tn, dir)));
+    /* Move the origin to the point of the range nearest the centre, with origin - C kept exact
+     * and the line as given (not its rounded unit direction, which would tilt it by ~1e-16 rad,
+     * i.e. move it by 1e-8 at a distance of 1e8): see cd_line_near_centre in src/line_circle.c. */
+    double t0;
+    vec3 B = p1 ? segment_near_centre(origin, *p1, offset, &t0) : cd_line_near_centre(origin, D, offset, tmin, tmax, &t0);
+    double lo = (tmin == t0) ? 0.0 : (tmin - t0) * len, hi = (tmax == t0) ? 0.0 : (tmax - t0) * len;
+    double L = fmax(d.r, v_norm(B));
     cd_best best;
     cd_best_init(&best, L);
     cdist_method m = cd_pick_method(q, CD_LINE_METHODS, CDIST_METHOD_ROBUST);
-    cdist_status st = linear_disk(q, m, B, dir, tmin, tmax, &d, &best, &m);
+    cdist_status st = linear_disk(q, m, B, M, lo, hi, &d, &best, &m);
     if (st) return st;
     if (best.n == 0) return cd_fail(q, CDIST_ERR_INTERNAL, "line-disk found no candidate");
-    for (int i = 0; i < best.n; i++) best.c[i].param[0] *= pscale;
+    for (int i = 0; i < best.n; i++) best.c[i].param[0] = fmin(fmax(t0 + best.c[i].param[0] / len, tmin), tmax);
     cd_best_to_result(&best, offset, 0, r);
     return cd_ok(q, r, m);
 }
@@ -777,7 +814,7 @@ cdist_status cdist_line_disk(cdist_query *q, const cdist_line *l, const cdist_ci
         (st = cd_check_direction(q, &l->direction, "line direction", 1, &dir, &len)) ||
         (st = cd_check_circle(q, d, "disk", &dk)))
         return st;
-    return linear_disk_query(q, l->origin, dir, -INFINITY, INFINITY, 1.0 / len, &dk, r);
+    return linear_disk_query(q, l->origin, l->direction, len, dir, -INFINITY, INFINITY, NULL, &dk, r);
 }
 
 cdist_status cdist_ray_disk(cdist_query *q, const cdist_ray *l, const cdist_circle *d, cdist_result *r)
@@ -792,7 +829,7 @@ cdist_status cdist_ray_disk(cdist_query *q, const cdist_ray *l, const cdist_circ
         (st = cd_check_direction(q, &l->direction, "ray direction", 1, &dir, &len)) ||
         (st = cd_check_circle(q, d, "disk", &dk)))
         return st;
-    return linear_disk_query(q, l->origin, dir, 0.0, INFINITY, 1.0 / len, &dk, r);
+    return linear_disk_query(q, l->origin, l->direction, len, dir, 0.0, INFINITY, NULL, &dk, r);
 }
 
 cdist_status cdist_segment_disk(cdist_query *q, const cdist_segment *s, const cdist_circle *d, cdist_result *r)
@@ -820,14 +857,11 @@ cdist_status cdist_segment_disk(cdist_query *q, const cdist_segment *s, const cd
         r->pairs[0].point[0] = s->p0;
         return cd_ok(q, r, CDIST_METHOD_AUTO);
     }
-    vec3 dir = v_scale(1.0 / len, M);
-    cdist_status st2 = linear_disk_query(q, s->p0, dir, 0.0, len, 1.0 / len, &dk, r);
-    if (st2 == CDIST_OK) {
-        /* Clamp rounding of s into [0, 1]; exact end points for s = 0 and 1. */
-        for (int i = 0; i < r->num_pairs; i++) {
-            double sp = fmin(fmax(r->pairs[i].param[0], 0.0), 1.0);
-            r->pairs[i].param[0] = sp;
-        }
+    st = linear_disk_query(q, s->p0, M, len, v_scale(1.0 / len, M), 0.0, 1.0, &s->p1, &dk, r);
+    if (st) return st;
+    for (int i = 0; i < r->num_pairs; i++) {
+        if (r->pairs[i].param[0] == 0.0) r->pairs[i].point[0] = s->p0; /* exactly the caller's end points */
+        if (r->pairs[i].param[0] == 1.0) r->pairs[i].point[0] = s->p1;
     }
-    return st2;
+    return CDIST_OK;
 }

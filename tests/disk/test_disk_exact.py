@@ -80,6 +80,18 @@ def cases():
             out.append(fmt("sd", Bm + P1 + disk))
         else:
             out.append(fmt(kind, Bm + Mm + disk))
+    for i in range(9):
+        # far origins: the line passes the disk 1e5..1e9 from its origin (segments: both ends far)
+        N = unit([rng.gauss(0, 1) for _ in range(3)])
+        M = unit([rng.gauss(0, 1) for _ in range(3)])
+        P = [rng.uniform(-1, 1) for _ in range(3)]
+        T, T2 = 10 ** rng.uniform(5, 9), 10 ** rng.uniform(5, 9)
+        B = [P[k] - T * M[k] for k in range(3)]
+        disk = [0.0, 0.0, 0.0] + N + [rng.uniform(0.3, 1.5)]
+        if i % 3 == 2:
+            out.append(fmt("sd", B + [P[k] + T2 * M[k] for k in range(3)] + disk))
+        else:
+            out.append(fmt(("ld", "rd")[i % 3], B + M + disk))
     for i in range(24):
         pt, rot, s = mover()
         R0, R1 = rng.uniform(0.3, 1.5), rng.uniform(0.3, 1.5)
