@@ -1,19 +1,867 @@
-/* Lines, rays, segments, circles and disks to disks. */
-#include "stub.h"
-CD_STUB(cdist_line_disk, cdist_query *q, const cdist_line *l, const cdist_circle *d, cdist_result *r)
-CD_STUB(cdist_ray_disk, cdist_query *q, const cdist_ray *l, const cdist_circle *d, cdist_result *r)
-CD_STUB(cdist_segment_disk, cdist_query *q, const cdist_segment *s, const cdist_circle *d, cdist_result *r)
-CD_STUB(cdist_circle_disk, cdist_query *q, const cdist_circle *c, const cdist_circle *d, cdist_result *r)
-CD_STUB(cdist_disk_disk, cdist_query *q, const cdist_circle *d0, const cdist_circle *d1, cdist_result *r)
-cdist_status cd_linear_disk(cdist_query *q, cdist_method method, vec3 B, vec3 M, double tmin, double tmax,
-                            const cd_circle *d, cd_best *b)
+/* Lines, rays, segments, circles and disks to disks (point-curve-circle-to-disk §2-§4,
+ * line-circle-disk §2; derivations in docs/disk.md).
+ *
+ * The one lemma everything here rests on. Let G(X) be the distance from X to the disk, F(X)
+ * the distance to its rim circle and h(X) the signed height over the disk's plane. Then
+ *     G(X) = |h(X)|   when X projects into the disk,     G(X) = F(X)   otherwise,
+ * and always G <= F with equality exactly when the projection is outside or on the rim.
+ * For a curve X(t): if t* is a local minimum of G(X(t)) and X(t*) projects outside or onto
+ * the rim, then F >= G >= G(t*) = F(t*) nearby, so t* is a local minimum of F too. If X(t*)
+ * projects strictly inside, G = |h| nearby, so h(t*) = 0 or h'(t*) = 0. Hence
+ *     min_t G = min( G at the critical points of F,  G at the zeros and critical points of h,
+ *                    G at the ends of the parameter range ),
+ * which replaces the paper's partition of the parameter range into inside/outside
+ * subintervals (the partition points are never needed: a partition point that is a minimum of
+ * G is a minimum of F). Every candidate is evaluated with the TRUE point-disk distance G, so a
+ * spurious candidate can never make the answer too small. */
+#include <math.h>
+#include <string.h>
+
+#include "internal.h"
+
+#define TWO_PI 6.283185307179586476925286766559
+
+/* ------------------------------------------------------------------------------------------ */
+/* Shared helpers                                                                               */
+
+/* Angle in (-pi, pi]. */
+static double wrap_angle(double t)
 {
-    (void)method; (void)B; (void)M; (void)tmin; (void)tmax; (void)d; (void)b;
-    return cd_fail(q, CDIST_ERR_INTERNAL, "line-disk is not implemented yet");
+    double a = remainder(t, TWO_PI);
+    return (a <= -M_PI) ? a + TWO_PI : a;
 }
+
+static double polar_angle(double x, double y)
+{
+    if (x == 0.0 && y == 0.0) return NAN;
+    double a = atan2(y, x);
+    return (a == -M_PI) ? M_PI : a;
+}
+
+/* Copy the candidates of src into dst; points shifted by `shift`; swap exchanges the roles of
+ * the two objects. Returns the squared distance of src's best (INFINITY when empty). */
+static double merge_best(cd_best *dst, const cd_best *src, vec3 shift, int swap)
+{
+    for (int i = 0; i < src->n; i++) {
+        const cd_cand *c = &src->c[i];
+        vec3 p0 = v_add(c->p[0], shift), p1 = v_add(c->p[1], shift);
+        if (swap) cd_best_offer(dst, c->d2, p1, p0, c->param[1], c->param[0]);
+        else cd_best_offer(dst, c->d2, p0, p1, c->param[0], c->param[1]);
+    }
+    return src->n ? src->c[0].d2 : INFINITY;
+}
+
+/* Two squared distances tie when their distances agree within the cd_best tie tolerance. */
+static int ties(const cd_best *b, double d2a, double d2b)
+{
+    return fabs(sqrt(d2a) - sqrt(d2b)) <= CD_TIE_ULPS * DBL_EPSILON * b->scale;
+}
+
+/* An equidistant sub-result (squared distance eq_d2) makes the whole result equidistant only
+ * when it attains the global minimum. */
+static void settle_equidistant(cd_best *b, double eq_d2)
+{
+    if (isfinite(eq_d2) && b->n > 0 && (eq_d2 <= b->c[0].d2 || ties(b, eq_d2, b->c[0].d2))) b->equidistant = 1;
+}
+
+/* When the closest set is convex (line/segment/disk against a disk), two distinct closest pairs
+ * at distance zero mean a whole segment of contact: flag it. */
+static void convex_contact(cd_best *b)
+{
+    if (b->n >= 2 && ties(b, b->c[0].d2, b->c[1].d2) && sqrt(b->c[1].d2) <= CD_TIE_ULPS * DBL_EPSILON * b->scale)
+        b->equidistant = 1;
+}
+
+/* ------------------------------------------------------------------------------------------ */
+/* Circle to disk                                                                               */
+
+/* The circle P(t) = rho (cos t A + sin t B) (centre at the origin) in the disk's frame:
+ * x(t) = X[0] + X[1] cos t + X[2] sin t, the same for y, z; S(t) = Delta . Delta'. */
+typedef struct cdk {
+    double X[3], Y[3], Z[3], S[3];
+    double R;            /* disk radius */
+    double rho;          /* circle radius */
+    vec3 A, B, D, n, u, v;
+    const cd_circle *c, *d; /* the circle (centre at the origin) and the disk */
+} cdk;
+
+static void cdk_init(cdk *k, const cd_circle *c, const cd_circle *d)
+{
+    vec3 D = d->c;
+    k->c = c;
+    k->d = d;
+    k->D = D;
+    k->n = d->n;
+    k->u = d->u;
+    k->v = d->v;
+    k->A = c->u;
+    k->B = c->v;
+    k->rho = c->r;
+    k->R = d->r;
+    double r = c->r;
+    k->X[0] = -v_dot(d->u, D); k->X[1] = r * v_dot(d->u, c->u); k->X[2] = r * v_dot(d->u, c->v);
+    k->Y[0] = -v_dot(d->v, D); k->Y[1] = r * v_dot(d->v, c->u); k->Y[2] = r * v_dot(d->v, c->v);
+    k->Z[0] = -v_dot(d->n, D); k->Z[1] = r * v_dot(d->n, c->u); k->Z[2] = r * v_dot(d->n, c->v);
+    /* Delta . Delta' = (P - D) . P' = -D . P' since |P| is constant. */
+    k->S[0] = 0.0; k->S[1] = -r * v_dot(D, c->v); k->S[2] = r * v_dot(D, c->u);
+}
+
+static inline double trig1(const double *a, double cs, double sn) { return fma(a[1], cs, fma(a[2], sn, a[0])); }
+static inline double trig1d(const double *a, double cs, double sn) { return fma(a[2], cs, -a[1] * sn); }
+
+/* Half squared rim distance F = ((rho - R)^2 + z^2) / 2 along the circle: value, F', F''.
+ * The hot path of the search: plain arithmetic (fma() is a library call without -mfma, and
+ * hypot is slow; squares cannot overflow for inputs below 1e150). */
+static double cdk_rim_cs(const cdk *k, double cs, double sn, double *f1, double *f2)
+{
+    const double *X = k->X, *Y = k->Y, *Z = k->Z;
+    double x = X[0] + X[1] * cs + X[2] * sn, y = Y[0] + Y[1] * cs + Y[2] * sn, z = Z[0] + Z[1] * cs + Z[2] * sn;
+    double xp = X[2] * cs - X[1] * sn, yp = Y[2] * cs - Y[1] * sn, zp = Z[2] * cs - Z[1] * sn;
+    double rho = sqrt(x * x + y * y);
+    double dr = rho - k->R;
+    double F = 0.5 * (dr * dr + z * z);
+    if (rho > 0.0) {
+        double r1 = (x * xp + y * yp) / rho;
+        if (f1) *f1 = dr * r1 + z * zp;
+        if (f2) {
+            double xpp = X[0] - x, ypp = Y[0] - y, zpp = Z[0] - z; /* x'' = -(x - x0) */
+            double r2 = (xp * xp + yp * yp + x * xpp + y * ypp - r1 * r1) / rho;
+            *f2 = r1 * r1 + dr * r2 + zp * zp + z * zpp;
+        }
+    } else {
+        /* On the disk's axis: F has a cusp (a maximum); any finite values do. */
+        if (f1) *f1 = z * zp;
+        if (f2) *f2 = 1.0;
+    }
+    return F;
+}
+
+static double cdk_rim(const cdk *k, double t, double *f1, double *f2)
+{
+    double sn, cs;
+    sincos(t, &sn, &cs);
+    return cdk_rim_cs(k, cs, sn, f1, f2);
+}
+
+/* Offer the circle point at angle t with its closest disk point (the true point-disk distance). */
+static void cdk_offer(const cdk *k, double t, cd_best *b)
+{
+    double sn, cs;
+    sincos(t, &sn, &cs);
+    double x = trig1(k->X, cs, sn), y = trig1(k->Y, cs, sn), z = trig1(k->Z, cs, sn);
+    vec3 P = v_axpy(v_scale(k->rho * cs, k->A), k->rho * sn, k->B);
+    double q = fma(x, x, y * y);
+    vec3 K;
+    double d2;
+    if (q <= k->R * k->R) {
+        K = v_axpy(P, -z, k->n); /* the projection onto the plane */
+        d2 = z * z;
+    } else {
+        double rho = hypot(x, y), s = k->R / rho;
+        K = v_axpy(v_axpy(k->D, s * x, k->u), s * y, k->v);
+        double dr = rho - k->R;
+        d2 = fma(dr, dr, z * z);
+    }
+    cd_best_offer(b, d2, P, K, k->rho > 0.0 ? wrap_angle(t) : NAN, polar_angle(x, y));
+}
+
+/* Bracketed root of F' in [a, b] with sg F'(a) < 0 < sg F'(b) (sg = 1: a minimum of F, -1: a
+ * maximum): Newton steps kept inside the bracket, bisection otherwise. */
+static double cdk_bracket_sg(const cdk *k, double a, double b, double sg, double fa, double fb)
+{
+    /* Start from the secant point when the end values are known. */
+    double t = 0.5 * (a + b);
+    if (isfinite(fa) && isfinite(fb) && fb != fa) {
+        double ts = a - fa * (b - a) / (fb - fa);
+        if (ts > a && ts < b) t = ts;
+    }
+    for (int it = 0; it < 100; it++) {
+        double f1, f2;
+        cdk_rim(k, t, &f1, &f2);
+        f1 *= sg;
+        f2 *= sg;
+        if (f1 == 0.0) return t;
+        if (f1 < 0.0) a = t;
+        else b = t;
+        double tn = (f2 > 0.0) ? t - f1 / f2 : 0.5 * (a + b);
+        if (!(tn > a && tn < b)) tn = 0.5 * (a + b);
+        if (fabs(tn - t) <= 2.0 * DBL_EPSILON * (1.0 + fabs(t)) || b - a <= 4.0 * DBL_EPSILON * (1.0 + fabs(t))) {
+            t = tn;
+            break;
+        }
+        t = tn;
+    }
+    return t;
+}
+
+static double cdk_bracket(const cdk *k, double a, double b) { return cdk_bracket_sg(k, a, b, 1.0, NAN, NAN); }
+
+/* (c0 + c1 cos t + c2 sin t)(1 + tau^2) as a quadratic in tau = tan(t/2), ascending. */
+static void trig_to_quad(const double *c, double s, double *q)
+{
+    q[0] = (c[0] + c[1]) * s;
+    q[1] = 2.0 * c[2] * s;
+    q[2] = (c[0] - c[1]) * s;
+}
+
+static void pmul(const double *a, int da, const double *b, int db, double *out)
+{
+    for (int i = 0; i <= da + db; i++) out[i] = 0.0;
+    for (int i = 0; i <= da; i++)
+        for (int j = 0; j <= db; j++) out[i + j] = fma(a[i], b[j], out[i + j]);
+}
+
+/* Critical points of F by the degree-8 polynomial (point-curve-circle-to-disk §4.3, in the
+ * half-angle variable): F' = 0 <=> S rho = R T, squared: (x^2+y^2) S^2 - R^2 T^2 = 0, with
+ * T = x x' + y y'. Returns the number of angles written, or -1 when F is constant, -2 on failure. */
+static int cdk_poly_critical(cdist_query *q, const cdk *k, double *ts)
+{
+    double s = fmax(fmax(k->rho, k->R), fmax(fabs(k->X[0]), fmax(fabs(k->Y[0]), fabs(k->Z[0]))));
+    if (!(s > 0.0)) return 0;
+    s = 1.0 / s;
+    double dX[3] = {0.0, k->X[2], -k->X[1]}, dY[3] = {0.0, k->Y[2], -k->Y[1]};
+    double qx[3], qy[3], qxp[3], qyp[3], qs[3];
+    trig_to_quad(k->X, s, qx);
+    trig_to_quad(k->Y, s, qy);
+    trig_to_quad(dX, s, qxp);
+    trig_to_quad(dY, s, qyp);
+    trig_to_quad(k->S, s * s, qs);
+    double xx[5], yy[5], xxp[5], yyp[5], rho2[5], T[5], S2[5], a[9], bq[9];
+    pmul(qx, 2, qx, 2, xx);
+    pmul(qy, 2, qy, 2, yy);
+    pmul(qx, 2, qxp, 2, xxp);
+    pmul(qy, 2, qyp, 2, yyp);
+    for (int i = 0; i < 5; i++) {
+        rho2[i] = xx[i] + yy[i];
+        T[i] = xxp[i] + yyp[i];
+    }
+    pmul(qs, 2, qs, 2, S2);
+    pmul(rho2, 4, S2, 4, a);
+    pmul(T, 4, T, 4, bq);
+    double R2 = (k->R * s) * (k->R * s);
+    for (int i = 0; i < 9; i++) a[i] = fma(-R2, bq[i], a[i]);
+    double roots[8];
+    int nr = cd_poly_real_roots(q->poly, a, 8, 1e-3, roots);
+    if (nr == CD_POLY_ZERO) return -1;
+    if (nr < 0) return -2;
+    int n = 0;
+    for (int i = 0; i < nr; i++) ts[n++] = 2.0 * atan(roots[i]);
+    ts[n++] = M_PI; /* tau = infinity is not a root of the polynomial in tau */
+    return n;
+}
+
+/* The local minimum of F reached by walking downhill from t: steps doubling from 1e-9 until F'
+ * changes sign, then the bracketed solver on the true derivative. */
+static double cdk_descend(const cdk *k, double t, double h0)
+{
+    double f1;
+    cdk_rim(k, t, &f1, NULL);
+    if (f1 == 0.0) return t;
+    double dir = f1 < 0.0 ? 1.0 : -1.0, prev = t;
+    for (double h = h0; h < 4.0; h *= 2.0) {
+        double tn = t + dir * h, g;
+        cdk_rim(k, tn, &g, NULL);
+        if (dir > 0.0 ? g >= 0.0 : g <= 0.0) return dir > 0.0 ? cdk_bracket(k, prev, tn) : cdk_bracket(k, tn, prev);
+        prev = tn;
+    }
+    return prev;
+}
+
+/* Minima of F hidden in [a, b] next to the critical point t1 (a minimum-maximum-minimum cluster
+ * narrower than the sampling): F' at t1 -+ 1e-9 2^j covers every dyadic shell around t1, so the
+ * sign change of a neighbour at distance >= 2e-9 is seen (closer ones differ from F(t1) by
+ * ~1e-36 of scale^2). Every - to + change away from t1 is bracketed and solved. */
+static int cdk_scan(const cdk *k, double t1, double a, double b, double *out, int cap)
+{
+    double p[2 * 36 + 3], f[2 * 36 + 3];
+    int m = 0, jl = 0, jr = 0;
+    p[m++] = a;
+    while (jl < 34 && 1e-9 * ldexp(1.0, jl + 1) < t1 - a) jl++;
+    for (int j = jl; j >= 0; j--)
+        if (t1 - 1e-9 * ldexp(1.0, j) > a) p[m++] = t1 - 1e-9 * ldexp(1.0, j);
+    int i1 = m;
+    p[m++] = t1;
+    while (jr < 34 && 1e-9 * ldexp(1.0, jr + 1) < b - t1) jr++;
+    for (int j = 0; j <= jr; j++)
+        if (t1 + 1e-9 * ldexp(1.0, j) < b) p[m++] = t1 + 1e-9 * ldexp(1.0, j);
+    p[m++] = b;
+    for (int i = 0; i < m; i++) cdk_rim(k, p[i], &f[i], NULL);
+    int n = 0;
+    for (int i = 0; i + 1 < m && n < cap; i++) {
+        if (i == i1 - 1 || i == i1) continue; /* the brackets touching t1 hold t1 itself */
+        if (f[i] < 0.0 && f[i + 1] >= 0.0) out[n++] = cdk_bracket(k, p[i], p[i + 1]);
+    }
+    return n;
+}
+
+/* Critical points of F by sampling F' on a uniform grid, and a bracketed Newton/bisection on
+ * every sign change from - to + (a minimum of F). Returns the number of angles written. */
+#define CDK_SAMPLES 48
+#define CDK_CAP 48
+#define CDK_FLAT 0.05
+static const double cdk_grid_cs[CDK_SAMPLES][2] = {
+    {-1, -1.2246467991473532e-16},
+    {-0.99144486137381038, -0.13052619222005157},
+    {-0.9659258262890682, -0.25881904510252102},
+    {-0.92387953251128674, -0.38268343236508989},
+    {-0.86602540378443871, -0.49999999999999994},
+    {-0.79335334029123505, -0.60876142900872088},
+    {-0.70710678118654746, -0.70710678118654757},
+    {-0.60876142900872066, -0.79335334029123517},
+    {-0.50000000000000022, -0.86602540378443849},
+    {-0.38268343236508973, -0.92387953251128674},
+    {-0.25881904510252063, -0.96592582628906831},
+    {-0.1305261922200516, -0.99144486137381038},
+    {6.123233995736766e-17, -1},
+    {0.13052619222005171, -0.99144486137381038},
+    {0.25881904510252074, -0.96592582628906831},
+    {0.38268343236508962, -0.92387953251128685},
+    {0.49999999999999989, -0.86602540378443871},
+    {0.60876142900872077, -0.79335334029123505},
+    {0.70710678118654757, -0.70710678118654746},
+    {0.79335334029123505, -0.60876142900872077},
+    {0.86602540378443871, -0.49999999999999983},
+    {0.92387953251128674, -0.38268343236508978},
+    {0.9659258262890682, -0.25881904510252091},
+    {0.99144486137381038, -0.13052619222005188},
+    {1, 0},
+    {0.99144486137381038, 0.13052619222005188},
+    {0.9659258262890682, 0.25881904510252091},
+    {0.92387953251128674, 0.38268343236508978},
+    {0.86602540378443871, 0.49999999999999983},
+    {0.79335334029123505, 0.60876142900872077},
+    {0.70710678118654791, 0.70710678118654724},
+    {0.60876142900872077, 0.79335334029123505},
+    {0.50000000000000033, 0.86602540378443849},
+    {0.38268343236508939, 0.92387953251128696},
+    {0.25881904510252052, 0.96592582628906831},
+    {0.13052619222005149, 0.99144486137381038},
+    {6.123233995736766e-17, 1},
+    {-0.13052619222005138, 0.99144486137381049},
+    {-0.25881904510252041, 0.96592582628906842},
+    {-0.38268343236508928, 0.92387953251128696},
+    {-0.50000000000000022, 0.86602540378443849},
+    {-0.60876142900871999, 0.79335334029123572},
+    {-0.70710678118654746, 0.70710678118654757},
+    {-0.79335334029123505, 0.60876142900872088},
+    {-0.86602540378443849, 0.50000000000000033},
+    {-0.92387953251128685, 0.38268343236508945},
+    {-0.96592582628906809, 0.25881904510252146},
+    {-0.99144486137381038, 0.13052619222005157},
+};
+static int cdk_robust_critical(const cdk *k, double *ts, int cap, double scale)
+{
+    double f1s[CDK_SAMPLES + 1], Fs[CDK_SAMPLES + 1];
+    const double h = TWO_PI / CDK_SAMPLES;
+    for (int i = 0; i < CDK_SAMPLES; i++) Fs[i] = cdk_rim_cs(k, cdk_grid_cs[i][0], cdk_grid_cs[i][1], &f1s[i], NULL);
+    f1s[CDK_SAMPLES] = f1s[0];
+    Fs[CDK_SAMPLES] = Fs[0];
+    double Fmin = Fs[0];
+    for (int i = 1; i < CDK_SAMPLES; i++) Fmin = fmin(Fmin, Fs[i]);
+    /* A cluster can only hold the global minimum where F is within this margin of the best. */
+    double margin = Fmin + 0.01 * scale * scale;
+    double flat = CDK_FLAT * k->rho * scale;
+    int n = 0;
+    for (int i = 0; i < CDK_SAMPLES && n < cap; i++) {
+        double a = -M_PI + i * h, b = a + h;
+        double t1;
+        if (f1s[i] < 0.0 && f1s[i + 1] >= 0.0) {
+            t1 = (f1s[i + 1] == 0.0) ? b : cdk_bracket_sg(k, a, b, 1.0, f1s[i], f1s[i + 1]);
+            ts[n++] = t1;
+        } else if (f1s[i] > 0.0 && f1s[i + 1] <= 0.0 && fmin(Fs[i], Fs[i + 1]) <= margin) {
+            /* A maximum: minima may hide on both sides of it. */
+            t1 = cdk_bracket_sg(k, a, b, -1.0, -f1s[i], -f1s[i + 1]);
+        } else {
+            continue;
+        }
+        /* Only a flat extremum can have a hidden neighbour: F' ~ c (t - t1)(t - m)(t - t2) gives
+         * |F''(t1)| ~ c w^2 for a cluster of width w below the grid step. */
+        double f2;
+        cdk_rim(k, t1, NULL, &f2);
+        if (fmin(Fs[i], Fs[i + 1]) <= margin && fabs(f2) <= flat) n += cdk_scan(k, t1, a, b, ts + n, cap - n);
+    }
+    /* Safety net: downhill from the smallest sample. */
+    int im = 0;
+    for (int i = 1; i < CDK_SAMPLES; i++)
+        if (Fs[i] < Fs[im]) im = i;
+    if (n < cap) ts[n++] = cdk_descend(k, -M_PI + im * h, h / 256);
+    return n;
+}
+
+/* The polynomial candidates, each walked downhill to a true minimum of F; the best ones are
+ * scanned for hidden neighbours (a root cluster that GSL resolves only to ~eps^(1/3)). */
+static int cdk_poly_minima(cdist_query *q, const cdk *k, double *ts, int cap, double scale)
+{
+    double roots[16];
+    int nr = cdk_poly_critical(q, k, roots);
+    if (nr < 0) return nr;
+    int n = 0;
+    double Fbest = INFINITY;
+    double Fv[16], f2v[16], flat = CDK_FLAT * k->rho * scale;
+    for (int i = 0; i < nr && n < cap; i++) {
+        double f1, f2;
+        cdk_rim(k, roots[i], &f1, &f2);
+        /* A clean maximum: its neighbouring minima are roots of their own. */
+        if (f2 < -flat && fabs(f1) <= 1e-6 * fabs(f2)) continue;
+        /* An extraneous root of the squared equation (S rho = -R T, where F' = 2 S) or the real
+         * part of a complex pair far from any critical point: F' is of the order rho L there,
+         * while a root of F' (even one of a cluster, resolved to ~eps^(1/3)) has |F'| ~ 1e-15 --
+         * unless F'' is huge (a disk much smaller than the circle: features of width R / rho), so
+         * a seed whose Newton step is short is kept. */
+        if (fabs(f1) > 1e-6 * k->rho * scale && !(f2 > 0.0 && fabs(f1) < 1e-3 * f2)) continue;
+        ts[n] = cdk_descend(k, roots[i], 1e-9);
+        Fv[n] = cdk_rim(k, ts[n], NULL, &f2v[n]);
+        Fbest = fmin(Fbest, Fv[n]);
+        n++;
+    }
+    int n0 = n;
+    for (int i = 0; i < n0 && n < cap; i++)
+        if (Fv[i] <= Fbest + 0.01 * scale * scale && fabs(f2v[i]) <= flat)
+            n += cdk_scan(k, ts[i], ts[i] - 0.15, ts[i] + 0.15, ts + n, cap - n);
+    return n;
+}
+
+/* Parallel planes (within rounding): closed forms (docs/disk.md). Returns 1 when handled. */
+static int cdk_parallel(const cdk *k, cd_best *b)
+{
+    double sinang = hypot(k->Z[1], k->Z[2]);
+    if (!(sinang <= 8.0 * DBL_EPSILON * k->rho)) return 0;
+    double ex = k->X[0], ey = k->Y[0], e = hypot(ex, ey);
+    double rho = k->rho, R = k->R;
+    double tol = 8.0 * DBL_EPSILON * fmax(fmax(rho, R), e);
+    /* Angle on the circle of the point whose projection is nearest the disk centre: direction
+     * -E in the disk plane, expressed in the circle's basis. */
+    vec3 Ein = v_axpy(v_scale(ex, k->u), ey, k->v); /* circle centre's projection relative to D */
+    double t0;
+    if (e <= tol) {
+        t0 = 0.0;
+        cdk_offer(k, t0, b);
+        if (rho > 0.0) b->equidistant = 1;
+        return 1;
+    }
+    t0 = atan2(-v_dot(Ein, k->B), -v_dot(Ein, k->A));
+    cdk_offer(k, t0, b);
+    if (fabs(e - rho) < R && rho > 0.0 && R > 0.0) b->equidistant = 1; /* an arc lies over the face */
+    return 1;
+}
+
+static cdist_status cdk_solve(cdist_query *q, cdist_method method, const cdk *k, cd_best *b, cdist_method *used)
+{
+    *used = method;
+    if (cdk_parallel(k, b)) return CDIST_OK;
+    /* Zeros and extremes of the height z(t) = Z0 + amp cos(t - phi). */
+    double amp = hypot(k->Z[1], k->Z[2]), phi = atan2(k->Z[2], k->Z[1]);
+    cdk_offer(k, phi, b);
+    cdk_offer(k, phi + M_PI, b);
+    double cz = -k->Z[0] / amp;
+    if (fabs(cz) <= 1.0) {
+        double w = acos(cz);
+        for (int s = -1; s <= 1; s += 2) {
+            double t = phi + s * w;
+            /* Newton on z itself (two steps) to land on the plane. */
+            for (int it = 0; it < 2; it++) {
+                double sn, cs;
+                sincos(t, &sn, &cs);
+                double z = trig1(k->Z, cs, sn), zp = trig1d(k->Z, cs, sn);
+                if (zp == 0.0 || z == 0.0) break;
+                double st = z / zp;
+                if (fabs(st) > 1e-3) break;
+                t -= st;
+            }
+            cdk_offer(k, t, b);
+        }
+    }
+    /* Critical points of the rim distance. */
+    double ts[CDK_CAP];
+    double scale = fmax(fmax(k->rho, k->R), hypot(k->X[0], hypot(k->Y[0], k->Z[0])));
+    int n = -2;
+    if (method == CDIST_METHOD_POLYNOMIAL) {
+        n = cdk_poly_minima(q, k, ts, CDK_CAP, scale);
+        if (n == -1) n = 0; /* F constant: the rim gives no isolated candidate; z candidates rule */
+    }
+    if (n < 0) {
+        /* ROBUST: every critical angle of F with certified root isolation (circle-circle robust
+         * method, Fourier bounds on the squared derivative, src/circle_circle.c), the rim being a
+         * circle; its own sampling as the fallback. */
+        *used = CDIST_METHOD_ROBUST;
+        n = cd_circle_circle_critical(q, k->c, k->d, ts, CDK_CAP);
+        if (n == -1) {
+            n = 0; /* F constant: the rim gives no isolated candidate; z candidates rule */
+            ts[n++] = 0.0;
+        } else if (n <= 0) {
+            n = cdk_robust_critical(k, ts, CDK_CAP, scale);
+        } else {
+            /* Flat minima near the best: a neighbour of a cluster below the certification width
+             * (multiple roots) is looked for by the dyadic scan. */
+            double Fv[CDK_CAP], f2v[CDK_CAP], Fbest = INFINITY, flat = CDK_FLAT * k->rho * scale;
+            for (int i = 0; i < n; i++) {
+                Fv[i] = cdk_rim(k, ts[i], NULL, &f2v[i]);
+                Fbest = fmin(Fbest, Fv[i]);
+            }
+            int n0 = n;
+            for (int i = 0; i < n0 && n < CDK_CAP; i++)
+                if (Fv[i] <= Fbest + 0.01 * scale * scale && fabs(f2v[i]) <= flat)
+                    n += cdk_scan(k, ts[i], ts[i] - 0.15, ts[i] + 0.15, ts + n, CDK_CAP - n);
+        }
+    }
+    for (int i = 0; i < n; i++) cdk_offer(k, ts[i], b);
+    return CDIST_OK;
+}
+
+/* Circle c (centre at the origin) to disk d (centre relative to c's). */
+static cdist_status circle_disk_solve(cdist_query *q, cdist_method method, const cd_circle *c, const cd_circle *d,
+                                      cd_best *b, cdist_method *used)
+{
+    *used = method;
+    if (c->r == 0.0) {
+        /* The circle is its centre (the origin): point to disk, points relative to d's centre. */
+        cd_best t;
+        cd_best_init(&t, b->scale);
+        cd_point_disk_core(v_neg(d->c), d, &t, 0);
+        for (int i = 0; i < t.n; i++) t.c[i].param[0] = NAN;
+        merge_best(b, &t, d->c, 0);
+        b->equidistant = t.equidistant;
+        return CDIST_OK;
+    }
+    if (d->r == 0.0) {
+        /* The disk is its centre: point to circle. */
+        cd_point_circle_core(d->c, c, b, 1);
+        return CDIST_OK;
+    }
+    cdk k;
+    cdk_init(&k, c, d);
+    return cdk_solve(q, method, &k, b, used);
+}
+
+/* Solved into a fresh collector, then merged into b: b may already hold other candidates (a
+ * caller combining several objects), and an equidistant set here only makes b equidistant when
+ * it attains b's minimum. */
+static cdist_status circle_disk_core(cdist_query *q, cdist_method method, const cd_circle *c, const cd_circle *d,
+                                     cd_best *b, cdist_method *used)
+{
+    cd_best t;
+    cd_best_init(&t, b->scale);
+    cdist_status st = circle_disk_solve(q, method, c, d, &t, used);
+    if (st) return st;
+    double d2 = merge_best(b, &t, v3(0, 0, 0), 0);
+    if (t.equidistant) settle_equidistant(b, d2);
+    return CDIST_OK;
+}
+
 cdist_status cd_circle_disk_core(cdist_query *q, cdist_method method, const cd_circle *c, const cd_circle *d,
                                  cd_best *b)
 {
-    (void)method; (void)c; (void)d; (void)b;
-    return cd_fail(q, CDIST_ERR_INTERNAL, "circle-disk is not implemented yet");
+    cdist_method used;
+    return circle_disk_core(q, method, c, d, b, &used);
+}
+
+#define CD_DISK_METHODS (CD_HAS(CDIST_METHOD_POLYNOMIAL) | CD_HAS(CDIST_METHOD_ROBUST))
+#define CD_DISK_AUTO CDIST_METHOD_ROBUST
+
+cdist_status cdist_circle_disk(cdist_query *q, const cdist_circle *c, const cdist_circle *d, cdist_result *r)
+{
+    cdist_status st = cd_check_handle(q, r);
+    if (st) return st;
+    cd_circle a, e;
+    if ((st = cd_check_circle(q, c, "circle", &a)) || (st = cd_check_circle(q, d, "disk", &e))) return st;
+    vec3 offset = a.c;
+    a.c = v3(0, 0, 0);
+    e.c = v_sub(e.c, offset);
+    cd_best best;
+    cd_best_init(&best, fmax(fmax(a.r, e.r), v_norm(e.c)));
+    cdist_method m = cd_pick_method(q, CD_DISK_METHODS, CD_DISK_AUTO), used;
+    if ((st = circle_disk_core(q, m, &a, &e, &best, &used))) return st;
+    if (best.n == 0) return cd_fail(q, CDIST_ERR_INTERNAL, "circle-disk found no candidate");
+    cd_best_to_result(&best, offset, 0, r);
+    return cd_ok(q, r, used);
+}
+
+/* ------------------------------------------------------------------------------------------ */
+/* Disk to disk                                                                                 */
+
+/* Lexicographic order of the inputs, so that f(a, b) and f(b, a) run the same computation. */
+static int circle_less(const cdist_circle *a, const cdist_circle *b)
+{
+    const double va[7] = {a->center.x, a->center.y, a->center.z, a->normal.x, a->normal.y, a->normal.z, a->radius};
+    const double vb[7] = {b->center.x, b->center.y, b->center.z, b->normal.x, b->normal.y, b->normal.z, b->radius};
+    for (int i = 0; i < 7; i++) {
+        if (va[i] < vb[i]) return 1;
+        if (va[i] > vb[i]) return 0;
+    }
+    return 0;
+}
+
+cdist_status cdist_disk_disk(cdist_query *q, const cdist_circle *d0, const cdist_circle *d1, cdist_result *r)
+{
+    cdist_status st = cd_check_handle(q, r);
+    if (st) return st;
+    cd_circle a, e;
+    if ((st = cd_check_circle(q, d0, "first disk", &a)) || (st = cd_check_circle(q, d1, "second disk", &e))) return st;
+    int swap = circle_less(d1, d0);
+    if (swap) {
+        cd_circle t = a;
+        a = e;
+        e = t;
+    }
+    vec3 offset = a.c;
+    a.c = v3(0, 0, 0);
+    e.c = v_sub(e.c, offset);
+    cd_best best;
+    cd_best_init(&best, fmax(fmax(a.r, e.r), v_norm(e.c)));
+    cdist_method m = cd_pick_method(q, CD_DISK_METHODS, CD_DISK_AUTO), used0, used1;
+    /* Rim of a to disk e, and rim of e to disk a (computed with e's centre as origin). */
+    cd_best b0, b1;
+    cd_best_init(&b0, best.scale);
+    cd_best_init(&b1, best.scale);
+    if ((st = circle_disk_core(q, m, &a, &e, &b0, &used0))) return st;
+    cd_circle a1 = a, e1 = e;
+    a1.c = v_neg(e.c);
+    e1.c = v3(0, 0, 0);
+    if ((st = circle_disk_core(q, m, &e1, &a1, &b1, &used1))) return st;
+    double d0sq = merge_best(&best, &b0, v3(0, 0, 0), 0);
+    double d1sq = merge_best(&best, &b1, e.c, 1);
+    if (best.n == 0) return cd_fail(q, CDIST_ERR_INTERNAL, "disk-disk found no candidate");
+    /* Parallel faces over each other: the closest set is a region. A rim over the other face
+     * (b0 or b1 equidistant) says so; a disk entirely over the other's face with its rim
+     * beyond it is caught the other way round. */
+    if (b0.equidistant) settle_equidistant(&best, d0sq);
+    if (b1.equidistant) settle_equidistant(&best, d1sq);
+    convex_contact(&best);
+    cd_best_to_result(&best, offset, swap, r);
+    return cd_ok(q, r, used0 == CDIST_METHOD_ROBUST || used1 == CDIST_METHOD_ROBUST ? CDIST_METHOD_ROBUST : m);
+}
+
+/* ------------------------------------------------------------------------------------------ */
+/* Lines, rays and segments to a disk                                                           */
+
+/* B + t M, t in [tmin, tmax], M unit, B relative to the disk centre (d->c ignored).
+ * Split the range where the projection onto the plane enters and leaves the disk:
+ *   over the disk: G = |h(t)| with h linear, so its minimum on the piece is at the plane
+ *     crossing (distance 0) or at an end of the piece;
+ *   outside: G = F, the line-circle distance, by cd_linear_circle restricted to the piece.
+ * The lemma at the top makes the split points themselves unnecessary as candidates, but they
+ * are offered anyway (cheap, and they protect against a split computed a few ulps off). */
+static void lin_offer(vec3 B, vec3 M, double t, const cd_circle *d, cd_best *b)
+{
+    vec3 p = v_axpy(B, t, M);
+    cd_best tmp;
+    cd_best_init(&tmp, b->scale);
+    cd_point_disk_core(p, d, &tmp, 0);
+    for (int i = 0; i < tmp.n; i++) cd_best_offer(b, tmp.c[i].d2, tmp.c[i].p[0], tmp.c[i].p[1], t, tmp.c[i].param[1]);
+}
+
+static cdist_status linear_disk(cdist_query *q, cdist_method method, vec3 B, vec3 M, double tmin, double tmax,
+                                const cd_circle *d, cd_best *b, cdist_method *used)
+{
+    *used = method == CDIST_METHOD_POLYNOMIAL ? method : CDIST_METHOD_ROBUST;
+    cdist_method u1 = *used;
+    double R = d->r;
+    double mn = v_dot(d->n, M), hB = v_dot(d->n, B);
+    /* In-plane parts of B and M. */
+    vec3 Mp = v_cross(v_cross(d->n, M), d->n), Bp = v_cross(v_cross(d->n, B), d->n);
+    double mp2 = v_sqr(Mp);
+    double eq_d2 = INFINITY;
+    cd_best loc;
+    cd_best_init(&loc, b->scale);
+    double t1 = INFINITY, t2 = -INFINITY; /* the projection is over the disk for t in [t1, t2] */
+    if (mp2 > 0.0) {
+        double mpn = sqrt(mp2);
+        double tc = -v_dot(Bp, Mp) / mp2;
+        /* Distance of the projected line from the centre: |Mp x Bp| / |Mp| (no cancellation). */
+        double dist = v_norm(v_cross(Mp, Bp)) / mpn;
+        if (dist <= R) {
+            double half = sqrt((R - dist) * (R + dist)) / mpn;
+            t1 = tc - half;
+            t2 = tc + half;
+        }
+    } else if (v_norm(Bp) <= R) {
+        t1 = -INFINITY;
+        t2 = INFINITY;
+    }
+    double lo = fmax(tmin, t1), hi = fmin(tmax, t2);
+    cdist_status st;
+    if (lo <= hi) {
+        /* The piece over the disk. */
+        if (fabs(mn) <= 4.0 * DBL_EPSILON) {
+            /* Parallel to the plane (within rounding): |h| constant over a stretch. */
+            double tt = isfinite(lo) ? lo : isfinite(hi) ? hi : fmin(fmax(0.0, lo), hi);
+            if (isfinite(lo) && isfinite(hi)) tt = 0.5 * (lo + hi);
+            lin_offer(B, M, tt, d, &loc);
+            if (hi > lo && R > 0.0) eq_d2 = loc.n ? loc.c[0].d2 : INFINITY;
+        } else {
+            double tz = -hB / mn;
+            if (tz >= lo && tz <= hi) {
+                /* Crossing point: polish once on h, clamp into the piece. */
+                double hz = v_dot(d->n, v_axpy(B, tz, M));
+                tz = fmin(fmax(tz - hz / mn, lo), hi);
+                lin_offer(B, M, tz, d, &loc);
+            }
+            if (isfinite(lo)) lin_offer(B, M, lo, d, &loc);
+            if (isfinite(hi)) lin_offer(B, M, hi, d, &loc);
+        }
+        /* The outer pieces. */
+        if (tmin < lo) {
+            cd_best t;
+            cd_best_init(&t, b->scale);
+            if ((st = cd_linear_circle_ex(q, method, B, M, tmin, lo, d, &t, &u1))) return st;
+            if (u1 == CDIST_METHOD_ROBUST) *used = u1;
+            double m2 = merge_best(&loc, &t, v3(0, 0, 0), 0);
+            if (t.equidistant && m2 < eq_d2) eq_d2 = m2;
+        }
+        if (hi < tmax) {
+            cd_best t;
+            cd_best_init(&t, b->scale);
+            if ((st = cd_linear_circle_ex(q, method, B, M, hi, tmax, d, &t, &u1))) return st;
+            if (u1 == CDIST_METHOD_ROBUST) *used = u1;
+            double m2 = merge_best(&loc, &t, v3(0, 0, 0), 0);
+            if (t.equidistant && m2 < eq_d2) eq_d2 = m2;
+        }
+    } else {
+        cd_best t;
+        cd_best_init(&t, b->scale);
+        if ((st = cd_linear_circle_ex(q, method, B, M, tmin, tmax, d, &t, &u1))) return st;
+        if (u1 == CDIST_METHOD_ROBUST) *used = u1;
+        double m2 = merge_best(&loc, &t, v3(0, 0, 0), 0);
+        if (t.equidistant) eq_d2 = m2;
+    }
+    if (isfinite(tmin)) lin_offer(B, M, tmin, d, &loc);
+    if (isfinite(tmax)) lin_offer(B, M, tmax, d, &loc);
+    settle_equidistant(&loc, eq_d2);
+    convex_contact(&loc);
+    double d2 = merge_best(b, &loc, v3(0, 0, 0), 0);
+    if (loc.equidistant) settle_equidistant(b, d2);
+    return CDIST_OK;
+}
+
+cdist_status cd_linear_disk(cdist_query *q, cdist_method method, vec3 B, vec3 M, double tmin, double tmax,
+                            const cd_circle *d, cd_best *b)
+{
+    cdist_method used;
+    return linear_disk(q, method, B, M, tmin, tmax, d, b, &used);
+}
+
+#define CD_LINE_METHODS (CD_HAS(CDIST_METHOD_POLYNOMIAL) | CD_HAS(CDIST_METHOD_ROBUST))
+
+/* a - b = hi + lo exactly (Knuth's TwoSum with -b). */
+static double two_diff(double a, double b, double *lo)
+{
+    double s = a - b, bb = s - a;
+    *lo = (a - (s - bb)) + (-b - bb);
+    return s;
+}
+
+/* The point of the segment p0 + s (p1 - p0), s in [0, 1], nearest C, relative to C, from the
+ * exact differences p0 - C and p1 - p0 (a rounded p1 - p0 would tilt the segment: 1e-8 off at
+ * 1e8 from its start); one rounding at the scale of the result. */
+static vec3 segment_near_centre(vec3 p0, vec3 p1, vec3 C, double *s0)
+{
+    double a[3], al[3], dd[3], dl[3];
+    const double P0[3] = {p0.x, p0.y, p0.z}, P1[3] = {p1.x, p1.y, p1.z}, CC[3] = {C.x, C.y, C.z};
+    for (int i = 0; i < 3; i++) {
+        a[i] = two_diff(P0[i], CC[i], &al[i]);
+        dd[i] = two_diff(P1[i], P0[i], &dl[i]);
+    }
+    double m = fmax(fabs(dd[0]), fmax(fabs(dd[1]), fabs(dd[2])));
+    double num = 0.0, den = 0.0;
+    for (int i = 0; i < 3; i++) {
+        num += (a[i] / m) * (dd[i] / m);
+        den += (dd[i] / m) * (dd[i] / m);
+    }
+    double t = (den > 0.0) ? -num / den : 0.0;
+    t = fmin(fmax(t, 0.0), 1.0);
+    *s0 = t;
+    double B[3];
+    for (int i = 0; i < 3; i++) B[i] = fma(t, dd[i], a[i]) + fma(t, dl[i], al[i]);
+    return v3(B[0], B[1], B[2]);
+}
+
+/* Shared driver: the linear object is origin + t D for t in [tmin, tmax], D exactly as the
+ * caller gave it (|D| = len, unit direction M = D / len). The parameter reported is t.
+ * p1 (segments only): the end point, so that origin - C and p1 - origin are taken exactly. */
+static cdist_status linear_disk_query(cdist_query *q, vec3 origin, vec3 D, double len, vec3 M, double tmin,
+                                      double tmax, const vec3 *p1, const cd_circle *dk, cdist_result *r)
+{
+    cd_circle d = *dk;
+    vec3 offset = d.c;
+    d.c = v3(0, 0, 0);
+    /* Move the origin to the point of the range nearest the centre, with origin - C kept exact
+     * and the line as given (not its rounded unit direction, which would tilt it by ~1e-16 rad,
+     * i.e. move it by 1e-8 at a distance of 1e8): see cd_line_near_centre in src/line_circle.c. */
+    double t0;
+    vec3 B = p1 ? segment_near_centre(origin, *p1, offset, &t0) : cd_line_near_centre(origin, D, offset, tmin, tmax, &t0);
+    double lo = (tmin == t0) ? 0.0 : (tmin - t0) * len, hi = (tmax == t0) ? 0.0 : (tmax - t0) * len;
+    double L = fmax(d.r, v_norm(B));
+    cd_best best;
+    cd_best_init(&best, L);
+    cdist_method m = cd_pick_method(q, CD_LINE_METHODS, CDIST_METHOD_ROBUST);
+    cdist_status st = linear_disk(q, m, B, M, lo, hi, &d, &best, &m);
+    if (st) return st;
+    if (best.n == 0) return cd_fail(q, CDIST_ERR_INTERNAL, "line-disk found no candidate");
+    for (int i = 0; i < best.n; i++) best.c[i].param[0] = fmin(fmax(t0 + best.c[i].param[0] / len, tmin), tmax);
+    cd_best_to_result(&best, offset, 0, r);
+    return cd_ok(q, r, m);
+}
+
+cdist_status cdist_line_disk(cdist_query *q, const cdist_line *l, const cdist_circle *d, cdist_result *r)
+{
+    cdist_status st = cd_check_handle(q, r);
+    if (st) return st;
+    if ((st = cd_check_ptr(q, l, "line"))) return st;
+    vec3 dir;
+    double len;
+    cd_circle dk;
+    if ((st = cd_check_point(q, &l->origin, "line origin")) ||
+        (st = cd_check_direction(q, &l->direction, "line direction", 1, &dir, &len)) ||
+        (st = cd_check_circle(q, d, "disk", &dk)))
+        return st;
+    return linear_disk_query(q, l->origin, l->direction, len, dir, -INFINITY, INFINITY, NULL, &dk, r);
+}
+
+cdist_status cdist_ray_disk(cdist_query *q, const cdist_ray *l, const cdist_circle *d, cdist_result *r)
+{
+    cdist_status st = cd_check_handle(q, r);
+    if (st) return st;
+    if ((st = cd_check_ptr(q, l, "ray"))) return st;
+    vec3 dir;
+    double len;
+    cd_circle dk;
+    if ((st = cd_check_point(q, &l->origin, "ray origin")) ||
+        (st = cd_check_direction(q, &l->direction, "ray direction", 1, &dir, &len)) ||
+        (st = cd_check_circle(q, d, "disk", &dk)))
+        return st;
+    return linear_disk_query(q, l->origin, l->direction, len, dir, 0.0, INFINITY, NULL, &dk, r);
+}
+
+cdist_status cdist_segment_disk(cdist_query *q, const cdist_segment *s, const cdist_circle *d, cdist_result *r)
+{
+    cdist_status st = cd_check_handle(q, r);
+    if (st) return st;
+    if ((st = cd_check_ptr(q, s, "segment"))) return st;
+    cd_circle dk;
+    if ((st = cd_check_point(q, &s->p0, "segment p0")) || (st = cd_check_point(q, &s->p1, "segment p1")) ||
+        (st = cd_check_circle(q, d, "disk", &dk)))
+        return st;
+    vec3 M = v_sub(s->p1, s->p0);
+    double len = v_norm(M);
+    if (len == 0.0) {
+        /* A point: point-disk, with s = 0. */
+        cd_circle dd = dk;
+        vec3 offset = dd.c;
+        dd.c = v3(0, 0, 0);
+        vec3 p = v_sub(s->p0, offset);
+        cd_best best;
+        cd_best_init(&best, fmax(dd.r, v_norm(p)));
+        cd_point_disk_core(p, &dd, &best, 0);
+        for (int i = 0; i < best.n; i++) best.c[i].param[0] = 0.0;
+        cd_best_to_result(&best, offset, 0, r);
+        r->pairs[0].point[0] = s->p0;
+        return cd_ok(q, r, CDIST_METHOD_AUTO);
+    }
+    st = linear_disk_query(q, s->p0, M, len, v_scale(1.0 / len, M), 0.0, 1.0, &s->p1, &dk, r);
+    if (st) return st;
+    for (int i = 0; i < r->num_pairs; i++) {
+        if (r->pairs[i].param[0] == 0.0) r->pairs[i].point[0] = s->p0; /* exactly the caller's end points */
+        if (r->pairs[i].param[0] == 1.0) r->pairs[i].point[0] = s->p1;
+    }
+    return CDIST_OK;
 }
