@@ -45,8 +45,8 @@ static double merge_best(cd_best *dst, const cd_best *src, vec3 shift, int swap)
     for (int i = 0; i < src->n; i++) {
         const cd_cand *c = &src->c[i];
         vec3 p0 = v_add(c->p[0], shift), p1 = v_add(c->p[1], shift);
-        if (swap) cd_best_offer(dst, c->d2, p1, p0, c->param[1], c->param[0]);
-        else cd_best_offer(dst, c->d2, p0, p1, c->param[0], c->param[1]);
+        if (swap) cd_best_offer_flag(dst, c->equidistant, c->d2, p1, p0, c->param[1], c->param[0]);
+        else cd_best_offer_flag(dst, c->equidistant, c->d2, p0, p1, c->param[0], c->param[1]);
     }
     return src->n ? src->c[0].d2 : INFINITY;
 }
@@ -520,7 +520,7 @@ static cdist_status circle_disk_solve(cdist_query *q, cdist_method method, const
         cd_point_disk_core(v_neg(d->c), d, &t, 0);
         for (int i = 0; i < t.n; i++) t.c[i].param[0] = NAN;
         merge_best(b, &t, d->c, 0);
-        b->equidistant = t.equidistant;
+        b->equidistant = cd_best_is_equidistant(&t);
         return CDIST_OK;
     }
     if (d->r == 0.0) {
@@ -544,7 +544,7 @@ static cdist_status circle_disk_core(cdist_query *q, cdist_method method, const 
     cdist_status st = circle_disk_solve(q, method, c, d, &t, used);
     if (st) return st;
     double d2 = merge_best(b, &t, v3(0, 0, 0), 0);
-    if (t.equidistant) settle_equidistant(b, d2);
+    if (cd_best_is_equidistant(&t)) settle_equidistant(b, d2);
     return CDIST_OK;
 }
 
@@ -624,8 +624,8 @@ cdist_status cdist_disk_disk(cdist_query *q, const cdist_circle *d0, const cdist
     /* Parallel faces over each other: the closest set is a region. A rim over the other face
      * (b0 or b1 equidistant) says so; a disk entirely over the other's face with its rim
      * beyond it is caught the other way round. */
-    if (b0.equidistant) settle_equidistant(&best, d0sq);
-    if (b1.equidistant) settle_equidistant(&best, d1sq);
+    if (cd_best_is_equidistant(&b0)) settle_equidistant(&best, d0sq);
+    if (cd_best_is_equidistant(&b1)) settle_equidistant(&best, d1sq);
     convex_contact(&best);
     cd_best_to_result(&best, offset, swap, r);
     return cd_ok(q, r, used0 == CDIST_METHOD_ROBUST || used1 == CDIST_METHOD_ROBUST ? CDIST_METHOD_ROBUST : m);
@@ -706,7 +706,7 @@ static cdist_status linear_disk(cdist_query *q, cdist_method method, vec3 B, vec
             if ((st = cd_linear_circle_ex(q, method, B, M, tmin, lo, d, &t, &u1))) return st;
             if (u1 == CDIST_METHOD_ROBUST) *used = u1;
             double m2 = merge_best(&loc, &t, v3(0, 0, 0), 0);
-            if (t.equidistant && m2 < eq_d2) eq_d2 = m2;
+            if (cd_best_is_equidistant(&t) && m2 < eq_d2) eq_d2 = m2;
         }
         if (hi < tmax) {
             cd_best t;
@@ -714,7 +714,7 @@ static cdist_status linear_disk(cdist_query *q, cdist_method method, vec3 B, vec
             if ((st = cd_linear_circle_ex(q, method, B, M, hi, tmax, d, &t, &u1))) return st;
             if (u1 == CDIST_METHOD_ROBUST) *used = u1;
             double m2 = merge_best(&loc, &t, v3(0, 0, 0), 0);
-            if (t.equidistant && m2 < eq_d2) eq_d2 = m2;
+            if (cd_best_is_equidistant(&t) && m2 < eq_d2) eq_d2 = m2;
         }
     } else {
         cd_best t;
@@ -722,14 +722,14 @@ static cdist_status linear_disk(cdist_query *q, cdist_method method, vec3 B, vec
         if ((st = cd_linear_circle_ex(q, method, B, M, tmin, tmax, d, &t, &u1))) return st;
         if (u1 == CDIST_METHOD_ROBUST) *used = u1;
         double m2 = merge_best(&loc, &t, v3(0, 0, 0), 0);
-        if (t.equidistant) eq_d2 = m2;
+        if (cd_best_is_equidistant(&t)) eq_d2 = m2;
     }
     if (isfinite(tmin)) lin_offer(B, M, tmin, d, &loc);
     if (isfinite(tmax)) lin_offer(B, M, tmax, d, &loc);
     settle_equidistant(&loc, eq_d2);
     convex_contact(&loc);
     double d2 = merge_best(b, &loc, v3(0, 0, 0), 0);
-    if (loc.equidistant) settle_equidistant(b, d2);
+    if (cd_best_is_equidistant(&loc)) settle_equidistant(b, d2);
     return CDIST_OK;
 }
 

@@ -59,6 +59,12 @@ typedef struct cd_best {
 #define CD_DISTINCT_REL 1e-6
 
 void cd_best_init(cd_best *b, double scale);
+/* Whether the result would be flagged equidistant (the whole configuration, or the best
+ * candidate stands for infinitely many pairs). */
+static inline int cd_best_is_equidistant(const cd_best *b)
+{
+    return b->equidistant || (b->n > 0 && b->c[0].equidistant);
+}
 /* Offer a candidate: p0 on the first object, p1 on the second, d2 = its squared distance
  * computed as accurately as the family can (usually from the true distance function). */
 void cd_best_offer(cd_best *b, double d2, vec3 p0, vec3 p1, double param0, double param1);
