@@ -853,6 +853,40 @@ static void cc_equidistant_post(const cd_circle *c0, const cd_circle *c1, cd_bes
     }
 }
 
+/* Whether both arcs of circle c between the points at angles a and b rise above the tie level
+ * (sampled at their midpoints) as seen from the other circle: then a and b are separate minima. */
+static int arcs_rise(const cd_circle *c, const cd_circle *other, double a, double b, double dbest, double tie)
+{
+    if (isnan(a) || isnan(b)) return 0;
+    double mid = b + 0.5 * remainder(a - b, 2.0 * M_PI);
+    for (int k = 0; k < 2; k++) {
+        double t = mid + k * M_PI;
+        vec3 X = v_add(c->c, v_add(v_scale(c->r * cos(t), c->u), v_scale(c->r * sin(t), c->v)));
+        if (!(pc_dist(X, other, NULL) - dbest > tie)) return 0;
+    }
+    return 1;
+}
+
+/* Method independent: two tied candidates are two closest pairs only when they are separate
+ * minima, i.e. the distance rises between them along both arcs of the first circle or along both
+ * arcs of the second. Otherwise they are two points of one flat minimum (e.g. circles in
+ * parallel planes whose projections touch, where F is flat to fourth order) and the best
+ * represents it. */
+static void cc_same_basin_filter(const cd_circle *c0, const cd_circle *c1, cd_best *b)
+{
+    double tie = CD_TIE_ULPS * DBL_EPSILON * b->scale;
+    while (b->n >= 2 && !cd_best_is_equidistant(b)) {
+        double dbest = sqrt(b->c[0].d2);
+        if (sqrt(b->c[1].d2) - dbest > tie) return;
+        const cd_cand *x = &b->c[0], *y = &b->c[1];
+        double a0 = cd_circle_angle(c0, v_sub(x->p[0], c0->c)), b0 = cd_circle_angle(c0, v_sub(y->p[0], c0->c));
+        double a1 = cd_circle_angle(c1, v_sub(x->p[1], c1->c)), b1 = cd_circle_angle(c1, v_sub(y->p[1], c1->c));
+        if (arcs_rise(c0, c1, a0, b0, dbest, tie) || arcs_rise(c1, c0, a1, b1, dbest, tie)) return;
+        for (int j = 1; j + 1 < b->n; j++) b->c[j] = b->c[j + 1];
+        b->n--;
+    }
+}
+
 /* Runs `method`; the robust method answers AUTO and is the fallback of a method that fails.
  * *answered: the method that produced the result. */
 static cdist_status cc_core(cdist_query *q, cdist_method method, const cd_circle *c0, const cd_circle *c1,
@@ -872,6 +906,7 @@ static cdist_status cc_core(cdist_query *q, cdist_method method, const cd_circle
     } else {
         cc_equidistant_post(c0, c1, b);
     }
+    if (st == CDIST_OK) cc_same_basin_filter(c0, c1, b);
     return st;
 }
 
