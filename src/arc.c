@@ -123,10 +123,12 @@ static void offer_point_arc(cs_coll *k, vec3 p, double tp, const arcx *a, int p_
     vec3 K;
     double ang;
     int eq = 0;
-    if (tmp.equidistant) {
-        /* p on the axis: every arc point is closest; the start point represents them. */
+    if (tmp.equidistant || cs_near_axis(k, rel, &a->c)) {
+        /* p on the axis (within rounding of the problem's scale): every arc point is closest;
+         * the start point represents them. */
         ang = a->start;
         K = arc_point(a, ang);
+        d2 = v_sqr(v_sub(p, K));
         eq = a->end > a->start;
     } else {
         int inside;

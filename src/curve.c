@@ -78,8 +78,16 @@ void cs_offer_point(cs_coll *k, vec3 p, double t, const cd_circle *c, int disk, 
     if (tmp.n == 0) return;
     const cd_cand *x = &tmp.c[0];
     vec3 kp = v_add(x->p[1], c->c);
-    if (swap) cs_coll_offer(k, x->d2, kp, p, x->param[1], t, tmp.equidistant);
-    else cs_coll_offer(k, x->d2, p, kp, t, x->param[1], tmp.equidistant);
+    int eq = tmp.equidistant || (!disk && cs_near_axis(k, rel, c));
+    if (swap) cs_coll_offer(k, x->d2, kp, p, x->param[1], t, eq);
+    else cs_coll_offer(k, x->d2, p, kp, t, x->param[1], eq);
+}
+
+int cs_near_axis(const cs_coll *k, vec3 rel, const cd_circle *c)
+{
+    /* Within this distance of the axis the distance to the circle's points varies by less
+     * than the tie tolerance: the closest pairs form a continuum up to rounding. */
+    return c->r > 0.0 && v_norm(v_cross(c->n, rel)) <= CS_AXIS_ULPS * DBL_EPSILON * k->b.scale;
 }
 
 /* ---- the objective ---- */

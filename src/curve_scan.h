@@ -24,6 +24,10 @@ void cs_coll_finish(cs_coll *k);
  * swap puts p second. */
 void cs_offer_point(cs_coll *k, vec3 p, double t, const cd_circle *c, int disk, int swap);
 
+/* rel (relative to c's centre) is on c's axis up to the rounding of the problem's scale. */
+#define CS_AXIS_ULPS 8.0
+int cs_near_axis(const cs_coll *k, vec3 rel, const cd_circle *c);
+
 /* A curve: position and derivative at t, in the scan's frame. Returns CDIST_OK or a status
  * (already recorded with cd_fail). */
 typedef cdist_status (*cs_eval_fn)(cdist_query *q, const void *ctx, double t, vec3 *p, vec3 *dp);
