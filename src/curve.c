@@ -105,23 +105,30 @@ static cdist_status eval(const cs_scan *s, double t, sample *o)
     vec3 P, D;
     cdist_status st = s->ev(s->q, s->ctx, t, &P, &D);
     if (st) return st;
+    /* Plain arithmetic (no fma calls: this is the inner loop); g only needs its sign right
+     * away from its rounding level `tol`, and every offered candidate is re-evaluated by the
+     * accurate point-circle/disk cores. */
     const cd_circle *c = s->c;
+    vec3 n = c->n;
     vec3 rel = v_sub(P, c->c);
-    double h = v_dot(c->n, rel), hd = v_dot(c->n, D);
-    vec3 w = v_cross(c->n, rel), wd = v_cross(c->n, D);
-    double rho = v_norm(w);
+    double h = n.x * rel.x + n.y * rel.y + n.z * rel.z;
+    double hd = n.x * D.x + n.y * D.y + n.z * D.z;
+    vec3 w = v_cross(n, rel), wd = v_cross(n, D);
+    double rho = sqrt(w.x * w.x + w.y * w.y + w.z * w.z);
+    double wwd = w.x * wd.x + w.y * wd.y + w.z * wd.z;
     double dr = rho - c->r;
     if (s->disk) {
         double o2 = dr > 0.0 ? dr : 0.0;
-        o->g = h * hd + (o2 > 0.0 ? o2 * (v_dot(w, wd) / rho) : 0.0);
-        o->f = fma(o2, o2, h * h);
+        o->g = h * hd + (o2 > 0.0 ? o2 * (wwd / rho) : 0.0);
+        o->f = o2 * o2 + h * h;
     } else {
-        o->g = h * hd + (rho > 0.0 ? dr * (v_dot(w, wd) / rho) : 0.0);
-        o->f = fma(dr, dr, h * h);
+        o->g = h * hd + (rho > 0.0 ? dr * (wwd / rho) : 0.0);
+        o->f = dr * dr + h * h;
     }
     o->p = P;
     o->rho = rho;
-    o->tol = 32.0 * DBL_EPSILON * (v_norm(rel) + c->r + s->frame_mag) * v_norm(D);
+    double rn = fabs(rel.x) + fabs(rel.y) + fabs(rel.z), dn = fabs(D.x) + fabs(D.y) + fabs(D.z);
+    o->tol = 32.0 * DBL_EPSILON * (rn + c->r + s->frame_mag) * dn;
     return CDIST_OK;
 }
 
