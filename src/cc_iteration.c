@@ -1,6 +1,161 @@
-/* Circle-circle by geometric iteration (Li, Wu, Wang, Zhang 2015). */
-#include "stub.h"
+/* Circle-circle by geometric iteration (Li, Wu, Wang, Zhang 2015; English summary in
+ * ../shared/refs/README.md).
+ *
+ * Algorithm 1 (axes not parallel): alternate orthogonal projections point -> C0 -> C1 -> C0 ...
+ * Each projection cannot increase the distance between the current pair, so the distance
+ * decreases monotonically to a fixed point, which is a critical pair (each point is the
+ * foot of the other). The paper does the projection onto C1 in C1's own frame (its transforms
+ * (1)/(2)); here both projections are done in vector form (closed-form point-circle projection
+ * with |N x Delta|), which is the same map. Algorithm 2 (parallel axes) is the same alternating
+ * projection with both projections in C0's frame: in vector form it is identical, so one loop
+ * serves both; for exactly parallel planes the paper's closed forms of §2.3 (separated,
+ * overlapping: two pairs at distance |pz|, contained) are used instead (shared with the
+ * polynomial method: cd_cc_parallel_candidates), and §2.4 (coincident axes: every pair
+ * closest, distance sqrt((R1 - R)^2 + pz^2), equidistant) by cd_cc_closed_form. Remark 1
+ * (perpendicular axes meeting with the centre of C1 on C0's axis) is a case of meeting axes
+ * handled below.
+ *
+ * Guards:
+ * - Stopping: an iteration stops when the point on C0 moves by at most CC_ITER_TOL * L, when
+ *   the distance stops decreasing (the paper's rule), or after q->max_iterations iterations.
+ * - Non-global fixed points: eight starts (four evenly spread points of each circle), then
+ *   a final check of F on 16 evenly spread angles of C0; a sample below every fixed point found
+ *   starts one more iteration.
+ * - Linear (and, near tangency, sublinear) convergence: every distinct fixed point is finished
+ *   by safeguarded Newton on the true distance F(theta) (cd_cc_polish), so the answer is exact
+ *   to a few ulps whatever the iteration's tolerance.
+ * - Axes that meet: the paper reflects the C0 point about the plane through both axes and
+ *   iterates again for the second pair; here the reflected point is polished directly, so both
+ *   symmetric pairs come out equally accurate.
+ * The iteration count reported is that of the start which produced the reported pair (<= the
+ * cap); closed forms report 0. */
+#include <math.h>
+
+#include "internal.h"
+
+#define CC_ITER_TOL 1e-9
+#define CC_STARTS 8
+#define CC_CHECKS 16
+
+/* Orthogonal projection of x (relative to the origin = c0's centre) onto circle c centred at
+ * cc. On the axis every point is a foot; the basis direction u is taken. */
+static vec3 project(const cd_circle *c, vec3 cc, vec3 x)
+{
+    vec3 d = v_sub(x, cc);
+    vec3 nd = v_cross(c->n, d);
+    double rho = v_norm(nd);
+    vec3 w = rho > 0.0 ? v_scale(c->r / rho, v_cross(nd, c->n)) : v_scale(c->r, c->u);
+    return v_add(cc, w);
+}
+
+/* Alternating projection starting from the point x1 of c1. Returns the angle of the final
+ * point of c0 and the number of iterations. */
+static double iterate(const cd_cc *g, vec3 x1, int cap, int *count)
+{
+    const cd_circle *c0 = g->c[0], *c1 = g->c[1];
+    vec3 zero = v3(0, 0, 0);
+    vec3 k0 = project(c0, zero, x1);
+    double d2 = INFINITY;
+    int k = 0;
+    while (k < cap) {
+        k++;
+        vec3 p1 = project(c1, g->D, k0);
+        vec3 k0n = project(c0, zero, p1);
+        double d2n = v_sqr(v_sub(k0n, p1));
+        double move = v_norm(v_sub(k0n, k0));
+        int stop = move <= CC_ITER_TOL * g->L || !(d2n < d2);
+        if (d2n <= d2) k0 = k0n;
+        d2 = fmin(d2, d2n);
+        if (stop) break;
+    }
+    *count = k;
+    double a = cd_circle_angle(c0, k0);
+    return isnan(a) ? 0.0 : a;
+}
+
+typedef struct fixed_pt {
+    double t, F;
+    int iters;
+} fixed_pt;
+
 cdist_status cd_cc_iteration(cdist_query *q, const cd_circle *c0, const cd_circle *c1, cd_best *b, int *iterations)
 {
-    return cd_fail(q, CDIST_ERR_INTERNAL, "circle-circle iteration method is not implemented yet");
+    cd_cc g = {{c0, c1}, c1->c, b->scale};
+    int dummy;
+    if (!iterations) iterations = &dummy;
+    *iterations = 0;
+    if (cd_cc_closed_form(&g, b)) return CDIST_OK; /* points; §2.4 coincident axes */
+    double sn = v_norm(v_cross(c0->n, c1->n));
+    if (sn <= 1e-13) { /* §2.3: parallel axes, closed forms, polished */
+        double t0[4];
+        int k = cd_cc_parallel_candidates(&g, t0);
+        for (int i = 0; i < k; i++) {
+            double F;
+            cd_cc_offer(&g, 0, cd_cc_polish(&g, 0, t0[i], &F), b);
+        }
+        return CDIST_OK;
+    }
+    int cap = q->max_iterations > 0 ? q->max_iterations : CD_DEFAULT_MAX_ITERATIONS;
+    fixed_pt fp[CC_STARTS + 4 + 2 * (CC_STARTS + 4)];
+    int nf = 0;
+    double best = INFINITY;
+    for (int s = 0; s < CC_STARTS + 4; s++) {
+        vec3 x1;
+        double a;
+        if (s < 4) { /* a point of c1 */
+            a = 0.5 * M_PI * s;
+            x1 = v_add(c1->c, v_axpy(v_scale(c1->r * cos(a), c1->u), c1->r * sin(a), c1->v));
+        } else if (s < 8) { /* a point of c0, first projected onto c1 */
+            a = 0.25 * M_PI + 0.5 * M_PI * (s - 4);
+            x1 = project(c1, g.D, v_axpy(v_scale(c0->r * cos(a), c0->u), c0->r * sin(a), c0->v));
+        } else if (s == 8) {
+            /* the final check: the lowest of CC_CHECKS samples of F on c0, if it is below every
+             * fixed point found (a basin no start reached) */
+            double Fs = INFINITY, ts = 0.0;
+            for (int i = 0; i < CC_CHECKS; i++) {
+                double t = -M_PI + (2.0 * M_PI / CC_CHECKS) * (i + 0.5);
+                double F = cd_cc_eval(&g, 0, t, NULL, NULL, NULL, NULL);
+                if (F < Fs) Fs = F, ts = t;
+            }
+            if (!(Fs < best)) break;
+            x1 = project(c1, g.D, v_axpy(v_scale(c0->r * cos(ts), c0->u), c0->r * sin(ts), c0->v));
+        } else {
+            break;
+        }
+        int cnt;
+        double t = iterate(&g, x1, cap, &cnt);
+        double F;
+        /* distinct fixed points only */
+        int dup = -1;
+        for (int i = 0; i < nf; i++) {
+            double dt = fabs(remainder(t - fp[i].t, 2.0 * M_PI));
+            if (dt <= 1e-7) dup = i;
+        }
+        if (dup >= 0) continue;
+        t = cd_cc_polish(&g, 0, t, &F);
+        fp[nf].t = t, fp[nf].F = F, fp[nf].iters = cnt, nf++;
+        if (F < best) best = F;
+    }
+    /* Axes meeting: the mirror image of every near-best pair (the paper's second pair). */
+    vec3 m;
+    if (cd_cc_mirror(&g, &m)) {
+        int n0 = nf;
+        double margin = 1e-3 * best + 1e-6 * g.L * g.L;
+        for (int i = 0; i < n0; i++) {
+            if (!(fp[i].F <= best + margin)) continue;
+            vec3 p = v_axpy(v_scale(cos(fp[i].t), c0->u), sin(fp[i].t), c0->v);
+            p = v_axpy(p, -2.0 * v_dot(p, m), m);
+            double a = cd_circle_angle(c0, p), F;
+            if (isnan(a)) continue;
+            a = cd_cc_polish(&g, 0, a, &F);
+            fp[nf].t = a, fp[nf].F = F, fp[nf].iters = fp[i].iters, nf++;
+        }
+    }
+    int ib = 0;
+    for (int i = 0; i < nf; i++) {
+        cd_cc_offer(&g, 0, fp[i].t, b);
+        if (fp[i].F < fp[ib].F) ib = i;
+    }
+    *iterations = nf ? fp[ib].iters : 0;
+    return CDIST_OK;
 }

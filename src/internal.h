@@ -132,4 +132,29 @@ int cd_circle_circle_critical(cdist_query *q, const cd_circle *c0, const cd_circ
 cdist_status cd_circle_disk_core(cdist_query *q, cdist_method method, const cd_circle *c, const cd_circle *d,
                                  cd_best *b);
 
+/* ---- cc_methods block: helpers shared by cd_cc_polynomial and cd_cc_iteration (defined in
+ * src/cc_poly.c). c0 is at the origin, c1 at D. "side" s moves a point on circle s and measures
+ * its closed-form distance to the other circle: F_s(t) = dist^2(c_s(t), c_{1-s}). ---- */
+typedef struct cd_cc {
+    const cd_circle *c[2];
+    vec3 D;   /* c1 centre relative to c0 centre */
+    double L; /* problem scale */
+} cd_cc;
+/* F_s(t) with F' and F'' (either may be NULL); P, K (may be NULL): the moving point relative to
+ * its own centre and the closest point of the other circle relative to that circle's centre. */
+double cd_cc_eval(const cd_cc *g, int side, double t, double *f1, double *f2, vec3 *P, vec3 *K);
+/* Safeguarded Newton on F_s' from t; returns the polished angle and writes F there. */
+double cd_cc_polish(const cd_cc *g, int side, double t, double *F);
+/* Offer the pair at angle t of side s (evaluated on the true distance). */
+void cd_cc_offer(const cd_cc *g, int side, double t, cd_best *b);
+/* Zero radius and coaxial circles, answered in closed form: returns 1 when b is complete. */
+int cd_cc_closed_form(const cd_cc *g, cd_best *b);
+/* Candidate angles on c0 for (nearly) parallel planes (Eberly 5.1-5.2, Li et al. 2.3);
+ * returns the count (<= 4). */
+int cd_cc_parallel_candidates(const cd_cc *g, double *t0);
+/* When the axes meet (within a loose tolerance), the unit normal m of the mirror plane through
+ * both axes; returns 0 otherwise. */
+int cd_cc_mirror(const cd_cc *g, vec3 *m);
+/* ---- end of cc_methods block ---- */
+
 #endif
