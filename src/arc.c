@@ -23,11 +23,14 @@
  *    circle point lies in the arc's range. Those minima satisfy (distance-to-circles-3d eq. 6)
  *    Delta.M = r (N x Delta).(N x M)/|N x Delta|, so |Delta(s).M/|M|| <= r: they lie within
  *    r/|M| of the foot of the perpendicular from the centre, and only that window is sampled.
- *  - arc-disk: the generic curve-disk engine with the arc as the curve.
+ *  - arc-disk: the endpoints, the critical angles of the distance to the rim circle and the
+ *    closed-form angles where the height over the plane or its derivative vanishes (see
+ *    arc_minima).
  * The interior critical angles come from cd_circle_circle_critical (the circle-circle family)
  * when it provides them (it returns 0 when unavailable: a smooth periodic function always has at
- * least two critical angles), each polished on the true derivative; otherwise, and for the disk,
- * from the sampling engine of src/curve.c over the arc's range. */
+ * least two critical angles), each polished on the true derivative; otherwise (a constant
+ * function, parallel planes for the disk) from the sampling engine of src/curve.c over the
+ * arc's range, which also detects the continuum of closest pairs. */
 #include <math.h>
 #include <stdio.h>
 
@@ -153,38 +156,66 @@ static void cand_arc(const cs_scan *s, double t, vec3 p)
     offer_point_arc(s->k, p, t, cx->target, cx->scanned_first, 0);
 }
 
+/* Polish the candidate at arc angle a (any representative modulo 2 pi) if it falls in X's
+ * range. */
+static cdist_status polish_in_range(cs_scan *s, const arcx *X, double a)
+{
+    double k = fmod(a - X->start, TWO_PI);
+    if (k < 0.0) k += TWO_PI;
+    double m = X->start + k;
+    if (!(m <= X->end)) return CDIST_OK;
+    return cs_polish(s, m, X->start, X->end);
+}
+
 /* Every minimum of theta -> dist^2(X(theta), circle or disk Y) over X's range, handed to the
  * scan's candidate callback (s->cand, or the default offer). Uses the circle-circle critical
- * angles when available (circle targets only), else samples. *exact says which. */
+ * angles when available, else samples. *exact says which.
+ * Disk: D = h^2 + max(rho - r, 0)^2 is C^1 (see src/curve.c), so an interior minimum has
+ * D' = 0: either rho > r there and it is a critical angle of the distance to the rim circle,
+ * or rho <= r and h h' = 0 with h(a) = hc + A cos a + B sin a (closed form: h' = 0 at
+ * atan2(B, A) and opposite, h = 0 at atan2(B, A) +- acos(-hc / hypot(A, B))). Every such angle
+ * is polished on the true D' and evaluated on the true distance, so the ones that fall in the
+ * other region are merely extra candidates. */
 static cdist_status arc_minima(cs_scan *s, const arcx *X, const cd_circle *Y, int *exact)
 {
     cdist_query *q = s->q;
+    cdist_status st;
     s->ev = arc_eval;
     s->ctx = X;
     s->c = Y;
     s->frame_mag = fmax(v_norm(X->c.c), v_norm(Y->c));
     *exact = 0;
-    if (!s->disk && X->end > X->start) {
+    if (X->end > X->start) {
         double th[CRIT_CAP];
         cd_circle c0 = X->c, c1 = *Y;
         c1.c = v_sub(Y->c, X->c.c);
         c0.c = v3(0, 0, 0);
         int n = cd_circle_circle_critical(q, &c0, &c1, th, CRIT_CAP);
-        if (n > 0) {
+        double A = 0.0, B = 0.0, hc = 0.0, R = 0.0;
+        if (s->disk) {
+            A = X->c.r * v_dot(Y->n, X->U);
+            B = X->c.r * v_dot(Y->n, X->V);
+            hc = v_dot(Y->n, v_sub(X->c.c, Y->c));
+            R = hypot(A, B);
+        }
+        /* n == 0 (unavailable) or -1 (constant: the sampled scan sees a flat function, offers
+         * it everywhere and the ties mark the continuum); for the disk also parallel planes
+         * (h constant). */
+        if (n > 0 && (!s->disk || R > 4.0 * DBL_EPSILON * X->c.r)) {
             *exact = 1;
-            for (int i = 0; i < n; i++) {
-                /* th is in c0's library basis; the arc's angle 0 is U at library angle phi0. */
-                double k = fmod(th[i] - X->phi0 - X->start, TWO_PI);
-                if (k < 0.0) k += TWO_PI;
-                double a = X->start + k;
-                if (!(a <= X->end)) continue;
-                cdist_status st = cs_polish(s, a, X->start, X->end);
-                if (st) return st;
+            /* th is in c0's library basis; the arc's angle 0 is U at library angle phi0. */
+            for (int i = 0; i < n; i++)
+                if ((st = polish_in_range(s, X, th[i] - X->phi0))) return st;
+            if (s->disk) {
+                double phi = atan2(B, A);
+                if ((st = polish_in_range(s, X, phi)) || (st = polish_in_range(s, X, phi + M_PI))) return st;
+                if (fabs(hc) <= R) {
+                    double w = acos(-hc / R);
+                    if ((st = polish_in_range(s, X, phi + w)) || (st = polish_in_range(s, X, phi - w))) return st;
+                }
             }
             return CDIST_OK;
         }
-        /* n == 0 (unavailable) or -1 (constant: the sampled scan sees a flat function, offers
-         * it everywhere and the ties mark the continuum). */
     }
     return cs_scan_run(s, X->start, X->end, q->curve_samples);
 }
@@ -287,6 +318,28 @@ static cdist_status seg_eval(cdist_query *q, const void *ctx, double t, vec3 *p,
     return CDIST_OK;
 }
 
+/* Critical points of s -> dist^2(p0 + s m, circle c) (c->c the origin) as roots of the quartic
+ * of distance-to-circles-3d eq. (8), H = |N x D|^2 (D.D')^2 - r^2 ((N x D).(N x D'))^2, in the
+ * variable t = s - foot (foot: the point nearest the centre, so that D.D' is small there and the
+ * coefficients do not cancel). Squaring adds extraneous roots, which the caller polishes on the
+ * true derivative like every other root. Returns the count, or -1 when the quartic is degenerate
+ * (the segment on the axis: H == 0) or the solver failed. */
+static int seg_circle_quartic(cdist_query *q, const seg_x *S, double foot, const cd_circle *c, double *roots)
+{
+    vec3 B = v_axpy(S->p0, foot, S->m), M = S->m;
+    vec3 P0 = v_cross(c->n, B), P1 = v_cross(c->n, M);
+    double a0 = v_dot(B, M), a1 = v_dot(M, M);
+    double p0 = v_dot(P0, P0), p01 = v_dot(P0, P1), p11 = v_dot(P1, P1), r2 = c->r * c->r;
+    double coef[5] = {p0 * a0 * a0 - r2 * p01 * p01,
+                      2.0 * p0 * a0 * a1 + 2.0 * p01 * a0 * a0 - 2.0 * r2 * p01 * p11,
+                      p0 * a1 * a1 + 4.0 * p01 * a0 * a1 + p11 * a0 * a0 - r2 * p11 * p11,
+                      2.0 * p01 * a1 * a1 + 2.0 * p11 * a0 * a1, p11 * a1 * a1};
+    int n = cd_poly_real_roots(q->poly, coef, 4, 1e-6, roots);
+    if (n < 0) return -1;
+    for (int i = 0; i < n; i++) roots[i] += foot;
+    return n;
+}
+
 cdist_status cdist_segment_arc(cdist_query *q, const cdist_segment *sg, const cdist_arc *a, cdist_result *r)
 {
     cdist_status st = cd_check_handle(q, r);
@@ -323,7 +376,16 @@ cdist_status cdist_segment_arc(cdist_query *q, const cdist_segment *sg, const cd
         if (lo <= hi) {
             cand_arc_ctx ca = {&A, 1};
             cs_scan s = {q, seg_eval, &S, &A.c, 0, &k, cand_arc, &ca, 0, 0.0, fmax(v_norm(S.p0), v_norm(S1))};
-            if ((st = cs_scan_run(&s, lo, hi, q->curve_samples))) return st;
+            double roots[4];
+            int n = seg_circle_quartic(q, &S, foot, &A.c, roots);
+            if (n >= 0) {
+                for (int i = 0; i < n; i++) {
+                    if (!(roots[i] >= lo && roots[i] <= hi)) continue;
+                    if ((st = cs_polish(&s, roots[i], lo, hi))) return st;
+                }
+            } else if ((st = cs_scan_run(&s, lo, hi, q->curve_samples))) {
+                return st;
+            }
         }
     }
     cs_coll_finish(&k);

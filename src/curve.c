@@ -31,7 +31,9 @@
  *    over the two intervals by golden section; if it crosses zero, the bracket it makes is
  *    refined as above (same at the two ends, with the one interval there);
  *  - sampled local minima of F are offered as a last safety net (an upper bound within F'' h^2);
- *  - for the disk, sign changes of rho - r are bisected and offered (partition points).
+ *  - for the disk, sign changes of rho - r are bisected and offered (partition points);
+ *  - for the circle, the closest approaches to the axis that may reach it between samples are
+ *    located (golden section on rho) and offered: the non-smooth points of F.
  * Limitation (documented in docs/curves.md): roots are bounded only up to the sample spacing:
  * two minima closer than about one sample interval can merge, and a minimum hidden in a pair of
  * critical points inside one interval is found only when the extremum search detects it.
@@ -96,8 +98,9 @@ typedef struct sample {
     vec3 p;     /* position (the scan's frame) */
     double g;   /* F'/2 (or D'/2) */
     double f;   /* F (or D) */
-    double rho; /* distance from the axis */
-    double tol; /* rounding level of g */
+    double rho;   /* distance from the axis */
+    double tol;   /* rounding level of g */
+    double speed; /* |P'| (1-norm) */
 } sample;
 
 static cdist_status eval(const cs_scan *s, double t, sample *o)
@@ -129,6 +132,7 @@ static cdist_status eval(const cs_scan *s, double t, sample *o)
     o->rho = rho;
     double rn = fabs(rel.x) + fabs(rel.y) + fabs(rel.z), dn = fabs(D.x) + fabs(D.y) + fabs(D.z);
     o->tol = 32.0 * DBL_EPSILON * (rn + c->r + s->frame_mag) * dn;
+    o->speed = dn;
     return CDIST_OK;
 }
 
@@ -283,6 +287,33 @@ static cdist_status partition_offer(const cs_scan *s, double a, double da, doubl
     return offer_at(s, a);
 }
 
+/* The curve's closest approach to the circle's axis in [a, b] (golden section on rho), offered:
+ * where the curve crosses the axis F has a kink, and in a flat configuration the kink rounded by
+ * a near miss is a dip as narrow as the miss distance, invisible to the samples. */
+static cdist_status axis_offer(const cs_scan *s, double a, double b)
+{
+    const double gr = 0.6180339887498949;
+    double x1 = b - gr * (b - a), x2 = a + gr * (b - a);
+    sample s1, s2;
+    cdist_status st;
+    if ((st = eval(s, x1, &s1)) || (st = eval(s, x2, &s2))) return st;
+    for (int it = 0; it < 120; it++) {
+        if (b - a <= 2.0 * DBL_EPSILON * (fabs(a) + fabs(b)) + 0.25 * DBL_EPSILON * s->span) break;
+        if (s1.rho < s2.rho) {
+            b = x2; x2 = x1; s2 = s1;
+            x1 = b - gr * (b - a);
+            if ((st = eval(s, x1, &s1))) return st;
+        } else {
+            a = x1; x1 = x2; s1 = s2;
+            x2 = a + gr * (b - a);
+            if ((st = eval(s, x2, &s2))) return st;
+        }
+    }
+    if (s1.rho < s2.rho) offer_sample(s, x1, &s1);
+    else offer_sample(s, x2, &s2);
+    return CDIST_OK;
+}
+
 static double t_at(double t0, double t1, int i, int n)
 {
     if (i == n) return t1;
@@ -336,6 +367,14 @@ cdist_status cs_scan_run(cs_scan *s, double t0, double t1, int n)
                 double a = t_at(t0, t1, i == 0 ? 0 : n - 1, n), b = t_at(t0, t1, i == 0 ? 1 : n, n);
                 if ((st = dip_search(s, a, b, sg))) return st;
             }
+        }
+        /* A sampled closest approach to the axis that may reach it between samples. */
+        if (!s->disk && s->c->r > 0.0 && i > 0 && i < n && R[i] <= R[i - 1] && R[i] <= R[i + 1]) {
+            sample x;
+            if ((st = eval(s, t, &x))) return st;
+            if (x.rho <= 2.0 * x.speed * (s->span / n) &&
+                (st = axis_offer(s, t_at(t0, t1, i - 1, n), t_at(t0, t1, i + 1, n))))
+                return st;
         }
         /* Safety net: a sampled local minimum of F. */
         if (i > 0 && i < n && Fv[i] <= Fv[i - 1] && Fv[i] <= Fv[i + 1] && (st = offer_at(s, t))) return st;

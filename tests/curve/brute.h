@@ -140,4 +140,42 @@ static inline ld bf_min1d(bf_fn f, const void *ctx, ld t0, ld t1, int n)
     return best;
 }
 
+/* Distance from p to the axis of circle c. */
+static inline ld bf_axis_dist(lv p, const bf_circle *c) { return lv_norm(lv_cross(c->n, lv_sub(p, c->c))); }
+
+/* Where the curve passes (nearly) through a circle's axis, the distance to the circle can have a
+ * dip as narrow as the closest approach (the kink -2 r rho of F rounded off: depth ~ 2 r rho_min,
+ * width ~ rho_min / speed), far too narrow for sampling when the rest of F is flat (e.g. a
+ * circle through the other's centre, linked so that F is constant in exact arithmetic). So:
+ * find every local minimum of rho(t) (sampling + golden section; rho is V-shaped, not narrow),
+ * and minimise f by golden section in a window of a few rho_min / speed around it. */
+static inline ld bf_axis_dips(bf_fn f, bf_fn rho, const void *ctx, ld t0, ld t1, int n, ld speed)
+{
+    ld best = INFINITY;
+    if (!(t0 < t1)) return best;
+    ld prev2 = 0, prev = rho(ctx, t0);
+    for (int i = 1; i <= n; i++) {
+        ld t = (i == n) ? t1 : t0 + (t1 - t0) * i / n;
+        ld cur = rho(ctx, t);
+        if ((i == 1 && prev <= cur) || (i > 1 && prev <= prev2 && prev <= cur)) {
+            ld a = t0 + (t1 - t0) * (i - 2 < 0 ? 0 : i - 2) / n, b = t;
+            /* golden section on rho, keeping the location */
+            const ld gr = 0.61803398874989484820458683436563811772L;
+            ld x1 = b - gr * (b - a), x2 = a + gr * (b - a), f1 = rho(ctx, x1), f2 = rho(ctx, x2);
+            for (int k = 0; k < 120; k++) {
+                if (f1 < f2) { b = x2; x2 = x1; f2 = f1; x1 = b - gr * (b - a); f1 = rho(ctx, x1); }
+                else { a = x1; x1 = x2; f1 = f2; x2 = a + gr * (b - a); f2 = rho(ctx, x2); }
+            }
+            ld ta = f1 < f2 ? x1 : x2, rmin = fminl(f1, f2);
+            ld w = 20 * rmin / speed + 1e-18L * (fabsl(ta) + 1);
+            ld lo = fmaxl(t0, ta - w), hi = fminl(t1, ta + w);
+            best = fminl(best, f(ctx, ta));
+            if (lo < hi) best = fminl(best, bf_golden(f, ctx, lo, hi));
+        }
+        prev2 = prev;
+        prev = cur;
+    }
+    return best;
+}
+
 #endif

@@ -3,6 +3,7 @@
  * the other circle's closest pair cut out of the arc, coplanar, concentric, coaxial, full and
  * zero-length arcs), symmetry, params and pairs, and bad input. */
 #include <float.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "brute.h"
@@ -11,6 +12,7 @@
 
 static cdist_query *q;
 static double worst_err[4];
+static int worst_id[4];
 static const char *kind_name[4] = {"arc-circle", "arc-arc", "segment-arc", "arc-disk"};
 
 /* ---- brute-force objective functions ---- */
@@ -32,14 +34,29 @@ static ld f_seg_arc(const void *p, ld s)
 }
 static ld f_arc_seg(const void *p, ld t) { const bf_ctx *x = p; return bf_point_segment(bf_arc_point(&x->a, t), x->s0, x->s1); }
 
-#define NS 8192
+/* Samples of the brute force: constructed cases have flat distance functions with narrow dips
+ * (an arc passing the other circle's centre: a dip of 3e-14 of scale a few 1e-4 wide), so they
+ * get many more. */
+static int NS = 8192;
+
+/* distances to the other object's axis, for the narrow dips (brute.h bf_axis_dips) */
+static ld r_arc_c(const void *p, ld t) { const bf_ctx *x = p; return bf_axis_dist(bf_arc_point(&x->a, t), &x->c); }
+static ld r_arc_b(const void *p, ld t) { const bf_ctx *x = p; return bf_axis_dist(bf_arc_point(&x->a, t), &x->b.c); }
+static ld r_b_arc(const void *p, ld t) { const bf_ctx *x = p; return bf_axis_dist(bf_arc_point(&x->b, t), &x->a.c); }
+static ld r_seg_a(const void *p, ld s)
+{
+    const bf_ctx *x = p;
+    return bf_axis_dist(lv_add(x->s0, lv_scale(s, lv_sub(x->s1, x->s0))), &x->a.c);
+}
 
 static ld bf_arc_circle(const cdist_arc *a, const cdist_circle *c, int disk)
 {
     bf_ctx x;
     x.a = bf_arc_of(a);
     x.c = bf_circ(*c);
-    return bf_min1d(disk ? f_arc_disk : f_arc_circle, &x, x.a.a0, x.a.a1, NS);
+    ld d = bf_min1d(disk ? f_arc_disk : f_arc_circle, &x, x.a.a0, x.a.a1, NS);
+    if (!disk) d = fminl(d, bf_axis_dips(f_arc_circle, r_arc_c, &x, x.a.a0, x.a.a1, 2048, x.a.c.r));
+    return d;
 }
 
 static ld bf_arc_arc(const cdist_arc *a, const cdist_arc *b)
@@ -47,7 +64,9 @@ static ld bf_arc_arc(const cdist_arc *a, const cdist_arc *b)
     bf_ctx x;
     x.a = bf_arc_of(a);
     x.b = bf_arc_of(b);
-    return fminl(bf_min1d(f_arc_arc, &x, x.a.a0, x.a.a1, NS), bf_min1d(f_arc_arc_rev, &x, x.b.a0, x.b.a1, NS));
+    ld d = fminl(bf_min1d(f_arc_arc, &x, x.a.a0, x.a.a1, NS), bf_min1d(f_arc_arc_rev, &x, x.b.a0, x.b.a1, NS));
+    d = fminl(d, bf_axis_dips(f_arc_arc, r_arc_b, &x, x.a.a0, x.a.a1, 2048, x.a.c.r));
+    return fminl(d, bf_axis_dips(f_arc_arc_rev, r_b_arc, &x, x.b.a0, x.b.a1, 2048, x.b.c.r));
 }
 
 static ld bf_seg_arc(const cdist_segment *s, const cdist_arc *a)
@@ -56,7 +75,8 @@ static ld bf_seg_arc(const cdist_segment *s, const cdist_arc *a)
     x.a = bf_arc_of(a);
     x.s0 = lv_of(s->p0);
     x.s1 = lv_of(s->p1);
-    return fminl(bf_min1d(f_seg_arc, &x, 0, 1, NS), bf_min1d(f_arc_seg, &x, x.a.a0, x.a.a1, NS));
+    ld d = fminl(bf_min1d(f_seg_arc, &x, 0, 1, NS), bf_min1d(f_arc_seg, &x, x.a.a0, x.a.a1, NS));
+    return fminl(d, bf_axis_dips(f_seg_arc, r_seg_a, &x, 0, 1, 2048, lv_norm(lv_sub(x.s1, x.s0))));
 }
 
 /* ---- result checks ---- */
@@ -86,7 +106,15 @@ static void check_result(int kind, int id, cdist_status st, const cdist_result *
     CHECK(st == CDIST_OK, "%s case %d: status %s: %s", what, id, cdist_status_name(st), cdist_query_last_error(q));
     if (st) return;
     double err = (double)(fabsl((ld)r->distance - ref) / L);
-    if (err > worst_err[kind]) worst_err[kind] = err;
+    if (err > worst_err[kind]) {
+        worst_err[kind] = err;
+        worst_id[kind] = id;
+    }
+    if (getenv("ARC_DEBUG") && atoi(getenv("ARC_DEBUG")) == id && kind == 0)
+        printf("ac %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g  %.17g %.17g %.17g %.17g %.17g %.17g %.17g\n",
+               a0->circle.center.x, a0->circle.center.y, a0->circle.center.z, a0->circle.normal.x, a0->circle.normal.y,
+               a0->circle.normal.z, a0->circle.radius, a0->zero_direction.x, a0->zero_direction.y, a0->zero_direction.z,
+               a0->start, a0->end, c->center.x, c->center.y, c->center.z, c->normal.x, c->normal.y, c->normal.z, c->radius);
     CHECK(err <= 1e-12, "%s case %d: distance %.17g brute force %.20Lg error %.3g of scale %.3g", what, id, r->distance,
           ref, err, L);
     CHECK(r->num_pairs >= 1 && r->num_pairs <= 2, "%s case %d: num_pairs %d", what, id, r->num_pairs);
@@ -168,14 +196,35 @@ static cdist_circle rand_circle(double scale)
     return c;
 }
 
+/* p moved into the plane of circle c (long double projection, rounded). */
+static cdist_vec3 into_plane(cdist_vec3 p, const cdist_circle *c)
+{
+    lv n = lv_unit(lv_of(c->normal));
+    lv d = lv_sub(lv_of(p), lv_of(c->center));
+    lv o = lv_sub(lv_of(p), lv_scale(lv_dot(n, d), n));
+    return tv((double)o.x, (double)o.y, (double)o.z);
+}
+
 static void random_cases(void)
 {
-    for (int i = 0; i < 300; i++) {
+    for (int i = 0; i < 200; i++) {
         cdist_arc a = rand_arc(1.0), b = rand_arc(1.0);
         cdist_circle c = rand_circle(1.0);
+        cdist_segment s = {tv(2 * srand1(), 2 * srand1(), 2 * srand1()), tv(2 * srand1(), 2 * srand1(), 2 * srand1())};
+        if (i % 4 == 1) { /* coplanar objects: crossings, tangencies, two symmetric minima */
+            c.normal = a.circle.normal;
+            c.center = into_plane(c.center, &a.circle);
+            b.circle.normal = a.circle.normal;
+            b.circle.center = into_plane(b.circle.center, &a.circle);
+            s.p0 = into_plane(s.p0, &a.circle);
+            s.p1 = into_plane(s.p1, &a.circle);
+        }
+        if (i % 4 == 2) { /* parallel planes */
+            c.normal = a.circle.normal;
+            b.circle.normal = a.circle.normal;
+        }
         run_arc_circle(i, &a, &c);
         run_arc_arc(i, &a, &b);
-        cdist_segment s = {tv(2 * srand1(), 2 * srand1(), 2 * srand1()), tv(2 * srand1(), 2 * srand1(), 2 * srand1())};
         run_seg_arc(i, &s, &a);
     }
 }
@@ -191,6 +240,7 @@ static cdist_arc xarc(const trot *R, double sc, cdist_vec3 t, cdist_circle c, cd
 static void constructed_cases(void)
 {
     int id = 1000;
+    NS = 16384;
     cdist_result r;
     for (int rep = 0; rep < 12; rep++) {
         trot R = rand_rotation();
@@ -240,7 +290,8 @@ static void constructed_cases(void)
         /* Coaxial circle: every arc point equidistant. */
         cdist_circle coax = xform_circle(&R, sc, t, (cdist_circle){tv(0, 0, 0.5), tv(0, 0, 1), 1.5});
         run_arc_circle(id++, &small1, &coax);
-        CHECK(cdist_arc_circle(q, &small1, &coax, &r) == CDIST_OK && r.equidistant, "coaxial equidistant");
+        CHECK(cdist_arc_circle(q, &small1, &coax, &r) == CDIST_OK && (r.equidistant || !symmetric),
+              "rep %d: coaxial equidistant", rep);
         /* Full and zero-length arcs. */
         cdist_arc full = xarc(&R, sc, t, unit, tv(0.3, 0.4, 0.2), -M_PI, M_PI);
         run_arc_circle(id++, &full, &tilted);
@@ -335,7 +386,7 @@ int main(void)
     random_cases();
     constructed_cases();
     bad_input();
-    for (int k = 0; k < 4; k++) printf("%s: max error %.3g of scale\n", kind_name[k], worst_err[k]);
+    for (int k = 0; k < 4; k++) printf("%s: max error %.3g of scale (case %d)\n", kind_name[k], worst_err[k], worst_id[k]);
     cdist_query_free(q);
     return check_summary("arc");
 }
