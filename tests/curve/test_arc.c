@@ -324,6 +324,63 @@ static void constructed_cases(void)
     }
 }
 
+/* Exactly representable degenerate configurations with known answers. */
+static void exact_cases(void)
+{
+    cdist_result r;
+    cdist_arc full = {{tv(0, 0, 0), tv(0, 0, 1), 1}, tv(1, 0, 0), -M_PI, M_PI};
+    /* A circle through the arc circle's centre, linked: every arc point is at distance 1. */
+    cdist_circle linked = {tv(1, 0, 0), tv(0, 1, 0), 1};
+    CHECK(cdist_arc_circle(q, &full, &linked, &r) == CDIST_OK && fabs(r.distance - 1) <= 4e-16 && r.equidistant,
+          "linked constant distance: %.17g eq %d", r.distance, r.equidistant);
+    cdist_arc part = full;
+    part.start = 0.5;
+    part.end = 2.0;
+    CHECK(cdist_arc_circle(q, &part, &linked, &r) == CDIST_OK && fabs(r.distance - 1) <= 4e-16 && r.equidistant,
+          "linked constant distance, part: %.17g eq %d", r.distance, r.equidistant);
+    /* Arc parallel to a disk above its face: distance 2, a continuum. */
+    cdist_arc high = {{tv(0.2, 0, 2), tv(0, 0, 1), 0.5}, tv(0, 1, 0), 0, 1};
+    cdist_circle disk = {tv(0, 0, 0), tv(0, 0, -1), 1};
+    CHECK(cdist_arc_disk(q, &high, &disk, &r) == CDIST_OK && r.distance == 2 && r.equidistant,
+          "arc over the disk face: %.17g eq %d", r.distance, r.equidistant);
+    /* Arc in the disk's plane, inside: distance 0, a continuum. */
+    cdist_arc in = {{tv(0.2, 0, 0), tv(0, 0, 1), 0.5}, tv(0, 1, 0), 0, 1};
+    CHECK(cdist_arc_disk(q, &in, &disk, &r) == CDIST_OK && r.distance == 0 && r.equidistant,
+          "arc in the disk: %.17g eq %d", r.distance, r.equidistant);
+    /* Arc crossing the disk's plane once inside the disk: distance 0 at one point. */
+    /* (V = N x U = -z here: z = 0.5 - 0.8 sin a, crossing at sin a = 0.625, x = 0.925.) */
+    cdist_arc cross = {{tv(0.3, 0, 0.5), tv(0, 1, 0), 0.8}, tv(1, 0, 0), 0, 1.5};
+    CHECK(cdist_arc_disk(q, &cross, &disk, &r) == CDIST_OK && r.distance <= 2e-16 && !r.equidistant &&
+              r.num_pairs == 1 && fabs(r.pairs[0].param[0] - asin(0.625)) < 1e-15,
+          "arc crossing the disk: %.17g eq %d pairs %d", r.distance, r.equidistant, r.num_pairs);
+    cross.end = 2.5; /* both crossings: two pairs */
+    CHECK(cdist_arc_disk(q, &cross, &disk, &r) == CDIST_OK && r.distance <= 2e-16 && r.num_pairs == 2,
+          "arc crossing the disk twice: %.17g pairs %d", r.distance, r.num_pairs);
+    /* Arc beside the disk, coplanar: the rim distance 1 at angle pi. */
+    cdist_arc beside = {{tv(3, 0, 0), tv(0, 0, 1), 1}, tv(1, 0, 0), 1, 5};
+    CHECK(cdist_arc_disk(q, &beside, &disk, &r) == CDIST_OK && fabs(r.distance - 1) <= 4e-16 &&
+              fabs(r.pairs[0].param[0] - M_PI) < 1e-8,
+          "arc beside the disk: %.17g at %.17g", r.distance, r.pairs[0].param[0]);
+    /* Two arcs of one circle with disjoint ranges: the gap's endpoints, two pairs when the gaps
+     * are equal (angles 1..2 and 3..5 of the unit circle: gaps 1 and 2 - pi + ... ). */
+    cdist_arc a1 = {{tv(0, 0, 0), tv(0, 0, 1), 1}, tv(1, 0, 0), 0, 1};
+    cdist_arc a2 = {{tv(0, 0, 0), tv(0, 0, 1), 1}, tv(1, 0, 0), 2, 2 * M_PI - 1};
+    CHECK(cdist_arc_arc(q, &a1, &a2, &r) == CDIST_OK && fabs(r.distance - 2 * sin(0.5)) <= 1e-15 &&
+              r.num_pairs == 2 && !r.equidistant,
+          "gaps of one circle: %.17g pairs %d", r.distance, r.num_pairs);
+    /* The same arcs overlapping: distance 0, a continuum. */
+    cdist_arc a3 = a2;
+    a3.start = 0.5;
+    CHECK(cdist_arc_arc(q, &a1, &a3, &r) == CDIST_OK && r.distance == 0 && r.equidistant, "overlap: %.17g eq %d",
+          r.distance, r.equidistant);
+    /* Segment along a chord of the arc's circle, arc covering one crossing only. */
+    cdist_segment chord = {tv(-2, 0.5, 0), tv(2, 0.5, 0)};
+    cdist_arc left = {{tv(0, 0, 0), tv(0, 0, 1), 1}, tv(-1, 0, 0), -1, 1};
+    CHECK(cdist_segment_arc(q, &chord, &left, &r) == CDIST_OK && r.distance <= 4e-16 && r.num_pairs == 1 &&
+              fabs(r.pairs[0].point[0].x + sqrt(0.75)) < 1e-15,
+          "chord, one crossing: %.17g pairs %d", r.distance, r.num_pairs);
+}
+
 static void bad_input(void)
 {
     cdist_result r;
@@ -385,6 +442,7 @@ int main(void)
     q = cdist_query_new();
     random_cases();
     constructed_cases();
+    exact_cases();
     bad_input();
     for (int k = 0; k < 4; k++) printf("%s: max error %.3g of scale (case %d)\n", kind_name[k], worst_err[k], worst_id[k]);
     cdist_query_free(q);
