@@ -358,10 +358,11 @@ cdist_status cdist_segment_arc(cdist_query *q, const cdist_segment *sg, const cd
     offer_point_arc(&k, S.p0, 0.0, &A, 1, 1);
     offer_point_arc(&k, S1, 1.0, &A, 1, 1);
     double mm = v_sqr(S.m);
-    /* Arc endpoints to the segment (closed form). */
-    for (int e = 0; e < 2 && A.c.r > 0.0; e++) {
-        double ang = e ? A.end : A.start;
-        vec3 E = arc_point(&A, ang);
+    /* Arc endpoints (the centre of a radius-0 arc) to the segment (closed form). */
+    for (int e = 0; e < 2; e++) {
+        double ang = A.c.r > 0.0 ? (e ? A.end : A.start) : NAN;
+        vec3 E = A.c.r > 0.0 ? arc_point(&A, ang) : A.c.c;
+        if (A.c.r == 0.0 && e) break;
         double s = mm > 0.0 ? v_dot(v_sub(E, S.p0), S.m) / mm : 0.0;
         s = s < 0.0 ? 0.0 : (s > 1.0 ? 1.0 : s);
         vec3 P = s == 1.0 ? S1 : v_axpy(S.p0, s, S.m);

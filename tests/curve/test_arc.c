@@ -223,6 +223,15 @@ static void random_cases(void)
             c.normal = a.circle.normal;
             b.circle.normal = a.circle.normal;
         }
+        if (i % 10 == 3) { /* points: zero radii, zero-length arcs and segments */
+            c.radius = 0;
+            b.circle.radius = 0;
+            s.p1 = s.p0;
+            a.end = a.start;
+        }
+        if (i % 10 == 7) { /* a zero-radius arc against everything */
+            a.circle.radius = 0;
+        }
         run_arc_circle(i, &a, &c);
         run_arc_arc(i, &a, &b);
         run_seg_arc(i, &s, &a);
