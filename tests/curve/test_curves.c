@@ -106,6 +106,8 @@ static void random_segments(void)
         int disk = i & 1;
         cdist_circle c = {tv(srand1(), srand1(), srand1()), rand_unit(), 0.1 + 1.4 * urand()};
         cdist_vec3 a = tv(2 * srand1(), 2 * srand1(), 2 * srand1()), b = tv(2 * srand1(), 2 * srand1(), 2 * srand1());
+        if (i % 17 == 5) c.radius = 0;
+        if (i % 19 == 8) b = a;
         if (i % 10 == 3) { /* in the circle's plane, crossing it */
             double h = (a.x - c.center.x) * c.normal.x + (a.y - c.center.y) * c.normal.y + (a.z - c.center.z) * c.normal.z;
             a = tv(a.x - h * c.normal.x, a.y - h * c.normal.y, a.z - h * c.normal.z);
@@ -356,6 +358,11 @@ static void helix_bezier_cases(void)
                          (i % 7 == 0) ? 0.0 : 2 * srand1(), -10 * urand(), 0};
         h.t1 = h.t0 + (i % 5 == 0 ? 60.0 : 15 * urand());
         if (i % 11 == 0) h.radius = 0;
+        if (i % 9 == 4) c.radius = 0; /* the target is a point */
+        if (i % 13 == 6) { /* the target coaxial with the helix */
+            c.normal = h.axis;
+            c.center = tv(h.center.x + 0.3 * h.axis.x, h.center.y + 0.3 * h.axis.y, h.center.z + 0.3 * h.axis.z);
+        }
         helix_case(i, &h, &c, i & 1);
         cdist_bezier3 bz;
         for (int k = 0; k < 4; k++) bz.p[k] = tv(2 * srand1(), 2 * srand1(), 2 * srand1());
