@@ -217,6 +217,7 @@ static cdist_status arc_minima(cs_scan *s, const arcx *X, const cd_circle *Y, in
             return CDIST_OK;
         }
     }
+    s->k->flat_ties = 1;
     return cs_scan_run(s, X->start, X->end, q->curve_samples);
 }
 

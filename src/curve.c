@@ -48,6 +48,7 @@ void cs_coll_init(cs_coll *k, double scale)
 {
     cd_best_init(&k->b, scale);
     k->eq_d2 = INFINITY;
+    k->flat_ties = 0;
 }
 
 void cs_coll_offer(cs_coll *k, double d2, vec3 p0, vec3 p1, double a0, double a1, int eq)
@@ -65,9 +66,10 @@ void cs_coll_finish(cs_coll *k)
     double d0 = sqrt(b->c[0].d2);
     /* A candidate with infinitely many closest pairs (a point on the circle's axis, ...). */
     if (k->eq_d2 < INFINITY && sqrt(k->eq_d2) - d0 <= tie_tol(k)) b->equidistant = 1;
-    /* Three distinct pairs at the same distance: the finite cases have at most two symmetric
-     * minima, three come from a continuum (coaxial arcs, a curve lying flat over a disk...). */
-    if (b->n >= 3 && sqrt(b->c[2].d2) - d0 <= tie_tol(k)) b->equidistant = 1;
+    /* On a scan of a constant function (coaxial or concentric arcs...), three distinct pairs at
+     * the same distance mean the continuum. (Not in general: a curve may cross a circle at
+     * three isolated points.) */
+    if (k->flat_ties && b->n >= 3 && sqrt(b->c[2].d2) - d0 <= tie_tol(k)) b->equidistant = 1;
 }
 
 void cs_offer_point(cs_coll *k, vec3 p, double t, const cd_circle *c, int disk, int swap)

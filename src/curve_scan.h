@@ -14,11 +14,13 @@
 typedef struct cs_coll {
     cd_best b;
     double eq_d2;
+    int flat_ties; /* set on the degenerate sampling paths (a constant function was scanned):
+                    * three distinct tied candidates then mean a continuum */
 } cs_coll;
 
 void cs_coll_init(cs_coll *k, double scale);
 void cs_coll_offer(cs_coll *k, double d2, vec3 p0, vec3 p1, double a0, double a1, int eq);
-/* Sets b.equidistant from the equidistant candidates and from three-way ties. */
+/* Sets b.equidistant from the equidistant candidates and (flat_ties) from three-way ties. */
 void cs_coll_finish(cs_coll *k);
 /* Offer point p (any frame) with parameter t against circle/disk c (c->c in the same frame);
  * swap puts p second. */

@@ -397,6 +397,15 @@ static void helix_bezier_cases(void)
     CHECK(cdist_bezier3_circle(q, &line, &dd, &r) == CDIST_OK && fabs(r.distance - sqrt(1.25)) < 1e-15 && r.equidistant,
           "axial Bezier to circle %.17g", r.distance);
     bezier_case(903, &line, &dd, 0);
+    /* An S-shaped Bezier in the unit circle's plane crossing it at four isolated points (near
+     * (-0.99, 0.13), (-0.58, 0.81), (0.58, -0.81), (0.99, -0.13)): distance 0, finitely many
+     * pairs, so not equidistant; two of them are reported. */
+    cdist_bezier3 ess = {{tv(-1.5, -0.6, 0), tv(-0.2, 1.8, 0), tv(0.2, -1.8, 0), tv(1.5, 0.6, 0)}};
+    cdist_circle unit = {tv(0, 0, 0), tv(0, 0, 1), 1};
+    CHECK(cdist_bezier3_circle(q, &ess, &unit, &r) == CDIST_OK && r.distance < 1e-15 && !r.equidistant &&
+              r.num_pairs == 2,
+          "S-curve crossing four times: %.17g eq %d pairs %d", r.distance, r.equidistant, r.num_pairs);
+    bezier_case(904, &ess, &unit, 0);
     /* Degenerate Bezier: all control points equal (a point). */
     cdist_bezier3 pt = {{tv(2, 0, 0), tv(2, 0, 0), tv(2, 0, 0), tv(2, 0, 0)}};
     CHECK(cdist_bezier3_circle(q, &pt, &dd, &r) == CDIST_OK && r.distance == 1, "point Bezier %.17g", r.distance);
