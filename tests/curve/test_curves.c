@@ -397,10 +397,10 @@ static void helix_bezier_cases(void)
     CHECK(cdist_bezier3_circle(q, &line, &dd, &r) == CDIST_OK && fabs(r.distance - sqrt(1.25)) < 1e-15 && r.equidistant,
           "axial Bezier to circle %.17g", r.distance);
     bezier_case(903, &line, &dd, 0);
-    /* An S-shaped Bezier in the unit circle's plane crossing it at four isolated points (near
-     * (-0.99, 0.13), (-0.58, 0.81), (0.58, -0.81), (0.99, -0.13)): distance 0, finitely many
-     * pairs, so not equidistant; two of them are reported. */
-    cdist_bezier3 ess = {{tv(-1.5, -0.6, 0), tv(-0.2, 1.8, 0), tv(0.2, -1.8, 0), tv(1.5, 0.6, 0)}};
+    /* A looping Bezier in the unit circle's plane crossing it at four isolated points (near
+     * (-0.806, -0.592), (0.986, 0.166), (0.972, 0.236), (-0.78, -0.626)): distance 0, finitely
+     * many pairs, so not equidistant; two of them are reported. */
+    cdist_bezier3 ess = {{tv(-1.2, -0.7, 0), tv(1.9, 0.1, 0), tv(1.7, 1.1, 0), tv(-1.5, -1.1, 0)}};
     cdist_circle unit = {tv(0, 0, 0), tv(0, 0, 1), 1};
     CHECK(cdist_bezier3_circle(q, &ess, &unit, &r) == CDIST_OK && r.distance < 1e-15 && !r.equidistant &&
               r.num_pairs == 2,
