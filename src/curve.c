@@ -479,11 +479,12 @@ cdist_status cs_check_interval(cdist_query *q, double t0, double t1, const char 
 /* Run a curve (evaluated in the frame whose origin is `origin`) against circle or disk cc
  * (its centre already relative to that frame) and write the result. */
 static cdist_status run_curve(cdist_query *q, cs_eval_fn ev, const void *ctx, double t0, double t1,
-                              const cd_circle *cc, int disk, vec3 origin, double scale, cdist_result *r)
+                              const cd_circle *cc, int disk, vec3 origin, double scale, double frame_mag,
+                              cdist_result *r)
 {
     cs_coll k;
     cs_coll_init(&k, scale);
-    cs_scan s = {q, ev, ctx, cc, disk, &k, NULL, NULL, 1, 0.0, 0.0};
+    cs_scan s = {q, ev, ctx, cc, disk, &k, NULL, NULL, 1, 0.0, frame_mag};
     cdist_status st = cs_scan_run(&s, t0, t1, q->curve_samples);
     if (!st) st = cs_flat_check(&s, t0, t1, (t1 - t0) / q->curve_samples);
     if (st) return st;
@@ -504,7 +505,8 @@ static cdist_status curve_query(cdist_query *q, cdist_curve_fn f, void *user, do
     user_curve u = {f, user, cc.c};
     vec3 origin = cc.c;
     cc.c = v3(0, 0, 0);
-    return run_curve(q, user_eval, &u, t0, t1, &cc, disk, origin, cc.r, r);
+    /* The callback's positions are absolute: their rounding is relative to |origin| too. */
+    return run_curve(q, user_eval, &u, t0, t1, &cc, disk, origin, cc.r, v_maxabs(origin), r);
 }
 
 cdist_status cdist_curve_circle(cdist_query *q, cdist_curve_fn f, void *user, double t0, double t1,
@@ -580,10 +582,8 @@ static cdist_status helix_query(cdist_query *q, const cdist_helix *h, const cdis
         return cd_fail(q, CDIST_ERR_OUT_OF_RANGE, "helix reaches beyond 1e150");
     hx.r = h->radius;
     hx.rise = h->pitch / (2.0 * M_PI);
-    if (h->pitch == 0.0 || h->radius == 0.0) {
-        /* Pitch 0 repeats one circle (one turn covers it); radius 0 is a segment of the axis:
-         * one piece is exact, the pieces only serve the winding. */
-    }
+    /* Pitch 0 repeats one circle: one turn covers it. (Radius 0 is a segment of the axis: one
+     * piece, below.) */
     if (h->pitch == 0.0 && t1 - t0 > 2.0 * M_PI) t1 = t0 + 2.0 * M_PI;
     vec3 origin = cc.c;
     hx.c = v_sub(h->center, origin);
@@ -678,7 +678,7 @@ static cdist_status bezier_query(cdist_query *q, const cdist_bezier3 *bz, const 
         scale = fmax(scale, v_norm(bx.p[i]));
     }
     cc.c = v3(0, 0, 0);
-    return run_curve(q, bez_eval, &bx, 0.0, 1.0, &cc, disk, origin, scale, r);
+    return run_curve(q, bez_eval, &bx, 0.0, 1.0, &cc, disk, origin, scale, 0.0, r);
 }
 
 cdist_status cdist_bezier3_circle(cdist_query *q, const cdist_bezier3 *b, const cdist_circle *c, cdist_result *r)
