@@ -327,17 +327,24 @@ static cdist_status seg_eval(cdist_query *q, const void *ctx, double t, vec3 *p,
  * (the segment on the axis: H == 0) or the solver failed. */
 static int seg_circle_quartic(cdist_query *q, const seg_x *S, double foot, const cd_circle *c, double *roots)
 {
-    vec3 B = v_axpy(S->p0, foot, S->m), M = S->m;
+    /* Normalised: lengths divided by L = max(r, |B|), direction unit, variable
+     * u = (s - foot) |m| / L, so every coefficient is O(1) whatever the scale. */
+    vec3 B = v_axpy(S->p0, foot, S->m);
+    double len = v_norm(S->m), L = fmax(c->r, v_norm(B));
+    if (!(len > 0.0) || !(L > 0.0)) return -1;
+    B = v_scale(1.0 / L, B);
+    vec3 M = v_scale(1.0 / len, S->m);
+    double rr = c->r / L;
     vec3 P0 = v_cross(c->n, B), P1 = v_cross(c->n, M);
     double a0 = v_dot(B, M), a1 = v_dot(M, M);
-    double p0 = v_dot(P0, P0), p01 = v_dot(P0, P1), p11 = v_dot(P1, P1), r2 = c->r * c->r;
+    double p0 = v_dot(P0, P0), p01 = v_dot(P0, P1), p11 = v_dot(P1, P1), r2 = rr * rr;
     double coef[5] = {p0 * a0 * a0 - r2 * p01 * p01,
                       2.0 * p0 * a0 * a1 + 2.0 * p01 * a0 * a0 - 2.0 * r2 * p01 * p11,
                       p0 * a1 * a1 + 4.0 * p01 * a0 * a1 + p11 * a0 * a0 - r2 * p11 * p11,
                       2.0 * p01 * a1 * a1 + 2.0 * p11 * a0 * a1, p11 * a1 * a1};
     int n = cd_poly_real_roots(q->poly, coef, 4, 1e-6, roots);
     if (n < 0) return -1;
-    for (int i = 0; i < n; i++) roots[i] += foot;
+    for (int i = 0; i < n; i++) roots[i] = foot + roots[i] * (L / len);
     return n;
 }
 

@@ -390,6 +390,46 @@ static void exact_cases(void)
           "chord, one crossing: %.17g pairs %d", r.distance, r.num_pairs);
 }
 
+/* Scaling every length by 2^k (exact in binary) scales the distance by 2^k: extreme scales
+ * (2^-300, 2^300, near the 1e150 limit) keep the accuracy (nothing overflows or underflows). */
+static cdist_vec3 sv(cdist_vec3 v, double f) { return tv(v.x * f, v.y * f, v.z * f); }
+static cdist_arc sarc(cdist_arc a, double f)
+{
+    a.circle.center = sv(a.circle.center, f);
+    a.circle.radius *= f;
+    return a;
+}
+
+static void scale_invariance(void)
+{
+    const double fs[3] = {ldexp(1, -300), ldexp(1, 300), ldexp(1, 480)};
+    for (int i = 0; i < 40; i++) {
+        cdist_arc a = rand_arc(1.0), b = rand_arc(1.0);
+        cdist_circle c = rand_circle(1.0);
+        cdist_segment s = {tv(2 * srand1(), 2 * srand1(), 2 * srand1()), tv(2 * srand1(), 2 * srand1(), 2 * srand1())};
+        cdist_result r0[4], r;
+        CHECK(cdist_arc_circle(q, &a, &c, &r0[0]) == CDIST_OK && cdist_arc_arc(q, &a, &b, &r0[1]) == CDIST_OK &&
+                  cdist_segment_arc(q, &s, &a, &r0[2]) == CDIST_OK && cdist_arc_disk(q, &a, &c, &r0[3]) == CDIST_OK,
+              "scale case %d", i);
+        for (int k = 0; k < 3; k++) {
+            double f = fs[k];
+            cdist_arc as = sarc(a, f), bs = sarc(b, f);
+            cdist_circle cs = {sv(c.center, f), c.normal, c.radius * f};
+            cdist_segment ss = {sv(s.p0, f), sv(s.p1, f)};
+            double L = 3.0;
+            for (int kind = 0; kind < 4; kind++) {
+                cdist_status st = kind == 0   ? cdist_arc_circle(q, &as, &cs, &r)
+                                  : kind == 1 ? cdist_arc_arc(q, &as, &bs, &r)
+                                  : kind == 2 ? cdist_segment_arc(q, &ss, &as, &r)
+                                              : cdist_arc_disk(q, &as, &cs, &r);
+                CHECK(st == CDIST_OK && fabs(r.distance / f - r0[kind].distance) <= 1e-14 * L,
+                      "%s scale 2^%d case %d: %.17g vs %.17g (%s)", kind_name[kind], ilogb(f), i, r.distance / f,
+                      r0[kind].distance, cdist_query_last_error(q));
+            }
+        }
+    }
+}
+
 static void bad_input(void)
 {
     cdist_result r;
@@ -452,6 +492,7 @@ int main(void)
     random_cases();
     constructed_cases();
     exact_cases();
+    scale_invariance();
     bad_input();
     for (int k = 0; k < 4; k++) printf("%s: max error %.3g of scale (case %d)\n", kind_name[k], worst_err[k], worst_id[k]);
     cdist_query_free(q);

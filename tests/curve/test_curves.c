@@ -411,6 +411,49 @@ static void helix_bezier_cases(void)
     CHECK(cdist_bezier3_circle(q, &pt, &dd, &r) == CDIST_OK && r.distance == 1, "point Bezier %.17g", r.distance);
 }
 
+/* Scaling every length by 2^k (exact in binary) scales the distance by 2^k. */
+static cdist_vec3 sv(cdist_vec3 v, double f) { return tv(v.x * f, v.y * f, v.z * f); }
+
+static void scale_invariance(void)
+{
+    const double fs[3] = {ldexp(1, -300), ldexp(1, 300), ldexp(1, 480)};
+    for (int i = 0; i < 30; i++) {
+        cdist_circle c = {tv(srand1(), srand1(), srand1()), rand_unit(), 0.1 + 1.4 * urand()};
+        cdist_helix h = {tv(srand1(), srand1(), srand1()), rand_unit(), rand_unit(), 0.1 + urand(), 2 * srand1(), 0, 10};
+        cdist_bezier3 bz;
+        for (int k = 0; k < 4; k++) bz.p[k] = tv(2 * srand1(), 2 * srand1(), 2 * srand1());
+        seg_curve sg = {tv(2 * srand1(), 2 * srand1(), 2 * srand1()), tv(srand1(), srand1(), srand1()), 0};
+        for (int disk = 0; disk < 2; disk++) {
+            cdist_result r0[3], r;
+            CHECK((disk ? cdist_helix_disk : cdist_helix_circle)(q, &h, &c, &r0[0]) == CDIST_OK &&
+                      (disk ? cdist_bezier3_disk : cdist_bezier3_circle)(q, &bz, &c, &r0[1]) == CDIST_OK &&
+                      (disk ? cdist_curve_disk : cdist_curve_circle)(q, seg_fn, &sg, 0, 1, &c, &r0[2]) == CDIST_OK,
+                  "scale case %d", i);
+            for (int k = 0; k < 3; k++) {
+                double f = fs[k];
+                cdist_circle cs = {sv(c.center, f), c.normal, c.radius * f};
+                cdist_helix hs = h;
+                hs.center = sv(h.center, f);
+                hs.radius *= f;
+                hs.pitch *= f;
+                cdist_bezier3 bs;
+                for (int j = 0; j < 4; j++) bs.p[j] = sv(bz.p[j], f);
+                seg_curve ss = {sv(sg.p0, f), sv(sg.m, f), 0};
+                double L = 4.0;
+                CHECK((disk ? cdist_helix_disk : cdist_helix_circle)(q, &hs, &cs, &r) == CDIST_OK &&
+                          fabs(r.distance / f - r0[0].distance) <= 1e-14 * (L + 2),
+                      "helix scale 2^%d: %.17g vs %.17g", ilogb(f), r.distance / f, r0[0].distance);
+                CHECK((disk ? cdist_bezier3_disk : cdist_bezier3_circle)(q, &bs, &cs, &r) == CDIST_OK &&
+                          fabs(r.distance / f - r0[1].distance) <= 1e-14 * L,
+                      "bezier scale 2^%d: %.17g vs %.17g", ilogb(f), r.distance / f, r0[1].distance);
+                CHECK((disk ? cdist_curve_disk : cdist_curve_circle)(q, seg_fn, &ss, 0, 1, &cs, &r) == CDIST_OK &&
+                          fabs(r.distance / f - r0[2].distance) <= 1e-14 * L,
+                      "callback scale 2^%d: %.17g vs %.17g", ilogb(f), r.distance / f, r0[2].distance);
+            }
+        }
+    }
+}
+
 int main(int argc, char **argv)
 {
     q = cdist_query_new();
@@ -433,6 +476,7 @@ int main(int argc, char **argv)
     degenerate_segments();
     callbacks_and_bad_input();
     helix_bezier_cases();
+    scale_invariance();
     for (int k = 0; k < 6; k++) printf("%s: max error %.3g of scale\n", names[k], worst[k]);
     cdist_query_free(q);
     return check_summary("curves");
