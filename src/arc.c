@@ -176,10 +176,12 @@ static cdist_status polish_in_range(cs_scan *s, const arcx *X, double a)
  * atan2(B, A) and opposite, h = 0 at atan2(B, A) +- acos(-hc / hypot(A, B))). Every such angle
  * is polished on the true D' and evaluated on the true distance, so the ones that fall in the
  * other region are merely extra candidates. */
-static cdist_status arc_minima(cs_scan *s, const arcx *X, const cd_circle *Y, int *exact)
+static cdist_status arc_minima(cs_scan *s, const arcx *X, const cd_circle *Y, int *exact, int *n_const)
 {
     cdist_query *q = s->q;
     cdist_status st;
+    int n = 0;
+    if (n_const) *n_const = 0;
     s->ev = arc_eval;
     s->ctx = X;
     s->c = Y;
@@ -190,7 +192,7 @@ static cdist_status arc_minima(cs_scan *s, const arcx *X, const cd_circle *Y, in
         cd_circle c0 = X->c, c1 = *Y;
         c1.c = v_sub(Y->c, X->c.c);
         c0.c = v3(0, 0, 0);
-        int n = cd_circle_circle_critical(q, &c0, &c1, th, CRIT_CAP);
+        n = cd_circle_circle_critical(q, &c0, &c1, th, CRIT_CAP);
         double A = 0.0, B = 0.0, hc = 0.0, R = 0.0;
         if (s->disk) {
             A = X->c.r * v_dot(Y->n, X->U);
@@ -218,6 +220,7 @@ static cdist_status arc_minima(cs_scan *s, const arcx *X, const cd_circle *Y, in
         }
     }
     s->k->flat_ties = 1;
+    if (n_const) *n_const = !s->disk && n == -1;
     return cs_scan_run(s, X->start, X->end, q->curve_samples);
 }
 
@@ -247,9 +250,12 @@ static cdist_status arc_target(cdist_query *q, const cdist_arc *a, const cdist_c
         /* Endpoints always; then the interior minima. */
         cs_offer_point(&k, arc_point(&A, A.start), A.start, &C, disk, 0);
         cs_offer_point(&k, arc_point(&A, A.end), A.end, &C, disk, 0);
-        int exact;
-        if ((st = arc_minima(&s, &A, &C, &exact))) return st;
+        int exact, constant;
+        if ((st = arc_minima(&s, &A, &C, &exact, &constant))) return st;
         if (!exact && (st = cs_flat_check(&s, A.start, A.end, (A.end - A.start) / q->curve_samples))) return st;
+        /* The circle-circle function is constant (within its own tolerance, as
+         * cdist_circle_circle flags it): every arc point is closest. */
+        if (constant && A.end > A.start) k.b.equidistant = 1;
     }
     cs_coll_finish(&k);
     cd_best_to_result(&k.b, origin, 0, r);
@@ -295,9 +301,9 @@ cdist_status cdist_arc_arc(cdist_query *q, const cdist_arc *a0, const cdist_arc 
         int exact;
         cand_arc_ctx ca = {&B, 1}, cb = {&A, 0};
         cs_scan s = {q, arc_eval, &A, &B.c, 0, &k, cand_arc, &ca, 0, 0.0, 0.0};
-        if ((st = arc_minima(&s, &A, &B.c, &exact))) return st;
+        if ((st = arc_minima(&s, &A, &B.c, &exact, NULL))) return st;
         cs_scan t = {q, arc_eval, &B, &A.c, 0, &k, cand_arc, &cb, 0, 0.0, 0.0};
-        if ((st = arc_minima(&t, &B, &A.c, &exact))) return st;
+        if ((st = arc_minima(&t, &B, &A.c, &exact, NULL))) return st;
     }
     cs_coll_finish(&k);
     cd_best_to_result(&k.b, origin, 0, r);
