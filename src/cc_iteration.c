@@ -8,7 +8,7 @@
  * (1)/(2)); here both projections are done in vector form (closed-form point-circle projection
  * with |N x Delta|), which is the same map. Algorithm 2 (parallel axes) is the same alternating
  * projection with both projections in C0's frame: in vector form it is identical, so one loop
- * serves both; for exactly parallel planes the paper's closed forms of §2.3 (separated,
+ * serves both; for parallel planes (|N0 x N1| <= 1e-13) the paper's closed forms of §2.3 (separated,
  * overlapping: two pairs at distance |pz|, contained) are used instead (shared with the
  * polynomial method: cd_cc_parallel_candidates), and §2.4 (coincident axes: every pair
  * closest, distance sqrt((R1 - R)^2 + pz^2), equidistant) by cd_cc_closed_form. Remark 1
@@ -27,8 +27,11 @@
  * - Axes that meet: the paper reflects the C0 point about the plane through both axes and
  *   iterates again for the second pair; here the reflected point is polished directly, so both
  *   symmetric pairs come out equally accurate.
+ * - Scale: the query runs on a copy scaled by a power of two (cd_cc_scale), so squares neither
+ *   overflow nor underflow; ties, flat minima and circles at constant distance from the other
+ *   are sorted out by cd_cc_offer_minima, shared with the polynomial method.
  * The iteration count reported is that of the start which produced the reported pair (<= the
- * cap); closed forms report 0. */
+ * cap); closed forms (points, coaxial, parallel planes) report 0. */
 #include <math.h>
 
 #include "internal.h"
@@ -78,7 +81,21 @@ typedef struct fixed_pt {
     int iters;
 } fixed_pt;
 
+static cdist_status iteration(cdist_query *q, const cd_circle *c0, const cd_circle *c1, cd_best *b, int *iterations);
+
 cdist_status cd_cc_iteration(cdist_query *q, const cd_circle *c0, const cd_circle *c1, cd_best *b, int *iterations)
+{
+    cd_circle a, bb;
+    double s;
+    cd_cc_scale(c0, c1, b->scale, &a, &bb, &s);
+    cd_best sb;
+    cd_best_init(&sb, b->scale * s);
+    cdist_status st = iteration(q, &a, &bb, &sb, iterations);
+    if (st == CDIST_OK) cd_cc_unscale(&sb, s, b);
+    return st;
+}
+
+static cdist_status iteration(cdist_query *q, const cd_circle *c0, const cd_circle *c1, cd_best *b, int *iterations)
 {
     cd_cc g = {{c0, c1}, c1->c, b->scale};
     int dummy;
@@ -89,10 +106,10 @@ cdist_status cd_cc_iteration(cdist_query *q, const cd_circle *c0, const cd_circl
     if (sn <= 1e-13) { /* §2.3: parallel axes, closed forms, polished */
         double t0[4];
         int k = cd_cc_parallel_candidates(&g, t0);
-        for (int i = 0; i < k; i++) {
-            double F;
-            cd_cc_offer(&g, 0, cd_cc_polish(&g, 0, t0[i], &F), b);
-        }
+        int sd[4] = {0, 0, 0, 0};
+        double F[4];
+        for (int i = 0; i < k; i++) t0[i] = cd_cc_polish(&g, 0, t0[i], &F[i]);
+        cd_cc_offer_minima(&g, k, sd, t0, F, b);
         return CDIST_OK;
     }
     int cap = q->max_iterations > 0 ? q->max_iterations : CD_DEFAULT_MAX_ITERATIONS;
@@ -151,11 +168,13 @@ cdist_status cd_cc_iteration(cdist_query *q, const cd_circle *c0, const cd_circl
             fp[nf].t = a, fp[nf].F = F, fp[nf].iters = fp[i].iters, nf++;
         }
     }
-    int ib = 0;
+    int ib = 0, sd[sizeof fp / sizeof fp[0]];
+    double ft[sizeof fp / sizeof fp[0]], fF[sizeof fp / sizeof fp[0]];
     for (int i = 0; i < nf; i++) {
-        cd_cc_offer(&g, 0, fp[i].t, b);
+        sd[i] = 0, ft[i] = fp[i].t, fF[i] = fp[i].F;
         if (fp[i].F < fp[ib].F) ib = i;
     }
+    cd_cc_offer_minima(&g, nf, sd, ft, fF, b);
     *iterations = nf ? fp[ib].iters : 0;
     return CDIST_OK;
 }

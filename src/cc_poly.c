@@ -20,15 +20,21 @@
  * circle of radius r0 is, squared to remove the root |N0 x Delta|,
  *     H(g, s) = (p0 + s p1)(p2 + s p3)^2 - r0^2 (p4 + s p5)^2 = p6(g) + s p7(g),  g = cos t,
  * s = sin t, and eliminating s with s^2 = 1 - g^2 gives phi(g) = p6^2 - (1 - g^2) p7^2 (degree
- * <= 8). Conditioning: the fixed circle is the LARGER one, scaled to the unit circle at the
- * origin (r0 = 1, everything divided by its radius), so the moving circle's radius is <= 1 and
- * the coefficients have comparable sizes. a5 - a7 = r1^2 ((N0.V1)^2 - (N0.U1)^2) is formed as a
- * product (it vanishes for parallel planes), a2, a3, a4 from the cross product N0 x D. For each
- * real root, s = -p6/p7; when p7 (or p6) is within rounding of zero at the root (the p7 = 0
- * branch; p7 == 0 identically when the centres lie on the normal line, §5.3) both signs
- * s = +-sqrt(1 - g^2) are tried. Double roots (tangency, §5.3's (g^2 - 1)^2 factor) come out of
- * the eigenvalue solver as complex pairs with imaginary parts ~ sqrt(eps): roots are accepted
- * with imaginary part up to 1e-6.
+ * <= 8). Conditioning: the fixed circle is the LARGER one at the origin, scaled to the unit
+ * circle (everything divided by its radius, or by the centre distance when that is larger:
+ * H is homogeneous, so only over/underflow depends on the scale), so the moving circle's
+ * radius is <= 1 and the coefficients have comparable sizes. a5 - a7 = r1^2 ((N0.V1)^2 -
+ * (N0.U1)^2) is formed as a product (it vanishes for parallel planes), a2, a3, a4 from the cross
+ * product N0 x D. For each real root, s = -p6/p7 gives the sign of sin t (both signs where p7
+ * is within rounding of zero: the p7 = 0 branch; p7 == 0 identically when the centres lie on
+ * the normal line, §5.3). Near-symmetric configurations make true and spurious roots
+ * near-double, and then even a clearly non-zero -p6/p7 can have the wrong sign (seen: nearly
+ * coplanar overlapping circles); the other sign costs one evaluation, so it is always offered
+ * as well. Double roots come out of the eigenvalue solver as complex pairs with imaginary parts
+ * ~ sqrt(eps) or more: roots are accepted with imaginary part up to 1e-2 (CC_IMAG_TOL) and
+ * real part up to 1 + 1e-3 in magnitude (clamped). Four samples of the moving circle are
+ * candidates too. Every candidate is evaluated on F; those within 1e-3 F_min + 1e-4 L^2 of the
+ * lowest are polished (an inaccurate root of a near-double pair is still in its basin).
  * Special cases: zero radii (point-circle), coaxial circles (§5.1 concentric, §5.2 with the
  * centres on the common axis: equidistant), parallel planes (§5.1 separated / tangent /
  * overlapping / containing, §5.2): closed-form candidates; centres on the normal line (§5.3) and,
@@ -36,7 +42,6 @@
  * axes, so the points of the moving circle in that plane are candidates and every minimum's
  * mirror image is polished too (symmetric pairs come out equally accurate). */
 #include <math.h>
-#include <string.h>
 
 #include "internal.h"
 
@@ -44,36 +49,46 @@
 /* Shared helpers (prototypes in the cc_methods block of internal.h)                          */
 /* ---------------------------------------------------------------------------------------- */
 
-double cd_cc_eval(const cd_cc *g, int side, double t, double *f1, double *f2, vec3 *P, vec3 *K)
+/* Plain arithmetic on purpose: without hardware FMA in the build flags fma() is a library call,
+ * and this function is the inner loop of every method. */
+static inline double eval_cs(const cd_cc *g, int side, double ct, double st, double *f1, double *f2, vec3 *P,
+                             vec3 *K)
 {
     const cd_circle *m = g->c[side], *f = g->c[1 - side];
-    vec3 dmf = side ? g->D : v_neg(g->D); /* moving centre relative to the fixed centre */
-    double ct = cos(t), st = sin(t);
-    vec3 p = v_axpy(v_scale(m->r * ct, m->u), m->r * st, m->v);
-    vec3 dp = v_axpy(v_scale(-m->r * st, m->u), m->r * ct, m->v);
-    vec3 dl = v_add(dmf, p);
-    double h = v_dot(f->n, dl);
-    vec3 nd = v_cross(f->n, dl);
-    double rho = v_norm(nd);
+    double sg = side ? 1.0 : -1.0; /* moving centre relative to the fixed centre: +-D */
+    double a = m->r * ct, bb = m->r * st;
+    vec3 p = v3(a * m->u.x + bb * m->v.x, a * m->u.y + bb * m->v.y, a * m->u.z + bb * m->v.z);
+    vec3 dp = v3(a * m->v.x - bb * m->u.x, a * m->v.y - bb * m->u.y, a * m->v.z - bb * m->u.z);
+    vec3 dl = v3(sg * g->D.x + p.x, sg * g->D.y + p.y, sg * g->D.z + p.z);
+    vec3 n = f->n;
+    double h = n.x * dl.x + n.y * dl.y + n.z * dl.z;
+    vec3 nd = v_cross(n, dl);
+    double rho = sqrt(nd.x * nd.x + nd.y * nd.y + nd.z * nd.z);
     double e = rho - f->r;
-    double F = fma(e, e, h * h);
+    double F = e * e + h * h;
     vec3 k, E;
     double d2f = 2.0 * m->r * m->r;
     if (rho > 0.0) {
-        vec3 w = v_cross(nd, f->n);
-        k = v_scale(f->r / rho, w);
-        E = v_axpy(v_scale(h, f->n), e / rho, w);
-        double tp = v_dot(nd, dp);
-        d2f -= 2.0 * f->r * (tp / rho) * (tp / rho) / rho;
+        vec3 w = v_cross(nd, n);
+        double kr = f->r / rho, er = e / rho;
+        k = v3(kr * w.x, kr * w.y, kr * w.z);
+        E = v3(h * n.x + er * w.x, h * n.y + er * w.y, h * n.z + er * w.z);
+        double tp = (nd.x * dp.x + nd.y * dp.y + nd.z * dp.z) / rho;
+        d2f -= 2.0 * f->r * tp * tp / rho;
     } else { /* on the other circle's axis: every point of it is closest (a kink of F) */
         k = v_scale(f->r, f->u);
         E = v_sub(dl, k);
     }
-    if (f1) *f1 = 2.0 * v_dot(E, dp);
-    if (f2) *f2 = d2f - 2.0 * v_dot(E, p);
+    if (f1) *f1 = 2.0 * (E.x * dp.x + E.y * dp.y + E.z * dp.z);
+    if (f2) *f2 = d2f - 2.0 * (E.x * p.x + E.y * p.y + E.z * p.z);
     if (P) *P = p;
     if (K) *K = k;
     return F;
+}
+
+double cd_cc_eval(const cd_cc *g, int side, double t, double *f1, double *f2, vec3 *P, vec3 *K)
+{
+    return eval_cs(g, side, cos(t), sin(t), f1, f2, P, K);
 }
 
 double cd_cc_polish(const cd_cc *g, int side, double t, double *Fout)
@@ -124,11 +139,95 @@ void cd_cc_offer(const cd_cc *g, int side, double t, cd_best *b)
     else cd_best_offer(b, F, K, v_add(P, g->D), af, am);
 }
 
+void cd_cc_scale(const cd_circle *c0, const cd_circle *c1, double L, cd_circle *a, cd_circle *b, double *s)
+{
+    int e = 0;
+    frexp(L > 0.0 && isfinite(L) ? L : 1.0, &e); /* L = m 2^e, m in [0.5, 1) */
+    double k = ldexp(1.0, 1 - e);                /* L k in [1, 2) */
+    *a = *c0;
+    *b = *c1;
+    a->c = v3(0, 0, 0);
+    a->r = c0->r * k;
+    b->c = v_scale(k, c1->c);
+    b->r = c1->r * k;
+    *s = k;
+}
+
+void cd_cc_unscale(const cd_best *sc, double s, cd_best *b)
+{
+    double is = 1.0 / s; /* a power of two: exact */
+    for (int i = 0; i < sc->n; i++) {
+        const cd_cand *c = &sc->c[i];
+        cd_best_offer(b, c->d2 * is * is, v_scale(is, c->p[0]), v_scale(is, c->p[1]), c->param[0], c->param[1]);
+    }
+    b->equidistant |= sc->equidistant;
+}
+
+/* Angle on c0 of the pair found at angle t of side s. */
+static double c0_angle(const cd_cc *g, int side, double t)
+{
+    if (side == 0) return t;
+    vec3 K;
+    cd_cc_eval(g, 1, t, NULL, NULL, NULL, &K);
+    double a = cd_circle_angle(g->c[0], K);
+    return isnan(a) ? 0.0 : a;
+}
+
+/* Is F_s within `tie` of dbest (in distance) at 64 evenly spread angles? (A smooth variation
+ * is seen at >= cos(pi / 64) of its amplitude.) */
+static int flat_side(const cd_cc *g, int s, double dbest, double tie)
+{
+    for (int i = 0; i < 64; i++) {
+        double F = cd_cc_eval(g, s, -M_PI + (M_PI / 32.0) * (i + 0.37), NULL, NULL, NULL, NULL);
+        if (!(sqrt(F) - dbest <= tie)) return 0;
+    }
+    return 1;
+}
+
+void cd_cc_offer_minima(const cd_cc *g, int n, const int *side, const double *t, const double *F, cd_best *b)
+{
+    if (n <= 0) return;
+    int ib = 0;
+    for (int i = 1; i < n; i++)
+        if (F[i] < F[ib]) ib = i;
+    double dbest = sqrt(F[ib]), tie = CD_TIE_ULPS * DBL_EPSILON * g->L;
+    double abest = c0_angle(g, side[ib], t[ib]);
+    cd_cc_offer(g, side[ib], t[ib], b);
+    /* A circle at constant distance from the other has F_s'' = 0 everywhere; only then are the
+     * samples taken (a flat minimum that is not constant fails them). */
+    vec3 K;
+    double f2[2];
+    int sb = side[ib];
+    cd_cc_eval(g, sb, t[ib], NULL, &f2[sb], NULL, &K);
+    double ao = cd_circle_angle(g->c[1 - sb], K);
+    cd_cc_eval(g, 1 - sb, isnan(ao) ? 0.0 : ao, NULL, &f2[1 - sb], NULL, NULL);
+    for (int s = 0; s < 2; s++) {
+        if (fabs(f2[s]) <= 1e-9 * g->c[s]->r * g->L && flat_side(g, s, dbest, tie)) {
+            b->equidistant = 1;
+            return;
+        }
+    }
+    for (int i = 0; i < n; i++) {
+        if (i == ib) continue;
+        if (sqrt(F[i]) - dbest <= tie) {
+            /* A tie: two closest pairs only when both arcs of c0 between them rise above the
+             * tie level (distinct minima, e.g. mirror images); otherwise they are points of
+             * one flat minimum and the best represents it. */
+            double ai = c0_angle(g, side[i], t[i]);
+            double mid = ai + 0.5 * remainder(abest - ai, 2.0 * M_PI);
+            double f1 = cd_cc_eval(g, 0, mid, NULL, NULL, NULL, NULL);
+            double f2 = cd_cc_eval(g, 0, mid + M_PI, NULL, NULL, NULL, NULL);
+            if (!(sqrt(f1) - dbest > tie && sqrt(f2) - dbest > tie)) continue;
+        }
+        cd_cc_offer(g, side[i], t[i], b);
+    }
+}
+
 /* Normals parallel to rounding: below this |n0 x n1| the planes are treated as parallel. */
 #define CC_PARALLEL 1e-13
 /* Closed-form candidates for parallel planes are added up to this |n0 x n1| (they are only
  * starting points; the polish finds the true minima of slightly tilted circles). */
-#define CC_NEAR_PARALLEL 1e-4
+#define CC_NEAR_PARALLEL 1e-2
 
 int cd_cc_closed_form(const cd_cc *g, cd_best *b)
 {
@@ -147,12 +246,17 @@ int cd_cc_closed_form(const cd_cc *g, cd_best *b)
         return 1;
     }
     /* Coaxial (Eberly §5.1 (a), §5.2; Li et al. §2.4): every point of either circle is equally
-     * far from the other, distance sqrt((r1 - r0)^2 + h^2). The tolerances are rounding of the
-     * normals and of D; the representative pair is polished on the true distance so that a
-     * configuration that is coaxial only to rounding still gets its exact minimum. */
+     * far from the other, distance sqrt((r1 - r0)^2 + h^2). Doubles are rarely exactly coaxial,
+     * so the test is the one cd_best applies to ties: the distance varies over the circle by less
+     * than CD_TIE_ULPS ulps of the scale. Bound of that variation, for a point of c1 against c0
+     * (s = |n0 x n1|, d0 = |n0 x D| the centre's offset from c0's axis): its height over c0's plane
+     * varies by <= 2 r1 s, its axis distance by <= 2 d0 + r1 s^2, and the point-circle distance is
+     * 1-Lipschitz in both; likewise with the roles exchanged. The representative pair is polished
+     * on the true distance, so the distance is the exact minimum of the doubles given. */
     double sn = v_norm(v_cross(c0->n, c1->n));
-    double off = v_norm(v_cross(c0->n, g->D));
-    if (sn <= 16.0 * DBL_EPSILON && off <= 16.0 * DBL_EPSILON * fmax(g->L, v_norm(g->D))) {
+    double d0 = v_norm(v_cross(c0->n, g->D)), d1 = v_norm(v_cross(c1->n, g->D));
+    double var = fmin(2.0 * d0 + c1->r * sn * (2.0 + sn), 2.0 * d1 + c0->r * sn * (2.0 + sn));
+    if (var <= CD_TIE_ULPS * DBL_EPSILON * g->L) {
         double F;
         double t = cd_cc_polish(g, 0, 0.0, &F);
         cd_cc_offer(g, 0, t, b);
@@ -213,21 +317,31 @@ int cd_cc_mirror(const cd_cc *g, vec3 *m)
 /* ---------------------------------------------------------------------------------------- */
 
 #define CC_MAXCAND 48
+/* Roots of phi are accepted with imaginary parts up to this (relative): near-symmetric
+ * configurations make true and spurious roots near-double, and rounding splits them into
+ * complex pairs (imaginary parts ~1e-4 were seen with a centre 2e-6 off the other's axis).
+ * Their real parts are only candidates, evaluated and polished on the true distance. */
+#define CC_IMAG_TOL 1e-2
 
+/* Candidates are kept as (cos t, sin t): roots come as (gamma, sigma), and most candidates are
+ * only evaluated, never polished, so atan2/sincos are spent only on the few that are. */
 typedef struct cc_cands {
     int n;
     int side[CC_MAXCAND];
-    double t[CC_MAXCAND];
+    double ct[CC_MAXCAND], st[CC_MAXCAND];
     double F[CC_MAXCAND];
 } cc_cands;
 
-static void cand_add(cc_cands *c, int side, double t)
+static void cand_add_cs(cc_cands *c, int side, double ct, double st)
 {
-    if (c->n >= CC_MAXCAND || !isfinite(t)) return;
+    if (c->n >= CC_MAXCAND || !isfinite(ct) || !isfinite(st)) return;
     c->side[c->n] = side;
-    c->t[c->n] = t;
+    c->ct[c->n] = ct;
+    c->st[c->n] = st;
     c->n++;
 }
+
+static void cand_add(cc_cands *c, int side, double t) { cand_add_cs(c, side, cos(t), sin(t)); }
 
 /* Angle on circle `side` of the mirror image (plane through both axes, normal m) of the point
  * at angle t. */
@@ -245,12 +359,12 @@ static void finish_candidates(const cd_cc *g, cc_cands *c, cd_best *b)
 {
     double Fmin = INFINITY;
     for (int i = 0; i < c->n; i++) {
-        c->F[i] = cd_cc_eval(g, c->side[i], c->t[i], NULL, NULL, NULL, NULL);
+        c->F[i] = eval_cs(g, c->side[i], c->ct[i], c->st[i], NULL, NULL, NULL, NULL);
         if (c->F[i] < Fmin) Fmin = c->F[i];
     }
     /* A root found to ~sqrt(eps) (near a double root) has F within ~1e-8 L^2 of its minimum;
      * the margin keeps every candidate that could polish below the best. */
-    double margin = 1e-3 * Fmin + 1e-6 * g->L * g->L;
+    double margin = 1e-3 * Fmin + 1e-4 * g->L * g->L;
     vec3 m;
     int mir = cd_cc_mirror(g, &m);
     double pt[CC_MAXCAND], pF[CC_MAXCAND];
@@ -260,10 +374,12 @@ static void finish_candidates(const cd_cc *g, cc_cands *c, cd_best *b)
         if (!(c->F[i] <= Fmin + margin)) continue;
         int dup = 0;
         for (int j = 0; j < i; j++)
-            if (c->side[j] == c->side[i] && c->t[j] == c->t[i] && c->F[j] <= Fmin + margin) dup = 1;
+            if (c->side[j] == c->side[i] && c->ct[j] == c->ct[i] && c->st[j] == c->st[i] &&
+                c->F[j] <= Fmin + margin)
+                dup = 1;
         if (dup) continue;
         double F;
-        double t = cd_cc_polish(g, c->side[i], c->t[i], &F);
+        double t = cd_cc_polish(g, c->side[i], atan2(c->st[i], c->ct[i]), &F);
         ps[np] = c->side[i], pt[np] = t, pF[np] = F, np++;
         if (F < best) best = F;
     }
@@ -276,7 +392,7 @@ static void finish_candidates(const cd_cc *g, cc_cands *c, cd_best *b)
             ps[np] = ps[i], pt[np] = t, pF[np] = F, np++;
         }
     }
-    for (int i = 0; i < np; i++) cd_cc_offer(g, ps[i], pt[i], b);
+    cd_cc_offer_minima(g, np, ps, pt, pF, b);
 }
 
 /* Candidates shared by both sides' special structure: parallel closed forms, and the points
@@ -310,7 +426,7 @@ static int pmul(const double *a, int da, const double *b, int db, double *out)
 {
     for (int i = 0; i <= da + db; i++) out[i] = 0.0;
     for (int i = 0; i <= da; i++)
-        for (int j = 0; j <= db; j++) out[i + j] = fma(a[i], b[j], out[i + j]);
+        for (int j = 0; j <= db; j++) out[i + j] += a[i] * b[j];
     return da + db;
 }
 
@@ -319,18 +435,21 @@ static int paxpy(double *out, int da, double s, const double *b, int db)
 {
     int d = da > db ? da : db;
     for (int i = da + 1; i <= d; i++) out[i] = 0.0;
-    for (int i = 0; i <= db; i++) out[i] = fma(s, b[i], out[i]);
+    for (int i = 0; i <= db; i++) out[i] += s * b[i];
     return d;
 }
 
-/* Eberly (19)-(21) for the moving circle `side` against the fixed circle, scaled so the fixed
- * circle has radius 1. Writes p6 (deg 4), p7 (deg 3), phi (deg 8). */
+/* Eberly (19)-(21) for the moving circle `side` against the fixed circle. H is homogeneous of
+ * degree 6 in the lengths, so a common scale changes no root: lengths are divided by
+ * max(r_fixed, |D|) (the fixed circle becomes the unit circle unless the circles are far apart,
+ * when the centre distance becomes 1) so that no coefficient overflows. Writes p6 (deg 4),
+ * p7 (deg 3), phi (deg 8). */
 static void build_phi(const cd_cc *g, int side, double *p6, double *p7, double *phi)
 {
     const cd_circle *m = g->c[side], *f = g->c[1 - side];
-    double k = 1.0 / f->r;
+    double k = 1.0 / fmax(f->r, v_norm(g->D));
     vec3 D = v_scale(side ? k : -k, g->D);
-    double r1 = m->r * k;
+    double r1 = m->r * k, r0 = f->r * k, r02 = r0 * r0;
     vec3 N0 = f->n, U1 = m->u, V1 = m->v;
     vec3 ND = v_cross(N0, D), NU = v_cross(N0, U1), NV = v_cross(N0, V1);
     double nu = v_dot(N0, U1), nv = v_dot(N0, V1);
@@ -353,23 +472,23 @@ static void build_phi(const cd_cc *g, int side, double *p6, double *p7, double *
     pmul(P2, 1, P2, 1, S);
     double p33 = P3[0] * P3[0];
     paxpy(S, 2, p33, OM, 2);
-    /* p6 = p0 S + (1 - g^2) 2 p1 p2 p3 - (p4^2 + (1 - g^2) p5^2) */
+    /* p6 = p0 S + (1 - g^2) 2 p1 p2 p3 - r0^2 (p4^2 + (1 - g^2) p5^2) */
     pmul(P0, 2, S, 2, p6); /* deg 4 */
     pmul(P1, 1, P2, 1, t1); /* deg 2 */
     pmul(t1, 2, OM, 2, t2); /* deg 4 */
     paxpy(p6, 4, 2.0 * P3[0], t2, 4);
     pmul(P4, 2, P4, 2, t1); /* deg 4 */
-    paxpy(p6, 4, -1.0, t1, 4);
+    paxpy(p6, 4, -r02, t1, 4);
     pmul(P5, 1, P5, 1, t3); /* deg 2 */
     pmul(t3, 2, OM, 2, t4); /* deg 4 */
-    paxpy(p6, 4, -1.0, t4, 4);
-    /* p7 = 2 p0 p2 p3 + p1 S - 2 p4 p5 */
+    paxpy(p6, 4, -r02, t4, 4);
+    /* p7 = 2 p0 p2 p3 + p1 S - 2 r0^2 p4 p5 */
     pmul(P0, 2, P2, 1, p7); /* deg 3 */
     for (int i = 0; i <= 3; i++) p7[i] *= 2.0 * P3[0];
     pmul(P1, 1, S, 2, t1); /* deg 3 */
     paxpy(p7, 3, 1.0, t1, 3);
     pmul(P4, 2, P5, 1, t1); /* deg 3 */
-    paxpy(p7, 3, -2.0, t1, 3);
+    paxpy(p7, 3, -2.0 * r02, t1, 3);
     /* phi = p6^2 - (1 - g^2) p7^2 */
     pmul(p6, 4, p6, 4, phi);
     pmul(p7, 3, p7, 3, t1); /* deg 6 */
@@ -377,7 +496,21 @@ static void build_phi(const cd_cc *g, int side, double *p6, double *p7, double *
     paxpy(phi, 8, -1.0, t2, 8);
 }
 
+static cdist_status polynomial(cdist_query *q, const cd_circle *c0, const cd_circle *c1, cd_best *b);
+
 cdist_status cd_cc_polynomial(cdist_query *q, const cd_circle *c0, const cd_circle *c1, cd_best *b)
+{
+    cd_circle a, bb;
+    double s;
+    cd_cc_scale(c0, c1, b->scale, &a, &bb, &s);
+    cd_best sb;
+    cd_best_init(&sb, b->scale * s);
+    cdist_status st = polynomial(q, &a, &bb, &sb);
+    if (st == CDIST_OK) cd_cc_unscale(&sb, s, b);
+    return st;
+}
+
+static cdist_status polynomial(cdist_query *q, const cd_circle *c0, const cd_circle *c1, cd_best *b)
 {
     cd_cc g = {{c0, c1}, c1->c, b->scale};
     if (cd_cc_closed_form(&g, b)) return CDIST_OK;
@@ -390,28 +523,30 @@ cdist_status cd_cc_polynomial(cdist_query *q, const cd_circle *c0, const cd_circ
     if (sn > CC_PARALLEL || c.n == 0) {
         double p6[5], p7[4], phi[9], roots[8];
         build_phi(&g, side, p6, p7, phi);
-        int nr = cd_poly_real_roots(q->poly, phi, 8, 1e-6, roots);
+        int nr = cd_poly_real_roots(q->poly, phi, 8, CC_IMAG_TOL, roots);
         if (nr == CD_POLY_FAIL) return cd_fail(q, CDIST_ERR_INTERNAL, "circle-circle: polynomial solver failed");
-        double s6 = 0.0, s7 = 0.0;
-        for (int i = 0; i <= 4; i++) s6 += fabs(p6[i]);
+        double s7 = 0.0;
         for (int i = 0; i <= 3; i++) s7 += fabs(p7[i]);
         for (int i = 0; i < nr; i++) {
             double gm = roots[i];
-            if (!(fabs(gm) <= 1.0 + 1e-6)) continue;
+            if (!(fabs(gm) <= 1.0 + 1e-3)) continue;
             gm = fmax(-1.0, fmin(1.0, gm));
             double sg = sqrt((1.0 - gm) * (1.0 + gm));
-            double v6 = cd_poly_eval(p6, 4, gm, NULL), v7 = cd_poly_eval(p7, 3, gm, NULL);
-            if (fabs(v7) <= 1e-6 * s7 || fabs(v6) <= 1e-6 * s6) {
-                cand_add(&c, side, atan2(sg, gm));
-                if (sg > 0.0) cand_add(&c, side, atan2(-sg, gm));
-            } else {
-                cand_add(&c, side, atan2((v6 > 0.0) == (v7 > 0.0) ? -sg : sg, gm));
-            }
+            double v6 = (((p6[4] * gm + p6[3]) * gm + p6[2]) * gm + p6[1]) * gm + p6[0];
+            double v7 = ((p7[3] * gm + p7[2]) * gm + p7[1]) * gm + p7[0];
+            /* sigma = -p6/p7 (Eberly); where p7 is within rounding of zero (the p7 = 0 branch)
+             * both signs. Near-double roots (near-symmetric configurations) make even a
+             * clearly non-zero p6/p7 sign unreliable, and the other sign costs one evaluation
+             * (no measurable time), so it is always offered second. */
+            double sgn = (v6 > 0.0) == (v7 > 0.0) ? -sg : sg;
+            if (fabs(v7) <= 1e-6 * s7) sgn = sg;
+            cand_add_cs(&c, side, gm, sgn);
+            if (sg > 0.0) cand_add_cs(&c, side, gm, -sgn);
         }
     }
     /* Safety samples: four angles of the moving circle (only polished when they beat every
      * root, i.e. if the solver missed the minimum's basin). */
-    for (int i = 0; i < 4; i++) cand_add(&c, side, -0.75 * M_PI + 0.5 * M_PI * i);
+    for (int i = 0; i < 4; i++) cand_add_cs(&c, side, (i == 1 || i == 2) ? M_SQRT1_2 : -M_SQRT1_2, i < 2 ? -M_SQRT1_2 : M_SQRT1_2);
     finish_candidates(&g, &c, b);
     return CDIST_OK;
 }

@@ -16,25 +16,45 @@
  *     H(t) = Q sigma^2 - s^2 (w.w')^2              (paper eq. (8)),
  * which has at most 8 roots unless it vanishes identically.
  *
- * Root bounding (no polynomial is solved): H's nine Fourier coefficients are formed by exact
+ * Root bounding (no polynomial is solved): H's Fourier coefficients c_k are formed by exact
  * products of the coefficient arrays of Q, sigma and w.w', which gives rigorous bounds
- * M1 >= |H'|, M2 >= |H''| (sums of |k| |c_k| and k^2 |c_k|). [-pi, pi) is split into 16
- * intervals and each interval is subdivided until it is certified to hold
- *   - no root of H: a root t would need |H(a) + H'(a)(t-a)| <= M2 (t-a)^2 / 2 from both ends
- *     (tested at the midpoint, where the concave lower bounds are weakest), or |H(a)|+|H(b)| <=
- *     M1 (b-a); or
- *   - at most one root: H' keeps its sign, |H'(a)| + |H'(b)| > M2 (b-a),
+ * M_j = sum |k|^j |c_k| >= |H^(j)|. [-pi, pi) is split into 8 intervals and each interval is
+ * bisected until it is certified to hold
+ *   - no root of H: from each end over half the interval, the Taylor lower bound
+ *     |H(a)| - |H'(a)| x - M2 x^2/2 (or, second order, with H''(a) and M3 x^3/6) stays positive,
+ *     or |H(a)| + |H(b)| > M1 (b - a); or
+ *   - at most one root: H' keeps its sign (the same tests one derivative up),
  * with every value reduced by a first-order bound of its rounding error, or until it is
  * narrower than 2^-30 rad. Between two consecutive partition points F' then changes sign at most
  * once, so every local minimum of F is bracketed by a (-,+) sign pair of the true F' at
- * consecutive points; it is refined by safeguarded Newton/bisection on the true F' and offered
- * with the point-circle closest point on B. A narrow unresolved interval (near a multiple root,
- * e.g. where A crosses B's axis, a double root of H) can hide a min/max pair of F only with a
- * dip of order |F'''| (2^-30)^3, far below rounding. A concave kink of F (A crossing B's axis
- * transversally: F = smooth - 2 s |linear|) is never a local minimum; when A is tangent to
- * B's axis F is C^1 and the minimum there is bracketed like any other.
- * When H vanishes to rounding (coaxial circles, the constant cases below) or the subdivision
- * exceeds its budget, F' is sampled on 512 points instead.
+ * consecutive points (the partition points share their values, so a sign read at rounding level
+ * still brackets every transition exactly once); it is refined by safeguarded Newton/bisection
+ * on the true F' and offered with the point-circle closest point on B. Intervals narrower than
+ * 2^-30 rad that stay uncertified (multiple roots of H: symmetric configurations, tangencies,
+ * A crossing B's axis, where H has a double root) are only sign-checked; a further min/max pair
+ * of F hidden inside one would lie within 2^-30 rad. A concave kink of F (A crossing B's axis
+ * transversally: F = smooth - 2 s |linear|) is never a local minimum; when A is tangent to B's
+ * axis, F is C^1 and the minimum there is bracketed like any other.
+ * Pruning: the distance sqrt(F) is R-Lipschitz in t, so an interval whose lower bound
+ * (d(a) + d(b) - R (b - a)) / 2 exceeds an attained distance (a sample, a refined minimum)
+ * cannot hold the global minimum and is dropped (not in the critical-angle mode).
+ * Where certification is impossible (it is NOT claimed there):
+ *   - H vanishing to rounding (coaxial circles, constant F): when the samples show F constant,
+ *     a sample is the answer; else F' is sampled on 512 points.
+ *   - Near-crossings of B's axis (rho <= 1e-6 L, found by bisection on Q' with a Lipschitz
+ *     early exit): H is below its rounding there; a core window (up to 0.05 rad) is skipped by
+ *     the subdivision and covered by a geometric grid t_k +- 0.1 * 2^(-j/2) down to 1e-17.
+ *   - An initial interval that uses up its budget of 48 evaluations (a cluster of roots at
+ *     rounding level, e.g. near-tangent circles): its leftover intervals are sampled (>= 64
+ *     points each).
+ *   In each of these, F' brackets are refined as above and, because F' is noise where F is
+ *   flat while F itself (from accurate rho - s and h) keeps its relative accuracy, a
+ *   golden-section search of F around the lowest sample is offered too.
+ * The rounding bounds of H, H', H'' are local (eps times the magnitudes of the summed terms
+ * at the point), which keeps H certifiable close to an axis crossing.
+ * AUTO is this method: it was measured the fastest (1.5 us against 6.3 us for the polynomial
+ * method and 9 us for the iteration on the random reference queries) and as exact.
+ * The problem is scaled by a power of two (exact) to L ~ 1 first: H has terms of order L^6.
  *
  * Which circle is parameterised: the larger one (ties broken by a rule that is antisymmetric
  * in the arguments), translated to the origin. With the dispatcher translating to the first
@@ -49,6 +69,11 @@
  *       the minimum distance <= 32 eps L.
  *   (b) The closest point of A lies on B's axis (rho <= 8 eps (R + |C|)): all of B is equally
  *       close to it (e.g. the meridian case seen from the larger circle).
+ * The tolerances are relative to L, so a configuration that is equidistant only up to the
+ * rounding of coordinates much larger than L (far from the origin) may come out with one or two
+ * pairs instead (the distance is right either way). The same two tests (with 16 samples per
+ * circle for (a), stopping at the first that differs) are applied to the answers of the
+ * polynomial and iteration methods (cc_equidistant_post).
  * Radius 0: a zero-radius circle is a point and the point-circle core answers. */
 #include <math.h>
 #include <stdio.h>
@@ -58,17 +83,10 @@
 
 #define CC_INIT_INTERVALS 8
 #define CC_MIN_WIDTH (1.0 / 1073741824.0) /* 2^-30 rad */
-#define CC_EVAL_BUDGET 200
+#define CC_EVAL_BUDGET 48 /* per initial interval */
 #define CC_DENSE_SAMPLES 512
-#define CC_STACK 96
+#define CC_STACK 40 /* > the deepest level (31) */
 #define CC_EQUI_ULPS 32.0
-
-#ifdef CC_STATS
-long cc_stat_evals, cc_stat_refine_its, cc_stat_brackets, cc_stat_dense, cc_stat_leaves_narrow;
-#define STAT(x) (x)
-#else
-#define STAT(x) ((void)0)
-#endif
 
 /* The parameterised circle A at the origin and the other circle B. */
 typedef struct cc_frame {
@@ -83,15 +101,21 @@ typedef struct cc_frame {
     double Hc;         /* sum of |Fourier coefficients| of H */
     double epsL;       /* eps * (R + |C|): absolute rounding of positions */
     double L;          /* problem scale max(R, s, |C|) */
+    double Lw, W1, nga; /* magnitudes of the terms of w, of |w'|, |ga| (rounding bounds) */
 } cc_frame;
 
 /* Values at one angle. */
 typedef struct cc_pt {
     double t, c, s;
     double H, H1, H2; /* H, H', H'' */
+    double eH, eH1, eH2; /* their rounding bounds at this point */
     double F1;    /* F'/2 */
     double F;     /* F */
+    double d;     /* sqrt(F) */
+    double Q, g;  /* rho^2 and w.w' */
 } cc_pt;
+
+static inline double dot3(vec3 a, vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
 
 /* ---- trigonometric polynomials of degree <= 4 as complex coefficients c_k, k = -4..4 ---- */
 typedef struct tpoly {
@@ -111,18 +135,24 @@ static void tp_term(tpoly *p, int k, double a, double b)
     p->re[4 - k] += 0.5 * a;
     p->im[4 - k] += 0.5 * b;
 }
-static void tp_mul(const tpoly *x, const tpoly *y, tpoly *z)
+/* z = x y for x of degree dx and y of degree dy (dx + dy <= 4); only the coefficients k >= 0
+ * are formed (c_{-k} = conj(c_k) for real functions; every user reads k >= 0 only). */
+static void tp_mul(const tpoly *x, int dx, const tpoly *y, int dy, tpoly *z)
 {
     tpoly r;
     tp_zero(&r);
-    for (int i = 0; i < 9; i++) {
-        if (x->re[i] == 0.0 && x->im[i] == 0.0) continue;
-        for (int j = 0; j < 9; j++) {
-            int k = i + j - 4;
-            if (k < 0 || k > 8) continue;
-            r.re[k] += x->re[i] * y->re[j] - x->im[i] * y->im[j];
-            r.im[k] += x->re[i] * y->im[j] + x->im[i] * y->re[j];
+    for (int k = 0; k <= dx + dy; k++) {
+        int lo = k - dy > -dx ? k - dy : -dx, hi = k + dy < dx ? k + dy : dx;
+        double re = 0, im = 0;
+        for (int i = lo; i <= hi; i++) {
+            int j = k - i;
+            re += x->re[4 + i] * y->re[4 + j] - x->im[4 + i] * y->im[4 + j];
+            im += x->re[4 + i] * y->im[4 + j] + x->im[4 + i] * y->re[4 + j];
         }
+        r.re[4 + k] = re;
+        r.im[4 + k] = im;
+        r.re[4 - k] = re;
+        r.im[4 - k] = -im;
     }
     *z = r;
 }
@@ -139,15 +169,15 @@ static void frame_init(cc_frame *f, const cd_circle *A, vec3 C, const cd_circle 
     f->al = v_scale(f->R, v_cross(m, A->u));
     f->be = v_scale(f->R, v_cross(m, A->v));
     f->ga = v_neg(v_cross(m, C));
-    f->ha = f->R * v_dot(m, A->u);
-    f->hb = f->R * v_dot(m, A->v);
-    f->hc = -v_dot(m, C);
-    f->Cu = v_dot(C, A->u);
-    f->Cv = v_dot(C, A->v);
+    f->ha = f->R * dot3(m, A->u);
+    f->hb = f->R * dot3(m, A->v);
+    f->hc = -dot3(m, C);
+    f->Cu = dot3(C, A->u);
+    f->Cv = dot3(C, A->v);
 
     /* Fourier coefficients of Q, sigma, g = w.w' and H = Q sigma^2 - s^2 g^2. */
-    double aa = v_dot(f->al, f->al), bb = v_dot(f->be, f->be), ab = v_dot(f->al, f->be);
-    double ag = v_dot(f->al, f->ga), bg = v_dot(f->be, f->ga), gg = v_dot(f->ga, f->ga);
+    double aa = dot3(f->al, f->al), bb = dot3(f->be, f->be), ab = dot3(f->al, f->be);
+    double ag = dot3(f->al, f->ga), bg = dot3(f->be, f->ga), gg = dot3(f->ga, f->ga);
     tpoly Q, S, G, T, H;
     tp_zero(&Q);
     tp_term(&Q, 0, 0.5 * (aa + bb) + gg, 0);
@@ -158,14 +188,16 @@ static void frame_init(cc_frame *f, const cd_circle *A, vec3 C, const cd_circle 
     tp_zero(&G);
     tp_term(&G, 1, bg, -ag);
     tp_term(&G, 2, ab, 0.5 * (bb - aa));
-    tp_mul(&S, &S, &T);
-    tp_mul(&Q, &T, &H);
-    tp_mul(&G, &G, &T);
+    tp_mul(&S, 1, &S, 1, &T);
+    tp_mul(&Q, 2, &T, 2, &H);
+    tp_mul(&G, 2, &G, 2, &T);
     double s2 = f->s * f->s;
     f->M1 = f->M2 = f->M3 = f->Hc = 0;
-    for (int i = 0; i < 9; i++) {
-        double c = hypot(H.re[i] - s2 * T.re[i], H.im[i] - s2 * T.im[i]);
-        double k = fabs((double)(i - 4));
+    for (int i = 4; i < 9; i++) {
+        double cr = H.re[i] - s2 * T.re[i], ci = H.im[i] - s2 * T.im[i];
+        /* the problem is scaled to L ~ 1: no overflow; c_{-k} has the same modulus */
+        double c = (i == 4 ? 1 : 2) * sqrt(cr * cr + ci * ci);
+        double k = (double)(i - 4);
         f->Hc += c;
         f->M1 += k * c;
         f->M2 += k * k * c;
@@ -193,12 +225,14 @@ static void frame_init(cc_frame *f, const cd_circle *A, vec3 C, const cd_circle 
     f->eH2 = 4 * (f->eH1 + f->eH);
     f->epsL = eps * (f->R + Lc);
     f->L = fmax(fmax(f->R, f->s), Lc);
+    f->Lw = 2 * f->R + Lc;
+    f->W1 = W1;
+    f->nga = sqrt(gg);
 }
 
 /* Hot-path arithmetic without fma(): the library is built for baseline x86-64, where fma() is a
  * libm call; plain products are accurate enough for sampling and Newton steps (the final
  * distance of each pair is recomputed in pair_at). */
-static inline double dot3(vec3 a, vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
 /* w = al c + be s + ga and w' = be c - al s */
 static inline void w_at(const cc_frame *f, double c, double s, vec3 *w, vec3 *w1)
 {
@@ -232,6 +266,22 @@ static void cc_eval(const cc_frame *f, double t, double c, double s, cc_pt *p)
     double dr = rho - f->s;
     p->F1 = dr * rp + h * h1;
     p->F = dr * dr + h * h;
+    p->d = sqrt(p->F);
+    p->Q = Q;
+    p->g = g;
+    /* Rounding bounds at this point, first order with margin: eps times the magnitudes Xb of
+     * the terms each quantity is summed from (w carries eps (2R + |C|) absolutely, w' eps 2R).
+     * Local bounds keep H certifiable near A's crossing of B's axis, where every term of H is
+     * tiny but accurate (relative error eps L / rho). */
+    double W1 = f->W1, Lw = f->Lw, ga = f->nga + f->Lw - 2 * f->R;
+    double Qb = Q + 2 * rho * Lw, gb = fabs(g) + W1 * Lw + rho * 2 * f->R;
+    double g1b = 2 * W1 * W1 + (rho + Lw) * ga + Qb, g2b = 3 * (W1 * ga + gb) + gb;
+    double sb = f->R * (fabs(f->Cu) + fabs(f->Cv)), sb2 = sb * sb;
+    double e8 = 8 * DBL_EPSILON, ag = fabs(g), ag1 = fabs(g1);
+    p->eH = e8 * (Qb * sb * (fabs(sig) + sb) + 3 * s2 * ag * gb);
+    p->eH1 = e8 * (2 * gb * sb2 + 4 * Qb * sb2 + 2 * s2 * (gb * (ag1 + g1b) + ag * g1b));
+    p->eH2 = e8 * (4 * g1b * sb2 + 16 * gb * sb2 + 8 * Qb * sb2 +
+                   2 * s2 * (3 * g1b * (ag1 + g1b) + gb * (fabs(g2) + g2b) + ag * g2b));
 }
 
 /* F'/2 and F''/2 only (for the refinement). */
@@ -261,7 +311,6 @@ static double refine(const cc_frame *f, const cc_pt *a, const cc_pt *b, int dir)
     if (!(x > lo && x < hi)) x = 0.5 * (lo + hi);
     double dxold = hi - lo;
     for (int it = 0; it < 100; it++) {
-        STAT(cc_stat_refine_its++);
         double c, s, F1, F2;
         sincos(x, &s, &c);
         cc_deriv(f, c, s, &F1, &F2);
@@ -280,9 +329,6 @@ static double refine(const cc_frame *f, const cc_pt *a, const cc_pt *b, int dir)
             newton = 0;
         }
         double dx = fabs(xn - x);
-#ifdef CC_TRACE
-        fprintf(stderr, "it %d x %.17g F1 %.3g F2 %.3g newton %d dx %.3g\n", it, x, F1, F2, newton, dx);
-#endif
         /* Quadratic convergence: after a Newton step this small the error is below rounding. */
         if (newton && dx <= 1e-9) return xn;
         dxold = dx;
@@ -301,7 +347,7 @@ typedef struct cc_sink {
     cd_best *best;  /* robust mode */
     int swapped;    /* robust mode: A is the second circle */
     const cd_circle *A, *B;
-    int dense_ok; /* on budget overflow: sample densely (else report the overflow) */
+    double unscale; /* robust mode: the factor undoing the problem's scaling */
     double tmin, Fmin; /* partition point with the smallest F */
     double dmin;  /* smallest refined distance */
     double rho_min; /* axis distance of the point giving dmin */
@@ -330,9 +376,9 @@ static void pair_at(const cc_frame *f, double t, cc_sink *k)
     vec3 K = v_add(f->C, dir);
     double ta = (t <= -M_PI) ? t + 2 * M_PI : (t > M_PI ? t - 2 * M_PI : t);
     if (k->B->r == 0.0) tb = NAN;
-    if (!k->swapped) cd_best_offer(k->best, d2, P, K, ta, tb);
-    else cd_best_offer(k->best, d2, v_sub(K, f->C), v_sub(P, f->C), tb, ta); /* + c1's centre */
-    double d = sqrt(d2);
+    double u = k->unscale, d = sqrt(d2);
+    if (!k->swapped) cd_best_offer(k->best, d2 * u * u, v_scale(u, P), v_scale(u, K), ta, tb);
+    else cd_best_offer(k->best, d2 * u * u, v_scale(u, v_sub(K, f->C)), v_scale(u, v_sub(P, f->C)), tb, ta);
     if (d < k->dmin) {
         k->dmin = d;
         k->rho_min = rho;
@@ -345,7 +391,6 @@ static void emit(cc_sink *k, const cc_pt *a, const cc_pt *b)
     if (a->F1 < 0 && b->F1 >= 0) dir = 1;
     else if (k->want_max && a->F1 > 0 && b->F1 <= 0) dir = -1;
     if (!dir) return;
-    STAT(cc_stat_brackets++);
     double t = refine(k->f, a, b, dir);
     if (!k->best) {
         double ta = (t <= -M_PI) ? t + 2 * M_PI : (t > M_PI ? t - 2 * M_PI : t);
@@ -362,6 +407,7 @@ static void emit(cc_sink *k, const cc_pt *a, const cc_pt *b)
     }
 }
 
+#define POS(x) ((x) > 0 ? (x) : 0.0)
 /* Certificates on [a, b] (see the header comment). 1: resolved (<= 1 root of H). First order
  * with the global bounds M1, M2; second order with the endpoint values of H'' and M3 (from each
  * end over half the interval, the cubic lower bound taken at its worst, x = w/2). */
@@ -370,36 +416,70 @@ static int certified(const cc_frame *f, const cc_pt *a, const cc_pt *b)
     double w = b->t - a->t, x = 0.5 * w;
     if ((a->H > 0 && b->H > 0) || (a->H < 0 && b->H < 0)) {
         double sg = a->H > 0 ? 1.0 : -1.0;
-        double A = fabs(a->H) - f->eH, B = fabs(b->H) - f->eH;
+        double A = fabs(a->H) - a->eH, B = fabs(b->H) - b->eH;
         if (A > 0 && B > 0) {
             if (A + B > f->M1 * w) return 1;
-            double la = A + (sg * a->H1 - f->eH1) * x - 0.5 * f->M2 * x * x;
-            double lb = B - (sg * b->H1 + f->eH1) * x - 0.5 * f->M2 * x * x;
+            double la = A + (sg * a->H1 - a->eH1) * x - 0.5 * f->M2 * x * x;
+            double lb = B - (sg * b->H1 + b->eH1) * x - 0.5 * f->M2 * x * x;
             if (la > 0 && lb > 0) return 1;
             double c3 = f->M3 * x * x * x / 6;
-            la = A - (fmax(0.0, -sg * a->H1) + f->eH1) * x - (fmax(0.0, -sg * a->H2) + f->eH2) * 0.5 * x * x - c3;
-            lb = B - (fmax(0.0, sg * b->H1) + f->eH1) * x - (fmax(0.0, -sg * b->H2) + f->eH2) * 0.5 * x * x - c3;
+            la = A - (POS(-sg * a->H1) + a->eH1) * x - (POS(-sg * a->H2) + a->eH2) * 0.5 * x * x - c3;
+            lb = B - (POS(sg * b->H1) + b->eH1) * x - (POS(-sg * b->H2) + b->eH2) * 0.5 * x * x - c3;
             if (la > 0 && lb > 0) return 1;
         }
     }
     if ((a->H1 > 0 && b->H1 > 0) || (a->H1 < 0 && b->H1 < 0)) {
         double sg = a->H1 > 0 ? 1.0 : -1.0;
-        double A = fabs(a->H1) - f->eH1, B = fabs(b->H1) - f->eH1;
+        double A = fabs(a->H1) - a->eH1, B = fabs(b->H1) - b->eH1;
         if (A > 0 && B > 0) {
             if (A + B > f->M2 * w) return 1;
             double c2 = 0.5 * f->M3 * x * x;
-            double la = A - (fmax(0.0, -sg * a->H2) + f->eH2) * x - c2;
-            double lb = B - (fmax(0.0, sg * b->H2) + f->eH2) * x - c2;
+            double la = A - (POS(-sg * a->H2) + a->eH2) * x - c2;
+            double lb = B - (POS(sg * b->H2) + b->eH2) * x - c2;
             if (la > 0 && lb > 0) return 1;
         }
     }
     return 0;
 }
 
+
+/* 1 / (2 cos(w/2)) for the interval width 2 pi / CC_INIT_INTERVALS / 2^level. */
+static const double half_sec[] = {
+#define HS(l) 0.5 / cos(M_PI / CC_INIT_INTERVALS / (double)(1L << (l)))
+    HS(0),  HS(1),  HS(2),  HS(3),  HS(4),  HS(5),  HS(6),  HS(7),  HS(8),  HS(9),  HS(10),
+    HS(11), HS(12), HS(13), HS(14), HS(15), HS(16), HS(17), HS(18), HS(19), HS(20), HS(21),
+    HS(22), HS(23), HS(24), HS(25), HS(26), HS(27), HS(28), HS(29), HS(30), HS(31)
+#undef HS
+};
+
+/* Golden-section search of F on [lo, hi]; offers the best point (robust mode). F is computed
+ * from accurate rho - s and h, so it keeps its relative accuracy even where F' is noise. */
+static void golden_offer(const cc_frame *f, cc_sink *k, double lo, double hi)
+{
+    const double g = 0.6180339887498949;
+    double x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo), c, s;
+    cc_pt p1, p2;
+    sincos(x1, &s, &c);
+    cc_eval(f, x1, c, s, &p1);
+    sincos(x2, &s, &c);
+    cc_eval(f, x2, c, s, &p2);
+    for (int it = 0; it < 100 && hi - lo > 4 * DBL_EPSILON; it++) {
+        if (p1.F < p2.F) {
+            hi = x2, x2 = x1, p2 = p1, x1 = hi - g * (hi - lo);
+            sincos(x1, &s, &c);
+            cc_eval(f, x1, c, s, &p1);
+        } else {
+            lo = x1, x1 = x2, p1 = p2, x2 = lo + g * (hi - lo);
+            sincos(x2, &s, &c);
+            cc_eval(f, x2, c, s, &p2);
+        }
+    }
+    pair_at(f, p1.F < p2.F ? x1 : x2, k);
+}
+
 /* Dense sampling fallback: F' signs on CC_DENSE_SAMPLES points. */
 static void scan_dense(const cc_frame *f, cc_sink *k, double *Fmax)
 {
-    STAT(cc_stat_dense++);
     cc_pt first = {0}, prev = {0}, cur;
     double step = 2 * M_PI / CC_DENSE_SAMPLES;
     for (int i = 0; i <= CC_DENSE_SAMPLES; i++) {
@@ -420,6 +500,125 @@ static void scan_dense(const cc_frame *f, cc_sink *k, double *Fmax)
         else emit(k, &prev, &cur);
         prev = cur;
     }
+    /* F nearly flat (why we are here): also search F itself around the lowest sample. */
+    if (k->best && isfinite(k->Fmin)) golden_offer(f, k, k->tmin - step, k->tmin + step);
+}
+
+/* Near-crossings of B's axis: the minima of Q = |w|^2 = rho^2 (a trigonometric polynomial of
+ * degree 2, at most two minima) with rho <= CC_KINK_REL L. There F = smooth - 2 s rho has features
+ * of width about rho / |w'| (A crossing the axis) or sqrt(rho / curvature) (A tangent to it),
+ * where H is below its rounding and cannot be certified: those windows are scanned on a
+ * geometric grid instead (see scan). Writes the angles, returns the count. */
+#define CC_KINK_REL 1e-6
+static int near_kinks(const cc_frame *f, const cc_pt *init, double *tk)
+{
+    enum { N = CC_INIT_INTERVALS };
+    vec3 w, w1;
+    double thr = CC_KINK_REL * f->L;
+    int n = 0;
+    for (int i = 0; i < N && n < 2; i++) {
+        int ip = (i + N - 1) % N, in = (i + 1) % N;
+        if (!(init[i].Q <= init[ip].Q && init[i].Q < init[in].Q)) continue;
+        /* Bisection on g = Q'/2 over [t(i-1), t(i+1)] with the midpoints' cosines and sines from
+         * the ends (no transcendental call); stop as soon as the W1-Lipschitz bound of rho
+         * shows the bracket clear of the axis (a generic query stops after a few steps). */
+        if (!(init[ip].g < 0 && init[in].g > 0)) continue;
+        double lo = init[ip].t, hi = lo + 2 * (2 * M_PI / N);
+        double cl = init[ip].c, sl = init[ip].s, ch = init[in].c, sh = init[in].s;
+        double width = 2 * (2 * M_PI / N), rho = 0; /* twice the width of half_sec[0] */
+        int miss = 0;
+        for (int it = 0; it < 52; it++) {
+            /* 1 / (2 cos(width / 2)); width = 2 pi / N * 2^(1 - it) */
+            double hc = it == 0 ? 0.70710678118654752 /* 0.5 / cos(pi / 4), N = 8 */
+                                : half_sec[it - 1 < 31 ? it - 1 : 31];
+            double cm = (cl + ch) * hc, sm = (sl + sh) * hc;
+            w_at(f, cm, sm, &w, &w1);
+            rho = sqrt(dot3(w, w));
+            if (rho - 0.5 * f->W1 * width > thr) {
+                miss = 1;
+                break;
+            }
+            double m = 0.5 * (lo + hi);
+            if (dot3(w, w1) < 0) lo = m, cl = cm, sl = sm;
+            else hi = m, ch = cm, sh = sm;
+            width *= 0.5;
+        }
+        if (!miss && rho <= thr) tk[n++] = remainder(0.5 * (lo + hi), 2 * M_PI);
+    }
+    return n;
+}
+
+/* Half-width of the window around a near-crossing that only the geometric grid covers. */
+static double kink_core(const cc_frame *f, double t)
+{
+    double c, s;
+    sincos(t, &s, &c);
+    vec3 w, w1;
+    w_at(f, c, s, &w, &w1);
+    double r = sqrt(sqrt(dot3(w, w)) / f->L);
+    return fmin(0.05, 1e3 * r + 1e-12);
+}
+
+/* The geometric grid around a near-crossing t: t +- 0.1 * 2^(-j/2) down to 1e-17, and t. */
+static void scan_kink(const cc_frame *f, cc_sink *k, double t, double *Fmax)
+{
+    enum { NG = 110 };
+    cc_pt prev, cur;
+    int first = 1;
+    for (int side = -1; side <= 1; side += 2)
+        for (int jj = 0; jj < NG; jj++) {
+            int j = side < 0 ? jj : NG - 1 - jj; /* increasing angle */
+            double h = 0.1 * pow(2.0, -0.5 * j), x = t + side * h, c, s;
+            if (side > 0 && jj == 0) {
+                sincos(t, &s, &c);
+                cc_eval(f, t, c, s, &cur);
+                emit(k, &prev, &cur);
+                prev = cur;
+            }
+            sincos(x, &s, &c);
+            cc_eval(f, x, c, s, &cur);
+            if (cur.F > *Fmax) *Fmax = cur.F;
+            if (cur.F < k->Fmin) {
+                k->Fmin = cur.F;
+                k->tmin = cur.t;
+            }
+            if (!first) emit(k, &prev, &cur);
+            first = 0;
+            prev = cur;
+        }
+    /* Within about sqrt(eps) of the crossing, F' = 2 (rho - s) w.w'/rho + ... carries the
+     * relative rounding eps L / rho of w.w' / rho and its sign is unreliable; F itself is
+     * accurate (d to eps L). Polish the lowest grid neighbourhood by golden section on F. */
+    if (k->best) golden_offer(f, k, t - 1e-3, t + 1e-3);
+}
+
+/* An interval left uncertified when the evaluation budget ran out (a cluster of roots of H at
+ * rounding level, where F is flat and may hold close minima): F' signs on a grid as fine as the
+ * dense scan's and of at least 64 points, and in robust mode a golden-section search of F
+ * around the lowest grid point. */
+static void emit_sampled(const cc_frame *f, cc_sink *k, const cc_pt *a, const cc_pt *b, double *Fmax)
+{
+    double w = b->t - a->t;
+    int n = (int)ceil(w / (2 * M_PI / CC_DENSE_SAMPLES));
+    if (n < 64) n = 64;
+    cc_pt prev = *a, cur;
+    double Fbest = a->F, tbest = a->t;
+    for (int j = 1; j < n; j++) {
+        double t = a->t + w * j / n, c, s;
+        sincos(t, &s, &c);
+        cc_eval(f, t, c, s, &cur);
+        if (cur.F > *Fmax) *Fmax = cur.F;
+        if (cur.F < k->Fmin) {
+            k->Fmin = cur.F;
+            k->tmin = cur.t;
+        }
+        if (cur.F < Fbest) Fbest = cur.F, tbest = cur.t;
+        emit(k, &prev, &cur);
+        prev = cur;
+    }
+    emit(k, &prev, b);
+    if (b->F < Fbest) tbest = b->t;
+    if (k->best) golden_offer(f, k, tbest - w / n, tbest + w / n);
 }
 
 /* Walks [-pi, pi) (see the header comment) and hands every critical bracket to the sink.
@@ -456,7 +655,6 @@ static int scan(const cc_frame *f, cc_sink *k, double *Fmax)
             k->tmin = init[arg].t;
             return 0;
         }
-        if (!k->dense_ok) return 1;
         scan_dense(f, k, Fmax);
         return 0;
     }
@@ -467,23 +665,21 @@ static int scan(const cc_frame *f, cc_sink *k, double *Fmax)
         cc_pt b;
         int level;
     } ival;
-    /* 1 / (2 cos(w/2)) for the interval width 2 pi / CC_INIT_INTERVALS / 2^level. */
-    static const double half_sec[] = {
-#define HS(l) 0.5 / cos(M_PI / CC_INIT_INTERVALS / (double)(1L << (l)))
-        HS(0),  HS(1),  HS(2),  HS(3),  HS(4),  HS(5),  HS(6),  HS(7),  HS(8),  HS(9),  HS(10),
-        HS(11), HS(12), HS(13), HS(14), HS(15), HS(16), HS(17), HS(18), HS(19), HS(20), HS(21),
-        HS(22), HS(23), HS(24), HS(25), HS(26), HS(27), HS(28), HS(29), HS(30), HS(31)
-#undef HS
-    };
     ival st[CC_STACK];
-    int evals = 0, over = 0;
-    int saved_count = k->count;
-    cd_best saved_best;
-    double saved_dmin = k->dmin, saved_rho = k->rho_min;
-    if (k->best) saved_best = *k->best;
-    for (int i = 0; i < CC_INIT_INTERVALS && !over; i++) {
+    int evals = 0;
+    double tk[2], core[2];
+    int nk = near_kinks(f, init, tk);
+    for (int i = 0; i < nk; i++) {
+        core[i] = kink_core(f, tk[i]);
+        scan_kink(f, k, tk[i], Fmax);
+    }
+    double dbest = INFINITY; /* smallest sampled distance: the minimum is at most this */
+    for (int i = 0; i < CC_INIT_INTERVALS; i++)
+        if (init[i].d < dbest) dbest = init[i].d;
+    for (int i = 0; i < CC_INIT_INTERVALS; i++) {
         cc_pt a = init[i], b = init[i + 1];
         int level = 0, sp = 0;
+        evals = 0; /* a cluster of roots exhausts the budget of its own interval only */
         for (;;) {
             if (a.F > *Fmax) *Fmax = a.F;
             if (a.F < k->Fmin) {
@@ -491,17 +687,42 @@ static int scan(const cc_frame *f, cc_sink *k, double *Fmax)
                 k->tmin = a.t;
             }
             double w = b.t - a.t;
-            if (certified(f, &a, &b) || (w <= CC_MIN_WIDTH && (STAT(cc_stat_leaves_narrow++), 1))) {
-                emit(k, &a, &b);
+            /* Robust mode prunes: the distance is R-Lipschitz in the angle, so on [a, b] it is at
+             * least (d(a) + d(b) - R w) / 2; above an attained distance (a sample or a refined
+             * minimum) the interval cannot hold the global minimum. */
+            if (k->best && 0.5 * (a.d + b.d - f->R * w) > fmin(dbest, k->dmin) * (1 + 8 * DBL_EPSILON)) {
                 if (sp == 0) break;
                 a = b;
                 b = st[--sp].b;
                 level = st[sp].level;
                 continue;
             }
-            if (evals >= CC_EVAL_BUDGET || sp + 1 > CC_STACK || level >= 31) {
-                over = 1;
-                break;
+            int inside = 0; /* within a near-crossing's core: the geometric grid covers it */
+            for (int i = 0; i < nk; i++) {
+                double lo = a.t - tk[i], hi = b.t - tk[i];
+                lo = remainder(lo, 2 * M_PI);
+                hi = lo + w;
+                if (lo >= -core[i] && hi <= core[i]) inside = 1;
+            }
+            if (inside) {
+                if (sp == 0) break;
+                a = b;
+                b = st[--sp].b;
+                level = st[sp].level;
+                continue;
+            }
+            int leaf = certified(f, &a, &b) || w <= CC_MIN_WIDTH || sp + 1 >= CC_STACK || level >= 31;
+            if (leaf || evals >= CC_EVAL_BUDGET) {
+                /* Past the budget (multiple roots of H at rounding level: tangencies, A passing
+                 * within rounding of B's axis) the rest is sampled, keeping the resolution
+                 * already reached around the trouble spot. */
+                if (leaf) emit(k, &a, &b);
+                else emit_sampled(f, k, &a, &b, Fmax);
+                if (sp == 0) break;
+                a = b;
+                b = st[--sp].b;
+                level = st[sp].level;
+                continue;
             }
             /* Midpoint from the endpoint cosines/sines (no transcendental call). */
             double hc = half_sec[level];
@@ -509,21 +730,11 @@ static int scan(const cc_frame *f, cc_sink *k, double *Fmax)
             cc_pt mid;
             cc_eval(f, 0.5 * (a.t + b.t), cm, sm, &mid);
             evals++;
-            STAT(cc_stat_evals++);
             level++;
             st[sp].b = b;
             st[sp++].level = level;
             b = mid;
         }
-    }
-    if (over) {
-        k->count = saved_count;
-        k->dmin = saved_dmin;
-        k->rho_min = saved_rho;
-        k->Fmin = INFINITY;
-        if (k->best) *k->best = saved_best;
-        if (!k->dense_ok) return 1;
-        scan_dense(f, k, Fmax);
     }
     return 0;
 }
@@ -542,13 +753,9 @@ static int param_second(const cd_circle *c0, const cd_circle *c1, vec3 C)
     return 0;
 }
 
-/* The robust method. dense_ok = 0: when the certified scan gives up (multiple roots at the
- * rounding level, e.g. tangent circles), return with *over = 1 and b untouched so that AUTO can
- * ask the polynomial method; dense_ok = 1: fall back to dense sampling. */
-static cdist_status cc_robust(cdist_query *q, const cd_circle *c0, const cd_circle *c1, cd_best *b, int dense_ok,
-                              int *over)
+/* The robust method (see the header comment). */
+static cdist_status cc_robust(cdist_query *q, const cd_circle *c0, const cd_circle *c1, cd_best *b)
 {
-    *over = 0;
     vec3 C = v_sub(c1->c, c0->c); /* c0->c is the origin here; kept general */
     int sw = param_second(c0, c1, C);
     const cd_circle *A = sw ? c1 : c0, *B = sw ? c0 : c1;
@@ -574,20 +781,30 @@ static cdist_status cc_robust(cdist_query *q, const cd_circle *c0, const cd_circ
         }
         return CDIST_OK;
     }
+    /* Scale the problem by a power of two (exact) so that L is about 1: H has terms of order
+     * L^6, which would overflow or underflow for coordinates near the 1e150 limit. */
+    int ex;
+    frexp(L, &ex);
+    double sc = ldexp(1.0, -ex), unsc = ldexp(1.0, ex);
+    cd_circle As = *A, Bs = *B;
+    As.c = v_scale(sc, A->c);
+    As.r = sc * A->r;
+    Bs.c = v_scale(sc, B->c);
+    Bs.r = sc * B->r;
+    CB = v_scale(sc, CB);
+    A = &As;
+    B = &Bs;
     cc_frame f;
     frame_init(&f, A, CB, B);
-    cc_sink k = {.f = &f, .best = b, .swapped = sw, .A = A, .B = B, .dense_ok = dense_ok, .Fmin = INFINITY,
+    cc_sink k = {.f = &f, .best = b, .unscale = unsc, .swapped = sw, .A = A, .B = B,  .Fmin = INFINITY,
                  .dmin = INFINITY, .rho_min = INFINITY};
     double Fmax;
-    if (scan(&f, &k, &Fmax)) {
-        *over = 1;
-        return CDIST_OK;
-    }
+    scan(&f, &k, &Fmax);
     /* F' never went from - to +: F is constant to rounding; any point is a closest one. */
     if (b->n == 0 && isfinite(k.Fmin)) pair_at(&f, k.tmin, &k);
     if (b->n == 0 || !isfinite(k.dmin)) return cd_fail(q, CDIST_ERR_INTERNAL, "circle-circle: no minimum found");
     /* (a) F constant on A; (b) the closest point of A on B's axis. */
-    if (sqrt(Fmax) - k.dmin <= CC_EQUI_ULPS * DBL_EPSILON * L) b->equidistant = 1;
+    if (sqrt(Fmax) - k.dmin <= CC_EQUI_ULPS * DBL_EPSILON * f.L) b->equidistant = 1;
     if (k.rho_min <= 8 * f.epsL) b->equidistant = 1;
     return CDIST_OK;
 }
@@ -646,28 +863,12 @@ static cdist_status cc_core(cdist_query *q, cdist_method method, const cd_circle
     if (method == CDIST_METHOD_POLYNOMIAL) st = cd_cc_polynomial(q, c0, c1, b);
     else if (method == CDIST_METHOD_ITERATION) st = cd_cc_iteration(q, c0, c1, b, iterations);
     *answered = method;
-    if (method == CDIST_METHOD_AUTO) {
-        /* The certified robust scan; where it gives up (degenerate multiple roots) the
-         * polynomial method, and the dense robust scan if that fails too. */
-        int over;
-        cd_best_init(b, b->scale);
-        *answered = CDIST_METHOD_ROBUST;
-        st = cc_robust(q, c0, c1, b, 0, &over);
-        if (st != CDIST_OK || !over) return st;
-        st = cd_cc_polynomial(q, c0, c1, b);
-        if (st == CDIST_OK) {
-            *answered = CDIST_METHOD_POLYNOMIAL;
-            cc_equidistant_post(c0, c1, b);
-            return st;
-        }
-        method = CDIST_METHOD_ROBUST;
-    }
-    if (method == CDIST_METHOD_ROBUST || st != CDIST_OK) {
-        int over;
+    if (method == CDIST_METHOD_AUTO || method == CDIST_METHOD_ROBUST || st != CDIST_OK) {
+        /* AUTO is the robust method (measured fastest and as exact); it is also the fallback. */
         cd_best_init(b, b->scale);
         if (iterations) *iterations = 0;
         *answered = CDIST_METHOD_ROBUST;
-        st = cc_robust(q, c0, c1, b, 1, &over);
+        st = cc_robust(q, c0, c1, b);
     } else {
         cc_equidistant_post(c0, c1, b);
     }
@@ -727,9 +928,21 @@ int cd_circle_circle_critical(cdist_query *q, const cd_circle *c0, const cd_circ
     if (cap < 0) cap = 0;
     if (c0->r == 0.0) return -1; /* a point: every angle gives the same point */
     vec3 C = v_sub(c1->c, c0->c);
+    /* Angles do not change under scaling: work at L ~ 1 (see cc_robust). */
+    int ex;
+    frexp(fmax(fmax(c0->r, c1->r), v_norm(C)), &ex);
+    double sc = ldexp(1.0, -ex);
+    cd_circle a = *c0, b = *c1;
+    a.c = v3(0, 0, 0);
+    a.r *= sc;
+    b.c = v_scale(sc, C);
+    b.r *= sc;
+    c0 = &a;
+    c1 = &b;
+    C = b.c;
     cc_frame f;
     frame_init(&f, c0, C, c1);
-    cc_sink k = {.f = &f, .want_max = 1, .out = theta0, .cap = cap, .A = c0, .B = c1, .dense_ok = 1,
+    cc_sink k = {.f = &f, .want_max = 1, .out = theta0, .cap = cap, .A = c0, .B = c1,
                  .Fmin = INFINITY, .dmin = INFINITY, .rho_min = INFINITY};
     double Fmax;
     scan(&f, &k, &Fmax);
@@ -747,13 +960,39 @@ int cd_circle_circle_critical(cdist_query *q, const cd_circle *c0, const cd_circ
     return n < cap ? n : cap;
 }
 
+/* The validation of cd_check_circle without its message formatting (three snprintf calls, a
+ * fifth of a random query): the same tests and the same arithmetic for the unit normal, so the
+ * result is bit-identical. Returns 0 on any doubt; the caller then runs cd_check_circle, which
+ * reports the error. (Could go once cd_check_circle formats its messages only on failure.) */
+static int cc_fast_circle(const cdist_query *q, const cdist_circle *c, cd_circle *out)
+{
+    if (!c) return 0;
+    vec3 p = c->center, d = c->normal;
+    double r = c->radius;
+    if (!v_isfinite(p) || !v_isfinite(d) || !isfinite(r)) return 0;
+    if (v_maxabs(p) > CD_MAX_ABS || v_maxabs(d) > CD_MAX_ABS || fabs(r) > CD_MAX_ABS || r < 0.0) return 0;
+    double m = v_maxabs(d);
+    if (m == 0.0) return 0;
+    vec3 sd = v_scale(1.0 / m, d);
+    double ns = v_norm(sd), len = m * ns;
+    if (!(fabs(len - 1.0) <= q->unit_tol)) return 0;
+    out->n = v_scale(1.0 / ns, sd);
+    out->c = p;
+    out->r = r;
+    v_basis(out->n, &out->u, &out->v);
+    return 1;
+}
+
 cdist_status cdist_circle_circle(cdist_query *q, const cdist_circle *c0, const cdist_circle *c1, cdist_result *r)
 {
     cdist_status st = cd_check_handle(q, r);
     if (st) return st;
     cd_circle a, b;
-    if ((st = cd_check_circle(q, c0, "first circle", &a)) || (st = cd_check_circle(q, c1, "second circle", &b)))
-        return st;
+    if (!cc_fast_circle(q, c0, &a) || !cc_fast_circle(q, c1, &b)) {
+        if ((st = cd_check_circle(q, c0, "first circle", &a)) ||
+            (st = cd_check_circle(q, c1, "second circle", &b)))
+            return st;
+    }
     /* Work relative to the first centre. */
     vec3 offset = a.c;
     a.c = v3(0, 0, 0);

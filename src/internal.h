@@ -155,6 +155,17 @@ int cd_cc_parallel_candidates(const cd_cc *g, double *t0);
 /* When the axes meet (within a loose tolerance), the unit normal m of the mirror plane through
  * both axes; returns 0 otherwise. */
 int cd_cc_mirror(const cd_cc *g, vec3 *m);
+/* Offer polished minima (side, angle, F): the best, and the others unless they tie with it
+ * without a barrier between them on c0 (one flat basin, not two symmetric minima). When F_s''
+ * vanishes at the minimum, circle s may be at constant distance from the other (e.g. equal
+ * perpendicular circles through each other's centre): tested by sampling, flagged equidistant. */
+void cd_cc_offer_minima(const cd_cc *g, int n, const int *side, const double *t, const double *F, cd_best *b);
+/* Both methods work on a copy scaled by a power of two (exact) so that the problem scale is
+ * in [1, 2): squares neither overflow (coordinates up to 1e150) nor underflow (1e-300).
+ * cd_cc_scale writes the scaled circles (c0 at the origin) and s; cd_cc_unscale offers the
+ * scaled collector's candidates to b in the caller's units. */
+void cd_cc_scale(const cd_circle *c0, const cd_circle *c1, double L, cd_circle *a, cd_circle *b, double *s);
+void cd_cc_unscale(const cd_best *scaled, double s, cd_best *b);
 /* ---- end of cc_methods block ---- */
 
 #endif

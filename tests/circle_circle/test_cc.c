@@ -8,6 +8,9 @@
 #include "check.h"
 
 static cdist_query *q;
+/* Tolerance of the extreme-scale checks: a few ulps for the robust method (AUTO uses it), the
+ * project's 1e-13 of scale for the others. */
+static double scale_tol = 4 * 2.220446049250313e-16;
 static const double EPS = 2.220446049250313e-16;
 
 static cdist_circle circ(double cx, double cy, double cz, double nx, double ny, double nz, double r)
@@ -264,12 +267,15 @@ static cdist_circle rand_circle(double rmax)
     return (cdist_circle){tv(srand1(), srand1(), srand1()), n, rmax * (0.05 + urand())};
 }
 
+static int skip_perturbed; /* --skip-perturbed: no kind 7 (see meson.build) */
+
 static void random_checks(int count)
 {
-    double worst = 0, worst_sym = 0;
+    double worst = 0, worst_sym = 0, worst7 = 0;
     for (int i = 0; i < count; i++) {
         cdist_circle a = rand_circle(1.5), b = rand_circle(1.5);
         int kind = i % 8;
+        if (kind == 7 && skip_perturbed) continue;
         if (kind == 1) { /* linked: b's centre on a, b's plane containing a's tangent-ish */
             double t = 6.283 * urand();
             cdist_vec3 u, v;
@@ -301,6 +307,24 @@ static void random_checks(int count)
             b.center = tv(b.center.x + k * d.x, b.center.y + k * d.y, b.center.z + k * d.z);
         } else if (kind == 5) { /* very different radii */
             b.radius = a.radius * 1e-4 * (1 + urand());
+        } else if (kind == 7) { /* an exact family perturbed by 1e-6 .. 1e-14 */
+            static const cdist_circle fam[][2] = {
+                {{{0, 0, 0}, {0, 0, 1}, 2}, {{2, 0, 0}, {0, 1, 0}, 1}},                   /* meridian */
+                {{{0, 0, 0}, {0, 0, 1}, 2}, {{0, 1, 0}, {-0.5, 0, 0.86602540378443865}, 2}}, /* villarceau */
+                {{{0, 0, 0}, {0, 0, 1}, 1}, {{0, 0, 0.5}, {0, 0, 1}, 1.5}},                /* coaxial */
+                {{{0, 0, 0}, {0, 0, 1}, 1}, {{1, 0, 0}, {0, 1, 0}, 1}},                    /* hopf */
+                {{{0, 0, 0}, {0, 0, 1}, 1}, {{2, 0, 0}, {0, 0, 1}, 1}},                    /* external tangent */
+                {{{0, 0, 0}, {0, 0, 1}, 2}, {{0, 0, 0.3}, {1, 0, 0}, 1}},                  /* axes perpendicular */
+            };
+            int fi = (i / 8) % 6;
+            double eps = pow(10.0, -6 - 8 * urand());
+            a = fam[fi][0];
+            b = fam[fi][1];
+            b.center = tv(b.center.x + eps * srand1(), b.center.y + eps * srand1(), b.center.z + eps * srand1());
+            cdist_vec3 n = tv(b.normal.x + eps * srand1(), b.normal.y + eps * srand1(), b.normal.z + eps * srand1());
+            double nn = sqrt(n.x * n.x + n.y * n.y + n.z * n.z);
+            b.normal = tv(n.x / nn, n.y / nn, n.z / nn);
+            b.radius *= 1 + eps * srand1();
         } else if (kind == 6) { /* centre near the other's axis */
             double h = 2 * srand1();
             b.center = tv(a.center.x + h * a.normal.x + 1e-8 * srand1(), a.center.y + h * a.normal.y,
@@ -313,20 +337,30 @@ static void random_checks(int count)
         double L = scale_of(&a, &b, r.distance);
         double err = (double)fabsl((long double)r.distance - e) / L;
         double sym = fabs(r.distance - rs.distance) / L;
-        if (err > worst) worst = err;
+        if (err > worst && kind != 7) worst = err;
         if (sym > worst_sym) worst_sym = sym;
-        CHECK(err <= 1e-13, "random %d (kind %d): distance %.17g brute force %.20Lg (err %.3g of scale)", i, kind,
-              r.distance, e, err);
+        /* Exact families perturbed by 1e-6 .. 1e-14 (kind 7) sit at the resolution limit of
+         * double arithmetic (F' near a near-crossing of an axis carries a relative rounding
+         * eps L / rho): held to the project's bar of 1e-12 of scale, the rest to 1e-13. */
+        double tol = kind == 7 ? 1e-12 : 1e-13;
+        if (kind == 7 && err > worst7) worst7 = err;
+        CHECK(err <= tol,
+              "random %d (kind %d): distance %.17g brute force %.20Lg (err %.3g of scale)\n  cc %.17g %.17g %.17g "
+              "%.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g",
+              i, kind, r.distance, e, err, a.center.x, a.center.y, a.center.z, a.normal.x, a.normal.y, a.normal.z,
+              a.radius, b.center.x, b.center.y, b.center.z, b.normal.x, b.normal.y, b.normal.z, b.radius);
         CHECK(sym <= 4 * EPS, "random %d (kind %d): f(a,b) %.17g f(b,a) %.17g", i, kind, r.distance, rs.distance);
-        CHECK(r.num_pairs == rs.num_pairs && r.equidistant == rs.equidistant, "random %d: swapped flags differ", i);
+        CHECK(kind == 7 || (r.num_pairs == rs.num_pairs && r.equidistant == rs.equidistant),
+              "random %d: swapped flags differ", i);
         if (r.num_pairs == rs.num_pairs && r.num_pairs >= 1) {
             /* swapped pairs: the same points in the other order (pairs may come in either order) */
             double best = INFINITY;
             for (int j = 0; j < rs.num_pairs; j++)
                 best = fmin(best, tdist(r.pairs[0].point[0], rs.pairs[j].point[1]) +
                                       tdist(r.pairs[0].point[1], rs.pairs[j].point[0]));
-            CHECK(r.equidistant || best <= 1e-6 * L, "random %d (kind %d): swapped pair differs by %.3g", i, kind,
-                  best);
+            /* (not for kind 7: near-constant distances leave the pair ill-conditioned) */
+            CHECK(kind == 7 || r.equidistant || best <= 1e-6 * L, "random %d (kind %d): swapped pair differs by %.3g",
+                  i, kind, best);
         }
         check_pairs("random", &a, &b, &r, 64 * EPS * (L + 2));
         /* invariance under a rigid motion and a scale */
@@ -338,12 +372,46 @@ static void random_checks(int count)
         CHECK(cdist_circle_circle(q, &ta, &tb, &rt) == CDIST_OK, "moved %d status", i);
         long double et = brute(&ta, &tb, 2048);
         double Lt = scale_of(&ta, &tb, rt.distance);
-        CHECK(fabsl((long double)rt.distance - et) <= 1e-13 * Lt, "moved %d (kind %d): %.17g vs brute force %.20Lg",
-              i, kind, rt.distance, et);
-        CHECK(fabs(rt.distance - s * r.distance) <= 1e-12 * Lt + 64 * EPS * 60 * s, "moved %d: %.17g vs s d %.17g", i,
-              rt.distance, s * r.distance);
+        CHECK(fabsl((long double)rt.distance - et) <= tol * Lt,
+              "moved %d (kind %d): %.17g vs brute force %.20Lg\n  cc %.17g %.17g %.17g %.17g %.17g %.17g %.17g "
+              "%.17g %.17g %.17g %.17g %.17g %.17g %.17g",
+              i, kind, rt.distance, et, ta.center.x, ta.center.y, ta.center.z, ta.normal.x, ta.normal.y, ta.normal.z,
+              ta.radius, tb.center.x, tb.center.y, tb.center.z, tb.normal.x, tb.normal.y, tb.normal.z, tb.radius);
+        /* (for kind 7 the rounding of the motion itself moves the near-degenerate distance) */
+        CHECK(kind == 7 || fabs(rt.distance - s * r.distance) <= 1e-12 * Lt + 64 * EPS * 60 * s,
+              "moved %d: %.17g vs s d %.17g", i, rt.distance, s * r.distance);
     }
-    printf("random: max error vs brute force %.3g of scale, max asymmetry %.3g of scale\n", worst, worst_sym);
+    printf("random: max error vs brute force %.3g of scale (perturbed exact families: %.3g), max asymmetry %.3g "
+           "of scale\n",
+           worst, worst7, worst_sym);
+}
+
+/* Extreme magnitudes: the same configurations scaled by 2^-480 .. 2^480 (about 1e-145 ..
+ * 1e145) give the scaled distance (scaling by a power of two is exact). */
+static void extreme_scales(void)
+{
+    for (int i = 0; i < 40; i++) {
+        cdist_circle a = rand_circle(1.5), b = rand_circle(1.5);
+        if (i % 4 == 1) b = a, b.center.x += 0.25, b.normal = rand_unit(); /* linked-ish */
+        if (i % 4 == 2) b.normal = a.normal;                                /* parallel */
+        cdist_result r0, r;
+        CHECK(cdist_circle_circle(q, &a, &b, &r0) == CDIST_OK, "scale base %d", i);
+        for (int e = -480; e <= 480; e += 160) {
+            double f = ldexp(1.0, e);
+            cdist_circle x = a, y = b;
+            x.center = tv(f * a.center.x, f * a.center.y, f * a.center.z);
+            y.center = tv(f * b.center.x, f * b.center.y, f * b.center.z);
+            x.radius *= f;
+            y.radius *= f;
+            CHECK(cdist_circle_circle(q, &x, &y, &r) == CDIST_OK, "scale 2^%d status %s", e,
+                  cdist_query_last_error(q));
+            double L = scale_of(&x, &y, r.distance);
+            CHECK(fabs(r.distance - f * r0.distance) <= scale_tol * L, "scale 2^%d case %d: %.17g vs %.17g", e, i,
+                  r.distance, f * r0.distance);
+            CHECK(r.num_pairs == r0.num_pairs && r.equidistant == r0.equidistant, "scale 2^%d case %d: flags", e,
+                  i);
+        }
+    }
 }
 
 static void batch(void)
@@ -369,17 +437,24 @@ static void batch(void)
 int main(int argc, char **argv)
 {
     const char *method = "auto";
-    for (int i = 1; i < argc; i++)
+    int count = 400;
+    for (int i = 1; i < argc; i++) {
         if (!strncmp(argv[i], "--method=", 9)) method = argv[i] + 9;
+        if (!strncmp(argv[i], "--count=", 8)) count = atoi(argv[i] + 8);
+        if (!strcmp(argv[i], "--skip-perturbed")) skip_perturbed = 1;
+        if (!strncmp(argv[i], "--seed=", 7)) check_rng_state = strtoull(argv[i] + 7, NULL, 10) | 1;
+    }
     cdist_method m = !strcmp(method, "polynomial") ? CDIST_METHOD_POLYNOMIAL
                      : !strcmp(method, "robust")   ? CDIST_METHOD_ROBUST
                      : !strcmp(method, "iteration") ? CDIST_METHOD_ITERATION
                                                     : CDIST_METHOD_AUTO;
     q = cdist_query_new();
     cdist_query_set_method(q, m);
+    if (m == CDIST_METHOD_POLYNOMIAL || m == CDIST_METHOD_ITERATION) scale_tol = 1e-13;
     paper_examples();
     exact_families();
-    random_checks(400);
+    random_checks(count);
+    extreme_scales();
     batch();
     cdist_query_free(q);
     return check_summary("circle_circle");
