@@ -37,7 +37,7 @@
 #include "curve_scan.h"
 
 #define TWO_PI (2.0 * M_PI)
-#define CRIT_CAP 16
+#define CRIT_CAP 64
 
 typedef struct arcx {
     cd_circle c; /* centre in the query's frame; u, v the library basis */
@@ -203,7 +203,8 @@ static cdist_status arc_minima(cs_scan *s, const arcx *X, const cd_circle *Y, in
         /* n == 0 (unavailable) or -1 (constant: the sampled scan sees a flat function, offers
          * it everywhere and the ties mark the continuum); for the disk also parallel planes
          * (h constant). */
-        if (n > 0 && (!s->disk || R > 4.0 * DBL_EPSILON * X->c.r)) {
+        /* (n == CRIT_CAP may have been truncated: sample instead.) */
+        if (n > 0 && n < CRIT_CAP && (!s->disk || R > 4.0 * DBL_EPSILON * X->c.r)) {
             *exact = 1;
             /* th is in c0's library basis; the arc's angle 0 is U at library angle phi0. */
             for (int i = 0; i < n; i++)
