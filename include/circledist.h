@@ -270,6 +270,11 @@ CDIST_API cdist_status cdist_circle_disk(cdist_query *q, const cdist_circle *c, 
 CDIST_API cdist_status cdist_disk_disk(cdist_query *q, const cdist_circle *d0, const cdist_circle *d1, cdist_result *r);
 
 /* ---- curves and arcs ---------------------------------------------------------------- */
+/* These queries have one method (root bounding and bisection, answered as
+ * ::CDIST_METHOD_ROBUST whatever the handle's method). Arcs are exact: their candidates are the
+ * circle-circle critical points inside the range plus the end points. Callback curves, helices
+ * and Bezier curves are sampled at cdist_query_get_curve_samples() intervals (per turn for a
+ * helix) to bracket critical points, so two minima closer than the sample spacing may merge. */
 
 /// Distance from the curve f(t), t in [t0, t1], to a circle; param[0] is the curve parameter.
 /// The curve must be continuously differentiable and f must give its exact derivative.

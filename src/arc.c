@@ -126,7 +126,7 @@ static void offer_point_arc(cs_coll *k, vec3 p, double tp, const arcx *a, int p_
     vec3 K;
     double ang;
     int eq = 0;
-    if (tmp.equidistant || cs_near_axis(k, rel, &a->c)) {
+    if (cd_best_is_equidistant(&tmp) || cs_near_axis(k, rel, &a->c)) {
         /* p on the axis (within rounding of the problem's scale): every arc point is closest;
          * the start point represents them. */
         ang = a->start;

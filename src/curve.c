@@ -82,7 +82,7 @@ void cs_offer_point(cs_coll *k, vec3 p, double t, const cd_circle *c, int disk, 
     if (tmp.n == 0) return;
     const cd_cand *x = &tmp.c[0];
     vec3 kp = v_add(x->p[1], c->c);
-    int eq = tmp.equidistant || (!disk && cs_near_axis(k, rel, c));
+    int eq = cd_best_is_equidistant(&tmp) || (!disk && cs_near_axis(k, rel, c));
     if (swap) cs_coll_offer(k, x->d2, kp, p, x->param[1], t, eq);
     else cs_coll_offer(k, x->d2, p, kp, t, x->param[1], eq);
 }
