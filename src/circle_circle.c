@@ -81,7 +81,7 @@
 
 #include "internal.h"
 
-#define CC_INIT_INTERVALS 8
+#define CC_INIT_INTERVALS 8 /* half_sec[] below is tabulated for this value */
 #define CC_MIN_WIDTH (1.0 / 1073741824.0) /* 2^-30 rad */
 #define CC_EVAL_BUDGET 48 /* per initial interval */
 #define CC_DENSE_SAMPLES 512
@@ -443,13 +443,19 @@ static int certified(const cc_frame *f, const cc_pt *a, const cc_pt *b)
 }
 
 
-/* 1 / (2 cos(w/2)) for the interval width 2 pi / CC_INIT_INTERVALS / 2^level. */
+/* 1 / (2 cos(w/2)) for the interval width 2 pi / CC_INIT_INTERVALS / 2^level: the values of
+ * 0.5 / cos(M_PI / CC_INIT_INTERVALS / 2^level) for CC_INIT_INTERVALS = 8, as literals (a static
+ * initializer cannot call cos in standard C; clang rejects it). Printed with %.17g from
+ * 0.5 / math.cos(math.pi / 8 / 2**level). */
 static const double half_sec[] = {
-#define HS(l) 0.5 / cos(M_PI / CC_INIT_INTERVALS / (double)(1L << (l)))
-    HS(0),  HS(1),  HS(2),  HS(3),  HS(4),  HS(5),  HS(6),  HS(7),  HS(8),  HS(9),  HS(10),
-    HS(11), HS(12), HS(13), HS(14), HS(15), HS(16), HS(17), HS(18), HS(19), HS(20), HS(21),
-    HS(22), HS(23), HS(24), HS(25), HS(26), HS(27), HS(28), HS(29), HS(30), HS(31)
-#undef HS
+    0.54119610014619701, 0.50979557910415918, 0.50241928618815568, 0.50060299823519627,
+    0.50015063602065102, 0.50003765191554772, 0.50000941253588782, 0.50000235310628605,
+    0.50000058827484117, 0.50000014706860219, 0.50000003676714377, 0.50000000919178555,
+    0.50000000229794639, 0.50000000057448657, 0.50000000014362167, 0.50000000003590539,
+    0.50000000000897638, 0.50000000000224409, 0.500000000000561, 0.50000000000014033,
+    0.50000000000003508, 0.50000000000000877, 0.50000000000000222, 0.50000000000000056,
+    0.50000000000000011, 0.50000000000000011, 0.5, 0.5,
+    0.5, 0.5, 0.5, 0.5,
 };
 
 /* Golden-section search of F on [lo, hi]; offers the best point (robust mode). F is computed
