@@ -353,6 +353,19 @@ typedef struct cc_sink {
     double rho_min; /* axis distance of the point giving dmin */
 } cc_sink;
 
+/* Evaluate F at angle t and track the extremes seen by the scan. */
+static void cc_sample(const cc_frame *f, cc_sink *k, double t, cc_pt *cur, double *Fmax)
+{
+    double c, s;
+    sincos(t, &s, &c);
+    cc_eval(f, t, c, s, cur);
+    if (cur->F > *Fmax) *Fmax = cur->F;
+    if (cur->F < k->Fmin) {
+        k->Fmin = cur->F;
+        k->tmin = cur->t;
+    }
+}
+
 static void pair_at(const cc_frame *f, double t, cc_sink *k)
 {
     double c, s;
@@ -493,14 +506,8 @@ static void scan_dense(const cc_frame *f, cc_sink *k, double *Fmax)
             cur = first;
             cur.t = M_PI;
         } else {
-            double t = -M_PI + i * step, c, s;
-            sincos(t, &s, &c);
-            cc_eval(f, t, c, s, &cur);
-            if (cur.F > *Fmax) *Fmax = cur.F;
-            if (cur.F < k->Fmin) {
-                k->Fmin = cur.F;
-                k->tmin = cur.t;
-            }
+            double t = -M_PI + i * step;
+            cc_sample(f, k, t, &cur, Fmax);
         }
         if (i == 0) first = cur;
         else emit(k, &prev, &cur);
@@ -581,13 +588,7 @@ static void scan_kink(const cc_frame *f, cc_sink *k, double t, double *Fmax)
                 emit(k, &prev, &cur);
                 prev = cur;
             }
-            sincos(x, &s, &c);
-            cc_eval(f, x, c, s, &cur);
-            if (cur.F > *Fmax) *Fmax = cur.F;
-            if (cur.F < k->Fmin) {
-                k->Fmin = cur.F;
-                k->tmin = cur.t;
-            }
+            cc_sample(f, k, x, &cur, Fmax);
             if (!first) emit(k, &prev, &cur);
             first = 0;
             prev = cur;
@@ -610,14 +611,8 @@ static void emit_sampled(const cc_frame *f, cc_sink *k, const cc_pt *a, const cc
     cc_pt prev = *a, cur;
     double Fbest = a->F, tbest = a->t;
     for (int j = 1; j < n; j++) {
-        double t = a->t + w * j / n, c, s;
-        sincos(t, &s, &c);
-        cc_eval(f, t, c, s, &cur);
-        if (cur.F > *Fmax) *Fmax = cur.F;
-        if (cur.F < k->Fmin) {
-            k->Fmin = cur.F;
-            k->tmin = cur.t;
-        }
+        double t = a->t + w * j / n;
+        cc_sample(f, k, t, &cur, Fmax);
         if (cur.F < Fbest) Fbest = cur.F, tbest = cur.t;
         emit(k, &prev, &cur);
         prev = cur;
