@@ -12,7 +12,7 @@ typedef struct torus {
 int main(void)
 {
     torus a = {{{0, 0, 0}, {0, 0, 1}, 2.0}, 0.25};
-    torus b = {{{2, 0, 0}, {0, 1, 0}, 2.0}, 0.25}; /* linked with a */
+    torus b = {{{1.5, 0.2, 0.3}, {0, 1, 0}, 2.0}, 0.25}; /* linked with a */
     cdist_query *q = cdist_query_new();
     if (!q) return 1;
     cdist_result r;
@@ -23,8 +23,8 @@ int main(void)
         return 1;
     }
     double clearance = r.distance - a.tube - b.tube;
-    printf("core distance %.17g, clearance %.17g (%s)\n", r.distance, clearance,
-           clearance < 0 ? "colliding" : "free");
+    printf("core distance %.17g, clearance %.17g (%s)%s\n", r.distance, clearance,
+           clearance < 0 ? "colliding" : "free", r.equidistant ? ", equidistant" : "");
     for (int i = 0; i < r.num_pairs; i++)
         printf("closest pair %d: (%g, %g, %g) - (%g, %g, %g)\n", i, r.pairs[i].point[0].x, r.pairs[i].point[0].y,
                r.pairs[i].point[0].z, r.pairs[i].point[1].x, r.pairs[i].point[1].y, r.pairs[i].point[1].z);
