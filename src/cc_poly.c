@@ -244,7 +244,6 @@ int cd_cc_closed_form(const cd_cc *g, cd_best *b)
         for (int i = 0; i < t.n; i++)
             cd_best_offer_flag(b, t.c[i].equidistant, t.c[i].d2, v3(0, 0, 0), v_add(t.c[i].p[1], g->D), NAN,
                                t.c[i].param[1]);
-        b->equidistant |= t.equidistant;
         return 1;
     }
     /* Coaxial (Eberly §5.1 (a), §5.2; Li et al. §2.4): every point of either circle is equally

@@ -778,7 +778,6 @@ static cdist_status cc_robust(cdist_query *q, const cd_circle *c0, const cd_circ
             for (int i = 0; i < t.n; i++)
                 cd_best_offer_flag(b, t.c[i].equidistant, t.c[i].d2, v_add(t.c[i].p[0], C), v_add(t.c[i].p[1], C),
                                    t.c[i].param[0], t.c[i].param[1]);
-            if (t.equidistant) b->equidistant = 1;
         }
         return CDIST_OK;
     }

@@ -144,8 +144,7 @@ typedef struct lc_ctx {
     double rs;        /* scaled radius */
     double eqtol;     /* on-axis tolerance for rho (scaled) */
     int n;
-    cd_cand cand[LC_MAX_CAND];
-    int eq[LC_MAX_CAND];
+    cd_cand cand[LC_MAX_CAND]; /* .equidistant: an on-axis point (every circle point as close) */
 } lc_ctx;
 
 static void push(lc_ctx *x, double d2, vec3 P, vec3 K, double t, double ang, int eq)
@@ -157,7 +156,7 @@ static void push(lc_ctx *x, double d2, vec3 P, vec3 K, double t, double ang, int
     c->p[1] = K;
     c->param[0] = t;
     c->param[1] = ang;
-    x->eq[x->n] = eq;
+    c->equidistant = eq;
     x->n++;
 }
 
@@ -227,9 +226,6 @@ static void merge_basins(lc_ctx *x, const lc_model *m, double tol)
             cd_cand tc = x->cand[j];
             x->cand[j] = x->cand[j - 1];
             x->cand[j - 1] = tc;
-            int te = x->eq[j];
-            x->eq[j] = x->eq[j - 1];
-            x->eq[j - 1] = te;
         }
     int e = ilogb(x->sigma);
     for (int i = 0; i + 1 < x->n;) {
@@ -244,10 +240,7 @@ static void merge_basins(lc_ctx *x, const lc_model *m, double tol)
             continue;
         }
         int drop = (x->cand[i + 1].d2 < x->cand[i].d2) ? i : i + 1;
-        for (int j = drop; j + 1 < x->n; j++) {
-            x->cand[j] = x->cand[j + 1];
-            x->eq[j] = x->eq[j + 1];
-        }
+        for (int j = drop; j + 1 < x->n; j++) x->cand[j] = x->cand[j + 1];
         x->n--;
     }
 }
@@ -445,15 +438,12 @@ static cdist_status linear_circle(cdist_query *q, cdist_method method, vec3 B, v
     merge_basins(&x, &m, CD_TIE_ULPS * EPS * b->scale);
 
 done:;
-    /* Offer everything; the equidistant flag is set when our best candidate is an on-axis
-     * point and it is the best in b (an on-axis endpoint that is not the minimum sets nothing). */
-    int best = -1;
+    /* Offer everything; an on-axis candidate makes the result equidistant only if it ends up
+     * the best in b (an on-axis end that is not the minimum sets nothing). */
     for (int i = 0; i < x.n; i++) {
-        cd_cand *k = &x.cand[i];
-        if (best < 0 || k->d2 < x.cand[best].d2) best = i;
-        cd_best_offer(b, k->d2, k->p[0], k->p[1], k->param[0], k->param[1]);
+        const cd_cand *k = &x.cand[i];
+        cd_best_offer_flag(b, k->equidistant, k->d2, k->p[0], k->p[1], k->param[0], k->param[1]);
     }
-    if (best >= 0 && x.eq[best] && b->n > 0 && x.cand[best].d2 <= b->c[0].d2) b->equidistant = 1;
     return CDIST_OK;
 }
 
