@@ -6,6 +6,7 @@
 #include <time.h>
 
 #include "circledist.h"
+#include "circle_curve.h" /* tests/common */
 
 static unsigned long long st = 0x2545F4914F6CDD1Dull;
 static double ur(void)
@@ -30,20 +31,6 @@ static cdist_arc ra(void)
     cdist_arc a = {rc(), ru(), M_PI * ur(), 0};
     a.end = a.start + M_PI * (1.0 + ur());
     return a;
-}
-
-typedef struct circ_curve { cdist_vec3 c, u, v; double r; } circ_curve;
-static int circ_fn(void *user, double t, cdist_vec3 *p, cdist_vec3 *d)
-{
-    const circ_curve *k = user;
-    double s = sin(t), c = cos(t);
-    p->x = k->c.x + k->r * (c * k->u.x + s * k->v.x);
-    p->y = k->c.y + k->r * (c * k->u.y + s * k->v.y);
-    p->z = k->c.z + k->r * (c * k->u.z + s * k->v.z);
-    d->x = k->r * (-s * k->u.x + c * k->v.x);
-    d->y = k->r * (-s * k->u.y + c * k->v.y);
-    d->z = k->r * (-s * k->u.z + c * k->v.z);
-    return 0;
 }
 
 static double now(void)

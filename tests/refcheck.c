@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "check.h"
+#include "errata.h"
 #include "query_io.h"
 
 static cdist_circle circle_at(const double *v)
@@ -21,29 +22,6 @@ static double coord_mag(const cdq_line *ql)
     double m = 0;
     for (int i = 0; i < ql->nvalues; i++) m = fmax(m, fabs(ql->v[i]));
     return m;
-}
-
-/* Errata: lines "FILE_BASENAME LINE EXACT_DISTANCE # why" for the few lines where the shared
- * reference is demonstrably off (checked with an exact mpmath computation on the doubles). */
-static int errata_lookup(const char *errata, const char *queries, long lineno, long double *value)
-{
-    if (!errata) return 0;
-    FILE *f = fopen(errata, "r");
-    if (!f) return 0;
-    const char *base = strrchr(queries, '/');
-    base = base ? base + 1 : queries;
-    char line[512], name[256];
-    long ln;
-    int found = 0;
-    while (!found && fgets(line, sizeof line, f)) {
-        char num[128];
-        if (sscanf(line, "%255s %ld %127s", name, &ln, num) == 3 && !strcmp(name, base) && ln == lineno) {
-            *value = strtold(num, NULL);
-            found = 1;
-        }
-    }
-    fclose(f);
-    return found;
 }
 
 int main(int argc, char **argv)

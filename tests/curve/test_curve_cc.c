@@ -10,54 +10,9 @@
 #include <string.h>
 
 #include "check.h"
+#include "circle_curve.h"
+#include "errata.h"
 #include "query_io.h"
-
-typedef struct circ_curve {
-    cdist_vec3 c, u, v;
-    double r;
-} circ_curve;
-
-static int circ_fn(void *user, double t, cdist_vec3 *p, cdist_vec3 *d)
-{
-    const circ_curve *k = user;
-    double s = sin(t), c = cos(t);
-    p->x = k->c.x + k->r * (c * k->u.x + s * k->v.x);
-    p->y = k->c.y + k->r * (c * k->u.y + s * k->v.y);
-    p->z = k->c.z + k->r * (c * k->u.z + s * k->v.z);
-    d->x = k->r * (-s * k->u.x + c * k->v.x);
-    d->y = k->r * (-s * k->u.y + c * k->v.y);
-    d->z = k->r * (-s * k->u.z + c * k->v.z);
-    return 0;
-}
-
-static circ_curve make(const cdist_circle *c)
-{
-    circ_curve k;
-    k.c = c->center;
-    k.r = c->radius;
-    cdist_circle_basis(c, &k.u, &k.v);
-    return k;
-}
-
-/* Errata lines "FILE_BASENAME LINE EXACT # why" (tests/data/errata.txt). */
-static int errata_lookup(const char *errata, const char *queries, long lineno, long double *value)
-{
-    if (!errata) return 0;
-    FILE *f = fopen(errata, "r");
-    if (!f) return 0;
-    const char *base = strrchr(queries, '/');
-    base = base ? base + 1 : queries;
-    char line[512], name[256], num[128];
-    long ln;
-    int found = 0;
-    while (!found && fgets(line, sizeof line, f))
-        if (sscanf(line, "%255s %ld %127s", name, &ln, num) == 3 && !strcmp(name, base) && ln == lineno) {
-            *value = strtold(num, NULL);
-            found = 1;
-        }
-    fclose(f);
-    return found;
-}
 
 static double worst_arc = 0;
 static long worst_arc_line = 0;
@@ -130,7 +85,7 @@ int main(int argc, char **argv)
         }
         for (int role = 0; role < 2; role++) {
             if (disk && role) break; /* the disk is not a curve */
-            circ_curve k = make(role ? &c1 : &c0);
+            circ_curve k = circ_curve_of(role ? &c1 : &c0);
             const cdist_circle *other = role ? &c0 : &c1;
             cdist_result r;
             cdist_status st = (disk ? cdist_curve_disk : cdist_curve_circle)(q, circ_fn, &k, 0.0, 2 * M_PI, other, &r);
