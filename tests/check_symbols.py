@@ -6,9 +6,12 @@ usage: check_symbols.py LIBRARY VERSION_SCRIPT HEADER
 - the library exports exactly those, each with a version node from the script;
 - the soname is libcircledist.so.<major>.
 """
+import os
 import re
 import subprocess
 import sys
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "common"))
+from checks import check, finish  # noqa: E402
 
 lib, mapfile, header = sys.argv[1:4]
 hdr = open(header).read()
@@ -28,15 +31,6 @@ for line in out.splitlines():
 dyn = subprocess.run(["objdump", "-p", lib], capture_output=True, text=True, check=True).stdout
 soname = re.search(r"SONAME\s+(\S+)", dyn)
 
-failed = 0
-passed = 0
-def check(cond, msg):
-    global failed, passed
-    if cond:
-        passed += 1
-    else:
-        failed += 1
-        print("FAIL:", msg)
 
 check(len(declared) > 10, "header declarations found: %d" % len(declared))
 check(declared == set(nodes), "header vs map: only header %s, only map %s"
@@ -46,5 +40,4 @@ check(set(exported) == set(nodes), "exports vs map: only exported %s, only map %
 for sym, ver in exported.items():
     check(ver.strip("()") == nodes.get(sym), "%s has version %s, map says %s" % (sym, ver, nodes.get(sym)))
 check(soname is not None and soname.group(1) == "libcircledist.so.1", "soname %s" % (soname and soname.group(1)))
-print("check_symbols: %d passed, %d failed" % (passed, failed))
-sys.exit(1 if failed else 0)
+finish("check_symbols")

@@ -6,9 +6,11 @@ import subprocess
 import sys
 import tempfile
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "common"))
+from checks import check, finish  # noqa: E402
+
 refcheck, data = sys.argv[1], sys.argv[2]
 here = os.path.dirname(os.path.abspath(__file__))
-failed = passed = 0
 for kind in ("pc", "pd"):
     for s in ("hard", "random"):
         q = os.path.join(data, "%s_%s.txt" % (kind, s))
@@ -20,20 +22,12 @@ for kind in ("pc", "pd"):
         r = subprocess.run([refcheck, "--tol=1e-15", q, f.name], capture_output=True, text=True)
         os.unlink(f.name)
         print(r.stdout.strip().splitlines()[-2] if r.stdout else r.stderr)
-        if r.returncode == 0:
-            passed += 1
-        else:
-            failed += 1
-            print(r.stderr[-2000:])
+        check(r.returncode == 0, "%s against exact values:\n%s" % (q, r.stderr[-2000:]))
         # errata entries agree with the exact values to 20 digits
         for line in open(os.path.join(data, "errata.txt")):
             f = line.split("#")[0].split()
             if len(f) == 3 and f[0] == "%s_%s.txt" % (kind, s):
                 e, x = float(f[2]), float(values[int(f[1]) - 1])
-                if abs(e - x) <= 1e-15 * max(abs(x), 1e-300):
-                    passed += 1
-                else:
-                    failed += 1
-                    print("erratum %s line %s: %r vs exact %r" % (f[0], f[1], e, x))
-print("point_exact_check: %d passed, %d failed" % (passed, failed))
-sys.exit(1 if failed else 0)
+                check(abs(e - x) <= 1e-15 * max(abs(x), 1e-300),
+                      "erratum %s line %s: %r vs exact %r" % (f[0], f[1], e, x))
+finish("point_exact_check")

@@ -8,20 +8,13 @@
   flag, with the pairs' points swapped.
 usage: test_consistency.py CIRCLEDIST DATA_DIR"""
 import math
+import os
 import subprocess
 import sys
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "common"))
+from checks import check, finish  # noqa: E402
 
 tool, data = sys.argv[1], sys.argv[2]
-passed = failed = 0
-
-
-def check(cond, msg):
-    global passed, failed
-    if cond:
-        passed += 1
-    else:
-        failed += 1
-        print("FAIL:", msg)
 
 
 def run(method, text):
@@ -91,5 +84,4 @@ for kind, name in (("cc", "cc_hard"), ("cc", "cc_random"), ("dd", "cd_hard"), ("
                 ok = (max(abs(p - q) for p, q in zip(x[3:6], y[6:9])) <= tol or
                       max(abs(p - q) for p, q in zip(x[6:9], y[3:6])) <= tol)
             check(ok, "%s %s line %d method %s: swap gives %s vs %s" % (kind, name, i + 1, m, y[:3], x[:3]))
-print("test_consistency: %d passed, %d failed" % (passed, failed))
-sys.exit(1 if failed else 0)
+finish("test_consistency")

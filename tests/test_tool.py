@@ -5,20 +5,13 @@ usage: test_tool.py CIRCLEDIST DATA_DIR
 Expected distances come from tests/data (independent reference), never from the tool itself."""
 import json
 import math
+import os
 import subprocess
 import sys
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "common"))
+from checks import check, finish  # noqa: E402
 
 tool, data = sys.argv[1], sys.argv[2]
-passed = failed = 0
-
-
-def check(cond, msg):
-    global passed, failed
-    if cond:
-        passed += 1
-    else:
-        failed += 1
-        print("FAIL:", msg)
 
 
 def run(args, stdin=""):
@@ -89,5 +82,4 @@ for m in ("auto", "polynomial", "robust", "iteration"):
 rc, out, err = run([], "pc " + "1 " * 100000 + "\n\x00\x01\x02\npc\n")
 check(rc == 1 and out.count("error:") == 3, "garbage lines: %r" % out[:200])
 
-print("test_tool: %d passed, %d failed" % (passed, failed))
-sys.exit(1 if failed else 0)
+finish("test_tool")

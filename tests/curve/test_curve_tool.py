@@ -7,25 +7,18 @@ point distances, every sampled local minimum polished by golden section in mpmat
 never from the tool or the library."""
 import json
 import math
+import os
 import random
 import subprocess
 import sys
 
 import mpmath as mp
 import numpy as np
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../common"))
+from checks import check, finish  # noqa: E402
 
 mp.mp.dps = 30
 tool = sys.argv[1]
-passed = failed = 0
-
-
-def check(cond, msg):
-    global passed, failed
-    if cond:
-        passed += 1
-    else:
-        failed += 1
-        print("FAIL:", msg)
 
 
 # ---- geometry, generic in the number type (numpy arrays or mpmath numbers) ----
@@ -339,5 +332,4 @@ check(len(o) == 6 and abs(float(o[5].split()[0]) - 1) < 1e-15, "good line after 
 
 for k in sorted(worst):
     print("%s: max error %.3g of scale" % (k, worst[k]))
-print("curve-tool: %d passed, %d failed" % (passed, failed))
-sys.exit(1 if failed else 0)
+finish("curve-tool")
