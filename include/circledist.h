@@ -143,7 +143,11 @@ typedef enum cdist_status {
     CDIST_ERR_CALLBACK_FAILED = 9,     ///< a curve callback returned non-zero
     CDIST_ERR_CALLBACK_NOT_FINITE = 10, ///< a curve callback returned NaN or infinity
     CDIST_ERR_NO_MEMORY = 11,          ///< memory allocation failed
-    CDIST_ERR_INTERNAL = 12            ///< an internal numerical failure (please report)
+    CDIST_ERR_INTERNAL = 12,           ///< an internal numerical failure (please report)
+    CDIST_ERR_HANDLE_BUSY = 13,        ///< the handle was already in use by another call (one thread per handle)
+    CDIST_ERR_COST_LIMIT = 14,         ///< the query would exceed the documented cost limit
+    CDIST_ERR_THREAD = 15,             ///< a worker thread could not be started
+    CDIST_ERR_BAD_KIND = 16            ///< a query kind number was not a ::cdist_kind
 } cdist_status;
 
 /// Algorithms. A method that a query does not have is answered by ::CDIST_METHOD_AUTO;

@@ -33,6 +33,10 @@ static const struct {
     {"CDIST_ERR_CALLBACK_NOT_FINITE", "a curve callback returned NaN or infinity"},
     {"CDIST_ERR_NO_MEMORY", "memory allocation failed"},
     {"CDIST_ERR_INTERNAL", "internal numerical failure"},
+    {"CDIST_ERR_HANDLE_BUSY", "the query handle was in use by another call"},
+    {"CDIST_ERR_COST_LIMIT", "the query would exceed the cost limit"},
+    {"CDIST_ERR_THREAD", "a worker thread could not be started"},
+    {"CDIST_ERR_BAD_KIND", "the query kind was not valid"},
 };
 #define STATUS_COUNT (sizeof status_table / sizeof status_table[0])
 

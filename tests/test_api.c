@@ -13,10 +13,10 @@ static void version(void)
     CHECK(cdist_result_size() == sizeof(cdist_result), "result size");
     CHECK(cdist_pair_size() == sizeof(cdist_pair), "pair size");
     CHECK(strcmp(cdist_status_name(CDIST_OK), "CDIST_OK") == 0, "status name");
-    CHECK(strcmp(cdist_status_name(CDIST_ERR_INTERNAL), "CDIST_ERR_INTERNAL") == 0, "last status name");
+    CHECK(strcmp(cdist_status_name(CDIST_ERR_BAD_KIND), "CDIST_ERR_BAD_KIND") == 0, "last status name");
     CHECK(strcmp(cdist_status_name((cdist_status)999), "CDIST_UNKNOWN") == 0, "unknown name");
     CHECK(strcmp(cdist_status_string((cdist_status)-1), "unknown status") == 0, "unknown text");
-    for (int s = 0; s <= CDIST_ERR_INTERNAL; s++)
+    for (int s = 0; s <= CDIST_ERR_BAD_KIND; s++)
         CHECK(strlen(cdist_status_string((cdist_status)s)) > 5, "status %d has text", s);
 }
 
