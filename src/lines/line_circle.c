@@ -472,13 +472,13 @@ static cdist_status run(cdist_query *q, vec3 origin, vec3 D, vec3 M, double len,
     return CDIST_OK;
 }
 
-/* Frame and scale: the whole query scaled by 2^-e (exact) so that max(r, |origin - C|,
- * |p1 - C|) is in [1, 2); the parameter t is unchanged (D is scaled with the origin), the
+/* Frame and scale: the whole query scaled by 2^-e (exact) so that max(r, |origin - C|) is in
+ * [1, 2); the parameter t is unchanged (D is scaled with the origin), the
  * distances and points are scaled back exactly. Inputs already validated. */
 static cdist_status run_scaled(cdist_query *q, vec3 origin, vec3 D, vec3 M, double len, double tmin, double tmax,
-                               const vec3 *p1, cd_circle cc, cdist_result *r, cdist_method *used)
+                               cd_circle cc, cdist_result *r, cdist_method *used)
 {
-    int e = cd_lines_scale_exponent(origin, p1, &cc);
+    int e = cd_lines_scale_exponent(origin, NULL, &cc);
     double down = cd_pow2(-e);
     cd_circle_scale(&cc, down);
     cdist_status st = run(q, v_scale(down, origin), v_scale(down, D), M, len * down, tmin, tmax, &cc, r, used);
@@ -500,7 +500,7 @@ static cdist_status linear_public(cdist_query *q, const cdist_vec3 *origin, cons
         !(st = cd_check_direction(q, dir, is_ray ? "ray direction" : "line direction", 1, &M, &len)) &&
         !(st = cd_check_circle(q, c, "circle", &cc))) {
         /* t is reported for the direction as passed */
-        st = run_scaled(q, *origin, *dir, M, len, tmin, tmax, NULL, cc, r, &used);
+        st = run_scaled(q, *origin, *dir, M, len, tmin, tmax, cc, r, &used);
     }
     return cd_leave(q, r, st, used);
 }
@@ -531,10 +531,16 @@ cdist_status cdist_segment_circle(cdist_query *q, const cdist_segment *s, const 
         r->pairs[0].param[0] = 0.0;
         return cd_leave(q, r, CDIST_OK, used);
     }
-    vec3 M;
+    /* scaled before D is normalised, so that 2^k times the input gives exactly 2^k times the
+     * answer (the normalisation of a tiny D takes another path) */
+    int e = cd_lines_scale_exponent(s->p0, &s->p1, &cc);
+    double down = cd_pow2(-e);
+    cd_circle_scale(&cc, down);
+    vec3 Ds = v_scale(down, D), M;
     double len;
-    if (!(st = cd_check_direction(q, &D, "segment direction p1 - p0", 0, &M, &len)) &&
-        !(st = run_scaled(q, s->p0, D, M, len, 0.0, 1.0, &s->p1, cc, r, &used))) {
+    if (!(st = cd_check_direction(q, &Ds, "segment direction p1 - p0", 0, &M, &len)) &&
+        !(st = run(q, v_scale(down, s->p0), Ds, M, len, 0.0, 1.0, &cc, r, &used))) {
+        cd_result_unscale(r, cd_pow2(e));
         for (int i = 0; i < r->num_pairs; i++)
             if (r->pairs[i].param[0] == 0.0) r->pairs[i].point[0] = s->p0; /* exactly the caller's start point */
     }
