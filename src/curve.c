@@ -31,7 +31,10 @@
  *    over the two intervals by golden section; if it crosses zero, the bracket it makes is
  *    refined as above (same at the two ends, with the one interval there);
  *  - sampled local minima of F are offered as a last safety net (an upper bound within F'' h^2);
- *  - for the disk, sign changes of rho - r are bisected and offered (partition points);
+ *  - for the disk, sign changes of rho - r are bisected and offered (partition points), and
+ *    every sign change of the height h between samples (end intervals included) is located on
+ *    h itself and offered: a crossing inside the disk is a zero of D that g = h h' shows only
+ *    at its rounding level when the curve lies nearly flat;
  *  - for the circle, the closest approaches to the axis that may reach it between samples are
  *    located (golden section on rho) and offered: the non-smooth points of F.
  * Limitation (documented in docs/curves.md): roots are bounded only up to the sample spacing:
@@ -100,6 +103,7 @@ typedef struct sample {
     vec3 p;     /* position (the scan's frame) */
     double g;   /* F'/2 (or D'/2) */
     double f;   /* F (or D) */
+    double h;     /* height over the circle's plane */
     double rho;   /* distance from the axis */
     double tol;   /* rounding level of g */
     double speed; /* |P'| (1-norm) */
@@ -131,6 +135,7 @@ static cdist_status eval(const cs_scan *s, double t, sample *o)
         o->f = dr * dr + h * h;
     }
     o->p = P;
+    o->h = h;
     o->rho = rho;
     double rn = fabs(rel.x) + fabs(rel.y) + fabs(rel.z), dn = fabs(D.x) + fabs(D.y) + fabs(D.z);
     o->tol = 32.0 * DBL_EPSILON * (rn + c->r + s->frame_mag) * dn;
@@ -153,9 +158,10 @@ static cdist_status offer_at(const cs_scan *s, double t)
     return CDIST_OK;
 }
 
-/* Root of g in [a, b] with ga < 0 < gb (or the reverse): Brent's zeroin (inverse quadratic /
- * secant steps, bisection whenever they do not shrink the bracket fast enough). */
-static cdist_status refine(const cs_scan *s, double a, double ga, double b, double gb, double *root, sample *out)
+/* Root of g (height: of h) in [a, b] with ga < 0 < gb (or the reverse): Brent's zeroin (inverse
+ * quadratic / secant steps, bisection whenever they do not shrink the bracket fast enough). */
+static cdist_status zeroin(const cs_scan *s, int height, double a, double ga, double b, double gb, double *root,
+                           sample *out)
 {
     double span = s->span;
     double c = a, gc = ga, d = b - a, e = d;
@@ -204,7 +210,7 @@ static cdist_status refine(const cs_scan *s, double a, double ga, double b, doub
         b += (fabs(d) > tol) ? d : (m > 0 ? tol : -tol);
         cdist_status st = eval(s, b, &x);
         if (st) return st;
-        gb = x.g;
+        gb = height ? x.h : x.g;
         have = 1;
     }
     if (!have) {
@@ -214,6 +220,11 @@ static cdist_status refine(const cs_scan *s, double a, double ga, double b, doub
     *root = b;
     *out = x;
     return CDIST_OK;
+}
+
+static cdist_status refine(const cs_scan *s, double a, double ga, double b, double gb, double *root, sample *out)
+{
+    return zeroin(s, 0, a, ga, b, gb, root, out);
 }
 
 /* Refine the minimum of F bracketed by g(a) < 0 < g(b) and offer it. */
@@ -266,6 +277,20 @@ static cdist_status dip_search(const cs_scan *s, double a, double b, double sg)
         }
         if (hi - lo <= 4.0 * DBL_EPSILON * (fabs(lo) + fabs(hi)) + 0.25 * DBL_EPSILON * s->span) break;
     }
+    return CDIST_OK;
+}
+
+/* The curve crosses the disk's plane between a and b (ha, hb of opposite signs): locate the
+ * crossing on h itself and offer it. Where the crossing is inside the disk the distance is 0, a
+ * minimum that g = h h' shows only at the rounding level of g when the curve lies nearly flat
+ * (h' tiny), so the g brackets cannot be trusted to see it. */
+static cdist_status crossing_offer(const cs_scan *s, double a, double ha, double b, double hb)
+{
+    double t;
+    sample x;
+    cdist_status st = zeroin(s, 1, a, ha, b, hb, &t, &x);
+    if (st) return st;
+    offer_sample(s, t, &x);
     return CDIST_OK;
 }
 
@@ -330,10 +355,18 @@ cdist_status cs_scan_run(cs_scan *s, double t0, double t1, int n)
     if (n > q->curve_samples) n = q->curve_samples;
     double *G = q->scratch, *Fv = G + (n + 1), *R = Fv + (n + 1), *T = R + (n + 1);
     s->span = t1 - t0;
-    double ext = 0.0;
+    double ext = 0.0, h_prev = 0.0;
     for (int i = 0; i <= n; i++) {
         sample x;
         if ((st = eval(s, t_at(t0, t1, i, n), &x))) return st;
+        /* Disk: every plane crossing, wherever it is (including the end intervals). */
+        if (s->disk) {
+            if (x.h == 0.0) offer_sample(s, t_at(t0, t1, i, n), &x);
+            else if (i > 0 && (x.h > 0.0) != (h_prev > 0.0) && h_prev != 0.0 &&
+                     (st = crossing_offer(s, t_at(t0, t1, i - 1, n), h_prev, t_at(t0, t1, i, n), x.h)))
+                return st;
+            h_prev = x.h;
+        }
         G[i] = x.g;
         Fv[i] = x.f;
         R[i] = x.rho - s->c->r;
