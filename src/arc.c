@@ -20,7 +20,7 @@
  *    distances.
  *  - segment-arc: the same with the segment: segment endpoints to the arc, arc endpoints to the
  *    segment (closed form), and the local minima of s -> dist^2(seg(s), circle) whose closest
- *    circle point lies in the arc's range. Those minima satisfy (distance-to-circles-3d eq. 6)
+ *    circle point lies in the arc's range (from the lines family's robust core: no GSL). Those minima satisfy (distance-to-circles-3d eq. 6)
  *    Delta.M = r (N x Delta).(N x M)/|N x Delta|, so |Delta(s).M/|M|| <= r: they lie within
  *    r/|M| of the foot of the perpendicular from the centre, and only that window is sampled.
  *  - arc-disk: the endpoints, the critical angles of the distance to the rim circle and the
@@ -326,35 +326,6 @@ static cdist_status seg_eval(cdist_query *q, const void *ctx, double t, vec3 *p,
     return CDIST_OK;
 }
 
-/* Critical points of s -> dist^2(p0 + s m, circle c) (c->c the origin) as roots of the quartic
- * of distance-to-circles-3d eq. (8), H = |N x D|^2 (D.D')^2 - r^2 ((N x D).(N x D'))^2, in the
- * variable t = s - foot (foot: the point nearest the centre, so that D.D' is small there and the
- * coefficients do not cancel). Squaring adds extraneous roots, which the caller polishes on the
- * true derivative like every other root. Returns the count, or -1 when the quartic is degenerate
- * (the segment on the axis: H == 0) or the solver failed. */
-static int seg_circle_quartic(cdist_query *q, const seg_x *S, double foot, const cd_circle *c, double *roots)
-{
-    /* Normalised: lengths divided by L = max(r, |B|), direction unit, variable
-     * u = (s - foot) |m| / L, so every coefficient is O(1) whatever the scale. */
-    vec3 B = v_axpy(S->p0, foot, S->m);
-    double len = v_norm(S->m), L = fmax(c->r, v_norm(B));
-    if (!(len > 0.0) || !(L > 0.0)) return -1;
-    B = v_scale(1.0 / L, B);
-    vec3 M = v_scale(1.0 / len, S->m);
-    double rr = c->r / L;
-    vec3 P0 = v_cross(c->n, B), P1 = v_cross(c->n, M);
-    double a0 = v_dot(B, M), a1 = v_dot(M, M);
-    double p0 = v_dot(P0, P0), p01 = v_dot(P0, P1), p11 = v_dot(P1, P1), r2 = rr * rr;
-    double coef[5] = {p0 * a0 * a0 - r2 * p01 * p01,
-                      2.0 * p0 * a0 * a1 + 2.0 * p01 * a0 * a0 - 2.0 * r2 * p01 * p11,
-                      p0 * a1 * a1 + 4.0 * p01 * a0 * a1 + p11 * a0 * a0 - r2 * p11 * p11,
-                      2.0 * p01 * a1 * a1 + 2.0 * p11 * a0 * a1, p11 * a1 * a1};
-    int n = cd_poly_real_roots(q->poly, coef, 4, 1e-6, roots);
-    if (n < 0) return -1;
-    for (int i = 0; i < n; i++) roots[i] = foot + roots[i] * (L / len);
-    return n;
-}
-
 cdist_status cdist_segment_arc(cdist_query *q, const cdist_segment *sg, const cdist_arc *a, cdist_result *r)
 {
     cdist_status st = cd_check_handle(q, r);
@@ -392,12 +363,17 @@ cdist_status cdist_segment_arc(cdist_query *q, const cdist_segment *sg, const cd
         if (lo <= hi) {
             cand_arc_ctx ca = {&A, 1};
             cs_scan s = {q, seg_eval, &S, &A.c, 0, &k, cand_arc, &ca, 0, 0.0, fmax(v_norm(S.p0), v_norm(S1))};
-            double roots[4];
-            int n = seg_circle_quartic(q, &S, foot, &A.c, roots);
-            if (n >= 0) {
-                for (int i = 0; i < n; i++) {
-                    if (!(roots[i] >= lo && roots[i] <= hi)) continue;
-                    if ((st = cs_polish(&s, roots[i], lo, hi))) return st;
+            /* The local minima of the segment's distance to the full circle in the window, from
+             * the lines family's robust (GSL-free) core on the line through the foot, each
+             * polished on the true derivative and offered when its circle point is in range. */
+            cd_best lm;
+            cd_best_init(&lm, k.b.scale);
+            vec3 M = v_scale(1.0 / len, S.m), B = v_axpy(S.p0, foot, S.m);
+            st = cd_linear_circle(q, CDIST_METHOD_ROBUST, B, M, (lo - foot) * len, (hi - foot) * len, &A.c, &lm);
+            if (st == CDIST_OK) {
+                for (int i = 0; i < lm.n; i++) {
+                    double t = fmin(fmax(foot + lm.c[i].param[0] / len, lo), hi);
+                    if ((st = cs_polish(&s, t, lo, hi))) return st;
                 }
             } else if ((st = cs_scan_run(&s, lo, hi, q->curve_samples))) {
                 return st;
