@@ -592,6 +592,124 @@ static cdist_status helix_eval(cdist_query *q, const void *ctx, double t, vec3 *
 
 #define CS_MAX_HELIX_TURNS 1e6
 
+/* Lower bound of the distance between the circle or disk and the helix piece whose axis points
+ * have axial coordinates (along hx->n, from the circle's centre) in [za, zb]: every piece point
+ * X is at distance r from the axis, every target point Y has an axial coordinate in [zlo, zhi]
+ * and a distance from the axis in [rlo, rhi], and |X - Y|^2 >= (axial gap)^2 + (radial gap)^2. */
+typedef struct helix_bound {
+    double zlo, zhi; /* axial range of the target */
+    double rgap;     /* distance from the helix radius to the target's radial range */
+} helix_bound;
+
+static helix_bound helix_bound_init(const helix_x *hx, const cd_circle *c, int disk)
+{
+    helix_bound hb;
+    vec3 n = hx->n;
+    double R = c->r;
+    double zc = -v_dot(hx->c, n), za = hypot(v_dot(c->u, n), v_dot(c->v, n));
+    hb.zlo = zc - R * za;
+    hb.zhi = zc + R * za;
+    /* The target's offset from the axis: Y_perp = C_p + R (cos f u_p + sin f v_p), whose square
+     * is a0 + a1 cos f + b1 sin f + a2 cos 2f + b2 sin 2f. */
+    vec3 Cp = v_sub(v_scale(-1.0, hx->c), v_scale(-v_dot(hx->c, n), n));
+    vec3 up = v_sub(c->u, v_scale(v_dot(c->u, n), n)), vp = v_sub(c->v, v_scale(v_dot(c->v, n), n));
+    double a0 = v_sqr(Cp) + 0.5 * R * R * (v_sqr(up) + v_sqr(vp));
+    double m1 = 2.0 * R * hypot(v_dot(Cp, up), v_dot(Cp, vp));
+    double m2 = R * R * hypot(0.5 * (v_sqr(up) - v_sqr(vp)), v_dot(up, vp));
+    double rhi = sqrt(fmax(0.0, a0 + m1 + m2)), rlo = sqrt(fmax(0.0, a0 - m1 - m2));
+    if (disk) rlo = fmax(0.0, v_norm(Cp) - R); /* the filled ellipse around C_p */
+    /* Rounding: the ranges are widened by a few ulps of the problem's magnitude. */
+    double slack = 64.0 * DBL_EPSILON * (R + v_norm(hx->c) + hx->r);
+    hb.zlo -= slack;
+    hb.zhi += slack;
+    rlo = fmax(0.0, rlo - slack);
+    rhi += slack;
+    hb.rgap = hx->r < rlo ? rlo - hx->r : (hx->r > rhi ? hx->r - rhi : 0.0);
+    return hb;
+}
+
+static double helix_piece_lb(const helix_bound *hb, const helix_x *hx, double a, double b)
+{
+    double z0 = hx->rise * a, z1 = hx->rise * b;
+    double za = fmin(z0, z1), zb = fmax(z0, z1);
+    double gap = za > hb->zhi ? za - hb->zhi : (zb < hb->zlo ? hb->zlo - zb : 0.0);
+    return hypot(gap, hb->rgap);
+}
+
+/* Cost limit of one helix query: at most this many samples over all the pieces (turns) that
+ * cannot be skipped (2^24: 32768 turns at the default 512 samples, about 2 s). Pieces are
+ * skipped when their lower bound exceeds the distance found on the axially nearest piece, so
+ * only configurations where that many turns are about equally close (a target threading a long
+ * tight coil) reach it; they get CDIST_ERR_COST_LIMIT before the long scan. */
+#define CS_HELIX_MAX_SAMPLES 16777216.0
+
+/* After the nearest piece: the pieces whose bound does not exceed the distance found there are
+ * all the pieces that may be scanned (the best only decreases); refuse when they cost too much. */
+static cdist_status helix_cost_check(const cs_scan *s, const helix_x *hx, const helix_bound *hb, double t0,
+                                     double plen, long pieces, long mid)
+{
+    double best = s->k->b.n ? sqrt(s->k->b.c[0].d2) : INFINITY;
+    double margin = best * (1.0 + 1e-9) + 1e-12 * s->k->b.scale;
+    long limit = (long)(CS_HELIX_MAX_SAMPLES / s->q->curve_samples), count = 1;
+    for (long i = mid - 1; i >= 0 && count <= limit; i--, count++)
+        if (helix_piece_lb(hb, hx, t0 + (double)i * plen, t0 + (double)(i + 1) * plen) > margin) break;
+    for (long i = mid + 1; i < pieces && count <= limit; i++, count++)
+        if (helix_piece_lb(hb, hx, t0 + (double)i * plen, t0 + (double)(i + 1) * plen) > margin) break;
+    if (count > limit)
+        return cd_fail(s->q, CDIST_ERR_COST_LIMIT,
+                       "helix: more than %ld turns are about equally close to the target (cost limit: %.0f "
+                       "samples)",
+                       limit, CS_HELIX_MAX_SAMPLES);
+    return CDIST_OK;
+}
+
+/* Scan the pieces [t0 + i plen, t0 + (i+1) plen] (the last ending at t1) in order of increasing
+ * lower bound, from the piece nearest the target axially outwards (the bound is unimodal in i:
+ * the axial gap shrinks, stays 0 while the pieces overlap the target's range, then grows),
+ * stopping on each side at the first piece whose bound exceeds the best distance so far. */
+static cdist_status helix_pieces(cs_scan *s, const helix_x *hx, double t0, double plen, long pieces, double t1)
+{
+    cdist_query *q = s->q;
+    helix_bound hb = helix_bound_init(hx, s->c, s->disk);
+    /* The piece whose axis range is nearest the middle of the target's axial range. */
+    long mid = 0;
+    if (hx->rise != 0.0) {
+        double tm = 0.5 * (hb.zlo + hb.zhi) / hx->rise;
+        double f = floor((tm - t0) / plen);
+        mid = f < 0.0 ? 0 : (f >= (double)pieces ? pieces - 1 : (long)f);
+    }
+    long lo = mid, hi = mid; /* next candidates: lo - 1 and hi + 1 (mid first) */
+    int first = 1, done_lo = 0, done_hi = 0;
+    cdist_status st;
+    while (first || !done_lo || !done_hi) {
+        long i;
+        if (first) {
+            i = mid;
+            first = 0;
+        } else {
+            double blo = INFINITY, bhi = INFINITY;
+            if (!done_lo && lo > 0) blo = helix_piece_lb(&hb, hx, t0 + (double)(lo - 1) * plen, t0 + (double)lo * plen);
+            else done_lo = 1;
+            if (!done_hi && hi < pieces - 1)
+                bhi = helix_piece_lb(&hb, hx, t0 + (double)(hi + 1) * plen, t0 + (double)(hi + 2) * plen);
+            else done_hi = 1;
+            double best = s->k->b.n ? sqrt(s->k->b.c[0].d2) : INFINITY;
+            /* The bound must beat the best clearly (rounding of both): else the piece is scanned. */
+            double margin = best * (1.0 + 1e-9) + 1e-12 * s->k->b.scale;
+            if (blo > margin) done_lo = 1;
+            if (bhi > margin) done_hi = 1;
+            if (done_lo && done_hi) break;
+            if (!done_lo && (done_hi || blo <= bhi)) i = --lo;
+            else i = ++hi;
+        }
+        double a = t0 + (double)i * plen, b = (i == pieces - 1) ? t1 : t0 + (double)(i + 1) * plen;
+        if ((st = cs_scan_run(s, a, b, q->curve_samples))) return st;
+        if (i == mid && (st = helix_cost_check(s, hx, &hb, t0, plen, pieces, mid))) return st;
+    }
+    return CDIST_OK;
+}
+
+
 static cdist_status helix_query(cdist_query *q, const cdist_helix *h, const cdist_circle *c, cdist_result *r,
                                 int disk)
 {
@@ -621,41 +739,18 @@ static cdist_status helix_query(cdist_query *q, const cdist_helix *h, const cdis
     vec3 origin = cc.c;
     hx.c = v_sub(h->center, origin);
     cc.c = v3(0, 0, 0);
-    /* Pieces of at most one turn, each sampled with the handle's sample count. A piece lies in
-     * the ball around its mid-axis point of radius sqrt(r^2 + (half its rise)^2): pieces whose
-     * ball is farther from the circle than the best ball-based upper bound are skipped. */
+    /* Pieces of at most one turn, each sampled with the handle's sample count. */
     double len = t1 - t0;
     long pieces = (h->radius == 0.0) ? 1 : (long)ceil(len / (2.0 * M_PI));
     if (pieces < 1) pieces = 1;
     double plen = len / (double)pieces;
-    double ball = hypot(h->radius, 0.5 * fabs(hx.rise) * plen);
     cs_coll k;
     cs_coll_init(&k, fmax(cc.r, v_norm(hx.c)));
     cs_scan s = {q, helix_eval, &hx, &cc, disk, &k, NULL, NULL, 1, 0.0, 0.0};
-    double ub = INFINITY;
-    if (pieces > 1) {
-        for (long i = 0; i < pieces; i++) {
-            double tm = t0 + ((double)i + 0.5) * plen;
-            vec3 m = v_axpy(hx.c, hx.rise * tm, hx.n);
-            cd_best tb;
-            cd_best_init(&tb, 1.0);
-            if (disk) cd_point_disk_core(m, &cc, &tb, 0);
-            else cd_point_circle_core(m, &cc, &tb, 0);
-            ub = fmin(ub, sqrt(tb.c[0].d2) + ball);
-        }
-    }
-    for (long i = 0; i < pieces; i++) {
-        double a = (i == 0) ? t0 : t0 + (double)i * plen, b = (i == pieces - 1) ? t1 : t0 + (double)(i + 1) * plen;
-        if (pieces > 1) {
-            double tm = 0.5 * (a + b);
-            vec3 m = v_axpy(hx.c, hx.rise * tm, hx.n);
-            cd_best tb;
-            cd_best_init(&tb, 1.0);
-            if (disk) cd_point_disk_core(m, &cc, &tb, 0);
-            else cd_point_circle_core(m, &cc, &tb, 0);
-            if (sqrt(tb.c[0].d2) - ball > ub * (1.0 + 1e-12)) continue;
-        }
-        if ((st = cs_scan_run(&s, a, b, q->curve_samples))) return st;
+    if (pieces == 1) {
+        if ((st = cs_scan_run(&s, t0, t1, q->curve_samples))) return st;
+    } else if ((st = helix_pieces(&s, &hx, t0, plen, pieces, t1))) {
+        return st;
     }
     if ((st = cs_flat_check(&s, t0, t1, plen / q->curve_samples))) return st;
     cs_coll_finish(&k);
