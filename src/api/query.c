@@ -1,0 +1,255 @@
+/* The query handle, options, status strings, version, status recording, circle frames. */
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "internal.h"
+
+/* ---- version ---- */
+
+const char *cdist_version_string(void) { return CDIST_VERSION_STRING; }
+unsigned cdist_version_number(void) { return CDIST_VERSION_NUMBER; }
+int cdist_version_major(void) { return CDIST_VERSION_MAJOR; }
+int cdist_version_minor(void) { return CDIST_VERSION_MINOR; }
+int cdist_version_patch(void) { return CDIST_VERSION_PATCH; }
+
+/* ---- status ---- */
+
+static const struct {
+    const char *name, *text;
+} status_table[] = {
+    {"CDIST_OK", "success"},
+    {"CDIST_ERR_NULL_ARGUMENT", "a required pointer was NULL"},
+    {"CDIST_ERR_NOT_FINITE", "an input number was NaN or infinite"},
+    {"CDIST_ERR_ZERO_VECTOR", "a normal, direction or axis had zero length"},
+    {"CDIST_ERR_NOT_UNIT", "a normal or direction was not unit length"},
+    {"CDIST_ERR_NEGATIVE_RADIUS", "a radius was negative"},
+    {"CDIST_ERR_OUT_OF_RANGE", "a coordinate or radius exceeded 1e150 in magnitude"},
+    {"CDIST_ERR_BAD_OPTION", "an option value or method was not valid"},
+    {"CDIST_ERR_BAD_INTERVAL", "a parameter interval was empty, reversed or too long"},
+    {"CDIST_ERR_CALLBACK_FAILED", "a curve callback returned an error"},
+    {"CDIST_ERR_CALLBACK_NOT_FINITE", "a curve callback returned NaN or infinity"},
+    {"CDIST_ERR_NO_MEMORY", "memory allocation failed"},
+    {"CDIST_ERR_INTERNAL", "internal numerical failure"},
+    {"CDIST_ERR_HANDLE_BUSY", "the query handle was in use by another call"},
+    {"CDIST_ERR_COST_LIMIT", "the query would exceed the cost limit"},
+    {"CDIST_ERR_THREAD", "a worker thread could not be started"},
+    {"CDIST_ERR_BAD_KIND", "the query kind was not valid"},
+};
+#define STATUS_COUNT (sizeof status_table / sizeof status_table[0])
+
+const char *cdist_status_string(cdist_status st)
+{
+    return ((unsigned)st < STATUS_COUNT) ? status_table[st].text : "unknown status";
+}
+
+const char *cdist_status_name(cdist_status st)
+{
+    return ((unsigned)st < STATUS_COUNT) ? status_table[st].name : "CDIST_UNKNOWN";
+}
+
+size_t cdist_result_size(void) { return sizeof(cdist_result); }
+size_t cdist_pair_size(void) { return sizeof(cdist_pair); }
+
+/* ---- handle ---- */
+
+cdist_query *cdist_query_new(void)
+{
+    cdist_query *q = calloc(1, sizeof *q);
+    if (!q) return NULL;
+    q->method = CDIST_METHOD_AUTO;
+    q->unit_tol = CD_DEFAULT_UNIT_TOL;
+    q->curve_samples = CD_DEFAULT_CURVE_SAMPLES;
+    q->max_iterations = CD_DEFAULT_MAX_ITERATIONS;
+    q->last_status = CDIST_OK;
+    q->poly = cd_poly_ws_new();
+    q->scratch_len = 4 * ((size_t)CD_DEFAULT_CURVE_SAMPLES + 1);
+    q->scratch = malloc(q->scratch_len * sizeof(double));
+    if (!q->poly || !q->scratch) {
+        cdist_query_free(q);
+        return NULL;
+    }
+    return q;
+}
+
+void cdist_query_free(cdist_query *q)
+{
+    if (!q) return;
+    cd_poly_ws_free(q->poly);
+    free(q->scratch);
+    free(q);
+}
+
+static cdist_status setter_ok(cdist_query *q)
+{
+    q->last_status = CDIST_OK;
+    q->message[0] = '\0';
+    return CDIST_OK;
+}
+
+static cdist_status query_set_method_locked(cdist_query *q, cdist_method method)
+{
+    if (!q) return CDIST_ERR_NULL_ARGUMENT;
+    if ((unsigned)method > CDIST_METHOD_ITERATION)
+        return cd_fail(q, CDIST_ERR_BAD_OPTION, "method %d is not a cdist_method (0..3)", (int)method);
+    q->method = method;
+    return setter_ok(q);
+}
+
+cdist_status cdist_query_set_method(cdist_query *q, cdist_method method)
+{
+    cdist_status st = cd_enter_setter(q);
+    if (st) return st;
+    st = query_set_method_locked(q, method);
+    cd_leave_setter(q);
+    return st;
+}
+
+cdist_method cdist_query_get_method(const cdist_query *q) { return q ? q->method : CDIST_METHOD_AUTO; }
+
+static cdist_status query_set_unit_tolerance_locked(cdist_query *q, double tol)
+{
+    if (!q) return CDIST_ERR_NULL_ARGUMENT;
+    if (!(tol >= 0.0)) return cd_fail(q, CDIST_ERR_BAD_OPTION, "unit tolerance must be >= 0 (got %g)", tol);
+    q->unit_tol = tol;
+    return setter_ok(q);
+}
+
+cdist_status cdist_query_set_unit_tolerance(cdist_query *q, double tol)
+{
+    cdist_status st = cd_enter_setter(q);
+    if (st) return st;
+    st = query_set_unit_tolerance_locked(q, tol);
+    cd_leave_setter(q);
+    return st;
+}
+
+double cdist_query_get_unit_tolerance(const cdist_query *q) { return q ? q->unit_tol : CD_DEFAULT_UNIT_TOL; }
+
+static cdist_status query_set_curve_samples_locked(cdist_query *q, int samples)
+{
+    if (!q) return CDIST_ERR_NULL_ARGUMENT;
+    if (samples < 8 || samples > CD_MAX_CURVE_SAMPLES)
+        return cd_fail(q, CDIST_ERR_BAD_OPTION, "curve samples must be in [8, %d] (got %d)", CD_MAX_CURVE_SAMPLES,
+                       samples);
+    size_t need = 4 * ((size_t)samples + 1);
+    if (need > q->scratch_len) {
+        double *s = realloc(q->scratch, need * sizeof(double));
+        if (!s) return cd_fail(q, CDIST_ERR_NO_MEMORY, "out of memory for %d curve samples", samples);
+        q->scratch = s;
+        q->scratch_len = need;
+    }
+    q->curve_samples = samples;
+    return setter_ok(q);
+}
+
+cdist_status cdist_query_set_curve_samples(cdist_query *q, int samples)
+{
+    cdist_status st = cd_enter_setter(q);
+    if (st) return st;
+    st = query_set_curve_samples_locked(q, samples);
+    cd_leave_setter(q);
+    return st;
+}
+
+int cdist_query_get_curve_samples(const cdist_query *q) { return q ? q->curve_samples : CD_DEFAULT_CURVE_SAMPLES; }
+
+static cdist_status query_set_max_iterations_locked(cdist_query *q, int max_iterations)
+{
+    if (!q) return CDIST_ERR_NULL_ARGUMENT;
+    if (max_iterations < 1)
+        return cd_fail(q, CDIST_ERR_BAD_OPTION, "max iterations must be >= 1 (got %d)", max_iterations);
+    q->max_iterations = max_iterations;
+    return setter_ok(q);
+}
+
+cdist_status cdist_query_set_max_iterations(cdist_query *q, int max_iterations)
+{
+    cdist_status st = cd_enter_setter(q);
+    if (st) return st;
+    st = query_set_max_iterations_locked(q, max_iterations);
+    cd_leave_setter(q);
+    return st;
+}
+
+int cdist_query_get_max_iterations(const cdist_query *q) { return q ? q->max_iterations : CD_DEFAULT_MAX_ITERATIONS; }
+
+cdist_status cdist_query_last_status(const cdist_query *q) { return q ? q->last_status : CDIST_ERR_NULL_ARGUMENT; }
+
+const char *cdist_query_last_error(const cdist_query *q)
+{
+    return q ? q->message : "query handle is NULL";
+}
+
+/* ---- status recording ---- */
+
+cdist_status cd_fail(cdist_query *q, cdist_status st, const char *fmt, ...)
+{
+    if (q) {
+        va_list ap;
+        va_start(ap, fmt);
+        vsnprintf(q->message, sizeof q->message, fmt, ap);
+        va_end(ap);
+        q->last_status = st;
+    }
+    return st;
+}
+
+static void result_set_error(cdist_result *r)
+{
+    memset(r, 0, sizeof *r);
+    r->distance = NAN;
+    r->sqr_distance = NAN;
+    for (int i = 0; i < 2; i++) {
+        for (int k = 0; k < 2; k++) {
+            r->pairs[i].point[k] = v3(NAN, NAN, NAN);
+            r->pairs[i].param[k] = NAN;
+        }
+    }
+}
+
+void cd_begin(cdist_query *q, cdist_result *r)
+{
+    if (r) result_set_error(r);
+    if (q) {
+        q->message[0] = '\0';
+        q->last_status = CDIST_OK;
+    }
+}
+
+cdist_status cd_ok(cdist_query *q, cdist_result *r, int method)
+{
+    r->method = method;
+    q->last_status = CDIST_OK;
+    q->message[0] = '\0';
+    return CDIST_OK;
+}
+
+/* ---- circle frames (public) ---- */
+
+cdist_status cdist_circle_basis(const cdist_circle *c, cdist_vec3 *u, cdist_vec3 *v)
+{
+    if (!c) return CDIST_ERR_NULL_ARGUMENT;
+    vec3 n;
+    cdist_status st = cd_check_direction(NULL, &c->normal, "normal", 0, &n, NULL);
+    if (st) return st;
+    vec3 uu, vv;
+    v_basis(n, &uu, &vv);
+    if (u) *u = uu;
+    if (v) *v = vv;
+    return CDIST_OK;
+}
+
+cdist_status cdist_circle_point(const cdist_circle *c, double angle, cdist_vec3 *point)
+{
+    if (!c || !point) return CDIST_ERR_NULL_ARGUMENT;
+    if (!isfinite(angle) || !isfinite(c->radius) || !v_isfinite(c->center)) return CDIST_ERR_NOT_FINITE;
+    if (c->radius < 0.0) return CDIST_ERR_NEGATIVE_RADIUS;
+    vec3 u, v;
+    cdist_status st = cdist_circle_basis(c, &u, &v);
+    if (st) return st;
+    *point = v_axpy(v_axpy(c->center, c->radius * cos(angle), u), c->radius * sin(angle), v);
+    return CDIST_OK;
+}

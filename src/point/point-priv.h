@@ -1,0 +1,24 @@
+/* Point family cores (src/point/point.c). */
+#ifndef CDIST_POINT_PRIV_H
+#define CDIST_POINT_PRIV_H
+
+#include "base/best.h"
+#include "base/vec.h"
+
+/* The closest circle (disk) point k of p, both relative to the centre (c->c ignored):
+ * squared distance, k, its circle angle (NaN at the centre or for r = 0), and whether every
+ * circle point is as close (p on the axis). Only c->n and c->r are read. */
+typedef struct cd_point_pair {
+    double d2;
+    vec3 k;
+    double angle;
+    int equidistant;
+} cd_point_pair;
+cd_point_pair cd_point_circle_pair(vec3 p, const cd_circle *c);
+cd_point_pair cd_point_disk_pair(vec3 p, const cd_circle *c);
+
+/* The same offered to a collector (swap: p is the second object). Point p (relative to the circle centre) to circle/disk c (c->c ignored, taken as origin). */
+void cd_point_circle_core(vec3 p, const cd_circle *c, cd_best *b, int swap);
+void cd_point_disk_core(vec3 p, const cd_circle *c, cd_best *b, int swap);
+
+#endif
