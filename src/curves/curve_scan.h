@@ -1,4 +1,4 @@
-/* The curve engine shared by src/curve.c (callback curves, helix, Bezier) and src/arc.c (arcs).
+/* The curve engine shared by src/curves/curve.c (callback curves, helix, Bezier) and src/curves/arc.c (arcs).
  * Private to those two files. */
 #ifndef CDIST_CURVE_SCAN_H
 #define CDIST_CURVE_SCAN_H

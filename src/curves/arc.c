@@ -29,7 +29,7 @@
  * The interior critical angles come from cd_circle_circle_critical (the circle-circle family)
  * when it provides them (it returns 0 when unavailable: a smooth periodic function always has at
  * least two critical angles), each polished on the true derivative; otherwise (a constant
- * function, parallel planes for the disk) from the sampling engine of src/curve.c over the
+ * function, parallel planes for the disk) from the sampling engine of src/curves/curve.c over the
  * arc's range, which also detects the continuum of closest pairs. */
 #include <math.h>
 #include <stdio.h>
@@ -170,7 +170,7 @@ static cdist_status polish_in_range(cs_scan *s, const arcx *X, double a)
 /* Every minimum of theta -> dist^2(X(theta), circle or disk Y) over X's range, handed to the
  * scan's candidate callback (s->cand, or the default offer). Uses the circle-circle critical
  * angles when available, else samples. *exact says which.
- * Disk: D = h^2 + max(rho - r, 0)^2 is C^1 (see src/curve.c), so an interior minimum has
+ * Disk: D = h^2 + max(rho - r, 0)^2 is C^1 (see src/curves/curve.c), so an interior minimum has
  * D' = 0: either rho > r there and it is a critical angle of the distance to the rim circle,
  * or rho <= r and h h' = 0 with h(a) = hc + A cos a + B sin a (closed form: h' = 0 at
  * atan2(B, A) and opposite, h = 0 at atan2(B, A) +- acos(-hc / hypot(A, B))). Every such angle

@@ -1,6 +1,6 @@
 /* Parametric curves, helices and cubic Bezier curves to circles and disks: the generic
  * root-bounding engine (distance-to-circles-3d §3, point-curve-circle-to-disk §3). The arc
- * queries (src/arc.c) use the same engine through the small interface in src/curve_scan.h.
+ * queries (src/curves/arc.c) use the same engine through the small interface in src/curves/curve_scan.h.
  *
  * Curve to circle. With Delta(t) = P(t) - C, h = N.Delta, w = N x Delta, rho = |w|:
  *     F(t) = h^2 + (rho - r)^2                      (squared distance, closed-form point-circle)
