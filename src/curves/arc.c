@@ -242,6 +242,11 @@ static cdist_status arc_target(cdist_query *q, const cdist_arc *a, const cdist_c
     vec3 origin = A.c.c;
     A.c.c = v3(0, 0, 0);
     C.c = v_sub(C.c, origin);
+    int e = cd_scale_exponent(fmax(fmax(A.c.r, C.r), v_maxabs(C.c)));
+    double down = cd_pow2(-e);
+    A.c.r *= down;
+    C.r *= down;
+    C.c = v_scale(down, C.c);
     cs_coll k;
     cs_coll_init(&k, arc_scale(&A, &C));
     if (A.c.r == 0.0) {
@@ -258,8 +263,7 @@ static cdist_status arc_target(cdist_query *q, const cdist_arc *a, const cdist_c
          * cdist_circle_circle flags it): every arc point is closest. */
         if (constant && A.end > A.start) k.b.equidistant = 1;
     }
-    cs_coll_finish(&k);
-    cd_best_to_result(&k.b, origin, 0, r);
+    cs_coll_result(&k, cd_pow2(e), origin, r);
     return cd_ok(q, r, CDIST_METHOD_ROBUST);
 }
 
@@ -284,6 +288,11 @@ cdist_status cdist_arc_arc(cdist_query *q, const cdist_arc *a0, const cdist_arc 
     vec3 origin = A.c.c;
     A.c.c = v3(0, 0, 0);
     B.c.c = v_sub(B.c.c, origin);
+    int e = cd_scale_exponent(fmax(fmax(A.c.r, B.c.r), v_maxabs(B.c.c)));
+    double down = cd_pow2(-e);
+    A.c.r *= down;
+    B.c.r *= down;
+    B.c.c = v_scale(down, B.c.c);
     cs_coll k;
     cs_coll_init(&k, arc_scale(&A, &B.c));
     /* The four endpoint-to-arc distances (a radius-0 arc is its centre). */
@@ -306,8 +315,7 @@ cdist_status cdist_arc_arc(cdist_query *q, const cdist_arc *a0, const cdist_arc 
         cs_scan t = {q, arc_eval, &B, &A.c, 0, &k, cand_arc, &cb, 0, 0.0, 0.0};
         if ((st = arc_minima(&t, &B, &A.c, &exact, NULL))) return st;
     }
-    cs_coll_finish(&k);
-    cd_best_to_result(&k.b, origin, 0, r);
+    cs_coll_result(&k, cd_pow2(e), origin, r);
     return cd_ok(q, r, CDIST_METHOD_ROBUST);
 }
 
@@ -338,6 +346,12 @@ cdist_status cdist_segment_arc(cdist_query *q, const cdist_segment *sg, const cd
     A.c.c = v3(0, 0, 0);
     seg_x S = {v_sub(sg->p0, origin), v_sub(sg->p1, sg->p0)};
     vec3 S1 = v_sub(sg->p1, origin);
+    int e = cd_scale_exponent(fmax(A.c.r, fmax(v_maxabs(S.p0), v_maxabs(S1))));
+    double down = cd_pow2(-e);
+    A.c.r *= down;
+    S.p0 = v_scale(down, S.p0);
+    S.m = v_scale(down, S.m);
+    S1 = v_scale(down, S1);
     cs_coll k;
     cs_coll_init(&k, fmax(A.c.r, fmax(v_norm(S.p0), v_norm(S1))));
     /* Segment endpoints to the arc. */
@@ -380,7 +394,6 @@ cdist_status cdist_segment_arc(cdist_query *q, const cdist_segment *sg, const cd
             }
         }
     }
-    cs_coll_finish(&k);
-    cd_best_to_result(&k.b, origin, 0, r);
+    cs_coll_result(&k, cd_pow2(e), origin, r);
     return cd_ok(q, r, CDIST_METHOD_ROBUST);
 }

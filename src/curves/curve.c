@@ -75,6 +75,25 @@ void cs_coll_finish(cs_coll *k)
     if (k->flat_ties && b->n >= 3 && sqrt(b->c[2].d2) - d0 <= tie_tol(k)) b->equidistant = 1;
 }
 
+void cs_coll_result(cs_coll *k, double up, vec3 origin, cdist_result *r)
+{
+    cs_coll_finish(k);
+    cd_best_to_result(&k->b, v3(0, 0, 0), 0, r);
+    if (k->b.n == 0) return;
+    /* The distance from the scaled one (its square may underflow when the distance is below
+     * 1e-154: sqr_distance is then 0 or subnormal, the distance is still exact). */
+    r->distance *= up;
+    r->sqr_distance = (r->sqr_distance * up) * up;
+    for (int i = 0; i < r->num_pairs; i++)
+        for (int j = 0; j < 2; j++) {
+            cdist_vec3 *P = &r->pairs[i].point[j];
+            vec3 w = v_axpy(origin, up, v3(P->x, P->y, P->z));
+            P->x = w.x;
+            P->y = w.y;
+            P->z = w.z;
+        }
+}
+
 void cs_offer_point(cs_coll *k, vec3 p, double t, const cd_circle *c, int disk, int swap)
 {
     cd_best tmp;
@@ -513,7 +532,7 @@ cdist_status cs_check_interval(cdist_query *q, double t0, double t1, const char 
  * (its centre already relative to that frame) and write the result. */
 static cdist_status run_curve(cdist_query *q, cs_eval_fn ev, const void *ctx, double t0, double t1,
                               const cd_circle *cc, int disk, vec3 origin, double scale, double frame_mag,
-                              cdist_result *r)
+                              double up, cdist_result *r)
 {
     cs_coll k;
     cs_coll_init(&k, scale);
@@ -521,8 +540,7 @@ static cdist_status run_curve(cdist_query *q, cs_eval_fn ev, const void *ctx, do
     cdist_status st = cs_scan_run(&s, t0, t1, q->curve_samples);
     if (!st) st = cs_flat_check(&s, t0, t1, (t1 - t0) / q->curve_samples);
     if (st) return st;
-    cs_coll_finish(&k);
-    cd_best_to_result(&k.b, origin, 0, r);
+    cs_coll_result(&k, up, origin, r);
     return cd_ok(q, r, CDIST_METHOD_ROBUST);
 }
 
@@ -539,7 +557,8 @@ static cdist_status curve_query(cdist_query *q, cdist_curve_fn f, void *user, do
     vec3 origin = cc.c;
     cc.c = v3(0, 0, 0);
     /* The callback's positions are absolute: their rounding is relative to |origin| too. */
-    return run_curve(q, user_eval, &u, t0, t1, &cc, disk, origin, cc.r, v_maxabs(origin), r);
+    /* (Not scaled: the callback's positions are only known as it is called.) */
+    return run_curve(q, user_eval, &u, t0, t1, &cc, disk, origin, cc.r, v_maxabs(origin), 1.0, r);
 }
 
 cdist_status cdist_curve_circle(cdist_query *q, cdist_curve_fn f, void *user, double t0, double t1,
@@ -739,6 +758,12 @@ static cdist_status helix_query(cdist_query *q, const cdist_helix *h, const cdis
     vec3 origin = cc.c;
     hx.c = v_sub(h->center, origin);
     cc.c = v3(0, 0, 0);
+    int e = cd_scale_exponent(fmax(fmax(cc.r, hx.r), fmax(v_maxabs(hx.c), fabs(hx.rise) * fmax(fabs(t0), fabs(t1)))));
+    double down = cd_pow2(-e);
+    hx.c = v_scale(down, hx.c);
+    hx.r *= down;
+    hx.rise *= down;
+    cc.r *= down;
     /* Pieces of at most one turn, each sampled with the handle's sample count. */
     double len = t1 - t0;
     long pieces = (h->radius == 0.0) ? 1 : (long)ceil(len / (2.0 * M_PI));
@@ -753,8 +778,7 @@ static cdist_status helix_query(cdist_query *q, const cdist_helix *h, const cdis
         return st;
     }
     if ((st = cs_flat_check(&s, t0, t1, plen / q->curve_samples))) return st;
-    cs_coll_finish(&k);
-    cd_best_to_result(&k.b, origin, 0, r);
+    cs_coll_result(&k, cd_pow2(e), origin, r);
     return cd_ok(q, r, CDIST_METHOD_ROBUST);
 }
 
@@ -803,10 +827,14 @@ static cdist_status bezier_query(cdist_query *q, const cdist_bezier3 *bz, const 
     double scale = cc.r;
     for (int i = 0; i < 4; i++) {
         bx.p[i] = v_sub(bz->p[i], origin);
-        scale = fmax(scale, v_norm(bx.p[i]));
+        scale = fmax(scale, v_maxabs(bx.p[i]));
     }
+    int e = cd_scale_exponent(scale);
+    double down = cd_pow2(-e);
+    for (int i = 0; i < 4; i++) bx.p[i] = v_scale(down, bx.p[i]);
+    cc.r *= down;
     cc.c = v3(0, 0, 0);
-    return run_curve(q, bez_eval, &bx, 0.0, 1.0, &cc, disk, origin, scale, 0.0, r);
+    return run_curve(q, bez_eval, &bx, 0.0, 1.0, &cc, disk, origin, scale * down, 0.0, cd_pow2(e), r);
 }
 
 cdist_status cdist_bezier3_circle(cdist_query *q, const cdist_bezier3 *b, const cdist_circle *c, cdist_result *r)

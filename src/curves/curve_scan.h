@@ -22,6 +22,10 @@ void cs_coll_init(cs_coll *k, double scale);
 void cs_coll_offer(cs_coll *k, double d2, vec3 p0, vec3 p1, double a0, double a1, int eq);
 /* Sets b.equidistant from the equidistant candidates and (flat_ties) from three-way ties. */
 void cs_coll_finish(cs_coll *k);
+/* The families work on a copy of the problem scaled by down = 2^-e (cd_scale_exponent of its
+ * scale: exact, and squared distances neither underflow nor overflow). Unscale the collector by
+ * up = 2^e, finish it (cs_coll_finish) and write the result, points moved by origin. */
+void cs_coll_result(cs_coll *k, double up, vec3 origin, cdist_result *r);
 /* Offer point p (any frame) with parameter t against circle/disk c (c->c in the same frame);
  * swap puts p second. */
 void cs_offer_point(cs_coll *k, vec3 p, double t, const cd_circle *c, int disk, int swap);
