@@ -47,22 +47,22 @@
 
 /* ---- collector ---- */
 
-void cs_coll_init(cs_coll *k, double scale)
+void cd_cs_coll_init(cd_cs_coll *k, double scale)
 {
     cd_best_init(&k->b, scale);
     k->eq_d2 = INFINITY;
     k->flat_ties = 0;
 }
 
-void cs_coll_offer(cs_coll *k, double d2, vec3 p0, vec3 p1, double a0, double a1, int eq)
+void cd_cs_coll_offer(cd_cs_coll *k, double d2, vec3 p0, vec3 p1, double a0, double a1, int eq)
 {
     cd_best_offer(&k->b, d2, p0, p1, a0, a1);
     if (eq && d2 < k->eq_d2) k->eq_d2 = d2;
 }
 
-static double tie_tol(const cs_coll *k) { return CD_TIE_ULPS * DBL_EPSILON * k->b.scale; }
+static double tie_tol(const cd_cs_coll *k) { return CD_TIE_ULPS * DBL_EPSILON * k->b.scale; }
 
-void cs_coll_finish(cs_coll *k)
+void cd_cs_coll_finish(cd_cs_coll *k)
 {
     cd_best *b = &k->b;
     if (b->n == 0) return;
@@ -75,9 +75,9 @@ void cs_coll_finish(cs_coll *k)
     if (k->flat_ties && b->n >= 3 && sqrt(b->c[2].d2) - d0 <= tie_tol(k)) b->equidistant = 1;
 }
 
-void cs_coll_result(cs_coll *k, double up, vec3 origin, cdist_result *r)
+void cd_cs_coll_result(cd_cs_coll *k, double up, vec3 origin, cdist_result *r)
 {
-    cs_coll_finish(k);
+    cd_cs_coll_finish(k);
     cd_best_to_result(&k->b, v3(0, 0, 0), 0, r);
     if (k->b.n == 0) return;
     /* The distance from the scaled one (its square may underflow when the distance is below
@@ -94,7 +94,7 @@ void cs_coll_result(cs_coll *k, double up, vec3 origin, cdist_result *r)
         }
 }
 
-void cs_offer_point(cs_coll *k, vec3 p, double t, const cd_circle *c, int disk, int swap)
+void cd_cs_offer_point(cd_cs_coll *k, vec3 p, double t, const cd_circle *c, int disk, int swap)
 {
     cd_best tmp;
     cd_best_init(&tmp, k->b.scale);
@@ -104,16 +104,16 @@ void cs_offer_point(cs_coll *k, vec3 p, double t, const cd_circle *c, int disk, 
     if (tmp.n == 0) return;
     const cd_cand *x = &tmp.c[0];
     vec3 kp = v_add(x->p[1], c->c);
-    int eq = cd_best_is_equidistant(&tmp) || (!disk && cs_near_axis(k, rel, c));
-    if (swap) cs_coll_offer(k, x->d2, kp, p, x->param[1], t, eq);
-    else cs_coll_offer(k, x->d2, p, kp, t, x->param[1], eq);
+    int eq = cd_best_is_equidistant(&tmp) || (!disk && cd_cs_near_axis(k, rel, c));
+    if (swap) cd_cs_coll_offer(k, x->d2, kp, p, x->param[1], t, eq);
+    else cd_cs_coll_offer(k, x->d2, p, kp, t, x->param[1], eq);
 }
 
-int cs_near_axis(const cs_coll *k, vec3 rel, const cd_circle *c)
+int cd_cs_near_axis(const cd_cs_coll *k, vec3 rel, const cd_circle *c)
 {
     /* Within this distance of the axis the distance to the circle's points varies by less
      * than the tie tolerance: the closest pairs form a continuum up to rounding. */
-    return c->r > 0.0 && v_norm(v_cross(c->n, rel)) <= CS_AXIS_ULPS * DBL_EPSILON * k->b.scale;
+    return c->r > 0.0 && v_norm(v_cross(c->n, rel)) <= CD_CURVE_AXIS_ULPS * DBL_EPSILON * k->b.scale;
 }
 
 /* ---- the objective ---- */
@@ -128,7 +128,7 @@ typedef struct sample {
     double speed; /* |P'| (1-norm) */
 } sample;
 
-static cdist_status eval(const cs_scan *s, double t, sample *o)
+static cdist_status eval(const cd_cs_scan *s, double t, sample *o)
 {
     vec3 P, D;
     cdist_status st = s->ev(s->q, s->ctx, t, &P, &D);
@@ -157,18 +157,18 @@ static cdist_status eval(const cs_scan *s, double t, sample *o)
     o->h = h;
     o->rho = rho;
     double rn = fabs(rel.x) + fabs(rel.y) + fabs(rel.z), dn = fabs(D.x) + fabs(D.y) + fabs(D.z);
-    o->tol = 32.0 * DBL_EPSILON * (rn + c->r + s->frame_mag) * dn;
+    o->tol = CD_CURVE_G_ULPS * DBL_EPSILON * (rn + c->r + s->frame_mag) * dn;
     o->speed = dn;
     return CDIST_OK;
 }
 
-static void offer_sample(const cs_scan *s, double t, const sample *x)
+static void offer_sample(const cd_cs_scan *s, double t, const sample *x)
 {
     if (s->cand) s->cand(s, t, x->p);
-    else cs_offer_point(s->k, x->p, t, s->c, s->disk, 0);
+    else cd_cs_offer_point(s->k, x->p, t, s->c, s->disk, 0);
 }
 
-static cdist_status offer_at(const cs_scan *s, double t)
+static cdist_status offer_at(const cd_cs_scan *s, double t)
 {
     sample x;
     cdist_status st = eval(s, t, &x);
@@ -177,187 +177,100 @@ static cdist_status offer_at(const cs_scan *s, double t)
     return CDIST_OK;
 }
 
-/* Root of g (height: of h) in [a, b] with ga < 0 < gb (or the reverse): Brent's zeroin (inverse
- * quadratic / secant steps, bisection whenever they do not shrink the bracket fast enough). */
-static cdist_status zeroin(const cs_scan *s, int height, double a, double ga, double b, double gb, double *root,
-                           sample *out)
+/* ---- the scan's functions for the root and minimum module (src/base/roots.h) ---- */
+
+enum { CS_F_G, CS_F_H, CS_F_RIM, CS_F_RHO, CS_F_DIP };
+
+/* Context of one solve: which function of the sample, the sign for the dip search, and the
+ * status of a failed evaluation (a user callback's error: the solver then gets NaN and stops). */
+typedef struct cd_cs_fn_ctx {
+    const cd_cs_scan *s;
+    int what;
+    double sg;
+    cdist_status st;
+} cd_cs_fn_ctx;
+
+static double cd_cs_fn(const void *ctx, double t)
 {
-    double span = s->span;
-    double c = a, gc = ga, d = b - a, e = d;
+    cd_cs_fn_ctx *c = (cd_cs_fn_ctx *)ctx; /* the status is recorded here (roots.h convention) */
     sample x;
-    int have = 0;
-    for (int it = 0; it < 300; it++) {
-        if ((gb > 0) == (gc > 0)) {
-            c = a;
-            gc = ga;
-            d = e = b - a;
-        }
-        if (fabs(gc) < fabs(gb)) {
-            a = b; b = c; c = a;
-            ga = gb; gb = gc; gc = ga;
-            have = 0;
-        }
-        double tol = 2.0 * DBL_EPSILON * fabs(b) + 0.25 * DBL_EPSILON * span;
-        double m = 0.5 * (c - b);
-        if (fabs(m) <= tol || gb == 0.0) break;
-        if (fabs(e) >= tol && fabs(ga) > fabs(gb)) {
-            double p, qq, r2, s2 = gb / ga;
-            if (a == c) {
-                p = 2.0 * m * s2;
-                qq = 1.0 - s2;
-            } else {
-                qq = ga / gc;
-                r2 = gb / gc;
-                p = s2 * (2.0 * m * qq * (qq - r2) - (b - a) * (r2 - 1.0));
-                qq = (qq - 1.0) * (r2 - 1.0) * (s2 - 1.0);
-            }
-            if (p > 0) qq = -qq;
-            else p = -p;
-            if (2.0 * p < fmin(3.0 * m * qq - fabs(tol * qq), fabs(e * qq))) {
-                e = d;
-                d = p / qq;
-            } else {
-                d = m;
-                e = m;
-            }
-        } else {
-            d = m;
-            e = m;
-        }
-        a = b;
-        ga = gb;
-        b += (fabs(d) > tol) ? d : (m > 0 ? tol : -tol);
-        cdist_status st = eval(s, b, &x);
-        if (st) return st;
-        gb = height ? x.h : x.g;
-        have = 1;
+    if (c->st) return NAN;
+    if ((c->st = eval(c->s, t, &x))) return NAN;
+    switch (c->what) {
+    case CS_F_G: return x.g;
+    case CS_F_H: return x.h;
+    case CS_F_RIM: return x.rho - c->s->c->r;
+    case CS_F_RHO: return x.rho;
+    default: return c->sg * x.g;
     }
-    if (!have) {
-        cdist_status st = eval(s, b, &x);
-        if (st) return st;
-    }
-    *root = b;
-    *out = x;
-    return CDIST_OK;
 }
 
-static cdist_status refine(const cs_scan *s, double a, double ga, double b, double gb, double *root, sample *out)
+/* Bracket resolution of the scan's solvers: the resolution of t plus a fraction of an ulp of
+ * the scanned span (CD_CURVE_SPAN_ULPS). */
+static double cd_cs_abs_tol(const cd_cs_scan *s) { return CD_CURVE_SPAN_ULPS * DBL_EPSILON * s->span; }
+
+/* The root of the function `what` bracketed by [a, b] (fa, fb of opposite signs), offered. */
+static cdist_status root_offer(const cd_cs_scan *s, int what, double a, double fa, double b, double fb)
 {
-    return zeroin(s, 0, a, ga, b, gb, root, out);
+    cd_cs_fn_ctx c = {s, what, 1.0, CDIST_OK};
+    double t = cd_root_brent(cd_cs_fn, &c, a, fa, b, fb, CD_ROOT_REL_ULPS * DBL_EPSILON, cd_cs_abs_tol(s), CD_CURVE_ROOT_MAX_ITER,
+                             NULL);
+    if (c.st) return c.st;
+    if (t != t) return CDIST_OK;
+    return offer_at(s, t);
 }
 
 /* Refine the minimum of F bracketed by g(a) < 0 < g(b) and offer it. */
-static cdist_status refine_offer(const cs_scan *s, double a, double ga, double b, double gb)
+static cdist_status refine_offer(const cd_cs_scan *s, double a, double ga, double b, double gb)
 {
-    double t;
-    sample x;
-    cdist_status st = refine(s, a, ga, b, gb, &t, &x);
-    if (st) return st;
-    offer_sample(s, t, &x);
-    return CDIST_OK;
+    return root_offer(s, CS_F_G, a, ga, b, gb);
 }
 
 /* g keeps the sign sg at a and b; look for an extremum of g in between that crosses zero
  * (golden section on sg * g) and refine the minimum of F it brackets. */
-static cdist_status dip_search(const cs_scan *s, double a, double b, double sg)
+static cdist_status dip_search(const cd_cs_scan *s, double a, double b, double sg)
 {
-    const double gr = 0.6180339887498949;
-    double x1 = b - gr * (b - a), x2 = a + gr * (b - a);
-    sample s1, s2;
-    cdist_status st;
-    if ((st = eval(s, x1, &s1)) || (st = eval(s, x2, &s2))) return st;
-    double lo = a, hi = b;
-    for (int it = 0; it < 60; it++) {
-        double v1 = sg * s1.g, v2 = sg * s2.g;
-        if (v1 < 0.0 || v2 < 0.0) {
-            double tm = v1 <= v2 ? x1 : x2;
-            double gm = v1 <= v2 ? s1.g : s2.g;
-            sample ea, eb;
-            /* g > 0 dips below: the minimum of F is right of tm; g < 0 bumps above: left. */
-            if (sg > 0) {
-                if ((st = eval(s, b, &eb))) return st;
-                return refine_offer(s, tm, gm, b, eb.g);
-            }
-            if ((st = eval(s, a, &ea))) return st;
-            return refine_offer(s, a, ea.g, tm, gm);
-        }
-        if (v1 < v2) {
-            hi = x2;
-            x2 = x1;
-            s2 = s1;
-            x1 = hi - gr * (hi - lo);
-            if ((st = eval(s, x1, &s1))) return st;
-        } else {
-            lo = x1;
-            x1 = x2;
-            s1 = s2;
-            x2 = lo + gr * (hi - lo);
-            if ((st = eval(s, x2, &s2))) return st;
-        }
-        if (hi - lo <= 4.0 * DBL_EPSILON * (fabs(lo) + fabs(hi)) + 0.25 * DBL_EPSILON * s->span) break;
+    cd_cs_fn_ctx c = {s, CS_F_DIP, sg, CDIST_OK};
+    double vm, tol = CD_CURVE_GOLDEN_ULPS * DBL_EPSILON * (fabs(a) + fabs(b)) + cd_cs_abs_tol(s);
+    double tm = cd_min_golden(cd_cs_fn, &c, a, b, tol, CD_CURVE_GOLDEN_MAX_ITER, &vm);
+    if (c.st) return c.st;
+    if (!(vm < 0.0)) return CDIST_OK;
+    /* g > 0 dips below: the minimum of F is right of tm; g < 0 bumps above: left. */
+    cd_cs_fn_ctx e = {s, CS_F_G, 1.0, CDIST_OK};
+    if (sg > 0) {
+        double gb = cd_cs_fn(&e, b);
+        return e.st ? e.st : refine_offer(s, tm, sg * vm, b, gb);
     }
-    return CDIST_OK;
+    double ga = cd_cs_fn(&e, a);
+    return e.st ? e.st : refine_offer(s, a, ga, tm, sg * vm);
 }
 
 /* The curve crosses the disk's plane between a and b (ha, hb of opposite signs): locate the
  * crossing on h itself and offer it. Where the crossing is inside the disk the distance is 0, a
  * minimum that g = h h' shows only at the rounding level of g when the curve lies nearly flat
  * (h' tiny), so the g brackets cannot be trusted to see it. */
-static cdist_status crossing_offer(const cs_scan *s, double a, double ha, double b, double hb)
+static cdist_status crossing_offer(const cd_cs_scan *s, double a, double ha, double b, double hb)
 {
-    double t;
-    sample x;
-    cdist_status st = zeroin(s, 1, a, ha, b, hb, &t, &x);
-    if (st) return st;
-    offer_sample(s, t, &x);
-    return CDIST_OK;
+    return root_offer(s, CS_F_H, a, ha, b, hb);
 }
 
-/* Bisect rho - r between a and b (opposite signs) and offer the partition point. */
-static cdist_status partition_offer(const cs_scan *s, double a, double da, double b)
+/* Locate the sign change of rho - r between a and b and offer the partition point. */
+static cdist_status partition_offer(const cd_cs_scan *s, double a, double da, double b, double db)
 {
-    sample x;
-    cdist_status st;
-    for (int it = 0; it < 80; it++) {
-        double m = 0.5 * (a + b);
-        if (m == a || m == b) break;
-        if ((st = eval(s, m, &x))) return st;
-        double dm = x.rho - s->c->r;
-        if ((dm > 0) == (da > 0)) {
-            a = m;
-            da = dm;
-        } else {
-            b = m;
-        }
-    }
-    return offer_at(s, a);
+    return root_offer(s, CS_F_RIM, a, da, b, db);
 }
 
 /* The curve's closest approach to the circle's axis in [a, b] (golden section on rho), offered:
  * where the curve crosses the axis F has a kink, and in a flat configuration the kink rounded by
  * a near miss is a dip as narrow as the miss distance, invisible to the samples. */
-static cdist_status axis_offer(const cs_scan *s, double a, double b)
+static cdist_status axis_offer(const cd_cs_scan *s, double a, double b)
 {
-    const double gr = 0.6180339887498949;
-    double x1 = b - gr * (b - a), x2 = a + gr * (b - a);
-    sample s1, s2;
-    cdist_status st;
-    if ((st = eval(s, x1, &s1)) || (st = eval(s, x2, &s2))) return st;
-    for (int it = 0; it < 120; it++) {
-        if (b - a <= 2.0 * DBL_EPSILON * (fabs(a) + fabs(b)) + 0.25 * DBL_EPSILON * s->span) break;
-        if (s1.rho < s2.rho) {
-            b = x2; x2 = x1; s2 = s1;
-            x1 = b - gr * (b - a);
-            if ((st = eval(s, x1, &s1))) return st;
-        } else {
-            a = x1; x1 = x2; s1 = s2;
-            x2 = a + gr * (b - a);
-            if ((st = eval(s, x2, &s2))) return st;
-        }
-    }
-    if (s1.rho < s2.rho) offer_sample(s, x1, &s1);
-    else offer_sample(s, x2, &s2);
-    return CDIST_OK;
+    cd_cs_fn_ctx c = {s, CS_F_RHO, 1.0, CDIST_OK};
+    double tol = CD_CURVE_GOLDEN_ULPS / 2.0 * DBL_EPSILON * (fabs(a) + fabs(b)) + cd_cs_abs_tol(s);
+    double t = cd_min_golden(cd_cs_fn, &c, a, b, tol, 2 * CD_CURVE_GOLDEN_MAX_ITER, NULL);
+    if (c.st) return c.st;
+    if (t != t) return CDIST_OK;
+    return offer_at(s, t);
 }
 
 static double t_at(double t0, double t1, int i, int n)
@@ -366,7 +279,7 @@ static double t_at(double t0, double t1, int i, int n)
     return t0 + (t1 - t0) * ((double)i / n);
 }
 
-cdist_status cs_scan_run(cs_scan *s, double t0, double t1, int n)
+cdist_status cd_cs_scan_run(cd_cs_scan *s, double t0, double t1, int n)
 {
     cdist_query *q = s->q;
     cdist_status st;
@@ -404,7 +317,7 @@ cdist_status cs_scan_run(cs_scan *s, double t0, double t1, int n)
                 if ((st = refine_offer(s, t, G[i], t_at(t0, t1, i + 1, n), G[i + 1]))) return st;
             }
             if (s->disk && ((R[i] > 0) != (R[i + 1] > 0))) {
-                if ((st = partition_offer(s, t, R[i], t_at(t0, t1, i + 1, n)))) return st;
+                if ((st = partition_offer(s, t, R[i], t_at(t0, t1, i + 1, n), R[i + 1]))) return st;
             }
         }
         if (zero) continue;
@@ -436,9 +349,9 @@ cdist_status cs_scan_run(cs_scan *s, double t0, double t1, int n)
     return CDIST_OK;
 }
 
-cdist_status cs_flat_check(cs_scan *s, double t0, double t1, double delta)
+cdist_status cd_cs_flat_check(cd_cs_scan *s, double t0, double t1, double delta)
 {
-    cs_coll *k = s->k;
+    cd_cs_coll *k = s->k;
     if (k->b.n == 0 || k->b.equidistant || !(t0 < t1) || s->cand) return CDIST_OK;
     double t = k->b.c[0].param[0];
     if (!isfinite(t)) return CDIST_OK;
@@ -457,7 +370,7 @@ cdist_status cs_flat_check(cs_scan *s, double t0, double t1, double delta)
     return CDIST_OK;
 }
 
-cdist_status cs_polish(cs_scan *s, double t, double lo, double hi)
+cdist_status cd_cs_polish(cd_cs_scan *s, double t, double lo, double hi)
 {
     sample x, y;
     cdist_status st;
@@ -470,9 +383,9 @@ cdist_status cs_polish(cs_scan *s, double t, double lo, double hi)
     /* The minimum lies to the right where g < 0, to the left where g > 0: step outwards
      * (geometrically growing steps) until g changes sign, then refine the bracket. */
     double dir = x.g < 0 ? 1.0 : -1.0;
-    double step = 1e-10 * fmax(s->span, fabs(t));
+    double step = CD_CURVE_POLISH_STEP_REL * fmax(s->span, fabs(t));
     double prev = t;
-    for (int it = 0; it < 40; it++) {
+    for (int it = 0; it < CD_CURVE_POLISH_STEPS; it++) {
         double u = prev + dir * step;
         int bound = 0;
         if (u >= hi) { u = hi; bound = 1; }
@@ -518,7 +431,7 @@ static cdist_status user_eval(cdist_query *q, const void *ctx, double t, vec3 *p
     return CDIST_OK;
 }
 
-cdist_status cs_check_interval(cdist_query *q, double t0, double t1, const char *what)
+cdist_status cd_cs_check_interval(cdist_query *q, double t0, double t1, const char *what)
 {
     if (!isfinite(t0) || !isfinite(t1))
         return cd_fail(q, CDIST_ERR_NOT_FINITE, "%s interval [%g, %g] is not finite", what, t0, t1);
@@ -530,17 +443,17 @@ cdist_status cs_check_interval(cdist_query *q, double t0, double t1, const char 
 
 /* Run a curve (evaluated in the frame whose origin is `origin`) against circle or disk cc
  * (its centre already relative to that frame) and write the result. */
-static cdist_status run_curve(cdist_query *q, cs_eval_fn ev, const void *ctx, double t0, double t1,
+static cdist_status run_curve(cdist_query *q, cd_cs_eval_fn ev, const void *ctx, double t0, double t1,
                               const cd_circle *cc, int disk, vec3 origin, double scale, double frame_mag,
                               double up, cdist_result *r)
 {
-    cs_coll k;
-    cs_coll_init(&k, scale);
-    cs_scan s = {q, ev, ctx, cc, disk, &k, NULL, NULL, 1, 0.0, frame_mag};
-    cdist_status st = cs_scan_run(&s, t0, t1, q->curve_samples);
-    if (!st) st = cs_flat_check(&s, t0, t1, (t1 - t0) / q->curve_samples);
+    cd_cs_coll k;
+    cd_cs_coll_init(&k, scale);
+    cd_cs_scan s = {q, ev, ctx, cc, disk, &k, NULL, NULL, 1, 0.0, frame_mag};
+    cdist_status st = cd_cs_scan_run(&s, t0, t1, q->curve_samples);
+    if (!st) st = cd_cs_flat_check(&s, t0, t1, (t1 - t0) / q->curve_samples);
     if (st) return st;
-    cs_coll_result(&k, up, origin, r);
+    cd_cs_coll_result(&k, up, origin, r);
     return cd_ok(q, r, CDIST_METHOD_ROBUST);
 }
 
@@ -552,7 +465,7 @@ static cdist_status curve_query(cdist_query *q, cdist_curve_fn f, void *user, do
     if (!f) return cd_fail(q, CDIST_ERR_NULL_ARGUMENT, "curve callback is NULL");
     cd_circle cc;
     if ((st = cd_check_circle(q, c, disk ? "disk" : "circle", &cc))) return st;
-    if ((st = cs_check_interval(q, t0, t1, "curve"))) return st;
+    if ((st = cd_cs_check_interval(q, t0, t1, "curve"))) return st;
     user_curve u = {f, user, cc.c};
     vec3 origin = cc.c;
     cc.c = v3(0, 0, 0);
@@ -575,7 +488,7 @@ cdist_status cdist_curve_disk(cdist_query *q, cdist_curve_fn f, void *user, doub
 
 /* ---- frames ---- */
 
-cdist_status cs_zero_frame(cdist_query *q, vec3 n, const cdist_vec3 *zd, const char *what, vec3 *U, vec3 *V)
+cdist_status cd_cs_zero_frame(cdist_query *q, vec3 n, const cdist_vec3 *zd, const char *what, vec3 *U, vec3 *V)
 {
     vec3 z;
     cdist_status st = cd_check_direction(q, zd, what, 0, &z, NULL);
@@ -583,7 +496,7 @@ cdist_status cs_zero_frame(cdist_query *q, vec3 n, const cdist_vec3 *zd, const c
     vec3 w = v_cross(n, z);
     double sn = v_norm(w);
     /* U = (n x z) x n / |n x z| is z projected onto the plane; refuse an ill-defined one. */
-    if (!(sn > CS_PARALLEL_SIN))
+    if (!(sn > CD_CURVE_PARALLEL_SIN))
         return cd_fail(q, CDIST_ERR_ZERO_VECTOR, "%s is parallel to the normal/axis (sin %.3g)", what, sn);
     *U = v_scale(1.0 / sn, v_cross(w, n));
     *V = v_cross(n, *U);
@@ -609,7 +522,6 @@ static cdist_status helix_eval(cdist_query *q, const void *ctx, double t, vec3 *
     return CDIST_OK;
 }
 
-#define CS_MAX_HELIX_TURNS 1e6
 
 /* Lower bound of the distance between the circle or disk and the helix piece whose axis points
  * have axial coordinates (along hx->n, from the circle's centre) in [za, zb]: every piece point
@@ -638,7 +550,7 @@ static helix_bound helix_bound_init(const helix_x *hx, const cd_circle *c, int d
     double rhi = sqrt(fmax(0.0, a0 + m1 + m2)), rlo = sqrt(fmax(0.0, a0 - m1 - m2));
     if (disk) rlo = fmax(0.0, v_norm(Cp) - R); /* the filled ellipse around C_p */
     /* Rounding: the ranges are widened by a few ulps of the problem's magnitude. */
-    double slack = 64.0 * DBL_EPSILON * (R + v_norm(hx->c) + hx->r);
+    double slack = CD_CURVE_HELIX_BOUND_ULPS * DBL_EPSILON * (R + v_norm(hx->c) + hx->r);
     hb.zlo -= slack;
     hb.zhi += slack;
     rlo = fmax(0.0, rlo - slack);
@@ -655,21 +567,19 @@ static double helix_piece_lb(const helix_bound *hb, const helix_x *hx, double a,
     return hypot(gap, hb->rgap);
 }
 
-/* Cost limit of one helix query: at most this many samples over all the pieces (turns) that
- * cannot be skipped (2^24: 32768 turns at the default 512 samples, about 2 s). Pieces are
- * skipped when their lower bound exceeds the distance found on the axially nearest piece, so
- * only configurations where that many turns are about equally close (a target threading a long
- * tight coil) reach it; they get CDIST_ERR_COST_LIMIT before the long scan. */
-#define CS_HELIX_MAX_SAMPLES 16777216.0
-
-/* After the nearest piece: the pieces whose bound does not exceed the distance found there are
+/* Cost limit of one helix query (CD_CURVE_HELIX_MAX_SAMPLES samples over the pieces that cannot
+ * be skipped: 32768 turns at the default 512 samples). Pieces are skipped when their lower bound
+ * exceeds the distance found on the axially nearest piece, so only configurations where that
+ * many turns are about equally close (a target threading a long tight coil) reach it; they get
+ * CDIST_ERR_COST_LIMIT before the long scan.
+ * After the nearest piece: the pieces whose bound does not exceed the distance found there are
  * all the pieces that may be scanned (the best only decreases); refuse when they cost too much. */
-static cdist_status helix_cost_check(const cs_scan *s, const helix_x *hx, const helix_bound *hb, double t0,
+static cdist_status helix_cost_check(const cd_cs_scan *s, const helix_x *hx, const helix_bound *hb, double t0,
                                      double plen, long pieces, long mid)
 {
     double best = s->k->b.n ? sqrt(s->k->b.c[0].d2) : INFINITY;
-    double margin = best * (1.0 + 1e-9) + 1e-12 * s->k->b.scale;
-    long limit = (long)(CS_HELIX_MAX_SAMPLES / s->q->curve_samples), count = 1;
+    double margin = best * (1.0 + CD_CURVE_HELIX_SKIP_REL) + CD_CURVE_HELIX_SKIP_ABS * s->k->b.scale;
+    long limit = (long)(CD_CURVE_HELIX_MAX_SAMPLES / s->q->curve_samples), count = 1;
     for (long i = mid - 1; i >= 0 && count <= limit; i--, count++)
         if (helix_piece_lb(hb, hx, t0 + (double)i * plen, t0 + (double)(i + 1) * plen) > margin) break;
     for (long i = mid + 1; i < pieces && count <= limit; i++, count++)
@@ -678,7 +588,7 @@ static cdist_status helix_cost_check(const cs_scan *s, const helix_x *hx, const 
         return cd_fail(s->q, CDIST_ERR_COST_LIMIT,
                        "helix: more than %ld turns are about equally close to the target (cost limit: %.0f "
                        "samples)",
-                       limit, CS_HELIX_MAX_SAMPLES);
+                       limit, CD_CURVE_HELIX_MAX_SAMPLES);
     return CDIST_OK;
 }
 
@@ -686,7 +596,7 @@ static cdist_status helix_cost_check(const cs_scan *s, const helix_x *hx, const 
  * lower bound, from the piece nearest the target axially outwards (the bound is unimodal in i:
  * the axial gap shrinks, stays 0 while the pieces overlap the target's range, then grows),
  * stopping on each side at the first piece whose bound exceeds the best distance so far. */
-static cdist_status helix_pieces(cs_scan *s, const helix_x *hx, double t0, double plen, long pieces, double t1)
+static cdist_status helix_pieces(cd_cs_scan *s, const helix_x *hx, double t0, double plen, long pieces, double t1)
 {
     cdist_query *q = s->q;
     helix_bound hb = helix_bound_init(hx, s->c, s->disk);
@@ -714,7 +624,7 @@ static cdist_status helix_pieces(cs_scan *s, const helix_x *hx, double t0, doubl
             else done_hi = 1;
             double best = s->k->b.n ? sqrt(s->k->b.c[0].d2) : INFINITY;
             /* The bound must beat the best clearly (rounding of both): else the piece is scanned. */
-            double margin = best * (1.0 + 1e-9) + 1e-12 * s->k->b.scale;
+            double margin = best * (1.0 + CD_CURVE_HELIX_SKIP_REL) + CD_CURVE_HELIX_SKIP_ABS * s->k->b.scale;
             if (blo > margin) done_lo = 1;
             if (bhi > margin) done_hi = 1;
             if (done_lo && done_hi) break;
@@ -722,7 +632,7 @@ static cdist_status helix_pieces(cs_scan *s, const helix_x *hx, double t0, doubl
             else i = ++hi;
         }
         double a = t0 + (double)i * plen, b = (i == pieces - 1) ? t1 : t0 + (double)(i + 1) * plen;
-        if ((st = cs_scan_run(s, a, b, q->curve_samples))) return st;
+        if ((st = cd_cs_scan_run(s, a, b, q->curve_samples))) return st;
         if (i == mid && (st = helix_cost_check(s, hx, &hb, t0, plen, pieces, mid))) return st;
     }
     return CDIST_OK;
@@ -739,15 +649,15 @@ static cdist_status helix_query(cdist_query *q, const cdist_helix *h, const cdis
     helix_x hx;
     if ((st = cd_check_point(q, &h->center, "helix centre")) ||
         (st = cd_check_direction(q, &h->axis, "helix axis", 1, &hx.n, NULL)) ||
-        (st = cs_zero_frame(q, hx.n, &h->zero_direction, "helix zero_direction", &hx.u, &hx.v)) ||
+        (st = cd_cs_zero_frame(q, hx.n, &h->zero_direction, "helix zero_direction", &hx.u, &hx.v)) ||
         (st = cd_check_scalar(q, h->radius, "helix radius")) || (st = cd_check_scalar(q, h->pitch, "helix pitch")))
         return st;
     if (h->radius < 0.0) return cd_fail(q, CDIST_ERR_NEGATIVE_RADIUS, "helix radius is negative (%g)", h->radius);
-    if ((st = cs_check_interval(q, h->t0, h->t1, "helix"))) return st;
+    if ((st = cd_cs_check_interval(q, h->t0, h->t1, "helix"))) return st;
     if ((st = cd_check_circle(q, c, disk ? "disk" : "circle", &cc))) return st;
     double t0 = h->t0, t1 = h->t1;
-    if ((t1 - t0) > 2.0 * M_PI * CS_MAX_HELIX_TURNS)
-        return cd_fail(q, CDIST_ERR_BAD_INTERVAL, "helix has more than %g turns", CS_MAX_HELIX_TURNS);
+    if ((t1 - t0) > 2.0 * M_PI * CD_CURVE_HELIX_MAX_TURNS)
+        return cd_fail(q, CDIST_ERR_BAD_INTERVAL, "helix has more than %g turns", CD_CURVE_HELIX_MAX_TURNS);
     if (fabs(t1) * fabs(h->pitch) > CD_MAX_ABS || fabs(t0) * fabs(h->pitch) > CD_MAX_ABS)
         return cd_fail(q, CDIST_ERR_OUT_OF_RANGE, "helix reaches beyond 1e150");
     hx.r = h->radius;
@@ -769,16 +679,16 @@ static cdist_status helix_query(cdist_query *q, const cdist_helix *h, const cdis
     long pieces = (h->radius == 0.0) ? 1 : (long)ceil(len / (2.0 * M_PI));
     if (pieces < 1) pieces = 1;
     double plen = len / (double)pieces;
-    cs_coll k;
-    cs_coll_init(&k, fmax(cc.r, v_norm(hx.c)));
-    cs_scan s = {q, helix_eval, &hx, &cc, disk, &k, NULL, NULL, 1, 0.0, 0.0};
+    cd_cs_coll k;
+    cd_cs_coll_init(&k, fmax(cc.r, v_norm(hx.c)));
+    cd_cs_scan s = {q, helix_eval, &hx, &cc, disk, &k, NULL, NULL, 1, 0.0, 0.0};
     if (pieces == 1) {
-        if ((st = cs_scan_run(&s, t0, t1, q->curve_samples))) return st;
+        if ((st = cd_cs_scan_run(&s, t0, t1, q->curve_samples))) return st;
     } else if ((st = helix_pieces(&s, &hx, t0, plen, pieces, t1))) {
         return st;
     }
-    if ((st = cs_flat_check(&s, t0, t1, plen / q->curve_samples))) return st;
-    cs_coll_result(&k, cd_pow2(e), origin, r);
+    if ((st = cd_cs_flat_check(&s, t0, t1, plen / q->curve_samples))) return st;
+    cd_cs_coll_result(&k, cd_pow2(e), origin, r);
     return cd_ok(q, r, CDIST_METHOD_ROBUST);
 }
 

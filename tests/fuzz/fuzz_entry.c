@@ -143,7 +143,8 @@ static ld d_obj(const obj *o, lv x, double param)
         return lnorm(lsub(x, ladd(p0, lsc(t, m))));
     }
     case O_ARC: {
-        if (v[6] > 0 && !(param >= v[10] - 1e-9 * (1 + fabs(v[10])) && param <= v[11] + 1e-9 * (1 + fabs(v[11]))))
+        /* NaN: the angle is meaningless (a radius negligible at the problem's scale). */
+        if (param == param && !(param >= v[10] - 1e-9 * (1 + fabs(v[10])) && param <= v[11] + 1e-9 * (1 + fabs(v[11]))))
             return INFINITY;
         return d_circle(x, v, 0);
     }
