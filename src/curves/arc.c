@@ -234,8 +234,7 @@ static double arc_scale(const arcx *a, const cd_circle *c)
 
 static cdist_status arc_target(cdist_query *q, const cdist_arc *a, const cdist_circle *c, cdist_result *r, int disk)
 {
-    cdist_status st = cd_check_handle(q, r);
-    if (st) return st;
+    cdist_status st;
     arcx A;
     cd_circle C;
     if ((st = check_arc(q, a, "arc", &A)) || (st = cd_check_circle(q, c, disk ? "disk" : "circle", &C))) return st;
@@ -264,25 +263,28 @@ static cdist_status arc_target(cdist_query *q, const cdist_arc *a, const cdist_c
         if (constant && A.end > A.start) k.b.equidistant = 1;
     }
     cd_cs_coll_result(&k, cd_pow2(e), origin, r);
-    return cd_ok(q, r, CDIST_METHOD_ROBUST);
+    return CDIST_OK;
 }
 
 cdist_status cdist_arc_circle(cdist_query *q, const cdist_arc *a, const cdist_circle *c, cdist_result *r)
 {
-    return arc_target(q, a, c, r, 0);
+    cdist_status st = cd_enter(q, r);
+    if (st) return st;
+    return cd_leave(q, r, arc_target(q, a, c, r, 0), CDIST_METHOD_ROBUST);
 }
 
 cdist_status cdist_arc_disk(cdist_query *q, const cdist_arc *a, const cdist_circle *d, cdist_result *r)
 {
-    return arc_target(q, a, d, r, 1);
+    cdist_status st = cd_enter(q, r);
+    if (st) return st;
+    return cd_leave(q, r, arc_target(q, a, d, r, 1), CDIST_METHOD_ROBUST);
 }
 
 /* ---- arc to arc ---- */
 
-cdist_status cdist_arc_arc(cdist_query *q, const cdist_arc *a0, const cdist_arc *a1, cdist_result *r)
+static cdist_status arc_arc(cdist_query *q, const cdist_arc *a0, const cdist_arc *a1, cdist_result *r)
 {
-    cdist_status st = cd_check_handle(q, r);
-    if (st) return st;
+    cdist_status st;
     arcx A, B;
     if ((st = check_arc(q, a0, "first arc", &A)) || (st = check_arc(q, a1, "second arc", &B))) return st;
     vec3 origin = A.c.c;
@@ -316,7 +318,7 @@ cdist_status cdist_arc_arc(cdist_query *q, const cdist_arc *a0, const cdist_arc 
         if ((st = arc_minima(&t, &B, &A.c, &exact, NULL))) return st;
     }
     cd_cs_coll_result(&k, cd_pow2(e), origin, r);
-    return cd_ok(q, r, CDIST_METHOD_ROBUST);
+    return CDIST_OK;
 }
 
 /* ---- segment to arc ---- */
@@ -334,10 +336,9 @@ static cdist_status seg_eval(cdist_query *q, const void *ctx, double t, vec3 *p,
     return CDIST_OK;
 }
 
-cdist_status cdist_segment_arc(cdist_query *q, const cdist_segment *sg, const cdist_arc *a, cdist_result *r)
+static cdist_status segment_arc(cdist_query *q, const cdist_segment *sg, const cdist_arc *a, cdist_result *r)
 {
-    cdist_status st = cd_check_handle(q, r);
-    if (st) return st;
+    cdist_status st;
     if (!sg) return cd_fail(q, CDIST_ERR_NULL_ARGUMENT, "segment pointer is NULL");
     if ((st = cd_check_point(q, &sg->p0, "segment p0")) || (st = cd_check_point(q, &sg->p1, "segment p1"))) return st;
     arcx A;
@@ -395,5 +396,19 @@ cdist_status cdist_segment_arc(cdist_query *q, const cdist_segment *sg, const cd
         }
     }
     cd_cs_coll_result(&k, cd_pow2(e), origin, r);
-    return cd_ok(q, r, CDIST_METHOD_ROBUST);
+    return CDIST_OK;
+}
+
+cdist_status cdist_arc_arc(cdist_query *q, const cdist_arc *a0, const cdist_arc *a1, cdist_result *r)
+{
+    cdist_status st = cd_enter(q, r);
+    if (st) return st;
+    return cd_leave(q, r, arc_arc(q, a0, a1, r), CDIST_METHOD_ROBUST);
+}
+
+cdist_status cdist_segment_arc(cdist_query *q, const cdist_segment *sg, const cdist_arc *a, cdist_result *r)
+{
+    cdist_status st = cd_enter(q, r);
+    if (st) return st;
+    return cd_leave(q, r, segment_arc(q, sg, a, r), CDIST_METHOD_ROBUST);
 }

@@ -78,8 +78,12 @@ void cd_cs_coll_finish(cd_cs_coll *k)
 void cd_cs_coll_result(cd_cs_coll *k, double up, vec3 origin, cdist_result *r)
 {
     cd_cs_coll_finish(k);
+    if (k->b.n == 0) {
+        r->distance = NAN; /* no candidate: cd_leave reports an internal failure */
+        return;
+    }
     cd_best_to_result(&k->b, v3(0, 0, 0), 0, r);
-    if (k->b.n == 0) return;
+    cd_result_finish(r, r->num_pairs);
     /* The distance from the scaled one (its square may underflow when the distance is below
      * 1e-154: sqr_distance is then 0 or subnormal, the distance is still exact). */
     r->distance *= up;
@@ -454,14 +458,13 @@ static cdist_status run_curve(cdist_query *q, cd_cs_eval_fn ev, const void *ctx,
     if (!st) st = cd_cs_flat_check(&s, t0, t1, (t1 - t0) / q->curve_samples);
     if (st) return st;
     cd_cs_coll_result(&k, up, origin, r);
-    return cd_ok(q, r, CDIST_METHOD_ROBUST);
+    return CDIST_OK;
 }
 
 static cdist_status curve_query(cdist_query *q, cdist_curve_fn f, void *user, double t0, double t1,
                                 const cdist_circle *c, cdist_result *r, int disk)
 {
-    cdist_status st = cd_check_handle(q, r);
-    if (st) return st;
+    cdist_status st;
     if (!f) return cd_fail(q, CDIST_ERR_NULL_ARGUMENT, "curve callback is NULL");
     cd_circle cc;
     if ((st = cd_check_circle(q, c, disk ? "disk" : "circle", &cc))) return st;
@@ -477,13 +480,17 @@ static cdist_status curve_query(cdist_query *q, cdist_curve_fn f, void *user, do
 cdist_status cdist_curve_circle(cdist_query *q, cdist_curve_fn f, void *user, double t0, double t1,
                                 const cdist_circle *c, cdist_result *r)
 {
-    return curve_query(q, f, user, t0, t1, c, r, 0);
+    cdist_status st = cd_enter(q, r);
+    if (st) return st;
+    return cd_leave(q, r, curve_query(q, f, user, t0, t1, c, r, 0), CDIST_METHOD_ROBUST);
 }
 
 cdist_status cdist_curve_disk(cdist_query *q, cdist_curve_fn f, void *user, double t0, double t1,
                               const cdist_circle *d, cdist_result *r)
 {
-    return curve_query(q, f, user, t0, t1, d, r, 1);
+    cdist_status st = cd_enter(q, r);
+    if (st) return st;
+    return cd_leave(q, r, curve_query(q, f, user, t0, t1, d, r, 1), CDIST_METHOD_ROBUST);
 }
 
 /* ---- frames ---- */
@@ -642,8 +649,7 @@ static cdist_status helix_pieces(cd_cs_scan *s, const helix_x *hx, double t0, do
 static cdist_status helix_query(cdist_query *q, const cdist_helix *h, const cdist_circle *c, cdist_result *r,
                                 int disk)
 {
-    cdist_status st = cd_check_handle(q, r);
-    if (st) return st;
+    cdist_status st;
     if (!h) return cd_fail(q, CDIST_ERR_NULL_ARGUMENT, "helix pointer is NULL");
     cd_circle cc;
     helix_x hx;
@@ -689,17 +695,21 @@ static cdist_status helix_query(cdist_query *q, const cdist_helix *h, const cdis
     }
     if ((st = cd_cs_flat_check(&s, t0, t1, plen / q->curve_samples))) return st;
     cd_cs_coll_result(&k, cd_pow2(e), origin, r);
-    return cd_ok(q, r, CDIST_METHOD_ROBUST);
+    return CDIST_OK;
 }
 
 cdist_status cdist_helix_circle(cdist_query *q, const cdist_helix *h, const cdist_circle *c, cdist_result *r)
 {
-    return helix_query(q, h, c, r, 0);
+    cdist_status st = cd_enter(q, r);
+    if (st) return st;
+    return cd_leave(q, r, helix_query(q, h, c, r, 0), CDIST_METHOD_ROBUST);
 }
 
 cdist_status cdist_helix_disk(cdist_query *q, const cdist_helix *h, const cdist_circle *d, cdist_result *r)
 {
-    return helix_query(q, h, d, r, 1);
+    cdist_status st = cd_enter(q, r);
+    if (st) return st;
+    return cd_leave(q, r, helix_query(q, h, d, r, 1), CDIST_METHOD_ROBUST);
 }
 
 /* ---- cubic Bezier ---- */
@@ -723,8 +733,7 @@ static cdist_status bez_eval(cdist_query *q, const void *ctx, double t, vec3 *p,
 static cdist_status bezier_query(cdist_query *q, const cdist_bezier3 *bz, const cdist_circle *c, cdist_result *r,
                                  int disk)
 {
-    cdist_status st = cd_check_handle(q, r);
-    if (st) return st;
+    cdist_status st;
     if (!bz) return cd_fail(q, CDIST_ERR_NULL_ARGUMENT, "Bezier pointer is NULL");
     static const char *names[4] = {"Bezier control point 0", "Bezier control point 1", "Bezier control point 2",
                                    "Bezier control point 3"};
@@ -749,10 +758,14 @@ static cdist_status bezier_query(cdist_query *q, const cdist_bezier3 *bz, const 
 
 cdist_status cdist_bezier3_circle(cdist_query *q, const cdist_bezier3 *b, const cdist_circle *c, cdist_result *r)
 {
-    return bezier_query(q, b, c, r, 0);
+    cdist_status st = cd_enter(q, r);
+    if (st) return st;
+    return cd_leave(q, r, bezier_query(q, b, c, r, 0), CDIST_METHOD_ROBUST);
 }
 
 cdist_status cdist_bezier3_disk(cdist_query *q, const cdist_bezier3 *b, const cdist_circle *d, cdist_result *r)
 {
-    return bezier_query(q, b, d, r, 1);
+    cdist_status st = cd_enter(q, r);
+    if (st) return st;
+    return cd_leave(q, r, bezier_query(q, b, d, r, 1), CDIST_METHOD_ROBUST);
 }
