@@ -317,7 +317,14 @@ cdist_status cd_cs_scan_run(cd_cs_scan *s, double t0, double t1, int n)
         if (zero && i > 0 && i < n && (st = offer_at(s, t))) return st;
         if (i < n) {
             int zr = fabs(G[i + 1]) <= T[i + 1];
-            if (G[i] < 0 && G[i + 1] > 0 && !(zero && zr)) {
+            /* Both ends at g's rounding level: refine only when F itself varies beyond its own
+             * rounding between them (a shallow minimum near the target, e.g. a curve in a disk's
+             * plane just outside the rim); on a flat function (F constant up to rounding) the
+             * sign changes are noise and the samples were offered above. */
+            double fmax_i = fmax(Fv[i], Fv[i + 1]);
+            int varies = fabs(Fv[i] - Fv[i + 1]) >
+                         2.0 * CD_CURVE_G_ULPS * DBL_EPSILON * (s->k->b.scale + s->frame_mag) * sqrt(fmax_i);
+            if (G[i] < 0 && G[i + 1] > 0 && (!(zero && zr) || varies)) {
                 if ((st = refine_offer(s, t, G[i], t_at(t0, t1, i + 1, n), G[i + 1]))) return st;
             }
             if (s->disk && ((R[i] > 0) != (R[i + 1] > 0))) {

@@ -2,7 +2,7 @@
  * the true distance is 0 by construction (the height changes sign along the curve, checked in
  * long double, and the whole curve lies inside the disk's cylinder), wherever the crossing is:
  * in the first or last sample interval, or between interior samples. Also the issue's two
- * reproducers. */
+ * reproducers, and a shallow minimum in a disk's plane next to the rim. */
 #include "check.h"
 
 static cdist_query *q;
@@ -71,6 +71,17 @@ int main(void)
     expect_zero(cdist_bezier3_disk(q, &b, &d, &r), &r, 1.0, "issue bezier", 0);
     cdist_helix h = {tv(0.1, 0, -9.5488191206844448e-07), tv(0, 0, 1), tv(1, 0, 0), 0.4, 1e-6, 0, 6};
     expect_zero(cdist_helix_disk(q, &h, &d, &r), &r, 1.0, "issue helix", 0);
+    /* A Bezier in a disk's plane just outside the rim (shared bd_hard line 44, bd_in_plane; its
+     * expected distance from /work/shared/cases): a shallow minimum where g is at its rounding
+     * level on both sides; sampled only, it was 2.9e-14 off (1.2e-14 of scale 2.4). */
+    cdist_bezier3 ip = {{tv(916.46615898973801, 723.89505100542419, 44.328121186882306),
+                         tv(915.18933004554697, 725.34556849891965, 45.867725031513871),
+                         tv(915.00500820502759, 725.9654638958757, 47.132646394123682),
+                         tv(915.03278836707273, 724.48090105920232, 43.408538328221915)}};
+    cdist_circle ipd = {tv(916.19171416204654, 724.49952439299682, 45.402490874881373),
+                        tv(0.52406501469321032, 0.79247260715229817, -0.31199844116252357), 1.5055464656402993};
+    CHECK(cdist_bezier3_disk(q, &ip, &ipd, &r) == CDIST_OK && fabs(r.distance - 8.07408216322e-10) <= 2.4e-15 * 4e-1,
+          "in-plane Bezier: %.17g, expected 8.07408216322e-10", r.distance);
     bezier_family();
     helix_family();
     printf("flat crossings: max distance %.3g of scale (true 0)\n", worst);
