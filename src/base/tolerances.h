@@ -93,6 +93,8 @@
  * CD_CURVE_POLISH_STEPS times (4^40 covers any span). */
 #define CD_CURVE_POLISH_STEP_REL 1e-10
 #define CD_CURVE_POLISH_STEPS 40
+/* Callback curves: positions sampled to choose the frame's power-of-two scale. */
+#define CD_CURVE_SCALE_PROBES 8
 /* Helix: at most 10^6 turns (a longer one is BAD_INTERVAL); the turn lower bound's ranges are
  * widened by CD_CURVE_HELIX_BOUND_ULPS * eps * (R + |centre| + r) (their rounding); a turn is
  * skipped when its bound exceeds best * (1 + CD_CURVE_HELIX_SKIP_REL) + CD_CURVE_HELIX_SKIP_ABS * L

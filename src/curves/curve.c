@@ -423,6 +423,7 @@ typedef struct user_curve {
     cdist_curve_fn f;
     void *user;
     vec3 origin;
+    double down; /* the power-of-two scale of the query's frame */
 } user_curve;
 
 static cdist_status user_eval(cdist_query *q, const void *ctx, double t, vec3 *p, vec3 *dp)
@@ -437,8 +438,8 @@ static cdist_status user_eval(cdist_query *q, const void *ctx, double t, vec3 *p
                        t);
     if (v_maxabs(P) > CD_MAX_ABS || v_maxabs(D) > CD_MAX_ABS)
         return cd_fail(q, CDIST_ERR_OUT_OF_RANGE, "curve callback gave a value beyond 1e150 at t = %.17g", t);
-    *p = v_sub(P, u->origin);
-    *dp = D;
+    *p = v_scale(u->down, v_sub(P, u->origin));
+    *dp = v_scale(u->down, D);
     return CDIST_OK;
 }
 
@@ -476,12 +477,24 @@ static cdist_status curve_query(cdist_query *q, cdist_curve_fn f, void *user, do
     cd_circle cc;
     if ((st = cd_check_circle(q, c, disk ? "disk" : "circle", &cc))) return st;
     if ((st = cd_cs_check_interval(q, t0, t1, "curve"))) return st;
-    user_curve u = {f, user, cc.c};
+    user_curve u = {f, user, cc.c, 1.0};
     vec3 origin = cc.c;
     cc.c = v3(0, 0, 0);
+    /* The scale of the frame from a few positions (the callback's positions are only known as
+     * it is called): squares stay free of overflow even where the curve reaches 2^400 times
+     * farther between these positions, and of underflow for tiny curves. */
+    double L = cc.r;
+    for (int i = 0; i <= CD_CURVE_SCALE_PROBES; i++) {
+        vec3 P, D;
+        double t = i == CD_CURVE_SCALE_PROBES ? t1 : t0 + (t1 - t0) * ((double)i / CD_CURVE_SCALE_PROBES);
+        if ((st = user_eval(q, &u, t, &P, &D))) return st;
+        L = fmax(L, v_maxabs(P));
+    }
+    int e = cd_scale_exponent(L);
+    u.down = cd_pow2(-e);
+    cc.r *= u.down;
     /* The callback's positions are absolute: their rounding is relative to |origin| too. */
-    /* (Not scaled: the callback's positions are only known as it is called.) */
-    return run_curve(q, user_eval, &u, t0, t1, &cc, disk, origin, cc.r, v_maxabs(origin), 1.0, r);
+    return run_curve(q, user_eval, &u, t0, t1, &cc, disk, origin, cc.r, v_maxabs(origin) * u.down, cd_pow2(e), r);
 }
 
 cdist_status cdist_curve_circle(cdist_query *q, cdist_curve_fn f, void *user, double t0, double t1,
