@@ -106,6 +106,15 @@ void cd_result_set_error(cdist_result *r);
  * zero. */
 void cd_result_finish(cdist_result *r, int n);
 
+/* Scale a validated result back: distances and points times `up` (a power of two). */
+void cd_result_unscale(cdist_result *r, double up);
+/* A circle scaled by a power of two about the origin (centre and radius; n, u, v unchanged). */
+static inline void cd_circle_scale(cd_circle *c, double s)
+{
+    c->c = v_scale(s, c->c);
+    c->r *= s;
+}
+
 /* A circle or disk checked without building its basis (c, n, r only; u, v left unset), for
  * families that do not need it; cd_frame_basis completes it. */
 cdist_status cd_check_circle_nobasis(cdist_query *q, const cdist_circle *c, const char *what, cd_circle *out);

@@ -447,12 +447,6 @@ done:;
     return CDIST_OK;
 }
 
-cdist_status cd_linear_circle(cdist_query *q, cdist_method method, vec3 B, vec3 M, double tmin, double tmax,
-                              const cd_circle *c, cd_best *b)
-{
-    return linear_circle(q, method, B, M, tmin, tmax, c, b, NULL);
-}
-
 cdist_status cd_linear_circle_ex(cdist_query *q, cdist_method method, vec3 B, vec3 M, double tmin, double tmax,
                                  const cd_circle *c, cd_best *b, cdist_method *used)
 {
@@ -460,8 +454,6 @@ cdist_status cd_linear_circle_ex(cdist_query *q, cdist_method method, vec3 B, ve
 }
 
 /* ---- public queries ---- */
-
-#define LC_METHODS (CD_HAS(CDIST_METHOD_POLYNOMIAL) | CD_HAS(CDIST_METHOD_ROBUST))
 
 /* Scale L for tie and distinctness tests: max(r, distance from the centre to the nearest point
  * of the line, ray or segment), the quantity ../shared/cases/README.md measures errors against. */
@@ -496,8 +488,10 @@ vec3 cd_line_near_centre(vec3 origin, vec3 D, vec3 C, double tmin, double tmax, 
     return v_add(v_axpy(hi3, t, D), lo3);
 }
 
+/* The core for origin + t D, t in [tmin, tmax] (M = D/|D|, len = |D|), circle cc; writes r
+ * (without its method) and the method that answered. */
 static cdist_status run(cdist_query *q, vec3 origin, vec3 D, vec3 M, double len, double tmin, double tmax,
-                        const cd_circle *cc, cdist_result *r)
+                        const cd_circle *cc, cdist_result *r, cdist_method *used)
 {
     double t0;
     vec3 B = cd_line_near_centre(origin, D, cc->c, tmin, tmax, &t0);
@@ -506,34 +500,49 @@ static cdist_status run(cdist_query *q, vec3 origin, vec3 D, vec3 M, double len,
     if (tmax == t0) hi = 0.0;
     cd_best b;
     cd_best_init(&b, range_scale(B, M, lo, hi, cc->r));
-    cdist_method used;
-    cdist_status st = cd_linear_circle_ex(q, cd_pick_method(q, LC_METHODS, CDIST_METHOD_ROBUST), B, M, lo, hi, cc,
-                                          &b, &used);
+    cdist_status st = cd_linear_circle_ex(q, cd_family_method(q, CD_FAM_LINE_CIRCLE), B, M, lo, hi, cc, &b, used);
     if (st) return st;
     if (b.n == 0) return cd_fail(q, CDIST_ERR_INTERNAL, "line-circle: no candidate");
     cd_best_to_result(&b, cc->c, 0, r);
+    cd_result_finish(r, r->num_pairs);
     for (int i = 0; i < r->num_pairs; i++) {
         double t = t0 + r->pairs[i].param[0] / len;
         r->pairs[i].param[0] = fmin(fmax(t, tmin), tmax);
     }
-    return cd_ok(q, r, used);
+    return CDIST_OK;
+}
+
+/* Frame and scale: the whole query scaled by 2^-e (exact) so that max(r, |origin - C|,
+ * |p1 - C|) is in [1, 2); the parameter t is unchanged (D is scaled with the origin), the
+ * distances and points are scaled back exactly. Inputs already validated. */
+static cdist_status run_scaled(cdist_query *q, vec3 origin, vec3 D, vec3 M, double len, double tmin, double tmax,
+                               const vec3 *p1, cd_circle cc, cdist_result *r, cdist_method *used)
+{
+    int e = cd_lines_scale_exponent(origin, p1, &cc);
+    double down = cd_pow2(-e);
+    cd_circle_scale(&cc, down);
+    cdist_status st = run(q, v_scale(down, origin), v_scale(down, D), M, len * down, tmin, tmax, &cc, r, used);
+    if (st == CDIST_OK) cd_result_unscale(r, cd_pow2(e));
+    return st;
 }
 
 static cdist_status linear_public(cdist_query *q, const cdist_vec3 *origin, const cdist_vec3 *dir, const void *obj,
                                   int is_ray, double tmin, double tmax, const cdist_circle *c, cdist_result *r)
 {
-    cdist_status st = cd_check_handle(q, r);
+    cdist_status st = cd_enter(q, r);
     if (st) return st;
-    if ((st = cd_check_ptr(q, obj, is_ray ? "ray" : "line"))) return st;
     cd_circle cc;
     vec3 M;
     double len;
-    if ((st = cd_check_point(q, origin, is_ray ? "ray origin" : "line origin")) ||
-        (st = cd_check_direction(q, dir, is_ray ? "ray direction" : "line direction", 1, &M, &len)) ||
-        (st = cd_check_circle(q, c, "circle", &cc)))
-        return st;
-    /* t is reported for the direction as passed */
-    return run(q, *origin, *dir, M, len, tmin, tmax, &cc, r);
+    cdist_method used = CDIST_METHOD_ROBUST;
+    if (!(st = cd_check_ptr(q, obj, is_ray ? "ray" : "line")) &&
+        !(st = cd_check_point(q, origin, is_ray ? "ray origin" : "line origin")) &&
+        !(st = cd_check_direction(q, dir, is_ray ? "ray direction" : "line direction", 1, &M, &len)) &&
+        !(st = cd_check_circle(q, c, "circle", &cc))) {
+        /* t is reported for the direction as passed */
+        st = run_scaled(q, *origin, *dir, M, len, tmin, tmax, NULL, cc, r, &used);
+    }
+    return cd_leave(q, r, st, used);
 }
 
 cdist_status cdist_line_circle(cdist_query *q, const cdist_line *l, const cdist_circle *c, cdist_result *r)
@@ -548,32 +557,26 @@ cdist_status cdist_ray_circle(cdist_query *q, const cdist_ray *l, const cdist_ci
 
 cdist_status cdist_segment_circle(cdist_query *q, const cdist_segment *s, const cdist_circle *c, cdist_result *r)
 {
-    cdist_status st = cd_check_handle(q, r);
+    cdist_status st = cd_enter(q, r);
     if (st) return st;
-    if ((st = cd_check_ptr(q, s, "segment"))) return st;
     cd_circle cc;
-    if ((st = cd_check_point(q, &s->p0, "segment p0")) || (st = cd_check_point(q, &s->p1, "segment p1")) ||
-        (st = cd_check_circle(q, c, "circle", &cc)))
-        return st;
+    cdist_method used = cd_family_method(q, CD_FAM_SEGMENT_CIRCLE);
+    if ((st = cd_check_ptr(q, s, "segment")) || (st = cd_check_point(q, &s->p0, "segment p0")) ||
+        (st = cd_check_point(q, &s->p1, "segment p1")) || (st = cd_check_circle(q, c, "circle", &cc)))
+        return cd_leave(q, r, st, used);
     vec3 D = v_sub(s->p1, s->p0);
     if (D.x == 0.0 && D.y == 0.0 && D.z == 0.0) {
         /* p0 == p1: the segment is a point; s = 0. */
-        vec3 rel = v_sub(s->p0, cc.c);
-        cd_best b;
-        cd_best_init(&b, fmax(cc.r, v_norm(rel)));
-        cd_point_circle_core(rel, &cc, &b, 0);
-        cd_best_to_result(&b, cc.c, 0, r);
-        for (int i = 0; i < r->num_pairs; i++) {
-            r->pairs[i].point[0] = s->p0;
-            r->pairs[i].param[0] = 0.0;
-        }
-        return cd_ok(q, r, cd_pick_method(q, LC_METHODS, CDIST_METHOD_ROBUST));
+        cd_point_result(s->p0, &cc, 0, r);
+        r->pairs[0].param[0] = 0.0;
+        return cd_leave(q, r, CDIST_OK, used);
     }
     vec3 M;
     double len;
-    if ((st = cd_check_direction(q, &D, "segment direction p1 - p0", 0, &M, &len))) return st;
-    if ((st = run(q, s->p0, D, M, len, 0.0, 1.0, &cc, r))) return st;
-    for (int i = 0; i < r->num_pairs; i++)
-        if (r->pairs[i].param[0] == 0.0) r->pairs[i].point[0] = s->p0; /* exactly the caller's start point */
-    return CDIST_OK;
+    if (!(st = cd_check_direction(q, &D, "segment direction p1 - p0", 0, &M, &len)) &&
+        !(st = run_scaled(q, s->p0, D, M, len, 0.0, 1.0, &s->p1, cc, r, &used))) {
+        for (int i = 0; i < r->num_pairs; i++)
+            if (r->pairs[i].param[0] == 0.0) r->pairs[i].point[0] = s->p0; /* exactly the caller's start point */
+    }
+    return cd_leave(q, r, st, used);
 }

@@ -21,4 +21,8 @@ cd_point_pair cd_point_disk_pair(vec3 p, const cd_circle *c);
 void cd_point_circle_core(vec3 p, const cd_circle *c, cd_best *b, int swap);
 void cd_point_disk_core(vec3 p, const cd_circle *c, cd_best *b, int swap);
 
+/* The whole point query (validated p and circle c, c's basis not needed): scaled by a power of
+ * two, solved, and written to r (point[0] exactly p, param[0] NaN, method not set). */
+void cd_point_result(vec3 p, const cd_circle *c, int disk, cdist_result *r);
+
 #endif

@@ -105,8 +105,28 @@ void cd_point_disk_core(vec3 p, const cd_circle *c, cd_best *b, int swap)
     else cd_best_offer_flag(b, q.equidistant, q.d2, p, q.k, NAN, q.angle);
 }
 
-/* validate -> frame (translate to the centre) and scale (by 2^-e, exact, so that the scale is
- * in [1, 2): no underflow or overflow in squares for any accepted input) -> core -> result. */
+/* Frame (translate to the centre) and scale (by 2^-e, exact, so that the scale is in [1, 2):
+ * no underflow or overflow in squares for any accepted input), core, result. */
+void cd_point_result(vec3 p, const cd_circle *c, int disk, cdist_result *r)
+{
+    vec3 rel = v_sub(p, c->c);
+    int e = cd_scale_exponent(fmax(c->r, v_maxabs(rel)));
+    double down = cd_pow2(-e), up = cd_pow2(e);
+    vec3 ps = v_scale(down, rel);
+    cd_circle sc = *c;
+    sc.r = c->r * down;
+    cd_point_pair k = disk ? cd_point_disk_pair(ps, &sc) : cd_point_circle_pair(ps, &sc);
+    r->distance = sqrt(k.d2) * up;
+    r->sqr_distance = (k.d2 * up) * up;
+    r->num_pairs = 1;
+    r->equidistant = k.equidistant;
+    r->pairs[0].point[0] = p; /* exactly the caller's point */
+    r->pairs[0].point[1] = v_axpy(c->c, up, k.k);
+    r->pairs[0].param[0] = NAN;
+    r->pairs[0].param[1] = k.angle;
+    cd_result_finish(r, 1);
+}
+
 static inline cdist_status point_query(cdist_query *q, const cdist_vec3 *p, const cdist_circle *c, cdist_result *r,
                                        int disk)
 {
@@ -114,25 +134,8 @@ static inline cdist_status point_query(cdist_query *q, const cdist_vec3 *p, cons
     if (st) return st;
     cd_circle cc;
     if (!(st = cd_check_point(q, p, "point")) &&
-        !(st = cd_check_circle_nobasis(q, c, disk ? "disk" : "circle", &cc))) {
-        vec3 rel = v_sub(*p, cc.c);
-        int e = cd_scale_exponent(fmax(cc.r, v_maxabs(rel)));
-        double down = cd_pow2(-e), up = cd_pow2(e);
-        vec3 ps = v_scale(down, rel);
-        cd_circle sc = cc;
-        sc.r = cc.r * down;
-        cd_point_pair k = disk ? cd_point_disk_pair(ps, &sc) : cd_point_circle_pair(ps, &sc);
-        double d = sqrt(k.d2);
-        r->distance = d * up;
-        r->sqr_distance = (k.d2 * up) * up;
-        r->num_pairs = 1;
-        r->equidistant = k.equidistant;
-        r->pairs[0].point[0] = *p; /* exactly the caller's point */
-        r->pairs[0].point[1] = v_axpy(cc.c, up, k.k);
-        r->pairs[0].param[0] = NAN;
-        r->pairs[0].param[1] = k.angle;
-        cd_result_finish(r, 1);
-    }
+        !(st = cd_check_circle_nobasis(q, c, disk ? "disk" : "circle", &cc)))
+        cd_point_result(*p, &cc, disk, r);
     return cd_leave(q, r, st, CDIST_METHOD_AUTO);
 }
 
