@@ -384,7 +384,8 @@ static cdist_status segment_arc(cdist_query *q, const cdist_segment *sg, const c
             cd_best lm;
             cd_best_init(&lm, k.b.scale);
             vec3 M = v_scale(1.0 / len, S.m), B = v_axpy(S.p0, foot, S.m);
-            st = cd_linear_circle(q, CDIST_METHOD_ROBUST, B, M, (lo - foot) * len, (hi - foot) * len, &A.c, &lm);
+            st = cd_linear_circle_ex(q, CDIST_METHOD_ROBUST, B, M, (lo - foot) * len, (hi - foot) * len, &A.c, &lm,
+                                     NULL);
             if (st == CDIST_OK) {
                 for (int i = 0; i < lm.n; i++) {
                     double t = fmin(fmax(foot + lm.c[i].param[0] / len, lo), hi);
