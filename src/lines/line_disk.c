@@ -24,7 +24,7 @@ static void lin_offer(vec3 B, vec3 M, double t, const cd_circle *d, cd_best *b)
     for (int i = 0; i < tmp.n; i++) cd_best_offer(b, tmp.c[i].d2, tmp.c[i].p[0], tmp.c[i].p[1], t, tmp.c[i].param[1]);
 }
 
-static cdist_status linear_disk(cdist_query *q, cdist_method method, vec3 B, vec3 M, double tmin, double tmax,
+CD_FMA_CLONES static cdist_status linear_disk(cdist_query *q, cdist_method method, vec3 B, vec3 M, double tmin, double tmax,
                                 const cd_circle *d, cd_best *b, cdist_method *used)
 {
     *used = method == CDIST_METHOD_POLYNOMIAL ? method : CDIST_METHOD_ROBUST;
@@ -56,7 +56,7 @@ static cdist_status linear_disk(cdist_query *q, cdist_method method, vec3 B, vec
     cdist_status st;
     if (lo <= hi) {
         /* The piece over the disk. */
-        if (fabs(mn) <= 4.0 * DBL_EPSILON) {
+        if (fabs(mn) <= CD_LD_PARALLEL_ULPS * DBL_EPSILON) {
             /* Parallel to the plane (within rounding): |h| constant over a stretch. */
             double tt = isfinite(lo) ? lo : isfinite(hi) ? hi : fmin(fmax(0.0, lo), hi);
             if (isfinite(lo) && isfinite(hi)) tt = 0.5 * (lo + hi);
