@@ -278,7 +278,11 @@ CDIST_API cdist_status cdist_disk_disk(cdist_query *q, const cdist_circle *d0, c
  * ::CDIST_METHOD_ROBUST whatever the handle's method). Arcs are exact: their candidates are the
  * circle-circle critical points inside the range plus the end points. Callback curves, helices
  * and Bezier curves are sampled at cdist_query_get_curve_samples() intervals (per turn for a
- * helix) to bracket critical points, so two minima closer than the sample spacing may merge. */
+ * helix) to bracket critical points, so two minima closer than the sample spacing may merge.
+ * Cost limit: a helix's turns are skipped when a lower bound (from the axial and radial
+ * geometry) shows they cannot beat the distance found; when more than
+ * 2^24 / cdist_query_get_curve_samples() turns (32768 by default) cannot be skipped (a target
+ * threading a long, tight coil), the helix queries return ::CDIST_ERR_COST_LIMIT. */
 
 /// Distance from the curve f(t), t in [t0, t1], to a circle; param[0] is the curve parameter.
 /// The curve must be continuously differentiable and f must give its exact derivative.

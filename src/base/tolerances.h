@@ -69,4 +69,51 @@
  * CD_LD_PARALLEL_ULPS * eps (rounding of a unit dot product). */
 #define CD_LD_PARALLEL_ULPS 4.0
 
+/* ---- curves family (src/curves: callback curves, helix, Bezier, arcs) ---- */
+
+/* A zero_direction within this sine of the normal/axis cannot define angle 0 (dimensionless). */
+#define CD_CURVE_PARALLEL_SIN 1e-10
+/* A point is on a circle's axis (every circle point equally close, up to the tie tolerance)
+ * when its axis distance is below CD_CURVE_AXIS_ULPS * eps * L. */
+#define CD_CURVE_AXIS_ULPS 8.0
+/* Rounding level of the sampled derivative g = F'/2: CD_CURVE_G_ULPS * eps * (|P - C| + r +
+ * frame magnitude) * |P'| (a few roundings of each product in g); below it a sample counts as a
+ * critical point. */
+#define CD_CURVE_G_ULPS 32.0
+/* Brackets of the scan's solvers stop at the resolution of t (CD_ROOT_REL_ULPS) plus
+ * CD_CURVE_SPAN_ULPS * eps * (scanned span): t is not resolvable below an ulp of the span. */
+#define CD_CURVE_SPAN_ULPS 0.25
+#define CD_CURVE_ROOT_MAX_ITER 300
+/* Golden sections (dip of g between samples, closest approach to the axis) stop at
+ * CD_CURVE_GOLDEN_ULPS * eps * (|a| + |b|) plus the span term; at most this many steps
+ * (0.618^60 ~ 3e-13 of a two-sample bracket, below which g's sign is noise anyway). */
+#define CD_CURVE_GOLDEN_ULPS 4.0
+#define CD_CURVE_GOLDEN_MAX_ITER 60
+/* cd_cs_polish's first step from a candidate, relative to max(span, |t|), growing by 4 at most
+ * CD_CURVE_POLISH_STEPS times (4^40 covers any span). */
+#define CD_CURVE_POLISH_STEP_REL 1e-10
+#define CD_CURVE_POLISH_STEPS 40
+/* Callback curves: positions sampled to choose the frame's power-of-two scale. */
+#define CD_CURVE_SCALE_PROBES 8
+/* Helix: at most 10^6 turns (a longer one is BAD_INTERVAL); the turn lower bound's ranges are
+ * widened by CD_CURVE_HELIX_BOUND_ULPS * eps * (R + |centre| + r) (their rounding); a turn is
+ * skipped when its bound exceeds best * (1 + CD_CURVE_HELIX_SKIP_REL) + CD_CURVE_HELIX_SKIP_ABS * L
+ * (far above the rounding of both); cost limit: CD_CURVE_HELIX_MAX_SAMPLES samples over the
+ * turns that cannot be skipped (2^24, about 2 s). */
+#define CD_CURVE_HELIX_MAX_TURNS 1e6
+#define CD_CURVE_HELIX_BOUND_ULPS 64.0
+#define CD_CURVE_HELIX_SKIP_REL 1e-9
+#define CD_CURVE_HELIX_SKIP_ABS 1e-12
+#define CD_CURVE_HELIX_MAX_SAMPLES 16777216.0
+/* Arcs: end - start may exceed 2 pi by CD_ARC_SPAN_ULPS * eps * max(2 pi, |start|, |end|)
+ * (an end computed as start + 2 pi); the height over a disk's plane is constant (parallel
+ * planes) when its amplitude is below CD_ARC_PARALLEL_ULPS * eps * r. */
+#define CD_ARC_SPAN_ULPS 8.0
+#define CD_ARC_PARALLEL_ULPS 4.0
+/* Segment-arc: the interior minima lie within r / |M| of the foot of the perpendicular; the
+ * window is widened by CD_SEG_ARC_WINDOW_REL of itself and CD_SEG_ARC_WINDOW_ULPS * eps *
+ * (|p0| / |M| + 1) (rounding of the foot). */
+#define CD_SEG_ARC_WINDOW_REL 1e-9
+#define CD_SEG_ARC_WINDOW_ULPS 4.0
+
 #endif

@@ -11,6 +11,8 @@
 #define PI_L 3.14159265358979323846264338327950288L
 
 static cdist_query *q;
+/* --short: a fifth of the random and constructed cases (the default suite); full in `slow`. */
+static int full = 1;
 static double worst_err[4];
 static int worst_id[4];
 static const char *kind_name[4] = {"arc-circle", "arc-arc", "segment-arc", "arc-disk"};
@@ -207,7 +209,7 @@ static cdist_vec3 into_plane(cdist_vec3 p, const cdist_circle *c)
 
 static void random_cases(void)
 {
-    for (int i = 0; i < 200; i++) {
+    for (int i = 0; i < (full ? 200 : 40); i++) {
         cdist_arc a = rand_arc(1.0), b = rand_arc(1.0);
         cdist_circle c = rand_circle(1.0);
         cdist_segment s = {tv(2 * srand1(), 2 * srand1(), 2 * srand1()), tv(2 * srand1(), 2 * srand1(), 2 * srand1())};
@@ -251,7 +253,7 @@ static void constructed_cases(void)
     int id = 1000;
     NS = 16384;
     cdist_result r;
-    for (int rep = 0; rep < 12; rep++) {
+    for (int rep = 0; rep < (full ? 12 : 3); rep++) {
         trot R = rand_rotation();
         double sc = rep < 4 ? 1.0 : (rep < 8 ? 1e-3 + urand() * 10 : 100.0 * urand());
         cdist_vec3 t = rep % 3 == 2 ? tv(1e4 * srand1(), 1e4 * srand1(), 1e4 * srand1()) : tv(srand1(), srand1(), srand1());
@@ -403,7 +405,7 @@ static cdist_arc sarc(cdist_arc a, double f)
 static void scale_invariance(void)
 {
     const double fs[3] = {ldexp(1, -300), ldexp(1, 300), ldexp(1, 480)};
-    for (int i = 0; i < 40; i++) {
+    for (int i = 0; i < (full ? 40 : 8); i++) {
         cdist_arc a = rand_arc(1.0), b = rand_arc(1.0);
         cdist_circle c = rand_circle(1.0);
         cdist_segment s = {tv(2 * srand1(), 2 * srand1(), 2 * srand1()), tv(2 * srand1(), 2 * srand1(), 2 * srand1())};
@@ -486,8 +488,9 @@ static void bad_input(void)
           "param in the arc's own range: %.17g", r.pairs[0].param[0]);
 }
 
-int main(void)
+int main(int argc, char **argv)
 {
+    full = !(argc > 1 && !strcmp(argv[1], "--short"));
     q = cdist_query_new();
     random_cases();
     constructed_cases();

@@ -1,70 +1,71 @@
-/* The curve engine shared by src/curve.c (callback curves, helix, Bezier) and src/arc.c (arcs).
+/* The curve engine shared by src/curves/curve.c (callback curves, helix, Bezier) and src/curves/arc.c (arcs).
  * Private to those two files. */
 #ifndef CDIST_CURVE_SCAN_H
 #define CDIST_CURVE_SCAN_H
 
 #include "internal.h"
 
-/* A direction within this sine of the normal/axis cannot define angle 0. */
-#define CS_PARALLEL_SIN 1e-10
-
 /* Candidate collector: cd_best plus the smallest squared distance among candidates that have
  * infinitely many closest pairs (set as the result's equidistant flag only if that candidate
  * ends up the minimum). */
-typedef struct cs_coll {
+typedef struct cd_cs_coll {
     cd_best b;
     double eq_d2;
     int flat_ties; /* set on the degenerate sampling paths (a constant function was scanned):
                     * three distinct tied candidates then mean a continuum */
-} cs_coll;
+} cd_cs_coll;
 
-void cs_coll_init(cs_coll *k, double scale);
-void cs_coll_offer(cs_coll *k, double d2, vec3 p0, vec3 p1, double a0, double a1, int eq);
+void cd_cs_coll_init(cd_cs_coll *k, double scale);
+void cd_cs_coll_offer(cd_cs_coll *k, double d2, vec3 p0, vec3 p1, double a0, double a1, int eq);
 /* Sets b.equidistant from the equidistant candidates and (flat_ties) from three-way ties. */
-void cs_coll_finish(cs_coll *k);
+void cd_cs_coll_finish(cd_cs_coll *k);
+/* The families work on a copy of the problem scaled by down = 2^-e (cd_scale_exponent of its
+ * scale: exact, and squared distances neither underflow nor overflow). Unscale the collector by
+ * up = 2^e, finish it (cd_cs_coll_finish) and write the result, points moved by origin. */
+void cd_cs_coll_result(cd_cs_coll *k, double up, vec3 origin, cdist_result *r);
 /* Offer point p (any frame) with parameter t against circle/disk c (c->c in the same frame);
  * swap puts p second. */
-void cs_offer_point(cs_coll *k, vec3 p, double t, const cd_circle *c, int disk, int swap);
+void cd_cs_offer_point(cd_cs_coll *k, vec3 p, double t, const cd_circle *c, int disk, int swap);
 
-/* rel (relative to c's centre) is on c's axis up to the rounding of the problem's scale. */
-#define CS_AXIS_ULPS 8.0
-int cs_near_axis(const cs_coll *k, vec3 rel, const cd_circle *c);
+/* rel (relative to c's centre) is on c's axis up to the rounding of the problem's scale
+ * (CD_CURVE_AXIS_ULPS). */
+int cd_cs_near_axis(const cd_cs_coll *k, vec3 rel, const cd_circle *c);
 
 /* A curve: position and derivative at t, in the scan's frame. Returns CDIST_OK or a status
  * (already recorded with cd_fail). */
-typedef cdist_status (*cs_eval_fn)(cdist_query *q, const void *ctx, double t, vec3 *p, vec3 *dp);
+typedef cdist_status (*cd_cs_eval_fn)(cdist_query *q, const void *ctx, double t, vec3 *p, vec3 *dp);
 
-typedef struct cs_scan cs_scan;
+typedef struct cd_cs_scan cd_cs_scan;
 /* Receives each candidate parameter t (and its point p) instead of the default point offer. */
-typedef void (*cs_cand_fn)(const cs_scan *s, double t, vec3 p);
+typedef void (*cd_cs_cand_fn)(const cd_cs_scan *s, double t, vec3 p);
 
-struct cs_scan {
+struct cd_cs_scan {
     cdist_query *q;
-    cs_eval_fn ev;
+    cd_cs_eval_fn ev;
     const void *ctx;
     const cd_circle *c; /* target circle/disk, its centre c->c in the scan's frame */
     int disk;
-    cs_coll *k;
-    cs_cand_fn cand;    /* NULL: offer the point against c into k */
+    cd_cs_coll *k;
+    cd_cs_cand_fn cand;    /* NULL: offer the point against c into k */
     const void *cand_ctx;
     int update_scale;   /* raise k->b.scale to the sampled extent */
-    double span;        /* set by cs_scan_run */
+    double span;        /* set by cd_cs_scan_run */
     double frame_mag;   /* magnitude of the frame's coordinates (rounding level of positions) */
 };
 
 /* Bound, refine and offer every minimum of the distance over [t0, t1] with n samples
  * (at most the handle's curve sample count). */
-cdist_status cs_scan_run(cs_scan *s, double t0, double t1, int n);
+cdist_status cd_cs_scan_run(cd_cs_scan *s, double t0, double t1, int n);
 /* Polish a candidate minimum near t (from another method) within [lo, hi]: walk to the nearest
  * sign change of g in the direction of descent, refine, and offer the result. */
-cdist_status cs_polish(cs_scan *s, double t, double lo, double hi);
+cdist_status cd_cs_polish(cd_cs_scan *s, double t, double lo, double hi);
 /* After the scans: flag equidistance when the distance is flat (within the tie tolerance)
  * at t* +- delta around the best parameter (a curve lying on a continuum of minima). */
-cdist_status cs_flat_check(cs_scan *s, double t0, double t1, double delta);
+cdist_status cd_cs_flat_check(cd_cs_scan *s, double t0, double t1, double delta);
 /* t0, t1 finite (NOT_FINITE), t0 <= t1 and t1 - t0 finite (BAD_INTERVAL). */
-cdist_status cs_check_interval(cdist_query *q, double t0, double t1, const char *what);
+cdist_status cd_cs_check_interval(cdist_query *q, double t0, double t1, const char *what);
 /* U = zd projected onto the plane of unit normal n, normalised; V = n x U. ZERO_VECTOR when zd
- * is zero or within CS_PARALLEL_SIN of n. */
-cdist_status cs_zero_frame(cdist_query *q, vec3 n, const cdist_vec3 *zd, const char *what, vec3 *U, vec3 *V);
+ * is zero or within CD_CURVE_PARALLEL_SIN of n. */
+cdist_status cd_cs_zero_frame(cdist_query *q, vec3 n, const cdist_vec3 *zd, const char *what, vec3 *U, vec3 *V);
 
 #endif

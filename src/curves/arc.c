@@ -20,7 +20,7 @@
  *    distances.
  *  - segment-arc: the same with the segment: segment endpoints to the arc, arc endpoints to the
  *    segment (closed form), and the local minima of s -> dist^2(seg(s), circle) whose closest
- *    circle point lies in the arc's range. Those minima satisfy (distance-to-circles-3d eq. 6)
+ *    circle point lies in the arc's range (from the lines family's robust core: no GSL). Those minima satisfy (distance-to-circles-3d eq. 6)
  *    Delta.M = r (N x Delta).(N x M)/|N x Delta|, so |Delta(s).M/|M|| <= r: they lie within
  *    r/|M| of the foot of the perpendicular from the centre, and only that window is sampled.
  *  - arc-disk: the endpoints, the critical angles of the distance to the rim circle and the
@@ -29,7 +29,7 @@
  * The interior critical angles come from cd_circle_circle_critical (the circle-circle family)
  * when it provides them (it returns 0 when unavailable: a smooth periodic function always has at
  * least two critical angles), each polished on the true derivative; otherwise (a constant
- * function, parallel planes for the disk) from the sampling engine of src/curve.c over the
+ * function, parallel planes for the disk) from the sampling engine of src/curves/curve.c over the
  * arc's range, which also detects the continuum of closest pairs. */
 #include <math.h>
 #include <stdio.h>
@@ -53,12 +53,12 @@ static cdist_status check_arc(cdist_query *q, const cdist_arc *a, const char *wh
     cdist_status st = cd_check_circle(q, &a->circle, what, &x->c);
     if (st) return st;
     snprintf(buf, sizeof buf, "%s zero_direction", what);
-    if ((st = cs_zero_frame(q, x->c.n, &a->zero_direction, buf, &x->U, &x->V))) return st;
+    if ((st = cd_cs_zero_frame(q, x->c.n, &a->zero_direction, buf, &x->U, &x->V))) return st;
     if (!isfinite(a->start) || !isfinite(a->end))
         return cd_fail(q, CDIST_ERR_NOT_FINITE, "%s angles [%g, %g] are not finite", what, a->start, a->end);
     if (a->start > a->end)
         return cd_fail(q, CDIST_ERR_BAD_INTERVAL, "%s start %.17g > end %.17g", what, a->start, a->end);
-    double slack = 8.0 * DBL_EPSILON * fmax(TWO_PI, fmax(fabs(a->start), fabs(a->end)));
+    double slack = CD_ARC_SPAN_ULPS * DBL_EPSILON * fmax(TWO_PI, fmax(fabs(a->start), fabs(a->end)));
     if (!(a->end - a->start <= TWO_PI + slack))
         return cd_fail(q, CDIST_ERR_BAD_INTERVAL, "%s spans %.17g > 2 pi", what, a->end - a->start);
     x->start = a->start;
@@ -100,12 +100,12 @@ static double arc_angle(const arcx *a, vec3 rel, int *inside)
 /* Offer point p (the query's frame; parameter tp on its own object) against arc a: the closest
  * point of a's circle when its angle is in range, and (ends != 0) both endpoints. p_first: p is
  * on the query's first object. */
-static void offer_point_arc(cs_coll *k, vec3 p, double tp, const arcx *a, int p_first, int ends)
+static void offer_point_arc(cd_cs_coll *k, vec3 p, double tp, const arcx *a, int p_first, int ends)
 {
     if (a->c.r == 0.0) {
         vec3 c = a->c.c;
-        if (p_first) cs_coll_offer(k, v_sqr(v_sub(p, c)), p, c, tp, NAN, 0);
-        else cs_coll_offer(k, v_sqr(v_sub(p, c)), c, p, NAN, tp, 0);
+        if (p_first) cd_cs_coll_offer(k, v_sqr(v_sub(p, c)), p, c, tp, NAN, 0);
+        else cd_cs_coll_offer(k, v_sqr(v_sub(p, c)), c, p, NAN, tp, 0);
         return;
     }
     if (ends) {
@@ -113,8 +113,8 @@ static void offer_point_arc(cs_coll *k, vec3 p, double tp, const arcx *a, int p_
             double ang = e ? a->end : a->start;
             vec3 E = arc_point(a, ang);
             double d2 = v_sqr(v_sub(p, E));
-            if (p_first) cs_coll_offer(k, d2, p, E, tp, ang, 0);
-            else cs_coll_offer(k, d2, E, p, ang, tp, 0);
+            if (p_first) cd_cs_coll_offer(k, d2, p, E, tp, ang, 0);
+            else cd_cs_coll_offer(k, d2, E, p, ang, tp, 0);
         }
     }
     cd_best tmp;
@@ -126,7 +126,7 @@ static void offer_point_arc(cs_coll *k, vec3 p, double tp, const arcx *a, int p_
     vec3 K;
     double ang;
     int eq = 0;
-    if (cd_best_is_equidistant(&tmp) || cs_near_axis(k, rel, &a->c)) {
+    if (cd_best_is_equidistant(&tmp) || cd_cs_near_axis(k, rel, &a->c)) {
         /* p on the axis (within rounding of the problem's scale): every arc point is closest;
          * the start point represents them. */
         ang = a->start;
@@ -139,8 +139,8 @@ static void offer_point_arc(cs_coll *k, vec3 p, double tp, const arcx *a, int p_
         if (!inside) return;
         K = v_add(tmp.c[0].p[1], a->c.c);
     }
-    if (p_first) cs_coll_offer(k, d2, p, K, tp, ang, eq);
-    else cs_coll_offer(k, d2, K, p, ang, tp, eq);
+    if (p_first) cd_cs_coll_offer(k, d2, p, K, tp, ang, eq);
+    else cd_cs_coll_offer(k, d2, K, p, ang, tp, eq);
 }
 
 /* Candidate callback: the scanned object's point p at parameter t against the arc in cand_ctx
@@ -150,7 +150,7 @@ typedef struct cand_arc_ctx {
     int scanned_first;
 } cand_arc_ctx;
 
-static void cand_arc(const cs_scan *s, double t, vec3 p)
+static void cand_arc(const cd_cs_scan *s, double t, vec3 p)
 {
     const cand_arc_ctx *cx = s->cand_ctx;
     offer_point_arc(s->k, p, t, cx->target, cx->scanned_first, 0);
@@ -158,25 +158,25 @@ static void cand_arc(const cs_scan *s, double t, vec3 p)
 
 /* Polish the candidate at arc angle a (any representative modulo 2 pi) if it falls in X's
  * range. */
-static cdist_status polish_in_range(cs_scan *s, const arcx *X, double a)
+static cdist_status polish_in_range(cd_cs_scan *s, const arcx *X, double a)
 {
     double k = fmod(a - X->start, TWO_PI);
     if (k < 0.0) k += TWO_PI;
     double m = X->start + k;
     if (!(m <= X->end)) return CDIST_OK;
-    return cs_polish(s, m, X->start, X->end);
+    return cd_cs_polish(s, m, X->start, X->end);
 }
 
 /* Every minimum of theta -> dist^2(X(theta), circle or disk Y) over X's range, handed to the
  * scan's candidate callback (s->cand, or the default offer). Uses the circle-circle critical
  * angles when available, else samples. *exact says which.
- * Disk: D = h^2 + max(rho - r, 0)^2 is C^1 (see src/curve.c), so an interior minimum has
+ * Disk: D = h^2 + max(rho - r, 0)^2 is C^1 (see src/curves/curve.c), so an interior minimum has
  * D' = 0: either rho > r there and it is a critical angle of the distance to the rim circle,
  * or rho <= r and h h' = 0 with h(a) = hc + A cos a + B sin a (closed form: h' = 0 at
  * atan2(B, A) and opposite, h = 0 at atan2(B, A) +- acos(-hc / hypot(A, B))). Every such angle
  * is polished on the true D' and evaluated on the true distance, so the ones that fall in the
  * other region are merely extra candidates. */
-static cdist_status arc_minima(cs_scan *s, const arcx *X, const cd_circle *Y, int *exact, int *n_const)
+static cdist_status arc_minima(cd_cs_scan *s, const arcx *X, const cd_circle *Y, int *exact, int *n_const)
 {
     cdist_query *q = s->q;
     cdist_status st;
@@ -204,7 +204,7 @@ static cdist_status arc_minima(cs_scan *s, const arcx *X, const cd_circle *Y, in
          * it everywhere and the ties mark the continuum); for the disk also parallel planes
          * (h constant). */
         /* (n == CRIT_CAP may have been truncated: sample instead.) */
-        if (n > 0 && n < CRIT_CAP && (!s->disk || R > 4.0 * DBL_EPSILON * X->c.r)) {
+        if (n > 0 && n < CRIT_CAP && (!s->disk || R > CD_ARC_PARALLEL_ULPS * DBL_EPSILON * X->c.r)) {
             *exact = 1;
             /* th is in c0's library basis; the arc's angle 0 is U at library angle phi0. */
             for (int i = 0; i < n; i++)
@@ -222,7 +222,7 @@ static cdist_status arc_minima(cs_scan *s, const arcx *X, const cd_circle *Y, in
     }
     s->k->flat_ties = 1;
     if (n_const) *n_const = !s->disk && n == -1;
-    return cs_scan_run(s, X->start, X->end, q->curve_samples);
+    return cd_cs_scan_run(s, X->start, X->end, q->curve_samples);
 }
 
 static double arc_scale(const arcx *a, const cd_circle *c)
@@ -234,58 +234,69 @@ static double arc_scale(const arcx *a, const cd_circle *c)
 
 static cdist_status arc_target(cdist_query *q, const cdist_arc *a, const cdist_circle *c, cdist_result *r, int disk)
 {
-    cdist_status st = cd_check_handle(q, r);
-    if (st) return st;
+    cdist_status st;
     arcx A;
     cd_circle C;
     if ((st = check_arc(q, a, "arc", &A)) || (st = cd_check_circle(q, c, disk ? "disk" : "circle", &C))) return st;
     vec3 origin = A.c.c;
     A.c.c = v3(0, 0, 0);
     C.c = v_sub(C.c, origin);
-    cs_coll k;
-    cs_coll_init(&k, arc_scale(&A, &C));
+    int e = cd_scale_exponent(fmax(fmax(A.c.r, C.r), v_maxabs(C.c)));
+    double down = cd_pow2(-e);
+    A.c.r *= down;
+    C.r *= down;
+    C.c = v_scale(down, C.c);
+    cd_cs_coll k;
+    cd_cs_coll_init(&k, arc_scale(&A, &C));
     if (A.c.r == 0.0) {
-        cs_offer_point(&k, A.c.c, NAN, &C, disk, 0);
+        cd_cs_offer_point(&k, A.c.c, NAN, &C, disk, 0);
     } else {
-        cs_scan s = {q, arc_eval, &A, &C, disk, &k, NULL, NULL, 0, 0.0, 0.0};
+        cd_cs_scan s = {q, arc_eval, &A, &C, disk, &k, NULL, NULL, 0, 0.0, 0.0};
         /* Endpoints always; then the interior minima. */
-        cs_offer_point(&k, arc_point(&A, A.start), A.start, &C, disk, 0);
-        cs_offer_point(&k, arc_point(&A, A.end), A.end, &C, disk, 0);
+        cd_cs_offer_point(&k, arc_point(&A, A.start), A.start, &C, disk, 0);
+        cd_cs_offer_point(&k, arc_point(&A, A.end), A.end, &C, disk, 0);
         int exact, constant;
         if ((st = arc_minima(&s, &A, &C, &exact, &constant))) return st;
-        if (!exact && (st = cs_flat_check(&s, A.start, A.end, (A.end - A.start) / q->curve_samples))) return st;
+        if (!exact && (st = cd_cs_flat_check(&s, A.start, A.end, (A.end - A.start) / q->curve_samples))) return st;
         /* The circle-circle function is constant (within its own tolerance, as
          * cdist_circle_circle flags it): every arc point is closest. */
         if (constant && A.end > A.start) k.b.equidistant = 1;
     }
-    cs_coll_finish(&k);
-    cd_best_to_result(&k.b, origin, 0, r);
-    return cd_ok(q, r, CDIST_METHOD_ROBUST);
+    cd_cs_coll_result(&k, cd_pow2(e), origin, r);
+    return CDIST_OK;
 }
 
 cdist_status cdist_arc_circle(cdist_query *q, const cdist_arc *a, const cdist_circle *c, cdist_result *r)
 {
-    return arc_target(q, a, c, r, 0);
+    cdist_status st = cd_enter(q, r);
+    if (st) return st;
+    return cd_leave(q, r, arc_target(q, a, c, r, 0), CDIST_METHOD_ROBUST);
 }
 
 cdist_status cdist_arc_disk(cdist_query *q, const cdist_arc *a, const cdist_circle *d, cdist_result *r)
 {
-    return arc_target(q, a, d, r, 1);
+    cdist_status st = cd_enter(q, r);
+    if (st) return st;
+    return cd_leave(q, r, arc_target(q, a, d, r, 1), CDIST_METHOD_ROBUST);
 }
 
 /* ---- arc to arc ---- */
 
-cdist_status cdist_arc_arc(cdist_query *q, const cdist_arc *a0, const cdist_arc *a1, cdist_result *r)
+static cdist_status arc_arc(cdist_query *q, const cdist_arc *a0, const cdist_arc *a1, cdist_result *r)
 {
-    cdist_status st = cd_check_handle(q, r);
-    if (st) return st;
+    cdist_status st;
     arcx A, B;
     if ((st = check_arc(q, a0, "first arc", &A)) || (st = check_arc(q, a1, "second arc", &B))) return st;
     vec3 origin = A.c.c;
     A.c.c = v3(0, 0, 0);
     B.c.c = v_sub(B.c.c, origin);
-    cs_coll k;
-    cs_coll_init(&k, arc_scale(&A, &B.c));
+    int e = cd_scale_exponent(fmax(fmax(A.c.r, B.c.r), v_maxabs(B.c.c)));
+    double down = cd_pow2(-e);
+    A.c.r *= down;
+    B.c.r *= down;
+    B.c.c = v_scale(down, B.c.c);
+    cd_cs_coll k;
+    cd_cs_coll_init(&k, arc_scale(&A, &B.c));
     /* The four endpoint-to-arc distances (a radius-0 arc is its centre). */
     if (A.c.r == 0.0) offer_point_arc(&k, A.c.c, NAN, &B, 1, 1);
     else {
@@ -301,14 +312,13 @@ cdist_status cdist_arc_arc(cdist_query *q, const cdist_arc *a0, const cdist_arc 
     if (A.c.r > 0.0 && B.c.r > 0.0) {
         int exact;
         cand_arc_ctx ca = {&B, 1}, cb = {&A, 0};
-        cs_scan s = {q, arc_eval, &A, &B.c, 0, &k, cand_arc, &ca, 0, 0.0, 0.0};
+        cd_cs_scan s = {q, arc_eval, &A, &B.c, 0, &k, cand_arc, &ca, 0, 0.0, 0.0};
         if ((st = arc_minima(&s, &A, &B.c, &exact, NULL))) return st;
-        cs_scan t = {q, arc_eval, &B, &A.c, 0, &k, cand_arc, &cb, 0, 0.0, 0.0};
+        cd_cs_scan t = {q, arc_eval, &B, &A.c, 0, &k, cand_arc, &cb, 0, 0.0, 0.0};
         if ((st = arc_minima(&t, &B, &A.c, &exact, NULL))) return st;
     }
-    cs_coll_finish(&k);
-    cd_best_to_result(&k.b, origin, 0, r);
-    return cd_ok(q, r, CDIST_METHOD_ROBUST);
+    cd_cs_coll_result(&k, cd_pow2(e), origin, r);
+    return CDIST_OK;
 }
 
 /* ---- segment to arc ---- */
@@ -326,39 +336,9 @@ static cdist_status seg_eval(cdist_query *q, const void *ctx, double t, vec3 *p,
     return CDIST_OK;
 }
 
-/* Critical points of s -> dist^2(p0 + s m, circle c) (c->c the origin) as roots of the quartic
- * of distance-to-circles-3d eq. (8), H = |N x D|^2 (D.D')^2 - r^2 ((N x D).(N x D'))^2, in the
- * variable t = s - foot (foot: the point nearest the centre, so that D.D' is small there and the
- * coefficients do not cancel). Squaring adds extraneous roots, which the caller polishes on the
- * true derivative like every other root. Returns the count, or -1 when the quartic is degenerate
- * (the segment on the axis: H == 0) or the solver failed. */
-static int seg_circle_quartic(cdist_query *q, const seg_x *S, double foot, const cd_circle *c, double *roots)
+static cdist_status segment_arc(cdist_query *q, const cdist_segment *sg, const cdist_arc *a, cdist_result *r)
 {
-    /* Normalised: lengths divided by L = max(r, |B|), direction unit, variable
-     * u = (s - foot) |m| / L, so every coefficient is O(1) whatever the scale. */
-    vec3 B = v_axpy(S->p0, foot, S->m);
-    double len = v_norm(S->m), L = fmax(c->r, v_norm(B));
-    if (!(len > 0.0) || !(L > 0.0)) return -1;
-    B = v_scale(1.0 / L, B);
-    vec3 M = v_scale(1.0 / len, S->m);
-    double rr = c->r / L;
-    vec3 P0 = v_cross(c->n, B), P1 = v_cross(c->n, M);
-    double a0 = v_dot(B, M), a1 = v_dot(M, M);
-    double p0 = v_dot(P0, P0), p01 = v_dot(P0, P1), p11 = v_dot(P1, P1), r2 = rr * rr;
-    double coef[5] = {p0 * a0 * a0 - r2 * p01 * p01,
-                      2.0 * p0 * a0 * a1 + 2.0 * p01 * a0 * a0 - 2.0 * r2 * p01 * p11,
-                      p0 * a1 * a1 + 4.0 * p01 * a0 * a1 + p11 * a0 * a0 - r2 * p11 * p11,
-                      2.0 * p01 * a1 * a1 + 2.0 * p11 * a0 * a1, p11 * a1 * a1};
-    int n = cd_poly_real_roots(q->poly, coef, 4, 1e-6, roots);
-    if (n < 0) return -1;
-    for (int i = 0; i < n; i++) roots[i] = foot + roots[i] * (L / len);
-    return n;
-}
-
-cdist_status cdist_segment_arc(cdist_query *q, const cdist_segment *sg, const cdist_arc *a, cdist_result *r)
-{
-    cdist_status st = cd_check_handle(q, r);
-    if (st) return st;
+    cdist_status st;
     if (!sg) return cd_fail(q, CDIST_ERR_NULL_ARGUMENT, "segment pointer is NULL");
     if ((st = cd_check_point(q, &sg->p0, "segment p0")) || (st = cd_check_point(q, &sg->p1, "segment p1"))) return st;
     arcx A;
@@ -367,8 +347,14 @@ cdist_status cdist_segment_arc(cdist_query *q, const cdist_segment *sg, const cd
     A.c.c = v3(0, 0, 0);
     seg_x S = {v_sub(sg->p0, origin), v_sub(sg->p1, sg->p0)};
     vec3 S1 = v_sub(sg->p1, origin);
-    cs_coll k;
-    cs_coll_init(&k, fmax(A.c.r, fmax(v_norm(S.p0), v_norm(S1))));
+    int e = cd_scale_exponent(fmax(A.c.r, fmax(v_maxabs(S.p0), v_maxabs(S1))));
+    double down = cd_pow2(-e);
+    A.c.r *= down;
+    S.p0 = v_scale(down, S.p0);
+    S.m = v_scale(down, S.m);
+    S1 = v_scale(down, S1);
+    cd_cs_coll k;
+    cd_cs_coll_init(&k, fmax(A.c.r, fmax(v_norm(S.p0), v_norm(S1))));
     /* Segment endpoints to the arc. */
     offer_point_arc(&k, S.p0, 0.0, &A, 1, 1);
     offer_point_arc(&k, S1, 1.0, &A, 1, 1);
@@ -381,30 +367,49 @@ cdist_status cdist_segment_arc(cdist_query *q, const cdist_segment *sg, const cd
         double s = mm > 0.0 ? v_dot(v_sub(E, S.p0), S.m) / mm : 0.0;
         s = s < 0.0 ? 0.0 : (s > 1.0 ? 1.0 : s);
         vec3 P = s == 1.0 ? S1 : v_axpy(S.p0, s, S.m);
-        cs_coll_offer(&k, v_sqr(v_sub(P, E)), P, E, s, ang, 0);
+        cd_cs_coll_offer(&k, v_sqr(v_sub(P, E)), P, E, s, ang, 0);
     }
     /* Interior: minima of s -> dist^2(seg(s), circle) within r/|M| of the foot. */
     if (mm > 0.0 && A.c.r > 0.0) {
         double len = sqrt(mm);
         double foot = -v_dot(S.p0, S.m) / mm;
-        double half = A.c.r / len * (1.0 + 1e-9) + 4.0 * DBL_EPSILON * (v_norm(S.p0) / len + 1.0);
+        double half = A.c.r / len * (1.0 + CD_SEG_ARC_WINDOW_REL) + CD_SEG_ARC_WINDOW_ULPS * DBL_EPSILON * (v_norm(S.p0) / len + 1.0);
         double lo = fmax(0.0, foot - half), hi = fmin(1.0, foot + half);
         if (lo <= hi) {
             cand_arc_ctx ca = {&A, 1};
-            cs_scan s = {q, seg_eval, &S, &A.c, 0, &k, cand_arc, &ca, 0, 0.0, fmax(v_norm(S.p0), v_norm(S1))};
-            double roots[4];
-            int n = seg_circle_quartic(q, &S, foot, &A.c, roots);
-            if (n >= 0) {
-                for (int i = 0; i < n; i++) {
-                    if (!(roots[i] >= lo && roots[i] <= hi)) continue;
-                    if ((st = cs_polish(&s, roots[i], lo, hi))) return st;
+            cd_cs_scan s = {q, seg_eval, &S, &A.c, 0, &k, cand_arc, &ca, 0, 0.0, fmax(v_norm(S.p0), v_norm(S1))};
+            /* The local minima of the segment's distance to the full circle in the window, from
+             * the lines family's robust (GSL-free) core on the line through the foot, each
+             * polished on the true derivative and offered when its circle point is in range. */
+            cd_best lm;
+            cd_best_init(&lm, k.b.scale);
+            vec3 M = v_scale(1.0 / len, S.m), B = v_axpy(S.p0, foot, S.m);
+            st = cd_linear_circle_ex(q, CDIST_METHOD_ROBUST, B, M, (lo - foot) * len, (hi - foot) * len, &A.c, &lm,
+                                     NULL);
+            if (st == CDIST_OK) {
+                for (int i = 0; i < lm.n; i++) {
+                    double t = fmin(fmax(foot + lm.c[i].param[0] / len, lo), hi);
+                    if ((st = cd_cs_polish(&s, t, lo, hi))) return st;
                 }
-            } else if ((st = cs_scan_run(&s, lo, hi, q->curve_samples))) {
+            } else if ((st = cd_cs_scan_run(&s, lo, hi, q->curve_samples))) {
                 return st;
             }
         }
     }
-    cs_coll_finish(&k);
-    cd_best_to_result(&k.b, origin, 0, r);
-    return cd_ok(q, r, CDIST_METHOD_ROBUST);
+    cd_cs_coll_result(&k, cd_pow2(e), origin, r);
+    return CDIST_OK;
+}
+
+cdist_status cdist_arc_arc(cdist_query *q, const cdist_arc *a0, const cdist_arc *a1, cdist_result *r)
+{
+    cdist_status st = cd_enter(q, r);
+    if (st) return st;
+    return cd_leave(q, r, arc_arc(q, a0, a1, r), CDIST_METHOD_ROBUST);
+}
+
+cdist_status cdist_segment_arc(cdist_query *q, const cdist_segment *sg, const cdist_arc *a, cdist_result *r)
+{
+    cdist_status st = cd_enter(q, r);
+    if (st) return st;
+    return cd_leave(q, r, segment_arc(q, sg, a, r), CDIST_METHOD_ROBUST);
 }

@@ -1,0 +1,791 @@
+/* Parametric curves, helices and cubic Bezier curves to circles and disks: the generic
+ * root-bounding engine (distance-to-circles-3d §3, point-curve-circle-to-disk §3). The arc
+ * queries (src/curves/arc.c) use the same engine through the small interface in src/curves/curve_scan.h.
+ *
+ * Curve to circle. With Delta(t) = P(t) - C, h = N.Delta, w = N x Delta, rho = |w|:
+ *     F(t) = h^2 + (rho - r)^2                      (squared distance, closed-form point-circle)
+ *     g(t) = F'(t) / 2 = h h' + (rho - r) (w.w') / rho
+ * (this is the paper's Delta.Delta' - r (w.w')/rho with Delta.Delta' = h h' + w.w' regrouped, so
+ * that near a minimum the two small factors h and rho - r multiply instead of cancelling). g is
+ * undefined where the curve crosses the circle's axis (rho = 0); there F has a kink that is a
+ * local maximum of -2 r rho (so never a minimum when r > 0), and g jumps from + to -: the
+ * bracketing below treats it like a root, which merely adds a harmless candidate. When the
+ * curve runs along the axis, w' = 0 as well and g = h h' is smooth (the paper's limit).
+ *
+ * Curve to disk. D(t) = h^2 + max(rho - r, 0)^2 is the squared distance from P(t) to the disk
+ * (inside the cylinder rho <= r the distance is |h|, outside it is the rim distance). The two
+ * pieces meet with equal value and equal derivative at rho = r (the rim term is quadratic in
+ * rho - r), so D is C^1 and g = D'/2 = h h' + max(rho - r, 0) (w.w') / rho is continuous:
+ * the paper's split into inside (z z' = 0) and outside (rim) subintervals is exactly the
+ * sign-change search on this single function. The partition points rho = r are located too and
+ * offered as candidates, as the paper asks.
+ *
+ * The engine (scan_run): sample g at n+1 equally spaced parameters (n = the handle's curve
+ * sample count; values kept in the handle's scratch, no allocation), then
+ *  - offer both endpoints;
+ *  - every sample where |g| is below its rounding level is a critical point already: offer it;
+ *  - every bracket with g < 0 on the left and g > 0 on the right holds a minimum of F: refine
+ *    it by Brent's safeguarded inverse-interpolation/bisection on g to full precision, offer it;
+ *  - where |g| has a local minimum over three samples of one sign, g may dip through zero and
+ *    back between samples (two close critical points, a min-max pair): search the extremum of g
+ *    over the two intervals by golden section; if it crosses zero, the bracket it makes is
+ *    refined as above (same at the two ends, with the one interval there);
+ *  - sampled local minima of F are offered as a last safety net (an upper bound within F'' h^2);
+ *  - for the disk, sign changes of rho - r are bisected and offered (partition points), and
+ *    every sign change of the height h between samples (end intervals included) is located on
+ *    h itself and offered: a crossing inside the disk is a zero of D that g = h h' shows only
+ *    at its rounding level when the curve lies nearly flat;
+ *  - for the circle, the closest approaches to the axis that may reach it between samples are
+ *    located (golden section on rho) and offered: the non-smooth points of F.
+ * Limitation (documented in docs/curves.md): roots are bounded only up to the sample spacing:
+ * two minima closer than about one sample interval can merge, and a minimum hidden in a pair of
+ * critical points inside one interval is found only when the extremum search detects it.
+ * cdist_query_set_curve_samples() trades speed for resolution. */
+#include <math.h>
+
+#include "curve_scan.h"
+
+/* ---- collector ---- */
+
+void cd_cs_coll_init(cd_cs_coll *k, double scale)
+{
+    cd_best_init(&k->b, scale);
+    k->eq_d2 = INFINITY;
+    k->flat_ties = 0;
+}
+
+void cd_cs_coll_offer(cd_cs_coll *k, double d2, vec3 p0, vec3 p1, double a0, double a1, int eq)
+{
+    cd_best_offer(&k->b, d2, p0, p1, a0, a1);
+    if (eq && d2 < k->eq_d2) k->eq_d2 = d2;
+}
+
+static double tie_tol(const cd_cs_coll *k) { return CD_TIE_ULPS * DBL_EPSILON * k->b.scale; }
+
+void cd_cs_coll_finish(cd_cs_coll *k)
+{
+    cd_best *b = &k->b;
+    if (b->n == 0) return;
+    double d0 = sqrt(b->c[0].d2);
+    /* A candidate with infinitely many closest pairs (a point on the circle's axis, ...). */
+    if (k->eq_d2 < INFINITY && sqrt(k->eq_d2) - d0 <= tie_tol(k)) b->equidistant = 1;
+    /* On a scan of a constant function (coaxial or concentric arcs...), three distinct pairs at
+     * the same distance mean the continuum. (Not in general: a curve may cross a circle at
+     * three isolated points.) */
+    if (k->flat_ties && b->n >= 3 && sqrt(b->c[2].d2) - d0 <= tie_tol(k)) b->equidistant = 1;
+}
+
+void cd_cs_coll_result(cd_cs_coll *k, double up, vec3 origin, cdist_result *r)
+{
+    cd_cs_coll_finish(k);
+    if (k->b.n == 0) {
+        r->distance = NAN; /* no candidate: cd_leave reports an internal failure */
+        return;
+    }
+    cd_best_to_result(&k->b, v3(0, 0, 0), 0, r);
+    cd_result_finish(r, r->num_pairs);
+    /* The distance from the scaled one (its square may underflow when the distance is below
+     * 1e-154: sqr_distance is then 0 or subnormal, the distance is still exact). */
+    r->distance *= up;
+    r->sqr_distance = (r->sqr_distance * up) * up;
+    for (int i = 0; i < r->num_pairs; i++)
+        for (int j = 0; j < 2; j++) {
+            cdist_vec3 *P = &r->pairs[i].point[j];
+            vec3 w = v_axpy(origin, up, v3(P->x, P->y, P->z));
+            P->x = w.x;
+            P->y = w.y;
+            P->z = w.z;
+        }
+}
+
+void cd_cs_offer_point(cd_cs_coll *k, vec3 p, double t, const cd_circle *c, int disk, int swap)
+{
+    cd_best tmp;
+    cd_best_init(&tmp, k->b.scale);
+    vec3 rel = v_sub(p, c->c);
+    if (disk) cd_point_disk_core(rel, c, &tmp, 0);
+    else cd_point_circle_core(rel, c, &tmp, 0);
+    if (tmp.n == 0) return;
+    const cd_cand *x = &tmp.c[0];
+    vec3 kp = v_add(x->p[1], c->c);
+    int eq = cd_best_is_equidistant(&tmp) || (!disk && cd_cs_near_axis(k, rel, c));
+    if (swap) cd_cs_coll_offer(k, x->d2, kp, p, x->param[1], t, eq);
+    else cd_cs_coll_offer(k, x->d2, p, kp, t, x->param[1], eq);
+}
+
+int cd_cs_near_axis(const cd_cs_coll *k, vec3 rel, const cd_circle *c)
+{
+    /* Within this distance of the axis the distance to the circle's points varies by less
+     * than the tie tolerance: the closest pairs form a continuum up to rounding. */
+    return c->r > 0.0 && v_norm(v_cross(c->n, rel)) <= CD_CURVE_AXIS_ULPS * DBL_EPSILON * k->b.scale;
+}
+
+/* ---- the objective ---- */
+
+typedef struct sample {
+    vec3 p;     /* position (the scan's frame) */
+    double g;   /* F'/2 (or D'/2) */
+    double f;   /* F (or D) */
+    double h;     /* height over the circle's plane */
+    double rho;   /* distance from the axis */
+    double tol;   /* rounding level of g */
+    double speed; /* |P'| (1-norm) */
+} sample;
+
+static cdist_status eval(const cd_cs_scan *s, double t, sample *o)
+{
+    vec3 P, D;
+    cdist_status st = s->ev(s->q, s->ctx, t, &P, &D);
+    if (st) return st;
+    /* Plain arithmetic (no fma calls: this is the inner loop); g only needs its sign right
+     * away from its rounding level `tol`, and every offered candidate is re-evaluated by the
+     * accurate point-circle/disk cores. */
+    const cd_circle *c = s->c;
+    vec3 n = c->n;
+    vec3 rel = v_sub(P, c->c);
+    double h = n.x * rel.x + n.y * rel.y + n.z * rel.z;
+    double hd = n.x * D.x + n.y * D.y + n.z * D.z;
+    vec3 w = v_cross(n, rel), wd = v_cross(n, D);
+    double rho = sqrt(w.x * w.x + w.y * w.y + w.z * w.z);
+    double wwd = w.x * wd.x + w.y * wd.y + w.z * wd.z;
+    double dr = rho - c->r;
+    if (s->disk) {
+        double o2 = dr > 0.0 ? dr : 0.0;
+        o->g = h * hd + (o2 > 0.0 ? o2 * (wwd / rho) : 0.0);
+        o->f = o2 * o2 + h * h;
+    } else {
+        o->g = h * hd + (rho > 0.0 ? dr * (wwd / rho) : 0.0);
+        o->f = dr * dr + h * h;
+    }
+    o->p = P;
+    o->h = h;
+    o->rho = rho;
+    double rn = fabs(rel.x) + fabs(rel.y) + fabs(rel.z), dn = fabs(D.x) + fabs(D.y) + fabs(D.z);
+    o->tol = CD_CURVE_G_ULPS * DBL_EPSILON * (rn + c->r + s->frame_mag) * dn;
+    o->speed = dn;
+    return CDIST_OK;
+}
+
+static void offer_sample(const cd_cs_scan *s, double t, const sample *x)
+{
+    if (s->cand) s->cand(s, t, x->p);
+    else cd_cs_offer_point(s->k, x->p, t, s->c, s->disk, 0);
+}
+
+static cdist_status offer_at(const cd_cs_scan *s, double t)
+{
+    sample x;
+    cdist_status st = eval(s, t, &x);
+    if (st) return st;
+    offer_sample(s, t, &x);
+    return CDIST_OK;
+}
+
+/* ---- the scan's functions for the root and minimum module (src/base/roots.h) ---- */
+
+enum { CS_F_G, CS_F_H, CS_F_RIM, CS_F_RHO, CS_F_DIP };
+
+/* Context of one solve: which function of the sample, the sign for the dip search, and the
+ * status of a failed evaluation (a user callback's error: the solver then gets NaN and stops). */
+typedef struct cd_cs_fn_ctx {
+    const cd_cs_scan *s;
+    int what;
+    double sg;
+    cdist_status st;
+} cd_cs_fn_ctx;
+
+static double cd_cs_fn(const void *ctx, double t)
+{
+    cd_cs_fn_ctx *c = (cd_cs_fn_ctx *)ctx; /* the status is recorded here (roots.h convention) */
+    sample x;
+    if (c->st) return NAN;
+    if ((c->st = eval(c->s, t, &x))) return NAN;
+    switch (c->what) {
+    case CS_F_G: return x.g;
+    case CS_F_H: return x.h;
+    case CS_F_RIM: return x.rho - c->s->c->r;
+    case CS_F_RHO: return x.rho;
+    default: return c->sg * x.g;
+    }
+}
+
+/* Bracket resolution of the scan's solvers: the resolution of t plus a fraction of an ulp of
+ * the scanned span (CD_CURVE_SPAN_ULPS). */
+static double cd_cs_abs_tol(const cd_cs_scan *s) { return CD_CURVE_SPAN_ULPS * DBL_EPSILON * s->span; }
+
+/* The root of the function `what` bracketed by [a, b] (fa, fb of opposite signs), offered. */
+static cdist_status root_offer(const cd_cs_scan *s, int what, double a, double fa, double b, double fb)
+{
+    cd_cs_fn_ctx c = {s, what, 1.0, CDIST_OK};
+    double t = cd_root_brent(cd_cs_fn, &c, a, fa, b, fb, CD_ROOT_REL_ULPS * DBL_EPSILON, cd_cs_abs_tol(s), CD_CURVE_ROOT_MAX_ITER,
+                             NULL);
+    if (c.st) return c.st;
+    if (t != t) return CDIST_OK;
+    return offer_at(s, t);
+}
+
+/* Refine the minimum of F bracketed by g(a) < 0 < g(b) and offer it. */
+static cdist_status refine_offer(const cd_cs_scan *s, double a, double ga, double b, double gb)
+{
+    return root_offer(s, CS_F_G, a, ga, b, gb);
+}
+
+/* g keeps the sign sg at a and b; look for an extremum of g in between that crosses zero
+ * (golden section on sg * g) and refine the minimum of F it brackets. */
+static cdist_status dip_search(const cd_cs_scan *s, double a, double b, double sg)
+{
+    cd_cs_fn_ctx c = {s, CS_F_DIP, sg, CDIST_OK};
+    double vm, tol = CD_CURVE_GOLDEN_ULPS * DBL_EPSILON * (fabs(a) + fabs(b)) + cd_cs_abs_tol(s);
+    double tm = cd_min_golden(cd_cs_fn, &c, a, b, tol, CD_CURVE_GOLDEN_MAX_ITER, &vm);
+    if (c.st) return c.st;
+    if (!(vm < 0.0)) return CDIST_OK;
+    /* g > 0 dips below: the minimum of F is right of tm; g < 0 bumps above: left. */
+    cd_cs_fn_ctx e = {s, CS_F_G, 1.0, CDIST_OK};
+    if (sg > 0) {
+        double gb = cd_cs_fn(&e, b);
+        return e.st ? e.st : refine_offer(s, tm, sg * vm, b, gb);
+    }
+    double ga = cd_cs_fn(&e, a);
+    return e.st ? e.st : refine_offer(s, a, ga, tm, sg * vm);
+}
+
+/* The curve crosses the disk's plane between a and b (ha, hb of opposite signs): locate the
+ * crossing on h itself and offer it. Where the crossing is inside the disk the distance is 0, a
+ * minimum that g = h h' shows only at the rounding level of g when the curve lies nearly flat
+ * (h' tiny), so the g brackets cannot be trusted to see it. */
+static cdist_status crossing_offer(const cd_cs_scan *s, double a, double ha, double b, double hb)
+{
+    return root_offer(s, CS_F_H, a, ha, b, hb);
+}
+
+/* Locate the sign change of rho - r between a and b and offer the partition point. */
+static cdist_status partition_offer(const cd_cs_scan *s, double a, double da, double b, double db)
+{
+    return root_offer(s, CS_F_RIM, a, da, b, db);
+}
+
+/* The curve's closest approach to the circle's axis in [a, b] (golden section on rho), offered:
+ * where the curve crosses the axis F has a kink, and in a flat configuration the kink rounded by
+ * a near miss is a dip as narrow as the miss distance, invisible to the samples. */
+static cdist_status axis_offer(const cd_cs_scan *s, double a, double b)
+{
+    cd_cs_fn_ctx c = {s, CS_F_RHO, 1.0, CDIST_OK};
+    double tol = CD_CURVE_GOLDEN_ULPS / 2.0 * DBL_EPSILON * (fabs(a) + fabs(b)) + cd_cs_abs_tol(s);
+    double t = cd_min_golden(cd_cs_fn, &c, a, b, tol, 2 * CD_CURVE_GOLDEN_MAX_ITER, NULL);
+    if (c.st) return c.st;
+    if (t != t) return CDIST_OK;
+    return offer_at(s, t);
+}
+
+static double t_at(double t0, double t1, int i, int n)
+{
+    if (i == n) return t1;
+    return t0 + (t1 - t0) * ((double)i / n);
+}
+
+cdist_status cd_cs_scan_run(cd_cs_scan *s, double t0, double t1, int n)
+{
+    cdist_query *q = s->q;
+    cdist_status st;
+    if (!(t0 < t1)) return offer_at(s, t0);
+    if (n > q->curve_samples) n = q->curve_samples;
+    double *G = q->scratch, *Fv = G + (n + 1), *R = Fv + (n + 1), *T = R + (n + 1);
+    s->span = t1 - t0;
+    double ext = 0.0, h_prev = 0.0;
+    for (int i = 0; i <= n; i++) {
+        sample x;
+        if ((st = eval(s, t_at(t0, t1, i, n), &x))) return st;
+        /* Disk: every plane crossing, wherever it is (including the end intervals). */
+        if (s->disk) {
+            if (x.h == 0.0) offer_sample(s, t_at(t0, t1, i, n), &x);
+            else if (i > 0 && (x.h > 0.0) != (h_prev > 0.0) && h_prev != 0.0 &&
+                     (st = crossing_offer(s, t_at(t0, t1, i - 1, n), h_prev, t_at(t0, t1, i, n), x.h)))
+                return st;
+            h_prev = x.h;
+        }
+        G[i] = x.g;
+        Fv[i] = x.f;
+        R[i] = x.rho - s->c->r;
+        T[i] = x.tol;
+        ext = fmax(ext, v_dist(x.p, s->c->c));
+    }
+    if (s->update_scale) s->k->b.scale = fmax(s->k->b.scale, ext);
+    if ((st = offer_at(s, t0)) || (st = offer_at(s, t1))) return st;
+    for (int i = 0; i <= n; i++) {
+        double t = t_at(t0, t1, i, n);
+        int zero = fabs(G[i]) <= T[i];
+        if (zero && i > 0 && i < n && (st = offer_at(s, t))) return st;
+        if (i < n) {
+            int zr = fabs(G[i + 1]) <= T[i + 1];
+            /* Both ends at g's rounding level: refine only when F itself varies beyond its own
+             * rounding between them (a shallow minimum near the target, e.g. a curve in a disk's
+             * plane just outside the rim); on a flat function (F constant up to rounding) the
+             * sign changes are noise and the samples were offered above. */
+            double fmax_i = fmax(Fv[i], Fv[i + 1]);
+            int varies = fabs(Fv[i] - Fv[i + 1]) >
+                         2.0 * CD_CURVE_G_ULPS * DBL_EPSILON * (s->k->b.scale + s->frame_mag) * sqrt(fmax_i);
+            if (G[i] < 0 && G[i + 1] > 0 && (!(zero && zr) || varies)) {
+                if ((st = refine_offer(s, t, G[i], t_at(t0, t1, i + 1, n), G[i + 1]))) return st;
+            }
+            if (s->disk && ((R[i] > 0) != (R[i + 1] > 0))) {
+                if ((st = partition_offer(s, t, R[i], t_at(t0, t1, i + 1, n), R[i + 1]))) return st;
+            }
+        }
+        if (zero) continue;
+        /* A dip of g towards zero between samples of one sign. */
+        double sg = G[i] > 0 ? 1.0 : -1.0;
+        if (i > 0 && i < n) {
+            if (sg * G[i - 1] > 0 && sg * G[i + 1] > 0 && fabs(G[i]) <= fabs(G[i - 1]) &&
+                fabs(G[i]) <= fabs(G[i + 1]) && fabs(G[i - 1]) > T[i - 1] && fabs(G[i + 1]) > T[i + 1]) {
+                if ((st = dip_search(s, t_at(t0, t1, i - 1, n), t_at(t0, t1, i + 1, n), sg))) return st;
+            }
+        } else {
+            int j = i == 0 ? 1 : n - 1;
+            if (sg * G[j] > 0 && fabs(G[i]) <= fabs(G[j]) && fabs(G[j]) > T[j]) {
+                double a = t_at(t0, t1, i == 0 ? 0 : n - 1, n), b = t_at(t0, t1, i == 0 ? 1 : n, n);
+                if ((st = dip_search(s, a, b, sg))) return st;
+            }
+        }
+        /* A sampled closest approach to the axis that may reach it between samples. */
+        if (!s->disk && s->c->r > 0.0 && i > 0 && i < n && R[i] <= R[i - 1] && R[i] <= R[i + 1]) {
+            sample x;
+            if ((st = eval(s, t, &x))) return st;
+            if (x.rho <= 2.0 * x.speed * (s->span / n) &&
+                (st = axis_offer(s, t_at(t0, t1, i - 1, n), t_at(t0, t1, i + 1, n))))
+                return st;
+        }
+        /* Safety net: a sampled local minimum of F. */
+        if (i > 0 && i < n && Fv[i] <= Fv[i - 1] && Fv[i] <= Fv[i + 1] && (st = offer_at(s, t))) return st;
+    }
+    return CDIST_OK;
+}
+
+cdist_status cd_cs_flat_check(cd_cs_scan *s, double t0, double t1, double delta)
+{
+    cd_cs_coll *k = s->k;
+    if (k->b.n == 0 || k->b.equidistant || !(t0 < t1) || s->cand) return CDIST_OK;
+    double t = k->b.c[0].param[0];
+    if (!isfinite(t)) return CDIST_OK;
+    double d0 = sqrt(k->b.c[0].d2);
+    for (int side = -1; side <= 1; side += 2) {
+        double u = t + side * delta;
+        if (u < t0 || u > t1) continue;
+        sample x;
+        cdist_status st = eval(s, u, &x);
+        if (st) return st;
+        if (sqrt(x.f) - d0 <= tie_tol(k)) {
+            k->b.equidistant = 1;
+            break;
+        }
+    }
+    return CDIST_OK;
+}
+
+cdist_status cd_cs_polish(cd_cs_scan *s, double t, double lo, double hi)
+{
+    sample x, y;
+    cdist_status st;
+    s->span = hi - lo;
+    if ((st = eval(s, t, &x))) return st;
+    if (fabs(x.g) <= x.tol || !(lo < hi)) {
+        offer_sample(s, t, &x);
+        return CDIST_OK;
+    }
+    /* The minimum lies to the right where g < 0, to the left where g > 0: step outwards
+     * (geometrically growing steps) until g changes sign, then refine the bracket. */
+    double dir = x.g < 0 ? 1.0 : -1.0;
+    double step = CD_CURVE_POLISH_STEP_REL * fmax(s->span, fabs(t));
+    double prev = t;
+    for (int it = 0; it < CD_CURVE_POLISH_STEPS; it++) {
+        double u = prev + dir * step;
+        int bound = 0;
+        if (u >= hi) { u = hi; bound = 1; }
+        if (u <= lo) { u = lo; bound = 1; }
+        if ((st = eval(s, u, &y))) return st;
+        if ((y.g > 0) != (x.g > 0) || y.g == 0.0) {
+            if (dir > 0) return refine_offer(s, prev, x.g, u, y.g);
+            return refine_offer(s, u, y.g, prev, x.g);
+        }
+        if (bound) {
+            offer_sample(s, u, &y);
+            return CDIST_OK;
+        }
+        prev = u;
+        x = y;
+        step *= 4.0;
+    }
+    return offer_at(s, t);
+}
+
+/* ---- user curves ---- */
+
+typedef struct user_curve {
+    cdist_curve_fn f;
+    void *user;
+    vec3 origin;
+    double down; /* the power-of-two scale of the query's frame */
+} user_curve;
+
+static cdist_status user_eval(cdist_query *q, const void *ctx, double t, vec3 *p, vec3 *dp)
+{
+    const user_curve *u = ctx;
+    cdist_vec3 P = {NAN, NAN, NAN}, D = {NAN, NAN, NAN};
+    int rc = u->f(u->user, t, &P, &D);
+    if (rc) return cd_fail(q, CDIST_ERR_CALLBACK_FAILED, "curve callback returned %d at t = %.17g", rc, t);
+    if (!v_isfinite(P) || !v_isfinite(D))
+        return cd_fail(q, CDIST_ERR_CALLBACK_NOT_FINITE,
+                       "curve callback gave a non-finite %s at t = %.17g", v_isfinite(P) ? "derivative" : "position",
+                       t);
+    if (v_maxabs(P) > CD_MAX_ABS || v_maxabs(D) > CD_MAX_ABS)
+        return cd_fail(q, CDIST_ERR_OUT_OF_RANGE, "curve callback gave a value beyond 1e150 at t = %.17g", t);
+    *p = v_scale(u->down, v_sub(P, u->origin));
+    *dp = v_scale(u->down, D);
+    return CDIST_OK;
+}
+
+cdist_status cd_cs_check_interval(cdist_query *q, double t0, double t1, const char *what)
+{
+    if (!isfinite(t0) || !isfinite(t1))
+        return cd_fail(q, CDIST_ERR_NOT_FINITE, "%s interval [%g, %g] is not finite", what, t0, t1);
+    if (t0 > t1) return cd_fail(q, CDIST_ERR_BAD_INTERVAL, "%s interval [%.17g, %.17g] is reversed", what, t0, t1);
+    if (!isfinite(t1 - t0))
+        return cd_fail(q, CDIST_ERR_BAD_INTERVAL, "%s interval [%g, %g] is too long", what, t0, t1);
+    return CDIST_OK;
+}
+
+/* Run a curve (evaluated in the frame whose origin is `origin`) against circle or disk cc
+ * (its centre already relative to that frame) and write the result. */
+static cdist_status run_curve(cdist_query *q, cd_cs_eval_fn ev, const void *ctx, double t0, double t1,
+                              const cd_circle *cc, int disk, vec3 origin, double scale, double frame_mag,
+                              double up, cdist_result *r)
+{
+    cd_cs_coll k;
+    cd_cs_coll_init(&k, scale);
+    cd_cs_scan s = {q, ev, ctx, cc, disk, &k, NULL, NULL, 1, 0.0, frame_mag};
+    cdist_status st = cd_cs_scan_run(&s, t0, t1, q->curve_samples);
+    if (!st) st = cd_cs_flat_check(&s, t0, t1, (t1 - t0) / q->curve_samples);
+    if (st) return st;
+    cd_cs_coll_result(&k, up, origin, r);
+    return CDIST_OK;
+}
+
+static cdist_status curve_query(cdist_query *q, cdist_curve_fn f, void *user, double t0, double t1,
+                                const cdist_circle *c, cdist_result *r, int disk)
+{
+    cdist_status st;
+    if (!f) return cd_fail(q, CDIST_ERR_NULL_ARGUMENT, "curve callback is NULL");
+    cd_circle cc;
+    if ((st = cd_check_circle(q, c, disk ? "disk" : "circle", &cc))) return st;
+    if ((st = cd_cs_check_interval(q, t0, t1, "curve"))) return st;
+    user_curve u = {f, user, cc.c, 1.0};
+    vec3 origin = cc.c;
+    cc.c = v3(0, 0, 0);
+    /* The scale of the frame from a few positions (the callback's positions are only known as
+     * it is called): squares stay free of overflow even where the curve reaches 2^400 times
+     * farther between these positions, and of underflow for tiny curves. */
+    double L = cc.r;
+    for (int i = 0; i <= CD_CURVE_SCALE_PROBES; i++) {
+        vec3 P, D;
+        double t = i == CD_CURVE_SCALE_PROBES ? t1 : t0 + (t1 - t0) * ((double)i / CD_CURVE_SCALE_PROBES);
+        if ((st = user_eval(q, &u, t, &P, &D))) return st;
+        L = fmax(L, v_maxabs(P));
+    }
+    int e = cd_scale_exponent(L);
+    u.down = cd_pow2(-e);
+    cc.r *= u.down;
+    /* The callback's positions are absolute: their rounding is relative to |origin| too. */
+    return run_curve(q, user_eval, &u, t0, t1, &cc, disk, origin, cc.r, v_maxabs(origin) * u.down, cd_pow2(e), r);
+}
+
+cdist_status cdist_curve_circle(cdist_query *q, cdist_curve_fn f, void *user, double t0, double t1,
+                                const cdist_circle *c, cdist_result *r)
+{
+    cdist_status st = cd_enter(q, r);
+    if (st) return st;
+    return cd_leave(q, r, curve_query(q, f, user, t0, t1, c, r, 0), CDIST_METHOD_ROBUST);
+}
+
+cdist_status cdist_curve_disk(cdist_query *q, cdist_curve_fn f, void *user, double t0, double t1,
+                              const cdist_circle *d, cdist_result *r)
+{
+    cdist_status st = cd_enter(q, r);
+    if (st) return st;
+    return cd_leave(q, r, curve_query(q, f, user, t0, t1, d, r, 1), CDIST_METHOD_ROBUST);
+}
+
+/* ---- frames ---- */
+
+cdist_status cd_cs_zero_frame(cdist_query *q, vec3 n, const cdist_vec3 *zd, const char *what, vec3 *U, vec3 *V)
+{
+    vec3 z;
+    cdist_status st = cd_check_direction(q, zd, what, 0, &z, NULL);
+    if (st) return st;
+    vec3 w = v_cross(n, z);
+    double sn = v_norm(w);
+    /* U = (n x z) x n / |n x z| is z projected onto the plane; refuse an ill-defined one. */
+    if (!(sn > CD_CURVE_PARALLEL_SIN))
+        return cd_fail(q, CDIST_ERR_ZERO_VECTOR, "%s is parallel to the normal/axis (sin %.3g)", what, sn);
+    *U = v_scale(1.0 / sn, v_cross(w, n));
+    *V = v_cross(n, *U);
+    return CDIST_OK;
+}
+
+/* ---- helix ---- */
+
+typedef struct helix_x {
+    vec3 c, n, u, v; /* c relative to the circle's centre */
+    double r, rise;  /* rise = pitch / (2 pi) */
+} helix_x;
+
+static cdist_status helix_eval(cdist_query *q, const void *ctx, double t, vec3 *p, vec3 *dp)
+{
+    (void)q;
+    const helix_x *h = ctx;
+    double sn = sin(t), cs = cos(t);
+    vec3 radial = v_axpy(v_scale(cs, h->u), sn, h->v);
+    vec3 tang = v_axpy(v_scale(-sn, h->u), cs, h->v);
+    *p = v_axpy(v_axpy(h->c, h->r, radial), h->rise * t, h->n);
+    *dp = v_axpy(v_scale(h->r, tang), h->rise, h->n);
+    return CDIST_OK;
+}
+
+
+/* Lower bound of the distance between the circle or disk and the helix piece whose axis points
+ * have axial coordinates (along hx->n, from the circle's centre) in [za, zb]: every piece point
+ * X is at distance r from the axis, every target point Y has an axial coordinate in [zlo, zhi]
+ * and a distance from the axis in [rlo, rhi], and |X - Y|^2 >= (axial gap)^2 + (radial gap)^2. */
+typedef struct helix_bound {
+    double zlo, zhi; /* axial range of the target */
+    double rgap;     /* distance from the helix radius to the target's radial range */
+} helix_bound;
+
+static helix_bound helix_bound_init(const helix_x *hx, const cd_circle *c, int disk)
+{
+    helix_bound hb;
+    vec3 n = hx->n;
+    double R = c->r;
+    double zc = -v_dot(hx->c, n), za = hypot(v_dot(c->u, n), v_dot(c->v, n));
+    hb.zlo = zc - R * za;
+    hb.zhi = zc + R * za;
+    /* The target's offset from the axis: Y_perp = C_p + R (cos f u_p + sin f v_p), whose square
+     * is a0 + a1 cos f + b1 sin f + a2 cos 2f + b2 sin 2f. */
+    vec3 Cp = v_sub(v_scale(-1.0, hx->c), v_scale(-v_dot(hx->c, n), n));
+    vec3 up = v_sub(c->u, v_scale(v_dot(c->u, n), n)), vp = v_sub(c->v, v_scale(v_dot(c->v, n), n));
+    double a0 = v_sqr(Cp) + 0.5 * R * R * (v_sqr(up) + v_sqr(vp));
+    double m1 = 2.0 * R * hypot(v_dot(Cp, up), v_dot(Cp, vp));
+    double m2 = R * R * hypot(0.5 * (v_sqr(up) - v_sqr(vp)), v_dot(up, vp));
+    double rhi = sqrt(fmax(0.0, a0 + m1 + m2)), rlo = sqrt(fmax(0.0, a0 - m1 - m2));
+    if (disk) rlo = fmax(0.0, v_norm(Cp) - R); /* the filled ellipse around C_p */
+    /* Rounding: the ranges are widened by a few ulps of the problem's magnitude. */
+    double slack = CD_CURVE_HELIX_BOUND_ULPS * DBL_EPSILON * (R + v_norm(hx->c) + hx->r);
+    hb.zlo -= slack;
+    hb.zhi += slack;
+    rlo = fmax(0.0, rlo - slack);
+    rhi += slack;
+    hb.rgap = hx->r < rlo ? rlo - hx->r : (hx->r > rhi ? hx->r - rhi : 0.0);
+    return hb;
+}
+
+static double helix_piece_lb(const helix_bound *hb, const helix_x *hx, double a, double b)
+{
+    double z0 = hx->rise * a, z1 = hx->rise * b;
+    double za = fmin(z0, z1), zb = fmax(z0, z1);
+    double gap = za > hb->zhi ? za - hb->zhi : (zb < hb->zlo ? hb->zlo - zb : 0.0);
+    return hypot(gap, hb->rgap);
+}
+
+/* Cost limit of one helix query (CD_CURVE_HELIX_MAX_SAMPLES samples over the pieces that cannot
+ * be skipped: 32768 turns at the default 512 samples). Pieces are skipped when their lower bound
+ * exceeds the distance found on the axially nearest piece, so only configurations where that
+ * many turns are about equally close (a target threading a long tight coil) reach it; they get
+ * CDIST_ERR_COST_LIMIT before the long scan.
+ * After the nearest piece: the pieces whose bound does not exceed the distance found there are
+ * all the pieces that may be scanned (the best only decreases); refuse when they cost too much. */
+static cdist_status helix_cost_check(const cd_cs_scan *s, const helix_x *hx, const helix_bound *hb, double t0,
+                                     double plen, long pieces, long mid)
+{
+    double best = s->k->b.n ? sqrt(s->k->b.c[0].d2) : INFINITY;
+    double margin = best * (1.0 + CD_CURVE_HELIX_SKIP_REL) + CD_CURVE_HELIX_SKIP_ABS * s->k->b.scale;
+    long limit = (long)(CD_CURVE_HELIX_MAX_SAMPLES / s->q->curve_samples), count = 1;
+    for (long i = mid - 1; i >= 0 && count <= limit; i--, count++)
+        if (helix_piece_lb(hb, hx, t0 + (double)i * plen, t0 + (double)(i + 1) * plen) > margin) break;
+    for (long i = mid + 1; i < pieces && count <= limit; i++, count++)
+        if (helix_piece_lb(hb, hx, t0 + (double)i * plen, t0 + (double)(i + 1) * plen) > margin) break;
+    if (count > limit)
+        return cd_fail(s->q, CDIST_ERR_COST_LIMIT,
+                       "helix: more than %ld turns are about equally close to the target (cost limit: %.0f "
+                       "samples)",
+                       limit, CD_CURVE_HELIX_MAX_SAMPLES);
+    return CDIST_OK;
+}
+
+/* Scan the pieces [t0 + i plen, t0 + (i+1) plen] (the last ending at t1) in order of increasing
+ * lower bound, from the piece nearest the target axially outwards (the bound is unimodal in i:
+ * the axial gap shrinks, stays 0 while the pieces overlap the target's range, then grows),
+ * stopping on each side at the first piece whose bound exceeds the best distance so far. */
+static cdist_status helix_pieces(cd_cs_scan *s, const helix_x *hx, double t0, double plen, long pieces, double t1)
+{
+    cdist_query *q = s->q;
+    helix_bound hb = helix_bound_init(hx, s->c, s->disk);
+    /* The piece whose axis range is nearest the middle of the target's axial range. */
+    long mid = 0;
+    if (hx->rise != 0.0) {
+        double tm = 0.5 * (hb.zlo + hb.zhi) / hx->rise;
+        double f = floor((tm - t0) / plen);
+        mid = f < 0.0 ? 0 : (f >= (double)pieces ? pieces - 1 : (long)f);
+    }
+    long lo = mid, hi = mid; /* next candidates: lo - 1 and hi + 1 (mid first) */
+    int first = 1, done_lo = 0, done_hi = 0;
+    cdist_status st;
+    while (first || !done_lo || !done_hi) {
+        long i;
+        if (first) {
+            i = mid;
+            first = 0;
+        } else {
+            double blo = INFINITY, bhi = INFINITY;
+            if (!done_lo && lo > 0) blo = helix_piece_lb(&hb, hx, t0 + (double)(lo - 1) * plen, t0 + (double)lo * plen);
+            else done_lo = 1;
+            if (!done_hi && hi < pieces - 1)
+                bhi = helix_piece_lb(&hb, hx, t0 + (double)(hi + 1) * plen, t0 + (double)(hi + 2) * plen);
+            else done_hi = 1;
+            double best = s->k->b.n ? sqrt(s->k->b.c[0].d2) : INFINITY;
+            /* The bound must beat the best clearly (rounding of both): else the piece is scanned. */
+            double margin = best * (1.0 + CD_CURVE_HELIX_SKIP_REL) + CD_CURVE_HELIX_SKIP_ABS * s->k->b.scale;
+            if (blo > margin) done_lo = 1;
+            if (bhi > margin) done_hi = 1;
+            if (done_lo && done_hi) break;
+            if (!done_lo && (done_hi || blo <= bhi)) i = --lo;
+            else i = ++hi;
+        }
+        double a = t0 + (double)i * plen, b = (i == pieces - 1) ? t1 : t0 + (double)(i + 1) * plen;
+        if ((st = cd_cs_scan_run(s, a, b, q->curve_samples))) return st;
+        if (i == mid && (st = helix_cost_check(s, hx, &hb, t0, plen, pieces, mid))) return st;
+    }
+    return CDIST_OK;
+}
+
+
+static cdist_status helix_query(cdist_query *q, const cdist_helix *h, const cdist_circle *c, cdist_result *r,
+                                int disk)
+{
+    cdist_status st;
+    if (!h) return cd_fail(q, CDIST_ERR_NULL_ARGUMENT, "helix pointer is NULL");
+    cd_circle cc;
+    helix_x hx;
+    if ((st = cd_check_point(q, &h->center, "helix centre")) ||
+        (st = cd_check_direction(q, &h->axis, "helix axis", 1, &hx.n, NULL)) ||
+        (st = cd_cs_zero_frame(q, hx.n, &h->zero_direction, "helix zero_direction", &hx.u, &hx.v)) ||
+        (st = cd_check_scalar(q, h->radius, "helix radius")) || (st = cd_check_scalar(q, h->pitch, "helix pitch")))
+        return st;
+    if (h->radius < 0.0) return cd_fail(q, CDIST_ERR_NEGATIVE_RADIUS, "helix radius is negative (%g)", h->radius);
+    if ((st = cd_cs_check_interval(q, h->t0, h->t1, "helix"))) return st;
+    if ((st = cd_check_circle(q, c, disk ? "disk" : "circle", &cc))) return st;
+    double t0 = h->t0, t1 = h->t1;
+    if ((t1 - t0) > 2.0 * M_PI * CD_CURVE_HELIX_MAX_TURNS)
+        return cd_fail(q, CDIST_ERR_BAD_INTERVAL, "helix has more than %g turns", CD_CURVE_HELIX_MAX_TURNS);
+    if (fabs(t1) * fabs(h->pitch) > CD_MAX_ABS || fabs(t0) * fabs(h->pitch) > CD_MAX_ABS)
+        return cd_fail(q, CDIST_ERR_OUT_OF_RANGE, "helix reaches beyond 1e150");
+    hx.r = h->radius;
+    hx.rise = h->pitch / (2.0 * M_PI);
+    /* Pitch 0 repeats one circle: one turn covers it. (Radius 0 is a segment of the axis: one
+     * piece, below.) */
+    if (h->pitch == 0.0 && t1 - t0 > 2.0 * M_PI) t1 = t0 + 2.0 * M_PI;
+    vec3 origin = cc.c;
+    hx.c = v_sub(h->center, origin);
+    cc.c = v3(0, 0, 0);
+    int e = cd_scale_exponent(fmax(fmax(cc.r, hx.r), fmax(v_maxabs(hx.c), fabs(hx.rise) * fmax(fabs(t0), fabs(t1)))));
+    double down = cd_pow2(-e);
+    hx.c = v_scale(down, hx.c);
+    hx.r *= down;
+    hx.rise *= down;
+    cc.r *= down;
+    /* Pieces of at most one turn, each sampled with the handle's sample count. */
+    double len = t1 - t0;
+    long pieces = (h->radius == 0.0) ? 1 : (long)ceil(len / (2.0 * M_PI));
+    if (pieces < 1) pieces = 1;
+    double plen = len / (double)pieces;
+    cd_cs_coll k;
+    cd_cs_coll_init(&k, fmax(cc.r, v_norm(hx.c)));
+    cd_cs_scan s = {q, helix_eval, &hx, &cc, disk, &k, NULL, NULL, 1, 0.0, 0.0};
+    if (pieces == 1) {
+        if ((st = cd_cs_scan_run(&s, t0, t1, q->curve_samples))) return st;
+    } else if ((st = helix_pieces(&s, &hx, t0, plen, pieces, t1))) {
+        return st;
+    }
+    if ((st = cd_cs_flat_check(&s, t0, t1, plen / q->curve_samples))) return st;
+    cd_cs_coll_result(&k, cd_pow2(e), origin, r);
+    return CDIST_OK;
+}
+
+cdist_status cdist_helix_circle(cdist_query *q, const cdist_helix *h, const cdist_circle *c, cdist_result *r)
+{
+    cdist_status st = cd_enter(q, r);
+    if (st) return st;
+    return cd_leave(q, r, helix_query(q, h, c, r, 0), CDIST_METHOD_ROBUST);
+}
+
+cdist_status cdist_helix_disk(cdist_query *q, const cdist_helix *h, const cdist_circle *d, cdist_result *r)
+{
+    cdist_status st = cd_enter(q, r);
+    if (st) return st;
+    return cd_leave(q, r, helix_query(q, h, d, r, 1), CDIST_METHOD_ROBUST);
+}
+
+/* ---- cubic Bezier ---- */
+
+typedef struct bez_x {
+    vec3 p[4]; /* relative to the circle's centre */
+} bez_x;
+
+static cdist_status bez_eval(cdist_query *q, const void *ctx, double t, vec3 *p, vec3 *dp)
+{
+    (void)q;
+    const bez_x *b = ctx;
+    double mt = 1.0 - t;
+    double b0 = mt * mt * mt, b1 = 3.0 * mt * mt * t, b2 = 3.0 * mt * t * t, b3 = t * t * t;
+    *p = v_axpy(v_axpy(v_axpy(v_scale(b0, b->p[0]), b1, b->p[1]), b2, b->p[2]), b3, b->p[3]);
+    vec3 d0 = v_sub(b->p[1], b->p[0]), d1 = v_sub(b->p[2], b->p[1]), d2 = v_sub(b->p[3], b->p[2]);
+    *dp = v_axpy(v_axpy(v_scale(3.0 * mt * mt, d0), 6.0 * mt * t, d1), 3.0 * t * t, d2);
+    return CDIST_OK;
+}
+
+static cdist_status bezier_query(cdist_query *q, const cdist_bezier3 *bz, const cdist_circle *c, cdist_result *r,
+                                 int disk)
+{
+    cdist_status st;
+    if (!bz) return cd_fail(q, CDIST_ERR_NULL_ARGUMENT, "Bezier pointer is NULL");
+    static const char *names[4] = {"Bezier control point 0", "Bezier control point 1", "Bezier control point 2",
+                                   "Bezier control point 3"};
+    for (int i = 0; i < 4; i++)
+        if ((st = cd_check_point(q, &bz->p[i], names[i]))) return st;
+    cd_circle cc;
+    if ((st = cd_check_circle(q, c, disk ? "disk" : "circle", &cc))) return st;
+    vec3 origin = cc.c;
+    bez_x bx;
+    double scale = cc.r;
+    for (int i = 0; i < 4; i++) {
+        bx.p[i] = v_sub(bz->p[i], origin);
+        scale = fmax(scale, v_maxabs(bx.p[i]));
+    }
+    int e = cd_scale_exponent(scale);
+    double down = cd_pow2(-e);
+    for (int i = 0; i < 4; i++) bx.p[i] = v_scale(down, bx.p[i]);
+    cc.r *= down;
+    cc.c = v3(0, 0, 0);
+    return run_curve(q, bez_eval, &bx, 0.0, 1.0, &cc, disk, origin, scale * down, 0.0, cd_pow2(e), r);
+}
+
+cdist_status cdist_bezier3_circle(cdist_query *q, const cdist_bezier3 *b, const cdist_circle *c, cdist_result *r)
+{
+    cdist_status st = cd_enter(q, r);
+    if (st) return st;
+    return cd_leave(q, r, bezier_query(q, b, c, r, 0), CDIST_METHOD_ROBUST);
+}
+
+cdist_status cdist_bezier3_disk(cdist_query *q, const cdist_bezier3 *b, const cdist_circle *d, cdist_result *r)
+{
+    cdist_status st = cd_enter(q, r);
+    if (st) return st;
+    return cd_leave(q, r, bezier_query(q, b, d, r, 1), CDIST_METHOD_ROBUST);
+}
