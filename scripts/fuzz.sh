@@ -9,7 +9,7 @@ out=build-fuzz
 mkdir -p "$out/corpus"
 clang -g -O1 -DCDIST_LIBFUZZER -D_GNU_SOURCE -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined \
   -Iinclude -Ibuild/include -Isrc -Itools \
-  src/*.c tools/query_io.c tests/fuzz/fuzz_entry.c $(pkg-config --cflags --libs gsl) -lm -o "$out/fuzz_entry"
+  src/*.c src/*/*.c tools/query_io.c tests/fuzz/fuzz_entry.c $(pkg-config --cflags --libs gsl) -lm -o "$out/fuzz_entry"
 # Seed corpus: a few lines of every shared case file.
 for f in tests/data/*.txt examples/queries.txt; do head -n 3 "$f" >"$out/corpus/$(basename "$f")"; done
 "$out/fuzz_entry" -max_total_time="$secs" -max_len=4096 "$out/corpus"

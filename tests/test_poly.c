@@ -5,7 +5,7 @@
 #include <gsl/gsl_poly.h>
 
 #include "check.h"
-#include "poly.h"
+#include "base/poly.h"
 
 static int handler_calls;
 static void counting_handler(const char *reason, const char *file, int line, int err)

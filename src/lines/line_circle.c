@@ -480,21 +480,13 @@ static double range_scale(vec3 B, vec3 M, double tmin, double tmax, double r)
  * eps * |origin - C| in the translation and eps * |t| in the normalisation of D. The move is done
  * on origin - C kept exactly as two doubles, so nothing is rounded to the grid of the absolute
  * coordinates either (objects far from the coordinate origin). */
-/* a - b = hi + lo exactly (Knuth's TwoSum). */
-static inline double two_diff(double a, double b, double *lo)
-{
-    double s = a - b, a1 = s + b, b1 = s - a1;
-    *lo = (a - a1) - (b + b1);
-    return s;
-}
-
 vec3 cd_line_near_centre(vec3 origin, vec3 D, vec3 C, double tmin, double tmax, double *t0)
 {
     /* origin - C = hi + lo exactly; B = hi + t0 D + lo, rounded once at the scale of B */
     vec3 lo3, hi3;
-    hi3.x = two_diff(origin.x, C.x, &lo3.x);
-    hi3.y = two_diff(origin.y, C.y, &lo3.y);
-    hi3.z = two_diff(origin.z, C.z, &lo3.z);
+    hi3.x = cd_two_diff(origin.x, C.x, &lo3.x);
+    hi3.y = cd_two_diff(origin.y, C.y, &lo3.y);
+    hi3.z = cd_two_diff(origin.z, C.z, &lo3.z);
     double m = v_maxabs(D);
     vec3 Ds = v_scale(1.0 / m, D); /* |D|^2 may underflow or overflow, |Ds|^2 cannot */
     double t = -(v_dot(hi3, Ds) / v_sqr(Ds)) / m;

@@ -5,6 +5,7 @@
 #include <math.h>
 
 #include "circledist.h"
+#include "base/numeric.h"
 
 typedef cdist_vec3 vec3;
 
@@ -46,6 +47,18 @@ static inline void v_basis(vec3 n, vec3 *u, vec3 *v)
     vec3 uu = v_scale(1.0 / v_norm(w), w);
     *u = uu;
     *v = v_cross(n, uu);
+}
+
+/* A validated circle: unit normal n, basis u, v (cdist_circle_basis rule), radius r. */
+typedef struct cd_circle {
+    vec3 c, n, u, v;
+    double r;
+} cd_circle;
+
+/* Angle of a point given relative to the circle centre, in (-pi, pi]; NaN when undefined. */
+static inline double cd_circle_angle(const cd_circle *c, vec3 rel)
+{
+    return cd_polar_angle(v_dot(c->u, rel), v_dot(c->v, rel));
 }
 
 #endif

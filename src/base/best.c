@@ -1,0 +1,107 @@
+/* The candidate collector (best.h). */
+#include "base/best.h"
+
+#include <float.h>
+#include <math.h>
+
+void cd_best_init(cd_best *b, double scale)
+{
+    b->scale = (scale > 0.0 && isfinite(scale)) ? scale : 1.0;
+    b->n = 0;
+    b->equidistant = 0;
+}
+
+static int cand_distinct(const cd_best *b, const cd_cand *x, const cd_cand *y)
+{
+    double sep = v_dist(x->p[0], y->p[0]) + v_dist(x->p[1], y->p[1]);
+    return sep > CD_DISTINCT_REL * b->scale;
+}
+
+void cd_best_offer_flag(cd_best *b, int equi, double d2, vec3 p0, vec3 p1, double param0, double param1)
+{
+    if (!(d2 >= 0.0)) return; /* NaN candidates are ignored */
+    cd_cand c = {equi, d2, {p0, p1}, {param0, param1}};
+    /* Merge with a kept candidate describing the same pair: keep the smaller distance. */
+    for (int i = 0; i < b->n; i++) {
+        if (!cand_distinct(b, &c, &b->c[i])) {
+            if (c.d2 >= b->c[i].d2) return;
+            for (int j = i; j + 1 < b->n; j++) b->c[j] = b->c[j + 1];
+            b->n--;
+            break;
+        }
+    }
+    int pos = b->n;
+    while (pos > 0 && b->c[pos - 1].d2 > c.d2) pos--;
+    if (pos >= CD_BEST_KEEP) return;
+    int last = (b->n < CD_BEST_KEEP) ? b->n : CD_BEST_KEEP - 1;
+    for (int j = last; j > pos; j--) b->c[j] = b->c[j - 1];
+    b->c[pos] = c;
+    if (b->n < CD_BEST_KEEP) b->n++;
+}
+
+void cd_best_offer(cd_best *b, double d2, vec3 p0, vec3 p1, double param0, double param1)
+{
+    cd_best_offer_flag(b, 0, d2, p0, p1, param0, param1);
+}
+
+void cd_best_offer_equidistant(cd_best *b, double d2, vec3 p0, vec3 p1, double param0, double param1)
+{
+    cd_best_offer_flag(b, 1, d2, p0, p1, param0, param1);
+}
+
+void cd_best_offer_points(cd_best *b, vec3 p0, vec3 p1, double param0, double param1)
+{
+    cd_best_offer(b, v_sqr(v_sub(p0, p1)), p0, p1, param0, param1);
+}
+
+void cd_best_to_result(const cd_best *b, vec3 offset, int swap, cdist_result *r)
+{
+    if (b->n == 0) return;
+    int a = swap ? 1 : 0;
+    double d0 = sqrt(b->c[0].d2);
+    r->distance = d0;
+    r->sqr_distance = b->c[0].d2;
+    r->equidistant = b->equidistant || b->c[0].equidistant;
+    int np = 1;
+    if (b->n > 1 && !r->equidistant) {
+        double d1 = sqrt(b->c[1].d2);
+        if (d1 - d0 <= CD_TIE_ULPS * DBL_EPSILON * b->scale) np = 2;
+    }
+    r->num_pairs = np;
+    for (int i = 0; i < np; i++) {
+        const cd_cand *c = &b->c[i];
+        r->pairs[i].point[a] = v_add(c->p[0], offset);
+        r->pairs[i].point[1 - a] = v_add(c->p[1], offset);
+        r->pairs[i].param[a] = c->param[0];
+        r->pairs[i].param[1 - a] = c->param[1];
+    }
+}
+
+double cd_best_merge(cd_best *dst, const cd_best *src, vec3 shift, int swap)
+{
+    for (int i = 0; i < src->n; i++) {
+        const cd_cand *c = &src->c[i];
+        vec3 p0 = v_add(c->p[0], shift), p1 = v_add(c->p[1], shift);
+        if (swap) cd_best_offer_flag(dst, c->equidistant, c->d2, p1, p0, c->param[1], c->param[0]);
+        else cd_best_offer_flag(dst, c->equidistant, c->d2, p0, p1, c->param[0], c->param[1]);
+    }
+    return src->n ? src->c[0].d2 : INFINITY;
+}
+
+int cd_best_ties(const cd_best *b, double d2a, double d2b)
+{
+    return fabs(sqrt(d2a) - sqrt(d2b)) <= CD_TIE_ULPS * DBL_EPSILON * b->scale;
+}
+
+void cd_best_settle_equidistant(cd_best *b, double eq_d2)
+{
+    if (isfinite(eq_d2) && b->n > 0 && (eq_d2 <= b->c[0].d2 || cd_best_ties(b, eq_d2, b->c[0].d2)))
+        b->equidistant = 1;
+}
+
+void cd_best_convex_contact(cd_best *b)
+{
+    if (b->n >= 2 && cd_best_ties(b, b->c[0].d2, b->c[1].d2) &&
+        sqrt(b->c[1].d2) <= CD_TIE_ULPS * DBL_EPSILON * b->scale)
+        b->equidistant = 1;
+}

@@ -1,0 +1,233 @@
+/* Lines, rays and segments to disks (point-curve-circle-to-disk §2-§4, line-circle-disk §2;
+ * derivations in docs/disk.md). The lemma the split rests on (the distance to a disk is |h|
+ * over the disk and the rim-circle distance elsewhere) is stated at the top of src/disk.c. */
+#include <math.h>
+
+#include "internal.h"
+
+/* ------------------------------------------------------------------------------------------ */
+/* Lines, rays and segments to a disk                                                           */
+
+/* B + t M, t in [tmin, tmax], M unit, B relative to the disk centre (d->c ignored).
+ * Split the range where the projection onto the plane enters and leaves the disk:
+ *   over the disk: G = |h(t)| with h linear, so its minimum on the piece is at the plane
+ *     crossing (distance 0) or at an end of the piece;
+ *   outside: G = F, the line-circle distance, by cd_linear_circle restricted to the piece.
+ * The lemma at the top makes the split points themselves unnecessary as candidates, but they
+ * are offered anyway (cheap, and they protect against a split computed a few ulps off). */
+static void lin_offer(vec3 B, vec3 M, double t, const cd_circle *d, cd_best *b)
+{
+    vec3 p = v_axpy(B, t, M);
+    cd_best tmp;
+    cd_best_init(&tmp, b->scale);
+    cd_point_disk_core(p, d, &tmp, 0);
+    for (int i = 0; i < tmp.n; i++) cd_best_offer(b, tmp.c[i].d2, tmp.c[i].p[0], tmp.c[i].p[1], t, tmp.c[i].param[1]);
+}
+
+static cdist_status linear_disk(cdist_query *q, cdist_method method, vec3 B, vec3 M, double tmin, double tmax,
+                                const cd_circle *d, cd_best *b, cdist_method *used)
+{
+    *used = method == CDIST_METHOD_POLYNOMIAL ? method : CDIST_METHOD_ROBUST;
+    cdist_method u1 = *used;
+    double R = d->r;
+    double mn = v_dot(d->n, M), hB = v_dot(d->n, B);
+    /* In-plane parts of B and M. */
+    vec3 Mp = v_cross(v_cross(d->n, M), d->n), Bp = v_cross(v_cross(d->n, B), d->n);
+    double mp2 = v_sqr(Mp);
+    double eq_d2 = INFINITY;
+    cd_best loc;
+    cd_best_init(&loc, b->scale);
+    double t1 = INFINITY, t2 = -INFINITY; /* the projection is over the disk for t in [t1, t2] */
+    if (mp2 > 0.0) {
+        double mpn = sqrt(mp2);
+        double tc = -v_dot(Bp, Mp) / mp2;
+        /* Distance of the projected line from the centre: |Mp x Bp| / |Mp| (no cancellation). */
+        double dist = v_norm(v_cross(Mp, Bp)) / mpn;
+        if (dist <= R) {
+            double half = sqrt((R - dist) * (R + dist)) / mpn;
+            t1 = tc - half;
+            t2 = tc + half;
+        }
+    } else if (v_norm(Bp) <= R) {
+        t1 = -INFINITY;
+        t2 = INFINITY;
+    }
+    double lo = fmax(tmin, t1), hi = fmin(tmax, t2);
+    cdist_status st;
+    if (lo <= hi) {
+        /* The piece over the disk. */
+        if (fabs(mn) <= 4.0 * DBL_EPSILON) {
+            /* Parallel to the plane (within rounding): |h| constant over a stretch. */
+            double tt = isfinite(lo) ? lo : isfinite(hi) ? hi : fmin(fmax(0.0, lo), hi);
+            if (isfinite(lo) && isfinite(hi)) tt = 0.5 * (lo + hi);
+            lin_offer(B, M, tt, d, &loc);
+            if (hi > lo && R > 0.0) eq_d2 = loc.n ? loc.c[0].d2 : INFINITY;
+        } else {
+            double tz = -hB / mn;
+            if (tz >= lo && tz <= hi) {
+                /* Crossing point: polish once on h, clamp into the piece. */
+                double hz = v_dot(d->n, v_axpy(B, tz, M));
+                tz = fmin(fmax(tz - hz / mn, lo), hi);
+                lin_offer(B, M, tz, d, &loc);
+            }
+            if (isfinite(lo)) lin_offer(B, M, lo, d, &loc);
+            if (isfinite(hi)) lin_offer(B, M, hi, d, &loc);
+        }
+        /* The outer pieces. */
+        if (tmin < lo) {
+            cd_best t;
+            cd_best_init(&t, b->scale);
+            if ((st = cd_linear_circle_ex(q, method, B, M, tmin, lo, d, &t, &u1))) return st;
+            if (u1 == CDIST_METHOD_ROBUST) *used = u1;
+            double m2 = cd_best_merge(&loc, &t, v3(0, 0, 0), 0);
+            if (cd_best_is_equidistant(&t) && m2 < eq_d2) eq_d2 = m2;
+        }
+        if (hi < tmax) {
+            cd_best t;
+            cd_best_init(&t, b->scale);
+            if ((st = cd_linear_circle_ex(q, method, B, M, hi, tmax, d, &t, &u1))) return st;
+            if (u1 == CDIST_METHOD_ROBUST) *used = u1;
+            double m2 = cd_best_merge(&loc, &t, v3(0, 0, 0), 0);
+            if (cd_best_is_equidistant(&t) && m2 < eq_d2) eq_d2 = m2;
+        }
+    } else {
+        cd_best t;
+        cd_best_init(&t, b->scale);
+        if ((st = cd_linear_circle_ex(q, method, B, M, tmin, tmax, d, &t, &u1))) return st;
+        if (u1 == CDIST_METHOD_ROBUST) *used = u1;
+        double m2 = cd_best_merge(&loc, &t, v3(0, 0, 0), 0);
+        if (cd_best_is_equidistant(&t)) eq_d2 = m2;
+    }
+    if (isfinite(tmin)) lin_offer(B, M, tmin, d, &loc);
+    if (isfinite(tmax)) lin_offer(B, M, tmax, d, &loc);
+    cd_best_settle_equidistant(&loc, eq_d2);
+    cd_best_convex_contact(&loc);
+    double d2 = cd_best_merge(b, &loc, v3(0, 0, 0), 0);
+    if (cd_best_is_equidistant(&loc)) cd_best_settle_equidistant(b, d2);
+    return CDIST_OK;
+}
+
+cdist_status cd_linear_disk(cdist_query *q, cdist_method method, vec3 B, vec3 M, double tmin, double tmax,
+                            const cd_circle *d, cd_best *b)
+{
+    cdist_method used;
+    return linear_disk(q, method, B, M, tmin, tmax, d, b, &used);
+}
+
+#define CD_LINE_METHODS (CD_HAS(CDIST_METHOD_POLYNOMIAL) | CD_HAS(CDIST_METHOD_ROBUST))
+
+/* The point of the segment p0 + s (p1 - p0), s in [0, 1], nearest C, relative to C, from the
+ * exact differences p0 - C and p1 - p0 (a rounded p1 - p0 would tilt the segment: 1e-8 off at
+ * 1e8 from its start); one rounding at the scale of the result. */
+static vec3 segment_near_centre(vec3 p0, vec3 p1, vec3 C, double *s0)
+{
+    double a[3], al[3], dd[3], dl[3];
+    const double P0[3] = {p0.x, p0.y, p0.z}, P1[3] = {p1.x, p1.y, p1.z}, CC[3] = {C.x, C.y, C.z};
+    for (int i = 0; i < 3; i++) {
+        a[i] = cd_two_diff(P0[i], CC[i], &al[i]);
+        dd[i] = cd_two_diff(P1[i], P0[i], &dl[i]);
+    }
+    double m = fmax(fabs(dd[0]), fmax(fabs(dd[1]), fabs(dd[2])));
+    double num = 0.0, den = 0.0;
+    for (int i = 0; i < 3; i++) {
+        num += (a[i] / m) * (dd[i] / m);
+        den += (dd[i] / m) * (dd[i] / m);
+    }
+    double t = (den > 0.0) ? -num / den : 0.0;
+    t = fmin(fmax(t, 0.0), 1.0);
+    *s0 = t;
+    double B[3];
+    for (int i = 0; i < 3; i++) B[i] = fma(t, dd[i], a[i]) + fma(t, dl[i], al[i]);
+    return v3(B[0], B[1], B[2]);
+}
+
+/* Shared driver: the linear object is origin + t D for t in [tmin, tmax], D exactly as the
+ * caller gave it (|D| = len, unit direction M = D / len). The parameter reported is t.
+ * p1 (segments only): the end point, so that origin - C and p1 - origin are taken exactly. */
+static cdist_status linear_disk_query(cdist_query *q, vec3 origin, vec3 D, double len, vec3 M, double tmin,
+                                      double tmax, const vec3 *p1, const cd_circle *dk, cdist_result *r)
+{
+    cd_circle d = *dk;
+    vec3 offset = d.c;
+    d.c = v3(0, 0, 0);
+    /* Move the origin to the point of the range nearest the centre, with origin - C kept exact
+     * and the line as given (not its rounded unit direction, which would tilt it by ~1e-16 rad,
+     * i.e. move it by 1e-8 at a distance of 1e8): see cd_line_near_centre in src/line_circle.c. */
+    double t0;
+    vec3 B = p1 ? segment_near_centre(origin, *p1, offset, &t0) : cd_line_near_centre(origin, D, offset, tmin, tmax, &t0);
+    double lo = (tmin == t0) ? 0.0 : (tmin - t0) * len, hi = (tmax == t0) ? 0.0 : (tmax - t0) * len;
+    double L = fmax(d.r, v_norm(B));
+    cd_best best;
+    cd_best_init(&best, L);
+    cdist_method m = cd_pick_method(q, CD_LINE_METHODS, CDIST_METHOD_ROBUST);
+    cdist_status st = linear_disk(q, m, B, M, lo, hi, &d, &best, &m);
+    if (st) return st;
+    if (best.n == 0) return cd_fail(q, CDIST_ERR_INTERNAL, "line-disk found no candidate");
+    for (int i = 0; i < best.n; i++) best.c[i].param[0] = fmin(fmax(t0 + best.c[i].param[0] / len, tmin), tmax);
+    cd_best_to_result(&best, offset, 0, r);
+    return cd_ok(q, r, m);
+}
+
+cdist_status cdist_line_disk(cdist_query *q, const cdist_line *l, const cdist_circle *d, cdist_result *r)
+{
+    cdist_status st = cd_check_handle(q, r);
+    if (st) return st;
+    if ((st = cd_check_ptr(q, l, "line"))) return st;
+    vec3 dir;
+    double len;
+    cd_circle dk;
+    if ((st = cd_check_point(q, &l->origin, "line origin")) ||
+        (st = cd_check_direction(q, &l->direction, "line direction", 1, &dir, &len)) ||
+        (st = cd_check_circle(q, d, "disk", &dk)))
+        return st;
+    return linear_disk_query(q, l->origin, l->direction, len, dir, -INFINITY, INFINITY, NULL, &dk, r);
+}
+
+cdist_status cdist_ray_disk(cdist_query *q, const cdist_ray *l, const cdist_circle *d, cdist_result *r)
+{
+    cdist_status st = cd_check_handle(q, r);
+    if (st) return st;
+    if ((st = cd_check_ptr(q, l, "ray"))) return st;
+    vec3 dir;
+    double len;
+    cd_circle dk;
+    if ((st = cd_check_point(q, &l->origin, "ray origin")) ||
+        (st = cd_check_direction(q, &l->direction, "ray direction", 1, &dir, &len)) ||
+        (st = cd_check_circle(q, d, "disk", &dk)))
+        return st;
+    return linear_disk_query(q, l->origin, l->direction, len, dir, 0.0, INFINITY, NULL, &dk, r);
+}
+
+cdist_status cdist_segment_disk(cdist_query *q, const cdist_segment *s, const cdist_circle *d, cdist_result *r)
+{
+    cdist_status st = cd_check_handle(q, r);
+    if (st) return st;
+    if ((st = cd_check_ptr(q, s, "segment"))) return st;
+    cd_circle dk;
+    if ((st = cd_check_point(q, &s->p0, "segment p0")) || (st = cd_check_point(q, &s->p1, "segment p1")) ||
+        (st = cd_check_circle(q, d, "disk", &dk)))
+        return st;
+    vec3 M = v_sub(s->p1, s->p0);
+    double len = v_norm(M);
+    if (len == 0.0) {
+        /* A point: point-disk, with s = 0. */
+        cd_circle dd = dk;
+        vec3 offset = dd.c;
+        dd.c = v3(0, 0, 0);
+        vec3 p = v_sub(s->p0, offset);
+        cd_best best;
+        cd_best_init(&best, fmax(dd.r, v_norm(p)));
+        cd_point_disk_core(p, &dd, &best, 0);
+        for (int i = 0; i < best.n; i++) best.c[i].param[0] = 0.0;
+        cd_best_to_result(&best, offset, 0, r);
+        r->pairs[0].point[0] = s->p0;
+        return cd_ok(q, r, CDIST_METHOD_AUTO);
+    }
+    st = linear_disk_query(q, s->p0, M, len, v_scale(1.0 / len, M), 0.0, 1.0, &s->p1, &dk, r);
+    if (st) return st;
+    for (int i = 0; i < r->num_pairs; i++) {
+        if (r->pairs[i].param[0] == 0.0) r->pairs[i].point[0] = s->p0; /* exactly the caller's end points */
+        if (r->pairs[i].param[0] == 1.0) r->pairs[i].point[0] = s->p1;
+    }
+    return CDIST_OK;
+}
