@@ -786,6 +786,32 @@ static int scan(const cc_frame *f, cc_sink *k, double *Fmax)
     return 0;
 }
 
+/* Parallel planes (distance-to-circles-3d §5.2): when A's height over B's plane varies by at most
+ * CD_CC_PARALLEL_ULPS eps L along A, F = (rho - s)^2 + h^2 with h constant to that level and
+ * rho^2 = R^2 + e^2 - 2 R e cos(t - t0), where (e, t0) are the polar coordinates of B's centre
+ * projected into A's plane. F's critical angles are then rho's extremes t0 and t0 + pi and the
+ * angles where rho = s (the projections cross), in closed form. Writes them (up to 4), returns
+ * the count, or -1 when the planes are not parallel. The distances at these angles are
+ * evaluated on the true F, so the tilt below the threshold moves the answer by at most
+ * 2 CD_CC_PARALLEL_ULPS eps L. */
+static int parallel_critical(const cc_frame *f, double *t)
+{
+    if (!(hypot(f->ha, f->hb) <= CD_CC_PARALLEL_ULPS * DBL_EPSILON * f->L)) return -1;
+    double e = hypot(f->Cu, f->Cv), R = f->R, s = f->s;
+    double t0 = e > 0 ? atan2(f->Cv, f->Cu) : 0.0;
+    int n = 0;
+    t[n++] = t0;
+    t[n++] = cd_wrap_angle(t0 + M_PI);
+    if (e > 0 && fabs(R - e) < s && s < R + e) {
+        /* rho = s: cos(t - t0) = (R^2 + e^2 - s^2) / (2 R e), formed without cancellation */
+        double x = ((R - s) * (R + s) + e * e) / (2 * R * e);
+        double a = acos(fmax(-1.0, fmin(1.0, x)));
+        t[n++] = cd_wrap_angle(t0 + a);
+        t[n++] = cd_wrap_angle(t0 - a);
+    }
+    return n;
+}
+
 /* The antisymmetric choice of the circle to parameterise: 1 when it is c1. */
 static int param_second(const cd_circle *c0, const cd_circle *c1, vec3 C)
 {
@@ -844,8 +870,22 @@ static cdist_status cc_robust(cdist_query *q, const cd_circle *c0, const cd_circ
     frame_init(&f, A, CB, B);
     cc_sink k = {.f = &f, .best = b, .unscale = unsc, .swapped = sw, .A = A, .B = B,  .Fmin = INFINITY,
                  .dmin = INFINITY, .rho_min = INFINITY};
-    double Fmax;
-    scan(&f, &k, &Fmax);
+    double Fmax, tp[4];
+    int np = parallel_critical(&f, tp);
+    if (np > 0) {
+        /* Closed form; F's extremes are at rho's extremes (the first two angles). */
+        Fmax = 0;
+        for (int i = 0; i < np; i++) {
+            cc_pt p;
+            double c, s;
+            sincos(tp[i], &s, &c);
+            cc_eval_lean(&f, tp[i], c, s, &p);
+            if (p.F > Fmax) Fmax = p.F;
+            pair_at(&f, tp[i], &k);
+        }
+    } else {
+        scan(&f, &k, &Fmax);
+    }
     /* F' never went from - to +: F is constant to rounding; any point is a closest one. */
     if (b->n == 0 && isfinite(k.Fmin)) pair_at(&f, k.tmin, &k);
     if (b->n == 0 || !isfinite(k.dmin)) return cd_fail(q, CDIST_ERR_INTERNAL, "circle-circle: no minimum found");
@@ -1025,7 +1065,22 @@ int cd_circle_circle_critical(cdist_query *q, const cd_circle *c0, const cd_circ
     frame_init(&f, c0, C, c1);
     cc_sink k = {.f = &f, .want_max = 1, .out = theta0, .cap = cap, .A = c0, .B = c1,
                  .Fmin = INFINITY, .dmin = INFINITY, .rho_min = INFINITY};
-    double Fmax;
+    double Fmax, tp[4];
+    int np = parallel_critical(&f, tp);
+    if (np > 0) {
+        double dlo = INFINITY, dhi = 0;
+        for (int i = 0; i < np; i++) {
+            cc_pt p;
+            double c, s;
+            sincos(tp[i], &s, &c);
+            cc_eval_lean(&f, tp[i], c, s, &p);
+            dlo = fmin(dlo, p.d);
+            dhi = fmax(dhi, p.d);
+            if (i < cap) theta0[i] = tp[i];
+        }
+        if (dhi - dlo <= CC_EQUI_ULPS * DBL_EPSILON * f.L) return -1;
+        return np < cap ? np : cap;
+    }
     scan(&f, &k, &Fmax);
     int n = k.count < cap ? k.count : cap;
     double L = fmax(fmax(c0->r, c1->r), v_norm(C));

@@ -69,4 +69,12 @@
  * CD_LD_PARALLEL_ULPS * eps (rounding of a unit dot product). */
 #define CD_LD_PARALLEL_ULPS 4.0
 
+/* ---- circles family (src/circles: circle-circle, circle-disk, disk-disk) ---- */
+
+/* Circle-circle, scaled units (L in [1, 2)): the planes are parallel when the parameterised
+ * circle's height over the other's plane varies by at most CD_CC_PARALLEL_ULPS * eps * L (the
+ * rounding of a unit normal's components); the closed form (distance-to-circles-3d §5.2) then
+ * errs by at most twice that in the distance. */
+#define CD_CC_PARALLEL_ULPS 1.0
+
 #endif
