@@ -1096,6 +1096,26 @@ int cd_circle_circle_critical(cdist_query *q, const cd_circle *c0, const cd_circ
     return n < cap ? n : cap;
 }
 
+int cd_circles_scale(cd_circle *a, cd_circle *b)
+{
+    int e = cd_scale_exponent(fmax(fmax(a->r, b->r), v_norm(b->c)));
+    a->r = ldexp(a->r, -e);
+    b->r = ldexp(b->r, -e);
+    b->c = v3(ldexp(b->c.x, -e), ldexp(b->c.y, -e), ldexp(b->c.z, -e));
+    return e;
+}
+
+void cd_circles_unscale_result(cdist_result *r, int e, vec3 offset)
+{
+    r->distance = ldexp(r->distance, e);
+    r->sqr_distance = ldexp(r->sqr_distance, 2 * e);
+    for (int i = 0; i < r->num_pairs; i++)
+        for (int j = 0; j < 2; j++) {
+            vec3 p = r->pairs[i].point[j];
+            r->pairs[i].point[j] = v_add(v3(ldexp(p.x, e), ldexp(p.y, e), ldexp(p.z, e)), offset);
+        }
+}
+
 cdist_status cdist_circle_circle(cdist_query *q, const cdist_circle *c0, const cdist_circle *c1, cdist_result *r)
 {
     cdist_status st = cd_check_handle(q, r);
@@ -1107,6 +1127,7 @@ cdist_status cdist_circle_circle(cdist_query *q, const cdist_circle *c0, const c
     vec3 offset = a.c;
     a.c = v3(0, 0, 0);
     b.c = v_sub(b.c, offset);
+    int e = cd_circles_scale(&a, &b);
     cd_best best;
     cd_best_init(&best, fmax(fmax(a.r, b.r), v_norm(b.c)));
     cdist_method m = cd_pick_method(q, CD_HAS(CDIST_METHOD_POLYNOMIAL) | CD_HAS(CDIST_METHOD_ROBUST) |
@@ -1116,7 +1137,8 @@ cdist_status cdist_circle_circle(cdist_query *q, const cdist_circle *c0, const c
     cdist_method answered;
     st = cc_core(q, m, &a, &b, &best, &iterations, &answered);
     if (st) return st;
-    cd_best_to_result(&best, offset, 0, r);
+    cd_best_to_result(&best, v3(0, 0, 0), 0, r);
+    cd_circles_unscale_result(r, e, offset);
     r->iterations = iterations;
     return cd_ok(q, r, answered);
 }

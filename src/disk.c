@@ -567,12 +567,14 @@ cdist_status cdist_circle_disk(cdist_query *q, const cdist_circle *c, const cdis
     vec3 offset = a.c;
     a.c = v3(0, 0, 0);
     e.c = v_sub(e.c, offset);
+    int ex = cd_circles_scale(&a, &e);
     cd_best best;
     cd_best_init(&best, fmax(fmax(a.r, e.r), v_norm(e.c)));
     cdist_method m = cd_pick_method(q, CD_DISK_METHODS, CD_DISK_AUTO), used;
     if ((st = circle_disk_core(q, m, &a, &e, &best, &used))) return st;
     if (best.n == 0) return cd_fail(q, CDIST_ERR_INTERNAL, "circle-disk found no candidate");
-    cd_best_to_result(&best, offset, 0, r);
+    cd_best_to_result(&best, v3(0, 0, 0), 0, r);
+    cd_circles_unscale_result(r, ex, offset);
     return cd_ok(q, r, used);
 }
 
@@ -606,6 +608,7 @@ cdist_status cdist_disk_disk(cdist_query *q, const cdist_circle *d0, const cdist
     vec3 offset = a.c;
     a.c = v3(0, 0, 0);
     e.c = v_sub(e.c, offset);
+    int ex = cd_circles_scale(&a, &e);
     cd_best best;
     cd_best_init(&best, fmax(fmax(a.r, e.r), v_norm(e.c)));
     cdist_method m = cd_pick_method(q, CD_DISK_METHODS, CD_DISK_AUTO), used0, used1;
@@ -627,6 +630,7 @@ cdist_status cdist_disk_disk(cdist_query *q, const cdist_circle *d0, const cdist
     if (cd_best_is_equidistant(&b0)) settle_equidistant(&best, d0sq);
     if (cd_best_is_equidistant(&b1)) settle_equidistant(&best, d1sq);
     convex_contact(&best);
-    cd_best_to_result(&best, offset, swap, r);
+    cd_best_to_result(&best, v3(0, 0, 0), swap, r);
+    cd_circles_unscale_result(r, ex, offset);
     return cd_ok(q, r, used0 == CDIST_METHOD_ROBUST || used1 == CDIST_METHOD_ROBUST ? CDIST_METHOD_ROBUST : m);
 }
