@@ -67,8 +67,10 @@
  *       meridian of the torus (A centred on B, in B's normal plane there, R <= s) and for A a
  *       Villarceau circle of it (R = s). Test: max over the partition points of sqrt(F) minus
  *       the minimum distance <= 32 eps L.
- *   (b) The closest point of A lies on B's axis (rho <= 8 eps (R + |C|)): all of B is equally
- *       close to it (e.g. the meridian case seen from the larger circle).
+ *   (b) The closest point of A lies on B's axis (rho <= 8 eps (R + |C|) min(1, s / L)): all of B
+ *       is equally close to it (e.g. the meridian case seen from the larger circle). The factor
+ *       s / L keeps a tiny B beside a huge A (s = 1e-8, L = 1e8) from being called equidistant
+ *       when its axis is missed by more than its own radius.
  * The tolerances are relative to L, so a configuration that is equidistant only up to the
  * rounding of coordinates much larger than L (far from the origin) may come out with one or two
  * pairs instead (the distance is right either way). The same two tests (with 16 samples per
@@ -891,7 +893,7 @@ static cdist_status cc_robust(cdist_query *q, const cd_circle *c0, const cd_circ
     if (b->n == 0 || !isfinite(k.dmin)) return cd_fail(q, CDIST_ERR_INTERNAL, "circle-circle: no minimum found");
     /* (a) F constant on A; (b) the closest point of A on B's axis. */
     if (sqrt(Fmax) - k.dmin <= CC_EQUI_ULPS * DBL_EPSILON * f.L) b->equidistant = 1;
-    if (k.rho_min <= 8 * f.epsL) b->equidistant = 1;
+    if (k.rho_min <= 8 * f.epsL * fmin(1.0, f.s / f.L)) b->equidistant = 1;
     return CDIST_OK;
 }
 
@@ -920,7 +922,7 @@ static void cc_equidistant_post(const cd_circle *c0, const cd_circle *c1, cd_bes
         if (other->r > 0 && me->r >= 0) {
             double rho;
             pc_dist(b->c[0].p[side], other, &rho);
-            if (rho <= 8 * DBL_EPSILON * (me->r + other->r + Cn)) {
+            if (rho <= 8 * DBL_EPSILON * (me->r + other->r + Cn) * fmin(1.0, other->r / L)) {
                 b->equidistant = 1;
                 return;
             }
