@@ -67,8 +67,10 @@
  *       meridian of the torus (A centred on B, in B's normal plane there, R <= s) and for A a
  *       Villarceau circle of it (R = s). Test: max over the partition points of sqrt(F) minus
  *       the minimum distance <= 32 eps L.
- *   (b) The closest point of A lies on B's axis (rho <= 8 eps (R + |C|)): all of B is equally
- *       close to it (e.g. the meridian case seen from the larger circle).
+ *   (b) The closest point of A lies on B's axis (rho <= 8 eps (R + |C|) min(1, s / L)): all of B
+ *       is equally close to it (e.g. the meridian case seen from the larger circle). The factor
+ *       s / L keeps a tiny B beside a huge A (s = 1e-8, L = 1e8) from being called equidistant
+ *       when its axis is missed by more than its own radius.
  * The tolerances are relative to L, so a configuration that is equidistant only up to the
  * rounding of coordinates much larger than L (far from the origin) may come out with one or two
  * pairs instead (the distance is right either way). The same two tests (with 16 samples per
@@ -87,6 +89,7 @@
 #define CC_DENSE_SAMPLES 512
 #define CC_STACK 40 /* > the deepest level (31) */
 #define CC_EQUI_ULPS 32.0
+#define CC_MIN_ITER 100 /* Brent minimisation steps (a golden step shrinks by 0.618: 100 reach any width) */
 
 /* The parameterised circle A at the origin and the other circle B. */
 typedef struct cc_frame {
@@ -353,17 +356,44 @@ typedef struct cc_sink {
     double rho_min; /* axis distance of the point giving dmin */
 } cc_sink;
 
-/* Evaluate F at angle t and track the extremes seen by the scan. */
-static void cc_sample(const cc_frame *f, cc_sink *k, double t, cc_pt *cur, double *Fmax)
+/* F and F'/2 only, at angle t with (c, s) = (cos t, sin t): the lean evaluation of the sampled
+ * regions (dense scan, kink grid, budget fallback, minimum search), which read only the signs of
+ * F' and the values of F and need none of H's rounding bounds. */
+static inline void cc_eval_lean(const cc_frame *f, double t, double c, double s, cc_pt *p)
 {
-    double c, s;
-    sincos(t, &s, &c);
-    cc_eval(f, t, c, s, cur);
+    vec3 w, w1;
+    w_at(f, c, s, &w, &w1);
+    double Q = dot3(w, w), g = dot3(w, w1);
+    double rho = sqrt(Q);
+    double h = f->ha * c + f->hb * s + f->hc, h1 = f->hb * c - f->ha * s;
+    double dr = rho - f->s;
+    p->t = t;
+    p->c = c;
+    p->s = s;
+    p->F1 = dr * (rho > 0 ? g / rho : 0.0) + h * h1;
+    p->F = dr * dr + h * h;
+    p->d = sqrt(p->F);
+    p->Q = Q;
+    p->g = g;
+}
+
+/* Track the extremes of F seen by the scan. */
+static inline void cc_track(cc_sink *k, const cc_pt *cur, double *Fmax)
+{
     if (cur->F > *Fmax) *Fmax = cur->F;
     if (cur->F < k->Fmin) {
         k->Fmin = cur->F;
         k->tmin = cur->t;
     }
+}
+
+/* Evaluate F (lean) at angle t and track the extremes seen by the scan. */
+static void cc_sample(const cc_frame *f, cc_sink *k, double t, cc_pt *cur, double *Fmax)
+{
+    double c, s;
+    sincos(t, &s, &c);
+    cc_eval_lean(f, t, c, s, cur);
+    cc_track(k, cur, Fmax);
 }
 
 static void pair_at(const cc_frame *f, double t, cc_sink *k)
@@ -471,29 +501,22 @@ static const double half_sec[] = {
     0.5, 0.5, 0.5, 0.5,
 };
 
-/* Golden-section search of F on [lo, hi]; offers the best point (robust mode). F is computed
- * from accurate rho - s and h, so it keeps its relative accuracy even where F' is noise. */
-static void golden_offer(const cc_frame *f, cc_sink *k, double lo, double hi)
+static double cc_F_at(const void *ctx, double t)
 {
-    const double g = 0.6180339887498949;
-    double x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo), c, s;
-    cc_pt p1, p2;
-    sincos(x1, &s, &c);
-    cc_eval(f, x1, c, s, &p1);
-    sincos(x2, &s, &c);
-    cc_eval(f, x2, c, s, &p2);
-    for (int it = 0; it < 100 && hi - lo > 4 * DBL_EPSILON; it++) {
-        if (p1.F < p2.F) {
-            hi = x2, x2 = x1, p2 = p1, x1 = hi - g * (hi - lo);
-            sincos(x1, &s, &c);
-            cc_eval(f, x1, c, s, &p1);
-        } else {
-            lo = x1, x1 = x2, p1 = p2, x2 = lo + g * (hi - lo);
-            sincos(x2, &s, &c);
-            cc_eval(f, x2, c, s, &p2);
-        }
-    }
-    pair_at(f, p1.F < p2.F ? x1 : x2, k);
+    double c, s;
+    sincos(t, &s, &c);
+    cc_pt p;
+    cc_eval_lean(ctx, t, c, s, &p);
+    return p.F;
+}
+
+/* Brent minimisation of F on [lo, hi] (src/base/roots.h); offers the best point (robust mode).
+ * F is computed from accurate rho - s and h, so it keeps its relative accuracy even where F' is
+ * noise, and near a minimum it is smooth at the scale of the bracket (parabolic steps). */
+static void min_offer(const cc_frame *f, cc_sink *k, double lo, double hi)
+{
+    double t = cd_min_brent(cc_F_at, f, lo, hi, CD_ROOT_REL_ULPS * DBL_EPSILON, CD_ROOT_ABS, CC_MIN_ITER, NULL);
+    if (t == t) pair_at(f, t, k);
 }
 
 /* Dense sampling fallback: F' signs on CC_DENSE_SAMPLES points. */
@@ -514,7 +537,7 @@ static void scan_dense(const cc_frame *f, cc_sink *k, double *Fmax)
         prev = cur;
     }
     /* F nearly flat (why we are here): also search F itself around the lowest sample. */
-    if (k->best && isfinite(k->Fmin)) golden_offer(f, k, k->tmin - step, k->tmin + step);
+    if (k->best && isfinite(k->Fmin)) min_offer(f, k, k->tmin - step, k->tmin + step);
 }
 
 /* Near-crossings of B's axis: the minima of Q = |w|^2 = rho^2 (a trigonometric polynomial of
@@ -572,36 +595,49 @@ static double kink_core(const cc_frame *f, double t)
     return fmin(0.05, 1e3 * r + 1e-12);
 }
 
+/* cos h and sin h for |h| <= 0.1 by their Taylor series (truncation below 1e-26 there): the kink
+ * grid's offsets, combined with cos t, sin t of the centre by the addition theorem, so the grid
+ * costs no transcendental call. */
+static inline void small_sincos(double h, double *sn, double *cs)
+{
+    double x = h * h;
+    *sn = h * (1 - x / 6 * (1 - x / 20 * (1 - x / 42 * (1 - x / 72 * (1 - x / 110 * (1 - x / 156))))));
+    *cs = 1 - x / 2 * (1 - x / 12 * (1 - x / 30 * (1 - x / 56 * (1 - x / 90 * (1 - x / 132 * (1 - x / 182))))));
+}
+
 /* The geometric grid around a near-crossing t: t +- 0.1 * 2^(-j/2) down to 1e-17, and t. */
 static void scan_kink(const cc_frame *f, cc_sink *k, double t, double *Fmax)
 {
     enum { NG = 110 };
     cc_pt prev, cur;
+    double ct, st;
+    sincos(t, &st, &ct);
     int first = 1;
     for (int side = -1; side <= 1; side += 2)
         for (int jj = 0; jj < NG; jj++) {
             int j = side < 0 ? jj : NG - 1 - jj; /* increasing angle */
-            double h = 0.1 * pow(2.0, -0.5 * j), x = t + side * h, c, s;
+            double h = side * ldexp(j % 2 ? 0.1 * M_SQRT1_2 : 0.1, -(j / 2)), ch, sh;
             if (side > 0 && jj == 0) {
-                sincos(t, &s, &c);
-                cc_eval(f, t, c, s, &cur);
+                cc_eval_lean(f, t, ct, st, &cur);
                 emit(k, &prev, &cur);
                 prev = cur;
             }
-            cc_sample(f, k, x, &cur, Fmax);
+            small_sincos(h, &sh, &ch);
+            cc_eval_lean(f, t + h, ct * ch - st * sh, st * ch + ct * sh, &cur);
+            cc_track(k, &cur, Fmax);
             if (!first) emit(k, &prev, &cur);
             first = 0;
             prev = cur;
         }
     /* Within about sqrt(eps) of the crossing, F' = 2 (rho - s) w.w'/rho + ... carries the
      * relative rounding eps L / rho of w.w' / rho and its sign is unreliable; F itself is
-     * accurate (d to eps L). Polish the lowest grid neighbourhood by golden section on F. */
-    if (k->best) golden_offer(f, k, t - 1e-3, t + 1e-3);
+     * accurate (d to eps L). Polish the lowest grid neighbourhood by a minimisation of F. */
+    if (k->best) min_offer(f, k, t - 1e-3, t + 1e-3);
 }
 
 /* An interval left uncertified when the evaluation budget ran out (a cluster of roots of H at
  * rounding level, where F is flat and may hold close minima): F' signs on a grid as fine as the
- * dense scan's and of at least 64 points, and in robust mode a golden-section search of F
+ * dense scan's and of at least 64 points, and in robust mode a minimisation of F
  * around the lowest grid point. */
 static void emit_sampled(const cc_frame *f, cc_sink *k, const cc_pt *a, const cc_pt *b, double *Fmax)
 {
@@ -610,16 +646,28 @@ static void emit_sampled(const cc_frame *f, cc_sink *k, const cc_pt *a, const cc
     if (n < 64) n = 64;
     cc_pt prev = *a, cur;
     double Fbest = a->F, tbest = a->t;
+    /* cos and sin on the grid by rotation from the last exact pair (re-synchronised every 8
+     * steps, so the drift stays at a few ulps). */
+    double ch, sh, c = a->c, s = a->s;
+    small_sincos(w / n, &sh, &ch);
     for (int j = 1; j < n; j++) {
         double t = a->t + w * j / n;
-        cc_sample(f, k, t, &cur, Fmax);
+        if (j % 8 == 0 || w / n > 0.1) {
+            sincos(t, &s, &c);
+        } else {
+            double cn = c * ch - s * sh;
+            s = s * ch + c * sh;
+            c = cn;
+        }
+        cc_eval_lean(f, t, c, s, &cur);
+        cc_track(k, &cur, Fmax);
         if (cur.F < Fbest) Fbest = cur.F, tbest = cur.t;
         emit(k, &prev, &cur);
         prev = cur;
     }
     emit(k, &prev, b);
     if (b->F < Fbest) tbest = b->t;
-    if (k->best) golden_offer(f, k, tbest - w / n, tbest + w / n);
+    if (k->best) min_offer(f, k, tbest - w / n, tbest + w / n);
 }
 
 /* Walks [-pi, pi) (see the header comment) and hands every critical bracket to the sink.
@@ -740,6 +788,32 @@ static int scan(const cc_frame *f, cc_sink *k, double *Fmax)
     return 0;
 }
 
+/* Parallel planes (distance-to-circles-3d §5.2): when A's height over B's plane varies by at most
+ * CD_CC_PARALLEL_ULPS eps L along A, F = (rho - s)^2 + h^2 with h constant to that level and
+ * rho^2 = R^2 + e^2 - 2 R e cos(t - t0), where (e, t0) are the polar coordinates of B's centre
+ * projected into A's plane. F's critical angles are then rho's extremes t0 and t0 + pi and the
+ * angles where rho = s (the projections cross), in closed form. Writes them (up to 4), returns
+ * the count, or -1 when the planes are not parallel. The distances at these angles are
+ * evaluated on the true F, so the tilt below the threshold moves the answer by at most
+ * 2 CD_CC_PARALLEL_ULPS eps L. */
+static int parallel_critical(const cc_frame *f, double *t)
+{
+    if (!(hypot(f->ha, f->hb) <= CD_CC_PARALLEL_ULPS * DBL_EPSILON * f->L)) return -1;
+    double e = hypot(f->Cu, f->Cv), R = f->R, s = f->s;
+    double t0 = e > 0 ? atan2(f->Cv, f->Cu) : 0.0;
+    int n = 0;
+    t[n++] = t0;
+    t[n++] = cd_wrap_angle(t0 + M_PI);
+    if (e > 0 && fabs(R - e) < s && s < R + e) {
+        /* rho = s: cos(t - t0) = (R^2 + e^2 - s^2) / (2 R e), formed without cancellation */
+        double x = ((R - s) * (R + s) + e * e) / (2 * R * e);
+        double a = acos(fmax(-1.0, fmin(1.0, x)));
+        t[n++] = cd_wrap_angle(t0 + a);
+        t[n++] = cd_wrap_angle(t0 - a);
+    }
+    return n;
+}
+
 /* The antisymmetric choice of the circle to parameterise: 1 when it is c1. */
 static int param_second(const cd_circle *c0, const cd_circle *c1, vec3 C)
 {
@@ -798,14 +872,28 @@ static cdist_status cc_robust(cdist_query *q, const cd_circle *c0, const cd_circ
     frame_init(&f, A, CB, B);
     cc_sink k = {.f = &f, .best = b, .unscale = unsc, .swapped = sw, .A = A, .B = B,  .Fmin = INFINITY,
                  .dmin = INFINITY, .rho_min = INFINITY};
-    double Fmax;
-    scan(&f, &k, &Fmax);
+    double Fmax, tp[4];
+    int np = parallel_critical(&f, tp);
+    if (np > 0) {
+        /* Closed form; F's extremes are at rho's extremes (the first two angles). */
+        Fmax = 0;
+        for (int i = 0; i < np; i++) {
+            cc_pt p;
+            double c, s;
+            sincos(tp[i], &s, &c);
+            cc_eval_lean(&f, tp[i], c, s, &p);
+            if (p.F > Fmax) Fmax = p.F;
+            pair_at(&f, tp[i], &k);
+        }
+    } else {
+        scan(&f, &k, &Fmax);
+    }
     /* F' never went from - to +: F is constant to rounding; any point is a closest one. */
     if (b->n == 0 && isfinite(k.Fmin)) pair_at(&f, k.tmin, &k);
     if (b->n == 0 || !isfinite(k.dmin)) return cd_fail(q, CDIST_ERR_INTERNAL, "circle-circle: no minimum found");
     /* (a) F constant on A; (b) the closest point of A on B's axis. */
     if (sqrt(Fmax) - k.dmin <= CC_EQUI_ULPS * DBL_EPSILON * f.L) b->equidistant = 1;
-    if (k.rho_min <= 8 * f.epsL) b->equidistant = 1;
+    if (k.rho_min <= 8 * f.epsL * fmin(1.0, f.s / f.L)) b->equidistant = 1;
     return CDIST_OK;
 }
 
@@ -834,7 +922,7 @@ static void cc_equidistant_post(const cd_circle *c0, const cd_circle *c1, cd_bes
         if (other->r > 0 && me->r >= 0) {
             double rho;
             pc_dist(b->c[0].p[side], other, &rho);
-            if (rho <= 8 * DBL_EPSILON * (me->r + other->r + Cn)) {
+            if (rho <= 8 * DBL_EPSILON * (me->r + other->r + Cn) * fmin(1.0, other->r / L)) {
                 b->equidistant = 1;
                 return;
             }
@@ -979,7 +1067,22 @@ int cd_circle_circle_critical(cdist_query *q, const cd_circle *c0, const cd_circ
     frame_init(&f, c0, C, c1);
     cc_sink k = {.f = &f, .want_max = 1, .out = theta0, .cap = cap, .A = c0, .B = c1,
                  .Fmin = INFINITY, .dmin = INFINITY, .rho_min = INFINITY};
-    double Fmax;
+    double Fmax, tp[4];
+    int np = parallel_critical(&f, tp);
+    if (np > 0) {
+        double dlo = INFINITY, dhi = 0;
+        for (int i = 0; i < np; i++) {
+            cc_pt p;
+            double c, s;
+            sincos(tp[i], &s, &c);
+            cc_eval_lean(&f, tp[i], c, s, &p);
+            dlo = fmin(dlo, p.d);
+            dhi = fmax(dhi, p.d);
+            if (i < cap) theta0[i] = tp[i];
+        }
+        if (dhi - dlo <= CC_EQUI_ULPS * DBL_EPSILON * f.L) return -1;
+        return np < cap ? np : cap;
+    }
     scan(&f, &k, &Fmax);
     int n = k.count < cap ? k.count : cap;
     double L = fmax(fmax(c0->r, c1->r), v_norm(C));
@@ -995,6 +1098,26 @@ int cd_circle_circle_critical(cdist_query *q, const cd_circle *c0, const cd_circ
     return n < cap ? n : cap;
 }
 
+int cd_circles_scale(cd_circle *a, cd_circle *b)
+{
+    int e = cd_scale_exponent(fmax(fmax(a->r, b->r), v_norm(b->c)));
+    a->r = ldexp(a->r, -e);
+    b->r = ldexp(b->r, -e);
+    b->c = v3(ldexp(b->c.x, -e), ldexp(b->c.y, -e), ldexp(b->c.z, -e));
+    return e;
+}
+
+void cd_circles_unscale_result(cdist_result *r, int e, vec3 offset)
+{
+    r->distance = ldexp(r->distance, e);
+    r->sqr_distance = ldexp(r->sqr_distance, 2 * e);
+    for (int i = 0; i < r->num_pairs; i++)
+        for (int j = 0; j < 2; j++) {
+            vec3 p = r->pairs[i].point[j];
+            r->pairs[i].point[j] = v_add(v3(ldexp(p.x, e), ldexp(p.y, e), ldexp(p.z, e)), offset);
+        }
+}
+
 cdist_status cdist_circle_circle(cdist_query *q, const cdist_circle *c0, const cdist_circle *c1, cdist_result *r)
 {
     cdist_status st = cd_check_handle(q, r);
@@ -1006,6 +1129,7 @@ cdist_status cdist_circle_circle(cdist_query *q, const cdist_circle *c0, const c
     vec3 offset = a.c;
     a.c = v3(0, 0, 0);
     b.c = v_sub(b.c, offset);
+    int e = cd_circles_scale(&a, &b);
     cd_best best;
     cd_best_init(&best, fmax(fmax(a.r, b.r), v_norm(b.c)));
     cdist_method m = cd_pick_method(q, CD_HAS(CDIST_METHOD_POLYNOMIAL) | CD_HAS(CDIST_METHOD_ROBUST) |
@@ -1015,7 +1139,8 @@ cdist_status cdist_circle_circle(cdist_query *q, const cdist_circle *c0, const c
     cdist_method answered;
     st = cc_core(q, m, &a, &b, &best, &iterations, &answered);
     if (st) return st;
-    cd_best_to_result(&best, offset, 0, r);
+    cd_best_to_result(&best, v3(0, 0, 0), 0, r);
+    cd_circles_unscale_result(r, e, offset);
     r->iterations = iterations;
     return cd_ok(q, r, answered);
 }

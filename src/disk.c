@@ -79,6 +79,8 @@ static void convex_contact(cd_best *b)
  * x(t) = X[0] + X[1] cos t + X[2] sin t, the same for y, z; S(t) = Delta . Delta'. */
 typedef struct cdk {
     double X[3], Y[3], Z[3], S[3];
+    double E0;           /* X0^2 + Y0^2 - R^2, to the last bit (see rim_excess) */
+    int small_circle;    /* rho <= R: rim_excess expands around the circle's centre */
     double R;            /* disk radius */
     double rho;          /* circle radius */
     vec3 A, B, D, n, u, v;
@@ -102,6 +104,14 @@ static void cdk_init(cdk *k, const cd_circle *c, const cd_circle *d)
     k->X[0] = -v_dot(d->u, D); k->X[1] = r * v_dot(d->u, c->u); k->X[2] = r * v_dot(d->u, c->v);
     k->Y[0] = -v_dot(d->v, D); k->Y[1] = r * v_dot(d->v, c->u); k->Y[2] = r * v_dot(d->v, c->v);
     k->Z[0] = -v_dot(d->n, D); k->Z[1] = r * v_dot(d->n, c->u); k->Z[2] = r * v_dot(d->n, c->v);
+    /* E0 by error-free products and sums (base/numeric.h): the in-plane excess of the circle's
+     * centre over the rim, exact to rounding even when R is huge and the gap tiny. */
+    double xl, yl, rl, e1, e2;
+    double xh = cd_two_prod(k->X[0], k->X[0], &xl), yh = cd_two_prod(k->Y[0], k->Y[0], &yl);
+    double rh = cd_two_prod(k->R, k->R, &rl);
+    double s1 = cd_two_sum(xh, yh, &e1), s2 = cd_two_sum(s1, -rh, &e2);
+    k->E0 = s2 + (e2 + e1 + xl + yl - rl);
+    k->small_circle = k->rho <= k->R;
     /* Delta . Delta' = (P - D) . P' = -D . P' since |P| is constant. */
     k->S[0] = 0.0; k->S[1] = -r * v_dot(D, c->v); k->S[2] = r * v_dot(D, c->u);
 }
@@ -143,6 +153,20 @@ static double cdk_rim(const cdk *k, double t, double *f1, double *f2)
     return cdk_rim_cs(k, cs, sn, f1, f2);
 }
 
+/* x^2 + y^2 - R^2 at the circle point (cs, sn), with x, y its in-plane coordinates relative to
+ * the disk centre. A circle much smaller than the disk (mixed scales: r = 1e-8 beside R = 1e8)
+ * sits where x, y are large and their squares carry an absolute rounding of eps R^2, which would
+ * turn a gap of 1e-8 into a false contact; expanded around the circle's centre,
+ *     x^2 + y^2 - R^2 = E0 + 2 (X0 a + Y0 b) + a^2 + b^2    (a = x - X0, b = y - Y0),
+ * the error is eps (R r + r^2) instead. For a circle at least as large as the disk the direct
+ * form is the more accurate one (its x, y are small where it matters). */
+static inline double rim_excess(const cdk *k, double x, double y, double cs, double sn)
+{
+    if (!k->small_circle) return fma(x, x, fma(y, y, -k->R * k->R));
+    double a = k->X[1] * cs + k->X[2] * sn, b = k->Y[1] * cs + k->Y[2] * sn;
+    return k->E0 + (2.0 * (k->X[0] * a + k->Y[0] * b) + (a * a + b * b));
+}
+
 /* Offer the circle point at angle t with its closest disk point (the true point-disk distance). */
 static void cdk_offer(const cdk *k, double t, cd_best *b)
 {
@@ -150,16 +174,16 @@ static void cdk_offer(const cdk *k, double t, cd_best *b)
     sincos(t, &sn, &cs);
     double x = trig1(k->X, cs, sn), y = trig1(k->Y, cs, sn), z = trig1(k->Z, cs, sn);
     vec3 P = v_axpy(v_scale(k->rho * cs, k->A), k->rho * sn, k->B);
-    double q = fma(x, x, y * y);
+    double ex = rim_excess(k, x, y, cs, sn);
     vec3 K;
     double d2;
-    if (q <= k->R * k->R) {
+    if (ex <= 0.0) {
         K = v_axpy(P, -z, k->n); /* the projection onto the plane */
         d2 = z * z;
     } else {
         double rho = hypot(x, y), s = k->R / rho;
         K = v_axpy(v_axpy(k->D, s * x, k->u), s * y, k->v);
-        double dr = rho - k->R;
+        double dr = k->small_circle ? ex / (rho + k->R) : rho - k->R;
         d2 = fma(dr, dr, z * z);
     }
     cd_best_offer(b, d2, P, K, k->rho > 0.0 ? wrap_angle(t) : NAN, polar_angle(x, y));
@@ -567,12 +591,14 @@ cdist_status cdist_circle_disk(cdist_query *q, const cdist_circle *c, const cdis
     vec3 offset = a.c;
     a.c = v3(0, 0, 0);
     e.c = v_sub(e.c, offset);
+    int ex = cd_circles_scale(&a, &e);
     cd_best best;
     cd_best_init(&best, fmax(fmax(a.r, e.r), v_norm(e.c)));
     cdist_method m = cd_pick_method(q, CD_DISK_METHODS, CD_DISK_AUTO), used;
     if ((st = circle_disk_core(q, m, &a, &e, &best, &used))) return st;
     if (best.n == 0) return cd_fail(q, CDIST_ERR_INTERNAL, "circle-disk found no candidate");
-    cd_best_to_result(&best, offset, 0, r);
+    cd_best_to_result(&best, v3(0, 0, 0), 0, r);
+    cd_circles_unscale_result(r, ex, offset);
     return cd_ok(q, r, used);
 }
 
@@ -606,6 +632,7 @@ cdist_status cdist_disk_disk(cdist_query *q, const cdist_circle *d0, const cdist
     vec3 offset = a.c;
     a.c = v3(0, 0, 0);
     e.c = v_sub(e.c, offset);
+    int ex = cd_circles_scale(&a, &e);
     cd_best best;
     cd_best_init(&best, fmax(fmax(a.r, e.r), v_norm(e.c)));
     cdist_method m = cd_pick_method(q, CD_DISK_METHODS, CD_DISK_AUTO), used0, used1;
@@ -627,6 +654,7 @@ cdist_status cdist_disk_disk(cdist_query *q, const cdist_circle *d0, const cdist
     if (cd_best_is_equidistant(&b0)) settle_equidistant(&best, d0sq);
     if (cd_best_is_equidistant(&b1)) settle_equidistant(&best, d1sq);
     convex_contact(&best);
-    cd_best_to_result(&best, offset, swap, r);
+    cd_best_to_result(&best, v3(0, 0, 0), swap, r);
+    cd_circles_unscale_result(r, ex, offset);
     return cd_ok(q, r, used0 == CDIST_METHOD_ROBUST || used1 == CDIST_METHOD_ROBUST ? CDIST_METHOD_ROBUST : m);
 }

@@ -35,6 +35,14 @@ cdist_status cd_cc_iteration(cdist_query *q, const cd_circle *c0, const cd_circl
  * count (at most cap), or -1 when the function is constant (every angle critical). */
 int cd_circle_circle_critical(cdist_query *q, const cd_circle *c0, const cd_circle *c1, double *theta0, int cap);
 
+/* The circles family's one scaling rule (src/base/numeric.h): a at the origin, b relative to it;
+ * both scaled by the power of two 2^-e that brings L = max(radii, |b centre|) into [1, 2).
+ * Returns e. cd_circles_unscale_result undoes it on a result written with a zero offset and
+ * then adds `offset` (the translation removed): exact, so tiny and huge inputs (1e-300, 1e150)
+ * get the answer of their unit-scale copy. */
+int cd_circles_scale(cd_circle *a, cd_circle *b);
+void cd_circles_unscale_result(cdist_result *r, int e, vec3 offset);
+
 /* Circle c to disk d (c->c at the origin, d relative to it). */
 cdist_status cd_circle_disk_core(cdist_query *q, cdist_method method, const cd_circle *c, const cd_circle *d,
                                  cd_best *b);

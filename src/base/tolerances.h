@@ -116,4 +116,12 @@
 #define CD_SEG_ARC_WINDOW_REL 1e-9
 #define CD_SEG_ARC_WINDOW_ULPS 4.0
 
+/* ---- circles family (src/circles: circle-circle, circle-disk, disk-disk) ---- */
+
+/* Circle-circle, scaled units (L in [1, 2)): the planes are parallel when the parameterised
+ * circle's height over the other's plane varies by at most CD_CC_PARALLEL_ULPS * eps * L (the
+ * rounding of a unit normal's components); the closed form (distance-to-circles-3d §5.2) then
+ * errs by at most twice that in the distance. */
+#define CD_CC_PARALLEL_ULPS 1.0
+
 #endif
