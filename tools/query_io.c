@@ -10,27 +10,76 @@
 #define ARC_COLS "Cx Cy Cz Nx Ny Nz r Ux Uy Uz start end"
 #define CIRC_COLS "Cx Cy Cz Nx Ny Nz r"
 
+static cdist_vec3 vec_at(const double *v) { cdist_vec3 r = {v[0], v[1], v[2]}; return r; }
+
+static cdist_circle circle_at(const double *v)
+{
+    cdist_circle c = {vec_at(v), vec_at(v + 3), v[6]};
+    return c;
+}
+
+static cdist_arc arc_at(const double *v)
+{
+    cdist_arc a = {circle_at(v), vec_at(v + 7), v[10], v[11]};
+    return a;
+}
+
+static cdist_helix helix_at(const double *v)
+{
+    cdist_helix h = {vec_at(v), vec_at(v + 3), vec_at(v + 6), v[9], v[10], v[11], v[12]};
+    return h;
+}
+
+static cdist_bezier3 bezier_at(const double *v)
+{
+    cdist_bezier3 b;
+    for (int i = 0; i < 4; i++) b.p[i] = vec_at(v + 3 * i);
+    return b;
+}
+
+/* One runner per kind: the numbers of a line -> the public call. */
+#define SEG_AT(v) cdist_segment seg = {vec_at(v), vec_at((v) + 3)}
+static cdist_status run_pc(cdist_query *q, const double *v, cdist_result *r) { cdist_vec3 p = vec_at(v); cdist_circle c = circle_at(v + 3); return cdist_point_circle(q, &p, &c, r); }
+static cdist_status run_pd(cdist_query *q, const double *v, cdist_result *r) { cdist_vec3 p = vec_at(v); cdist_circle c = circle_at(v + 3); return cdist_point_disk(q, &p, &c, r); }
+static cdist_status run_lc(cdist_query *q, const double *v, cdist_result *r) { cdist_line l = {vec_at(v), vec_at(v + 3)}; cdist_circle c = circle_at(v + 6); return cdist_line_circle(q, &l, &c, r); }
+static cdist_status run_rc(cdist_query *q, const double *v, cdist_result *r) { cdist_ray l = {vec_at(v), vec_at(v + 3)}; cdist_circle c = circle_at(v + 6); return cdist_ray_circle(q, &l, &c, r); }
+static cdist_status run_sc(cdist_query *q, const double *v, cdist_result *r) { SEG_AT(v); cdist_circle c = circle_at(v + 6); return cdist_segment_circle(q, &seg, &c, r); }
+static cdist_status run_ld(cdist_query *q, const double *v, cdist_result *r) { cdist_line l = {vec_at(v), vec_at(v + 3)}; cdist_circle c = circle_at(v + 6); return cdist_line_disk(q, &l, &c, r); }
+static cdist_status run_rd(cdist_query *q, const double *v, cdist_result *r) { cdist_ray l = {vec_at(v), vec_at(v + 3)}; cdist_circle c = circle_at(v + 6); return cdist_ray_disk(q, &l, &c, r); }
+static cdist_status run_sd(cdist_query *q, const double *v, cdist_result *r) { SEG_AT(v); cdist_circle c = circle_at(v + 6); return cdist_segment_disk(q, &seg, &c, r); }
+static cdist_status run_cc(cdist_query *q, const double *v, cdist_result *r) { cdist_circle a = circle_at(v), b = circle_at(v + 7); return cdist_circle_circle(q, &a, &b, r); }
+static cdist_status run_cd(cdist_query *q, const double *v, cdist_result *r) { cdist_circle a = circle_at(v), b = circle_at(v + 7); return cdist_circle_disk(q, &a, &b, r); }
+static cdist_status run_dd(cdist_query *q, const double *v, cdist_result *r) { cdist_circle a = circle_at(v), b = circle_at(v + 7); return cdist_disk_disk(q, &a, &b, r); }
+static cdist_status run_ac(cdist_query *q, const double *v, cdist_result *r) { cdist_arc a = arc_at(v); cdist_circle c = circle_at(v + 12); return cdist_arc_circle(q, &a, &c, r); }
+static cdist_status run_aa(cdist_query *q, const double *v, cdist_result *r) { cdist_arc a = arc_at(v), b = arc_at(v + 12); return cdist_arc_arc(q, &a, &b, r); }
+static cdist_status run_sa(cdist_query *q, const double *v, cdist_result *r) { SEG_AT(v); cdist_arc a = arc_at(v + 6); return cdist_segment_arc(q, &seg, &a, r); }
+static cdist_status run_ad(cdist_query *q, const double *v, cdist_result *r) { cdist_arc a = arc_at(v); cdist_circle c = circle_at(v + 12); return cdist_arc_disk(q, &a, &c, r); }
+static cdist_status run_hc(cdist_query *q, const double *v, cdist_result *r) { cdist_helix h = helix_at(v); cdist_circle c = circle_at(v + 13); return cdist_helix_circle(q, &h, &c, r); }
+static cdist_status run_hd(cdist_query *q, const double *v, cdist_result *r) { cdist_helix h = helix_at(v); cdist_circle c = circle_at(v + 13); return cdist_helix_disk(q, &h, &c, r); }
+static cdist_status run_bc(cdist_query *q, const double *v, cdist_result *r) { cdist_bezier3 b = bezier_at(v); cdist_circle c = circle_at(v + 12); return cdist_bezier3_circle(q, &b, &c, r); }
+static cdist_status run_bd(cdist_query *q, const double *v, cdist_result *r) { cdist_bezier3 b = bezier_at(v); cdist_circle c = circle_at(v + 12); return cdist_bezier3_disk(q, &b, &c, r); }
+
 const cdq_kind cdq_kinds[] = {
-    {"pc", 10, "Px Py Pz  " CIRC_COLS, "point to circle"},
-    {"pd", 10, "Px Py Pz  " CIRC_COLS, "point to disk"},
-    {"lc", 13, "Bx By Bz  Mx My Mz  " CIRC_COLS, "line B + t M to circle"},
-    {"rc", 13, "Bx By Bz  Mx My Mz  " CIRC_COLS, "ray B + t M (t >= 0) to circle"},
-    {"sc", 13, "P0x P0y P0z  P1x P1y P1z  " CIRC_COLS, "segment P0 P1 to circle"},
-    {"cc", 14, "C0x C0y C0z N0x N0y N0z r0  C1x C1y C1z N1x N1y N1z r1", "circle to circle"},
-    {"ld", 13, "Bx By Bz  Mx My Mz  " CIRC_COLS, "line to disk"},
-    {"rd", 13, "Bx By Bz  Mx My Mz  " CIRC_COLS, "ray to disk"},
-    {"sd", 13, "P0x P0y P0z  P1x P1y P1z  " CIRC_COLS, "segment to disk"},
-    {"cd", 14, "C0x C0y C0z N0x N0y N0z r0  C1x C1y C1z N1x N1y N1z r1", "circle (first) to disk (second)"},
-    {"dd", 14, "C0x C0y C0z N0x N0y N0z r0  C1x C1y C1z N1x N1y N1z r1", "disk to disk"},
-    {"ac", 19, ARC_COLS "  " CIRC_COLS, "arc to circle"},
-    {"aa", 24, ARC_COLS "  " ARC_COLS, "arc to arc"},
-    {"sa", 18, "P0x P0y P0z  P1x P1y P1z  " ARC_COLS, "segment to arc"},
-    {"ad", 19, ARC_COLS "  " CIRC_COLS, "arc to disk"},
-    {"hc", 20, "Cx Cy Cz Ax Ay Az Ux Uy Uz r pitch t0 t1  " CIRC_COLS, "helix to circle"},
-    {"hd", 20, "Cx Cy Cz Ax Ay Az Ux Uy Uz r pitch t0 t1  " CIRC_COLS, "helix to disk"},
-    {"bc", 19, "P0x P0y P0z P1x P1y P1z P2x P2y P2z P3x P3y P3z  " CIRC_COLS, "cubic Bezier to circle"},
-    {"bd", 19, "P0x P0y P0z P1x P1y P1z P2x P2y P2z P3x P3y P3z  " CIRC_COLS, "cubic Bezier to disk"},
-    {NULL, 0, NULL, NULL},
+    {"pc", 10, run_pc, "Px Py Pz  " CIRC_COLS, "point to circle"},
+    {"pd", 10, run_pd, "Px Py Pz  " CIRC_COLS, "point to disk"},
+    {"lc", 13, run_lc, "Bx By Bz  Mx My Mz  " CIRC_COLS, "line B + t M to circle"},
+    {"rc", 13, run_rc, "Bx By Bz  Mx My Mz  " CIRC_COLS, "ray B + t M (t >= 0) to circle"},
+    {"sc", 13, run_sc, "P0x P0y P0z  P1x P1y P1z  " CIRC_COLS, "segment P0 P1 to circle"},
+    {"cc", 14, run_cc, "C0x C0y C0z N0x N0y N0z r0  C1x C1y C1z N1x N1y N1z r1", "circle to circle"},
+    {"ld", 13, run_ld, "Bx By Bz  Mx My Mz  " CIRC_COLS, "line to disk"},
+    {"rd", 13, run_rd, "Bx By Bz  Mx My Mz  " CIRC_COLS, "ray to disk"},
+    {"sd", 13, run_sd, "P0x P0y P0z  P1x P1y P1z  " CIRC_COLS, "segment to disk"},
+    {"cd", 14, run_cd, "C0x C0y C0z N0x N0y N0z r0  C1x C1y C1z N1x N1y N1z r1", "circle (first) to disk (second)"},
+    {"dd", 14, run_dd, "C0x C0y C0z N0x N0y N0z r0  C1x C1y C1z N1x N1y N1z r1", "disk to disk"},
+    {"ac", 19, run_ac, ARC_COLS "  " CIRC_COLS, "arc to circle"},
+    {"aa", 24, run_aa, ARC_COLS "  " ARC_COLS, "arc to arc"},
+    {"sa", 18, run_sa, "P0x P0y P0z  P1x P1y P1z  " ARC_COLS, "segment to arc"},
+    {"ad", 19, run_ad, ARC_COLS "  " CIRC_COLS, "arc to disk"},
+    {"hc", 20, run_hc, "Cx Cy Cz Ax Ay Az Ux Uy Uz r pitch t0 t1  " CIRC_COLS, "helix to circle"},
+    {"hd", 20, run_hd, "Cx Cy Cz Ax Ay Az Ux Uy Uz r pitch t0 t1  " CIRC_COLS, "helix to disk"},
+    {"bc", 19, run_bc, "P0x P0y P0z P1x P1y P1z P2x P2y P2z P3x P3y P3z  " CIRC_COLS, "cubic Bezier to circle"},
+    {"bd", 19, run_bd, "P0x P0y P0z P1x P1y P1z P2x P2y P2z P3x P3y P3z  " CIRC_COLS, "cubic Bezier to disk"},
+    {NULL, 0, NULL, NULL, NULL},
 };
 
 int cdq_parse(const char *line, cdq_line *out, char *err, size_t errlen)
@@ -88,64 +137,9 @@ int cdq_parse(const char *line, cdq_line *out, char *err, size_t errlen)
     return 1;
 }
 
-static cdist_vec3 vec_at(const double *v) { cdist_vec3 r = {v[0], v[1], v[2]}; return r; }
-
-static cdist_circle circle_at(const double *v)
-{
-    cdist_circle c = {vec_at(v), vec_at(v + 3), v[6]};
-    return c;
-}
-
-static cdist_arc arc_at(const double *v)
-{
-    cdist_arc a = {circle_at(v), vec_at(v + 7), v[10], v[11]};
-    return a;
-}
-
-static cdist_helix helix_at(const double *v)
-{
-    cdist_helix h = {vec_at(v), vec_at(v + 3), vec_at(v + 6), v[9], v[10], v[11], v[12]};
-    return h;
-}
-
-static cdist_bezier3 bezier_at(const double *v)
-{
-    cdist_bezier3 b;
-    for (int i = 0; i < 4; i++) b.p[i] = vec_at(v + 3 * i);
-    return b;
-}
-
 cdist_status cdq_run(cdist_query *q, const cdq_line *ql, cdist_result *r)
 {
-    const double *v = ql->v;
-    const char *k = ql->kind->name;
-    cdist_vec3 p = vec_at(v);
-    cdist_line line = {vec_at(v), vec_at(v + 3)};
-    cdist_ray ray = {vec_at(v), vec_at(v + 3)};
-    cdist_segment seg = {vec_at(v), vec_at(v + 3)};
-    if (!strcmp(k, "pc")) { cdist_circle c = circle_at(v + 3); return cdist_point_circle(q, &p, &c, r); }
-    if (!strcmp(k, "pd")) { cdist_circle c = circle_at(v + 3); return cdist_point_disk(q, &p, &c, r); }
-    if (!strcmp(k, "lc")) { cdist_circle c = circle_at(v + 6); return cdist_line_circle(q, &line, &c, r); }
-    if (!strcmp(k, "rc")) { cdist_circle c = circle_at(v + 6); return cdist_ray_circle(q, &ray, &c, r); }
-    if (!strcmp(k, "sc")) { cdist_circle c = circle_at(v + 6); return cdist_segment_circle(q, &seg, &c, r); }
-    if (!strcmp(k, "ld")) { cdist_circle c = circle_at(v + 6); return cdist_line_disk(q, &line, &c, r); }
-    if (!strcmp(k, "rd")) { cdist_circle c = circle_at(v + 6); return cdist_ray_disk(q, &ray, &c, r); }
-    if (!strcmp(k, "sd")) { cdist_circle c = circle_at(v + 6); return cdist_segment_disk(q, &seg, &c, r); }
-    if (!strcmp(k, "cc") || !strcmp(k, "cd") || !strcmp(k, "dd")) {
-        cdist_circle c0 = circle_at(v), c1 = circle_at(v + 7);
-        if (k[0] == 'c' && k[1] == 'c') return cdist_circle_circle(q, &c0, &c1, r);
-        if (k[0] == 'c') return cdist_circle_disk(q, &c0, &c1, r);
-        return cdist_disk_disk(q, &c0, &c1, r);
-    }
-    if (!strcmp(k, "ac")) { cdist_arc a = arc_at(v); cdist_circle c = circle_at(v + 12); return cdist_arc_circle(q, &a, &c, r); }
-    if (!strcmp(k, "ad")) { cdist_arc a = arc_at(v); cdist_circle c = circle_at(v + 12); return cdist_arc_disk(q, &a, &c, r); }
-    if (!strcmp(k, "aa")) { cdist_arc a = arc_at(v), b = arc_at(v + 12); return cdist_arc_arc(q, &a, &b, r); }
-    if (!strcmp(k, "sa")) { cdist_arc a = arc_at(v + 6); return cdist_segment_arc(q, &seg, &a, r); }
-    if (!strcmp(k, "hc")) { cdist_helix h = helix_at(v); cdist_circle c = circle_at(v + 13); return cdist_helix_circle(q, &h, &c, r); }
-    if (!strcmp(k, "hd")) { cdist_helix h = helix_at(v); cdist_circle c = circle_at(v + 13); return cdist_helix_disk(q, &h, &c, r); }
-    if (!strcmp(k, "bc")) { cdist_bezier3 b = bezier_at(v); cdist_circle c = circle_at(v + 12); return cdist_bezier3_circle(q, &b, &c, r); }
-    if (!strcmp(k, "bd")) { cdist_bezier3 b = bezier_at(v); cdist_circle c = circle_at(v + 12); return cdist_bezier3_disk(q, &b, &c, r); }
-    return CDIST_ERR_BAD_OPTION;
+    return ql->kind->run(q, ql->v, r);
 }
 
 static double dist3(const double *a, const double *b)

@@ -12,6 +12,8 @@
 typedef struct cdq_kind {
     const char *name;    /* e.g. "cc" */
     int nvalues;         /* numbers after the kind */
+    /* the public call for the numbers of a line */
+    cdist_status (*run)(cdist_query *q, const double *v, cdist_result *r);
     const char *columns; /* human-readable column list */
     const char *what;    /* human-readable description */
 } cdq_kind;
