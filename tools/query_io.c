@@ -60,27 +60,44 @@ static cdist_status run_bc(cdist_query *q, const double *v, cdist_result *r) { c
 static cdist_status run_bd(cdist_query *q, const double *v, cdist_result *r) { cdist_bezier3 b = bezier_at(v); cdist_circle c = circle_at(v + 12); return cdist_bezier3_disk(q, &b, &c, r); }
 
 const cdq_kind cdq_kinds[] = {
-    {"pc", 10, run_pc, "Px Py Pz  " CIRC_COLS, "point to circle"},
-    {"pd", 10, run_pd, "Px Py Pz  " CIRC_COLS, "point to disk"},
-    {"lc", 13, run_lc, "Bx By Bz  Mx My Mz  " CIRC_COLS, "line B + t M to circle"},
-    {"rc", 13, run_rc, "Bx By Bz  Mx My Mz  " CIRC_COLS, "ray B + t M (t >= 0) to circle"},
-    {"sc", 13, run_sc, "P0x P0y P0z  P1x P1y P1z  " CIRC_COLS, "segment P0 P1 to circle"},
-    {"cc", 14, run_cc, "C0x C0y C0z N0x N0y N0z r0  C1x C1y C1z N1x N1y N1z r1", "circle to circle"},
-    {"ld", 13, run_ld, "Bx By Bz  Mx My Mz  " CIRC_COLS, "line to disk"},
-    {"rd", 13, run_rd, "Bx By Bz  Mx My Mz  " CIRC_COLS, "ray to disk"},
-    {"sd", 13, run_sd, "P0x P0y P0z  P1x P1y P1z  " CIRC_COLS, "segment to disk"},
-    {"cd", 14, run_cd, "C0x C0y C0z N0x N0y N0z r0  C1x C1y C1z N1x N1y N1z r1", "circle (first) to disk (second)"},
-    {"dd", 14, run_dd, "C0x C0y C0z N0x N0y N0z r0  C1x C1y C1z N1x N1y N1z r1", "disk to disk"},
-    {"ac", 19, run_ac, ARC_COLS "  " CIRC_COLS, "arc to circle"},
-    {"aa", 24, run_aa, ARC_COLS "  " ARC_COLS, "arc to arc"},
-    {"sa", 18, run_sa, "P0x P0y P0z  P1x P1y P1z  " ARC_COLS, "segment to arc"},
-    {"ad", 19, run_ad, ARC_COLS "  " CIRC_COLS, "arc to disk"},
-    {"hc", 20, run_hc, "Cx Cy Cz Ax Ay Az Ux Uy Uz r pitch t0 t1  " CIRC_COLS, "helix to circle"},
-    {"hd", 20, run_hd, "Cx Cy Cz Ax Ay Az Ux Uy Uz r pitch t0 t1  " CIRC_COLS, "helix to disk"},
-    {"bc", 19, run_bc, "P0x P0y P0z P1x P1y P1z P2x P2y P2z P3x P3y P3z  " CIRC_COLS, "cubic Bezier to circle"},
-    {"bd", 19, run_bd, "P0x P0y P0z P1x P1y P1z P2x P2y P2z P3x P3y P3z  " CIRC_COLS, "cubic Bezier to disk"},
-    {NULL, 0, NULL, NULL, NULL},
+    {"pc", 10, run_pc, {6, 0}, "Px Py Pz  " CIRC_COLS, "point to circle"},
+    {"pd", 10, run_pd, {6, 0}, "Px Py Pz  " CIRC_COLS, "point to disk"},
+    {"lc", 13, run_lc, {3, 9}, "Bx By Bz  Mx My Mz  " CIRC_COLS, "line B + t M to circle"},
+    {"rc", 13, run_rc, {3, 9}, "Bx By Bz  Mx My Mz  " CIRC_COLS, "ray B + t M (t >= 0) to circle"},
+    {"sc", 13, run_sc, {9, 0}, "P0x P0y P0z  P1x P1y P1z  " CIRC_COLS, "segment P0 P1 to circle"},
+    {"cc", 14, run_cc, {3, 10}, "C0x C0y C0z N0x N0y N0z r0  C1x C1y C1z N1x N1y N1z r1", "circle to circle"},
+    {"ld", 13, run_ld, {3, 9}, "Bx By Bz  Mx My Mz  " CIRC_COLS, "line to disk"},
+    {"rd", 13, run_rd, {3, 9}, "Bx By Bz  Mx My Mz  " CIRC_COLS, "ray to disk"},
+    {"sd", 13, run_sd, {9, 0}, "P0x P0y P0z  P1x P1y P1z  " CIRC_COLS, "segment to disk"},
+    {"cd", 14, run_cd, {3, 10}, "C0x C0y C0z N0x N0y N0z r0  C1x C1y C1z N1x N1y N1z r1", "circle (first) to disk (second)"},
+    {"dd", 14, run_dd, {3, 10}, "C0x C0y C0z N0x N0y N0z r0  C1x C1y C1z N1x N1y N1z r1", "disk to disk"},
+    {"ac", 19, run_ac, {3, 15}, ARC_COLS "  " CIRC_COLS, "arc to circle"},
+    {"aa", 24, run_aa, {3, 15}, ARC_COLS "  " ARC_COLS, "arc to arc"},
+    {"sa", 18, run_sa, {9, 0}, "P0x P0y P0z  P1x P1y P1z  " ARC_COLS, "segment to arc"},
+    {"ad", 19, run_ad, {3, 15}, ARC_COLS "  " CIRC_COLS, "arc to disk"},
+    {"hc", 20, run_hc, {3, 16}, "Cx Cy Cz Ax Ay Az Ux Uy Uz r pitch t0 t1  " CIRC_COLS, "helix to circle"},
+    {"hd", 20, run_hd, {3, 16}, "Cx Cy Cz Ax Ay Az Ux Uy Uz r pitch t0 t1  " CIRC_COLS, "helix to disk"},
+    {"bc", 19, run_bc, {15, 0}, "P0x P0y P0z P1x P1y P1z P2x P2y P2z P3x P3y P3z  " CIRC_COLS, "cubic Bezier to circle"},
+    {"bd", 19, run_bd, {15, 0}, "P0x P0y P0z P1x P1y P1z P2x P2y P2z P3x P3y P3z  " CIRC_COLS, "cubic Bezier to disk"},
+    {NULL, 0, NULL, {0, 0}, NULL, NULL},
 };
+
+/* Whether a decimal or hexadecimal literal has a non-zero digit in its mantissa. */
+static int literal_nonzero(const char *s)
+{
+    int hex = 0;
+    while (*s == '+' || *s == '-') s++;
+    if (s[0] == '0' && (s[1] == 'x' || s[1] == 'X')) {
+        hex = 1;
+        s += 2;
+    }
+    for (; *s; s++) {
+        if (!hex && (*s == 'e' || *s == 'E')) break;
+        if (hex && (*s == 'p' || *s == 'P')) break;
+        if ((*s >= '1' && *s <= '9') || (hex && isxdigit((unsigned char)*s) && *s != '0')) return 1;
+    }
+    return 0;
+}
 
 int cdq_parse(const char *line, cdq_line *out, char *err, size_t errlen)
 {
@@ -98,7 +115,13 @@ int cdq_parse(const char *line, cdq_line *out, char *err, size_t errlen)
         }
     }
     if (!out->kind) {
-        snprintf(err, errlen, "unknown query kind '%.*s'", (int)(klen > 20 ? 20 : klen), k);
+        /* at most 20 bytes of it, never cut inside a UTF-8 sequence */
+        size_t shown = klen;
+        if (shown > 20) {
+            shown = 20;
+            while (shown > 0 && ((unsigned char)k[shown] & 0xC0) == 0x80) shown--;
+        }
+        snprintf(err, errlen, "unknown query kind '%.*s'%s", (int)shown, k, shown < klen ? "..." : "");
         return -1;
     }
     int n = 0;
@@ -126,6 +149,16 @@ int cdq_parse(const char *line, cdq_line *out, char *err, size_t errlen)
             snprintf(err, errlen, "number %d ('%s') is not a number", n + 1, buf);
             return -1;
         }
+        /* Out of range: overflow to infinity, or a non-zero literal read as 0 (underflow). A
+         * subnormal result is kept: it is the nearest double, only with fewer digits. */
+        if (errno == ERANGE && isinf(x)) {
+            snprintf(err, errlen, "number %d ('%s') is too large for a double", n + 1, buf);
+            return -1;
+        }
+        if (x == 0 && literal_nonzero(buf)) {
+            snprintf(err, errlen, "number %d ('%s') is too small for a double (it would be read as 0)", n + 1, buf);
+            return -1;
+        }
         out->v[n++] = x;
     }
     if (n != out->kind->nvalues) {
@@ -135,6 +168,22 @@ int cdq_parse(const char *line, cdq_line *out, char *err, size_t errlen)
     }
     out->nvalues = n;
     return 1;
+}
+
+void cdq_normalize(cdq_line *ql)
+{
+    for (int i = 0; i < 2; i++) {
+        int at = ql->kind->unit_at[i];
+        if (at == 0) continue;
+        double *v = ql->v + at;
+        double m = fmax(fabs(v[0]), fmax(fabs(v[1]), fabs(v[2])));
+        if (!(m > 0) || !isfinite(m)) continue;
+        double x = v[0] / m, y = v[1] / m, z = v[2] / m; /* scaled: no overflow or underflow */
+        double n = sqrt(x * x + y * y + z * z);
+        v[0] = x / n;
+        v[1] = y / n;
+        v[2] = z / n;
+    }
 }
 
 cdist_status cdq_run(cdist_query *q, const cdq_line *ql, cdist_result *r)

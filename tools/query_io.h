@@ -14,6 +14,7 @@ typedef struct cdq_kind {
     int nvalues;         /* numbers after the kind */
     /* the public call for the numbers of a line */
     cdist_status (*run)(cdist_query *q, const double *v, cdist_result *r);
+    int unit_at[2];      /* offsets of the vectors that must be unit length (0: none) */
     const char *columns; /* human-readable column list */
     const char *what;    /* human-readable description */
 } cdq_kind;
@@ -30,6 +31,10 @@ extern const cdq_kind cdq_kinds[];
 /* Parse one line. Returns 1 for a query, 0 for a blank or comment line, -1 for a bad line
  * (reason written to err). */
 int cdq_parse(const char *line, cdq_line *out, char *err, size_t errlen);
+
+/* Scales the vectors that must be unit length (normals, line directions, helix axes) to unit
+ * length, for hand-typed input. A zero vector is left as it is (the query reports it). */
+void cdq_normalize(cdq_line *ql);
 
 /* Run a parsed query. */
 cdist_status cdq_run(cdist_query *q, const cdq_line *ql, cdist_result *r);
