@@ -197,10 +197,11 @@ check(out.startswith("# distance num_pairs equidistant") and len(out.splitlines(
 
 # -j N: the same output, byte for byte, as one thread (every hard file, text and JSON).
 allhard = "".join(open(os.path.join(data, f)).read() for f in sorted(os.listdir(data)) if f.endswith("_hard.txt"))
-allhard += "pc 1 2\n" + "".join(lines)
+allhard += "pc 1 2\ncc 0 0 0  0 0 2  1  1 0 0  0 1 0  1\n" + "".join(lines)
 rc1, out1, _ = run(["-j", "1"], allhard)
 rc3, out3, _ = run(["-j", "3"], allhard)
-check(rc1 == 1 and rc3 == 1 and out1 == out3 and len(out1.splitlines()) > 1900, "-j 3 output equals -j 1")
+check(rc1 == 1 and rc3 == 1 and out1 == out3 and len(out1.splitlines()) > 1900 and "NOT_UNIT" in out3,
+      "-j 3 output equals -j 1 (library errors included)")
 rc3, out3j, _ = run(["--jobs=2", "--format=json"], allhard)
 rc1, out1j, _ = run(["--format=json"], allhard)
 check(out1j == out3j, "--jobs=2 JSON output equals one thread")

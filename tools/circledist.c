@@ -2,8 +2,7 @@
 #define _POSIX_C_SOURCE 200809L
 #include <errno.h>
 #include <math.h>
-#include <pthread.h>
-#include <stdatomic.h>
+#include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -37,7 +36,8 @@ static void usage(FILE *f)
             "  --normalize      scale normals, line and ray directions and helix axes to unit length\n"
             "                   (for hand-typed values such as 0.7071 0.7071 0); without it they must\n"
             "                   be unit length within 1e-6\n"
-            "  -j N, --jobs=N   answer with N threads (1..256; output order and values unchanged)\n"
+            "  -j N, --jobs=N   answer with N threads through cdist_batch (1..256; output order and\n"
+            "                   values unchanged)\n"
             "  --bench=N        read all input, answer it N times without printing answers, and\n"
             "                   print ns_per_query=<fastest of the N runs> (wall time per query;\n"
             "                   with several kinds also one 'kind=K queries=Q ns_per_query=T' line each)\n"
@@ -265,61 +265,81 @@ static void failure_reason(cdist_query *q, cdist_status st, char *err, size_t le
     }
 }
 
-typedef struct work {
-    item *items;
+/* Batch buffers for -j N > 1: the objects of one kind, gathered from a chunk. */
+typedef struct batch_buf {
+    char *a, *b;
+    size_t *index;
     cdist_result *res;
     cdist_status *st;
-    size_t n;
-    atomic_size_t next;
-} work;
+} batch_buf;
 
-typedef struct worker {
-    work *w;
-    cdist_query *q;
-} worker;
-
-enum { GRAIN = 16 }; /* queries a thread takes at a time */
-
-static void *work_loop(void *arg)
+static int batch_buf_init(batch_buf *bb, size_t n)
 {
-    worker *wk = arg;
-    work *w = wk->w;
-    size_t i;
-    while ((i = atomic_fetch_add(&w->next, GRAIN)) < w->n) {
-        size_t end = i + GRAIN < w->n ? i + GRAIN : w->n;
-        for (; i < end; i++) {
-            if (w->items[i].bad) continue;
-            w->st[i] = cdq_run(wk->q, &w->items[i].ql, &w->res[i]);
-            if (w->st[i] != CDIST_OK)
-                failure_reason(wk->q, w->st[i], w->items[i].err, sizeof w->items[i].err);
-        }
+    size_t sa = 0, sb = 0;
+    for (const cdq_kind *k = cdq_kinds; k->name; k++) {
+        size_t x = cdist_kind_size_a((cdist_kind)k->batch_kind), y = cdist_kind_size_b((cdist_kind)k->batch_kind);
+        sa = x > sa ? x : sa;
+        sb = y > sb ? y : sb;
     }
-    return NULL;
+    bb->a = malloc(n * sa);
+    bb->b = malloc(n * sb);
+    bb->index = malloc(n * sizeof *bb->index);
+    bb->res = malloc(n * sizeof *bb->res);
+    bb->st = malloc(n * sizeof *bb->st);
+    return bb->a && bb->b && bb->index && bb->res && bb->st;
 }
 
-/* Answers items[0..n) with one handle per thread (handles[0..jobs)); the calling thread works
- * too, and answers everything alone if no thread can be started. */
-static void answer(item *items, size_t n, cdist_result *res, cdist_status *st, cdist_query **handles, int jobs)
+static void batch_buf_free(batch_buf *bb)
 {
-    work w = {items, res, st, n, 0};
-    worker wk[256];
-    pthread_t th[256];
-    int started = 0;
-    if (jobs > 1 && n > GRAIN)
-        for (; started < jobs - 1; started++) {
-            wk[started + 1] = (worker){&w, handles[started + 1]};
-            if (pthread_create(&th[started], NULL, work_loop, &wk[started + 1]) != 0) break;
+    free(bb->a);
+    free(bb->b);
+    free(bb->index);
+    free(bb->res);
+    free(bb->st);
+}
+
+/* Answers items[0..n) (bad items are skipped). One thread: single queries. Several: the
+ * items of each kind go through cdist_batch(), which uses the handle's worker threads
+ * (results do not depend on the thread count); the per-entry error messages of failed
+ * entries come from answering them once more alone. */
+static void answer(item *items, size_t n, cdist_result *res, cdist_status *st, cdist_query *q, int jobs,
+                   batch_buf *bb)
+{
+    if (jobs <= 1) {
+        for (size_t i = 0; i < n; i++) {
+            if (items[i].bad) continue;
+            st[i] = cdq_run(q, &items[i].ql, &res[i]);
+            if (st[i] != CDIST_OK) failure_reason(q, st[i], items[i].err, sizeof items[i].err);
         }
-    wk[0] = (worker){&w, handles[0]};
-    work_loop(&wk[0]);
-    for (int t = 0; t < started; t++) pthread_join(th[t], NULL);
+        return;
+    }
+    for (const cdq_kind *k = cdq_kinds; k->name; k++) {
+        cdist_kind kind = (cdist_kind)k->batch_kind;
+        size_t sa = cdist_kind_size_a(kind), sb = cdist_kind_size_b(kind), m = 0;
+        for (size_t i = 0; i < n; i++) {
+            if (items[i].bad || items[i].ql.kind != k) continue;
+            k->objects(items[i].ql.v, bb->a + m * sa, bb->b + m * sb);
+            bb->index[m++] = i;
+        }
+        if (m == 0) continue;
+        cdist_batch(q, kind, m, bb->a, (ptrdiff_t)sa, bb->b, (ptrdiff_t)sb, bb->res, bb->st);
+        for (size_t j = 0; j < m; j++) {
+            size_t i = bb->index[j];
+            res[i] = bb->res[j];
+            st[i] = bb->st[j];
+            if (st[i] != CDIST_OK) {
+                cdist_result again;
+                failure_reason(q, cdq_run(q, &items[i].ql, &again), items[i].err, sizeof items[i].err);
+            }
+        }
+    }
 }
 
 static int stdout_failed(void) { return ferror(stdout) != 0; }
 
 /* Answers and prints the items of one input. Returns the number of bad lines. */
-static long process(FILE *in, const char *name, const settings *s, cdist_query **handles, item *items,
-                    cdist_result *res, cdist_status *st, char *buf)
+static long process(FILE *in, const char *name, const settings *s, cdist_query *q, item *items,
+                    cdist_result *res, cdist_status *st, batch_buf *bb, char *buf)
 {
     long lineno = 0, bad = 0;
     size_t chunk = s->jobs > 1 ? CHUNK : 1; /* -j1 streams: each answer as soon as it is read */
@@ -327,7 +347,7 @@ static long process(FILE *in, const char *name, const settings *s, cdist_query *
         size_t n = 0;
         while (n < chunk && next_item(in, name, &lineno, buf, s->normalize, &items[n])) n++;
         if (n == 0) break;
-        answer(items, n, res, st, handles, s->jobs);
+        answer(items, n, res, st, q, s->jobs, bb);
         for (size_t i = 0; i < n; i++) {
             if (items[i].bad || st[i] != CDIST_OK) {
                 print_error(s->fmt, name, items[i].lineno, items[i].err);
@@ -355,19 +375,19 @@ static double wall(void)
 }
 
 /* Fastest of `runs` answers of items[0..n), in ns per query. */
-static double time_items(item *items, size_t n, cdist_result *res, cdist_status *st, cdist_query **handles, int jobs,
-                         int runs)
+static double time_items(item *items, size_t n, cdist_result *res, cdist_status *st, cdist_query *q, int jobs,
+                         batch_buf *bb, int runs)
 {
     double best = INFINITY;
     for (int r = 0; r < runs; r++) {
         double t0 = wall();
-        answer(items, n, res, st, handles, jobs);
+        answer(items, n, res, st, q, jobs, bb);
         best = fmin(best, wall() - t0);
     }
     return 1e9 * best / (double)n;
 }
 
-static int bench(const settings *s, const char **files, int nfiles, cdist_query **handles, char *buf)
+static int bench(const settings *s, const char **files, int nfiles, cdist_query *q, char *buf)
 {
     size_t n = 0, cap = 1024;
     item *items = malloc(cap * sizeof *items);
@@ -401,7 +421,12 @@ static int bench(const settings *s, const char **files, int nfiles, cdist_query 
     }
     cdist_result *res = malloc(n * sizeof *res);
     cdist_status *st = malloc(n * sizeof *st);
-    double t = time_items(items, n, res, st, handles, s->jobs, s->bench);
+    batch_buf bb = {0};
+    if (s->jobs > 1 && !batch_buf_init(&bb, n)) {
+        fprintf(stderr, "circledist: out of memory\n");
+        exit(EXIT_USAGE);
+    }
+    double t = time_items(items, n, res, st, q, s->jobs, &bb, s->bench);
     for (size_t i = 0; i < n; i++)
         if (st[i] != CDIST_OK) {
             fprintf(stderr, "circledist: %s: error: line %ld: %s\n", items[i].file, items[i].lineno, items[i].err);
@@ -423,10 +448,11 @@ static int bench(const settings *s, const char **files, int nfiles, cdist_query 
                 if (items[i].ql.kind == k) sub[m++] = items[i];
             if (m)
                 printf("kind=%s queries=%zu ns_per_query=%.1f\n", k->name, m,
-                       time_items(sub, m, res, st, handles, s->jobs, s->bench));
+                       time_items(sub, m, res, st, q, s->jobs, &bb, s->bench));
         }
         free(sub);
     }
+    batch_buf_free(&bb);
     free(items);
     free(res);
     free(st);
@@ -497,24 +523,25 @@ int main(int argc, char **argv)
         }
     }
     if (nfiles == 0) files[nfiles++] = "-";
-    cdist_query *handles[256];
-    for (int t = 0; t < s.jobs; t++)
-        if (!(handles[t] = new_handle(&s))) {
-            fprintf(stderr, "circledist: out of memory\n");
-            return EXIT_USAGE;
-        }
+    cdist_query *q = new_handle(&s);
+    if (!q || (s.jobs > 1 && cdist_query_set_threads(q, s.jobs) != CDIST_OK)) {
+        fprintf(stderr, "circledist: cannot set up the query handle%s%s\n", q ? ": " : "",
+                q ? cdist_query_last_error(q) : "");
+        return EXIT_USAGE;
+    }
     char *buf = malloc(MAX_LINE + 1);
     size_t chunk = s.jobs > 1 ? CHUNK : 1;
     item *items = malloc(chunk * sizeof *items);
     cdist_result *res = malloc(chunk * sizeof *res);
     cdist_status *st = malloc(chunk * sizeof *st);
-    if (!buf || !items || !res || !st) {
+    batch_buf bb = {0};
+    if (!buf || !items || !res || !st || (s.jobs > 1 && !batch_buf_init(&bb, chunk))) {
         fprintf(stderr, "circledist: out of memory\n");
         return EXIT_USAGE;
     }
     int rc;
     if (s.bench) {
-        rc = bench(&s, files, nfiles, handles, buf);
+        rc = bench(&s, files, nfiles, q, buf);
     } else {
         long bad = 0;
         int open_failed = 0;
@@ -526,13 +553,14 @@ int main(int argc, char **argv)
                 open_failed = 1;
                 continue;
             }
-            bad += process(f, files[i], &s, handles, items, res, st, buf);
+            bad += process(f, files[i], &s, q, items, res, st, &bb, buf);
             if (f != stdin) fclose(f);
         }
         rc = (bad || open_failed) ? EXIT_BAD_LINES : 0;
     }
     free(files);
-    for (int t = 0; t < s.jobs; t++) cdist_query_free(handles[t]);
+    cdist_query_free(q);
+    batch_buf_free(&bb);
     free(buf);
     free(items);
     free(res);

@@ -37,49 +37,67 @@ static cdist_bezier3 bezier_at(const double *v)
     return b;
 }
 
-/* One runner per kind: the numbers of a line -> the public call. */
-#define SEG_AT(v) cdist_segment seg = {vec_at(v), vec_at((v) + 3)}
-static cdist_status run_pc(cdist_query *q, const double *v, cdist_result *r) { cdist_vec3 p = vec_at(v); cdist_circle c = circle_at(v + 3); return cdist_point_circle(q, &p, &c, r); }
-static cdist_status run_pd(cdist_query *q, const double *v, cdist_result *r) { cdist_vec3 p = vec_at(v); cdist_circle c = circle_at(v + 3); return cdist_point_disk(q, &p, &c, r); }
-static cdist_status run_lc(cdist_query *q, const double *v, cdist_result *r) { cdist_line l = {vec_at(v), vec_at(v + 3)}; cdist_circle c = circle_at(v + 6); return cdist_line_circle(q, &l, &c, r); }
-static cdist_status run_rc(cdist_query *q, const double *v, cdist_result *r) { cdist_ray l = {vec_at(v), vec_at(v + 3)}; cdist_circle c = circle_at(v + 6); return cdist_ray_circle(q, &l, &c, r); }
-static cdist_status run_sc(cdist_query *q, const double *v, cdist_result *r) { SEG_AT(v); cdist_circle c = circle_at(v + 6); return cdist_segment_circle(q, &seg, &c, r); }
-static cdist_status run_ld(cdist_query *q, const double *v, cdist_result *r) { cdist_line l = {vec_at(v), vec_at(v + 3)}; cdist_circle c = circle_at(v + 6); return cdist_line_disk(q, &l, &c, r); }
-static cdist_status run_rd(cdist_query *q, const double *v, cdist_result *r) { cdist_ray l = {vec_at(v), vec_at(v + 3)}; cdist_circle c = circle_at(v + 6); return cdist_ray_disk(q, &l, &c, r); }
-static cdist_status run_sd(cdist_query *q, const double *v, cdist_result *r) { SEG_AT(v); cdist_circle c = circle_at(v + 6); return cdist_segment_disk(q, &seg, &c, r); }
-static cdist_status run_cc(cdist_query *q, const double *v, cdist_result *r) { cdist_circle a = circle_at(v), b = circle_at(v + 7); return cdist_circle_circle(q, &a, &b, r); }
-static cdist_status run_cd(cdist_query *q, const double *v, cdist_result *r) { cdist_circle a = circle_at(v), b = circle_at(v + 7); return cdist_circle_disk(q, &a, &b, r); }
-static cdist_status run_dd(cdist_query *q, const double *v, cdist_result *r) { cdist_circle a = circle_at(v), b = circle_at(v + 7); return cdist_disk_disk(q, &a, &b, r); }
-static cdist_status run_ac(cdist_query *q, const double *v, cdist_result *r) { cdist_arc a = arc_at(v); cdist_circle c = circle_at(v + 12); return cdist_arc_circle(q, &a, &c, r); }
-static cdist_status run_aa(cdist_query *q, const double *v, cdist_result *r) { cdist_arc a = arc_at(v), b = arc_at(v + 12); return cdist_arc_arc(q, &a, &b, r); }
-static cdist_status run_sa(cdist_query *q, const double *v, cdist_result *r) { SEG_AT(v); cdist_arc a = arc_at(v + 6); return cdist_segment_arc(q, &seg, &a, r); }
-static cdist_status run_ad(cdist_query *q, const double *v, cdist_result *r) { cdist_arc a = arc_at(v); cdist_circle c = circle_at(v + 12); return cdist_arc_disk(q, &a, &c, r); }
-static cdist_status run_hc(cdist_query *q, const double *v, cdist_result *r) { cdist_helix h = helix_at(v); cdist_circle c = circle_at(v + 13); return cdist_helix_circle(q, &h, &c, r); }
-static cdist_status run_hd(cdist_query *q, const double *v, cdist_result *r) { cdist_helix h = helix_at(v); cdist_circle c = circle_at(v + 13); return cdist_helix_disk(q, &h, &c, r); }
-static cdist_status run_bc(cdist_query *q, const double *v, cdist_result *r) { cdist_bezier3 b = bezier_at(v); cdist_circle c = circle_at(v + 12); return cdist_bezier3_circle(q, &b, &c, r); }
-static cdist_status run_bd(cdist_query *q, const double *v, cdist_result *r) { cdist_bezier3 b = bezier_at(v); cdist_circle c = circle_at(v + 12); return cdist_bezier3_disk(q, &b, &c, r); }
+static cdist_line line_at(const double *v) { cdist_line l = {vec_at(v), vec_at(v + 3)}; return l; }
+static cdist_ray ray_at(const double *v) { cdist_ray l = {vec_at(v), vec_at(v + 3)}; return l; }
+static cdist_segment segment_at(const double *v) { cdist_segment l = {vec_at(v), vec_at(v + 3)}; return l; }
+
+/* Per kind, once: where its two objects are in a line (objects_KK) and the public call that
+ * answers them (run_KK). */
+#define KIND(kk, TA, A_AT, TB, B_AT, CALL)                                                         \
+    static void objects_##kk(const double *v, void *a, void *b)                                   \
+    {                                                                                              \
+        *(TA *)a = A_AT;                                                                           \
+        *(TB *)b = B_AT;                                                                           \
+    }                                                                                              \
+    static cdist_status run_##kk(cdist_query *q, const double *v, cdist_result *r)                 \
+    {                                                                                              \
+        TA a;                                                                                      \
+        TB b;                                                                                      \
+        objects_##kk(v, &a, &b);                                                                   \
+        return CALL(q, &a, &b, r);                                                                 \
+    }
+KIND(pc, cdist_vec3, vec_at(v), cdist_circle, circle_at(v + 3), cdist_point_circle)
+KIND(pd, cdist_vec3, vec_at(v), cdist_circle, circle_at(v + 3), cdist_point_disk)
+KIND(lc, cdist_line, line_at(v), cdist_circle, circle_at(v + 6), cdist_line_circle)
+KIND(rc, cdist_ray, ray_at(v), cdist_circle, circle_at(v + 6), cdist_ray_circle)
+KIND(sc, cdist_segment, segment_at(v), cdist_circle, circle_at(v + 6), cdist_segment_circle)
+KIND(ld, cdist_line, line_at(v), cdist_circle, circle_at(v + 6), cdist_line_disk)
+KIND(rd, cdist_ray, ray_at(v), cdist_circle, circle_at(v + 6), cdist_ray_disk)
+KIND(sd, cdist_segment, segment_at(v), cdist_circle, circle_at(v + 6), cdist_segment_disk)
+KIND(cc, cdist_circle, circle_at(v), cdist_circle, circle_at(v + 7), cdist_circle_circle)
+KIND(cd, cdist_circle, circle_at(v), cdist_circle, circle_at(v + 7), cdist_circle_disk)
+KIND(dd, cdist_circle, circle_at(v), cdist_circle, circle_at(v + 7), cdist_disk_disk)
+KIND(ac, cdist_arc, arc_at(v), cdist_circle, circle_at(v + 12), cdist_arc_circle)
+KIND(aa, cdist_arc, arc_at(v), cdist_arc, arc_at(v + 12), cdist_arc_arc)
+KIND(sa, cdist_segment, segment_at(v), cdist_arc, arc_at(v + 6), cdist_segment_arc)
+KIND(ad, cdist_arc, arc_at(v), cdist_circle, circle_at(v + 12), cdist_arc_disk)
+KIND(hc, cdist_helix, helix_at(v), cdist_circle, circle_at(v + 13), cdist_helix_circle)
+KIND(hd, cdist_helix, helix_at(v), cdist_circle, circle_at(v + 13), cdist_helix_disk)
+KIND(bc, cdist_bezier3, bezier_at(v), cdist_circle, circle_at(v + 12), cdist_bezier3_circle)
+KIND(bd, cdist_bezier3, bezier_at(v), cdist_circle, circle_at(v + 12), cdist_bezier3_disk)
+#undef KIND
 
 const cdq_kind cdq_kinds[] = {
-    {"pc", 10, run_pc, {6, 0}, "Px Py Pz  " CIRC_COLS, "point to circle"},
-    {"pd", 10, run_pd, {6, 0}, "Px Py Pz  " CIRC_COLS, "point to disk"},
-    {"lc", 13, run_lc, {3, 9}, "Bx By Bz  Mx My Mz  " CIRC_COLS, "line B + t M to circle"},
-    {"rc", 13, run_rc, {3, 9}, "Bx By Bz  Mx My Mz  " CIRC_COLS, "ray B + t M (t >= 0) to circle"},
-    {"sc", 13, run_sc, {9, 0}, "P0x P0y P0z  P1x P1y P1z  " CIRC_COLS, "segment P0 P1 to circle"},
-    {"cc", 14, run_cc, {3, 10}, "C0x C0y C0z N0x N0y N0z r0  C1x C1y C1z N1x N1y N1z r1", "circle to circle"},
-    {"ld", 13, run_ld, {3, 9}, "Bx By Bz  Mx My Mz  " CIRC_COLS, "line to disk"},
-    {"rd", 13, run_rd, {3, 9}, "Bx By Bz  Mx My Mz  " CIRC_COLS, "ray to disk"},
-    {"sd", 13, run_sd, {9, 0}, "P0x P0y P0z  P1x P1y P1z  " CIRC_COLS, "segment to disk"},
-    {"cd", 14, run_cd, {3, 10}, "C0x C0y C0z N0x N0y N0z r0  C1x C1y C1z N1x N1y N1z r1", "circle (first) to disk (second)"},
-    {"dd", 14, run_dd, {3, 10}, "C0x C0y C0z N0x N0y N0z r0  C1x C1y C1z N1x N1y N1z r1", "disk to disk"},
-    {"ac", 19, run_ac, {3, 15}, ARC_COLS "  " CIRC_COLS, "arc to circle"},
-    {"aa", 24, run_aa, {3, 15}, ARC_COLS "  " ARC_COLS, "arc to arc"},
-    {"sa", 18, run_sa, {9, 0}, "P0x P0y P0z  P1x P1y P1z  " ARC_COLS, "segment to arc"},
-    {"ad", 19, run_ad, {3, 15}, ARC_COLS "  " CIRC_COLS, "arc to disk"},
-    {"hc", 20, run_hc, {3, 16}, "Cx Cy Cz Ax Ay Az Ux Uy Uz r pitch t0 t1  " CIRC_COLS, "helix to circle"},
-    {"hd", 20, run_hd, {3, 16}, "Cx Cy Cz Ax Ay Az Ux Uy Uz r pitch t0 t1  " CIRC_COLS, "helix to disk"},
-    {"bc", 19, run_bc, {15, 0}, "P0x P0y P0z P1x P1y P1z P2x P2y P2z P3x P3y P3z  " CIRC_COLS, "cubic Bezier to circle"},
-    {"bd", 19, run_bd, {15, 0}, "P0x P0y P0z P1x P1y P1z P2x P2y P2z P3x P3y P3z  " CIRC_COLS, "cubic Bezier to disk"},
-    {NULL, 0, NULL, {0, 0}, NULL, NULL},
+    {"pc", 10, run_pc, objects_pc, 0, {6, 0}, "Px Py Pz  " CIRC_COLS, "point to circle"},
+    {"pd", 10, run_pd, objects_pd, 1, {6, 0}, "Px Py Pz  " CIRC_COLS, "point to disk"},
+    {"lc", 13, run_lc, objects_lc, 2, {3, 9}, "Bx By Bz  Mx My Mz  " CIRC_COLS, "line B + t M to circle"},
+    {"rc", 13, run_rc, objects_rc, 3, {3, 9}, "Bx By Bz  Mx My Mz  " CIRC_COLS, "ray B + t M (t >= 0) to circle"},
+    {"sc", 13, run_sc, objects_sc, 4, {9, 0}, "P0x P0y P0z  P1x P1y P1z  " CIRC_COLS, "segment P0 P1 to circle"},
+    {"cc", 14, run_cc, objects_cc, 5, {3, 10}, "C0x C0y C0z N0x N0y N0z r0  C1x C1y C1z N1x N1y N1z r1", "circle to circle"},
+    {"ld", 13, run_ld, objects_ld, 6, {3, 9}, "Bx By Bz  Mx My Mz  " CIRC_COLS, "line to disk"},
+    {"rd", 13, run_rd, objects_rd, 7, {3, 9}, "Bx By Bz  Mx My Mz  " CIRC_COLS, "ray to disk"},
+    {"sd", 13, run_sd, objects_sd, 8, {9, 0}, "P0x P0y P0z  P1x P1y P1z  " CIRC_COLS, "segment to disk"},
+    {"cd", 14, run_cd, objects_cd, 9, {3, 10}, "C0x C0y C0z N0x N0y N0z r0  C1x C1y C1z N1x N1y N1z r1", "circle (first) to disk (second)"},
+    {"dd", 14, run_dd, objects_dd, 10, {3, 10}, "C0x C0y C0z N0x N0y N0z r0  C1x C1y C1z N1x N1y N1z r1", "disk to disk"},
+    {"ac", 19, run_ac, objects_ac, 13, {3, 15}, ARC_COLS "  " CIRC_COLS, "arc to circle"},
+    {"aa", 24, run_aa, objects_aa, 14, {3, 15}, ARC_COLS "  " ARC_COLS, "arc to arc"},
+    {"sa", 18, run_sa, objects_sa, 15, {9, 0}, "P0x P0y P0z  P1x P1y P1z  " ARC_COLS, "segment to arc"},
+    {"ad", 19, run_ad, objects_ad, 16, {3, 15}, ARC_COLS "  " CIRC_COLS, "arc to disk"},
+    {"hc", 20, run_hc, objects_hc, 17, {3, 16}, "Cx Cy Cz Ax Ay Az Ux Uy Uz r pitch t0 t1  " CIRC_COLS, "helix to circle"},
+    {"hd", 20, run_hd, objects_hd, 18, {3, 16}, "Cx Cy Cz Ax Ay Az Ux Uy Uz r pitch t0 t1  " CIRC_COLS, "helix to disk"},
+    {"bc", 19, run_bc, objects_bc, 19, {15, 0}, "P0x P0y P0z P1x P1y P1z P2x P2y P2z P3x P3y P3z  " CIRC_COLS, "cubic Bezier to circle"},
+    {"bd", 19, run_bd, objects_bd, 20, {15, 0}, "P0x P0y P0z P1x P1y P1z P2x P2y P2z P3x P3y P3z  " CIRC_COLS, "cubic Bezier to disk"},
+    {NULL, 0, NULL, NULL, -1, {0, 0}, NULL, NULL},
 };
 
 /* Whether a decimal or hexadecimal literal has a non-zero digit in its mantissa. */

@@ -14,6 +14,9 @@ typedef struct cdq_kind {
     int nvalues;         /* numbers after the kind */
     /* the public call for the numbers of a line */
     cdist_status (*run)(cdist_query *q, const double *v, cdist_result *r);
+    /* its two objects (the public structs, e.g. cdist_line and cdist_circle) written to a, b */
+    void (*objects)(const double *v, void *a, void *b);
+    int batch_kind; /* its cdist_kind number (a plain int: builds without the batch API too) */
     int unit_at[2];      /* offsets of the vectors that must be unit length (0: none) */
     const char *columns; /* human-readable column list */
     const char *what;    /* human-readable description */
