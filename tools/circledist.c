@@ -494,9 +494,11 @@ int main(int argc, char **argv)
         }
         if (!strcmp(a, "--")) opts_done = 1;
         else if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
+            free(files);
             usage(stdout);
             return finish_output() ? EXIT_WRITE : 0;
         } else if (!strcmp(a, "--version")) {
+            free(files);
             printf("circledist %s (libcircledist %s)\n", CDIST_VERSION_STRING, cdist_version_string());
             return finish_output() ? EXIT_WRITE : 0;
         }
@@ -518,6 +520,7 @@ int main(int argc, char **argv)
                 fprintf(stderr, "circledist: bad value in '%s' (a number from 1 to 256 is needed)\n", a);
             else
                 fprintf(stderr, "circledist: unknown option '%s'\n", a);
+            free(files);
             usage(stderr);
             return EXIT_USAGE;
         }
