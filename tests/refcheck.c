@@ -8,7 +8,6 @@
 #include <string.h>
 
 #include "check.h"
-#include "errata.h"
 #include "query_io.h"
 
 static cdist_circle circle_at(const double *v)
@@ -29,12 +28,10 @@ int main(int argc, char **argv)
     const char *method = "auto";
     double tol = 1e-13;
     const char *files[2] = {NULL, NULL};
-    const char *errata = NULL;
     int nf = 0;
     for (int i = 1; i < argc; i++) {
         if (!strncmp(argv[i], "--method=", 9)) method = argv[i] + 9;
         else if (!strncmp(argv[i], "--tol=", 6)) tol = atof(argv[i] + 6);
-        else if (!strncmp(argv[i], "--errata=", 9)) errata = argv[i] + 9;
         else if (nf < 2) files[nf++] = argv[i];
     }
     if (nf != 2) {
@@ -69,11 +66,6 @@ int main(int argc, char **argv)
             break;
         }
         long double expected = strtold(eline, NULL);
-        long double fixed;
-        if (errata_lookup(errata, files[0], lineno, &fixed)) {
-            printf("line %ld: shared reference %.21Lg replaced by erratum %.21Lg\n", lineno, expected, fixed);
-            expected = fixed;
-        }
         nq++;
         cdist_result r;
         cdist_status st = cdq_run(q, &ql, &r);

@@ -10,84 +10,6 @@
 #define ARC_COLS "Cx Cy Cz Nx Ny Nz r Ux Uy Uz start end"
 #define CIRC_COLS "Cx Cy Cz Nx Ny Nz r"
 
-const cdq_kind cdq_kinds[] = {
-    {"pc", 10, "Px Py Pz  " CIRC_COLS, "point to circle"},
-    {"pd", 10, "Px Py Pz  " CIRC_COLS, "point to disk"},
-    {"lc", 13, "Bx By Bz  Mx My Mz  " CIRC_COLS, "line B + t M to circle"},
-    {"rc", 13, "Bx By Bz  Mx My Mz  " CIRC_COLS, "ray B + t M (t >= 0) to circle"},
-    {"sc", 13, "P0x P0y P0z  P1x P1y P1z  " CIRC_COLS, "segment P0 P1 to circle"},
-    {"cc", 14, "C0x C0y C0z N0x N0y N0z r0  C1x C1y C1z N1x N1y N1z r1", "circle to circle"},
-    {"ld", 13, "Bx By Bz  Mx My Mz  " CIRC_COLS, "line to disk"},
-    {"rd", 13, "Bx By Bz  Mx My Mz  " CIRC_COLS, "ray to disk"},
-    {"sd", 13, "P0x P0y P0z  P1x P1y P1z  " CIRC_COLS, "segment to disk"},
-    {"cd", 14, "C0x C0y C0z N0x N0y N0z r0  C1x C1y C1z N1x N1y N1z r1", "circle (first) to disk (second)"},
-    {"dd", 14, "C0x C0y C0z N0x N0y N0z r0  C1x C1y C1z N1x N1y N1z r1", "disk to disk"},
-    {"ac", 19, ARC_COLS "  " CIRC_COLS, "arc to circle"},
-    {"aa", 24, ARC_COLS "  " ARC_COLS, "arc to arc"},
-    {"sa", 18, "P0x P0y P0z  P1x P1y P1z  " ARC_COLS, "segment to arc"},
-    {"ad", 19, ARC_COLS "  " CIRC_COLS, "arc to disk"},
-    {"hc", 20, "Cx Cy Cz Ax Ay Az Ux Uy Uz r pitch t0 t1  " CIRC_COLS, "helix to circle"},
-    {"hd", 20, "Cx Cy Cz Ax Ay Az Ux Uy Uz r pitch t0 t1  " CIRC_COLS, "helix to disk"},
-    {"bc", 19, "P0x P0y P0z P1x P1y P1z P2x P2y P2z P3x P3y P3z  " CIRC_COLS, "cubic Bezier to circle"},
-    {"bd", 19, "P0x P0y P0z P1x P1y P1z P2x P2y P2z P3x P3y P3z  " CIRC_COLS, "cubic Bezier to disk"},
-    {NULL, 0, NULL, NULL},
-};
-
-int cdq_parse(const char *line, cdq_line *out, char *err, size_t errlen)
-{
-    const char *s = line;
-    while (*s && isspace((unsigned char)*s)) s++;
-    if (*s == '\0' || *s == '#') return 0;
-    const char *k = s;
-    while (*s && !isspace((unsigned char)*s) && *s != '#') s++;
-    size_t klen = (size_t)(s - k);
-    out->kind = NULL;
-    for (const cdq_kind *kd = cdq_kinds; kd->name; kd++) {
-        if (strlen(kd->name) == klen && strncmp(kd->name, k, klen) == 0) {
-            out->kind = kd;
-            break;
-        }
-    }
-    if (!out->kind) {
-        snprintf(err, errlen, "unknown query kind '%.*s'", (int)(klen > 20 ? 20 : klen), k);
-        return -1;
-    }
-    int n = 0;
-    for (;;) {
-        while (*s && isspace((unsigned char)*s)) s++;
-        if (*s == '\0' || *s == '#') break;
-        const char *tok = s;
-        while (*s && !isspace((unsigned char)*s) && *s != '#') s++;
-        if (n >= out->kind->nvalues) {
-            snprintf(err, errlen, "'%s' takes %d numbers, got more", out->kind->name, out->kind->nvalues);
-            return -1;
-        }
-        char buf[64];
-        size_t tl = (size_t)(s - tok);
-        if (tl >= sizeof buf) {
-            snprintf(err, errlen, "number %d is too long", n + 1);
-            return -1;
-        }
-        memcpy(buf, tok, tl);
-        buf[tl] = '\0';
-        char *end;
-        errno = 0;
-        double x = strtod(buf, &end);
-        if (end == buf || *end != '\0') {
-            snprintf(err, errlen, "number %d ('%s') is not a number", n + 1, buf);
-            return -1;
-        }
-        out->v[n++] = x;
-    }
-    if (n != out->kind->nvalues) {
-        snprintf(err, errlen, "'%s' takes %d numbers (%s), got %d", out->kind->name, out->kind->nvalues,
-                 out->kind->columns, n);
-        return -1;
-    }
-    out->nvalues = n;
-    return 1;
-}
-
 static cdist_vec3 vec_at(const double *v) { cdist_vec3 r = {v[0], v[1], v[2]}; return r; }
 
 static cdist_circle circle_at(const double *v)
@@ -115,37 +37,176 @@ static cdist_bezier3 bezier_at(const double *v)
     return b;
 }
 
+static cdist_line line_at(const double *v) { cdist_line l = {vec_at(v), vec_at(v + 3)}; return l; }
+static cdist_ray ray_at(const double *v) { cdist_ray l = {vec_at(v), vec_at(v + 3)}; return l; }
+static cdist_segment segment_at(const double *v) { cdist_segment l = {vec_at(v), vec_at(v + 3)}; return l; }
+
+/* Per kind, once: where its two objects are in a line (objects_KK) and the public call that
+ * answers them (run_KK). */
+#define KIND(kk, TA, A_AT, TB, B_AT, CALL)                                                         \
+    static void objects_##kk(const double *v, void *a, void *b)                                   \
+    {                                                                                              \
+        *(TA *)a = A_AT;                                                                           \
+        *(TB *)b = B_AT;                                                                           \
+    }                                                                                              \
+    static cdist_status run_##kk(cdist_query *q, const double *v, cdist_result *r)                 \
+    {                                                                                              \
+        TA a;                                                                                      \
+        TB b;                                                                                      \
+        objects_##kk(v, &a, &b);                                                                   \
+        return CALL(q, &a, &b, r);                                                                 \
+    }
+KIND(pc, cdist_vec3, vec_at(v), cdist_circle, circle_at(v + 3), cdist_point_circle)
+KIND(pd, cdist_vec3, vec_at(v), cdist_circle, circle_at(v + 3), cdist_point_disk)
+KIND(lc, cdist_line, line_at(v), cdist_circle, circle_at(v + 6), cdist_line_circle)
+KIND(rc, cdist_ray, ray_at(v), cdist_circle, circle_at(v + 6), cdist_ray_circle)
+KIND(sc, cdist_segment, segment_at(v), cdist_circle, circle_at(v + 6), cdist_segment_circle)
+KIND(ld, cdist_line, line_at(v), cdist_circle, circle_at(v + 6), cdist_line_disk)
+KIND(rd, cdist_ray, ray_at(v), cdist_circle, circle_at(v + 6), cdist_ray_disk)
+KIND(sd, cdist_segment, segment_at(v), cdist_circle, circle_at(v + 6), cdist_segment_disk)
+KIND(cc, cdist_circle, circle_at(v), cdist_circle, circle_at(v + 7), cdist_circle_circle)
+KIND(cd, cdist_circle, circle_at(v), cdist_circle, circle_at(v + 7), cdist_circle_disk)
+KIND(dd, cdist_circle, circle_at(v), cdist_circle, circle_at(v + 7), cdist_disk_disk)
+KIND(ac, cdist_arc, arc_at(v), cdist_circle, circle_at(v + 12), cdist_arc_circle)
+KIND(aa, cdist_arc, arc_at(v), cdist_arc, arc_at(v + 12), cdist_arc_arc)
+KIND(sa, cdist_segment, segment_at(v), cdist_arc, arc_at(v + 6), cdist_segment_arc)
+KIND(ad, cdist_arc, arc_at(v), cdist_circle, circle_at(v + 12), cdist_arc_disk)
+KIND(hc, cdist_helix, helix_at(v), cdist_circle, circle_at(v + 13), cdist_helix_circle)
+KIND(hd, cdist_helix, helix_at(v), cdist_circle, circle_at(v + 13), cdist_helix_disk)
+KIND(bc, cdist_bezier3, bezier_at(v), cdist_circle, circle_at(v + 12), cdist_bezier3_circle)
+KIND(bd, cdist_bezier3, bezier_at(v), cdist_circle, circle_at(v + 12), cdist_bezier3_disk)
+#undef KIND
+
+const cdq_kind cdq_kinds[] = {
+    {"pc", 10, run_pc, objects_pc, 0, {6, 0}, "Px Py Pz  " CIRC_COLS, "point to circle"},
+    {"pd", 10, run_pd, objects_pd, 1, {6, 0}, "Px Py Pz  " CIRC_COLS, "point to disk"},
+    {"lc", 13, run_lc, objects_lc, 2, {3, 9}, "Bx By Bz  Mx My Mz  " CIRC_COLS, "line B + t M to circle"},
+    {"rc", 13, run_rc, objects_rc, 3, {3, 9}, "Bx By Bz  Mx My Mz  " CIRC_COLS, "ray B + t M (t >= 0) to circle"},
+    {"sc", 13, run_sc, objects_sc, 4, {9, 0}, "P0x P0y P0z  P1x P1y P1z  " CIRC_COLS, "segment P0 P1 to circle"},
+    {"cc", 14, run_cc, objects_cc, 5, {3, 10}, "C0x C0y C0z N0x N0y N0z r0  C1x C1y C1z N1x N1y N1z r1", "circle to circle"},
+    {"ld", 13, run_ld, objects_ld, 6, {3, 9}, "Bx By Bz  Mx My Mz  " CIRC_COLS, "line to disk"},
+    {"rd", 13, run_rd, objects_rd, 7, {3, 9}, "Bx By Bz  Mx My Mz  " CIRC_COLS, "ray to disk"},
+    {"sd", 13, run_sd, objects_sd, 8, {9, 0}, "P0x P0y P0z  P1x P1y P1z  " CIRC_COLS, "segment to disk"},
+    {"cd", 14, run_cd, objects_cd, 9, {3, 10}, "C0x C0y C0z N0x N0y N0z r0  C1x C1y C1z N1x N1y N1z r1", "circle (first) to disk (second)"},
+    {"dd", 14, run_dd, objects_dd, 10, {3, 10}, "C0x C0y C0z N0x N0y N0z r0  C1x C1y C1z N1x N1y N1z r1", "disk to disk"},
+    {"ac", 19, run_ac, objects_ac, 13, {3, 15}, ARC_COLS "  " CIRC_COLS, "arc to circle"},
+    {"aa", 24, run_aa, objects_aa, 14, {3, 15}, ARC_COLS "  " ARC_COLS, "arc to arc"},
+    {"sa", 18, run_sa, objects_sa, 15, {9, 0}, "P0x P0y P0z  P1x P1y P1z  " ARC_COLS, "segment to arc"},
+    {"ad", 19, run_ad, objects_ad, 16, {3, 15}, ARC_COLS "  " CIRC_COLS, "arc to disk"},
+    {"hc", 20, run_hc, objects_hc, 17, {3, 16}, "Cx Cy Cz Ax Ay Az Ux Uy Uz r pitch t0 t1  " CIRC_COLS, "helix to circle"},
+    {"hd", 20, run_hd, objects_hd, 18, {3, 16}, "Cx Cy Cz Ax Ay Az Ux Uy Uz r pitch t0 t1  " CIRC_COLS, "helix to disk"},
+    {"bc", 19, run_bc, objects_bc, 19, {15, 0}, "P0x P0y P0z P1x P1y P1z P2x P2y P2z P3x P3y P3z  " CIRC_COLS, "cubic Bezier to circle"},
+    {"bd", 19, run_bd, objects_bd, 20, {15, 0}, "P0x P0y P0z P1x P1y P1z P2x P2y P2z P3x P3y P3z  " CIRC_COLS, "cubic Bezier to disk"},
+    {NULL, 0, NULL, NULL, -1, {0, 0}, NULL, NULL},
+};
+
+/* Whether a decimal or hexadecimal literal has a non-zero digit in its mantissa. */
+static int literal_nonzero(const char *s)
+{
+    int hex = 0;
+    while (*s == '+' || *s == '-') s++;
+    if (s[0] == '0' && (s[1] == 'x' || s[1] == 'X')) {
+        hex = 1;
+        s += 2;
+    }
+    for (; *s; s++) {
+        if (!hex && (*s == 'e' || *s == 'E')) break;
+        if (hex && (*s == 'p' || *s == 'P')) break;
+        if ((*s >= '1' && *s <= '9') || (hex && isxdigit((unsigned char)*s) && *s != '0')) return 1;
+    }
+    return 0;
+}
+
+int cdq_parse(const char *line, cdq_line *out, char *err, size_t errlen)
+{
+    const char *s = line;
+    while (*s && isspace((unsigned char)*s)) s++;
+    if (*s == '\0' || *s == '#') return 0;
+    const char *k = s;
+    while (*s && !isspace((unsigned char)*s) && *s != '#') s++;
+    size_t klen = (size_t)(s - k);
+    out->kind = NULL;
+    for (const cdq_kind *kd = cdq_kinds; kd->name; kd++) {
+        if (strlen(kd->name) == klen && strncmp(kd->name, k, klen) == 0) {
+            out->kind = kd;
+            break;
+        }
+    }
+    if (!out->kind) {
+        /* at most 20 bytes of it, never cut inside a UTF-8 sequence */
+        size_t shown = klen;
+        if (shown > 20) {
+            shown = 20;
+            while (shown > 0 && ((unsigned char)k[shown] & 0xC0) == 0x80) shown--;
+        }
+        snprintf(err, errlen, "unknown query kind '%.*s'%s", (int)shown, k, shown < klen ? "..." : "");
+        return -1;
+    }
+    int n = 0;
+    for (;;) {
+        while (*s && isspace((unsigned char)*s)) s++;
+        if (*s == '\0' || *s == '#') break;
+        const char *tok = s;
+        while (*s && !isspace((unsigned char)*s) && *s != '#') s++;
+        if (n >= out->kind->nvalues) {
+            snprintf(err, errlen, "'%s' takes %d numbers, got more", out->kind->name, out->kind->nvalues);
+            return -1;
+        }
+        char buf[64];
+        size_t tl = (size_t)(s - tok);
+        if (tl >= sizeof buf) {
+            snprintf(err, errlen, "number %d is too long", n + 1);
+            return -1;
+        }
+        memcpy(buf, tok, tl);
+        buf[tl] = '\0';
+        char *end;
+        errno = 0;
+        double x = strtod(buf, &end);
+        if (end == buf || *end != '\0') {
+            snprintf(err, errlen, "number %d ('%s') is not a number", n + 1, buf);
+            return -1;
+        }
+        /* Out of range: overflow to infinity, or a non-zero literal read as 0 (underflow). A
+         * subnormal result is kept: it is the nearest double, only with fewer digits. */
+        if (errno == ERANGE && isinf(x)) {
+            snprintf(err, errlen, "number %d ('%s') is too large for a double", n + 1, buf);
+            return -1;
+        }
+        if (x == 0 && literal_nonzero(buf)) {
+            snprintf(err, errlen, "number %d ('%s') is too small for a double (it would be read as 0)", n + 1, buf);
+            return -1;
+        }
+        out->v[n++] = x;
+    }
+    if (n != out->kind->nvalues) {
+        snprintf(err, errlen, "'%s' takes %d numbers (%s), got %d", out->kind->name, out->kind->nvalues,
+                 out->kind->columns, n);
+        return -1;
+    }
+    out->nvalues = n;
+    return 1;
+}
+
+void cdq_normalize(cdq_line *ql)
+{
+    for (int i = 0; i < 2; i++) {
+        int at = ql->kind->unit_at[i];
+        if (at == 0) continue;
+        double *v = ql->v + at;
+        double m = fmax(fabs(v[0]), fmax(fabs(v[1]), fabs(v[2])));
+        if (!(m > 0) || !isfinite(m)) continue;
+        double x = v[0] / m, y = v[1] / m, z = v[2] / m; /* scaled: no overflow or underflow */
+        double n = sqrt(x * x + y * y + z * z);
+        v[0] = x / n;
+        v[1] = y / n;
+        v[2] = z / n;
+    }
+}
+
 cdist_status cdq_run(cdist_query *q, const cdq_line *ql, cdist_result *r)
 {
-    const double *v = ql->v;
-    const char *k = ql->kind->name;
-    cdist_vec3 p = vec_at(v);
-    cdist_line line = {vec_at(v), vec_at(v + 3)};
-    cdist_ray ray = {vec_at(v), vec_at(v + 3)};
-    cdist_segment seg = {vec_at(v), vec_at(v + 3)};
-    if (!strcmp(k, "pc")) { cdist_circle c = circle_at(v + 3); return cdist_point_circle(q, &p, &c, r); }
-    if (!strcmp(k, "pd")) { cdist_circle c = circle_at(v + 3); return cdist_point_disk(q, &p, &c, r); }
-    if (!strcmp(k, "lc")) { cdist_circle c = circle_at(v + 6); return cdist_line_circle(q, &line, &c, r); }
-    if (!strcmp(k, "rc")) { cdist_circle c = circle_at(v + 6); return cdist_ray_circle(q, &ray, &c, r); }
-    if (!strcmp(k, "sc")) { cdist_circle c = circle_at(v + 6); return cdist_segment_circle(q, &seg, &c, r); }
-    if (!strcmp(k, "ld")) { cdist_circle c = circle_at(v + 6); return cdist_line_disk(q, &line, &c, r); }
-    if (!strcmp(k, "rd")) { cdist_circle c = circle_at(v + 6); return cdist_ray_disk(q, &ray, &c, r); }
-    if (!strcmp(k, "sd")) { cdist_circle c = circle_at(v + 6); return cdist_segment_disk(q, &seg, &c, r); }
-    if (!strcmp(k, "cc") || !strcmp(k, "cd") || !strcmp(k, "dd")) {
-        cdist_circle c0 = circle_at(v), c1 = circle_at(v + 7);
-        if (k[0] == 'c' && k[1] == 'c') return cdist_circle_circle(q, &c0, &c1, r);
-        if (k[0] == 'c') return cdist_circle_disk(q, &c0, &c1, r);
-        return cdist_disk_disk(q, &c0, &c1, r);
-    }
-    if (!strcmp(k, "ac")) { cdist_arc a = arc_at(v); cdist_circle c = circle_at(v + 12); return cdist_arc_circle(q, &a, &c, r); }
-    if (!strcmp(k, "ad")) { cdist_arc a = arc_at(v); cdist_circle c = circle_at(v + 12); return cdist_arc_disk(q, &a, &c, r); }
-    if (!strcmp(k, "aa")) { cdist_arc a = arc_at(v), b = arc_at(v + 12); return cdist_arc_arc(q, &a, &b, r); }
-    if (!strcmp(k, "sa")) { cdist_arc a = arc_at(v + 6); return cdist_segment_arc(q, &seg, &a, r); }
-    if (!strcmp(k, "hc")) { cdist_helix h = helix_at(v); cdist_circle c = circle_at(v + 13); return cdist_helix_circle(q, &h, &c, r); }
-    if (!strcmp(k, "hd")) { cdist_helix h = helix_at(v); cdist_circle c = circle_at(v + 13); return cdist_helix_disk(q, &h, &c, r); }
-    if (!strcmp(k, "bc")) { cdist_bezier3 b = bezier_at(v); cdist_circle c = circle_at(v + 12); return cdist_bezier3_circle(q, &b, &c, r); }
-    if (!strcmp(k, "bd")) { cdist_bezier3 b = bezier_at(v); cdist_circle c = circle_at(v + 12); return cdist_bezier3_disk(q, &b, &c, r); }
-    return CDIST_ERR_BAD_OPTION;
+    return ql->kind->run(q, ql->v, r);
 }
 
 static double dist3(const double *a, const double *b)

@@ -30,7 +30,14 @@ struct cdist_query {
     /* Set while a call uses the handle (cd_enter .. cd_leave): a second thread entering at the
      * same time gets CDIST_ERR_HANDLE_BUSY instead of corrupting the state above. */
     atomic_int busy;
+    struct cd_workers *workers; /* batch worker threads and their handles (src/batch); NULL = 1 thread */
 };
+
+/* Batch workers (src/batch/workers.c). cd_workers_free joins the threads and frees their handles
+ * (NULL allowed). cd_workers_sync gives every worker handle the options of q, sizing their
+ * workspaces (called by every option setter, so that a batch never allocates). */
+void cd_workers_free(struct cd_workers *w);
+cdist_status cd_workers_sync(cdist_query *q);
 
 
 /* ---- validation and status ---- */

@@ -3,7 +3,7 @@
  * distance within the reference tolerance of the scaled problem. Lines whose scaled numbers
  * would leave the accepted range (|x| > 1e150) or the normal doubles are skipped (counted).
  * Also the issue-10 regressions with hand-derived answers: tiny inputs, mixed scales.
- * usage: test_scaled [--tol=X] [--errata=FILE] QUERIES EXPECTED */
+ * usage: test_scaled [--tol=X] QUERIES EXPECTED */
 #include <float.h>
 #include <math.h>
 #include <stdio.h>
@@ -11,7 +11,6 @@
 #include <string.h>
 
 #include "circledist.h"
-#include "errata.h"
 #include "query_io.h"
 
 static int failures;
@@ -82,10 +81,8 @@ int main(int argc, char **argv)
 {
     double tol = 1e-12;
     int ai = 1;
-    const char *errata = NULL;
     for (; ai < argc && !strncmp(argv[ai], "--", 2); ai++) {
         if (!strncmp(argv[ai], "--tol=", 6)) tol = atof(argv[ai] + 6);
-        else if (!strncmp(argv[ai], "--errata=", 9)) errata = argv[ai] + 9;
     }
     cdist_query *q = cdist_query_new();
     regressions(q);
@@ -105,8 +102,6 @@ int main(int argc, char **argv)
             if (cdq_parse(line, &ql, err, sizeof err) != 1) continue;
             double want;
             if (fscanf(g, "%lf", &want) != 1) break;
-            long double exact;
-            if (errata_lookup(errata, argv[ai], lineno, &exact)) want = (double)exact;
             double L = cdq_scale(&ql, want);
             int k = -1000 + (n * 37) % 1501; /* stride through -1000 .. 500 */
             n++;

@@ -3,7 +3,7 @@
  * circle-disk reference distances (tests/data/cc_*, cd_*: computed independently) within
  * 1e-12 of scale (the callback: plus the rounding of its absolute positions), the circle in
  * both roles for cc. The pairs must realise the distance and lie on the objects.
- * usage: test_curve_cc [--samples=N] QUERIES EXPECTED [ERRATA] */
+ * usage: test_curve_cc [--samples=N] QUERIES EXPECTED */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -11,7 +11,6 @@
 
 #include "check.h"
 #include "circle_curve.h"
-#include "errata.h"
 #include "query_io.h"
 
 static double worst_arc = 0;
@@ -54,7 +53,7 @@ int main(int argc, char **argv)
     int ai = 1;
     if (ai < argc && !strncmp(argv[ai], "--samples=", 10)) samples = atoi(argv[ai++] + 10);
     if (argc - ai < 2) {
-        fprintf(stderr, "usage: test_curve_cc [--samples=N] QUERIES EXPECTED [ERRATA]\n");
+        fprintf(stderr, "usage: test_curve_cc [--samples=N] QUERIES EXPECTED\n");
         return 2;
     }
     FILE *fq = fopen(argv[ai], "r"), *fe = fopen(argv[ai + 1], "r");
@@ -72,8 +71,6 @@ int main(int argc, char **argv)
         if (cdq_parse(line, &ql, err, sizeof err) != 1) continue;
         if (!fgets(eline, sizeof eline, fe)) break;
         long double e = strtold(eline, NULL);
-        long double fixed;
-        if (argc - ai >= 3 && errata_lookup(argv[ai + 2], argv[ai], lineno, &fixed)) e = fixed;
         double L = cdq_scale(&ql, (double)e);
         int disk = !strcmp(ql.kind->name, "cd");
         cdist_circle c0 = {{ql.v[0], ql.v[1], ql.v[2]}, {ql.v[3], ql.v[4], ql.v[5]}, ql.v[6]};

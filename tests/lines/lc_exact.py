@@ -8,8 +8,7 @@ H(t) = |N x D|^2 (t + M.(B-C))^2 - r^2 (N x M . N x D)^2 (Eberly eq. (9)); all r
 with mpmath.polyroots at 60 digits, each real part is refined by Newton on F' in 60 digits and
 F is evaluated there; dense sampling (4096 points over [-R, R] around the point nearest the
 centre) plus golden-section refinement cross-checks the minimum. usage:
-lc_exact.py QUERIES [LINE...]   (prints one distance per query, or only the listed lines)
-lc_exact.py --verify-errata ERRATA DATA_DIR   (recomputes the lc_* entries of the errata file)"""
+lc_exact.py QUERIES [LINE...]   (prints one distance per query, or only the listed lines)"""
 import sys
 
 from mpmath import mp, mpf, sqrt, polyroots, fabs
@@ -94,24 +93,6 @@ def solve(v):
 
 
 def main():
-    if sys.argv[1] == "--verify-errata":
-        # Recompute every lc_* entry of the errata file: the value listed must be the exact
-        # distance (to 1e-20 relative), and the shared value must indeed be off (> 1e-14 of scale).
-        errata, data = sys.argv[2], sys.argv[3]
-        bad = n = 0
-        for line in open(errata):
-            f = line.split("#")[0].split()
-            if len(f) < 3 or not f[0].startswith("lc_"):
-                continue
-            name, k, value = f[0], int(f[1]), mpf(f[2])
-            q = [l for l in open(data + "/" + name) if l.split("#")[0].split()][k - 1].split()
-            d = solve([mpf(float(x)) for x in q[1:]])
-            n += 1
-            if abs(d - value) > mpf(10) ** -20 * max(d, mpf(10) ** -300):
-                bad += 1
-                print("%s %d: erratum %s but exact %s" % (name, k, mp.nstr(value, 25), mp.nstr(d, 25)))
-        print("lc errata verified: %d entries, %d wrong" % (n, bad))
-        sys.exit(1 if bad or n == 0 else 0)
     lines = [int(x) for x in sys.argv[2:]]
     k = 0
     for line in open(sys.argv[1]):
