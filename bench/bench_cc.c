@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Circle-circle benchmark: ns per query of each method on a query file (default
  * tests/data/cc_random.txt), plus the bare GSL solve of a degree-8 polynomial for comparison
  * with the polynomial method.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Disk queries: nanoseconds per query on the shared random cases, per method.
  * usage: bench_disk [--reps=N] DATA_DIR
  * ld_random.txt drives ld, rd and sd (the same numbers read as line, ray, segment); cd_random.txt

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* ns/query of line-circle for each method on a query file (default tests/data/lc_random.txt).
  * usage: bench_lines [PASSES] [FILE] [METHOD]   (reads the file with the tool's parser; METHOD
  * robust, polynomial or auto runs only that one) */

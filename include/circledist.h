@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /// @file circledist.h
 /// libcircledist: exact minimum distance and every closest pair between 3D circles, disks,
 /// points, lines, rays, segments, arcs and parametric curves.

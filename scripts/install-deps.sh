@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # Installs the build and test dependencies on Debian 12 (run as root). Idempotent: packages
 # already present are not fetched again.
 set -eu

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # The whole test suite: a release-style build and an ASan/UBSan build, every meson test in
 # both. Prints a closing "N passed, N failed" line. usage: scripts/test.sh
 set -u

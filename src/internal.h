@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Internal declarations shared by the query families. Nothing here is exported. */
 #ifndef CDIST_INTERNAL_H
 #define CDIST_INTERNAL_H

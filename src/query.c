@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The query handle, options, status strings, version, validation and result assembly. */
 #include <math.h>
 #include <stdarg.h>

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: MIT
 """The exported symbols, the version script and the public header agree.
 
 usage: check_symbols.py LIBRARY VERSION_SCRIPT HEADER

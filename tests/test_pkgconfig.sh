@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # Installs into a scratch prefix and builds + runs a small C program with
 # `pkg-config --cflags --libs circledist`. usage: test_pkgconfig.sh SOURCE_DIR SCRATCH_DIR
 set -eu

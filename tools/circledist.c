@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* circledist: answers distance queries, one output line per query line, in order. */
 #include <math.h>
 #include <stdio.h>

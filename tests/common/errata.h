@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Errata of the shared reference: lines "FILE_BASENAME LINE EXACT # why" in tests/data/errata.txt
  * for the few lines where the shared value is demonstrably off (exact mpmath values). */
 #ifndef CDIST_TEST_ERRATA_H

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: MIT
 """Recomputes the cd_* and ld_* lines of tests/data/errata.txt with the mpmath brute force of
 disk_exact.py and checks each erratum (to 1e-20 of scale) and that the shared value it replaces
 is really off by more than 1e-14 of scale.
