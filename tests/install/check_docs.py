@@ -2,9 +2,10 @@
 # SPDX-License-Identifier: MIT
 """The man pages are valid roff (groff -ww, when installed) and complete: circledist(1) documents
 every option and query kind that `circledist --help` lists; libcircledist(3) names every query
-function (every CDIST_API function taking a cdist_result) and every status of the header.
+function (every CDIST_API function taking a cdist_result) and every status of the header; the
+README's query table has a row for every query function and every tool kind.
 
-usage: check_man.py SOURCE_DIR TOOL
+usage: check_docs.py SOURCE_DIR TOOL
 """
 import os
 import re
@@ -50,4 +51,11 @@ status = re.search(r"typedef enum cdist_status \{(.*?)\}", header, re.S)
 for name, number in re.findall(r"\b(CDIST_\w+)\s*=\s*(\d+)", status.group(1) if status else ""):
     check(re.search(r"^%s\t%s$" % (number, name), text["libcircledist.3"], re.M) is not None,
           "libcircledist.3 does not list status %s = %s" % (name, number))
-finish("check_man")
+readme = open(os.path.join(src, "README.md")).read()
+rows = {m.group(1): m.group(2) for m in re.finditer(r"^\| `(cdist_\w+)` \| ([^|]*)\|", readme, re.M)}
+for q in queries:
+    check(q in rows, "README query table has no row for %s" % q)
+for kind in kinds:
+    check("`%s`" % kind in rows.values() or any("`%s`" % kind in v for v in rows.values()),
+          "README query table does not give tool kind %s" % kind)
+finish("check_docs")
