@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Speed of the curve and arc queries on random unit-scale inputs.
  * usage: bench_curve [COUNT]   (prints nanoseconds per query for each query kind) */
 #include <math.h>

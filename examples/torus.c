@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Torus-torus clearance: the distance between two tori is the distance between their core
  * circles minus the two tube radii (negative: they overlap). Build:
  *   cc torus.c $(pkg-config --cflags --libs circledist) -o torus */

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """ctypes binding for libcircledist (libcircledist.so.1).
 
     from circledist import Query, Circle

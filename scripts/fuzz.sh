@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # Coverage-guided fuzzing of the parser and every entry point with libFuzzer (clang).
 # usage: scripts/fuzz.sh [SECONDS]   (needs a configured ./build for the version header)
 set -eu

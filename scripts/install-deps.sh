@@ -1,8 +1,9 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # Installs the build and test dependencies on Debian 12 (run as root). Idempotent: packages
 # already present are not fetched again.
 set -eu
-pkgs="meson ninja-build pkg-config gcc g++ libgsl-dev binutils python3 python3-numpy python3-mpmath python3-pytest"
+pkgs="meson ninja-build pkg-config gcc g++ libgsl-dev binutils python3 python3-numpy python3-mpmath python3-pytest abigail-tools cmake"
 missing=""
 for p in $pkgs; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing="$missing $p"

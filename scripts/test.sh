@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # The whole test suite: a release-style build and an ASan/UBSan build, every meson test in
 # both except the `slow` suite (long brute-force runs), which runs too when CIRCLEDIST_SLOW=1
 # (as .ci/run does). Prints a closing "N passed, N failed" line.

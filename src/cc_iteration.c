@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Circle-circle by geometric iteration (Li, Wu, Wang, Zhang 2015; English summary in
  * ../shared/refs/README.md).
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Circle-circle by the degree-8 polynomial (Eberly, distance-to-circles-3d §5), plus the helpers
  * shared with the geometric iteration (src/cc_iteration.c): the true distance function with its
  * derivatives, the Newton polish, and the closed forms of the special configurations.

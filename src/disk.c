@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Lines, rays, segments, circles and disks to disks (point-curve-circle-to-disk §2-§4,
  * line-circle-disk §2; derivations in docs/disk.md).
  *

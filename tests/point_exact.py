@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: MIT
 """Exact point-circle / point-disk distances of a query file, for the doubles as given.
 
 An independent reference for tests (mpmath, 50 digits, closed form with |N x D| for the

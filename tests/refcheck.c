@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Reference test: runs every query of a query file and compares each distance with an
  * independently computed expected distance (../shared/cases/README.md: error = |d - e| / L).
  * Also checks that every reported pair lies on its objects and realises the distance.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* API contract: version, status names, handle options, NULL handling and bad input. */
 #include <string.h>
 

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: MIT
 """Cross-method and swap consistency through the circledist tool.
 
 - cc: every method gives the same pair count and equidistant flag on cc_random, and on

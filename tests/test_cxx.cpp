@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The public header compiles as C++ and its declarations link from C++.
 #include <circledist.h>
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Point-circle and point-disk: exact constructions, far-from-origin, near-axis, properties. */
 #include "check.h"
 

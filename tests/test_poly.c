@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The polynomial module (src/poly.c, compiled into this test): real roots, guards, and the
  * GSL error handler is never reached nor changed. The test is the host here, so it installs a
  * counting handler of its own: any call to it is a failure. */

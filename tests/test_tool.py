@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: MIT
 """The circledist tool: output format, JSON, bad lines, options.
 
 usage: test_tool.py CIRCLEDIST DATA_DIR

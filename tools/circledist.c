@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* circledist: answers distance queries, one output line per query line, in order. */
 #define _POSIX_C_SOURCE 200809L
 #include <errno.h>

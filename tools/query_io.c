@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #include "query_io.h"
 
 #include <ctype.h>

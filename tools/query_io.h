@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Query-line parsing and dispatch shared by the circledist tool and the tests.
  * Line format: KIND then whitespace-separated numbers; '#' starts a comment. */
 #ifndef CDIST_QUERY_IO_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Polynomial roots through gsl_poly_complex_solve, guarded so that GSL's error handler (which
  * aborts by default and belongs to the host process) is never reached:
  * - workspaces are built here with our own malloc (GSL's allocator reports out-of-memory

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The library's only contact with GSL's polynomial solver. GSL types stay inside poly.c. */
 #ifndef CDIST_POLY_H
 #define CDIST_POLY_H

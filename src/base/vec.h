@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Small internal 3D vector and frame module. Header-only: every function is static inline. */
 #ifndef CDIST_VEC_H
 #define CDIST_VEC_H

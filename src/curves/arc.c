@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Circular arcs: arc-circle, arc-arc, segment-arc, arc-disk.
  *
  * An arc's angle a is measured in its own frame U (zero_direction projected onto the plane),

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Parametric curves, helices and cubic Bezier curves to circles and disks: the generic
  * root-bounding engine (distance-to-circles-3d §3, point-curve-circle-to-disk §3). The arc
  * queries (src/curves/arc.c) use the same engine through the small interface in src/curves/curve_scan.h.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Lines, rays and segments to circles (Eberly, "Distance to Circles in 3D" §4; "Distance Between
  * Line and Circle or Disk in 3D" §1). Derivation notes: docs/lines.md.
  *

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """High-precision circle-circle distance (mpmath), independent of the library's algorithms.
 
 The circles are taken exactly as the given doubles (normals normalised in high precision).

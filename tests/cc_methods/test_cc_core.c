@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The polynomial and iteration cores called directly (the library's sources are compiled into
  * this test), so that a method failure cannot hide behind the dispatcher's fallback to the
  * robust method: every line of the reference files must be answered by the method itself with

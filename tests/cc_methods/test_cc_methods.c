@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Circle-circle POLYNOMIAL and ITERATION methods through the public API: the paper's worked
  * examples, exact constructions of every special family (pair counts and flags asserted),
  * symmetry, rigid-motion and scale invariance, the iteration count, and an independent long

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """Polynomial and iteration methods against our own 50-digit mpmath brute force (ccmp.py) on
 random linked and near-degenerate configurations not in the shared files: linked rings, nearly
 touching, nearly coplanar, nearly coaxial, centre near the other's axis, axes nearly meeting,

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """Independent high-precision circle-circle distance (mpmath, 50 digits) for the doubles of a
 query file, as an arbiter for the shared reference: for each line, both parameterisations are
 sampled densely in float64 (numpy), every sampled local minimum is refined in mpmath by

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Circle-circle: the paper's worked examples, exact constructions of every special family with
  * pair counts and flags, symmetry, rotation/translation/scale invariance, an independent long
  * double brute force on random linked and near-degenerate configurations, and the batch entry.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* cd_circle_circle_critical (internal; this test is linked with the library sources): every
  * critical angle of theta -> dist^2(c0(theta), c1) is found (checked against a long double
  * sampling of the function), every returned angle is critical or an axis crossing, -1 for the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Minimal test helpers: CHECK records a failure and goes on; check_summary() prints the
  * closing "N passed, N failed" line and gives the exit status. */
 #ifndef CDIST_TEST_CHECK_H

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """Shared helpers of the Python tests: check() counts, finish() prints the closing
 "N passed, N failed" line and exits non-zero on any failure."""
 import sys

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A circle as a cdist_curve_fn callback (t = angle), for curve tests and benchmarks. */
 #ifndef CDIST_TEST_CIRCLE_CURVE_H
 #define CDIST_TEST_CIRCLE_CURVE_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Independent brute-force references for the curve tests, in 80-bit long double: closed-form
  * point-to-circle/disk/arc/segment distances, and one-parameter minimisation by dense sampling
  * plus golden-section polishing of every sampled local minimum. Nothing here calls the library

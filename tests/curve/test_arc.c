@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Arc queries (arc-circle, arc-arc, segment-arc, arc-disk) against the long double brute force
  * of brute.h: random configurations, constructed degenerate ones (closest point at an endpoint,
  * the other circle's closest pair cut out of the arc, coplanar, concentric, coaxial, full and

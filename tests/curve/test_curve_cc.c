@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A circle passed as a callback curve over [0, 2 pi], and the same circle as a full arc
  * (its own zero_direction, range [a, a + 2 pi]), reproduce the shared circle-circle and
  * circle-disk reference distances (tests/data/cc_*, cd_*: computed independently) within

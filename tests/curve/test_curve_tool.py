@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: MIT
 """The circledist tool on the curve kinds ac aa sa ad hc hd bc bd.
 
 usage: test_curve_tool.py CIRCLEDIST

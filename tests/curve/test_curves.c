@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Callback curves, helices and cubic Bezier curves to circles and disks.
  *  - A segment passed as a callback curve reproduces the shared line-circle and line-disk
  *    reference distances (a window of the line that contains every critical point, see below)

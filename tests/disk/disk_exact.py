@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: MIT
 """High-precision brute force for the disk queries (ld, rd, sd, cd, dd), for the doubles as given.
 
 Independent of the library's algorithms: mpmath (40 digits), normals normalised exactly, the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Disk queries: exact constructions (pairs and flags asserted), a long double brute force for
  * ld/rd/sd/cd/dd on random and near-degenerate inputs, and properties (dd symmetry, invariance
  * under rotation, translation and scale, disk distance <= rim distance, pairs on the objects). */

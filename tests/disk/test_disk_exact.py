@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: MIT
 """rd, sd, ld, dd, cd against the mpmath brute force of disk_exact.py on random and
 near-degenerate inputs (moved by random rotations, scales and translations), through the
 circledist tool. Checks the distance within 1e-12 of scale, that every pair lies on its objects

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Fuzz target for the parser and every public entry point.
  * - libFuzzer: clang -fsanitize=fuzzer,address (meson -Dfuzz=true... see README) uses
  *   LLVMFuzzerTestOneInput directly.

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: MIT
 """Exact line-circle distances of a query file, for the doubles as given.
 
 An independent reference (mpmath, 60 digits): the line B + t M (M normalised exactly), the

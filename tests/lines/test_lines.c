@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Lines, rays and segments to circles: the special cases of Eberly §4.1 constructed exactly (and
  * again after a random rotation, translation and scale), agreement of the two methods, rays and
  * segments against an independent long double brute force, properties, bad input. */

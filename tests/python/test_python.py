@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """The ctypes binding: layout check, queries, errors (run by meson with CIRCLEDIST_LIBRARY set)."""
 import math
 import os
