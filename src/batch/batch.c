@@ -47,12 +47,17 @@ static cdist_status k_curve_disk(cdist_query *q, const void *a, const void *b, c
     return cdist_curve_disk(q, c->fn, c->user, c->t0, c->t1, b, r);
 }
 
+/* A family's distance-only query (no pairs, params or flags; the same status and message as the
+ * full query, *d NaN on failure), for kinds whose family offers one; NULL: the full query. */
+typedef cdist_status (*dist_fn)(cdist_query *q, const void *a, const void *b, double *d);
+
 /* point_kernel: -1 none, else the `disk` argument of cd_point_distance_kernel. */
 static const struct {
     const char *name;
     size_t size_a, size_b;
     kind_fn full;
     int point_kernel;
+    dist_fn dist;
 } kinds[] = {
     [CDIST_KIND_POINT_CIRCLE] = {"point_circle", sizeof(cdist_vec3), sizeof(cdist_circle), k_point_circle, 0},
     [CDIST_KIND_POINT_DISK] = {"point_disk", sizeof(cdist_vec3), sizeof(cdist_circle), k_point_disk, 1},
@@ -101,9 +106,12 @@ static void record(cd_slot *slot, cdist_query *h, size_t i, cdist_status st)
 static void entry(cdist_query *h, const cd_job *job, size_t i, cd_slot *slot)
 {
     kind_fn f = kinds[job->kind].full;
+    dist_fn df = kinds[job->kind].dist;
     cdist_status st;
     if (job->results) {
         st = f(h, cd_job_a(job, i), cd_job_b(job, i), &job->results[i]);
+    } else if (df) {
+        st = df(h, cd_job_a(job, i), cd_job_b(job, i), &job->distances[i]);
     } else {
         cdist_result r;
         st = f(h, cd_job_a(job, i), cd_job_b(job, i), &r);
