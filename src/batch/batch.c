@@ -121,6 +121,17 @@ static void entry(cdist_query *h, const cd_job *job, size_t i, cd_slot *slot)
     record(slot, h, i, st);
 }
 
+static inline size_t lowest_bit(uint64_t x)
+{
+#if defined(__GNUC__)
+    return (size_t)__builtin_ctzll(x);
+#else
+    size_t k = 0;
+    while (!(x >> k & 1)) k++;
+    return k;
+#endif
+}
+
 void cd_batch_range(cdist_query *h, const cd_job *job, size_t lo, size_t hi, cd_slot *slot)
 {
     int pk = kinds[job->kind].point_kernel;
@@ -128,10 +139,9 @@ void cd_batch_range(cdist_query *h, const cd_job *job, size_t lo, size_t hi, cd_
         for (size_t i = lo; i < hi; i += 64) {
             size_t cnt = hi - i < 64 ? hi - i : 64;
             uint64_t left = cd_point_distance_kernel(job, pk, h->unit_tol, i, cnt);
-            for (size_t k = 0; k < cnt; k++) {
-                if (left >> k & 1) entry(h, job, i + k, slot);
-                else if (job->statuses) job->statuses[i + k] = CDIST_OK;
-            }
+            if (job->statuses)
+                for (size_t k = 0; k < cnt; k++) job->statuses[i + k] = CDIST_OK;
+            for (; left; left &= left - 1) entry(h, job, i + lowest_bit(left), slot);
         }
         return;
     }
