@@ -101,7 +101,8 @@ void cd_workers_free(struct cd_workers *p)
 }
 
 /* Every option through the public setters: they size the worker's workspaces (and never
- * allocate when the size is unchanged, as at the start of a batch). */
+ * allocate when the size is unchanged, as at the start of a batch). A new handle option must be
+ * copied here too, or results would depend on the thread count (test_batch would show it). */
 static cdist_status sync_one(cdist_query *q, cdist_query *w)
 {
     cdist_status st;

@@ -8,6 +8,8 @@
  * - 1, 2 and 7 threads give bit-identical results;
  * - strides: user structs, broadcast (0), negative; NULL handle/arrays, bad kind, messages. */
 #include <float.h>
+#include <pthread.h>
+#include <time.h>
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -306,6 +308,53 @@ static void strides(cdist_query *q)
     free(items);
 }
 
+/* Threads really run concurrently: a callback curve whose evaluations wait (up to 10 s) until a
+ * second thread has evaluated too, recording the threads seen. */
+static pthread_mutex_t seen_mutex = PTHREAD_MUTEX_INITIALIZER;
+static pthread_t seen[64];
+static int nseen;
+
+static int seen_count(void)
+{
+    pthread_mutex_lock(&seen_mutex);
+    pthread_t me = pthread_self();
+    int found = 0;
+    for (int i = 0; i < nseen; i++) found |= pthread_equal(seen[i], me);
+    if (!found && nseen < 64) seen[nseen++] = me;
+    int n = nseen;
+    pthread_mutex_unlock(&seen_mutex);
+    return n;
+}
+
+static int waiting_fn(void *user, double t, cdist_vec3 *p, cdist_vec3 *d)
+{
+    struct timespec t0, t1;
+    clock_gettime(CLOCK_MONOTONIC, &t0);
+    do {
+        if (seen_count() >= 2) break;
+        clock_gettime(CLOCK_MONOTONIC, &t1);
+    } while (t1.tv_sec - t0.tv_sec < 10);
+    return circ_fn(user, t, p, d);
+}
+
+static void concurrency(cdist_query *q)
+{
+    enum { N = 400 };
+    cdist_circle c = {{0, 0, 0}, {0, 0, 1}, 1.0}, other = {{0.5, 0.2, 0.3}, {0.6, 0, 0.8}, 0.7};
+    circ_curve k = circ_curve_of(&c);
+    cdist_curve cv = {waiting_fn, &k, -M_PI, M_PI};
+    cdist_result *r = malloc(N * sizeof *r);
+    cdist_query_set_curve_samples(q, 8);
+    CHECK(cdist_query_set_threads(q, 2) == CDIST_OK, "2 threads");
+    nseen = 0;
+    CHECK(cdist_batch(q, CDIST_KIND_CURVE_CIRCLE, N, &cv, 0, &other, 0, r, NULL) == CDIST_OK, "waiting batch");
+    CHECK(nseen >= 2, "only %d thread(s) evaluated the curves of a 2-thread batch", nseen);
+    CHECK(r[0].distance == r[N - 1].distance, "broadcast entries agree");
+    cdist_query_set_threads(q, 1);
+    cdist_query_set_curve_samples(q, 512);
+    free(r);
+}
+
 static void conventions(cdist_query *q)
 {
     CHECK(cdist_kind_count() == 21, "kind count %d", cdist_kind_count());
@@ -384,6 +433,7 @@ int main(int argc, char **argv)
     cdist_query *q = cdist_query_new();
     conventions(q);
     strides(q);
+    concurrency(q);
     const char *sets[] = {"random", "hard"};
     for (size_t k = 0; k < sizeof files / sizeof files[0]; k++)
         for (int s = 0; s < 2; s++) run_file(q, argc - first, argv + first, files[k].file, files[k].kind, sets[s]);
