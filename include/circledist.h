@@ -252,10 +252,11 @@ CDIST_API cdist_status cdist_segment_circle(cdist_query *q, const cdist_segment 
 /// Distance between two circles (methods: POLYNOMIAL, ROBUST, ITERATION; AUTO picks).
 /// Swapping c0 and c1 gives the same distance with the pairs' points swapped.
 CDIST_API cdist_status cdist_circle_circle(cdist_query *q, const cdist_circle *c0, const cdist_circle *c1, cdist_result *r);
-/// Answers n circle-circle queries: results[i] and statuses[i] for (c0[i], c1[i]). A bad
-/// entry gets its own status and a NaN result; the others are still answered. Returns
-/// ::CDIST_OK when every entry succeeded, else the status of the first failing entry
-/// (whose message cdist_query_last_error() then gives). statuses may be NULL.
+/** Answers n circle-circle queries: results[i] and statuses[i] for (c0[i], c1[i]); the same as
+ *  cdist_batch() with ::CDIST_KIND_CIRCLE_CIRCLE and strides sizeof(cdist_circle). A bad entry
+ *  gets its own status and a NaN result; the others are still answered. Returns ::CDIST_OK
+ *  when every entry succeeded, else the status of the first failing entry (whose index and
+ *  message cdist_query_last_error() then gives). statuses may be NULL. */
 CDIST_API cdist_status cdist_circle_circle_batch(cdist_query *q, size_t n, const cdist_circle *c0,
                                                  const cdist_circle *c1, cdist_result *results,
                                                  cdist_status *statuses);
@@ -303,6 +304,88 @@ CDIST_API cdist_status cdist_helix_disk(cdist_query *q, const cdist_helix *h, co
 CDIST_API cdist_status cdist_bezier3_circle(cdist_query *q, const cdist_bezier3 *b, const cdist_circle *c, cdist_result *r);
 /// Distance from a cubic Bezier curve to a disk.
 CDIST_API cdist_status cdist_bezier3_disk(cdist_query *q, const cdist_bezier3 *b, const cdist_circle *d, cdist_result *r);
+
+/* ---- batches ------------------------------------------------------------------------ */
+
+/** Query kinds for the batch entry points. Numbers are fixed; new kinds are appended. The
+ *  comment of each kind names the types of its first (a) and second (b) objects; a kind
+ *  without a comment has the types its name says (a ray is a ::cdist_ray, a disk a
+ *  ::cdist_circle, ...). cdist_kind_size_a() and cdist_kind_size_b() give their sizes. */
+typedef enum cdist_kind {
+    CDIST_KIND_POINT_CIRCLE = 0,    /**< a: cdist_vec3,     b: cdist_circle */
+    CDIST_KIND_POINT_DISK = 1,      /**< a: cdist_vec3,     b: cdist_circle (disk) */
+    CDIST_KIND_LINE_CIRCLE = 2,     /**< a: cdist_line,     b: cdist_circle */
+    CDIST_KIND_RAY_CIRCLE = 3,      /**< a: cdist_ray,      b: cdist_circle */
+    CDIST_KIND_SEGMENT_CIRCLE = 4,  /**< a: cdist_segment,  b: cdist_circle */
+    CDIST_KIND_CIRCLE_CIRCLE = 5,   /**< a: cdist_circle,   b: cdist_circle */
+    CDIST_KIND_LINE_DISK = 6,       /**< a: cdist_line,     b: cdist_circle (disk) */
+    CDIST_KIND_RAY_DISK = 7,        /**< a: cdist_ray,      b: cdist_circle (disk) */
+    CDIST_KIND_SEGMENT_DISK = 8,    /**< a: cdist_segment,  b: cdist_circle (disk) */
+    CDIST_KIND_CIRCLE_DISK = 9,     /**< a: cdist_circle,   b: cdist_circle (disk) */
+    CDIST_KIND_DISK_DISK = 10,      /**< a: cdist_circle (disk), b: cdist_circle (disk) */
+    CDIST_KIND_CURVE_CIRCLE = 11,   /**< a: cdist_curve (callback + interval), b: cdist_circle */
+    CDIST_KIND_CURVE_DISK = 12,     /**< a: cdist_curve,    b: cdist_circle (disk) */
+    CDIST_KIND_ARC_CIRCLE = 13,     /**< a: cdist_arc,      b: cdist_circle */
+    CDIST_KIND_ARC_ARC = 14,        /**< a: cdist_arc,      b: cdist_arc */
+    CDIST_KIND_SEGMENT_ARC = 15,    /**< a: cdist_segment,  b: cdist_arc */
+    CDIST_KIND_ARC_DISK = 16,       /**< a: cdist_arc,      b: cdist_circle (disk) */
+    CDIST_KIND_HELIX_CIRCLE = 17,   /**< a: cdist_helix,    b: cdist_circle */
+    CDIST_KIND_HELIX_DISK = 18,     /**< a: cdist_helix,    b: cdist_circle (disk) */
+    CDIST_KIND_BEZIER3_CIRCLE = 19, /**< a: cdist_bezier3,  b: cdist_circle */
+    CDIST_KIND_BEZIER3_DISK = 20    /**< a: cdist_bezier3,  b: cdist_circle (disk) */
+    /* swept objects (torus, capsule, sphere, rounded disk) are appended from 21 on */
+} cdist_kind;
+
+/** A callback curve as one value, for batches: fn(user, t, ...) for t in [t0, t1], the
+ *  arguments of cdist_curve_circle(). A NULL fn is a bad entry (::CDIST_ERR_NULL_ARGUMENT). */
+typedef struct cdist_curve {
+    cdist_curve_fn fn; /**< the curve callback */
+    void *user;        /**< passed to fn unchanged */
+    double t0;         /**< first parameter */
+    double t1;         /**< last parameter, >= t0 */
+} cdist_curve;
+
+/** Number of kinds (one past the largest ::cdist_kind). */
+CDIST_API int cdist_kind_count(void);
+/** The kind's name in lower case without prefix ("point_circle", "circle_circle", ...); NULL for
+ *  a number that is not a kind. */
+CDIST_API const char *cdist_kind_name(cdist_kind kind);
+/** sizeof the first object type of a kind (0 for a number that is not a kind), for FFI users. */
+CDIST_API size_t cdist_kind_size_a(cdist_kind kind);
+/** sizeof the second object type of a kind (0 for a number that is not a kind). */
+CDIST_API size_t cdist_kind_size_b(cdist_kind kind);
+
+/** Full results for n queries of one kind. Object i of the first array is at
+ *  (const char *)a + i * a_stride (bytes; 0 repeats one object = broadcast, negative allowed),
+ *  likewise b. results[i] (contiguous, n entries) and statuses[i] (may be NULL) are written for
+ *  every i; a bad entry gets its status and a NaN result with no pairs, the others are answered,
+ *  each exactly as the single query (e.g. cdist_point_circle()) answers it. Uses the handle's
+ *  method and options and its worker threads (cdist_query_set_threads()); never allocates.
+ *  Returns ::CDIST_OK when every entry succeeded, else the status of the lowest-index failing
+ *  entry (cdist_query_last_error() names the index and gives that entry's message). A NULL
+ *  handle or array (for n > 0): ::CDIST_ERR_NULL_ARGUMENT; a number that is not a kind:
+ *  ::CDIST_ERR_BAD_KIND; in both cases results and statuses are still filled (NaN / that
+ *  status) whenever they are writable. n = 0 does nothing and returns ::CDIST_OK. */
+CDIST_API cdist_status cdist_batch(cdist_query *q, cdist_kind kind, size_t n, const void *a, ptrdiff_t a_stride,
+                                   const void *b, ptrdiff_t b_stride, cdist_result *results,
+                                   cdist_status *statuses);
+
+/** Distance only (no pairs, params or flags), for screening: distances[i] equals the full
+ *  query's distance to <= 2 ulps of the problem scale; NaN for a bad entry. May use SIMD kernels
+ *  with a certified screen (uncertain entries go to the scalar path). Same conventions as
+ *  cdist_batch(). */
+CDIST_API cdist_status cdist_batch_distance(cdist_query *q, cdist_kind kind, size_t n, const void *a,
+                                            ptrdiff_t a_stride, const void *b, ptrdiff_t b_stride,
+                                            double *distances, cdist_status *statuses);
+
+/** Worker threads used by the batch calls (default 1; 1..256; the calling thread is one of
+ *  them). Workers and their workspaces are created here and live in the handle (they are
+ *  joined by cdist_query_free()), so batches never allocate. Results are bit-identical for
+ *  every thread count. Returns ::CDIST_ERR_BAD_OPTION outside 1..256, ::CDIST_ERR_THREAD or
+ *  ::CDIST_ERR_NO_MEMORY when the workers cannot be created (the handle then has 1 thread). */
+CDIST_API cdist_status cdist_query_set_threads(cdist_query *q, int threads);
+/** The worker thread count (1 for a NULL handle). */
+CDIST_API int cdist_query_get_threads(const cdist_query *q);
 
 #ifdef __cplusplus
 }

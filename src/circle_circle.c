@@ -1019,24 +1019,3 @@ cdist_status cdist_circle_circle(cdist_query *q, const cdist_circle *c0, const c
     r->iterations = iterations;
     return cd_ok(q, r, answered);
 }
-
-cdist_status cdist_circle_circle_batch(cdist_query *q, size_t n, const cdist_circle *c0, const cdist_circle *c1,
-                                       cdist_result *results, cdist_status *statuses)
-{
-    if (!q) return CDIST_ERR_NULL_ARGUMENT;
-    if (n == 0) return cd_ok(q, &(cdist_result){0}, q->method);
-    if (!c0 || !c1 || !results)
-        return cd_fail(q, CDIST_ERR_NULL_ARGUMENT, "batch: circles or results pointer is NULL");
-    cdist_status first = CDIST_OK;
-    char first_msg[CD_MESSAGE_LEN] = "";
-    for (size_t i = 0; i < n; i++) {
-        cdist_status st = cdist_circle_circle(q, &c0[i], &c1[i], &results[i]);
-        if (statuses) statuses[i] = st;
-        if (st != CDIST_OK && first == CDIST_OK) {
-            first = st;
-            snprintf(first_msg, sizeof first_msg, "batch entry %zu: %.200s", i, q->message);
-        }
-    }
-    if (first != CDIST_OK) return cd_fail(q, first, "%s", first_msg);
-    return first;
-}

@@ -27,7 +27,14 @@ struct cdist_query {
     /* Scratch owned by the handle (sized by the setters) so that queries never allocate. */
     double *scratch;
     size_t scratch_len;
+    struct cd_workers *workers; /* batch worker threads and their handles (src/batch); NULL = 1 thread */
 };
+
+/* Batch workers (src/batch/workers.c). cd_workers_free joins the threads and frees their handles
+ * (NULL allowed). cd_workers_sync gives every worker handle the options of q, sizing their
+ * workspaces (called by every option setter, so that a batch never allocates). */
+void cd_workers_free(struct cd_workers *w);
+cdist_status cd_workers_sync(cdist_query *q);
 
 /* A validated circle: unit normal n, basis u, v (cdist_circle_basis rule), radius r. */
 typedef struct cd_circle {

@@ -77,6 +77,7 @@ cdist_query *cdist_query_new(void)
 void cdist_query_free(cdist_query *q)
 {
     if (!q) return;
+    cd_workers_free(q->workers);
     cd_poly_ws_free(q->poly);
     free(q->scratch);
     free(q);
@@ -84,6 +85,8 @@ void cdist_query_free(cdist_query *q)
 
 static cdist_status setter_ok(cdist_query *q)
 {
+    cdist_status st = cd_workers_sync(q);
+    if (st) return st;
     q->last_status = CDIST_OK;
     q->message[0] = '\0';
     return CDIST_OK;

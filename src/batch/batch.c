@@ -1,0 +1,188 @@
+/* The batch entry points: one generic entry per result type over a table of query kinds. A new
+ * kind adds one enum value and one row here. */
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "batch-priv.h"
+
+typedef cdist_status (*kind_fn)(cdist_query *q, const void *a, const void *b, cdist_result *r);
+
+#define WRAP(fn, TA, TB)                                                                                      \
+    static cdist_status k_##fn(cdist_query *q, const void *a, const void *b, cdist_result *r)                \
+    {                                                                                                         \
+        return cdist_##fn(q, (const TA *)a, (const TB *)b, r);                                               \
+    }
+WRAP(point_circle, cdist_vec3, cdist_circle)
+WRAP(point_disk, cdist_vec3, cdist_circle)
+WRAP(line_circle, cdist_line, cdist_circle)
+WRAP(ray_circle, cdist_ray, cdist_circle)
+WRAP(segment_circle, cdist_segment, cdist_circle)
+WRAP(circle_circle, cdist_circle, cdist_circle)
+WRAP(line_disk, cdist_line, cdist_circle)
+WRAP(ray_disk, cdist_ray, cdist_circle)
+WRAP(segment_disk, cdist_segment, cdist_circle)
+WRAP(circle_disk, cdist_circle, cdist_circle)
+WRAP(disk_disk, cdist_circle, cdist_circle)
+WRAP(arc_circle, cdist_arc, cdist_circle)
+WRAP(arc_arc, cdist_arc, cdist_arc)
+WRAP(segment_arc, cdist_segment, cdist_arc)
+WRAP(arc_disk, cdist_arc, cdist_circle)
+WRAP(helix_circle, cdist_helix, cdist_circle)
+WRAP(helix_disk, cdist_helix, cdist_circle)
+WRAP(bezier3_circle, cdist_bezier3, cdist_circle)
+WRAP(bezier3_disk, cdist_bezier3, cdist_circle)
+#undef WRAP
+
+static cdist_status k_curve_circle(cdist_query *q, const void *a, const void *b, cdist_result *r)
+{
+    const cdist_curve *c = a;
+    return cdist_curve_circle(q, c->fn, c->user, c->t0, c->t1, b, r);
+}
+
+static cdist_status k_curve_disk(cdist_query *q, const void *a, const void *b, cdist_result *r)
+{
+    const cdist_curve *c = a;
+    return cdist_curve_disk(q, c->fn, c->user, c->t0, c->t1, b, r);
+}
+
+/* point_kernel: -1 none, else the `disk` argument of cd_point_distance_kernel. */
+static const struct {
+    const char *name;
+    size_t size_a, size_b;
+    kind_fn full;
+    int point_kernel;
+} kinds[] = {
+    [CDIST_KIND_POINT_CIRCLE] = {"point_circle", sizeof(cdist_vec3), sizeof(cdist_circle), k_point_circle, 0},
+    [CDIST_KIND_POINT_DISK] = {"point_disk", sizeof(cdist_vec3), sizeof(cdist_circle), k_point_disk, 1},
+    [CDIST_KIND_LINE_CIRCLE] = {"line_circle", sizeof(cdist_line), sizeof(cdist_circle), k_line_circle, -1},
+    [CDIST_KIND_RAY_CIRCLE] = {"ray_circle", sizeof(cdist_ray), sizeof(cdist_circle), k_ray_circle, -1},
+    [CDIST_KIND_SEGMENT_CIRCLE] = {"segment_circle", sizeof(cdist_segment), sizeof(cdist_circle), k_segment_circle,
+                                   -1},
+    [CDIST_KIND_CIRCLE_CIRCLE] = {"circle_circle", sizeof(cdist_circle), sizeof(cdist_circle), k_circle_circle, -1},
+    [CDIST_KIND_LINE_DISK] = {"line_disk", sizeof(cdist_line), sizeof(cdist_circle), k_line_disk, -1},
+    [CDIST_KIND_RAY_DISK] = {"ray_disk", sizeof(cdist_ray), sizeof(cdist_circle), k_ray_disk, -1},
+    [CDIST_KIND_SEGMENT_DISK] = {"segment_disk", sizeof(cdist_segment), sizeof(cdist_circle), k_segment_disk, -1},
+    [CDIST_KIND_CIRCLE_DISK] = {"circle_disk", sizeof(cdist_circle), sizeof(cdist_circle), k_circle_disk, -1},
+    [CDIST_KIND_DISK_DISK] = {"disk_disk", sizeof(cdist_circle), sizeof(cdist_circle), k_disk_disk, -1},
+    [CDIST_KIND_CURVE_CIRCLE] = {"curve_circle", sizeof(cdist_curve), sizeof(cdist_circle), k_curve_circle, -1},
+    [CDIST_KIND_CURVE_DISK] = {"curve_disk", sizeof(cdist_curve), sizeof(cdist_circle), k_curve_disk, -1},
+    [CDIST_KIND_ARC_CIRCLE] = {"arc_circle", sizeof(cdist_arc), sizeof(cdist_circle), k_arc_circle, -1},
+    [CDIST_KIND_ARC_ARC] = {"arc_arc", sizeof(cdist_arc), sizeof(cdist_arc), k_arc_arc, -1},
+    [CDIST_KIND_SEGMENT_ARC] = {"segment_arc", sizeof(cdist_segment), sizeof(cdist_arc), k_segment_arc, -1},
+    [CDIST_KIND_ARC_DISK] = {"arc_disk", sizeof(cdist_arc), sizeof(cdist_circle), k_arc_disk, -1},
+    [CDIST_KIND_HELIX_CIRCLE] = {"helix_circle", sizeof(cdist_helix), sizeof(cdist_circle), k_helix_circle, -1},
+    [CDIST_KIND_HELIX_DISK] = {"helix_disk", sizeof(cdist_helix), sizeof(cdist_circle), k_helix_disk, -1},
+    [CDIST_KIND_BEZIER3_CIRCLE] = {"bezier3_circle", sizeof(cdist_bezier3), sizeof(cdist_circle), k_bezier3_circle,
+                                   -1},
+    [CDIST_KIND_BEZIER3_DISK] = {"bezier3_disk", sizeof(cdist_bezier3), sizeof(cdist_circle), k_bezier3_disk, -1},
+};
+#define KIND_COUNT ((int)(sizeof kinds / sizeof kinds[0]))
+
+static int kind_ok(cdist_kind k) { return (unsigned)k < (unsigned)KIND_COUNT && kinds[k].full; }
+
+int cdist_kind_count(void) { return KIND_COUNT; }
+const char *cdist_kind_name(cdist_kind k) { return kind_ok(k) ? kinds[k].name : NULL; }
+size_t cdist_kind_size_a(cdist_kind k) { return kind_ok(k) ? kinds[k].size_a : 0; }
+size_t cdist_kind_size_b(cdist_kind k) { return kind_ok(k) ? kinds[k].size_b : 0; }
+
+/* ---- one range of entries ---- */
+
+static void record(cd_slot *slot, cdist_query *h, size_t i, cdist_status st)
+{
+    if (st == CDIST_OK || slot->fail != SIZE_MAX) return; /* a thread meets its entries in order */
+    slot->fail = i;
+    slot->status = st;
+    memcpy(slot->message, h->message, sizeof slot->message);
+}
+
+/* The scalar path of one entry: the single query itself. */
+static void entry(cdist_query *h, const cd_job *job, size_t i, cd_slot *slot)
+{
+    kind_fn f = kinds[job->kind].full;
+    cdist_status st;
+    if (job->results) {
+        st = f(h, cd_job_a(job, i), cd_job_b(job, i), &job->results[i]);
+    } else {
+        cdist_result r;
+        st = f(h, cd_job_a(job, i), cd_job_b(job, i), &r);
+        job->distances[i] = r.distance;
+    }
+    if (job->statuses) job->statuses[i] = st;
+    record(slot, h, i, st);
+}
+
+void cd_batch_range(cdist_query *h, const cd_job *job, size_t lo, size_t hi, cd_slot *slot)
+{
+    int pk = kinds[job->kind].point_kernel;
+    if (job->distances && pk >= 0) {
+        for (size_t i = lo; i < hi; i += 64) {
+            size_t cnt = hi - i < 64 ? hi - i : 64;
+            uint64_t left = cd_point_distance_kernel(job, pk, h->unit_tol, i, cnt);
+            for (size_t k = 0; k < cnt; k++) {
+                if (left >> k & 1) entry(h, job, i + k, slot);
+                else if (job->statuses) job->statuses[i + k] = CDIST_OK;
+            }
+        }
+        return;
+    }
+    for (size_t i = lo; i < hi; i++) entry(h, job, i, slot);
+}
+
+/* ---- the entry points ---- */
+
+/* NULL handle or arrays, bad kind: every writable output says so. */
+static cdist_status fail_all(cdist_query *q, cdist_status st, size_t n, cdist_result *results, double *distances,
+                             cdist_status *statuses, const char *why)
+{
+    for (size_t i = 0; i < n; i++) {
+        if (results) cd_begin(NULL, &results[i]);
+        if (distances) distances[i] = NAN;
+        if (statuses) statuses[i] = st;
+    }
+    if (!q) return st;
+    cd_begin(q, NULL);
+    return cd_fail(q, st, "batch: %s", why);
+}
+
+static cdist_status run(cdist_query *q, cdist_kind kind, size_t n, const void *a, ptrdiff_t a_stride, const void *b,
+                        ptrdiff_t b_stride, cdist_result *results, double *distances, cdist_status *statuses)
+{
+    if (n == 0) {
+        if (q) cd_begin(q, NULL);
+        return q ? CDIST_OK : CDIST_ERR_NULL_ARGUMENT;
+    }
+    if (!q) return fail_all(q, CDIST_ERR_NULL_ARGUMENT, n, results, distances, statuses, "");
+    if (!kind_ok(kind)) {
+        fail_all(q, CDIST_ERR_BAD_KIND, n, results, distances, statuses, "");
+        return cd_fail(q, CDIST_ERR_BAD_KIND, "batch: %d is not a cdist_kind (0..%d)", (int)kind, KIND_COUNT - 1);
+    }
+    if (!a || !b || !(results || distances))
+        return fail_all(q, CDIST_ERR_NULL_ARGUMENT, n, results, distances, statuses,
+                        !a ? "first object array is NULL" : !b ? "second object array is NULL" : "output array is NULL");
+    cd_job job = {kind, n, a, b, a_stride, b_stride, results, distances, statuses, 0};
+    cd_slot first;
+    cd_workers_run(q, &job, &first);
+    cd_begin(q, NULL);
+    if (first.fail == SIZE_MAX) return CDIST_OK;
+    return cd_fail(q, first.status, "batch entry %zu: %.200s", first.fail, first.message);
+}
+
+cdist_status cdist_batch(cdist_query *q, cdist_kind kind, size_t n, const void *a, ptrdiff_t a_stride, const void *b,
+                         ptrdiff_t b_stride, cdist_result *results, cdist_status *statuses)
+{
+    return run(q, kind, n, a, a_stride, b, b_stride, results, NULL, statuses);
+}
+
+cdist_status cdist_batch_distance(cdist_query *q, cdist_kind kind, size_t n, const void *a, ptrdiff_t a_stride,
+                                  const void *b, ptrdiff_t b_stride, double *distances, cdist_status *statuses)
+{
+    return run(q, kind, n, a, a_stride, b, b_stride, NULL, distances, statuses);
+}
+
+cdist_status cdist_circle_circle_batch(cdist_query *q, size_t n, const cdist_circle *c0, const cdist_circle *c1,
+                                       cdist_result *results, cdist_status *statuses)
+{
+    return cdist_batch(q, CDIST_KIND_CIRCLE_CIRCLE, n, c0, sizeof *c0, c1, sizeof *c1, results, statuses);
+}

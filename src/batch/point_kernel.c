@@ -1,0 +1,231 @@
+/* Distance kernels of point-circle and point-disk for cdist_batch_distance: the closed forms of
+ * src/point.c with the validation of cd_check_point/cd_check_circle, operation by operation
+ * (same roundings, fma where the scalar code calls fma), so every distance is bit-identical to
+ * the single query's. AVX-512 (8 lanes) and AVX2 (4 lanes) versions are chosen at run time;
+ * the scalar version serves the tails and other machines. Entries failing any check are left
+ * to the scalar path, which produces their status and message. */
+#include <math.h>
+#include <stddef.h>
+#include <stdint.h>
+
+#include "batch-priv.h"
+
+#if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))
+#define CD_X86_KERNELS 1
+#include <immintrin.h>
+#endif
+
+/* The kernels load the fields by byte offset. */
+_Static_assert(offsetof(cdist_vec3, y) == 8 && offsetof(cdist_vec3, z) == 16, "cdist_vec3 layout");
+_Static_assert(offsetof(cdist_circle, normal) == 24 && offsetof(cdist_circle, radius) == 48, "cdist_circle layout");
+
+/* Finite and within 1e150 (NaN fails every comparison). */
+static inline int in_range(vec3 a)
+{
+    return fabs(a.x) <= CD_MAX_ABS && fabs(a.y) <= CD_MAX_ABS && fabs(a.z) <= CD_MAX_ABS;
+}
+
+/* One entry: returns 0 (and writes *d) when every fast check passes. */
+static int point_one(const cdist_vec3 *P, const cdist_circle *C, int disk, double tol, double *d)
+{
+    vec3 p = *P, c = C->center, nd = C->normal;
+    double r = C->radius;
+    if (!in_range(p) || !in_range(c) || !in_range(nd) || !(r >= 0.0 && r <= CD_MAX_ABS)) return 1;
+    double m = v_maxabs(nd);
+    if (!(m > 0.0)) return 1;
+    vec3 sd = v_scale(1.0 / m, nd);
+    double ns = v_norm(sd);
+    if (!(fabs(m * ns - 1.0) <= tol)) return 1;
+    vec3 n = v_scale(1.0 / ns, sd);
+    vec3 rel = v_sub(p, c);
+    vec3 np = v_cross(n, rel);
+    double h = v_dot(n, rel), rho = v_norm(np);
+    if (disk && !(rho > r)) {
+        *d = sqrt(h * h);
+    } else {
+        double dr = rho - r;
+        *d = sqrt(fma(dr, dr, h * h));
+    }
+    return 0;
+}
+
+static uint64_t kernel_scalar(const cd_job *job, int disk, double tol, size_t lo, size_t count)
+{
+    uint64_t left = 0;
+    for (size_t k = 0; k < count; k++) {
+        size_t i = lo + k;
+        if (point_one(cd_job_a(job, i), cd_job_b(job, i), disk, tol, &job->distances[i])) left |= (uint64_t)1 << k;
+    }
+    return left;
+}
+
+#ifdef CD_X86_KERNELS
+
+#define AVX512 __attribute__((target("avx512f,avx512dq,fma")))
+#define AVX2 __attribute__((target("avx2,fma")))
+
+/* ---- 8 lanes ---- */
+
+AVX512 static inline __m512d abs8(__m512d x) { return _mm512_abs_pd(x); }
+AVX512 static inline __m512d max3_8(__m512d x, __m512d y, __m512d z)
+{
+    return _mm512_max_pd(_mm512_max_pd(abs8(x), abs8(y)), abs8(z));
+}
+/* fma(a.x, b.x, fma(a.y, b.y, a.z * b.z)) as v_dot */
+/* every component finite and within the limit (a max would drop NaNs) */
+AVX512 static inline __mmask8 in8(__m512d x, __m512d y, __m512d z, __m512d lim)
+{
+    return _mm512_cmp_pd_mask(abs8(x), lim, _CMP_LE_OQ) & _mm512_cmp_pd_mask(abs8(y), lim, _CMP_LE_OQ) &
+           _mm512_cmp_pd_mask(abs8(z), lim, _CMP_LE_OQ);
+}
+AVX512 static inline __m512d dot8(__m512d ax, __m512d ay, __m512d az, __m512d bx, __m512d by, __m512d bz)
+{
+    return _mm512_fmadd_pd(ax, bx, _mm512_fmadd_pd(ay, by, _mm512_mul_pd(az, bz)));
+}
+
+AVX512 static uint64_t kernel_avx512(const cd_job *job, int disk, double tol, size_t lo, size_t count)
+{
+    uint64_t left = 0;
+    size_t k = 0;
+    const __m512d lim = _mm512_set1_pd(CD_MAX_ABS), zero = _mm512_setzero_pd(), one = _mm512_set1_pd(1.0);
+    const __m512d vtol = _mm512_set1_pd(tol);
+    const __m512i lane = _mm512_set_epi64(7, 6, 5, 4, 3, 2, 1, 0);
+    const __m512i as = _mm512_set1_epi64((long long)job->a_stride), bs = _mm512_set1_epi64((long long)job->b_stride);
+    for (; k + 8 <= count; k += 8) {
+        size_t i = lo + k;
+        const char *pa = cd_job_a(job, i), *pb = cd_job_b(job, i);
+        __m512i ia = _mm512_mullo_epi64(lane, as), ib = _mm512_mullo_epi64(lane, bs);
+        __m512d px = _mm512_i64gather_pd(ia, pa, 1), py = _mm512_i64gather_pd(ia, pa + 8, 1),
+                pz = _mm512_i64gather_pd(ia, pa + 16, 1);
+        __m512d cx = _mm512_i64gather_pd(ib, pb, 1), cy = _mm512_i64gather_pd(ib, pb + 8, 1),
+                cz = _mm512_i64gather_pd(ib, pb + 16, 1);
+        __m512d dx = _mm512_i64gather_pd(ib, pb + 24, 1), dy = _mm512_i64gather_pd(ib, pb + 32, 1),
+                dz = _mm512_i64gather_pd(ib, pb + 40, 1);
+        __m512d r = _mm512_i64gather_pd(ib, pb + 48, 1);
+        __m512d m = max3_8(dx, dy, dz);
+        __mmask8 ok = in8(px, py, pz, lim) & in8(cx, cy, cz, lim) & in8(dx, dy, dz, lim) &
+                      _mm512_cmp_pd_mask(r, zero, _CMP_GE_OQ) &
+                      _mm512_cmp_pd_mask(r, lim, _CMP_LE_OQ) & _mm512_cmp_pd_mask(m, zero, _CMP_GT_OQ);
+        __m512d im = _mm512_div_pd(one, m);
+        __m512d sx = _mm512_mul_pd(im, dx), sy = _mm512_mul_pd(im, dy), sz = _mm512_mul_pd(im, dz);
+        __m512d ns = _mm512_sqrt_pd(dot8(sx, sy, sz, sx, sy, sz));
+        __m512d dev = abs8(_mm512_sub_pd(_mm512_mul_pd(m, ns), one));
+        ok &= _mm512_cmp_pd_mask(dev, vtol, _CMP_LE_OQ);
+        __m512d ins = _mm512_div_pd(one, ns);
+        __m512d nx = _mm512_mul_pd(ins, sx), ny = _mm512_mul_pd(ins, sy), nz = _mm512_mul_pd(ins, sz);
+        __m512d rx = _mm512_sub_pd(px, cx), ry = _mm512_sub_pd(py, cy), rz = _mm512_sub_pd(pz, cz);
+        /* n x rel, each component a product difference without fma (as v_cross) */
+        __m512d qx = _mm512_sub_pd(_mm512_mul_pd(ny, rz), _mm512_mul_pd(nz, ry));
+        __m512d qy = _mm512_sub_pd(_mm512_mul_pd(nz, rx), _mm512_mul_pd(nx, rz));
+        __m512d qz = _mm512_sub_pd(_mm512_mul_pd(nx, ry), _mm512_mul_pd(ny, rx));
+        __m512d h = dot8(nx, ny, nz, rx, ry, rz);
+        __m512d rho = _mm512_sqrt_pd(dot8(qx, qy, qz, qx, qy, qz));
+        __m512d dr = _mm512_sub_pd(rho, r);
+        __m512d hh = _mm512_mul_pd(h, h);
+        __m512d d2 = _mm512_fmadd_pd(dr, dr, hh);
+        if (disk) d2 = _mm512_mask_blend_pd(_mm512_cmp_pd_mask(rho, r, _CMP_GT_OQ), hh, d2);
+        __m512d d = _mm512_sqrt_pd(d2);
+        _mm512_mask_storeu_pd(&job->distances[i], ok, d);
+        left |= (uint64_t)(uint8_t)~ok << k;
+    }
+    if (k < count) left |= kernel_scalar(job, disk, tol, lo + k, count - k) << k;
+    return left;
+}
+
+/* ---- 4 lanes ---- */
+
+AVX2 static inline __m256d abs4(__m256d x) { return _mm256_andnot_pd(_mm256_set1_pd(-0.0), x); }
+AVX2 static inline __m256d max3_4(__m256d x, __m256d y, __m256d z)
+{
+    return _mm256_max_pd(_mm256_max_pd(abs4(x), abs4(y)), abs4(z));
+}
+AVX2 static inline __m256d dot4(__m256d ax, __m256d ay, __m256d az, __m256d bx, __m256d by, __m256d bz)
+{
+    return _mm256_fmadd_pd(ax, bx, _mm256_fmadd_pd(ay, by, _mm256_mul_pd(az, bz)));
+}
+AVX2 static inline int le4(__m256d a, __m256d b) { return _mm256_movemask_pd(_mm256_cmp_pd(a, b, _CMP_LE_OQ)); }
+AVX2 static inline int in4(__m256d x, __m256d y, __m256d z, __m256d lim)
+{
+    return le4(abs4(x), lim) & le4(abs4(y), lim) & le4(abs4(z), lim);
+}
+
+AVX2 static uint64_t kernel_avx2(const cd_job *job, int disk, double tol, size_t lo, size_t count)
+{
+    uint64_t left = 0;
+    size_t k = 0;
+    const __m256d lim = _mm256_set1_pd(CD_MAX_ABS), zero = _mm256_setzero_pd(), one = _mm256_set1_pd(1.0);
+    const __m256d vtol = _mm256_set1_pd(tol);
+    const long long as = (long long)job->a_stride, bs = (long long)job->b_stride;
+    const __m256i ia = _mm256_set_epi64x(3 * as, 2 * as, as, 0), ib = _mm256_set_epi64x(3 * bs, 2 * bs, bs, 0);
+    for (; k + 4 <= count; k += 4) {
+        size_t i = lo + k;
+        const char *pa = cd_job_a(job, i), *pb = cd_job_b(job, i);
+        __m256d px = _mm256_i64gather_pd((const double *)pa, ia, 1),
+                py = _mm256_i64gather_pd((const double *)(pa + 8), ia, 1),
+                pz = _mm256_i64gather_pd((const double *)(pa + 16), ia, 1);
+        __m256d cx = _mm256_i64gather_pd((const double *)pb, ib, 1),
+                cy = _mm256_i64gather_pd((const double *)(pb + 8), ib, 1),
+                cz = _mm256_i64gather_pd((const double *)(pb + 16), ib, 1);
+        __m256d dx = _mm256_i64gather_pd((const double *)(pb + 24), ib, 1),
+                dy = _mm256_i64gather_pd((const double *)(pb + 32), ib, 1),
+                dz = _mm256_i64gather_pd((const double *)(pb + 40), ib, 1);
+        __m256d r = _mm256_i64gather_pd((const double *)(pb + 48), ib, 1);
+        __m256d m = max3_4(dx, dy, dz);
+        int ok = in4(px, py, pz, lim) & in4(cx, cy, cz, lim) & in4(dx, dy, dz, lim) & le4(zero, r) &
+                 le4(r, lim) & _mm256_movemask_pd(_mm256_cmp_pd(m, zero, _CMP_GT_OQ));
+        __m256d im = _mm256_div_pd(one, m);
+        __m256d sx = _mm256_mul_pd(im, dx), sy = _mm256_mul_pd(im, dy), sz = _mm256_mul_pd(im, dz);
+        __m256d ns = _mm256_sqrt_pd(dot4(sx, sy, sz, sx, sy, sz));
+        ok &= le4(abs4(_mm256_sub_pd(_mm256_mul_pd(m, ns), one)), vtol);
+        __m256d ins = _mm256_div_pd(one, ns);
+        __m256d nx = _mm256_mul_pd(ins, sx), ny = _mm256_mul_pd(ins, sy), nz = _mm256_mul_pd(ins, sz);
+        __m256d rx = _mm256_sub_pd(px, cx), ry = _mm256_sub_pd(py, cy), rz = _mm256_sub_pd(pz, cz);
+        __m256d qx = _mm256_sub_pd(_mm256_mul_pd(ny, rz), _mm256_mul_pd(nz, ry));
+        __m256d qy = _mm256_sub_pd(_mm256_mul_pd(nz, rx), _mm256_mul_pd(nx, rz));
+        __m256d qz = _mm256_sub_pd(_mm256_mul_pd(nx, ry), _mm256_mul_pd(ny, rx));
+        __m256d h = dot4(nx, ny, nz, rx, ry, rz);
+        __m256d rho = _mm256_sqrt_pd(dot4(qx, qy, qz, qx, qy, qz));
+        __m256d dr = _mm256_sub_pd(rho, r);
+        __m256d hh = _mm256_mul_pd(h, h);
+        __m256d d2 = _mm256_fmadd_pd(dr, dr, hh);
+        if (disk) d2 = _mm256_blendv_pd(hh, d2, _mm256_cmp_pd(rho, r, _CMP_GT_OQ));
+        __m256d d = _mm256_sqrt_pd(d2);
+        double out[4];
+        _mm256_storeu_pd(out, d);
+        for (int l = 0; l < 4; l++)
+            if (ok >> l & 1) job->distances[i + (size_t)l] = out[l];
+        left |= (uint64_t)(~ok & 15) << k;
+    }
+    if (k < count) left |= kernel_scalar(job, disk, tol, lo + k, count - k) << k;
+    return left;
+}
+
+typedef uint64_t (*kernel_fn)(const cd_job *, int, double, size_t, size_t);
+
+static kernel_fn pick(void)
+{
+    __builtin_cpu_init();
+    if (__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq")) return kernel_avx512;
+    if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma")) return kernel_avx2;
+    return kernel_scalar;
+}
+
+uint64_t cd_point_distance_kernel(const cd_job *job, int disk, double unit_tol, size_t lo, size_t count)
+{
+    static kernel_fn chosen; /* a benign race: every thread computes the same value */
+    kernel_fn f = __atomic_load_n(&chosen, __ATOMIC_RELAXED);
+    if (!f) {
+        f = pick();
+        __atomic_store_n(&chosen, f, __ATOMIC_RELAXED);
+    }
+    return f(job, disk, unit_tol, lo, count);
+}
+
+#else
+
+uint64_t cd_point_distance_kernel(const cd_job *job, int disk, double unit_tol, size_t lo, size_t count)
+{
+    return kernel_scalar(job, disk, unit_tol, lo, count);
+}
+
+#endif

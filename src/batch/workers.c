@@ -1,0 +1,186 @@
+/* Batch worker threads. A handle with T > 1 threads owns T - 1 pthreads, each with its own query
+ * handle (workspaces included), created by cdist_query_set_threads and joined by
+ * cdist_query_free; the calling thread is the T-th worker and uses the main handle. A batch hands
+ * out chunks of entries through an atomic counter; since every entry is answered on its own with
+ * the same options, results do not depend on which thread took which chunk. Nothing is allocated
+ * per batch. */
+#include <pthread.h>
+#include <stdatomic.h>
+#include <stdint.h>
+#include <stdlib.h>
+
+#include "batch-priv.h"
+
+#define CD_MAX_THREADS 256
+/* Below this many entries per thread the wake-up costs more than it saves. */
+#define CD_MIN_ENTRIES_PER_THREAD 64
+
+typedef struct cd_worker {
+    struct cd_workers *pool;
+    cdist_query *handle;
+    pthread_t thread;
+    cd_slot slot;
+} cd_worker;
+
+struct cd_workers {
+    int threads; /* including the calling thread */
+    int started; /* pthreads running */
+    pthread_mutex_t mutex;
+    pthread_cond_t start, done;
+    unsigned long generation; /* incremented per batch */
+    int pending;              /* workers still busy with the current batch */
+    int quit;
+    const cd_job *job;
+    atomic_size_t next; /* first entry not yet handed out */
+    cd_worker w[];      /* threads - 1 */
+};
+
+/* Take chunks until none is left. */
+static void drain(struct cd_workers *p, const cd_job *job, cdist_query *h, cd_slot *slot)
+{
+    for (;;) {
+        size_t lo = atomic_fetch_add_explicit(&p->next, job->chunk, memory_order_relaxed);
+        if (lo >= job->n) return;
+        size_t hi = job->n - lo < job->chunk ? job->n : lo + job->chunk;
+        cd_batch_range(h, job, lo, hi, slot);
+    }
+}
+
+static void *worker_main(void *arg)
+{
+    cd_worker *w = arg;
+    struct cd_workers *p = w->pool;
+    unsigned long seen = 0;
+    for (;;) {
+        pthread_mutex_lock(&p->mutex);
+        while (p->generation == seen && !p->quit) pthread_cond_wait(&p->start, &p->mutex);
+        if (p->quit) {
+            pthread_mutex_unlock(&p->mutex);
+            return NULL;
+        }
+        seen = p->generation;
+        const cd_job *job = p->job;
+        pthread_mutex_unlock(&p->mutex);
+        w->slot.fail = SIZE_MAX;
+        drain(p, job, w->handle, &w->slot);
+        pthread_mutex_lock(&p->mutex);
+        if (--p->pending == 0) pthread_cond_signal(&p->done);
+        pthread_mutex_unlock(&p->mutex);
+    }
+}
+
+void cd_workers_free(struct cd_workers *p)
+{
+    if (!p) return;
+    if (p->started > 0) {
+        pthread_mutex_lock(&p->mutex);
+        p->quit = 1;
+        pthread_cond_broadcast(&p->start);
+        pthread_mutex_unlock(&p->mutex);
+        for (int i = 0; i < p->started; i++) pthread_join(p->w[i].thread, NULL);
+    }
+    for (int i = 0; i < p->threads - 1; i++) cdist_query_free(p->w[i].handle);
+    pthread_cond_destroy(&p->done);
+    pthread_cond_destroy(&p->start);
+    pthread_mutex_destroy(&p->mutex);
+    free(p);
+}
+
+/* Every option through the public setters: they size the worker's workspaces (and never
+ * allocate when the size is unchanged, as at the start of a batch). */
+static cdist_status sync_one(cdist_query *q, cdist_query *w)
+{
+    cdist_status st;
+    if ((st = cdist_query_set_method(w, q->method)) || (st = cdist_query_set_unit_tolerance(w, q->unit_tol)) ||
+        (st = cdist_query_set_curve_samples(w, q->curve_samples)) ||
+        (st = cdist_query_set_max_iterations(w, q->max_iterations)))
+        return cd_fail(q, st, "worker handle: %s", cdist_query_last_error(w));
+    return CDIST_OK;
+}
+
+cdist_status cd_workers_sync(cdist_query *q)
+{
+    struct cd_workers *p = q->workers;
+    if (!p) return CDIST_OK;
+    for (int i = 0; i < p->threads - 1; i++) {
+        cdist_status st = sync_one(q, p->w[i].handle);
+        if (st) return st;
+    }
+    return CDIST_OK;
+}
+
+cdist_status cdist_query_set_threads(cdist_query *q, int threads)
+{
+    if (!q) return CDIST_ERR_NULL_ARGUMENT;
+    if (threads < 1 || threads > CD_MAX_THREADS)
+        return cd_fail(q, CDIST_ERR_BAD_OPTION, "threads must be in [1, %d] (got %d)", CD_MAX_THREADS, threads);
+    cd_begin(q, NULL);
+    if (threads == cdist_query_get_threads(q)) return CDIST_OK;
+    cd_workers_free(q->workers);
+    q->workers = NULL;
+    if (threads == 1) return CDIST_OK;
+    struct cd_workers *p = calloc(1, sizeof *p + (size_t)(threads - 1) * sizeof(cd_worker));
+    if (!p) return cd_fail(q, CDIST_ERR_NO_MEMORY, "out of memory for %d threads", threads);
+    p->threads = threads;
+    pthread_mutex_init(&p->mutex, NULL);
+    pthread_cond_init(&p->start, NULL);
+    pthread_cond_init(&p->done, NULL);
+    atomic_init(&p->next, 0);
+    for (int i = 0; i < threads - 1; i++) {
+        p->w[i].pool = p;
+        p->w[i].handle = cdist_query_new();
+        if (!p->w[i].handle || sync_one(q, p->w[i].handle)) {
+            cd_workers_free(p);
+            return cd_fail(q, CDIST_ERR_NO_MEMORY, "out of memory for the handles of %d threads", threads);
+        }
+    }
+    for (int i = 0; i < threads - 1; i++) {
+        int e = pthread_create(&p->w[i].thread, NULL, worker_main, &p->w[i]);
+        if (e) {
+            cd_workers_free(p);
+            return cd_fail(q, CDIST_ERR_THREAD, "could not start worker thread %d of %d (error %d)", i + 1,
+                           threads, e);
+        }
+        p->started++;
+    }
+    q->workers = p;
+    return CDIST_OK;
+}
+
+int cdist_query_get_threads(const cdist_query *q) { return (q && q->workers) ? q->workers->threads : 1; }
+
+static void take_lower(cd_slot *first, const cd_slot *s)
+{
+    if (s->fail < first->fail) *first = *s;
+}
+
+void cd_workers_run(cdist_query *q, const cd_job *job_in, cd_slot *first)
+{
+    struct cd_workers *p = q->workers;
+    cd_job job = *job_in;
+    first->fail = SIZE_MAX;
+    int threads = p ? p->threads : 1;
+    if (threads > 1 && job.n < (size_t)threads * CD_MIN_ENTRIES_PER_THREAD) threads = 1;
+    if (threads == 1 || cd_workers_sync(q)) {
+        job.chunk = job.n;
+        cd_batch_range(q, &job, 0, job.n, first);
+        return;
+    }
+    /* Chunks: about 16 per thread (load balance), a multiple of the kernels' 64 entries. */
+    size_t chunk = job.n / ((size_t)threads * 16);
+    chunk = (chunk + 63) / 64 * 64;
+    if (chunk == 0) chunk = 64;
+    job.chunk = chunk;
+    pthread_mutex_lock(&p->mutex);
+    p->job = &job;
+    atomic_store_explicit(&p->next, 0, memory_order_relaxed);
+    p->pending = p->threads - 1;
+    p->generation++;
+    pthread_cond_broadcast(&p->start);
+    pthread_mutex_unlock(&p->mutex);
+    drain(p, &job, q, first);
+    pthread_mutex_lock(&p->mutex);
+    while (p->pending > 0) pthread_cond_wait(&p->done, &p->mutex);
+    pthread_mutex_unlock(&p->mutex);
+    for (int i = 0; i < p->threads - 1; i++) take_lower(first, &p->w[i].slot);
+}
