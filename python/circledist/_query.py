@@ -124,8 +124,8 @@ class BatchResult:
 
     distance (S), status (S, int32 cdist_status, 0 = OK; a bad entry has its status and NaN),
     and unless distance_only was asked: sqr_distance (S), num_pairs (S), equidistant (S, bool),
-    points (S + (2, 2, 3): [..., i, j] is pair i's point on object j; pairs beyond num_pairs are
-    NaN), params (S + (2, 2)), method (S). The arrays are views of one buffer of C result
+    points (S + (2, 2, 3): [..., i, j] is pair i's point on object j; only pairs
+    i < num_pairs are meaningful), params (S + (2, 2)), method (S). The arrays are views of one buffer of C result
     structs (raw, numpy dtype RESULT_DTYPE), not copies."""
 
     def __init__(self, raw, status, distance=None):
@@ -192,6 +192,14 @@ _KINDS = [
     ("bezier3_circle", 19, Bezier3, Circle), ("bezier3_disk", 20, Bezier3, Disk),
 ]
 KIND_CURVE_CIRCLE, KIND_CURVE_DISK = 11, 12
+if _lib.kind_name is not None:  # the batch kinds must be the C library's, with the same structs
+    for _name, _kind, _ca, _cb in _KINDS:
+        if (_lib.kind_name(_kind) or b"").decode() != _name or \
+                (_lib.kind_size_a(_kind), _lib.kind_size_b(_kind)) != (8 * _ca.WIDTH, 8 * _cb.WIDTH):
+            raise ImportError("circledist: the library's batch kind %d is not %s(%s, %s)"
+                              % (_kind, _name, _ca.__name__, _cb.__name__))
+    if _lib.kind_size_a(KIND_CURVE_CIRCLE) != ctypes.sizeof(_lib.Curve):
+        raise ImportError("circledist: the library's cdist_curve does not match this package")
 _SINGLE = {name: _lib.single_query(name) for name, _, _, _ in _KINDS}
 
 
@@ -299,7 +307,7 @@ class Query:
             pass
 
     # ---- the one query path ----------------------------------------------------------------
-    def _run(self, name, kind, a, b, method, threads, distance_only, single_call):
+    def _run(self, name, kind, a, b, method, threads, distance_only, single_call, out=None):
         with self._lock:
             q = self._handle()
             old = None
@@ -313,17 +321,17 @@ class Query:
             try:
                 if threads is not None:
                     self.set_threads(threads)
-                if a.shape == () and b.shape == () and not distance_only and single_call:
+                if a.shape == () and b.shape == () and not distance_only and out is None:
                     raw = np.zeros(1, _lib.RESULT_DTYPE)
                     st = single_call(q, a, b, raw.ctypes.data)
                     self._check(st)
                     return Result(raw[0])
-                return self._batch(name, kind, a, b, distance_only)
+                return self._batch(name, kind, a, b, distance_only, out)
             finally:
                 if old is not None:
                     _lib.query_set_method(q, old)
 
-    def _batch(self, name, kind, a, b, distance_only):
+    def _batch(self, name, kind, a, b, distance_only, out=None):
         if _lib.batch is None:
             raise RuntimeError("%s: the loaded libcircledist has no batch API (cdist_batch); "
                                "arrays of objects need a library with it" % name)
@@ -335,24 +343,30 @@ class Query:
         n = math.prod(shape)
         pa, sa, keep_a = a.rows(shape, n) if isinstance(a, _CurveArg) else _rows(a.data, shape, n, a.WIDTH)
         pb, sb, keep_b = _rows(b.data, shape, n, b.WIDTH)
-        status = np.empty(n, np.int32)
-        if distance_only:
-            out = np.empty(n, np.float64)
-            st = _lib.batch_distance(self._q, kind, n, pa, sa, pb, sb, out.ctypes.data,
-                                     status.ctypes.data) if n else 0
-            res = BatchResult(None, status.reshape(shape), out.reshape(shape))
+        if out is not None:
+            if not isinstance(out, BatchResult) or out.shape != shape or \
+                    (out.raw is None) != bool(distance_only):
+                raise ValueError("%s: out must be a BatchResult of shape %s from a call with "
+                                 "distance_only=%s" % (name, shape, bool(distance_only)))
+            res = out
+        elif distance_only:
+            res = BatchResult(None, np.empty(shape, np.int32), np.empty(shape, np.float64))
         else:
-            raw = np.empty(n, _lib.RESULT_DTYPE)
-            st = _lib.batch(self._q, kind, n, pa, sa, pb, sb, raw.ctypes.data,
+            res = BatchResult(np.empty(shape, _lib.RESULT_DTYPE), np.empty(shape, np.int32))
+        status = res.status
+        if distance_only:
+            st = _lib.batch_distance(self._q, kind, n, pa, sa, pb, sb, res.distance.ctypes.data,
+                                     status.ctypes.data) if n else 0
+        else:
+            st = _lib.batch(self._q, kind, n, pa, sa, pb, sb, res.raw.ctypes.data,
                             status.ctypes.data) if n else 0
-            res = BatchResult(raw.reshape(shape), status.reshape(shape))
         del keep_a, keep_b
         if st in _CALL_ERRORS:
             self._check(st)
         return res
 
     # ---- curves ----------------------------------------------------------------------------
-    def _curve(self, name, kind, f, t0, t1, other, method, threads, distance_only):
+    def _curve(self, name, kind, f, t0, t1, other, method, threads, distance_only, out):
         if not callable(f):
             raise TypeError("%s: f must be callable as f(t) -> (position, derivative), got %s"
                             % (name, type(f).__name__))
@@ -363,14 +377,14 @@ class Query:
         def single(q, _a, b, r):
             return c_single(q, curve.fn, None, t0, t1, b.data.ctypes.data, r)
         try:
-            return self._run(name, kind, curve, other, method, threads, distance_only, single)
+            res = self._run(name, kind, curve, other, method, threads, distance_only, single, out)
         except CircleDistError as e:
             if curve.errors:
                 raise curve.errors[0] from e
             raise
-        finally:
-            if curve.errors and not isinstance(curve.errors[0], Exception):
-                raise curve.errors[0]     # KeyboardInterrupt and the like
+        if curve.errors:      # a vectorised call: the failing entries have their status
+            raise curve.errors[0]
+        return res
 
 
 class _CurveArg:
@@ -405,12 +419,10 @@ def _make_method(name, kind, cls_a, cls_b):
     def single(q, a, b, r):
         return c_fn(q, a.data.ctypes.data, b.data.ctypes.data, r)
 
-    def query(self, a, b, *, method=None, threads=None, distance_only=False):
+    def query(self, a, b, *, method=None, threads=None, distance_only=False, out=None):
         a = coerce(a, cls_a, "%s: argument a (the %s)" % (name, na))
         b = coerce(b, cls_b, "%s: argument b (the %s)" % (name, nb))
-        if a.data.dtype != np.float64 or b.data.dtype != np.float64:  # pragma: no cover
-            raise TypeError("%s: float64 data required" % name)
-        return self._run(name, kind, a, b, method, threads, distance_only, single)
+        return self._run(name, kind, a, b, method, threads, distance_only, single, out)
 
     query.__name__ = name
     query.__doc__ = """Minimum distance from a %(A)s (a) to a %(B)s (b): cdist_%(name)s.
@@ -421,7 +433,9 @@ def _make_method(name, kind, cls_a, cls_b):
         BatchResult; a bad entry gets its status and NaN, the others are answered.
         method: a Method (or its name) for this call only; threads: worker threads for the
         vectorised call (kept on the handle); distance_only: only distances (and statuses),
-        through cdist_batch_distance (SIMD screening path); always returns a BatchResult.""" % {
+        through cdist_batch_distance (SIMD screening path); always returns a BatchResult.
+        out: a BatchResult of the same shape (and distance_only) to write into instead of
+        allocating new buffers (saves the page faults of fresh memory in repeated calls).""" % {
         "A": cls_a.__name__, "B": cls_b.__name__, "name": name}
     return query
 
@@ -431,9 +445,9 @@ for _name, _kind, _ca, _cb in _KINDS:
 
 
 def _curve_method(name, kind):
-    def query(self, f, t0, t1, other, *, method=None, threads=None, distance_only=False):
+    def query(self, f, t0, t1, other, *, method=None, threads=None, distance_only=False, out=None):
         other = coerce(other, Circle if kind == KIND_CURVE_CIRCLE else Disk, "%s: argument other" % name)
-        return self._curve(name, kind, f, t0, t1, other, method, threads, distance_only)
+        return self._curve(name, kind, f, t0, t1, other, method, threads, distance_only, out)
     query.__name__ = name
     query.__doc__ = """Minimum distance from the curve f(t), t in [t0, t1], to a %s: cdist_%s.
 
@@ -445,7 +459,8 @@ def _curve_method(name, kind):
         Python costs about 1-2 us, which dominates (a query takes ~0.3-1 ms, against
         microseconds for the built-in Helix and Bezier3). With threads > 1 the callbacks still
         run one at a time (the GIL). An exception raised by f aborts the query and is re-raised
-        (chained to the CircleDistError CDIST_ERR_CALLBACK_FAILED).""" % (
+        (chained to the CircleDistError CDIST_ERR_CALLBACK_FAILED); in the vectorised form the
+        first exception is re-raised after the call and the other answers are discarded.""" % (
         "circle" if kind == KIND_CURVE_CIRCLE else "disk", name)
     return query
 
@@ -498,9 +513,10 @@ def default_query():
 def _module_function(name):
     unbound = getattr(Query, name)
 
-    def query(*args, method=None, threads=1, distance_only=False, query=None):
+    def query(*args, method=None, threads=1, distance_only=False, out=None, query=None):
         h = query if query is not None else default_query()
-        return getattr(h, name)(*args, method=method, threads=threads, distance_only=distance_only)
+        return getattr(h, name)(*args, method=method, threads=threads, distance_only=distance_only,
+                                out=out)
     query.__name__ = name
     query.__doc__ = unbound.__doc__ + """
 
