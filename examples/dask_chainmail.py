@@ -162,6 +162,19 @@ def report(res, seconds, n):
         seconds, res["candidates"] / seconds, res["query_seconds"]))
 
 
+def timed_run(args, cols, rows, client, label=None):
+    """Run on the client; print the report, or one timing line when label is given."""
+    client.run(lambda: None)                      # workers up before timing
+    t = time.perf_counter()
+    res = run(cols, rows, args.partitions, args.margin, args.seed, client)
+    seconds = time.perf_counter() - t
+    if label:
+        print("%s%.2f s, %.0f candidate pairs/s" % (label, seconds, res["candidates"] / seconds))
+    else:
+        report(res, seconds, cols * rows)
+    return res
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--rings", type=int, default=250000, help="about this many rings (square sheet)")
@@ -182,25 +195,14 @@ def main(argv=None):
         report(res, time.perf_counter() - t, cols * rows)
         return res
     from dask.distributed import Client, LocalCluster
-    counts = range(1, args.workers + 1) if args.scaling and not args.scheduler else [args.workers]
+    if args.scheduler:
+        with Client(args.scheduler) as client:
+            return timed_run(args, cols, rows, client)
     res = None
-    for w in counts:
-        if args.scheduler:
-            client = Client(args.scheduler)
-        else:
-            client = Client(LocalCluster(n_workers=w, threads_per_worker=args.threads,
-                                         processes=True, dashboard_address=None))
-        with client:
-            client.run(lambda: None)                      # workers up before timing
-            t = time.perf_counter()
-            res = run(cols, rows, args.partitions, args.margin, args.seed, client)
-            seconds = time.perf_counter() - t
-            if args.scaling:
-                print("workers %d: %.2f s, %.0f candidate pairs/s" % (w, seconds, res["candidates"] / seconds))
-            else:
-                report(res, seconds, cols * rows)
-            if not args.scheduler:
-                client.cluster.close()
+    for w in (range(1, args.workers + 1) if args.scaling else [args.workers]):
+        with LocalCluster(n_workers=w, threads_per_worker=args.threads, processes=True,
+                          dashboard_address=None) as cluster, Client(cluster) as client:
+            res = timed_run(args, cols, rows, client, "workers %d: " % w if args.scaling else None)
     return res
 
 

@@ -42,7 +42,8 @@ def test_meson_installed_package_finds_its_library(tmp_path):
     assert len(inits) == 1, inits
     site = os.path.dirname(os.path.dirname(inits[0]))
     assert os.path.exists(os.path.join(site, "circledist", "_build_config.py"))
-    assert os.path.exists(os.path.join(site, "circledist", "py.typed"))
+    for typed in ("py.typed", "__init__.pyi"):
+        assert os.path.exists(os.path.join(site, "circledist", typed))
     out = subprocess.run([PYTHON, "-c", CHECK], env=_clean_env(PYTHONPATH=site), cwd=tmp_path,
                          check=True, capture_output=True, text=True).stdout.split("\n")
     assert out[0].startswith(site)
