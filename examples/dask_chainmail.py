@@ -25,11 +25,21 @@ Workers of a remote cluster need numpy, circledist and libcircledist installed (
 functions travel with the tasks). Each task uses its thread's default circledist.Query, and
 the C calls release the GIL, so threaded workers run queries in parallel too.
 
-Scaling (measured on the development machine, 2 shared cores, 10^6 rings = 1000 x 1000, 32
-partitions, ~3.3 million candidate pairs): see the table printed by --scaling and the
-numbers in README.md (section "Python"); throughput is about 1.1-1.2 million candidate pairs
-per second per worker process and grows with workers until the cores are used up (2 workers:
-1.7x on 2 cores); beyond that, more partitions than workers only balances load.
+Scaling, measured on the development machine: 2 cores shared with other jobs (load average
+5-16 during the runs, so the numbers are rough), release build, `--scaling --workers N`:
+
+    rings      candidate pairs  single process  1 worker   2 workers  3 workers
+    10^5       0.2 million      1.65-1.88 s     1.46-2.82  1.29-2.69  0.89-1.91 s
+    10^6       2.0 million      17.9 s          13.8 s     16.0 s
+
+In a task about 40% of the time is the circledist calls (screen of every candidate pair with
+distance_only, then full answers for the ~9% closer than the margin: 1.8-4.4 us per
+candidate pair, depending on the load) and 60% numpy work (ring generation, grid, gathers).
+Tasks are independent (no ring data is shipped; results are the close pairs only), so
+throughput grows with workers only while there are idle cores: here the second worker
+competed with the other jobs for the same 2 cores and gained nothing at 10^6 rings (10-30% at
+10^5). On idle cores expect near-linear scaling up to the core count; use more partitions than
+workers (4-8 per worker) to balance the load.
 """
 import argparse
 import itertools

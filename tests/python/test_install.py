@@ -68,3 +68,13 @@ def test_pip_install_without_index(tmp_path):
         out = subprocess.run([str(venv / "bin" / "python"), "-c", check], check=True, cwd=tmp_path,
                              env=_clean_env(CIRCLEDIST_LIBRARY=lib), capture_output=True, text=True)
         assert out.stdout.startswith(str(venv))
+
+
+def test_import_error_lists_what_was_tried(tmp_path):
+    missing = str(tmp_path / "nowhere" / "libcircledist.so.1")
+    run = subprocess.run([PYTHON, "-c", "import circledist"], cwd=tmp_path, capture_output=True, text=True,
+                         env=_clean_env(CIRCLEDIST_LIBRARY=missing,
+                                        PYTHONPATH=os.path.join(SOURCE_ROOT, "python")))
+    assert run.returncode != 0
+    assert "ImportError" in run.stderr and "tried:" in run.stderr and missing in run.stderr
+    assert "$CIRCLEDIST_LIBRARY" in run.stderr
