@@ -47,36 +47,43 @@ static cdist_status k_curve_disk(cdist_query *q, const void *a, const void *b, c
     return cdist_curve_disk(q, c->fn, c->user, c->t0, c->t1, b, r);
 }
 
-/* point_kernel: -1 none, else the `disk` argument of cd_point_distance_kernel. */
+/* A family's distance-only query (no pairs, params or flags; the same status and message as the
+ * full query, *d NaN on failure), for kinds whose family offers one; NULL: the full query. */
+typedef cdist_status (*dist_fn)(cdist_query *q, const void *a, const void *b, double *d);
+
+/* The distance kernel of a kind, if any (zero, the default of a row: none). */
+enum { NO_KERNEL = 0, POINT_CIRCLE_KERNEL, POINT_DISK_KERNEL };
+
 static const struct {
     const char *name;
     size_t size_a, size_b;
     kind_fn full;
-    int point_kernel;
+    int kernel;
+    dist_fn dist;
 } kinds[] = {
-    [CDIST_KIND_POINT_CIRCLE] = {"point_circle", sizeof(cdist_vec3), sizeof(cdist_circle), k_point_circle, 0},
-    [CDIST_KIND_POINT_DISK] = {"point_disk", sizeof(cdist_vec3), sizeof(cdist_circle), k_point_disk, 1},
-    [CDIST_KIND_LINE_CIRCLE] = {"line_circle", sizeof(cdist_line), sizeof(cdist_circle), k_line_circle, -1},
-    [CDIST_KIND_RAY_CIRCLE] = {"ray_circle", sizeof(cdist_ray), sizeof(cdist_circle), k_ray_circle, -1},
-    [CDIST_KIND_SEGMENT_CIRCLE] = {"segment_circle", sizeof(cdist_segment), sizeof(cdist_circle), k_segment_circle,
-                                   -1},
-    [CDIST_KIND_CIRCLE_CIRCLE] = {"circle_circle", sizeof(cdist_circle), sizeof(cdist_circle), k_circle_circle, -1},
-    [CDIST_KIND_LINE_DISK] = {"line_disk", sizeof(cdist_line), sizeof(cdist_circle), k_line_disk, -1},
-    [CDIST_KIND_RAY_DISK] = {"ray_disk", sizeof(cdist_ray), sizeof(cdist_circle), k_ray_disk, -1},
-    [CDIST_KIND_SEGMENT_DISK] = {"segment_disk", sizeof(cdist_segment), sizeof(cdist_circle), k_segment_disk, -1},
-    [CDIST_KIND_CIRCLE_DISK] = {"circle_disk", sizeof(cdist_circle), sizeof(cdist_circle), k_circle_disk, -1},
-    [CDIST_KIND_DISK_DISK] = {"disk_disk", sizeof(cdist_circle), sizeof(cdist_circle), k_disk_disk, -1},
-    [CDIST_KIND_CURVE_CIRCLE] = {"curve_circle", sizeof(cdist_curve), sizeof(cdist_circle), k_curve_circle, -1},
-    [CDIST_KIND_CURVE_DISK] = {"curve_disk", sizeof(cdist_curve), sizeof(cdist_circle), k_curve_disk, -1},
-    [CDIST_KIND_ARC_CIRCLE] = {"arc_circle", sizeof(cdist_arc), sizeof(cdist_circle), k_arc_circle, -1},
-    [CDIST_KIND_ARC_ARC] = {"arc_arc", sizeof(cdist_arc), sizeof(cdist_arc), k_arc_arc, -1},
-    [CDIST_KIND_SEGMENT_ARC] = {"segment_arc", sizeof(cdist_segment), sizeof(cdist_arc), k_segment_arc, -1},
-    [CDIST_KIND_ARC_DISK] = {"arc_disk", sizeof(cdist_arc), sizeof(cdist_circle), k_arc_disk, -1},
-    [CDIST_KIND_HELIX_CIRCLE] = {"helix_circle", sizeof(cdist_helix), sizeof(cdist_circle), k_helix_circle, -1},
-    [CDIST_KIND_HELIX_DISK] = {"helix_disk", sizeof(cdist_helix), sizeof(cdist_circle), k_helix_disk, -1},
-    [CDIST_KIND_BEZIER3_CIRCLE] = {"bezier3_circle", sizeof(cdist_bezier3), sizeof(cdist_circle), k_bezier3_circle,
-                                   -1},
-    [CDIST_KIND_BEZIER3_DISK] = {"bezier3_disk", sizeof(cdist_bezier3), sizeof(cdist_circle), k_bezier3_disk, -1},
+    [CDIST_KIND_POINT_CIRCLE] = {"point_circle", sizeof(cdist_vec3), sizeof(cdist_circle), k_point_circle,
+                                 .kernel = POINT_CIRCLE_KERNEL},
+    [CDIST_KIND_POINT_DISK] = {"point_disk", sizeof(cdist_vec3), sizeof(cdist_circle), k_point_disk,
+                               .kernel = POINT_DISK_KERNEL},
+    [CDIST_KIND_LINE_CIRCLE] = {"line_circle", sizeof(cdist_line), sizeof(cdist_circle), k_line_circle},
+    [CDIST_KIND_RAY_CIRCLE] = {"ray_circle", sizeof(cdist_ray), sizeof(cdist_circle), k_ray_circle},
+    [CDIST_KIND_SEGMENT_CIRCLE] = {"segment_circle", sizeof(cdist_segment), sizeof(cdist_circle), k_segment_circle},
+    [CDIST_KIND_CIRCLE_CIRCLE] = {"circle_circle", sizeof(cdist_circle), sizeof(cdist_circle), k_circle_circle},
+    [CDIST_KIND_LINE_DISK] = {"line_disk", sizeof(cdist_line), sizeof(cdist_circle), k_line_disk},
+    [CDIST_KIND_RAY_DISK] = {"ray_disk", sizeof(cdist_ray), sizeof(cdist_circle), k_ray_disk},
+    [CDIST_KIND_SEGMENT_DISK] = {"segment_disk", sizeof(cdist_segment), sizeof(cdist_circle), k_segment_disk},
+    [CDIST_KIND_CIRCLE_DISK] = {"circle_disk", sizeof(cdist_circle), sizeof(cdist_circle), k_circle_disk},
+    [CDIST_KIND_DISK_DISK] = {"disk_disk", sizeof(cdist_circle), sizeof(cdist_circle), k_disk_disk},
+    [CDIST_KIND_CURVE_CIRCLE] = {"curve_circle", sizeof(cdist_curve), sizeof(cdist_circle), k_curve_circle},
+    [CDIST_KIND_CURVE_DISK] = {"curve_disk", sizeof(cdist_curve), sizeof(cdist_circle), k_curve_disk},
+    [CDIST_KIND_ARC_CIRCLE] = {"arc_circle", sizeof(cdist_arc), sizeof(cdist_circle), k_arc_circle},
+    [CDIST_KIND_ARC_ARC] = {"arc_arc", sizeof(cdist_arc), sizeof(cdist_arc), k_arc_arc},
+    [CDIST_KIND_SEGMENT_ARC] = {"segment_arc", sizeof(cdist_segment), sizeof(cdist_arc), k_segment_arc},
+    [CDIST_KIND_ARC_DISK] = {"arc_disk", sizeof(cdist_arc), sizeof(cdist_circle), k_arc_disk},
+    [CDIST_KIND_HELIX_CIRCLE] = {"helix_circle", sizeof(cdist_helix), sizeof(cdist_circle), k_helix_circle},
+    [CDIST_KIND_HELIX_DISK] = {"helix_disk", sizeof(cdist_helix), sizeof(cdist_circle), k_helix_disk},
+    [CDIST_KIND_BEZIER3_CIRCLE] = {"bezier3_circle", sizeof(cdist_bezier3), sizeof(cdist_circle), k_bezier3_circle},
+    [CDIST_KIND_BEZIER3_DISK] = {"bezier3_disk", sizeof(cdist_bezier3), sizeof(cdist_circle), k_bezier3_disk},
 };
 #define KIND_COUNT ((int)(sizeof kinds / sizeof kinds[0]))
 
@@ -101,9 +108,12 @@ static void record(cd_slot *slot, cdist_query *h, size_t i, cdist_status st)
 static void entry(cdist_query *h, const cd_job *job, size_t i, cd_slot *slot)
 {
     kind_fn f = kinds[job->kind].full;
+    dist_fn df = kinds[job->kind].dist;
     cdist_status st;
     if (job->results) {
         st = f(h, cd_job_a(job, i), cd_job_b(job, i), &job->results[i]);
+    } else if (df) {
+        st = df(h, cd_job_a(job, i), cd_job_b(job, i), &job->distances[i]);
     } else {
         cdist_result r;
         st = f(h, cd_job_a(job, i), cd_job_b(job, i), &r);
@@ -113,17 +123,27 @@ static void entry(cdist_query *h, const cd_job *job, size_t i, cd_slot *slot)
     record(slot, h, i, st);
 }
 
+static inline size_t lowest_bit(uint64_t x)
+{
+#if defined(__GNUC__)
+    return (size_t)__builtin_ctzll(x);
+#else
+    size_t k = 0;
+    while (!(x >> k & 1)) k++;
+    return k;
+#endif
+}
+
 void cd_batch_range(cdist_query *h, const cd_job *job, size_t lo, size_t hi, cd_slot *slot)
 {
-    int pk = kinds[job->kind].point_kernel;
-    if (job->distances && pk >= 0) {
+    int kernel = kinds[job->kind].kernel;
+    if (job->distances && kernel != NO_KERNEL) {
         for (size_t i = lo; i < hi; i += 64) {
             size_t cnt = hi - i < 64 ? hi - i : 64;
-            uint64_t left = cd_point_distance_kernel(job, pk, h->unit_tol, i, cnt);
-            for (size_t k = 0; k < cnt; k++) {
-                if (left >> k & 1) entry(h, job, i + k, slot);
-                else if (job->statuses) job->statuses[i + k] = CDIST_OK;
-            }
+            uint64_t left = cd_point_distance_kernel(job, kernel == POINT_DISK_KERNEL, h->unit_tol, i, cnt);
+            if (job->statuses)
+                for (size_t k = 0; k < cnt; k++) job->statuses[i + k] = CDIST_OK;
+            for (; left; left &= left - 1) entry(h, job, i + lowest_bit(left), slot);
         }
         return;
     }

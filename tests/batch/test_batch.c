@@ -8,6 +8,8 @@
  * - 1, 2 and 7 threads give bit-identical results;
  * - strides: user structs, broadcast (0), negative; NULL handle/arrays, bad kind, messages. */
 #include <float.h>
+#include <pthread.h>
+#include <time.h>
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -19,43 +21,9 @@
 #include "circledist.h"
 #include "errata.h"
 #include "query_io.h"
+#include "single.h"
 
 static const char *errata_file;
-
-/* The single query of one entry, written independently of the library's kind table. */
-static cdist_status single(cdist_query *q, cdist_kind k, const void *a, const void *b, cdist_result *r)
-{
-    switch (k) {
-    case CDIST_KIND_POINT_CIRCLE: return cdist_point_circle(q, a, b, r);
-    case CDIST_KIND_POINT_DISK: return cdist_point_disk(q, a, b, r);
-    case CDIST_KIND_LINE_CIRCLE: return cdist_line_circle(q, a, b, r);
-    case CDIST_KIND_RAY_CIRCLE: return cdist_ray_circle(q, a, b, r);
-    case CDIST_KIND_SEGMENT_CIRCLE: return cdist_segment_circle(q, a, b, r);
-    case CDIST_KIND_CIRCLE_CIRCLE: return cdist_circle_circle(q, a, b, r);
-    case CDIST_KIND_LINE_DISK: return cdist_line_disk(q, a, b, r);
-    case CDIST_KIND_RAY_DISK: return cdist_ray_disk(q, a, b, r);
-    case CDIST_KIND_SEGMENT_DISK: return cdist_segment_disk(q, a, b, r);
-    case CDIST_KIND_CIRCLE_DISK: return cdist_circle_disk(q, a, b, r);
-    case CDIST_KIND_DISK_DISK: return cdist_disk_disk(q, a, b, r);
-    case CDIST_KIND_CURVE_CIRCLE: {
-        const cdist_curve *c = a;
-        return cdist_curve_circle(q, c->fn, c->user, c->t0, c->t1, b, r);
-    }
-    case CDIST_KIND_CURVE_DISK: {
-        const cdist_curve *c = a;
-        return cdist_curve_disk(q, c->fn, c->user, c->t0, c->t1, b, r);
-    }
-    case CDIST_KIND_ARC_CIRCLE: return cdist_arc_circle(q, a, b, r);
-    case CDIST_KIND_ARC_ARC: return cdist_arc_arc(q, a, b, r);
-    case CDIST_KIND_SEGMENT_ARC: return cdist_segment_arc(q, a, b, r);
-    case CDIST_KIND_ARC_DISK: return cdist_arc_disk(q, a, b, r);
-    case CDIST_KIND_HELIX_CIRCLE: return cdist_helix_circle(q, a, b, r);
-    case CDIST_KIND_HELIX_DISK: return cdist_helix_disk(q, a, b, r);
-    case CDIST_KIND_BEZIER3_CIRCLE: return cdist_bezier3_circle(q, a, b, r);
-    case CDIST_KIND_BEZIER3_DISK: return cdist_bezier3_disk(q, a, b, r);
-    }
-    return CDIST_ERR_BAD_KIND;
-}
 
 static const struct {
     const char *file;
@@ -346,6 +314,53 @@ static void strides(cdist_query *q)
     free(items);
 }
 
+/* Threads really run concurrently: a callback curve whose evaluations wait (up to 10 s) until a
+ * second thread has evaluated too, recording the threads seen. */
+static pthread_mutex_t seen_mutex = PTHREAD_MUTEX_INITIALIZER;
+static pthread_t seen[64];
+static int nseen;
+
+static int seen_count(void)
+{
+    pthread_mutex_lock(&seen_mutex);
+    pthread_t me = pthread_self();
+    int found = 0;
+    for (int i = 0; i < nseen; i++) found |= pthread_equal(seen[i], me);
+    if (!found && nseen < 64) seen[nseen++] = me;
+    int n = nseen;
+    pthread_mutex_unlock(&seen_mutex);
+    return n;
+}
+
+static int waiting_fn(void *user, double t, cdist_vec3 *p, cdist_vec3 *d)
+{
+    struct timespec t0, t1;
+    clock_gettime(CLOCK_MONOTONIC, &t0);
+    do {
+        if (seen_count() >= 2) break;
+        clock_gettime(CLOCK_MONOTONIC, &t1);
+    } while (t1.tv_sec - t0.tv_sec < 10);
+    return circ_fn(user, t, p, d);
+}
+
+static void concurrency(cdist_query *q)
+{
+    enum { N = 400 };
+    cdist_circle c = {{0, 0, 0}, {0, 0, 1}, 1.0}, other = {{0.5, 0.2, 0.3}, {0.6, 0, 0.8}, 0.7};
+    circ_curve k = circ_curve_of(&c);
+    cdist_curve cv = {waiting_fn, &k, -M_PI, M_PI};
+    cdist_result *r = malloc(N * sizeof *r);
+    cdist_query_set_curve_samples(q, 8);
+    CHECK(cdist_query_set_threads(q, 2) == CDIST_OK, "2 threads");
+    nseen = 0;
+    CHECK(cdist_batch(q, CDIST_KIND_CURVE_CIRCLE, N, &cv, 0, &other, 0, r, NULL) == CDIST_OK, "waiting batch");
+    CHECK(nseen >= 2, "only %d thread(s) evaluated the curves of a 2-thread batch", nseen);
+    CHECK(r[0].distance == r[N - 1].distance, "broadcast entries agree");
+    cdist_query_set_threads(q, 1);
+    cdist_query_set_curve_samples(q, 512);
+    free(r);
+}
+
 static void conventions(cdist_query *q)
 {
     CHECK(cdist_kind_count() == 21, "kind count %d", cdist_kind_count());
@@ -428,6 +443,7 @@ int main(int argc, char **argv)
     cdist_query *q = cdist_query_new();
     conventions(q);
     strides(q);
+    concurrency(q);
     const char *sets[] = {"random", "hard"};
     for (size_t k = 0; k < sizeof files / sizeof files[0]; k++)
         for (int s = 0; s < 2; s++) run_file(q, argc - first, argv + first, files[k].file, files[k].kind, sets[s]);

@@ -1,0 +1,111 @@
+/* The point-circle/point-disk distance kernels, each instruction set the machine has (scalar,
+ * AVX2, AVX-512), against the single queries: a kernel leaves an entry to the scalar path exactly
+ * when the single query rejects it, and its distances are bit-identical to the single query's.
+ * The kernel source is compiled into this test so that every variant can be called directly. */
+#include "../../src/batch/point_kernel.c"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "check.h"
+
+enum { N = 4099 };
+static cdist_vec3 P[N];
+static cdist_circle C[N];
+static double D[N];
+
+static uint64_t rng = 0x9E3779B97F4A7C15ull;
+static double rnd01(void)
+{
+    rng ^= rng << 13;
+    rng ^= rng >> 7;
+    rng ^= rng << 17;
+    return (double)(rng >> 11) * 0x1p-53;
+}
+
+static void make(void)
+{
+    for (int i = 0; i < N; i++) {
+        double s = pow(10.0, 6.0 * rnd01() - 3.0);
+        cdist_vec3 n = {rnd01() - 0.5, rnd01() - 0.5, rnd01() - 0.5};
+        double ln = sqrt(n.x * n.x + n.y * n.y + n.z * n.z);
+        n.x /= ln, n.y /= ln, n.z /= ln;
+        C[i] = (cdist_circle){{s * (rnd01() - 0.5), s * (rnd01() - 0.5), s * (rnd01() - 0.5)}, n, s * rnd01()};
+        P[i] = (cdist_vec3){s * (2 * rnd01() - 1), s * (2 * rnd01() - 1), s * (2 * rnd01() - 1)};
+        switch (i % 23) { /* special and bad entries */
+        case 1: P[i] = (cdist_vec3){C[i].center.x + 3 * n.x, C[i].center.y + 3 * n.y, C[i].center.z + 3 * n.z}; break;
+        case 2: C[i].radius = 0.0; break;
+        case 3: C[i].radius = -0.5; break;
+        case 4: P[i].y = NAN; break;
+        case 5: C[i].center.z = INFINITY; break;
+        case 6: C[i].normal = (cdist_vec3){0, 0, 0}; break;
+        case 7: C[i].normal.x *= 1.01; break; /* not unit */
+        case 8: C[i].normal.y = NAN; break;
+        case 9: P[i].x = 2e150; break;
+        case 10: C[i].radius = INFINITY; break;
+        case 11: C[i].radius = -0.0; break;
+        case 12: C[i].normal = (cdist_vec3){0, 0, 1.0 + 1e-7}; break;
+        case 13: C[i].normal = (cdist_vec3){0, 0, -1}; P[i].x = C[i].center.x + 0.5 * C[i].radius; break; /* over the disk */
+        case 14: P[i].z = -INFINITY; C[i].normal.x = NAN; break;
+        default: break;
+        }
+    }
+}
+
+typedef uint64_t (*kfn)(const cd_job *, int, double, size_t, size_t);
+
+static void check_kernel(const char *name, kfn k, cdist_query *q, double tol)
+{
+    cdist_query_set_unit_tolerance(q, tol);
+    for (int disk = 0; disk < 2; disk++) {
+        cd_job job = {disk ? CDIST_KIND_POINT_DISK : CDIST_KIND_POINT_CIRCLE, N, (const char *)P, (const char *)C,
+                      sizeof P[0], sizeof C[0], NULL, D, NULL, 64};
+        int bad = 0, wrong_left = 0, checked = 0;
+        for (size_t lo = 0; lo < N; lo += 64) {
+            size_t cnt = N - lo < 64 ? N - lo : 64;
+            for (size_t i = lo; i < lo + cnt; i++) D[i] = -1.0;
+            uint64_t left = k(&job, disk, tol, lo, cnt);
+            for (size_t j = 0; j < cnt; j++) {
+                size_t i = lo + j;
+                cdist_result r;
+                cdist_status st = disk ? cdist_point_disk(q, &P[i], &C[i], &r) : cdist_point_circle(q, &P[i], &C[i], &r);
+                int l = (int)(left >> j & 1);
+                if (l != (st != CDIST_OK)) {
+                    if (wrong_left++ < 3)
+                        CHECK(0, "%s disk=%d entry %zu: kernel %s, single query %s", name, disk, i,
+                              l ? "left it" : "answered", cdist_status_name(st));
+                    continue;
+                }
+                if (!l) {
+                    checked++;
+                    if (memcmp(&D[i], &r.distance, sizeof(double)) && bad++ < 3)
+                        CHECK(0, "%s disk=%d entry %zu: %.17g vs single %.17g", name, disk, i, D[i], r.distance);
+                }
+            }
+        }
+        CHECK(bad == 0 && wrong_left == 0, "%s disk=%d tol=%g: %d distances differ, %d entries misrouted", name, disk,
+              tol, bad, wrong_left);
+        CHECK(checked > (tol > 0 ? N / 2 : N / 20), "%s: only %d entries answered by the kernel", name, checked);
+    }
+}
+
+int main(void)
+{
+    make();
+    cdist_query *q = cdist_query_new();
+    double tols[] = {1e-6, 0.0, INFINITY};
+    for (int t = 0; t < 3; t++) {
+        check_kernel("scalar", kernel_scalar, q, tols[t]);
+#ifdef CD_X86_KERNELS
+        __builtin_cpu_init();
+        if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma")) check_kernel("avx2", kernel_avx2, q, tols[t]);
+        else printf("no AVX2 here: skipped\n");
+        if (__builtin_cpu_supports("avx512f"))
+            check_kernel("avx512", kernel_avx512, q, tols[t]);
+        else printf("no AVX-512 here: skipped\n");
+#endif
+    }
+    cdist_query_free(q);
+    return check_summary("point-kernel");
+}
