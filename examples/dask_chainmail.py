@@ -30,16 +30,17 @@ Scaling, measured on the development machine: 2 cores shared with other jobs (lo
 
     rings      candidate pairs  single process  1 worker   2 workers  3 workers
     10^5       0.2 million      1.65-1.88 s     1.46-2.82  1.29-2.69  0.89-1.91 s
-    10^6       2.0 million      17.9 s          13.8 s     16.0 s
+    10^6       2.0 million      17.9 s          13.8 s     16.0 s     (load ~12)
+    10^6       2.0 million      14.1 s          14.1 s     9.2 s      (load ~6)
 
 In a task about 40% of the time is the circledist calls (screen of every candidate pair with
 distance_only, then full answers for the ~9% closer than the margin: 1.8-4.4 us per
 candidate pair, depending on the load) and 60% numpy work (ring generation, grid, gathers).
 Tasks are independent (no ring data is shipped; results are the close pairs only), so
-throughput grows with workers only while there are idle cores: here the second worker
-competed with the other jobs for the same 2 cores and gained nothing at 10^6 rings (10-30% at
-10^5). On idle cores expect near-linear scaling up to the core count; use more partitions than
-workers (4-8 per worker) to balance the load.
+throughput grows with workers while there are idle cores: 2 workers gave 1.5x (142k -> 217k
+candidate pairs/s) when the machine was moderately loaded, nothing when it was saturated by
+other jobs. Expect near-linear scaling up to the core count on an idle machine; use more
+partitions than workers (4-8 per worker) to balance the load.
 """
 import argparse
 import itertools
