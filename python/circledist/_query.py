@@ -1,6 +1,7 @@
 """Query handles, results and the query functions (internal module; see the package docs)."""
 import ctypes
 import enum
+import inspect
 import math
 import threading
 
@@ -518,6 +519,11 @@ def _module_function(name):
         h = query if query is not None else default_query()
         return getattr(h, name)(*args, method=method, threads=threads, distance_only=distance_only,
                                 out=out)
+    sig = inspect.signature(unbound)
+    params = [p for p in sig.parameters.values() if p.name != "self"]
+    params = [p.replace(default=1) if p.name == "threads" else p for p in params]
+    query.__signature__ = sig.replace(parameters=params + [
+        inspect.Parameter("query", inspect.Parameter.KEYWORD_ONLY, default=None)])
     query.__name__ = name
     query.__doc__ = unbound.__doc__ + """
 
