@@ -17,7 +17,6 @@ It prints one line per neighbour pair and writes a PNG (matplotlib, Agg backend)
 with their closest segments drawn in red.
 """
 import argparse
-import math
 
 import numpy as np
 

@@ -8,8 +8,8 @@ import threading
 import numpy as np
 
 from . import _lib
-from ._objects import (Arc, Bezier3, Circle, Disk, GeometricObject, Helix, Line, Point, Ray,
-                       Segment, as_float_array, coerce)
+from ._objects import (Arc, Bezier3, Circle, Disk, Helix, Line, Point, Ray, Segment,
+                       as_float_array, coerce)
 
 
 class Method(enum.IntEnum):
