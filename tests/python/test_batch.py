@@ -185,3 +185,26 @@ def test_out_buffers_are_reused():
         cd.circle_circle(a, b, out=d)
     with pytest.raises(ValueError, match="out must be"):
         cd.circle_circle(a[:10], b[:10], out=first)
+
+
+def test_python_threads_share_a_query_safely():
+    import threading
+    a, b = _circles(3000), _circles(3000)
+    want = cd.circle_circle(a, b).distance
+    q = cd.Query()
+    got = {}
+
+    def work(k):
+        got[("shared", k)] = q.circle_circle(a, b).distance          # serialised by the lock
+        got[("default", k)] = cd.circle_circle(a, b).distance        # this thread's own handle
+    threads = [threading.Thread(target=work, args=(k,)) for k in range(4)]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    assert len(got) == 8 and all(np.array_equal(v, want) for v in got.values())
+
+
+def test_plain_nested_lists_are_points():
+    res = cd.point_disk([[0, 0, 2], [3, 0, 0]], cd.Disk((0, 0, 0), (0, 0, 1), 1))
+    assert res.distance.tolist() == [2.0, 2.0]
