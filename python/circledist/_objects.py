@@ -29,7 +29,7 @@ def as_float_array(value, what, width=None):
 class GeometricObject:
     """Base class: one object or an array of objects of one type, stored as ``data``."""
 
-    __slots__ = ("data",)
+    __slots__ = ("data", "_addr")
     #: (name, width, object class or None); width None is a scalar field.
     FIELDS = ()
     WIDTH = 0
@@ -39,6 +39,10 @@ class GeometricObject:
         if len(values) != len(self.FIELDS):
             raise TypeError("%s() takes %d arguments (%s), got %d" % (
                 name, len(self.FIELDS), ", ".join(f[0] for f in self.FIELDS), len(values)))
+        flat = _flat_single(self.FIELDS, values)
+        if flat is not None:  # one object from plain numbers: the fast path
+            self.data = np.array(flat, dtype=np.float64)
+            return
         arrays = []
         for (field, width, cls), v in zip(self.FIELDS, values):
             what = "%s.%s" % (name, field)
@@ -60,6 +64,15 @@ class GeometricObject:
             data[..., col:col + a.shape[-1]] = a
             col += a.shape[-1]
         self.data = data
+
+    @property
+    def address(self):
+        """Address of ``data`` (for the C calls; cached, ``data`` is never replaced)."""
+        try:
+            return self._addr
+        except AttributeError:
+            self._addr = self.data.ctypes.data
+            return self._addr
 
     @classmethod
     def from_array(cls, array):
@@ -93,6 +106,38 @@ class GeometricObject:
             return "<%s array of shape %s>" % (type(self).__name__, self.shape)
         return "%s(%s)" % (type(self).__name__, ", ".join(
             "%s=%r" % (f[0], _plain(getattr(self, f[0]))) for f in self.FIELDS))
+
+
+_NUMBER = (int, float)
+
+
+def _flat_single(fields, values):
+    """The doubles of one object given as Python numbers and short tuples/lists, else None
+    (numpy input, batches and errors take the general path)."""
+    flat = []
+    for (_, width, cls), v in zip(fields, values):
+        if cls is not None:
+            if isinstance(v, cls) and v.data.ndim == 1:
+                flat.extend(v.data.tolist())
+                continue
+            if not isinstance(v, (tuple, list)):
+                return None
+            sub = _flat_single(cls.FIELDS, v) if len(v) == len(cls.FIELDS) else None
+            if sub is None:
+                return None
+            flat.extend(sub)
+        elif width is None:
+            if type(v) not in _NUMBER:
+                return None
+            flat.append(v)
+        else:
+            if type(v) not in (tuple, list) or len(v) != width:
+                return None
+            for x in v:
+                if type(x) not in _NUMBER:
+                    return None
+            flat.extend(v)
+    return flat
 
 
 def _plain(v):
@@ -236,6 +281,11 @@ def coerce(value, cls, what):
         raise TypeError("%s: expected %s, got %s" % (what, " or ".join(c.__name__ for c in accepted),
                                                      type(value).__name__))
     if cls is Point:
+        flat = _flat_single(Point.FIELDS, (value,))
+        if flat is not None:
+            p = Point.__new__(Point)
+            p.data = np.array(flat, dtype=np.float64)
+            return p
         return Point.from_array(as_float_array(value, what, 3))
     if isinstance(value, (tuple, list)):
         try:

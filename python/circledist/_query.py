@@ -3,6 +3,7 @@ import ctypes
 import enum
 import inspect
 import math
+import struct
 import threading
 
 import numpy as np
@@ -82,6 +83,16 @@ class Pair(tuple):
         return "Pair(points=%r, params=%r)" % (self[0].tolist(), self[1].tolist())
 
 
+# struct cdist_result up to its reserved area: distance, sqr_distance, num_pairs, equidistant,
+# pairs (2 x (point[2][3], param[2])), method, iterations -- checked against RESULT_DTYPE below.
+_RESULT_HEAD = struct.Struct("=2d2i16d2i")
+_METHODS = tuple(Method)
+_OFFSETS = {k: v[1] for k, v in _lib.RESULT_DTYPE.fields.items()}
+assert (_OFFSETS["pairs"], _OFFSETS["num_pairs"], _OFFSETS["equidistant"], _OFFSETS["method"],
+        _OFFSETS["iterations"], _lib.PAIR_DTYPE.itemsize, _RESULT_HEAD.size) == \
+    (24, 16, 20, 152, 156, 64, 160), _OFFSETS
+
+
 class Result:
     """The answer to one query.
 
@@ -93,22 +104,40 @@ class Result:
     exist (one representative is given). method: the Method that answered; iterations: used by
     Method.ITERATION (else 0)."""
 
-    __slots__ = ("distance", "sqr_distance", "points", "params", "equidistant", "method", "iterations")
+    __slots__ = ("distance", "sqr_distance", "num_pairs", "equidistant", "method", "iterations",
+                 "_pairs", "_points", "_params")
 
     def __init__(self, raw):
-        k = int(raw["num_pairs"])
-        self.distance = float(raw["distance"])
-        self.sqr_distance = float(raw["sqr_distance"])
-        self.points = raw["pairs"]["point"][:k].copy()
-        self.params = raw["pairs"]["param"][:k].copy()
-        self.equidistant = bool(raw["equidistant"])
-        self.method = Method(int(raw["method"]))
-        self.iterations = int(raw["iterations"])
+        """raw: one cdist_result as a numpy structured scalar or 0-d array (RESULT_DTYPE)."""
+        self._read(np.ascontiguousarray(np.asarray(raw).reshape(1)).data)
+
+    @classmethod
+    def _from_buffer(cls, buffer):
+        r = cls.__new__(cls)
+        r._read(buffer)
+        return r
+
+    def _read(self, buffer):
+        v = _RESULT_HEAD.unpack_from(buffer)
+        self.distance, self.sqr_distance, k, eq = v[0], v[1], v[2], v[3]
+        self.num_pairs, self.equidistant = k, bool(eq)
+        self.method, self.iterations = _METHODS[v[20]], v[21]
+        self._pairs = v[4:4 + 8 * k]
+        self._points = self._params = None
 
     @property
-    def num_pairs(self):
-        """Number of closest pairs given (1 or 2)."""
-        return len(self.points)
+    def points(self):
+        """Closest points, shape (num_pairs, 2, 3): [i, 0] on the first object, [i, 1] on the second."""
+        if self._points is None:
+            self._points = np.array(self._pairs).reshape(-1, 8)[:, :6].reshape(-1, 2, 3)
+        return self._points
+
+    @property
+    def params(self):
+        """Parameters of the closest points, shape (num_pairs, 2)."""
+        if self._params is None:
+            self._params = np.array(self._pairs).reshape(-1, 8)[:, 6:]
+        return self._params
 
     @property
     def pairs(self):
@@ -230,6 +259,9 @@ class Query:
     def __init__(self, method=Method.AUTO, unit_tolerance=None, curve_samples=None,
                  max_iterations=None, threads=1):
         self._lock = threading.RLock()
+        self._one = np.zeros(1, _lib.RESULT_DTYPE)        # result buffer of single queries
+        self._one_buffer = self._one.data
+        self._one_addr = self._one.ctypes.data
         self._q = _lib.query_new()
         if not self._q:
             raise MemoryError("cdist_query_new failed")
@@ -323,10 +355,8 @@ class Query:
                 if threads is not None:
                     self.set_threads(threads)
                 if a.shape == () and b.shape == () and not distance_only and out is None:
-                    raw = np.zeros(1, _lib.RESULT_DTYPE)
-                    st = single_call(q, a, b, raw.ctypes.data)
-                    self._check(st)
-                    return Result(raw[0])
+                    self._check(single_call(q, a, b, self._one_addr))
+                    return Result._from_buffer(self._one_buffer)
                 return self._batch(name, kind, a, b, distance_only, out)
             finally:
                 if old is not None:
@@ -376,7 +406,7 @@ class Query:
         c_single = _lib.curve_circle if kind == KIND_CURVE_CIRCLE else _lib.curve_disk
 
         def single(q, _a, b, r):
-            return c_single(q, curve.fn, None, t0, t1, b.data.ctypes.data, r)
+            return c_single(q, curve.fn, None, t0, t1, b.address, r)
         try:
             res = self._run(name, kind, curve, other, method, threads, distance_only, single, out)
         except CircleDistError as e:
@@ -418,11 +448,20 @@ def _make_method(name, kind, cls_a, cls_b):
     na, nb = name.split("_")
 
     def single(q, a, b, r):
-        return c_fn(q, a.data.ctypes.data, b.data.ctypes.data, r)
+        return c_fn(q, a.address, b.address, r)
 
     def query(self, a, b, *, method=None, threads=None, distance_only=False, out=None):
-        a = coerce(a, cls_a, "%s: argument a (the %s)" % (name, na))
-        b = coerce(b, cls_b, "%s: argument b (the %s)" % (name, nb))
+        if type(a) is not cls_a:
+            a = coerce(a, cls_a, "%s: argument a (the %s)" % (name, na))
+        if type(b) is not cls_b:
+            b = coerce(b, cls_b, "%s: argument b (the %s)" % (name, nb))
+        if a.data.ndim == 1 and b.data.ndim == 1 and method is None and not distance_only and \
+                out is None and (threads is None or threads == self._threads):
+            with self._lock:       # the common single query, kept short
+                st = c_fn(self._handle(), a.address, b.address, self._one_addr)
+                if st:
+                    self._check(st)
+                return Result._from_buffer(self._one_buffer)
         return self._run(name, kind, a, b, method, threads, distance_only, single, out)
 
     query.__name__ = name
