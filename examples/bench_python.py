@@ -1,0 +1,119 @@
+#!/usr/bin/env python3
+"""Per-query cost of the vectorised Python calls against the bare C batch call.
+
+    python3 examples/bench_python.py [--n 1000000] [--repeats 5] [--threads 1]
+
+"C batch": one cdist_batch / cdist_batch_distance call on ready (N, 7) arrays and result
+buffers (through ctypes: one call, so the binding adds nothing per query). "Python": the whole
+user-level call, circledist.circle_circle(Circle(centers, normals, radii), ...), including
+packing the field arrays into the C layout, allocating the results and wrapping them as numpy
+views. Minimum over repeats (the machine is noisy); random unit-scale circle pairs.
+"""
+import argparse
+import time
+
+import numpy as np
+
+import circledist as cd
+from circledist import _lib
+
+
+def best(f, repeats):
+    t = []
+    for _ in range(repeats):
+        t0 = time.perf_counter()
+        f()
+        t.append(time.perf_counter() - t0)
+    return min(t)
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--n", type=int, default=1000000)
+    ap.add_argument("--repeats", type=int, default=5)
+    ap.add_argument("--threads", type=int, default=1)
+    args = ap.parse_args(argv)
+    n = args.n
+    rng = np.random.default_rng(1)
+
+    def unit():
+        v = rng.normal(size=(n, 3))
+        return v / np.linalg.norm(v, axis=1)[:, None]
+    fields = [(rng.uniform(-1, 1, (n, 3)), unit(), rng.uniform(0.2, 1.5, n)) for _ in range(2)]
+    packed = [cd.Circle(*f).data for f in fields]
+    q = cd.Query(threads=args.threads)
+    raw = np.empty(n, _lib.RESULT_DTYPE)
+    dist = np.empty(n)
+    status = np.empty(n, np.int32)
+    A, B = packed
+
+    def c_full():
+        _lib.batch(q._q, 5, n, A.ctypes.data, 56, B.ctypes.data, 56, raw.ctypes.data, status.ctypes.data)
+
+    def c_full_fresh():  # as a one-shot C caller: malloc'ed (not yet touched) result buffers
+        r, s = np.empty(n, _lib.RESULT_DTYPE), np.empty(n, np.int32)
+        _lib.batch(q._q, 5, n, A.ctypes.data, 56, B.ctypes.data, 56, r.ctypes.data, s.ctypes.data)
+
+    def c_dist():
+        _lib.batch_distance(q._q, 5, n, A.ctypes.data, 56, B.ctypes.data, 56, dist.ctypes.data,
+                            status.ctypes.data)
+
+    def py_full():
+        return q.circle_circle(cd.Circle(*fields[0]), cd.Circle(*fields[1]))
+
+    reuse = py_full()
+
+    def py_full_out():
+        return q.circle_circle(cd.Circle(*fields[0]), cd.Circle(*fields[1]), out=reuse)
+
+    def py_dist():
+        return q.circle_circle(cd.Circle(*fields[0]), cd.Circle(*fields[1]), distance_only=True)
+
+    def py_view():
+        return q.circle_circle(cd.Circle.from_array(A), cd.Circle.from_array(B), out=reuse)
+
+    rows = [("full, fresh buffers", c_full_fresh, py_full), ("full, reused buffers", c_full, py_full_out),
+            ("full, from_array+out", c_full, py_view), ("distance only", c_dist, py_dist)]
+    print("%d circle-circle queries, threads=%d, min of %d (C and Python interleaved)" % (
+        n, args.threads, args.repeats))
+    print("%-22s %12s %12s %7s" % ("", "C batch", "Python", "ratio"))
+    for name, c, p in rows:
+        tc, tp = [], []
+        for _ in range(args.repeats):
+            tc.append(best(c, 1))
+            tp.append(best(p, 1))
+        tc, tp = min(tc), min(tp)
+        print("%-22s %9.3f us %9.3f us %7.3f" % (name, 1e6 * tc / n, 1e6 * tp / n, tp / tc))
+    # Noise-free view of the same thing: inside one Python call, the time spent in the C call
+    # against the whole call (everything else is the binding's overhead).
+    inner = []
+    saved = (_lib.batch, _lib.batch_distance)
+    for fn_name in ("batch", "batch_distance"):
+        real = getattr(_lib, fn_name)
+
+        def timed(*a, _real=real):
+            t0 = time.perf_counter()
+            st = _real(*a)
+            inner.append(time.perf_counter() - t0)
+            return st
+        setattr(_lib, fn_name, timed)
+    try:
+        for name, p in (("full results", py_full), ("distance only", py_dist)):
+            ratios = []
+            for _ in range(args.repeats):
+                inner.clear()
+                t0 = time.perf_counter()
+                p()
+                total = time.perf_counter() - t0
+                ratios.append((total - inner[0], total / inner[0]))
+            over, ratio = min(ratios)
+            print("%-22s overhead outside the C call %.3f us/query, whole call / C call %.3f" % (
+                name, 1e6 * over / n, ratio))
+    finally:
+        _lib.batch, _lib.batch_distance = saved
+    # the Python answer is the C answer
+    assert np.array_equal(py_full().distance, (c_full(), raw["distance"])[1])
+
+
+if __name__ == "__main__":
+    main()

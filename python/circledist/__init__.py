@@ -1,0 +1,44 @@
+"""circledist: exact minimum distances and all closest pairs between 3D circles, disks, points,
+lines, rays, segments, arcs, helices, cubic Beziers and callback curves (libcircledist).
+
+    import circledist as cd
+    r = cd.circle_circle(cd.Circle((0, 0, 0), (0, 0, 1), 1), cd.Circle((1, 0, 0), (0, 1, 0), 1))
+    r.distance, r.points, r.params, r.equidistant, r.method
+
+Vectorised: give arrays of objects (fields broadcast with numpy's rules) and get arrays back
+from one C call, without a Python loop over the entries:
+
+    rings = cd.Circle(centers, normals, radii)            # (N, 3), (N, 3), (N,)
+    b = cd.circle_circle(rings, cd.Circle((0, 0, 0), (0, 0, 1), 1), threads=2)
+    b.distance, b.points, b.params, b.num_pairs, b.equidistant, b.status   # (N,), (N, 2, 2, 3), ...
+
+Objects: Point, Circle, Disk, Line, Ray, Segment, Arc, Helix, Bezier3 (each also wraps an
+(N, WIDTH) float64 array in the C struct's field order with .from_array, without copying).
+Queries (module functions and Query methods): point_circle, point_disk, line_circle,
+ray_circle, segment_circle, circle_circle, line_disk, ray_disk, segment_disk, circle_disk,
+disk_disk, arc_circle, arc_arc, segment_arc, arc_disk, helix_circle, helix_disk,
+bezier3_circle, bezier3_disk, curve_circle, curve_disk; each takes method=, threads= and
+distance_only=. Errors: CircleDistError (status, name, message) from the library; ValueError
+or TypeError naming the argument for malformed Python input.
+
+The C library is found through $CIRCLEDIST_LIBRARY (a path), else the library installed with
+this package by meson, else the system loader (libcircledist.so.1).
+"""
+from ._lib import RESULT_DTYPE
+from ._objects import Arc, Bezier3, Circle, Disk, GeometricObject, Helix, Line, Point, Ray, Segment
+from ._query import (FUNCTIONS as _FUNCTIONS, BatchResult, CircleDistError, Method, Pair, Query,
+                     Result, circle_basis, circle_point, default_query, status_name, status_string,
+                     version)
+
+globals().update(_FUNCTIONS)
+
+METHOD_AUTO, METHOD_POLYNOMIAL, METHOD_ROBUST, METHOD_ITERATION = (
+    Method.AUTO, Method.POLYNOMIAL, Method.ROBUST, Method.ITERATION)
+
+__version__ = "1.0.0"
+
+__all__ = ["Point", "Circle", "Disk", "Line", "Ray", "Segment", "Arc", "Helix", "Bezier3",
+           "GeometricObject", "Query", "Result", "BatchResult", "Pair", "Method",
+           "CircleDistError", "circle_basis", "circle_point", "default_query", "status_name",
+           "status_string", "version", "RESULT_DTYPE", "METHOD_AUTO", "METHOD_POLYNOMIAL",
+           "METHOD_ROBUST", "METHOD_ITERATION"] + sorted(_FUNCTIONS)
