@@ -304,6 +304,134 @@ CDIST_API cdist_status cdist_bezier3_circle(cdist_query *q, const cdist_bezier3 
 /// Distance from a cubic Bezier curve to a disk.
 CDIST_API cdist_status cdist_bezier3_disk(cdist_query *q, const cdist_bezier3 *b, const cdist_circle *d, cdist_result *r);
 
+/* ---- swept objects and gradients (issue 14) ----------------------------------------- */
+/* A swept object is a core (point, segment, circle, disk) swept by a ball of radius
+ * `radius`: the set of points within `radius` of the core. The signed distance between two
+ * swept objects (or a swept object and a plain object, radius 0) is
+ *     distance = core_distance - (radius_a + radius_b)
+ * (evaluated exactly in that order), negative when the solids overlap: then -distance is the
+ * penetration depth along the closest pair of the cores. */
+
+/** A sphere: a point swept by a ball. sizeof = 32 bytes (4 doubles). */
+typedef struct cdist_sphere {
+    cdist_vec3 center; /**< centre */
+    double radius;     /**< radius, >= 0 (0: a point) */
+} cdist_sphere;
+
+/** A capsule: a segment swept by a ball. sizeof = 56 bytes (7 doubles). */
+typedef struct cdist_capsule {
+    cdist_segment segment; /**< the core segment (p0 == p1 allowed: a sphere) */
+    double radius;         /**< radius of the ball, >= 0 */
+} cdist_capsule;
+
+/** A torus: a circle swept by a ball (the solid torus; a spindle torus when
+ *  tube_radius > circle.radius). sizeof = 64 bytes (8 doubles). */
+typedef struct cdist_torus {
+    cdist_circle circle; /**< the core circle (centre line of the tube) */
+    double tube_radius;  /**< tube radius, >= 0 */
+} cdist_torus;
+
+/** A rounded disk: a disk swept by a ball (a coin with rounded rim). sizeof = 64 bytes. */
+typedef struct cdist_rounded_disk {
+    cdist_circle disk; /**< the core disk */
+    double radius;     /**< radius of the ball, >= 0 */
+} cdist_rounded_disk;
+
+/** One closest pair of a contact query. */
+typedef struct cdist_contact_pair {
+    /** Witness points on the two surfaces: point[0] = core_point[0] + r0 * normal,
+     *  point[1] = core_point[1] - r1 * normal (so distance = (point[1] - point[0]) . normal;
+     *  when the solids overlap point[0] lies inside the second solid and vice versa). */
+    cdist_vec3 point[2];
+    /** The closest pair of the cores, exactly as the core query returned it. */
+    cdist_vec3 core_point[2];
+    /** Unit contact normal pointing from the first object to the second:
+     *  (core_point[1] - core_point[0]) / core_distance when the cores are apart, otherwise
+     *  chosen by the rule of ::CDIST_CONTACT_CORE_TOUCH. */
+    cdist_vec3 normal;
+    /** Parameters of the core points as in ::cdist_pair (NaN for a point core). */
+    double param[2];
+} cdist_contact_pair;
+
+/** Contact result flags (bits of cdist_contact::flags). Values are fixed. */
+typedef enum cdist_contact_flag {
+    /** The cores touch or cross (core_distance <= 16 eps times the largest coordinate of the
+     *  core points): no closest-pair direction exists and the normal is chosen
+     *  deterministically, first rule that gives a non-zero vector: (1) both cores are curves
+     *  (segment/line/ray direction, circle tangent N x (P - C)) and their tangents at the core
+     *  points are not parallel: normal = t0 x t1; (2) a core is a circle or disk (first object
+     *  first): its plane normal; (3) a core is a segment/line/ray (first first): the U vector
+     *  of cdist_circle_basis() for a circle with that direction as normal; (4) (0, 0, 1).
+     *  The sign is then chosen so that normal . (m1 - m0) > 0, m = the core's reference point
+     *  (centre, segment midpoint, line/ray origin), or if that is 0 so that the first
+     *  non-zero component is positive. */
+    CDIST_CONTACT_CORE_TOUCH = 1
+} cdist_contact_flag;
+
+/** Result of a swept-object (contact) query. Output only: the library writes every field.
+ *  Growth policy as for ::cdist_result: new fields take their place in `reserved` (zero in
+ *  1.0), sizeof (368 bytes on LP64, see cdist_contact_size()) never changes in ABI 1. */
+typedef struct cdist_contact {
+    double distance;      /**< signed distance = core_distance - (r0 + r1) (NaN on error) */
+    double core_distance; /**< distance between the cores, from the core query */
+    int num_pairs;        /**< 0 (error), 1 or 2, carried over from the core query */
+    int equidistant;      /**< carried over from the core query (infinitely many pairs) */
+    int flags;            /**< bits of ::cdist_contact_flag */
+    int method;           /**< the ::cdist_method that answered the core query */
+    cdist_contact_pair pairs[2]; /**< pairs[i] valid for i < num_pairs */
+    double reserved[8];   /**< reserved for future fields; set to zero */
+} cdist_contact;
+
+/** sizeof(cdist_contact) as compiled into the library. */
+CDIST_API size_t cdist_contact_size(void);
+/** sizeof(cdist_sphere), sizeof(cdist_capsule), sizeof(cdist_torus), sizeof(cdist_rounded_disk)
+ *  for which = 0, 1, 2, 3 (0 otherwise), for FFI users to check their layout. */
+CDIST_API size_t cdist_swept_size(int which);
+/** The value of ::CDIST_CONTACT_CORE_TOUCH (for bindings without the header). */
+CDIST_API int cdist_contact_flag_core_touch(void);
+
+/* Contact queries. Every one validates its objects like the core queries (radii: finite,
+ * >= 0, <= 1e150; else ::CDIST_ERR_NOT_FINITE / ::CDIST_ERR_NEGATIVE_RADIUS /
+ * ::CDIST_ERR_OUT_OF_RANGE), answers the core query with the handle's method and options,
+ * and fills the contact; on error: distance NaN, no pairs. Object order in the name is the
+ * order of point[0] / point[1]. */
+
+/** Torus to torus (core: cdist_circle_circle()). */
+CDIST_API cdist_status cdist_torus_torus(cdist_query *q, const cdist_torus *a, const cdist_torus *b, cdist_contact *c);
+/** Torus to capsule (core: cdist_segment_circle(), objects swapped back). */
+CDIST_API cdist_status cdist_torus_capsule(cdist_query *q, const cdist_torus *a, const cdist_capsule *b, cdist_contact *c);
+/** Torus to sphere (core: cdist_point_circle(), swapped back). */
+CDIST_API cdist_status cdist_torus_sphere(cdist_query *q, const cdist_torus *a, const cdist_sphere *b, cdist_contact *c);
+/** Torus to rounded disk (core: cdist_circle_disk()). */
+CDIST_API cdist_status cdist_torus_rounded_disk(cdist_query *q, const cdist_torus *a, const cdist_rounded_disk *b, cdist_contact *c);
+/** Capsule to capsule (core: segment-segment, answered in closed form; equidistant when the
+ *  segments are parallel with overlapping projections). */
+CDIST_API cdist_status cdist_capsule_capsule(cdist_query *q, const cdist_capsule *a, const cdist_capsule *b, cdist_contact *c);
+/** Capsule to sphere (core: point-segment, closed form). */
+CDIST_API cdist_status cdist_capsule_sphere(cdist_query *q, const cdist_capsule *a, const cdist_sphere *b, cdist_contact *c);
+/** Capsule to rounded disk (core: cdist_segment_disk()). */
+CDIST_API cdist_status cdist_capsule_rounded_disk(cdist_query *q, const cdist_capsule *a, const cdist_rounded_disk *b, cdist_contact *c);
+/** Sphere to sphere (core: point-point). */
+CDIST_API cdist_status cdist_sphere_sphere(cdist_query *q, const cdist_sphere *a, const cdist_sphere *b, cdist_contact *c);
+/** Sphere to rounded disk (core: cdist_point_disk()). */
+CDIST_API cdist_status cdist_sphere_rounded_disk(cdist_query *q, const cdist_sphere *a, const cdist_rounded_disk *b, cdist_contact *c);
+/** Rounded disk to rounded disk (core: cdist_disk_disk()). */
+CDIST_API cdist_status cdist_rounded_disk_rounded_disk(cdist_query *q, const cdist_rounded_disk *a, const cdist_rounded_disk *b, cdist_contact *c);
+/** Torus to line (core: cdist_line_circle(), swapped back). */
+CDIST_API cdist_status cdist_torus_line(cdist_query *q, const cdist_torus *a, const cdist_line *b, cdist_contact *c);
+/** Torus to ray (core: cdist_ray_circle(), swapped back). */
+CDIST_API cdist_status cdist_torus_ray(cdist_query *q, const cdist_torus *a, const cdist_ray *b, cdist_contact *c);
+/** Torus to segment (core: cdist_segment_circle(), swapped back). */
+CDIST_API cdist_status cdist_torus_segment(cdist_query *q, const cdist_torus *a, const cdist_segment *b, cdist_contact *c);
+/** Capsule to circle (core: cdist_segment_circle()). */
+CDIST_API cdist_status cdist_capsule_circle(cdist_query *q, const cdist_capsule *a, const cdist_circle *b, cdist_contact *c);
+/** Capsule to disk (core: cdist_segment_disk()). */
+CDIST_API cdist_status cdist_capsule_disk(cdist_query *q, const cdist_capsule *a, const cdist_circle *b, cdist_contact *c);
+/** Sphere to circle (core: cdist_point_circle()). */
+CDIST_API cdist_status cdist_sphere_circle(cdist_query *q, const cdist_sphere *a, const cdist_circle *b, cdist_contact *c);
+/** Sphere to disk (core: cdist_point_disk()). */
+CDIST_API cdist_status cdist_sphere_disk(cdist_query *q, const cdist_sphere *a, const cdist_circle *b, cdist_contact *c);
+
 #ifdef __cplusplus
 }
 #endif
