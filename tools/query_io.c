@@ -9,6 +9,11 @@
 
 #define ARC_COLS "Cx Cy Cz Nx Ny Nz r Ux Uy Uz start end"
 #define CIRC_COLS "Cx Cy Cz Nx Ny Nz r"
+/* swept kinds (src/swept) */
+#define TORUS_COLS "Cx Cy Cz Nx Ny Nz R rt"
+#define CAPS_COLS "P0x P0y P0z P1x P1y P1z rk"
+#define SPH_COLS "Px Py Pz rs"
+#define RDISK_COLS "Cx Cy Cz Nx Ny Nz R rr"
 
 const cdq_kind cdq_kinds[] = {
     {"pc", 10, "Px Py Pz  " CIRC_COLS, "point to circle"},
@@ -30,6 +35,27 @@ const cdq_kind cdq_kinds[] = {
     {"hd", 20, "Cx Cy Cz Ax Ay Az Ux Uy Uz r pitch t0 t1  " CIRC_COLS, "helix to disk"},
     {"bc", 19, "P0x P0y P0z P1x P1y P1z P2x P2y P2z P3x P3y P3z  " CIRC_COLS, "cubic Bezier to circle"},
     {"bd", 19, "P0x P0y P0z P1x P1y P1z P2x P2y P2z P3x P3y P3z  " CIRC_COLS, "cubic Bezier to disk"},
+    /* ---- swept kinds (src/swept): upper case T torus, K capsule, S sphere, R rounded disk,
+     * lower case the plain object. distance is signed (negative: penetration depth), the
+     * points are the witness points on the surfaces (cdist_contact). ---- */
+    {"TT", 16, TORUS_COLS "  " TORUS_COLS, "torus to torus (signed)"},
+    {"TK", 15, TORUS_COLS "  " CAPS_COLS, "torus to capsule (signed)"},
+    {"TS", 12, TORUS_COLS "  " SPH_COLS, "torus to sphere (signed)"},
+    {"TR", 16, TORUS_COLS "  " RDISK_COLS, "torus to rounded disk (signed)"},
+    {"KK", 14, CAPS_COLS "  " CAPS_COLS, "capsule to capsule (signed)"},
+    {"KS", 11, CAPS_COLS "  " SPH_COLS, "capsule to sphere (signed)"},
+    {"KR", 15, CAPS_COLS "  " RDISK_COLS, "capsule to rounded disk (signed)"},
+    {"SS", 8, SPH_COLS "  " SPH_COLS, "sphere to sphere (signed)"},
+    {"SR", 12, SPH_COLS "  " RDISK_COLS, "sphere to rounded disk (signed)"},
+    {"RR", 16, RDISK_COLS "  " RDISK_COLS, "rounded disk to rounded disk (signed)"},
+    {"Tl", 14, TORUS_COLS "  Bx By Bz  Mx My Mz", "torus to line (signed)"},
+    {"Tr", 14, TORUS_COLS "  Bx By Bz  Mx My Mz", "torus to ray (signed)"},
+    {"Ts", 14, TORUS_COLS "  P0x P0y P0z  P1x P1y P1z", "torus to segment (signed)"},
+    {"Kc", 14, CAPS_COLS "  " CIRC_COLS, "capsule to circle (signed)"},
+    {"Kd", 14, CAPS_COLS "  " CIRC_COLS, "capsule to disk (signed)"},
+    {"Sc", 11, SPH_COLS "  " CIRC_COLS, "sphere to circle (signed)"},
+    {"Sd", 11, SPH_COLS "  " CIRC_COLS, "sphere to disk (signed)"},
+    /* ---- end of swept kinds ---- */
     {NULL, 0, NULL, NULL},
 };
 
@@ -115,8 +141,74 @@ static cdist_bezier3 bezier_at(const double *v)
     return b;
 }
 
+/* ---- swept kinds (src/swept) ----
+ * A contact is written into the cdist_result the tool prints: distance = the signed distance,
+ * sqr_distance = NaN (meaningless when negative), the points = the witness points on the
+ * surfaces, params = the core parameters. */
+static cdist_torus torus_at(const double *v) { cdist_torus t = {circle_at(v), v[7]}; return t; }
+static cdist_capsule capsule_at(const double *v) { cdist_capsule c = {{vec_at(v), vec_at(v + 3)}, v[6]}; return c; }
+static cdist_sphere sphere_at(const double *v) { cdist_sphere s = {vec_at(v), v[3]}; return s; }
+static cdist_rounded_disk rdisk_at(const double *v) { cdist_rounded_disk d = {circle_at(v), v[7]}; return d; }
+
+static cdist_status swept_run(cdist_query *q, const char *k, const double *v, cdist_contact *c)
+{
+    cdist_torus t = torus_at(v);
+    cdist_capsule kc = capsule_at(v);
+    cdist_sphere sp = sphere_at(v);
+    cdist_rounded_disk rd = rdisk_at(v);
+    if (!strcmp(k, "TT")) { cdist_torus b = torus_at(v + 8); return cdist_torus_torus(q, &t, &b, c); }
+    if (!strcmp(k, "TK")) { cdist_capsule b = capsule_at(v + 8); return cdist_torus_capsule(q, &t, &b, c); }
+    if (!strcmp(k, "TS")) { cdist_sphere b = sphere_at(v + 8); return cdist_torus_sphere(q, &t, &b, c); }
+    if (!strcmp(k, "TR")) { cdist_rounded_disk b = rdisk_at(v + 8); return cdist_torus_rounded_disk(q, &t, &b, c); }
+    if (!strcmp(k, "KK")) { cdist_capsule b = capsule_at(v + 7); return cdist_capsule_capsule(q, &kc, &b, c); }
+    if (!strcmp(k, "KS")) { cdist_sphere b = sphere_at(v + 7); return cdist_capsule_sphere(q, &kc, &b, c); }
+    if (!strcmp(k, "KR")) { cdist_rounded_disk b = rdisk_at(v + 7); return cdist_capsule_rounded_disk(q, &kc, &b, c); }
+    if (!strcmp(k, "SS")) { cdist_sphere b = sphere_at(v + 4); return cdist_sphere_sphere(q, &sp, &b, c); }
+    if (!strcmp(k, "SR")) { cdist_rounded_disk b = rdisk_at(v + 4); return cdist_sphere_rounded_disk(q, &sp, &b, c); }
+    if (!strcmp(k, "RR")) { cdist_rounded_disk b = rdisk_at(v + 8); return cdist_rounded_disk_rounded_disk(q, &rd, &b, c); }
+    if (!strcmp(k, "Tl")) { cdist_line b = {vec_at(v + 8), vec_at(v + 11)}; return cdist_torus_line(q, &t, &b, c); }
+    if (!strcmp(k, "Tr")) { cdist_ray b = {vec_at(v + 8), vec_at(v + 11)}; return cdist_torus_ray(q, &t, &b, c); }
+    if (!strcmp(k, "Ts")) { cdist_segment b = {vec_at(v + 8), vec_at(v + 11)}; return cdist_torus_segment(q, &t, &b, c); }
+    if (!strcmp(k, "Kc")) { cdist_circle b = circle_at(v + 7); return cdist_capsule_circle(q, &kc, &b, c); }
+    if (!strcmp(k, "Kd")) { cdist_circle b = circle_at(v + 7); return cdist_capsule_disk(q, &kc, &b, c); }
+    if (!strcmp(k, "Sc")) { cdist_circle b = circle_at(v + 4); return cdist_sphere_circle(q, &sp, &b, c); }
+    if (!strcmp(k, "Sd")) { cdist_circle b = circle_at(v + 4); return cdist_sphere_disk(q, &sp, &b, c); }
+    return CDIST_ERR_BAD_OPTION;
+}
+
+static int is_swept_kind(const char *k) { return k[0] == 'T' || k[0] == 'K' || k[0] == 'S' || k[0] == 'R'; }
+
+static cdist_status swept_run_result(cdist_query *q, const char *k, const double *v, cdist_result *r)
+{
+    cdist_contact c;
+    cdist_status st = swept_run(q, k, v, &c);
+    memset(r, 0, sizeof *r);
+    r->distance = c.distance;
+    r->sqr_distance = NAN;
+    r->num_pairs = c.num_pairs;
+    r->equidistant = c.equidistant;
+    r->method = c.method;
+    for (int i = 0; i < 2; i++) {
+        for (int j = 0; j < 2; j++) {
+            r->pairs[i].point[j] = c.pairs[i].point[j];
+            r->pairs[i].param[j] = c.pairs[i].param[j];
+        }
+    }
+    return st;
+}
+
+/* Problem scale of a swept kind: radii, expected distance, reference point distance. */
+static double swept_scale(const double *v, int nvalues, double expected)
+{
+    double L = fabs(expected);
+    for (int i = 0; i < nvalues; i++) L = fmax(L, fabs(v[i]));
+    return L;
+}
+/* ---- end of swept kinds ---- */
+
 cdist_status cdq_run(cdist_query *q, const cdq_line *ql, cdist_result *r)
 {
+    if (is_swept_kind(ql->kind->name)) return swept_run_result(q, ql->kind->name, ql->v, r);
     const double *v = ql->v;
     const char *k = ql->kind->name;
     cdist_vec3 p = vec_at(v);
@@ -168,6 +260,7 @@ double cdq_scale(const cdq_line *ql, double expected)
     const double *v = ql->v;
     const char *k = ql->kind->name;
     double L = fabs(expected);
+    if (is_swept_kind(k)) return swept_scale(v, ql->nvalues, expected);
     if (k[0] == 'p') {
         L = fmax(L, fmax(v[9], dist3(v, v + 3)));
     } else if (!strcmp(k, "lc") || !strcmp(k, "rc") || !strcmp(k, "ld") || !strcmp(k, "rd")) {
