@@ -432,6 +432,99 @@ CDIST_API cdist_status cdist_sphere_circle(cdist_query *q, const cdist_sphere *a
 /** Sphere to disk (core: cdist_point_disk()). */
 CDIST_API cdist_status cdist_sphere_disk(cdist_query *q, const cdist_sphere *a, const cdist_circle *b, cdist_contact *c);
 
+/* ---- gradients ----
+ * A `_grad` query answers the query and writes the derivative of the distance with respect to
+ * every input parameter of both objects, from the closest pair (envelope theorem): with P on
+ * the first object, Q on the second and w = (P - Q) / |P - Q|, dD/dtheta = w . dP/dtheta for
+ * the first object's parameters and -w . dQ/dtheta for the second's, the points' own
+ * parameters held fixed in a parametrisation whose range does not depend on theta:
+ *   point P:               dP = dp;
+ *   line/ray o + t d:      dP = do + t dd (t fixed; for a ray t >= 0 fixed, so a ray start
+ *                          point closest gives d_direction = 0 since t = 0);
+ *   segment p0 + s(p1-p0): dP = (1-s) dp0 + s dp1 (s in [0,1] fixed: end points included);
+ *   circle C + r e:        e the unit radial direction, moved by the smallest rotation
+ *                          taking N to N + dN: de = -(e . dN) N;
+ *   disk C + r s e:        s in [0,1] fixed (rim s = 1, interior s < 1; the interior gives
+ *                          d_radius = 0 because w is along N there, and d_normal =
+ *                          -(w . N)(P - C): tilting the disk moves the point);
+ *   arc:                   angle a fixed inside [start, end]; d_start / d_end are
+ *                          r w . T(a) when the closest point is that end of the arc, else 0;
+ *                          d_normal / d_zero_direction through the arc frame U, V.
+ * Normal and direction gradients are tangent to the unit sphere (g . N = 0, dD = g . dN for
+ * unit-preserving dN). Swept objects: the core gradient plus d_radius_swept = -1 each.
+ * Not differentiable (flag ::CDIST_GRAD_NOT_DIFFERENTIABLE): two closest pairs (the gradient
+ * is that of pairs[0], a one-sided derivative), an equidistant result (the gradient of the
+ * representative pair, a one-sided derivative), and distance (core distance for swept objects)
+ * 0 (within the rounding of the closest points' coordinates), where the gradient is set to 0
+ * (an element of the Clarke subdifferential). The flag is conservative there: where a curve or
+ * disk crosses a disk transversally the distance is 0 on a neighbourhood and the zero gradient
+ * is exact. At a disk's interior closest point the direction w is taken as +-N exactly (the
+ * optimality condition) rather than from the rounded points. A circle or disk of radius 0 is
+ * differentiated from the right (r -> 0+). Near-degenerate inputs (a few ulps from a
+ * non-differentiable configuration) are differentiable in exact arithmetic and the gradient is
+ * the exact one of the computed closest pair, but it can change over distances below double
+ * resolution. */
+
+/** Gradient of the distance with respect to one object's parameters. Fields that do not
+ *  apply to the object's kind are 0. */
+typedef struct cdist_grad_object {
+    cdist_vec3 d_center;    /**< point, sphere centre, circle/disk/arc/torus/rounded-disk centre */
+    cdist_vec3 d_normal;    /**< circle/disk/arc/torus/rounded-disk normal (tangent space) */
+    cdist_vec3 d_origin;    /**< line/ray origin */
+    cdist_vec3 d_direction; /**< line/ray direction (tangent space) */
+    cdist_vec3 d_p0;        /**< segment/capsule p0 */
+    cdist_vec3 d_p1;        /**< segment/capsule p1 */
+    cdist_vec3 d_zero_direction; /**< arc zero_direction (full 3-vector, the arc frame only
+                                      depends on its direction, so it is orthogonal to it) */
+    double d_radius;        /**< circle/disk/arc radius (the core radius of a torus/rounded disk) */
+    double d_radius_swept;  /**< sphere/capsule radius, torus tube radius, rounded-disk radius: -1 */
+    double d_start;         /**< arc start angle */
+    double d_end;           /**< arc end angle */
+    double reserved[8];     /**< reserved for future fields; set to zero */
+} cdist_grad_object;
+
+/** Gradient flags (bits of cdist_grad::flags). Values are fixed. */
+typedef enum cdist_grad_flag {
+    /** The distance is not differentiable here (see the rules above). */
+    CDIST_GRAD_NOT_DIFFERENTIABLE = 1
+} cdist_grad_flag;
+
+/** Gradient of one query: obj[0] for the first object, obj[1] for the second. */
+typedef struct cdist_grad {
+    cdist_grad_object obj[2]; /**< per-object gradients */
+    int flags;                /**< bits of ::cdist_grad_flag */
+    int reserved_int;         /**< reserved; 0 */
+    double reserved[8];       /**< reserved for future fields; set to zero */
+} cdist_grad;
+
+/** sizeof(cdist_grad) as compiled into the library. */
+CDIST_API size_t cdist_grad_size(void);
+/** The value of ::CDIST_GRAD_NOT_DIFFERENTIABLE. */
+CDIST_API int cdist_grad_flag_not_differentiable(void);
+
+/** cdist_point_circle() with the gradient. On error the gradient is all NaN. */
+CDIST_API cdist_status cdist_point_circle_grad(cdist_query *q, const cdist_vec3 *p, const cdist_circle *c, cdist_result *r, cdist_grad *g);
+/** cdist_point_disk() with the gradient. */
+CDIST_API cdist_status cdist_point_disk_grad(cdist_query *q, const cdist_vec3 *p, const cdist_circle *d, cdist_result *r, cdist_grad *g);
+/** cdist_line_circle() with the gradient. */
+CDIST_API cdist_status cdist_line_circle_grad(cdist_query *q, const cdist_line *l, const cdist_circle *c, cdist_result *r, cdist_grad *g);
+/** cdist_ray_circle() with the gradient. */
+CDIST_API cdist_status cdist_ray_circle_grad(cdist_query *q, const cdist_ray *l, const cdist_circle *c, cdist_result *r, cdist_grad *g);
+/** cdist_segment_circle() with the gradient. */
+CDIST_API cdist_status cdist_segment_circle_grad(cdist_query *q, const cdist_segment *s, const cdist_circle *c, cdist_result *r, cdist_grad *g);
+/** cdist_circle_circle() with the gradient. */
+CDIST_API cdist_status cdist_circle_circle_grad(cdist_query *q, const cdist_circle *c0, const cdist_circle *c1, cdist_result *r, cdist_grad *g);
+/** cdist_line_disk() with the gradient. */
+CDIST_API cdist_status cdist_line_disk_grad(cdist_query *q, const cdist_line *l, const cdist_circle *d, cdist_result *r, cdist_grad *g);
+/** cdist_ray_disk() with the gradient. */
+CDIST_API cdist_status cdist_ray_disk_grad(cdist_query *q, const cdist_ray *l, const cdist_circle *d, cdist_result *r, cdist_grad *g);
+/** cdist_segment_disk() with the gradient. */
+CDIST_API cdist_status cdist_segment_disk_grad(cdist_query *q, const cdist_segment *s, const cdist_circle *d, cdist_result *r, cdist_grad *g);
+/** cdist_circle_disk() with the gradient. */
+CDIST_API cdist_status cdist_circle_disk_grad(cdist_query *q, const cdist_circle *c, const cdist_circle *d, cdist_result *r, cdist_grad *g);
+/** cdist_disk_disk() with the gradient. */
+CDIST_API cdist_status cdist_disk_disk_grad(cdist_query *q, const cdist_circle *d0, const cdist_circle *d1, cdist_result *r, cdist_grad *g);
+
 #ifdef __cplusplus
 }
 #endif

@@ -1,0 +1,398 @@
+/* Gradients (cdist_*_grad) against finite differences of the distance.
+ *  - Every line of the shared reference files (tests/data/{pc,pd,lc,ld,cc,cd}_{random,hard}.txt;
+ *    lc/ld lines are also run as rays and segments, cd lines also as circle-circle and
+ *    disk-disk) and random configurations: where the flag CDIST_GRAD_NOT_DIFFERENTIABLE is not
+ *    set, every gradient component agrees with a central difference (Richardson-extrapolated,
+ *    with a smaller plain step as second opinion) of the distance to 1e-7 relative. Normal and
+ *    direction gradients are checked along two unit-preserving tangent perturbations and must
+ *    be orthogonal to the vector.
+ *  - Constructed non-differentiable configurations (two pairs, an equidistant set, zero
+ *    distance) have the flag set, and their one-sided derivatives really differ.
+ * The differences are taken of the distance the library computes, which the reference tests
+ * hold to ~1e-15 of scale; the gradients come from a separate code path (the closest pair). */
+#include <float.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "check.h"
+#include "query_io.h"
+
+/* Field types in a query line's numbers. */
+enum { F_END, F_CENTER, F_NORMAL, F_RADIUS, F_ORIGIN, F_DIR, F_P0, F_P1 };
+
+typedef struct field {
+    int type, offset, obj;
+} field;
+
+typedef cdist_status (*grad_fn)(cdist_query *, const double *, cdist_result *, cdist_grad *);
+
+static cdist_vec3 V(const double *v) { return tv(v[0], v[1], v[2]); }
+static cdist_circle Cc(const double *v) { cdist_circle c = {V(v), V(v + 3), v[6]}; return c; }
+
+#define G2(name, ...)                                                                                              \
+    static cdist_status name(cdist_query *q, const double *v, cdist_result *r, cdist_grad *g) { __VA_ARGS__; }
+G2(g_pc, cdist_vec3 p = V(v); cdist_circle c = Cc(v + 3); return cdist_point_circle_grad(q, &p, &c, r, g))
+G2(g_pd, cdist_vec3 p = V(v); cdist_circle c = Cc(v + 3); return cdist_point_disk_grad(q, &p, &c, r, g))
+G2(g_lc, cdist_line l = {V(v), V(v + 3)}; cdist_circle c = Cc(v + 6); return cdist_line_circle_grad(q, &l, &c, r, g))
+G2(g_rc, cdist_ray l = {V(v), V(v + 3)}; cdist_circle c = Cc(v + 6); return cdist_ray_circle_grad(q, &l, &c, r, g))
+G2(g_sc, cdist_segment l = {V(v), V(v + 3)}; cdist_circle c = Cc(v + 6); return cdist_segment_circle_grad(q, &l, &c, r, g))
+G2(g_ld, cdist_line l = {V(v), V(v + 3)}; cdist_circle c = Cc(v + 6); return cdist_line_disk_grad(q, &l, &c, r, g))
+G2(g_rd, cdist_ray l = {V(v), V(v + 3)}; cdist_circle c = Cc(v + 6); return cdist_ray_disk_grad(q, &l, &c, r, g))
+G2(g_sd, cdist_segment l = {V(v), V(v + 3)}; cdist_circle c = Cc(v + 6); return cdist_segment_disk_grad(q, &l, &c, r, g))
+G2(g_cc, cdist_circle a = Cc(v); cdist_circle c = Cc(v + 7); return cdist_circle_circle_grad(q, &a, &c, r, g))
+G2(g_cd, cdist_circle a = Cc(v); cdist_circle c = Cc(v + 7); return cdist_circle_disk_grad(q, &a, &c, r, g))
+G2(g_dd, cdist_circle a = Cc(v); cdist_circle c = Cc(v + 7); return cdist_disk_disk_grad(q, &a, &c, r, g))
+
+#define CIRC(off, obj) {F_CENTER, off, obj}, {F_NORMAL, off + 3, obj}, {F_RADIUS, off + 6, obj}
+typedef struct gkind {
+    const char *name;
+    grad_fn fn;
+    field f[8];
+} gkind;
+static const gkind gkinds[] = {
+    {"pc", g_pc, {{F_CENTER, 0, 0}, CIRC(3, 1), {F_END, 0, 0}}},
+    {"pd", g_pd, {{F_CENTER, 0, 0}, CIRC(3, 1), {F_END, 0, 0}}},
+    {"lc", g_lc, {{F_ORIGIN, 0, 0}, {F_DIR, 3, 0}, CIRC(6, 1), {F_END, 0, 0}}},
+    {"rc", g_rc, {{F_ORIGIN, 0, 0}, {F_DIR, 3, 0}, CIRC(6, 1), {F_END, 0, 0}}},
+    {"sc", g_sc, {{F_P0, 0, 0}, {F_P1, 3, 0}, CIRC(6, 1), {F_END, 0, 0}}},
+    {"ld", g_ld, {{F_ORIGIN, 0, 0}, {F_DIR, 3, 0}, CIRC(6, 1), {F_END, 0, 0}}},
+    {"rd", g_rd, {{F_ORIGIN, 0, 0}, {F_DIR, 3, 0}, CIRC(6, 1), {F_END, 0, 0}}},
+    {"sd", g_sd, {{F_P0, 0, 0}, {F_P1, 3, 0}, CIRC(6, 1), {F_END, 0, 0}}},
+    {"cc", g_cc, {CIRC(0, 0), CIRC(7, 1), {F_END, 0, 0}}},
+    {"cd", g_cd, {CIRC(0, 0), CIRC(7, 1), {F_END, 0, 0}}},
+    {"dd", g_dd, {CIRC(0, 0), CIRC(7, 1), {F_END, 0, 0}}},
+};
+static const gkind *find_kind(const char *name)
+{
+    for (size_t i = 0; i < sizeof gkinds / sizeof gkinds[0]; i++)
+        if (!strcmp(gkinds[i].name, name)) return &gkinds[i];
+    return NULL;
+}
+
+static cdist_query *q;
+
+/* The distance at numbers v (NaN on failure). */
+static double dist_at(const gkind *k, const double *v)
+{
+    cdist_result r;
+    cdist_grad g;
+    if (k->fn(q, v, &r, &g) != CDIST_OK) return NAN;
+    return r.distance;
+}
+
+static double len3(const double *v) { return sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
+
+/* Directional derivative of the distance along perturbation dir (applied by `apply`). */
+typedef void (*apply_fn)(const double *v0, double *v, int off, const double *e, double h);
+static void apply_add(const double *v0, double *v, int off, const double *e, double h)
+{
+    for (int i = 0; i < 3; i++) v[off + i] = v0[off + i] + h * e[i];
+}
+static void apply_unit(const double *v0, double *v, int off, const double *e, double h)
+{
+    double w[3], n = len3(v0 + off);
+    for (int i = 0; i < 3; i++) w[i] = v0[off + i] / n + h * e[i];
+    double m = len3(w);
+    for (int i = 0; i < 3; i++) v[off + i] = w[i] / m;
+}
+static void apply_scalar(const double *v0, double *v, int off, const double *e, double h)
+{
+    (void)e;
+    v[off] = v0[off] + h;
+}
+
+static double central(const gkind *k, const double *v0, int n, apply_fn ap, int off, const double *e, double h)
+{
+    double v[CDQ_MAX_VALUES];
+    memcpy(v, v0, n * sizeof(double));
+    ap(v0, v, off, e, h);
+    double fp = dist_at(k, v);
+    memcpy(v, v0, n * sizeof(double));
+    ap(v0, v, off, e, -h);
+    double fm = dist_at(k, v);
+    return (fp - fm) / (2 * h);
+}
+
+static int n_checked, n_flagged;
+static double worst;
+
+/* The analytic derivative along e of the field (type, obj) at numbers v (NaN if the query
+ * fails; flagged queries included: their gradient is one-sided). */
+static double analytic(const gkind *k, const double *v, int type, int obj, const double *e);
+
+/* Compare the analytic derivative `g` along e against finite differences: Richardson at a
+ * large step; then plain central differences at steps 1e-3 .. 1e-10 of the scale. A step only
+ * counts where the distance is smooth at its scale: the analytic derivative at v +- h differs
+ * from g by var <= 1e-5 (relative); there the difference must agree within its rounding
+ * allowance plus var. Returns 1 (agrees), 0 (a smooth step disagrees: a definite error) or -1
+ * (unresolved: no step is smooth — near-degenerate inputs within a few ulps of a
+ * non-differentiable configuration, where double differences cannot see the derivative). */
+static int agrees(const gkind *k, const double *v0, int n, apply_fn ap, int off, const double *e, double g, double L,
+                  double scale_g, int type, int obj)
+{
+    double tol = 1e-7 * fmax(scale_g, 1e-3);
+    double u = ap == apply_unit ? 1.0 : L; /* unit of the perturbed quantity */
+    double h = 1e-3 * u;
+    double d1 = central(k, v0, n, ap, off, e, h), d2 = central(k, v0, n, ap, off, e, h / 2);
+    double rich = (4 * d2 - d1) / 3;
+    if (fabs(rich - g) <= tol) return 1;
+    int smooth_seen = 0;
+    double last_fd = NAN, last_var = NAN;
+    for (double hk = 1e-3 * u; hk >= 1e-10 * u; hk *= 0.1) {
+        double w[CDQ_MAX_VALUES];
+        memcpy(w, v0, n * sizeof(double));
+        ap(v0, w, off, e, hk);
+        double gp = analytic(k, w, type, obj, e);
+        memcpy(w, v0, n * sizeof(double));
+        ap(v0, w, off, e, -hk);
+        double gm = analytic(k, w, type, obj, e);
+        double var = fmax(fabs(gp - g), fabs(gm - g));
+        if (!(var <= 1e-5 * fmax(scale_g, 1e-3))) continue;
+        double fd = central(k, v0, n, ap, off, e, hk);
+        if (isnan(fd)) continue; /* e.g. a radius 0 cannot go negative */
+        smooth_seen = 1;
+        double allow = tol + 8 * DBL_EPSILON * fmax(L, 1e-300) / hk + var;
+        if (fabs(fd - g) <= allow) return 1;
+        last_fd = fd, last_var = var;
+    }
+    if (getenv("GRAD_VERBOSE"))
+        fprintf(stderr, "  field at %d dir (%g %g %g): grad %.17g fd %.17g / %.17g (var %.3g) %s\n", off, e[0], e[1],
+                e[2], g, rich, last_fd, last_var, smooth_seen ? "DISAGREES" : "unresolved");
+    return smooth_seen ? 0 : -1;
+}
+
+static double dot3(const double *a, cdist_vec3 b) { return a[0] * b.x + a[1] * b.y + a[2] * b.z; }
+static const double *vfield(const cdist_grad_object *o, int type)
+{
+    switch (type) {
+    case F_CENTER: return &o->d_center.x;
+    case F_NORMAL: return &o->d_normal.x;
+    case F_ORIGIN: return &o->d_origin.x;
+    case F_DIR: return &o->d_direction.x;
+    case F_P0: return &o->d_p0.x;
+    case F_P1: return &o->d_p1.x;
+    }
+    return NULL;
+}
+
+static double analytic(const gkind *k, const double *v, int type, int obj, const double *e)
+{
+    cdist_result r;
+    cdist_grad g;
+    if (k->fn(q, v, &r, &g) != CDIST_OK) return NAN;
+    const cdist_grad_object *o = &g.obj[obj];
+    if (type == F_RADIUS) return o->d_radius;
+    const double *gv = vfield(o, type);
+    return gv[0] * e[0] + gv[1] * e[1] + gv[2] * e[2];
+}
+
+/* Check one query; returns 1 when every component agrees. */
+static int check_line(const gkind *k, const double *v0, int n, const char *where)
+{
+    cdist_result r;
+    cdist_grad g;
+    cdist_status st = k->fn(q, v0, &r, &g);
+    CHECK(st == CDIST_OK, "%s: status %d %s", where, st, cdist_query_last_error(q));
+    if (st) return 0;
+    if (g.flags & CDIST_GRAD_NOT_DIFFERENTIABLE) {
+        n_flagged++;
+        double Lp = 0;
+        for (int i = 0; i < 3; i++)
+            Lp = fmax(Lp, fmax(fabs((&r.pairs[0].point[0].x)[i]), fabs((&r.pairs[0].point[1].x)[i])));
+        CHECK(r.num_pairs == 2 || r.equidistant || r.distance <= 16 * DBL_EPSILON * Lp, "%s: flag without a reason",
+              where);
+        return 1;
+    }
+    CHECK(r.num_pairs == 1 && !r.equidistant && r.distance > 0, "%s: not flagged but two pairs / equidistant / 0",
+          where);
+    if (getenv("GRAD_VERBOSE")) fprintf(stderr, "%s: distance %.17g\n", where, r.distance);
+    /* scale: the distance and the objects' extent */
+    double L = fabs(r.distance);
+    for (int i = 0; i < n; i++) L = fmax(L, fabs(v0[i]));
+    int ok = 1;
+#define ACC(x) do { int a_ = (x); if (a_ == 0) ok = 0; else if (a_ < 0 && ok == 1) ok = -1; } while (0)
+    for (const field *f = k->f; f->type != F_END; f++) {
+        const cdist_grad_object *o = &g.obj[f->obj];
+        if (f->type == F_RADIUS) {
+            double e[3] = {0};
+            ACC(agrees(k, v0, n, apply_scalar, f->offset, e, o->d_radius, L, 1, f->type, f->obj));
+            continue;
+        }
+        const double *gv = vfield(o, f->type);
+        double gn = len3(gv);
+        if (f->type == F_NORMAL || f->type == F_DIR) {
+            double u[3], m = len3(v0 + f->offset);
+            for (int i = 0; i < 3; i++) u[i] = v0[f->offset + i] / m;
+            CHECK(fabs(gv[0] * u[0] + gv[1] * u[1] + gv[2] * u[2]) <= 1e-12 * (1 + gn), "%s: tangent gradient", where);
+            /* two tangent directions */
+            cdist_vec3 U = tv(u[0], u[1], u[2]), a, b;
+            cdist_circle tmp = {tv(0, 0, 0), U, 1};
+            cdist_circle_basis(&tmp, &a, &b);
+            double ea[3] = {a.x, a.y, a.z}, eb[3] = {b.x, b.y, b.z};
+            ACC(agrees(k, v0, n, apply_unit, f->offset, ea, dot3(gv, a), L, fmax(gn, L), f->type, f->obj));
+            ACC(agrees(k, v0, n, apply_unit, f->offset, eb, dot3(gv, b), L, fmax(gn, L), f->type, f->obj));
+        } else {
+            for (int i = 0; i < 3; i++) {
+                double e[3] = {0};
+                e[i] = 1;
+                ACC(agrees(k, v0, n, apply_add, f->offset, e, gv[i], L, 1, f->type, f->obj));
+            }
+        }
+    }
+#undef ACC
+    n_checked++;
+    return ok;
+}
+
+static void run_file(const char *dir, const char *file, const char *as)
+{
+    char path[1024];
+    snprintf(path, sizeof path, "%s/%s", dir, file);
+    FILE *f = fopen(path, "r");
+    CHECK(f != NULL, "cannot open %s", path);
+    if (!f) return;
+    char line[4096];
+    int lineno = 0, bad = 0, total = 0, unresolved = 0;
+    const gkind *k = find_kind(as);
+    while (fgets(line, sizeof line, f)) {
+        lineno++;
+        cdq_line ql;
+        char err[256];
+        if (cdq_parse(line, &ql, err, sizeof err) != 1) continue;
+        char where[1200];
+        snprintf(where, sizeof where, "%s:%d as %s", file, lineno, as);
+        total++;
+        int ok = check_line(k, ql.v, ql.nvalues, where);
+        if (ok < 0) unresolved++;
+        if (ok == 0) {
+            bad++;
+            if (bad <= 5 || getenv("GRAD_ALL")) fprintf(stderr, "%s: gradient disagrees with finite differences (worst %.3g x tol)\n", where, worst);
+        }
+    }
+    fclose(f);
+    CHECK(bad == 0, "%s as %s: %d of %d lines disagree", file, as, bad, total);
+    /* Unresolvable differences only on the near-degenerate (hard) sets. */
+    CHECK(unresolved == 0 || strstr(file, "_hard"), "%s as %s: %d unresolved lines", file, as, unresolved);
+    printf("%-16s as %s: %d lines, %d disagree, %d not resolvable by differences\n", file, as, total, bad, unresolved);
+}
+
+/* One-sided derivatives of a constructed non-differentiable case differ (the flag is real). */
+static void check_kink(const char *what, const gkind *k, double *v, int n, apply_fn ap, int off, const double *e,
+                       double h)
+{
+    cdist_result r;
+    cdist_grad g;
+    CHECK(k->fn(q, v, &r, &g) == CDIST_OK, "%s status", what);
+    CHECK(g.flags & CDIST_GRAD_NOT_DIFFERENTIABLE, "%s: flagged", what);
+    double f0 = dist_at(k, v), w[CDQ_MAX_VALUES];
+    memcpy(w, v, n * sizeof(double));
+    ap(v, w, off, e, h);
+    double right = (dist_at(k, w) - f0) / h;
+    memcpy(w, v, n * sizeof(double));
+    ap(v, w, off, e, -h);
+    double left = (f0 - dist_at(k, w)) / h;
+    CHECK(fabs(right - left) > 1e-3, "%s: one-sided derivatives %.6g and %.6g differ", what, left, right);
+}
+
+static void check_kinks(void)
+{
+    double ex[3] = {1, 0, 0}, ey[3] = {0, 1, 0};
+    /* point on a circle's axis: equidistant */
+    double pc[] = {0, 0, 0.5, 0, 0, 0, 0, 0, 1, 1};
+    check_kink("point on the axis", find_kind("pc"), pc, 10, apply_add, 0, ex, 1e-6);
+    /* line over a circle's diameter: two pairs at t = +-1; tilting the circle about y lifts one */
+    double lc[] = {0, 0, 0.5, 1, 0, 0, 0, 0, 0, 0, 0, 1, 1};
+    check_kink("line over a diameter", find_kind("lc"), lc, 13, apply_unit, 9, ex, 1e-6);
+    /* crossing circles (distance 0) */
+    double cc[] = {0, 0, 0, 0, 0, 1, 1, 1, 0, 0, 0, 1, 0, 1};
+    check_kink("linked circles", find_kind("cc"), cc, 14, apply_add, 7, ey, 1e-6);
+    /* a point on a disk's face (distance 0): |h| */
+    double ez[3] = {0, 0, 1};
+    double pd[] = {0.2, 0.1, 0, 0, 0, 0, 0, 0, 1, 1};
+    check_kink("point on a disk", find_kind("pd"), pd, 10, apply_add, 0, ez, 1e-6);
+    /* A segment through a disk: distance 0 on a neighbourhood. The flag is conservative there
+     * (set for every zero distance); the zero gradient is exact and differences agree. */
+    double sd[] = {0.2, 0.1, -1, 0.2, 0.1, 1, 0, 0, 0, 0, 0, 1, 1};
+    cdist_result r;
+    cdist_grad g;
+    CHECK(g_sd(q, sd, &r, &g) == CDIST_OK && (g.flags & CDIST_GRAD_NOT_DIFFERENTIABLE) && g.obj[0].d_p0.x == 0 &&
+              g.obj[1].d_center.z == 0,
+          "segment through a disk: flagged, gradient 0");
+    for (int i = 0; i < 13; i++) {
+        double e1[3] = {1, 0, 0};
+        double fd = central(find_kind("sd"), sd, 13, apply_scalar, i, e1, 1e-4);
+        if (i == 3 || i == 4 || i == 5 || i == 9 || i == 10 || i == 11) continue;
+        CHECK(fabs(fd) < 1e-15, "segment through a disk: distance constant nearby (number %d: %g)", i, fd);
+    }
+}
+
+static void check_errors(void)
+{
+    cdist_result r;
+    cdist_grad g;
+    cdist_vec3 p = tv(0, 0, 0);
+    cdist_circle c = {tv(0, 0, 0), tv(0, 0, 2), 1};
+    CHECK(cdist_point_circle_grad(q, &p, &c, &r, &g) == CDIST_ERR_NOT_UNIT && isnan(g.obj[1].d_radius) &&
+              isnan(r.distance),
+          "bad input: NaN gradient");
+    c.normal = tv(0, 0, 1);
+    CHECK(cdist_point_circle_grad(q, &p, &c, &r, NULL) == CDIST_ERR_NULL_ARGUMENT, "NULL gradient");
+    CHECK(cdist_point_circle_grad(q, &p, &c, NULL, &g) == CDIST_ERR_NULL_ARGUMENT, "NULL result");
+    CHECK(cdist_point_circle_grad(NULL, &p, &c, &r, &g) == CDIST_ERR_NULL_ARGUMENT, "NULL handle");
+    CHECK(cdist_grad_size() == sizeof(cdist_grad), "grad size");
+    CHECK(cdist_grad_flag_not_differentiable() == CDIST_GRAD_NOT_DIFFERENTIABLE, "flag function");
+    /* a circle of radius 0 is differentiated from the right */
+    cdist_vec3 p2 = tv(3, 0, 4);
+    cdist_circle c0 = {tv(0, 0, 0), tv(0, 0, 1), 0};
+    CHECK(cdist_point_circle_grad(q, &p2, &c0, &r, &g) == CDIST_OK && fabs(g.obj[1].d_radius + 0.6) < 1e-15,
+          "radius 0: right derivative -0.6 (got %.17g)", g.obj[1].d_radius);
+}
+
+static void run_random(void)
+{
+    static const char *names[] = {"pc", "pd", "lc", "rc", "sc", "ld", "rd", "sd", "cc", "cd", "dd"};
+    int bad = 0, total = 0;
+    for (int i = 0; i < 300; i++) {
+        const gkind *k = find_kind(names[i % 11]);
+        double v[14];
+        int n = 0;
+        for (const field *f = k->f; f->type != F_END; f++) {
+            if (f->type == F_RADIUS) v[f->offset] = 0.1 + urand(), n = f->offset + 1 > n ? f->offset + 1 : n;
+            else {
+                cdist_vec3 u = (f->type == F_NORMAL || f->type == F_DIR) ? rand_unit() : tv(2 * srand1(), 2 * srand1(), 2 * srand1());
+                v[f->offset] = u.x, v[f->offset + 1] = u.y, v[f->offset + 2] = u.z;
+                if (f->offset + 3 > n) n = f->offset + 3;
+            }
+        }
+        char where[64];
+        snprintf(where, sizeof where, "random %d (%s)", i, k->name);
+        total++;
+        if (check_line(k, v, n, where) != 1) {
+            bad++;
+            fprintf(stderr, "%s: disagrees (worst %.3g x tol)\n", where, worst);
+        }
+    }
+    CHECK(bad == 0, "random: %d of %d disagree", bad, total);
+}
+
+int main(int argc, char **argv)
+{
+    const char *dir = argc > 1 ? argv[1] : "tests/data";
+    q = cdist_query_new();
+    static const char *files[][2] = {
+        {"pc_random.txt", "pc"}, {"pc_hard.txt", "pc"}, {"pd_random.txt", "pd"}, {"pd_hard.txt", "pd"},
+        {"lc_random.txt", "lc"}, {"lc_hard.txt", "lc"}, {"lc_random.txt", "rc"}, {"lc_random.txt", "sc"},
+        {"ld_random.txt", "ld"}, {"ld_hard.txt", "ld"}, {"ld_random.txt", "rd"}, {"ld_random.txt", "sd"},
+        {"cc_random.txt", "cc"}, {"cc_hard.txt", "cc"}, {"cd_random.txt", "cd"}, {"cd_hard.txt", "cd"},
+        {"cd_random.txt", "dd"}, {"cd_hard.txt", "dd"},
+    };
+    for (size_t i = 0; i < sizeof files / sizeof files[0]; i++) run_file(dir, files[i][0], files[i][1]);
+    run_random();
+    check_kinks();
+    check_errors();
+    printf("checked %d differentiable queries, %d flagged\n", n_checked, n_flagged);
+    cdist_query_free(q);
+    return check_summary("grad");
+}
