@@ -524,6 +524,56 @@ CDIST_API cdist_status cdist_segment_disk_grad(cdist_query *q, const cdist_segme
 CDIST_API cdist_status cdist_circle_disk_grad(cdist_query *q, const cdist_circle *c, const cdist_circle *d, cdist_result *r, cdist_grad *g);
 /** cdist_disk_disk() with the gradient. */
 CDIST_API cdist_status cdist_disk_disk_grad(cdist_query *q, const cdist_circle *d0, const cdist_circle *d1, cdist_result *r, cdist_grad *g);
+/** cdist_arc_circle() with the gradient (arc fields: d_center, d_normal, d_radius,
+ *  d_zero_direction, d_start, d_end). */
+CDIST_API cdist_status cdist_arc_circle_grad(cdist_query *q, const cdist_arc *a, const cdist_circle *c, cdist_result *r, cdist_grad *g);
+/** cdist_arc_arc() with the gradient. */
+CDIST_API cdist_status cdist_arc_arc_grad(cdist_query *q, const cdist_arc *a0, const cdist_arc *a1, cdist_result *r, cdist_grad *g);
+/** cdist_segment_arc() with the gradient. */
+CDIST_API cdist_status cdist_segment_arc_grad(cdist_query *q, const cdist_segment *s, const cdist_arc *a, cdist_result *r, cdist_grad *g);
+/** cdist_arc_disk() with the gradient. */
+CDIST_API cdist_status cdist_arc_disk_grad(cdist_query *q, const cdist_arc *a, const cdist_circle *d, cdist_result *r, cdist_grad *g);
+
+/* Swept-object gradients: the contact query plus the gradient of the signed distance (torus:
+ * the circle's fields and d_radius_swept for the tube radius; capsule: d_p0, d_p1,
+ * d_radius_swept; sphere: d_center, d_radius_swept; rounded disk: the disk's fields and
+ * d_radius_swept). The flag follows the core result (cores touching: gradient 0 except
+ * d_radius_swept = -1). On error the gradient is all NaN. */
+
+/** cdist_torus_torus() with the gradient. */
+CDIST_API cdist_status cdist_torus_torus_grad(cdist_query *q, const cdist_torus *a, const cdist_torus *b, cdist_contact *c, cdist_grad *g);
+/** cdist_torus_capsule() with the gradient. */
+CDIST_API cdist_status cdist_torus_capsule_grad(cdist_query *q, const cdist_torus *a, const cdist_capsule *b, cdist_contact *c, cdist_grad *g);
+/** cdist_torus_sphere() with the gradient. */
+CDIST_API cdist_status cdist_torus_sphere_grad(cdist_query *q, const cdist_torus *a, const cdist_sphere *b, cdist_contact *c, cdist_grad *g);
+/** cdist_torus_rounded_disk() with the gradient. */
+CDIST_API cdist_status cdist_torus_rounded_disk_grad(cdist_query *q, const cdist_torus *a, const cdist_rounded_disk *b, cdist_contact *c, cdist_grad *g);
+/** cdist_capsule_capsule() with the gradient. */
+CDIST_API cdist_status cdist_capsule_capsule_grad(cdist_query *q, const cdist_capsule *a, const cdist_capsule *b, cdist_contact *c, cdist_grad *g);
+/** cdist_capsule_sphere() with the gradient. */
+CDIST_API cdist_status cdist_capsule_sphere_grad(cdist_query *q, const cdist_capsule *a, const cdist_sphere *b, cdist_contact *c, cdist_grad *g);
+/** cdist_capsule_rounded_disk() with the gradient. */
+CDIST_API cdist_status cdist_capsule_rounded_disk_grad(cdist_query *q, const cdist_capsule *a, const cdist_rounded_disk *b, cdist_contact *c, cdist_grad *g);
+/** cdist_sphere_sphere() with the gradient. */
+CDIST_API cdist_status cdist_sphere_sphere_grad(cdist_query *q, const cdist_sphere *a, const cdist_sphere *b, cdist_contact *c, cdist_grad *g);
+/** cdist_sphere_rounded_disk() with the gradient. */
+CDIST_API cdist_status cdist_sphere_rounded_disk_grad(cdist_query *q, const cdist_sphere *a, const cdist_rounded_disk *b, cdist_contact *c, cdist_grad *g);
+/** cdist_rounded_disk_rounded_disk() with the gradient. */
+CDIST_API cdist_status cdist_rounded_disk_rounded_disk_grad(cdist_query *q, const cdist_rounded_disk *a, const cdist_rounded_disk *b, cdist_contact *c, cdist_grad *g);
+/** cdist_torus_line() with the gradient. */
+CDIST_API cdist_status cdist_torus_line_grad(cdist_query *q, const cdist_torus *a, const cdist_line *b, cdist_contact *c, cdist_grad *g);
+/** cdist_torus_ray() with the gradient. */
+CDIST_API cdist_status cdist_torus_ray_grad(cdist_query *q, const cdist_torus *a, const cdist_ray *b, cdist_contact *c, cdist_grad *g);
+/** cdist_torus_segment() with the gradient. */
+CDIST_API cdist_status cdist_torus_segment_grad(cdist_query *q, const cdist_torus *a, const cdist_segment *b, cdist_contact *c, cdist_grad *g);
+/** cdist_capsule_circle() with the gradient. */
+CDIST_API cdist_status cdist_capsule_circle_grad(cdist_query *q, const cdist_capsule *a, const cdist_circle *b, cdist_contact *c, cdist_grad *g);
+/** cdist_capsule_disk() with the gradient. */
+CDIST_API cdist_status cdist_capsule_disk_grad(cdist_query *q, const cdist_capsule *a, const cdist_circle *b, cdist_contact *c, cdist_grad *g);
+/** cdist_sphere_circle() with the gradient. */
+CDIST_API cdist_status cdist_sphere_circle_grad(cdist_query *q, const cdist_sphere *a, const cdist_circle *b, cdist_contact *c, cdist_grad *g);
+/** cdist_sphere_disk() with the gradient. */
+CDIST_API cdist_status cdist_sphere_disk_grad(cdist_query *q, const cdist_sphere *a, const cdist_circle *b, cdist_contact *c, cdist_grad *g);
 
 #ifdef __cplusplus
 }
