@@ -433,6 +433,19 @@ static void check_touch_and_errors(cdist_query *q)
     c1.segment.p1 = tv(5, 1, 0);
     CHECK(cdist_capsule_capsule(q, &c0, &c1, &c) == CDIST_OK && !c.equidistant, "parallel, no overlap");
     CHECK(fabs(c.distance - (sqrt(2.0) - 0.3)) < 1e-15, "parallel, no overlap: %.17g", c.distance);
+    /* two pairs carried over: a line over a torus core's diameter (closest at both ends) */
+    cdist_torus tt = {{{0, 0, 0}, {0, 0, 1}, 1}, 0.25};
+    cdist_line over = {{0, 0, 0.5}, {1, 0, 0}};
+    CHECK(cdist_torus_line(q, &tt, &over, &c) == CDIST_OK && c.num_pairs == 2 && !c.equidistant,
+          "two pairs: %d", c.num_pairs);
+    CHECK(fabs(c.distance - 0.25) < 1e-15, "two pairs distance %.17g", c.distance);
+    for (int i = 0; i < c.num_pairs; i++) {
+        const cdist_contact_pair *p = &c.pairs[i];
+        CHECK(fabs(p->normal.z - 1) < 1e-15 && fabs(fabs(p->core_point[0].x) - 1) < 1e-15,
+              "pair %d: normal (%g %g %g) at core x %g", i, p->normal.x, p->normal.y, p->normal.z, p->core_point[0].x);
+        CHECK(fabs(p->point[0].z - 0.25) < 1e-15 && fabs(p->point[1].z - 0.5) < 1e-15, "pair %d witnesses", i);
+    }
+    CHECK(c.num_pairs == 2 && c.pairs[0].core_point[0].x * c.pairs[1].core_point[0].x < 0, "two distinct pairs");
     /* sizes */
     CHECK(cdist_contact_size() == sizeof(cdist_contact) && sizeof(cdist_contact) == 368, "contact size");
     CHECK(cdist_swept_size(0) == 32 && cdist_swept_size(1) == 56 && cdist_swept_size(2) == 64 &&
