@@ -460,10 +460,10 @@ CDIST_API cdist_status cdist_sphere_disk(cdist_query *q, const cdist_sphere *a, 
  * disk crosses a disk transversally the distance is 0 on a neighbourhood and the zero gradient
  * is exact. At a disk's interior closest point the direction w is taken as +-N exactly (the
  * optimality condition) rather than from the rounded points. A circle or disk of radius 0 is
- * differentiated from the right (r -> 0+). Near-degenerate inputs (a few ulps from a
- * non-differentiable configuration) are differentiable in exact arithmetic and the gradient is
- * the exact one of the computed closest pair, but it can change over distances below double
- * resolution. */
+ * differentiated from the right (r -> 0+). Accuracy: the gradient is that of the computed
+ * closest pair; at relative distance delta from a non-differentiable configuration (e.g. a
+ * point delta * L from a circle's axis) the pair is ill-conditioned and the gradient is
+ * accurate to about eps / delta (relative), not to rounding (tests/swept/test_grad.c). */
 
 /** Gradient of the distance with respect to one object's parameters. Fields that do not
  *  apply to the object's kind are 0. */
