@@ -463,7 +463,10 @@ CDIST_API cdist_status cdist_sphere_disk(cdist_query *q, const cdist_sphere *a, 
  * differentiated from the right (r -> 0+). Accuracy: the gradient is that of the computed
  * closest pair; at relative distance delta from a non-differentiable configuration (e.g. a
  * point delta * L from a circle's axis) the pair is ill-conditioned and the gradient is
- * accurate to about eps / delta (relative), not to rounding (tests/swept/test_grad.c). */
+ * accurate to about eps / delta (relative), not to rounding; at a flat (degenerate) minimum
+ * the pair's parameter is only determined to the rounding of the distance, and the gradient
+ * moves with it by the mixed second derivative (tests/swept/test_grad.c checks both against
+ * quad-precision differences). */
 
 /** Gradient of the distance with respect to one object's parameters. Fields that do not
  *  apply to the object's kind are 0. */

@@ -9,7 +9,10 @@
  *  - Constructed non-differentiable configurations (two pairs, an equidistant set, zero
  *    distance) have the flag set, and their one-sided derivatives really differ.
  * The differences are taken of the distance the library computes, which the reference tests
- * hold to ~1e-15 of scale; the gradients come from a separate code path (the closest pair). */
+ * hold to ~1e-15 of scale; the gradients come from a separate code path (the closest pair).
+ * Where double differences cannot resolve the derivative (near-degenerate hard lines), the
+ * point-circle, point-disk, circle-circle and line-circle hard sets are checked again against
+ * differences of independent closed forms / minimisations in __float128. */
 #include <float.h>
 #include <math.h>
 #include <stdio.h>
@@ -601,6 +604,220 @@ static void quad_check(const char *dir, const char *file, int disk)
     printf("%-16s quad-precision differences: %d lines, %d disagree (%d within 1e-7 only by the pair's conditioning)\n",
            file, total, bad, loose);
 }
+
+/* ---- circle-circle and line-circle in quadruple precision ----
+ * D = min over the angle phi of the first circle (cc) / of the circle (lc) of the closed-form
+ * distance from that circle point to the other object, minimised by golden section in
+ * __float128 on a bracket around the library's closest point (independent of the library's
+ * algorithm). Step 1e-22 of the scale. Allowance: 1e-7 plus the library gradient's own spread
+ * under input perturbations of a few ulps (an empirical condition number of the closest pair). */
+typedef struct { qf c[3], n[3], u[3], v[3], r; } qcirc;
+static void q_circ(const qf *x, qcirc *o)
+{
+    qf nn = q_sqrt(x[3] * x[3] + x[4] * x[4] + x[5] * x[5]);
+    for (int i = 0; i < 3; i++) o->c[i] = x[i], o->n[i] = x[3 + i] / nn;
+    o->r = x[6];
+    qf e[3] = {0, 0, 0};
+    double an[3] = {fabs((double)o->n[0]), fabs((double)o->n[1]), fabs((double)o->n[2])};
+    e[an[0] < 0.6 ? 0 : (an[1] < 0.6 ? 1 : 2)] = 1;
+    qf d = e[0] * o->n[0] + e[1] * o->n[1] + e[2] * o->n[2];
+    qf u[3] = {e[0] - d * o->n[0], e[1] - d * o->n[1], e[2] - d * o->n[2]};
+    qf un = q_sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
+    for (int i = 0; i < 3; i++) o->u[i] = u[i] / un;
+    o->v[0] = o->n[1] * o->u[2] - o->n[2] * o->u[1];
+    o->v[1] = o->n[2] * o->u[0] - o->n[0] * o->u[2];
+    o->v[2] = o->n[0] * o->u[1] - o->n[1] * o->u[0];
+}
+static qf q_cos(qf x) /* Taylor after reduction to |x| <= pi/4 is enough: |x| < 8 here */
+{
+    qf x2 = x * x, t = 1, s = 1;
+    for (int k = 1; k < 40; k++) { t *= -x2 / ((2 * k - 1) * (2 * k)); s += t; }
+    return s;
+}
+static qf q_sin(qf x)
+{
+    qf x2 = x * x, t = x, s = x;
+    for (int k = 1; k < 40; k++) { t *= -x2 / ((2 * k) * (2 * k + 1)); s += t; }
+    return s;
+}
+static void q_circle_point(const qcirc *c, qf phi, qf *p)
+{
+    qf co = q_cos(phi), si = q_sin(phi);
+    for (int i = 0; i < 3; i++) p[i] = c->c[i] + c->r * (co * c->u[i] + si * c->v[i]);
+}
+static qf q_point_circle(const qf *p, const qcirc *c)
+{
+    qf d[3] = {p[0] - c->c[0], p[1] - c->c[1], p[2] - c->c[2]};
+    qf h = c->n[0] * d[0] + c->n[1] * d[1] + c->n[2] * d[2];
+    qf x[3] = {c->n[1] * d[2] - c->n[2] * d[1], c->n[2] * d[0] - c->n[0] * d[2], c->n[0] * d[1] - c->n[1] * d[0]};
+    qf rho = q_sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]);
+    return q_sqrt((rho - c->r) * (rho - c->r) + h * h);
+}
+static qf q_point_line(const qf *p, const qf *o, const qf *dir)
+{
+    qf dd = dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2];
+    qf w[3] = {p[0] - o[0], p[1] - o[1], p[2] - o[2]};
+    qf t = (w[0] * dir[0] + w[1] * dir[1] + w[2] * dir[2]) / dd;
+    qf e[3] = {w[0] - t * dir[0], w[1] - t * dir[1], w[2] - t * dir[2]};
+    return q_sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);
+}
+/* numbers as in the tool line (cc: circle circle; lc: line circle). */
+static qf q_eval(int lc, const qf *x, qf phi)
+{
+    qcirc a;
+    qf p[3];
+    if (lc) {
+        q_circ(x + 6, &a);
+        q_circle_point(&a, phi, p);
+        return q_point_line(p, x, x + 3);
+    }
+    qcirc b;
+    q_circ(x, &a);
+    q_circ(x + 7, &b);
+    q_circle_point(&a, phi, p);
+    return q_point_circle(p, &b);
+}
+static qf q_min_arg(int lc, const qf *x, double phi0, int *at_edge, qf *arg);
+static qf q_min(int lc, const qf *x, double phi0, int *at_edge) { return q_min_arg(lc, x, phi0, at_edge, NULL); }
+static qf q_min_arg(int lc, const qf *x, double phi0, int *at_edge, qf *arg)
+{
+    const qf gr = (q_sqrt(5) - 1) / 2;
+    qf lo = phi0 - 0.05, hi = phi0 + 0.05;
+    qf a = hi - gr * (hi - lo), b = lo + gr * (hi - lo);
+    qf fa = q_eval(lc, x, a), fb = q_eval(lc, x, b);
+    for (int it = 0; it < 120; it++) {
+        if (fa < fb) { hi = b; b = a; fb = fa; a = hi - gr * (hi - lo); fa = q_eval(lc, x, a); }
+        else { lo = a; a = b; fa = fb; b = lo + gr * (hi - lo); fb = q_eval(lc, x, b); }
+    }
+    qf m = (lo + hi) / 2;
+    if (arg) *arg = m;
+    *at_edge = (double)(m - (phi0 - 0.05)) < 1e-3 || (double)((phi0 + 0.05) - m) < 1e-3;
+    return fa < fb ? fa : fb;
+}
+
+static void quad_check_curve(const char *dir, const char *file, int lc)
+{
+    char path[1024];
+    snprintf(path, sizeof path, "%s/%s", dir, file);
+    FILE *f = fopen(path, "r");
+    CHECK(f != NULL, "cannot open %s", path);
+    if (!f) return;
+    char line[4096];
+    int lineno = 0, bad = 0, total = 0, skipped = 0;
+    const gkind *k = find_kind(lc ? "lc" : "cc");
+    int nv = lc ? 13 : 14;
+    while (fgets(line, sizeof line, f)) {
+        lineno++;
+        cdq_line ql;
+        char err[256];
+        if (cdq_parse(line, &ql, err, sizeof err) != 1) continue;
+        cdist_result r;
+        cdist_grad g;
+        if (k->fn(q, ql.v, &r, &g) != CDIST_OK || (g.flags & CDIST_GRAD_NOT_DIFFERENTIABLE)) continue;
+        qf x[14];
+        double L = 0;
+        for (int i = 0; i < nv; i++) x[i] = ql.v[i], L = fmax(L, fabs(ql.v[i]));
+        /* the library's closest point on the parametrised circle, as an angle in our frame */
+        qcirc a;
+        q_circ(lc ? x + 6 : x, &a);
+        cdist_vec3 P = r.pairs[0].point[lc ? 1 : 0];
+        double rel[3] = {P.x - (double)a.c[0], P.y - (double)a.c[1], P.z - (double)a.c[2]};
+        double cu = rel[0] * (double)a.u[0] + rel[1] * (double)a.u[1] + rel[2] * (double)a.u[2];
+        double cv = rel[0] * (double)a.v[0] + rel[1] * (double)a.v[1] + rel[2] * (double)a.v[2];
+        double phi0 = atan2(cv, cu);
+        int edge = 0;
+        qf phiq;
+        qf d0 = q_min_arg(lc, x, phi0, &edge, &phiq);
+        /* the library's pair is as good as double allows: at its angle the distance is within
+         * rounding of the minimum */
+        qf dlib = q_eval(lc, x, phi0);
+        CHECK((double)(dlib - d0) <= 64 * DBL_EPSILON * fmax(L, 1), "%s:%d: the library's closest point is %.3g above the minimum",
+              file, lineno, (double)(dlib - d0));
+        if (edge || fabs((double)d0 - r.distance) > 1e-12 * fmax(L, 1)) { skipped++; continue; }
+        /* empirical conditioning: the library gradient under a few-ulp input perturbations */
+        double spread[14] = {0};
+        for (int t = 0; t < 4; t++) {
+            double w[14];
+            for (int i = 0; i < nv; i++) w[i] = ql.v[i] * (1 + 4 * DBL_EPSILON * srand1());
+            cdist_result r2;
+            cdist_grad g2;
+            if (k->fn(q, w, &r2, &g2) != CDIST_OK) continue;
+            for (const field *fl = k->f; fl->type != F_END; fl++) {
+                int wdt = fl->type == F_RADIUS ? 1 : 3;
+                for (int c = 0; c < wdt; c++) {
+                    double e[3] = {0};
+                    e[c] = 1;
+                    if (fl->type == F_NORMAL || fl->type == F_DIR) e[0] = e[1] = e[2] = 1;
+                    double d1 = analytic(k, ql.v, fl->type, fl->obj, e), d2 = analytic(k, w, fl->type, fl->obj, e);
+                    if (fabs(d1 - d2) > spread[fl->offset + c]) spread[fl->offset + c] = fabs(d1 - d2);
+                }
+            }
+        }
+        qf step = (qf)L * (qf)1e-22;
+        int ok = 1;
+        total++;
+        for (const field *fl = k->f; fl->type != F_END; fl++) {
+            int tangent = fl->type == F_NORMAL || fl->type == F_DIR;
+            int cnt = fl->type == F_RADIUS ? 1 : (tangent ? 2 : 3);
+            double sp = 0;
+            for (int c = 0; c < 3; c++) sp = fmax(sp, spread[fl->offset + c]);
+            cdist_vec3 ta = tv(0, 0, 0), tb = ta;
+            if (tangent) {
+                cdist_circle tmp = {tv(0, 0, 0), tv(ql.v[fl->offset], ql.v[fl->offset + 1], ql.v[fl->offset + 2]), 1};
+                cdist_query_set_unit_tolerance(q, INFINITY);
+                cdist_circle_basis(&tmp, &ta, &tb);
+                cdist_query_set_unit_tolerance(q, 1e-6);
+            }
+            for (int c = 0; c < cnt; c++) {
+                double e[3] = {0};
+                if (tangent) {
+                    cdist_vec3 t = c ? tb : ta;
+                    e[0] = t.x, e[1] = t.y, e[2] = t.z;
+                } else if (fl->type != F_RADIUS) e[c] = 1;
+                double an = analytic(k, ql.v, fl->type, fl->obj, e);
+                qf fpm[2], fix[2][2];
+                for (int sg = 0; sg < 2; sg++) {
+                    qf w[14];
+                    memcpy(w, x, sizeof w);
+                    qf hs = sg ? -step : step;
+                    if (tangent) {
+                        hs /= (qf)L;
+                        qf nn = q_sqrt(x[fl->offset] * x[fl->offset] + x[fl->offset + 1] * x[fl->offset + 1] +
+                                       x[fl->offset + 2] * x[fl->offset + 2]);
+                        for (int i = 0; i < 3; i++) w[fl->offset + i] = x[fl->offset + i] / nn + hs * e[i];
+                    } else if (fl->type == F_RADIUS) {
+                        w[fl->offset] += hs;
+                    } else {
+                        w[fl->offset + c] += hs;
+                    }
+                    int ed;
+                    fpm[sg] = q_min(lc, w, phi0, &ed);
+                    /* partial derivatives at fixed angle: at the library's and the exact one */
+                    fix[0][sg] = q_eval(lc, w, phi0);
+                    fix[1][sg] = q_eval(lc, w, phiq);
+                }
+                qf h = tangent ? step / (qf)L : step;
+                double fd = (double)((fpm[0] - fpm[1]) / (2 * h));
+                /* where the minimum is flat the angle is only determined to double's rounding of
+                 * the distance; the gradient moves with it by the mixed derivative */
+                double flat = fabs((double)((fix[0][0] - fix[0][1]) / (2 * h) - (fix[1][0] - fix[1][1]) / (2 * h)));
+                double scale = tangent ? fmax(L, 1.0) : 1.0;
+                if (!(fabs(fd - an) <= 1e-7 * fmax(scale, fabs(an)) + 4 * sp + 2 * flat)) {
+                    ok = 0;
+                    if (bad < 5)
+                        fprintf(stderr, "%s:%d field %d/%d: grad %.17g, quad differences %.17g (spread %.3g, flat %.3g)\n",
+                                file, lineno, fl->offset, c, an, fd, sp, flat);
+                }
+            }
+        }
+        if (!ok) bad++;
+    }
+    fclose(f);
+    CHECK(bad == 0, "%s (quad precision): %d of %d lines disagree", file, bad, total);
+    CHECK(skipped * 10 <= total, "%s: too many lines skipped (%d)", file, skipped);
+    printf("%-16s quad-precision differences (%s): %d lines, %d disagree, %d skipped (bracket)\n", file,
+           lc ? "lc" : "cc", total, bad, skipped);
+}
 #endif
 
 int main(int argc, char **argv)
@@ -621,6 +838,8 @@ int main(int argc, char **argv)
     quad_check(dir, "pd_hard.txt", 1);
     quad_check(dir, "pc_random.txt", 0);
     quad_check(dir, "pd_random.txt", 1);
+    quad_check_curve(dir, "cc_hard.txt", 0);
+    quad_check_curve(dir, "lc_hard.txt", 1);
 #else
     printf("no __float128: quad-precision checks skipped\n");
 #endif
