@@ -456,9 +456,10 @@ CDIST_API cdist_status cdist_sphere_disk(cdist_query *q, const cdist_sphere *a, 
  * is that of pairs[0], a one-sided derivative), an equidistant result (the gradient of the
  * representative pair, a one-sided derivative), and distance (core distance for swept objects)
  * 0 (within the rounding of the closest points' coordinates), where the gradient is set to 0
- * (an element of the Clarke subdifferential). The flag is conservative there: where a curve or
- * disk crosses a disk transversally the distance is 0 on a neighbourhood and the zero gradient
- * is exact. At a disk's interior closest point the direction w is taken as +-N exactly (the
+ * (an element of the Clarke subdifferential) -- except where the distance is 0 on a whole
+ * neighbourhood: a curve crossing a disk's plane transversally (sine of the angle > 1e-6) at a
+ * point clearly inside the rim and away from the curve's ends, or two disks in transversal
+ * planes meeting inside both rims; there the zero gradient is exact and the flag is not set. At a disk's interior closest point the direction w is taken as +-N exactly (the
  * optimality condition) rather than from the rounded points. A circle or disk of radius 0 is
  * differentiated from the right (r -> 0+). Accuracy: the gradient is that of the computed
  * closest pair; at relative distance delta from a non-differentiable configuration (e.g. a

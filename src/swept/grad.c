@@ -121,6 +121,62 @@ static void object_grad(const cd_core_obj *ob, vec3 X, double t, vec3 w, cdist_g
     if (ob->swept) o->d_radius_swept = -1.0;
 }
 
+/* Unit tangent of a curve object at its closest point (0 for points and disks). 'interior'
+ * says the point is not an end of a segment/ray/arc. */
+static vec3 curve_tangent(const cd_core_obj *o, vec3 X, double t, int *interior)
+{
+    *interior = 1;
+    switch (o->type) {
+    case CD_CORE_LINE: return unit(((const cdist_line *)o->obj)->direction);
+    case CD_CORE_RAY:
+        *interior = t > 0.0;
+        return unit(((const cdist_ray *)o->obj)->direction);
+    case CD_CORE_SEGMENT: {
+        const cdist_segment *sg = o->obj;
+        *interior = t > 0.0 && t < 1.0;
+        return unit(v_sub(sg->p1, sg->p0));
+    }
+    case CD_CORE_CIRCLE: {
+        const cdist_circle *c = o->obj;
+        return unit(v_cross(unit(c->normal), v_sub(X, c->center)));
+    }
+    case CD_CORE_ARC: {
+        const cdist_arc *a = o->obj;
+        *interior = t > a->start && t < a->end;
+        return unit(v_cross(unit(a->circle.normal), v_sub(X, a->circle.center)));
+    }
+    default: *interior = 0; return v3(0, 0, 0);
+    }
+}
+
+/* At zero distance: is the distance 0 on a whole neighbourhood of the inputs? Yes when one
+ * object is a disk met at a point clearly inside its rim, and the other is a curve crossing
+ * the disk's plane transversally away from its ends, or a second disk (also met inside its
+ * rim) in a transversal plane. */
+static int zero_on_neighbourhood(const cd_core_obj *a, const cd_core_obj *b, const cdist_result *r)
+{
+    const double transversal = 1e-6; /* sine of the smallest crossing angle treated as stable */
+    const cd_core_obj *ob[2] = {a, b};
+    for (int k = 0; k < 2; k++) {
+        if (ob[k]->type != CD_CORE_DISK) continue;
+        const cdist_circle *dk = ob[k]->obj;
+        vec3 N = unit(dk->normal);
+        if (!disk_interior(dk, N, r->pairs[0].point[k])) continue;
+        const cd_core_obj *o = ob[1 - k];
+        vec3 X = r->pairs[0].point[1 - k];
+        if (o->type == CD_CORE_DISK) {
+            const cdist_circle *d2 = o->obj;
+            vec3 N2 = unit(d2->normal);
+            if (disk_interior(d2, N2, X) && v_norm(v_cross(N, N2)) > transversal) return 1;
+            continue;
+        }
+        int interior;
+        vec3 t = curve_tangent(o, X, r->pairs[0].param[1 - k], &interior);
+        if (interior && fabs(v_dot(t, N)) > transversal) return 1;
+    }
+    return 0;
+}
+
 void cd_grad_fill(const cd_core_obj *a, const cd_core_obj *b, const cdist_result *r, cdist_grad *g)
 {
     memset(g, 0, sizeof *g);
@@ -129,10 +185,12 @@ void cd_grad_fill(const cd_core_obj *a, const cd_core_obj *b, const cdist_result
     if (r->num_pairs == 2 || r->equidistant) g->flags |= CDIST_GRAD_NOT_DIFFERENTIABLE;
     vec3 P = r->pairs[0].point[0], Q = r->pairs[0].point[1];
     vec3 d = v_sub(P, Q);
-    /* Zero distance, or within rounding of zero (the points' coordinates' last bits). */
+    /* Zero distance, or within rounding of zero (the points' coordinates' last bits): the
+     * gradient is 0 (in the Clarke subdifferential). It is the true, two-sided derivative where
+     * the distance stays 0 nearby (a transversal crossing of a disk's interior). */
     if (!(r->distance > 16.0 * DBL_EPSILON * fmax(v_maxabs(P), v_maxabs(Q))) || v_maxabs(d) == 0.0) {
-        g->flags |= CDIST_GRAD_NOT_DIFFERENTIABLE;
-        return; /* 0 is in the Clarke subdifferential */
+        if (!zero_on_neighbourhood(a, b, r)) g->flags |= CDIST_GRAD_NOT_DIFFERENTIABLE;
+        return;
     }
     vec3 w = unit(d);
     /* At a disk's interior point w is exactly along the disk's normal (first-order optimality);
