@@ -408,6 +408,281 @@ CDIST_API cdist_status cdist_query_set_threads(cdist_query *q, int threads);
 /** The worker thread count (1 for a NULL handle). */
 CDIST_API int cdist_query_get_threads(const cdist_query *q);
 
+/* ---- swept objects and gradients (issue 14) ----------------------------------------- */
+/* A swept object is a core (point, segment, circle, disk) swept by a ball of radius
+ * `radius`: the set of points within `radius` of the core. The signed distance between two
+ * swept objects (or a swept object and a plain object, radius 0) is
+ *     distance = core_distance - (radius_a + radius_b)
+ * (evaluated exactly in that order), negative when the solids overlap: then -distance is the
+ * penetration depth along the closest pair of the cores. */
+
+/** A sphere: a point swept by a ball. sizeof = 32 bytes (4 doubles). */
+typedef struct cdist_sphere {
+    cdist_vec3 center; /**< centre */
+    double radius;     /**< radius, >= 0 (0: a point) */
+} cdist_sphere;
+
+/** A capsule: a segment swept by a ball. sizeof = 56 bytes (7 doubles). */
+typedef struct cdist_capsule {
+    cdist_segment segment; /**< the core segment (p0 == p1 allowed: a sphere) */
+    double radius;         /**< radius of the ball, >= 0 */
+} cdist_capsule;
+
+/** A torus: a circle swept by a ball (the solid torus; a spindle torus when
+ *  tube_radius > circle.radius). sizeof = 64 bytes (8 doubles). */
+typedef struct cdist_torus {
+    cdist_circle circle; /**< the core circle (centre line of the tube) */
+    double tube_radius;  /**< tube radius, >= 0 */
+} cdist_torus;
+
+/** A rounded disk: a disk swept by a ball (a coin with rounded rim). sizeof = 64 bytes. */
+typedef struct cdist_rounded_disk {
+    cdist_circle disk; /**< the core disk */
+    double radius;     /**< radius of the ball, >= 0 */
+} cdist_rounded_disk;
+
+/** One closest pair of a contact query. */
+typedef struct cdist_contact_pair {
+    /** Witness points on the two surfaces: point[0] = core_point[0] + r0 * normal,
+     *  point[1] = core_point[1] - r1 * normal (so distance = (point[1] - point[0]) . normal;
+     *  when the solids overlap point[0] lies inside the second solid and vice versa). */
+    cdist_vec3 point[2];
+    /** The closest pair of the cores, exactly as the core query returned it. */
+    cdist_vec3 core_point[2];
+    /** Unit contact normal pointing from the first object to the second:
+     *  (core_point[1] - core_point[0]) / core_distance when the cores are apart, otherwise
+     *  chosen by the rule of ::CDIST_CONTACT_CORE_TOUCH. */
+    cdist_vec3 normal;
+    /** Parameters of the core points as in ::cdist_pair (NaN for a point core). */
+    double param[2];
+} cdist_contact_pair;
+
+/** Contact result flags (bits of cdist_contact::flags). Values are fixed. */
+typedef enum cdist_contact_flag {
+    /** The cores touch or cross (core_distance <= 16 eps times the largest coordinate of the
+     *  core points): no closest-pair direction exists and the normal is chosen
+     *  deterministically, first rule that gives a non-zero vector: (1) both cores are curves
+     *  (segment/line/ray direction, circle tangent N x (P - C)) and their tangents at the core
+     *  points are not parallel: normal = t0 x t1; (2) a core is a circle or disk (first object
+     *  first): its plane normal; (3) a core is a segment/line/ray (first first): the U vector
+     *  of cdist_circle_basis() for a circle with that direction as normal; (4) (0, 0, 1).
+     *  The sign is then chosen so that normal . (m1 - m0) > 0, m = the core's reference point
+     *  (centre, segment midpoint, line/ray origin), or if that is 0 so that the first
+     *  non-zero component is positive. */
+    CDIST_CONTACT_CORE_TOUCH = 1
+} cdist_contact_flag;
+
+/** Result of a swept-object (contact) query. Output only: the library writes every field.
+ *  Growth policy as for ::cdist_result: new fields take their place in `reserved` (zero in
+ *  1.0), sizeof (368 bytes on LP64, see cdist_contact_size()) never changes in ABI 1. */
+typedef struct cdist_contact {
+    double distance;      /**< signed distance = core_distance - (r0 + r1) (NaN on error) */
+    double core_distance; /**< distance between the cores, from the core query */
+    int num_pairs;        /**< 0 (error), 1 or 2, carried over from the core query */
+    int equidistant;      /**< carried over from the core query (infinitely many pairs) */
+    int flags;            /**< bits of ::cdist_contact_flag */
+    int method;           /**< the ::cdist_method that answered the core query */
+    cdist_contact_pair pairs[2]; /**< pairs[i] valid for i < num_pairs */
+    double reserved[8];   /**< reserved for future fields; set to zero */
+} cdist_contact;
+
+/** sizeof(cdist_contact) as compiled into the library. */
+CDIST_API size_t cdist_contact_size(void);
+/** sizeof(cdist_sphere), sizeof(cdist_capsule), sizeof(cdist_torus), sizeof(cdist_rounded_disk)
+ *  for which = 0, 1, 2, 3 (0 otherwise), for FFI users to check their layout. */
+CDIST_API size_t cdist_swept_size(int which);
+/** The value of ::CDIST_CONTACT_CORE_TOUCH (for bindings without the header). */
+CDIST_API int cdist_contact_flag_core_touch(void);
+
+/* Contact queries. Every one validates its objects like the core queries (radii: finite,
+ * >= 0, <= 1e150; else ::CDIST_ERR_NOT_FINITE / ::CDIST_ERR_NEGATIVE_RADIUS /
+ * ::CDIST_ERR_OUT_OF_RANGE), answers the core query with the handle's method and options,
+ * and fills the contact; on error: distance NaN, no pairs. Object order in the name is the
+ * order of point[0] / point[1]. */
+
+/** Torus to torus (core: cdist_circle_circle()). */
+CDIST_API cdist_status cdist_torus_torus(cdist_query *q, const cdist_torus *a, const cdist_torus *b, cdist_contact *c);
+/** Torus to capsule (core: cdist_segment_circle(), objects swapped back). */
+CDIST_API cdist_status cdist_torus_capsule(cdist_query *q, const cdist_torus *a, const cdist_capsule *b, cdist_contact *c);
+/** Torus to sphere (core: cdist_point_circle(), swapped back). */
+CDIST_API cdist_status cdist_torus_sphere(cdist_query *q, const cdist_torus *a, const cdist_sphere *b, cdist_contact *c);
+/** Torus to rounded disk (core: cdist_circle_disk()). */
+CDIST_API cdist_status cdist_torus_rounded_disk(cdist_query *q, const cdist_torus *a, const cdist_rounded_disk *b, cdist_contact *c);
+/** Capsule to capsule (core: segment-segment, answered in closed form; equidistant when the
+ *  segments are parallel with overlapping projections). */
+CDIST_API cdist_status cdist_capsule_capsule(cdist_query *q, const cdist_capsule *a, const cdist_capsule *b, cdist_contact *c);
+/** Capsule to sphere (core: point-segment, closed form). */
+CDIST_API cdist_status cdist_capsule_sphere(cdist_query *q, const cdist_capsule *a, const cdist_sphere *b, cdist_contact *c);
+/** Capsule to rounded disk (core: cdist_segment_disk()). */
+CDIST_API cdist_status cdist_capsule_rounded_disk(cdist_query *q, const cdist_capsule *a, const cdist_rounded_disk *b, cdist_contact *c);
+/** Sphere to sphere (core: point-point). */
+CDIST_API cdist_status cdist_sphere_sphere(cdist_query *q, const cdist_sphere *a, const cdist_sphere *b, cdist_contact *c);
+/** Sphere to rounded disk (core: cdist_point_disk()). */
+CDIST_API cdist_status cdist_sphere_rounded_disk(cdist_query *q, const cdist_sphere *a, const cdist_rounded_disk *b, cdist_contact *c);
+/** Rounded disk to rounded disk (core: cdist_disk_disk()). */
+CDIST_API cdist_status cdist_rounded_disk_rounded_disk(cdist_query *q, const cdist_rounded_disk *a, const cdist_rounded_disk *b, cdist_contact *c);
+/** Torus to line (core: cdist_line_circle(), swapped back). */
+CDIST_API cdist_status cdist_torus_line(cdist_query *q, const cdist_torus *a, const cdist_line *b, cdist_contact *c);
+/** Torus to ray (core: cdist_ray_circle(), swapped back). */
+CDIST_API cdist_status cdist_torus_ray(cdist_query *q, const cdist_torus *a, const cdist_ray *b, cdist_contact *c);
+/** Torus to segment (core: cdist_segment_circle(), swapped back). */
+CDIST_API cdist_status cdist_torus_segment(cdist_query *q, const cdist_torus *a, const cdist_segment *b, cdist_contact *c);
+/** Capsule to circle (core: cdist_segment_circle()). */
+CDIST_API cdist_status cdist_capsule_circle(cdist_query *q, const cdist_capsule *a, const cdist_circle *b, cdist_contact *c);
+/** Capsule to disk (core: cdist_segment_disk()). */
+CDIST_API cdist_status cdist_capsule_disk(cdist_query *q, const cdist_capsule *a, const cdist_circle *b, cdist_contact *c);
+/** Sphere to circle (core: cdist_point_circle()). */
+CDIST_API cdist_status cdist_sphere_circle(cdist_query *q, const cdist_sphere *a, const cdist_circle *b, cdist_contact *c);
+/** Sphere to disk (core: cdist_point_disk()). */
+CDIST_API cdist_status cdist_sphere_disk(cdist_query *q, const cdist_sphere *a, const cdist_circle *b, cdist_contact *c);
+
+/* ---- gradients ----
+ * A `_grad` query answers the query and writes the derivative of the distance with respect to
+ * every input parameter of both objects, from the closest pair (envelope theorem): with P on
+ * the first object, Q on the second and w = (P - Q) / |P - Q|, dD/dtheta = w . dP/dtheta for
+ * the first object's parameters and -w . dQ/dtheta for the second's, the points' own
+ * parameters held fixed in a parametrisation whose range does not depend on theta:
+ *   point P:               dP = dp;
+ *   line/ray o + t d:      dP = do + t dd (t fixed; for a ray t >= 0 fixed, so a ray start
+ *                          point closest gives d_direction = 0 since t = 0);
+ *   segment p0 + s(p1-p0): dP = (1-s) dp0 + s dp1 (s in [0,1] fixed: end points included);
+ *   circle C + r e:        e the unit radial direction, moved by the smallest rotation
+ *                          taking N to N + dN: de = -(e . dN) N;
+ *   disk C + r s e:        s in [0,1] fixed (rim s = 1, interior s < 1; the interior gives
+ *                          d_radius = 0 because w is along N there, and d_normal =
+ *                          -(w . N)(P - C): tilting the disk moves the point);
+ *   arc:                   angle a fixed inside [start, end]; d_start / d_end are
+ *                          r w . T(a) when the closest point is that end of the arc, else 0;
+ *                          d_normal / d_zero_direction through the arc frame U, V.
+ * Normal and direction gradients are tangent to the unit sphere (g . N = 0, dD = g . dN for
+ * unit-preserving dN). Swept objects: the core gradient plus d_radius_swept = -1 each.
+ * Not differentiable (flag ::CDIST_GRAD_NOT_DIFFERENTIABLE): two closest pairs (the gradient
+ * is that of pairs[0], a one-sided derivative), an equidistant result (the gradient of the
+ * representative pair, a one-sided derivative), and distance (core distance for swept objects)
+ * 0 (within the rounding of the closest points' coordinates), where the gradient is set to 0
+ * (an element of the Clarke subdifferential) -- except where the distance is 0 on a whole
+ * neighbourhood: a curve crossing a disk's plane transversally (sine of the angle > 1e-6) at a
+ * point clearly inside the rim and away from the curve's ends, or two disks in transversal
+ * planes meeting inside both rims; there the zero gradient is exact and the flag is not set. At a disk's interior closest point the direction w is taken as +-N exactly (the
+ * optimality condition) rather than from the rounded points. A circle or disk of radius 0 is
+ * differentiated from the right (r -> 0+). Accuracy: the gradient is that of the computed
+ * closest pair; at relative distance delta from a non-differentiable configuration (e.g. a
+ * point delta * L from a circle's axis) the pair is ill-conditioned and the gradient is
+ * accurate to about eps / delta (relative), not to rounding; at a flat (degenerate) minimum
+ * the pair's parameter is only determined to the rounding of the distance, and the gradient
+ * moves with it by the mixed second derivative (tests/swept/test_grad.c checks both against
+ * quad-precision differences). */
+
+/** Gradient of the distance with respect to one object's parameters. Fields that do not
+ *  apply to the object's kind are 0. */
+typedef struct cdist_grad_object {
+    cdist_vec3 d_center;    /**< point, sphere centre, circle/disk/arc/torus/rounded-disk centre */
+    cdist_vec3 d_normal;    /**< circle/disk/arc/torus/rounded-disk normal (tangent space) */
+    cdist_vec3 d_origin;    /**< line/ray origin */
+    cdist_vec3 d_direction; /**< line/ray direction (tangent space) */
+    cdist_vec3 d_p0;        /**< segment/capsule p0 */
+    cdist_vec3 d_p1;        /**< segment/capsule p1 */
+    cdist_vec3 d_zero_direction; /**< arc zero_direction (full 3-vector, the arc frame only
+                                      depends on its direction, so it is orthogonal to it) */
+    double d_radius;        /**< circle/disk/arc radius (the core radius of a torus/rounded disk) */
+    double d_radius_swept;  /**< sphere/capsule radius, torus tube radius, rounded-disk radius: -1 */
+    double d_start;         /**< arc start angle */
+    double d_end;           /**< arc end angle */
+    double reserved[8];     /**< reserved for future fields; set to zero */
+} cdist_grad_object;
+
+/** Gradient flags (bits of cdist_grad::flags). Values are fixed. */
+typedef enum cdist_grad_flag {
+    /** The distance is not differentiable here (see the rules above). */
+    CDIST_GRAD_NOT_DIFFERENTIABLE = 1
+} cdist_grad_flag;
+
+/** Gradient of one query: obj[0] for the first object, obj[1] for the second. */
+typedef struct cdist_grad {
+    cdist_grad_object obj[2]; /**< per-object gradients */
+    int flags;                /**< bits of ::cdist_grad_flag */
+    int reserved_int;         /**< reserved; 0 */
+    double reserved[8];       /**< reserved for future fields; set to zero */
+} cdist_grad;
+
+/** sizeof(cdist_grad) as compiled into the library. */
+CDIST_API size_t cdist_grad_size(void);
+/** The value of ::CDIST_GRAD_NOT_DIFFERENTIABLE. */
+CDIST_API int cdist_grad_flag_not_differentiable(void);
+
+/** cdist_point_circle() with the gradient. On error the gradient is all NaN. */
+CDIST_API cdist_status cdist_point_circle_grad(cdist_query *q, const cdist_vec3 *p, const cdist_circle *c, cdist_result *r, cdist_grad *g);
+/** cdist_point_disk() with the gradient. */
+CDIST_API cdist_status cdist_point_disk_grad(cdist_query *q, const cdist_vec3 *p, const cdist_circle *d, cdist_result *r, cdist_grad *g);
+/** cdist_line_circle() with the gradient. */
+CDIST_API cdist_status cdist_line_circle_grad(cdist_query *q, const cdist_line *l, const cdist_circle *c, cdist_result *r, cdist_grad *g);
+/** cdist_ray_circle() with the gradient. */
+CDIST_API cdist_status cdist_ray_circle_grad(cdist_query *q, const cdist_ray *l, const cdist_circle *c, cdist_result *r, cdist_grad *g);
+/** cdist_segment_circle() with the gradient. */
+CDIST_API cdist_status cdist_segment_circle_grad(cdist_query *q, const cdist_segment *s, const cdist_circle *c, cdist_result *r, cdist_grad *g);
+/** cdist_circle_circle() with the gradient. */
+CDIST_API cdist_status cdist_circle_circle_grad(cdist_query *q, const cdist_circle *c0, const cdist_circle *c1, cdist_result *r, cdist_grad *g);
+/** cdist_line_disk() with the gradient. */
+CDIST_API cdist_status cdist_line_disk_grad(cdist_query *q, const cdist_line *l, const cdist_circle *d, cdist_result *r, cdist_grad *g);
+/** cdist_ray_disk() with the gradient. */
+CDIST_API cdist_status cdist_ray_disk_grad(cdist_query *q, const cdist_ray *l, const cdist_circle *d, cdist_result *r, cdist_grad *g);
+/** cdist_segment_disk() with the gradient. */
+CDIST_API cdist_status cdist_segment_disk_grad(cdist_query *q, const cdist_segment *s, const cdist_circle *d, cdist_result *r, cdist_grad *g);
+/** cdist_circle_disk() with the gradient. */
+CDIST_API cdist_status cdist_circle_disk_grad(cdist_query *q, const cdist_circle *c, const cdist_circle *d, cdist_result *r, cdist_grad *g);
+/** cdist_disk_disk() with the gradient. */
+CDIST_API cdist_status cdist_disk_disk_grad(cdist_query *q, const cdist_circle *d0, const cdist_circle *d1, cdist_result *r, cdist_grad *g);
+/** cdist_arc_circle() with the gradient (arc fields: d_center, d_normal, d_radius,
+ *  d_zero_direction, d_start, d_end). */
+CDIST_API cdist_status cdist_arc_circle_grad(cdist_query *q, const cdist_arc *a, const cdist_circle *c, cdist_result *r, cdist_grad *g);
+/** cdist_arc_arc() with the gradient. */
+CDIST_API cdist_status cdist_arc_arc_grad(cdist_query *q, const cdist_arc *a0, const cdist_arc *a1, cdist_result *r, cdist_grad *g);
+/** cdist_segment_arc() with the gradient. */
+CDIST_API cdist_status cdist_segment_arc_grad(cdist_query *q, const cdist_segment *s, const cdist_arc *a, cdist_result *r, cdist_grad *g);
+/** cdist_arc_disk() with the gradient. */
+CDIST_API cdist_status cdist_arc_disk_grad(cdist_query *q, const cdist_arc *a, const cdist_circle *d, cdist_result *r, cdist_grad *g);
+
+/* Swept-object gradients: the contact query plus the gradient of the signed distance (torus:
+ * the circle's fields and d_radius_swept for the tube radius; capsule: d_p0, d_p1,
+ * d_radius_swept; sphere: d_center, d_radius_swept; rounded disk: the disk's fields and
+ * d_radius_swept). The flag follows the core result (cores touching: gradient 0 except
+ * d_radius_swept = -1). On error the gradient is all NaN. */
+
+/** cdist_torus_torus() with the gradient. */
+CDIST_API cdist_status cdist_torus_torus_grad(cdist_query *q, const cdist_torus *a, const cdist_torus *b, cdist_contact *c, cdist_grad *g);
+/** cdist_torus_capsule() with the gradient. */
+CDIST_API cdist_status cdist_torus_capsule_grad(cdist_query *q, const cdist_torus *a, const cdist_capsule *b, cdist_contact *c, cdist_grad *g);
+/** cdist_torus_sphere() with the gradient. */
+CDIST_API cdist_status cdist_torus_sphere_grad(cdist_query *q, const cdist_torus *a, const cdist_sphere *b, cdist_contact *c, cdist_grad *g);
+/** cdist_torus_rounded_disk() with the gradient. */
+CDIST_API cdist_status cdist_torus_rounded_disk_grad(cdist_query *q, const cdist_torus *a, const cdist_rounded_disk *b, cdist_contact *c, cdist_grad *g);
+/** cdist_capsule_capsule() with the gradient. */
+CDIST_API cdist_status cdist_capsule_capsule_grad(cdist_query *q, const cdist_capsule *a, const cdist_capsule *b, cdist_contact *c, cdist_grad *g);
+/** cdist_capsule_sphere() with the gradient. */
+CDIST_API cdist_status cdist_capsule_sphere_grad(cdist_query *q, const cdist_capsule *a, const cdist_sphere *b, cdist_contact *c, cdist_grad *g);
+/** cdist_capsule_rounded_disk() with the gradient. */
+CDIST_API cdist_status cdist_capsule_rounded_disk_grad(cdist_query *q, const cdist_capsule *a, const cdist_rounded_disk *b, cdist_contact *c, cdist_grad *g);
+/** cdist_sphere_sphere() with the gradient. */
+CDIST_API cdist_status cdist_sphere_sphere_grad(cdist_query *q, const cdist_sphere *a, const cdist_sphere *b, cdist_contact *c, cdist_grad *g);
+/** cdist_sphere_rounded_disk() with the gradient. */
+CDIST_API cdist_status cdist_sphere_rounded_disk_grad(cdist_query *q, const cdist_sphere *a, const cdist_rounded_disk *b, cdist_contact *c, cdist_grad *g);
+/** cdist_rounded_disk_rounded_disk() with the gradient. */
+CDIST_API cdist_status cdist_rounded_disk_rounded_disk_grad(cdist_query *q, const cdist_rounded_disk *a, const cdist_rounded_disk *b, cdist_contact *c, cdist_grad *g);
+/** cdist_torus_line() with the gradient. */
+CDIST_API cdist_status cdist_torus_line_grad(cdist_query *q, const cdist_torus *a, const cdist_line *b, cdist_contact *c, cdist_grad *g);
+/** cdist_torus_ray() with the gradient. */
+CDIST_API cdist_status cdist_torus_ray_grad(cdist_query *q, const cdist_torus *a, const cdist_ray *b, cdist_contact *c, cdist_grad *g);
+/** cdist_torus_segment() with the gradient. */
+CDIST_API cdist_status cdist_torus_segment_grad(cdist_query *q, const cdist_torus *a, const cdist_segment *b, cdist_contact *c, cdist_grad *g);
+/** cdist_capsule_circle() with the gradient. */
+CDIST_API cdist_status cdist_capsule_circle_grad(cdist_query *q, const cdist_capsule *a, const cdist_circle *b, cdist_contact *c, cdist_grad *g);
+/** cdist_capsule_disk() with the gradient. */
+CDIST_API cdist_status cdist_capsule_disk_grad(cdist_query *q, const cdist_capsule *a, const cdist_circle *b, cdist_contact *c, cdist_grad *g);
+/** cdist_sphere_circle() with the gradient. */
+CDIST_API cdist_status cdist_sphere_circle_grad(cdist_query *q, const cdist_sphere *a, const cdist_circle *b, cdist_contact *c, cdist_grad *g);
+/** cdist_sphere_disk() with the gradient. */
+CDIST_API cdist_status cdist_sphere_disk_grad(cdist_query *q, const cdist_sphere *a, const cdist_circle *b, cdist_contact *c, cdist_grad *g);
+
 #ifdef __cplusplus
 }
 #endif

@@ -306,15 +306,14 @@ static void batch_buf_free(batch_buf *bb)
 static void answer(item *items, size_t n, cdist_result *res, cdist_status *st, cdist_query *q, int jobs,
                    batch_buf *bb)
 {
-    if (jobs <= 1) {
-        for (size_t i = 0; i < n; i++) {
-            if (items[i].bad) continue;
-            st[i] = cdq_run(q, &items[i].ql, &res[i]);
-            if (st[i] != CDIST_OK) failure_reason(q, st[i], items[i].err, sizeof items[i].err);
-        }
-        return;
+    for (size_t i = 0; i < n; i++) { /* kinds without a batch kind (swept): single queries */
+        if (items[i].bad || (jobs > 1 && items[i].ql.kind->objects)) continue;
+        st[i] = cdq_run(q, &items[i].ql, &res[i]);
+        if (st[i] != CDIST_OK) failure_reason(q, st[i], items[i].err, sizeof items[i].err);
     }
+    if (jobs <= 1) return;
     for (const cdq_kind *k = cdq_kinds; k->name; k++) {
+        if (!k->objects) continue;
         cdist_kind kind = (cdist_kind)k->batch_kind;
         size_t sa = cdist_kind_size_a(kind), sb = cdist_kind_size_b(kind), m = 0;
         for (size_t i = 0; i < n; i++) {

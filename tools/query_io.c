@@ -10,6 +10,11 @@
 
 #define ARC_COLS "Cx Cy Cz Nx Ny Nz r Ux Uy Uz start end"
 #define CIRC_COLS "Cx Cy Cz Nx Ny Nz r"
+/* swept kinds (src/swept) */
+#define TORUS_COLS "Cx Cy Cz Nx Ny Nz R rt"
+#define CAPS_COLS "P0x P0y P0z P1x P1y P1z rk"
+#define SPH_COLS "Px Py Pz rs"
+#define RDISK_COLS "Cx Cy Cz Nx Ny Nz R rr"
 
 static cdist_vec3 vec_at(const double *v) { cdist_vec3 r = {v[0], v[1], v[2]}; return r; }
 
@@ -78,6 +83,59 @@ KIND(bc, cdist_bezier3, bezier_at(v), cdist_circle, circle_at(v + 12), cdist_bez
 KIND(bd, cdist_bezier3, bezier_at(v), cdist_circle, circle_at(v + 12), cdist_bezier3_disk)
 #undef KIND
 
+/* ---- swept kinds (src/swept) ----
+ * A contact is written into the cdist_result the tool prints: distance = the signed distance,
+ * sqr_distance = NaN (meaningless when negative), the points = the witness points on the
+ * surfaces, params = the core parameters. They have no batch kind (objects NULL). */
+static cdist_torus torus_at(const double *v) { cdist_torus t = {circle_at(v), v[7]}; return t; }
+static cdist_capsule capsule_at(const double *v) { cdist_capsule c = {{vec_at(v), vec_at(v + 3)}, v[6]}; return c; }
+static cdist_sphere sphere_at(const double *v) { cdist_sphere s = {vec_at(v), v[3]}; return s; }
+static cdist_rounded_disk rdisk_at(const double *v) { cdist_rounded_disk d = {circle_at(v), v[7]}; return d; }
+
+static cdist_status contact_to_result(cdist_status st, const cdist_contact *c, cdist_result *r)
+{
+    memset(r, 0, sizeof *r);
+    r->distance = c->distance;
+    r->sqr_distance = NAN;
+    r->num_pairs = c->num_pairs;
+    r->equidistant = c->equidistant;
+    r->method = c->method;
+    for (int i = 0; i < 2; i++)
+        for (int j = 0; j < 2; j++) {
+            r->pairs[i].point[j] = c->pairs[i].point[j];
+            r->pairs[i].param[j] = c->pairs[i].param[j];
+        }
+    return st;
+}
+
+#define SWEPT(kk, TA, A_AT, TB, B_AT, CALL)                                                        \
+    static cdist_status run_##kk(cdist_query *q, const double *v, cdist_result *r)                 \
+    {                                                                                              \
+        TA a = A_AT;                                                                               \
+        TB b = B_AT;                                                                               \
+        cdist_contact c;                                                                           \
+        return contact_to_result(CALL(q, &a, &b, &c), &c, r);                                      \
+    }
+SWEPT(TT, cdist_torus, torus_at(v), cdist_torus, torus_at(v + 8), cdist_torus_torus)
+SWEPT(TK, cdist_torus, torus_at(v), cdist_capsule, capsule_at(v + 8), cdist_torus_capsule)
+SWEPT(TS, cdist_torus, torus_at(v), cdist_sphere, sphere_at(v + 8), cdist_torus_sphere)
+SWEPT(TR, cdist_torus, torus_at(v), cdist_rounded_disk, rdisk_at(v + 8), cdist_torus_rounded_disk)
+SWEPT(KK, cdist_capsule, capsule_at(v), cdist_capsule, capsule_at(v + 7), cdist_capsule_capsule)
+SWEPT(KS, cdist_capsule, capsule_at(v), cdist_sphere, sphere_at(v + 7), cdist_capsule_sphere)
+SWEPT(KR, cdist_capsule, capsule_at(v), cdist_rounded_disk, rdisk_at(v + 7), cdist_capsule_rounded_disk)
+SWEPT(SS, cdist_sphere, sphere_at(v), cdist_sphere, sphere_at(v + 4), cdist_sphere_sphere)
+SWEPT(SR, cdist_sphere, sphere_at(v), cdist_rounded_disk, rdisk_at(v + 4), cdist_sphere_rounded_disk)
+SWEPT(RR, cdist_rounded_disk, rdisk_at(v), cdist_rounded_disk, rdisk_at(v + 8), cdist_rounded_disk_rounded_disk)
+SWEPT(Tl, cdist_torus, torus_at(v), cdist_line, line_at(v + 8), cdist_torus_line)
+SWEPT(Tr, cdist_torus, torus_at(v), cdist_ray, ray_at(v + 8), cdist_torus_ray)
+SWEPT(Ts, cdist_torus, torus_at(v), cdist_segment, segment_at(v + 8), cdist_torus_segment)
+SWEPT(Kc, cdist_capsule, capsule_at(v), cdist_circle, circle_at(v + 7), cdist_capsule_circle)
+SWEPT(Kd, cdist_capsule, capsule_at(v), cdist_circle, circle_at(v + 7), cdist_capsule_disk)
+SWEPT(Sc, cdist_sphere, sphere_at(v), cdist_circle, circle_at(v + 4), cdist_sphere_circle)
+SWEPT(Sd, cdist_sphere, sphere_at(v), cdist_circle, circle_at(v + 4), cdist_sphere_disk)
+#undef SWEPT
+/* ---- end of swept kinds ---- */
+
 const cdq_kind cdq_kinds[] = {
     {"pc", 10, run_pc, objects_pc, 0, {6, 0}, "Px Py Pz  " CIRC_COLS, "point to circle"},
     {"pd", 10, run_pd, objects_pd, 1, {6, 0}, "Px Py Pz  " CIRC_COLS, "point to disk"},
@@ -98,6 +156,27 @@ const cdq_kind cdq_kinds[] = {
     {"hd", 20, run_hd, objects_hd, 18, {3, 16}, "Cx Cy Cz Ax Ay Az Ux Uy Uz r pitch t0 t1  " CIRC_COLS, "helix to disk"},
     {"bc", 19, run_bc, objects_bc, 19, {15, 0}, "P0x P0y P0z P1x P1y P1z P2x P2y P2z P3x P3y P3z  " CIRC_COLS, "cubic Bezier to circle"},
     {"bd", 19, run_bd, objects_bd, 20, {15, 0}, "P0x P0y P0z P1x P1y P1z P2x P2y P2z P3x P3y P3z  " CIRC_COLS, "cubic Bezier to disk"},
+    /* ---- swept kinds (src/swept): upper case T torus, K capsule, S sphere, R rounded disk,
+     * lower case the plain object. distance is signed (negative: penetration depth), the
+     * points are the witness points on the surfaces (cdist_contact). ---- */
+    {"TT", 16, run_TT, NULL, -1, {3, 11}, TORUS_COLS "  " TORUS_COLS, "torus to torus (signed)"},
+    {"TK", 15, run_TK, NULL, -1, {3, 0}, TORUS_COLS "  " CAPS_COLS, "torus to capsule (signed)"},
+    {"TS", 12, run_TS, NULL, -1, {3, 0}, TORUS_COLS "  " SPH_COLS, "torus to sphere (signed)"},
+    {"TR", 16, run_TR, NULL, -1, {3, 11}, TORUS_COLS "  " RDISK_COLS, "torus to rounded disk (signed)"},
+    {"KK", 14, run_KK, NULL, -1, {0, 0}, CAPS_COLS "  " CAPS_COLS, "capsule to capsule (signed)"},
+    {"KS", 11, run_KS, NULL, -1, {0, 0}, CAPS_COLS "  " SPH_COLS, "capsule to sphere (signed)"},
+    {"KR", 15, run_KR, NULL, -1, {10, 0}, CAPS_COLS "  " RDISK_COLS, "capsule to rounded disk (signed)"},
+    {"SS", 8, run_SS, NULL, -1, {0, 0}, SPH_COLS "  " SPH_COLS, "sphere to sphere (signed)"},
+    {"SR", 12, run_SR, NULL, -1, {7, 0}, SPH_COLS "  " RDISK_COLS, "sphere to rounded disk (signed)"},
+    {"RR", 16, run_RR, NULL, -1, {3, 11}, RDISK_COLS "  " RDISK_COLS, "rounded disk to rounded disk (signed)"},
+    {"Tl", 14, run_Tl, NULL, -1, {3, 11}, TORUS_COLS "  Bx By Bz  Mx My Mz", "torus to line (signed)"},
+    {"Tr", 14, run_Tr, NULL, -1, {3, 11}, TORUS_COLS "  Bx By Bz  Mx My Mz", "torus to ray (signed)"},
+    {"Ts", 14, run_Ts, NULL, -1, {3, 0}, TORUS_COLS "  P0x P0y P0z  P1x P1y P1z", "torus to segment (signed)"},
+    {"Kc", 14, run_Kc, NULL, -1, {10, 0}, CAPS_COLS "  " CIRC_COLS, "capsule to circle (signed)"},
+    {"Kd", 14, run_Kd, NULL, -1, {10, 0}, CAPS_COLS "  " CIRC_COLS, "capsule to disk (signed)"},
+    {"Sc", 11, run_Sc, NULL, -1, {7, 0}, SPH_COLS "  " CIRC_COLS, "sphere to circle (signed)"},
+    {"Sd", 11, run_Sd, NULL, -1, {7, 0}, SPH_COLS "  " CIRC_COLS, "sphere to disk (signed)"},
+    /* ---- end of swept kinds ---- */
     {NULL, 0, NULL, NULL, -1, {0, 0}, NULL, NULL},
 };
 
@@ -230,6 +309,10 @@ double cdq_scale(const cdq_line *ql, double expected)
     const double *v = ql->v;
     const char *k = ql->kind->name;
     double L = fabs(expected);
+    if (ql->kind->batch_kind < 0) { /* swept kinds: every radius and coordinate */
+        for (int i = 0; i < ql->nvalues; i++) L = fmax(L, fabs(v[i]));
+        return L;
+    }
     if (k[0] == 'p') {
         L = fmax(L, fmax(v[9], dist3(v, v + 3)));
     } else if (!strcmp(k, "lc") || !strcmp(k, "rc") || !strcmp(k, "ld") || !strcmp(k, "rd")) {

@@ -1,0 +1,301 @@
+/* Gradients of the distance with respect to the objects' parameters, from the closest pair
+ * (envelope theorem; the rules are documented in circledist.h). */
+#include <math.h>
+#include <string.h>
+
+#include "swept-priv.h"
+
+static vec3 unit(vec3 v)
+{
+    double m = v_maxabs(v);
+    if (m == 0.0) return v3(0, 0, 0);
+    v = v_scale(1.0 / m, v);
+    return v_scale(1.0 / v_norm(v), v);
+}
+
+/* Component of g orthogonal to the unit vector n. */
+static vec3 perp(vec3 g, vec3 n) { return v_axpy(g, -v_dot(g, n), n); }
+
+void cd_grad_set_error(cdist_grad *g)
+{
+    if (!g) return;
+    memset(g, 0, sizeof *g);
+    for (int k = 0; k < 2; k++) {
+        cdist_grad_object *o = &g->obj[k];
+        vec3 nanv = v3(NAN, NAN, NAN);
+        o->d_center = o->d_normal = o->d_origin = o->d_direction = o->d_p0 = o->d_p1 = o->d_zero_direction = nanv;
+        o->d_radius = o->d_radius_swept = o->d_start = o->d_end = NAN;
+    }
+}
+
+/* X (on disk c, unit normal N) is clearly inside the rim: further in than the rounding of
+ * the coordinates and 1e-9 of the radius. */
+static int disk_interior(const cdist_circle *c, vec3 N, vec3 X)
+{
+    double rho = v_norm(perp(v_sub(X, c->center), N));
+    double slack = 1e-9 * c->radius + 64.0 * DBL_EPSILON * (v_maxabs(X) + v_maxabs(c->center));
+    return c->radius - rho > slack;
+}
+
+/* Circle or disk at point X (on it) with outward gradient vector w (dD = w . dX). */
+static void circle_like(const cdist_circle *c, vec3 X, vec3 w, int disk, cdist_grad_object *o)
+{
+    vec3 N = unit(c->normal);
+    vec3 rel = v_sub(X, c->center);
+    o->d_center = w;
+    if (c->radius == 0.0) {
+        /* From the right: the circle grows towards -w's in-plane part. */
+        o->d_radius = -v_norm(perp(w, N));
+        return;
+    }
+    vec3 relp = perp(rel, N);
+    double rho = v_norm(relp);
+    double s = disk ? fmin(rho / c->radius, 1.0) : 1.0;
+    if (disk && disk_interior(c, N, X)) {
+        /* interior point: w is along N, the radius does not move the point's neighbourhood */
+        o->d_radius = 0.0;
+        o->d_normal = v_scale(-v_dot(w, N), rel);
+        o->d_normal = perp(o->d_normal, N);
+        return;
+    }
+    vec3 e = rho > 0.0 ? v_scale(1.0 / rho, relp) : v3(0, 0, 0);
+    o->d_radius = s * v_dot(w, e);
+    /* dX = -r s (e . dN) N  =>  d_normal = -r s (w . N) e (orthogonal to N). */
+    o->d_normal = v_scale(-c->radius * s * v_dot(w, N), e);
+}
+
+/* Arc: X = C + r (cos a U + sin a V), U = unit(z - (z.N)N), V = N x U; a held fixed. */
+static void arc_grad(const cdist_arc *arc, vec3 X, double a, vec3 w, cdist_grad_object *o)
+{
+    const cdist_circle *c = &arc->circle;
+    vec3 N = unit(c->normal);
+    vec3 z = arc->zero_direction;
+    vec3 Pz = perp(z, N);
+    double pz = v_norm(Pz);
+    vec3 U = v_scale(1.0 / pz, Pz), V = v_cross(N, U);
+    double r = c->radius, ca = cos(a), sa = sin(a);
+    o->d_center = w;
+    o->d_radius = v_dot(w, v_add(v_scale(ca, U), v_scale(sa, V)));
+    (void)X;
+    /* dX = r (ca dU + sa dV), dV = dN x U + N x dU.
+     * w . dX = r ca w.dU + r sa (w . (dN x U) + w . (N x dU))
+     *        = r ca w.dU + r sa ((U x w) . dN + (w x N) . dU)
+     * so with h = r (ca w + sa (w x N)):  w . dX = h . dU + r sa (U x w) . dN.
+     * dU = (I - U U^T) dPz / pz, dPz = dz - (dz.N) N - (z.N) dN - (z.dN) N:
+     * h . dU = k . dPz with k = (h - (h.U) U) / pz,
+     * k . dPz = (k - (k.N) N) . dz - (z.N) k . dN - (k.N) z . dN. */
+    vec3 h = v_scale(r, v_add(v_scale(ca, w), v_scale(sa, v_cross(w, N))));
+    vec3 k = v_scale(1.0 / pz, perp(h, U));
+    double kN = v_dot(k, N), zN = v_dot(z, N);
+    o->d_zero_direction = perp(k, N);
+    vec3 gN = v_add(v_scale(r * sa, v_cross(U, w)), v_add(v_scale(-zN, k), v_scale(-kN, z)));
+    o->d_normal = perp(gN, N);
+    /* End angles: active only when the closest point is that end. */
+    double dA = r * (v_dot(w, v_sub(v_scale(ca, V), v_scale(sa, U))));
+    o->d_start = a == arc->start ? dA : 0.0;
+    o->d_end = a == arc->end && a != arc->start ? dA : 0.0;
+}
+
+/* Gradient of one object whose closest point is X with parameter t, dD = w . dX. */
+static void object_grad(const cd_core_obj *ob, vec3 X, double t, vec3 w, cdist_grad_object *o)
+{
+    switch (ob->type) {
+    case CD_CORE_POINT: o->d_center = w; break;
+    case CD_CORE_LINE:
+    case CD_CORE_RAY: {
+        const cdist_line *l = ob->obj; /* cdist_ray has the same layout */
+        vec3 d = unit(l->direction);
+        o->d_origin = w;
+        o->d_direction = v_scale(t, perp(w, d));
+        break;
+    }
+    case CD_CORE_SEGMENT: {
+        o->d_p0 = v_scale(1.0 - t, w);
+        o->d_p1 = v_scale(t, w);
+        break;
+    }
+    case CD_CORE_CIRCLE: circle_like(ob->obj, X, w, 0, o); break;
+    case CD_CORE_DISK: circle_like(ob->obj, X, w, 1, o); break;
+    case CD_CORE_ARC: arc_grad(ob->obj, X, t, w, o); break;
+    }
+    if (ob->swept) o->d_radius_swept = -1.0;
+}
+
+/* Unit tangent of a curve object at its closest point (0 for points and disks). 'interior'
+ * says the point is not an end of a segment/ray/arc. */
+static vec3 curve_tangent(const cd_core_obj *o, vec3 X, double t, int *interior)
+{
+    *interior = 1;
+    switch (o->type) {
+    case CD_CORE_LINE: return unit(((const cdist_line *)o->obj)->direction);
+    case CD_CORE_RAY:
+        *interior = t > 0.0;
+        return unit(((const cdist_ray *)o->obj)->direction);
+    case CD_CORE_SEGMENT: {
+        const cdist_segment *sg = o->obj;
+        *interior = t > 0.0 && t < 1.0;
+        return unit(v_sub(sg->p1, sg->p0));
+    }
+    case CD_CORE_CIRCLE: {
+        const cdist_circle *c = o->obj;
+        return unit(v_cross(unit(c->normal), v_sub(X, c->center)));
+    }
+    case CD_CORE_ARC: {
+        const cdist_arc *a = o->obj;
+        *interior = t > a->start && t < a->end;
+        return unit(v_cross(unit(a->circle.normal), v_sub(X, a->circle.center)));
+    }
+    default: *interior = 0; return v3(0, 0, 0);
+    }
+}
+
+/* At zero distance: is the distance 0 on a whole neighbourhood of the inputs? Yes when one
+ * object is a disk met at a point clearly inside its rim, and the other is a curve crossing
+ * the disk's plane transversally away from its ends, or a second disk (also met inside its
+ * rim) in a transversal plane. */
+static int zero_on_neighbourhood(const cd_core_obj *a, const cd_core_obj *b, const cdist_result *r)
+{
+    const double transversal = 1e-6; /* sine of the smallest crossing angle treated as stable */
+    const cd_core_obj *ob[2] = {a, b};
+    for (int k = 0; k < 2; k++) {
+        if (ob[k]->type != CD_CORE_DISK) continue;
+        const cdist_circle *dk = ob[k]->obj;
+        vec3 N = unit(dk->normal);
+        if (!disk_interior(dk, N, r->pairs[0].point[k])) continue;
+        const cd_core_obj *o = ob[1 - k];
+        vec3 X = r->pairs[0].point[1 - k];
+        if (o->type == CD_CORE_DISK) {
+            const cdist_circle *d2 = o->obj;
+            vec3 N2 = unit(d2->normal);
+            if (disk_interior(d2, N2, X) && v_norm(v_cross(N, N2)) > transversal) return 1;
+            continue;
+        }
+        int interior;
+        vec3 t = curve_tangent(o, X, r->pairs[0].param[1 - k], &interior);
+        if (interior && fabs(v_dot(t, N)) > transversal) return 1;
+    }
+    return 0;
+}
+
+void cd_grad_fill(const cd_core_obj *a, const cd_core_obj *b, const cdist_result *r, cdist_grad *g)
+{
+    memset(g, 0, sizeof *g);
+    if (a->swept) g->obj[0].d_radius_swept = -1.0;
+    if (b->swept) g->obj[1].d_radius_swept = -1.0;
+    if (r->num_pairs == 2 || r->equidistant) g->flags |= CDIST_GRAD_NOT_DIFFERENTIABLE;
+    vec3 P = r->pairs[0].point[0], Q = r->pairs[0].point[1];
+    vec3 d = v_sub(P, Q);
+    /* Zero distance, or within rounding of zero (the points' coordinates' last bits): the
+     * gradient is 0 (in the Clarke subdifferential). It is the true, two-sided derivative where
+     * the distance stays 0 nearby (a transversal crossing of a disk's interior). */
+    if (!(r->distance > 16.0 * DBL_EPSILON * fmax(v_maxabs(P), v_maxabs(Q))) || v_maxabs(d) == 0.0) {
+        if (!zero_on_neighbourhood(a, b, r)) g->flags |= CDIST_GRAD_NOT_DIFFERENTIABLE;
+        return;
+    }
+    vec3 w = unit(d);
+    /* At a disk's interior point w is exactly along the disk's normal (first-order optimality);
+     * P - Q loses the direction's accuracy when the distance is tiny against the coordinates,
+     * so take it from the structure. */
+    const cd_core_obj *ob[2] = {a, b};
+    vec3 X[2] = {P, Q};
+    for (int k = 0; k < 2; k++) {
+        if (ob[k]->type != CD_CORE_DISK) continue;
+        const cdist_circle *c = ob[k]->obj;
+        vec3 N = unit(c->normal);
+        if (disk_interior(c, N, X[k])) w = v_dot(w, N) >= 0.0 ? N : v_neg(N);
+    }
+    object_grad(a, P, r->pairs[0].param[0], w, &g->obj[0]);
+    object_grad(b, Q, r->pairs[0].param[1], v_neg(w), &g->obj[1]);
+}
+
+size_t cdist_grad_size(void) { return sizeof(cdist_grad); }
+int cdist_grad_flag_not_differentiable(void) { return CDIST_GRAD_NOT_DIFFERENTIABLE; }
+
+static cdist_status grad_query(cdist_query *q, cd_core_obj a, cd_core_obj b, cdist_result *r, cdist_grad *g)
+{
+    cd_grad_set_error(g);
+    if (!r) {
+        cd_begin(q, NULL);
+        return q ? cd_fail(q, CDIST_ERR_NULL_ARGUMENT, "result pointer is NULL") : CDIST_ERR_NULL_ARGUMENT;
+    }
+    cdist_status st = cd_core_query(q, &a, &b, r);
+    if (st) return st;
+    if (!g) return cd_fail(q, CDIST_ERR_NULL_ARGUMENT, "gradient pointer is NULL");
+    cd_grad_fill(&a, &b, r, g);
+    return CDIST_OK;
+}
+
+#define GRAD_QUERY(name, TA, TB, ka, kb)                                                                           \
+    cdist_status name(cdist_query *q, const TA *a, const TB *b, cdist_result *r, cdist_grad *g)                    \
+    {                                                                                                              \
+        cd_core_obj oa = {ka, a, 0.0, 0}, ob = {kb, b, 0.0, 0};                                                    \
+        return grad_query(q, oa, ob, r, g);                                                                        \
+    }
+
+GRAD_QUERY(cdist_point_circle_grad, cdist_vec3, cdist_circle, CD_CORE_POINT, CD_CORE_CIRCLE)
+GRAD_QUERY(cdist_point_disk_grad, cdist_vec3, cdist_circle, CD_CORE_POINT, CD_CORE_DISK)
+GRAD_QUERY(cdist_line_circle_grad, cdist_line, cdist_circle, CD_CORE_LINE, CD_CORE_CIRCLE)
+GRAD_QUERY(cdist_ray_circle_grad, cdist_ray, cdist_circle, CD_CORE_RAY, CD_CORE_CIRCLE)
+GRAD_QUERY(cdist_segment_circle_grad, cdist_segment, cdist_circle, CD_CORE_SEGMENT, CD_CORE_CIRCLE)
+GRAD_QUERY(cdist_circle_circle_grad, cdist_circle, cdist_circle, CD_CORE_CIRCLE, CD_CORE_CIRCLE)
+GRAD_QUERY(cdist_line_disk_grad, cdist_line, cdist_circle, CD_CORE_LINE, CD_CORE_DISK)
+GRAD_QUERY(cdist_ray_disk_grad, cdist_ray, cdist_circle, CD_CORE_RAY, CD_CORE_DISK)
+GRAD_QUERY(cdist_segment_disk_grad, cdist_segment, cdist_circle, CD_CORE_SEGMENT, CD_CORE_DISK)
+GRAD_QUERY(cdist_circle_disk_grad, cdist_circle, cdist_circle, CD_CORE_CIRCLE, CD_CORE_DISK)
+GRAD_QUERY(cdist_disk_disk_grad, cdist_circle, cdist_circle, CD_CORE_DISK, CD_CORE_DISK)
+GRAD_QUERY(cdist_arc_circle_grad, cdist_arc, cdist_circle, CD_CORE_ARC, CD_CORE_CIRCLE)
+GRAD_QUERY(cdist_arc_arc_grad, cdist_arc, cdist_arc, CD_CORE_ARC, CD_CORE_ARC)
+GRAD_QUERY(cdist_segment_arc_grad, cdist_segment, cdist_arc, CD_CORE_SEGMENT, CD_CORE_ARC)
+GRAD_QUERY(cdist_arc_disk_grad, cdist_arc, cdist_circle, CD_CORE_ARC, CD_CORE_DISK)
+
+/* ---- swept objects ---- */
+
+static cdist_status swept_grad_query(cdist_query *q, cd_core_obj a, cd_core_obj b, cdist_contact *c, cdist_grad *g)
+{
+    cd_grad_set_error(g);
+    cdist_result core;
+    cdist_status st = cd_swept_query(q, &a, &b, c, &core);
+    if (st) return st;
+    if (!g) return cd_fail(q, CDIST_ERR_NULL_ARGUMENT, "gradient pointer is NULL");
+    cd_grad_fill(&a, &b, &core, g);
+    return CDIST_OK;
+}
+
+static cd_core_obj sw(cd_core_type t, const void *obj, const double *radius)
+{
+    cd_core_obj o = {t, obj, obj ? *radius : 0.0, 1};
+    return o;
+}
+static cd_core_obj plain(cd_core_type t, const void *obj)
+{
+    cd_core_obj o = {t, obj, 0.0, 0};
+    return o;
+}
+#define TORUS(x) sw(CD_CORE_CIRCLE, (x) ? &(x)->circle : NULL, (x) ? &(x)->tube_radius : NULL)
+#define CAPSULE(x) sw(CD_CORE_SEGMENT, (x) ? &(x)->segment : NULL, (x) ? &(x)->radius : NULL)
+#define SPHERE(x) sw(CD_CORE_POINT, (x) ? &(x)->center : NULL, (x) ? &(x)->radius : NULL)
+#define RDISK(x) sw(CD_CORE_DISK, (x) ? &(x)->disk : NULL, (x) ? &(x)->radius : NULL)
+
+#define SWEPT_GRAD(name, TA, TB, mka, mkb)                                                                         \
+    cdist_status name(cdist_query *q, const TA *a, const TB *b, cdist_contact *c, cdist_grad *g)                   \
+    {                                                                                                              \
+        return swept_grad_query(q, mka, mkb, c, g);                                                                \
+    }
+
+SWEPT_GRAD(cdist_torus_torus_grad, cdist_torus, cdist_torus, TORUS(a), TORUS(b))
+SWEPT_GRAD(cdist_torus_capsule_grad, cdist_torus, cdist_capsule, TORUS(a), CAPSULE(b))
+SWEPT_GRAD(cdist_torus_sphere_grad, cdist_torus, cdist_sphere, TORUS(a), SPHERE(b))
+SWEPT_GRAD(cdist_torus_rounded_disk_grad, cdist_torus, cdist_rounded_disk, TORUS(a), RDISK(b))
+SWEPT_GRAD(cdist_capsule_capsule_grad, cdist_capsule, cdist_capsule, CAPSULE(a), CAPSULE(b))
+SWEPT_GRAD(cdist_capsule_sphere_grad, cdist_capsule, cdist_sphere, CAPSULE(a), SPHERE(b))
+SWEPT_GRAD(cdist_capsule_rounded_disk_grad, cdist_capsule, cdist_rounded_disk, CAPSULE(a), RDISK(b))
+SWEPT_GRAD(cdist_sphere_sphere_grad, cdist_sphere, cdist_sphere, SPHERE(a), SPHERE(b))
+SWEPT_GRAD(cdist_sphere_rounded_disk_grad, cdist_sphere, cdist_rounded_disk, SPHERE(a), RDISK(b))
+SWEPT_GRAD(cdist_rounded_disk_rounded_disk_grad, cdist_rounded_disk, cdist_rounded_disk, RDISK(a), RDISK(b))
+SWEPT_GRAD(cdist_torus_line_grad, cdist_torus, cdist_line, TORUS(a), plain(CD_CORE_LINE, b))
+SWEPT_GRAD(cdist_torus_ray_grad, cdist_torus, cdist_ray, TORUS(a), plain(CD_CORE_RAY, b))
+SWEPT_GRAD(cdist_torus_segment_grad, cdist_torus, cdist_segment, TORUS(a), plain(CD_CORE_SEGMENT, b))
+SWEPT_GRAD(cdist_capsule_circle_grad, cdist_capsule, cdist_circle, CAPSULE(a), plain(CD_CORE_CIRCLE, b))
+SWEPT_GRAD(cdist_capsule_disk_grad, cdist_capsule, cdist_circle, CAPSULE(a), plain(CD_CORE_DISK, b))
+SWEPT_GRAD(cdist_sphere_circle_grad, cdist_sphere, cdist_circle, SPHERE(a), plain(CD_CORE_CIRCLE, b))
+SWEPT_GRAD(cdist_sphere_disk_grad, cdist_sphere, cdist_circle, SPHERE(a), plain(CD_CORE_DISK, b))

@@ -1,0 +1,382 @@
+/* Swept objects (torus, capsule, sphere, rounded disk): the signed distance is the core
+ * distance minus the radii; every closest pair, the equidistant flag and the method come from
+ * the core query. Point-point, point-segment and segment-segment have no public core query and
+ * are answered here in closed form. */
+#include <math.h>
+#include <string.h>
+
+#include "swept-priv.h"
+
+/* ---- closed-form cores ---- */
+
+static void result_fill(cdist_result *r, double d, int equidistant, vec3 p0, vec3 p1, double a0, double a1)
+{
+    r->distance = d;
+    r->sqr_distance = d * d;
+    r->num_pairs = 1;
+    r->equidistant = equidistant;
+    r->pairs[0].point[0] = p0;
+    r->pairs[0].point[1] = p1;
+    r->pairs[0].param[0] = a0;
+    r->pairs[0].param[1] = a1;
+}
+
+/* Parameter in [0, 1] of the point of segment p0 + s d closest to p. */
+static double segment_clamp(vec3 p0, vec3 d, vec3 p)
+{
+    double dd = v_sqr(d);
+    if (dd == 0.0) return 0.0;
+    double s = v_dot(v_sub(p, p0), d) / dd;
+    return s < 0.0 ? 0.0 : (s > 1.0 ? 1.0 : s);
+}
+
+static vec3 segment_at(vec3 p0, vec3 d, double s) { return v_axpy(p0, s, d); }
+
+static cdist_status point_point(cdist_query *q, const cdist_vec3 *a, const cdist_vec3 *b, cdist_result *r)
+{
+    cdist_status st = cd_check_handle(q, r);
+    if (st || (st = cd_check_point(q, a, "point")) || (st = cd_check_point(q, b, "point"))) return st;
+    result_fill(r, v_dist(*a, *b), 0, *a, *b, NAN, NAN);
+    return cd_ok(q, r, CDIST_METHOD_AUTO);
+}
+
+static cdist_status check_segment(cdist_query *q, const cdist_segment *s)
+{
+    cdist_status st = cd_check_ptr(q, s, "segment");
+    if (st || (st = cd_check_point(q, &s->p0, "segment p0")) || (st = cd_check_point(q, &s->p1, "segment p1")))
+        return st;
+    return CDIST_OK;
+}
+
+static cdist_status point_segment(cdist_query *q, const cdist_vec3 *p, const cdist_segment *s, cdist_result *r)
+{
+    cdist_status st = cd_check_handle(q, r);
+    if (st || (st = cd_check_point(q, p, "point")) || (st = check_segment(q, s))) return st;
+    vec3 d = v_sub(s->p1, s->p0);
+    double t = segment_clamp(s->p0, d, *p);
+    vec3 x = t == 1.0 ? s->p1 : segment_at(s->p0, d, t);
+    result_fill(r, v_dist(*p, x), 0, *p, x, NAN, t);
+    return cd_ok(q, r, CDIST_METHOD_AUTO);
+}
+
+/* Segment-segment: the interior critical point (when both parameters are inside [0, 1]) and
+ * the four end-point-to-segment candidates, each measured on the true distance. The squared
+ * distance is convex in (s, t), so the smallest candidate is the minimum; two distinct minima
+ * only exist along a flat valley (parallel segments), which is flagged equidistant. */
+static cdist_status segment_segment(cdist_query *q, const cdist_segment *a, const cdist_segment *b, cdist_result *r)
+{
+    cdist_status st = cd_check_handle(q, r);
+    if (st || (st = check_segment(q, a)) || (st = check_segment(q, b))) return st;
+    vec3 da = v_sub(a->p1, a->p0), db = v_sub(b->p1, b->p0);
+    double best = INFINITY, bs = 0, bt = 0;
+    vec3 bp = a->p0, bq = b->p0;
+#define CAND(s_, t_)                                                                                                \
+    do {                                                                                                           \
+        double s__ = (s_), t__ = (t_);                                                                             \
+        vec3 P = s__ == 1.0 ? a->p1 : segment_at(a->p0, da, s__);                                                  \
+        vec3 Q = t__ == 1.0 ? b->p1 : segment_at(b->p0, db, t__);                                                  \
+        double dd = v_dist(P, Q);                                                                                  \
+        if (dd < best) { best = dd; bs = s__; bt = t__; bp = P; bq = Q; }                                          \
+    } while (0)
+    double A = v_sqr(da), E = v_sqr(db), B = v_dot(da, db);
+    vec3 w = v_sub(a->p0, b->p0);
+    double C = v_dot(da, w), F = v_dot(db, w);
+    double den = A * E - B * B;
+    vec3 cr = v_cross(da, db);
+    int parallel = !(v_sqr(cr) > 1e-24 * A * E);
+    if (!parallel && den > 0.0) {
+        double s = (B * F - C * E) / den, t = (A * F - B * C) / den;
+        if (s >= 0.0 && s <= 1.0 && t >= 0.0 && t <= 1.0) CAND(s, t);
+    }
+    CAND(0.0, segment_clamp(b->p0, db, a->p0));
+    CAND(1.0, segment_clamp(b->p0, db, a->p1));
+    CAND(segment_clamp(a->p0, da, b->p0), 0.0);
+    CAND(segment_clamp(a->p0, da, b->p1), 1.0);
+#undef CAND
+    int equi = 0;
+    if (parallel && A > 0.0 && E > 0.0) {
+        /* b's ends projected on a's parameter: an overlap of positive length is a flat valley. */
+        double u0 = v_dot(v_sub(b->p0, a->p0), da) / A, u1 = v_dot(v_sub(b->p1, a->p0), da) / A;
+        double lo = fmax(0.0, fmin(u0, u1)), hi = fmin(1.0, fmax(u0, u1));
+        equi = hi - lo > 1e-12;
+    }
+    result_fill(r, best, equi, bp, bq, bs, bt);
+    return cd_ok(q, r, CDIST_METHOD_AUTO);
+}
+
+/* ---- core dispatch ---- */
+
+static void result_swap(cdist_result *r)
+{
+    for (int i = 0; i < r->num_pairs; i++) {
+        vec3 p = r->pairs[i].point[0];
+        r->pairs[i].point[0] = r->pairs[i].point[1];
+        r->pairs[i].point[1] = p;
+        double t = r->pairs[i].param[0];
+        r->pairs[i].param[0] = r->pairs[i].param[1];
+        r->pairs[i].param[1] = t;
+    }
+}
+
+/* The core query for (ta, tb) in this order, or -1 when that order has none. */
+static int core_direct(cdist_query *q, cd_core_type ta, const void *a, cd_core_type tb, const void *b,
+                       cdist_result *r, cdist_status *st)
+{
+#define PAIR(x, y) ((x) * 16 + (y))
+    switch (PAIR(ta, tb)) {
+    case PAIR(CD_CORE_POINT, CD_CORE_POINT): *st = point_point(q, a, b, r); return 0;
+    case PAIR(CD_CORE_POINT, CD_CORE_SEGMENT): *st = point_segment(q, a, b, r); return 0;
+    case PAIR(CD_CORE_POINT, CD_CORE_CIRCLE): *st = cdist_point_circle(q, a, b, r); return 0;
+    case PAIR(CD_CORE_POINT, CD_CORE_DISK): *st = cdist_point_disk(q, a, b, r); return 0;
+    case PAIR(CD_CORE_SEGMENT, CD_CORE_SEGMENT): *st = segment_segment(q, a, b, r); return 0;
+    case PAIR(CD_CORE_SEGMENT, CD_CORE_CIRCLE): *st = cdist_segment_circle(q, a, b, r); return 0;
+    case PAIR(CD_CORE_SEGMENT, CD_CORE_DISK): *st = cdist_segment_disk(q, a, b, r); return 0;
+    case PAIR(CD_CORE_LINE, CD_CORE_CIRCLE): *st = cdist_line_circle(q, a, b, r); return 0;
+    case PAIR(CD_CORE_LINE, CD_CORE_DISK): *st = cdist_line_disk(q, a, b, r); return 0;
+    case PAIR(CD_CORE_RAY, CD_CORE_CIRCLE): *st = cdist_ray_circle(q, a, b, r); return 0;
+    case PAIR(CD_CORE_RAY, CD_CORE_DISK): *st = cdist_ray_disk(q, a, b, r); return 0;
+    case PAIR(CD_CORE_CIRCLE, CD_CORE_CIRCLE): *st = cdist_circle_circle(q, a, b, r); return 0;
+    case PAIR(CD_CORE_CIRCLE, CD_CORE_DISK): *st = cdist_circle_disk(q, a, b, r); return 0;
+    case PAIR(CD_CORE_DISK, CD_CORE_DISK): *st = cdist_disk_disk(q, a, b, r); return 0;
+    case PAIR(CD_CORE_ARC, CD_CORE_CIRCLE): *st = cdist_arc_circle(q, a, b, r); return 0;
+    case PAIR(CD_CORE_ARC, CD_CORE_ARC): *st = cdist_arc_arc(q, a, b, r); return 0;
+    case PAIR(CD_CORE_SEGMENT, CD_CORE_ARC): *st = cdist_segment_arc(q, a, b, r); return 0;
+    case PAIR(CD_CORE_ARC, CD_CORE_DISK): *st = cdist_arc_disk(q, a, b, r); return 0;
+    default: return -1;
+    }
+#undef PAIR
+}
+
+cdist_status cd_core_query(cdist_query *q, const cd_core_obj *a, const cd_core_obj *b, cdist_result *r)
+{
+    cdist_status st = CDIST_ERR_INTERNAL;
+    if (core_direct(q, a->type, a->obj, b->type, b->obj, r, &st) == 0) return st;
+    if (core_direct(q, b->type, b->obj, a->type, a->obj, r, &st) == 0) {
+        if (st == CDIST_OK) result_swap(r);
+        return st;
+    }
+    cd_begin(q, r);
+    return cd_fail(q, CDIST_ERR_INTERNAL, "no core query for this pair of objects");
+}
+
+/* ---- contact ---- */
+
+static void contact_set_error(cdist_contact *c)
+{
+    memset(c, 0, sizeof *c);
+    c->distance = NAN;
+    c->core_distance = NAN;
+    for (int i = 0; i < 2; i++) {
+        for (int k = 0; k < 2; k++) {
+            c->pairs[i].point[k] = v3(NAN, NAN, NAN);
+            c->pairs[i].core_point[k] = v3(NAN, NAN, NAN);
+            c->pairs[i].param[k] = NAN;
+        }
+        c->pairs[i].normal = v3(NAN, NAN, NAN);
+    }
+}
+
+static vec3 unit_or_zero(vec3 v)
+{
+    double m = v_maxabs(v);
+    if (m == 0.0) return v3(0, 0, 0);
+    v = v_scale(1.0 / m, v);
+    return v_scale(1.0 / v_norm(v), v);
+}
+
+/* Reference point of a core (for the orientation of a touch normal). */
+static vec3 core_reference(const cd_core_obj *o)
+{
+    switch (o->type) {
+    case CD_CORE_POINT: return *(const cdist_vec3 *)o->obj;
+    case CD_CORE_SEGMENT: {
+        const cdist_segment *s = o->obj;
+        return v_scale(0.5, v_add(s->p0, s->p1));
+    }
+    case CD_CORE_LINE: return ((const cdist_line *)o->obj)->origin;
+    case CD_CORE_RAY: return ((const cdist_ray *)o->obj)->origin;
+    case CD_CORE_CIRCLE:
+    case CD_CORE_DISK: return ((const cdist_circle *)o->obj)->center;
+    case CD_CORE_ARC: return ((const cdist_arc *)o->obj)->circle.center;
+    }
+    return v3(0, 0, 0);
+}
+
+/* Unit tangent of a curve core at its core point p (0 when not a curve or undefined). */
+static vec3 core_tangent(const cd_core_obj *o, vec3 p)
+{
+    switch (o->type) {
+    case CD_CORE_SEGMENT: {
+        const cdist_segment *s = o->obj;
+        return unit_or_zero(v_sub(s->p1, s->p0));
+    }
+    case CD_CORE_LINE: return unit_or_zero(((const cdist_line *)o->obj)->direction);
+    case CD_CORE_RAY: return unit_or_zero(((const cdist_ray *)o->obj)->direction);
+    case CD_CORE_CIRCLE: {
+        const cdist_circle *c = o->obj;
+        return unit_or_zero(v_cross(unit_or_zero(c->normal), v_sub(p, c->center)));
+    }
+    case CD_CORE_ARC: {
+        const cdist_circle *c = &((const cdist_arc *)o->obj)->circle;
+        return unit_or_zero(v_cross(unit_or_zero(c->normal), v_sub(p, c->center)));
+    }
+    default: return v3(0, 0, 0);
+    }
+}
+
+static vec3 core_plane_normal(const cd_core_obj *o)
+{
+    if (o->type == CD_CORE_CIRCLE || o->type == CD_CORE_DISK)
+        return unit_or_zero(((const cdist_circle *)o->obj)->normal);
+    if (o->type == CD_CORE_ARC) return unit_or_zero(((const cdist_arc *)o->obj)->circle.normal);
+    return v3(0, 0, 0);
+}
+
+static vec3 core_line_perp(const cd_core_obj *o, vec3 p)
+{
+    if (o->type != CD_CORE_SEGMENT && o->type != CD_CORE_LINE && o->type != CD_CORE_RAY) return v3(0, 0, 0);
+    vec3 t = core_tangent(o, p);
+    if (v_sqr(t) == 0.0) return t;
+    vec3 u, v;
+    v_basis(t, &u, &v);
+    return u;
+}
+
+/* The documented normal when the cores touch (CDIST_CONTACT_CORE_TOUCH). */
+static vec3 touch_normal(const cd_core_obj *a, const cd_core_obj *b, vec3 pa, vec3 pb)
+{
+    vec3 n = v3(0, 0, 0);
+    vec3 ta = core_tangent(a, pa), tb = core_tangent(b, pb);
+    if (v_sqr(ta) > 0.0 && v_sqr(tb) > 0.0) {
+        vec3 x = v_cross(ta, tb);
+        if (v_norm(x) > 1e-8) n = unit_or_zero(x);
+    }
+    if (v_sqr(n) == 0.0) n = core_plane_normal(a);
+    if (v_sqr(n) == 0.0) n = core_plane_normal(b);
+    if (v_sqr(n) == 0.0) n = core_line_perp(a, pa);
+    if (v_sqr(n) == 0.0) n = core_line_perp(b, pb);
+    if (v_sqr(n) == 0.0) n = v3(0, 0, 1);
+    double s = v_dot(n, v_sub(core_reference(b), core_reference(a)));
+    if (s == 0.0) s = n.x != 0.0 ? n.x : (n.y != 0.0 ? n.y : n.z);
+    return s < 0.0 ? v_neg(n) : n;
+}
+
+static cdist_status check_radius(cdist_query *q, const cd_core_obj *o, const char *what)
+{
+    if (!o->swept) return CDIST_OK;
+    cdist_status st = cd_check_scalar(q, o->radius, what);
+    if (st) return st;
+    if (o->radius < 0.0) return cd_fail(q, CDIST_ERR_NEGATIVE_RADIUS, "%s is negative (%g)", what, o->radius);
+    return CDIST_OK;
+}
+
+cdist_status cd_swept_query(cdist_query *q, const cd_core_obj *a, const cd_core_obj *b, cdist_contact *c,
+                            cdist_result *core)
+{
+    cdist_result local;
+    cdist_result *r = core ? core : &local;
+    if (c) contact_set_error(c);
+    cd_begin(q, r);
+    if (!q) return CDIST_ERR_NULL_ARGUMENT;
+    if (!c) return cd_fail(q, CDIST_ERR_NULL_ARGUMENT, "contact pointer is NULL");
+    if (!a->obj) return cd_fail(q, CDIST_ERR_NULL_ARGUMENT, "first object pointer is NULL");
+    if (!b->obj) return cd_fail(q, CDIST_ERR_NULL_ARGUMENT, "second object pointer is NULL");
+    cdist_status st;
+    if ((st = check_radius(q, a, "first object's radius")) || (st = check_radius(q, b, "second object's radius")))
+        return st;
+    if ((st = cd_core_query(q, a, b, r))) return st;
+    c->core_distance = r->distance;
+    c->distance = r->distance - (a->radius + b->radius);
+    c->num_pairs = r->num_pairs;
+    c->equidistant = r->equidistant;
+    c->method = r->method;
+    for (int i = 0; i < r->num_pairs; i++) {
+        cdist_contact_pair *cp = &c->pairs[i];
+        vec3 pa = r->pairs[i].point[0], pb = r->pairs[i].point[1];
+        vec3 d = v_sub(pb, pa);
+        double L = fmax(v_maxabs(pa), v_maxabs(pb));
+        vec3 n;
+        if (!(r->distance > 16.0 * DBL_EPSILON * L) || v_maxabs(d) == 0.0) {
+            n = touch_normal(a, b, pa, pb);
+            c->flags |= CDIST_CONTACT_CORE_TOUCH;
+        } else {
+            n = unit_or_zero(d);
+        }
+        cp->core_point[0] = pa;
+        cp->core_point[1] = pb;
+        cp->normal = n;
+        cp->point[0] = v_axpy(pa, a->radius, n);
+        cp->point[1] = v_axpy(pb, -b->radius, n);
+        cp->param[0] = r->pairs[i].param[0];
+        cp->param[1] = r->pairs[i].param[1];
+    }
+    return CDIST_OK;
+}
+
+/* ---- public entry points ---- */
+
+size_t cdist_contact_size(void) { return sizeof(cdist_contact); }
+int cdist_contact_flag_core_touch(void) { return CDIST_CONTACT_CORE_TOUCH; }
+
+size_t cdist_swept_size(int which)
+{
+    switch (which) {
+    case 0: return sizeof(cdist_sphere);
+    case 1: return sizeof(cdist_capsule);
+    case 2: return sizeof(cdist_torus);
+    case 3: return sizeof(cdist_rounded_disk);
+    default: return 0;
+    }
+}
+
+/* Object descriptors (NULL objects stay NULL so the query reports them). */
+static cd_core_obj torus_obj(const cdist_torus *t)
+{
+    cd_core_obj o = {CD_CORE_CIRCLE, t ? (const void *)&t->circle : NULL, t ? t->tube_radius : 0.0, 1};
+    return o;
+}
+static cd_core_obj capsule_obj(const cdist_capsule *t)
+{
+    cd_core_obj o = {CD_CORE_SEGMENT, t ? (const void *)&t->segment : NULL, t ? t->radius : 0.0, 1};
+    return o;
+}
+static cd_core_obj sphere_obj(const cdist_sphere *t)
+{
+    cd_core_obj o = {CD_CORE_POINT, t ? (const void *)&t->center : NULL, t ? t->radius : 0.0, 1};
+    return o;
+}
+static cd_core_obj rdisk_obj(const cdist_rounded_disk *t)
+{
+    cd_core_obj o = {CD_CORE_DISK, t ? (const void *)&t->disk : NULL, t ? t->radius : 0.0, 1};
+    return o;
+}
+static cd_core_obj plain_obj(cd_core_type type, const void *p)
+{
+    cd_core_obj o = {type, p, 0.0, 0};
+    return o;
+}
+
+#define SWEPT_QUERY(name, TA, TB, mka, mkb)                                                                        \
+    cdist_status name(cdist_query *q, const TA *a, const TB *b, cdist_contact *c)                                  \
+    {                                                                                                              \
+        cd_core_obj oa = mka, ob = mkb;                                                                            \
+        return cd_swept_query(q, &oa, &ob, c, NULL);                                                               \
+    }
+
+SWEPT_QUERY(cdist_torus_torus, cdist_torus, cdist_torus, torus_obj(a), torus_obj(b))
+SWEPT_QUERY(cdist_torus_capsule, cdist_torus, cdist_capsule, torus_obj(a), capsule_obj(b))
+SWEPT_QUERY(cdist_torus_sphere, cdist_torus, cdist_sphere, torus_obj(a), sphere_obj(b))
+SWEPT_QUERY(cdist_torus_rounded_disk, cdist_torus, cdist_rounded_disk, torus_obj(a), rdisk_obj(b))
+SWEPT_QUERY(cdist_capsule_capsule, cdist_capsule, cdist_capsule, capsule_obj(a), capsule_obj(b))
+SWEPT_QUERY(cdist_capsule_sphere, cdist_capsule, cdist_sphere, capsule_obj(a), sphere_obj(b))
+SWEPT_QUERY(cdist_capsule_rounded_disk, cdist_capsule, cdist_rounded_disk, capsule_obj(a), rdisk_obj(b))
+SWEPT_QUERY(cdist_sphere_sphere, cdist_sphere, cdist_sphere, sphere_obj(a), sphere_obj(b))
+SWEPT_QUERY(cdist_sphere_rounded_disk, cdist_sphere, cdist_rounded_disk, sphere_obj(a), rdisk_obj(b))
+SWEPT_QUERY(cdist_rounded_disk_rounded_disk, cdist_rounded_disk, cdist_rounded_disk, rdisk_obj(a), rdisk_obj(b))
+SWEPT_QUERY(cdist_torus_line, cdist_torus, cdist_line, torus_obj(a), plain_obj(CD_CORE_LINE, b))
+SWEPT_QUERY(cdist_torus_ray, cdist_torus, cdist_ray, torus_obj(a), plain_obj(CD_CORE_RAY, b))
+SWEPT_QUERY(cdist_torus_segment, cdist_torus, cdist_segment, torus_obj(a), plain_obj(CD_CORE_SEGMENT, b))
+SWEPT_QUERY(cdist_capsule_circle, cdist_capsule, cdist_circle, capsule_obj(a), plain_obj(CD_CORE_CIRCLE, b))
+SWEPT_QUERY(cdist_capsule_disk, cdist_capsule, cdist_circle, capsule_obj(a), plain_obj(CD_CORE_DISK, b))
+SWEPT_QUERY(cdist_sphere_circle, cdist_sphere, cdist_circle, sphere_obj(a), plain_obj(CD_CORE_CIRCLE, b))
+SWEPT_QUERY(cdist_sphere_disk, cdist_sphere, cdist_circle, sphere_obj(a), plain_obj(CD_CORE_DISK, b))
