@@ -6,7 +6,8 @@
  * Uses only the public header and tools/query_io so that scripts/bench-compare.sh can build it
  * against an older libcircledist. Times are thread CPU time (robust to a shared machine).
  * usage: bench_all [--reps=R] [--quick] [--kinds=cc,lc,...] [--csv FILE] DATA_DIR
- *   --quick: one pass, one repeat, 1 call per hard line (a smoke test, not a measurement). */
+ *   --quick: the first 200 random lines, one pass, one repeat, 1 call per hard line (a smoke
+ *   test, not a measurement). */
 #define _POSIX_C_SOURCE 200809L
 #include <math.h>
 #include <stdio.h>
@@ -161,6 +162,7 @@ int main(int argc, char **argv)
         queries rnd = {0}, hard = {0};
         int have_r = load(dir, kd->name, "random", 0, &rnd), have_h = load(dir, kd->name, "hard", 1, &hard);
         if (!have_r && !have_h) continue;
+        if (quick && rnd.n > 200) rnd.n = 200; /* a smoke test: a few of each */
         files += have_r + have_h;
         const queries *probe = have_r ? &rnd : &hard;
         for (int m = 0; m < 4; m++) {

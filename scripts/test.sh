@@ -15,11 +15,13 @@ count() { # DIR: add the results of the last meson test run in DIR
   total_ok=$((total_ok + ok))
   total_fail=$((total_fail + fail))
 }
-run_suite() { # DIR [meson setup options...]
+run_suite() { # DIR [meson -D options...]
   dir=$1
   shift
   if [ ! -d "$dir" ]; then
     meson setup "$dir" "$@" || return 1
+  elif [ $# -gt 0 ]; then
+    meson configure "$dir" "$@" || return 1
   fi
   meson compile -C "$dir" || return 1
   rc=0
@@ -33,9 +35,10 @@ run_suite() { # DIR [meson setup options...]
 }
 status=0
 run_suite build || status=1
-# Sanitizers: ASan + UBSan, aborting on any report.
+# Sanitizers: ASan + UBSan, aborting on any report. Optimised (-O2 -g): the brute-force tests
+# run about 3x faster than at -O0 and ASan still reports every bad access it can see.
 ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 \
-  run_suite build-sanitize -Db_sanitize=address,undefined -Db_lundef=false --buildtype=debug || status=1
+  run_suite build-sanitize -Db_sanitize=address,undefined -Db_lundef=false -Dbuildtype=debugoptimized || status=1
 [ "$status" -ne 0 ] && [ "$total_fail" -eq 0 ] && total_fail=1
 echo "test suites: $total_ok passed, $total_fail failed"
 exit $status
