@@ -298,7 +298,7 @@ CDIST_API cdist_status cdist_disk_disk(cdist_query *q, const cdist_circle *d0, c
  * helix) to bracket critical points, so two minima closer than the sample spacing may merge.
  * Cost limit: a helix's turns are skipped when a lower bound (from the axial and radial
  * geometry) shows they cannot beat the distance found; when more than
- * 2^24 / cdist_query_get_curve_samples() turns (32768 by default) cannot be skipped (a target
+ * 2^21 / cdist_query_get_curve_samples() turns (4096 by default) cannot be skipped (a target
  * threading a long, tight coil), the helix queries return ::CDIST_ERR_COST_LIMIT. */
 
 /** Distance from the curve f(t), t in [t0, t1], to a circle; param[0] is the curve parameter.

@@ -596,7 +596,7 @@ static double helix_piece_lb(const helix_bound *hb, const helix_x *hx, double a,
 }
 
 /* Cost limit of one helix query (CD_CURVE_HELIX_MAX_SAMPLES samples over the pieces that cannot
- * be skipped: 32768 turns at the default 512 samples). Pieces are skipped when their lower bound
+ * be skipped: 4096 turns at the default 512 samples). Pieces are skipped when their lower bound
  * exceeds the distance found on the axially nearest piece, so only configurations where that
  * many turns are about equally close (a target threading a long tight coil) reach it; they get
  * CDIST_ERR_COST_LIMIT before the long scan.
