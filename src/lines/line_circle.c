@@ -432,7 +432,7 @@ static double range_scale(vec3 B, vec3 M, double tmin, double tmax, double r)
  * eps * |origin - C| in the translation and eps * |t| in the normalisation of D. The move is done
  * on origin - C kept exactly as two doubles, so nothing is rounded to the grid of the absolute
  * coordinates either (objects far from the coordinate origin). */
-vec3 cd_line_near_centre(vec3 origin, vec3 D, vec3 C, double tmin, double tmax, double *t0)
+CD_FMA_CLONES vec3 cd_line_near_centre(vec3 origin, vec3 D, vec3 C, double tmin, double tmax, double *t0)
 {
     /* origin - C = hi + lo exactly; B = hi + t0 D + lo, rounded once at the scale of B */
     vec3 lo3, hi3;
@@ -450,7 +450,7 @@ vec3 cd_line_near_centre(vec3 origin, vec3 D, vec3 C, double tmin, double tmax, 
 
 /* The core for origin + t D, t in [tmin, tmax] (M = D/|D|, len = |D|), circle cc; writes r
  * (without its method) and the method that answered. */
-static cdist_status run(cdist_query *q, vec3 origin, vec3 D, vec3 M, double len, double tmin, double tmax,
+CD_FMA_CLONES static cdist_status run(cdist_query *q, vec3 origin, vec3 D, vec3 M, double len, double tmin, double tmax,
                         const cd_circle *cc, cdist_result *r, cdist_method *used)
 {
     double t0;
