@@ -42,7 +42,7 @@ cdist_status cd_check_point_slow(cdist_query *q, const cdist_vec3 *p, const char
 /* A non-zero vector d (finite, |components| <= CD_MAX_ABS) scaled exactly by a power of two so
  * that its largest component is about 1: its squared length neither overflows nor underflows,
  * also for subnormal components (1 / max|d_i| would overflow there). */
-static vec3 scaled_direction(vec3 d, double m, double *down)
+CD_INLINE vec3 scaled_direction(vec3 d, double m, double *down)
 {
     if (m >= 0x1p-500) {
         *down = m; /* 1 / m is finite: the original arithmetic, kept bit for bit */
@@ -53,7 +53,7 @@ static vec3 scaled_direction(vec3 d, double m, double *down)
     return v_scale(cd_pow2(-e), d);
 }
 
-cdist_status cd_check_direction(cdist_query *q, const cdist_vec3 *d, const char *what, int unit_required, vec3 *unit,
+CD_FMA_CLONES cdist_status cd_check_direction(cdist_query *q, const cdist_vec3 *d, const char *what, int unit_required, vec3 *unit,
                                 double *length)
 {
     cdist_status st = cd_check_point(q, d, what);
@@ -77,7 +77,7 @@ cdist_status cd_check_direction(cdist_query *q, const cdist_vec3 *d, const char 
  * per number covers NaN, infinity and the range (|x| <= CD_MAX_ABS is false for all three);
  * the normal's squared length is taken directly when it is safely in range. Returns 0 on any
  * doubt; the slow path then finds and reports the problem, or accepts the circle. */
-static inline int circle_fast(const cdist_query *q, const cdist_circle *c, cd_circle *out)
+CD_INLINE int circle_fast(const cdist_query *q, const cdist_circle *c, cd_circle *out)
 {
     vec3 p = c->center, d = c->normal;
     double r = c->radius;
@@ -113,14 +113,14 @@ static cdist_status circle_slow(cdist_query *q, const cdist_circle *c, const cha
     return CDIST_OK;
 }
 
-cdist_status cd_check_circle_nobasis(cdist_query *q, const cdist_circle *c, const char *what, cd_circle *out)
+CD_FMA_CLONES cdist_status cd_check_circle_nobasis(cdist_query *q, const cdist_circle *c, const char *what, cd_circle *out)
 {
     if (!c) return cd_fail(q, CDIST_ERR_NULL_ARGUMENT, "%s pointer is NULL", what);
     if (q && circle_fast(q, c, out)) return CDIST_OK;
     return circle_slow(q, c, what, out);
 }
 
-cdist_status cd_check_circle(cdist_query *q, const cdist_circle *c, const char *what, cd_circle *out)
+CD_FMA_CLONES cdist_status cd_check_circle(cdist_query *q, const cdist_circle *c, const char *what, cd_circle *out)
 {
     cdist_status st = cd_check_circle_nobasis(q, c, what, out);
     if (st == CDIST_OK) cd_frame_basis(out);

@@ -13,8 +13,11 @@ void cd_best_init(cd_best *b, double scale)
 
 static int cand_distinct(const cd_best *b, const cd_cand *x, const cd_cand *y)
 {
-    double sep = v_dist(x->p[0], y->p[0]) + v_dist(x->p[1], y->p[1]);
-    return sep > CD_DISTINCT_REL * b->scale;
+    vec3 d0 = v_sub(x->p[0], y->p[0]), d1 = v_sub(x->p[1], y->p[1]);
+    double tol = CD_DISTINCT_REL * b->scale;
+    /* |v| >= max |v_i|: most distinct pairs are decided without square roots */
+    if (v_maxabs(d0) + v_maxabs(d1) > tol) return 1;
+    return v_norm(d0) + v_norm(d1) > tol;
 }
 
 void cd_best_offer_flag(cd_best *b, int equi, double d2, vec3 p0, vec3 p1, double param0, double param1)
@@ -42,16 +45,6 @@ void cd_best_offer_flag(cd_best *b, int equi, double d2, vec3 p0, vec3 p1, doubl
 void cd_best_offer(cd_best *b, double d2, vec3 p0, vec3 p1, double param0, double param1)
 {
     cd_best_offer_flag(b, 0, d2, p0, p1, param0, param1);
-}
-
-void cd_best_offer_equidistant(cd_best *b, double d2, vec3 p0, vec3 p1, double param0, double param1)
-{
-    cd_best_offer_flag(b, 1, d2, p0, p1, param0, param1);
-}
-
-void cd_best_offer_points(cd_best *b, vec3 p0, vec3 p1, double param0, double param1)
-{
-    cd_best_offer(b, v_sqr(v_sub(p0, p1)), p0, p1, param0, param1);
 }
 
 void cd_best_to_result(const cd_best *b, vec3 offset, int swap, cdist_result *r)

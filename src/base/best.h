@@ -38,14 +38,11 @@ static inline int cd_best_is_equidistant(const cd_best *b)
 /* Offer a candidate: p0 on the first object, p1 on the second, d2 = its squared distance
  * computed as accurately as the family can (usually from the true distance function). */
 void cd_best_offer(cd_best *b, double d2, vec3 p0, vec3 p1, double param0, double param1);
-/* Same, for a candidate that represents infinitely many equally close pairs (e.g. a point on a
- * circle's axis): the result is flagged equidistant only if this candidate is the best. */
-void cd_best_offer_equidistant(cd_best *b, double d2, vec3 p0, vec3 p1, double param0, double param1);
-/* Either of the two above by a flag: for moving candidates from one collector to another
- * (pass the source candidate's .equidistant). */
+/* Same with a flag: equidistant = 1 for a candidate that represents infinitely many equally
+ * close pairs (e.g. a point on a circle's axis); the result is flagged equidistant only if that
+ * candidate is the best. For moving candidates from one collector to another, pass the source
+ * candidate's .equidistant. */
 void cd_best_offer_flag(cd_best *b, int equidistant, double d2, vec3 p0, vec3 p1, double param0, double param1);
-/* Same, d2 computed as |p0 - p1|^2. */
-void cd_best_offer_points(cd_best *b, vec3 p0, vec3 p1, double param0, double param1);
 /* Write the result: the best pair and, on a tie, the second; points moved by `offset`
  * (the translation the family removed). swap exchanges the objects' roles (f(b,a) from f(a,b)). */
 void cd_best_to_result(const cd_best *b, vec3 offset, int swap, cdist_result *r);

@@ -10,7 +10,7 @@
  * library's defaults are CD_ROOT_REL_ULPS * eps and CD_ROOT_ABS (src/base/tolerances.h), for
  * problems scaled to L in [1, 2) (src/base/numeric.h).
  *
- * cd_root_newton and cd_root_polish are static inline so that a hot family (line-circle) gets
+ * cd_root_newton and cd_root_polish are always inlined so that a hot family (line-circle) gets
  * them specialised for its callback (the call through the pointer is inlined away); the
  * Brent solvers are out of line (roots.c). */
 #ifndef CDIST_BASE_ROOTS_H
@@ -18,6 +18,7 @@
 
 #include <math.h>
 
+#include "base/numeric.h"
 #include "base/tolerances.h"
 
 typedef double (*cd_fdf_fn)(const void *ctx, double x, double *df);
@@ -30,8 +31,8 @@ typedef double (*cd_f_fn)(const void *ctx, double x);
  * Converged when a Newton step is below rel * |x| or abs, or the bracket is below abs.
  * Every operation commutes with x -> -x for an odd f, so mirrored brackets give mirrored
  * roots. Returns lo when lo >= hi, NaN when the callback failed. */
-static inline double cd_root_newton(cd_fdf_fn fdf, const void *ctx, double lo, double hi, int dir, double rel,
-                                    double abs, int max_iter)
+CD_INLINE double cd_root_newton(cd_fdf_fn fdf, const void *ctx, double lo, double hi, int dir, double rel,
+                                 double abs, int max_iter)
 {
     if (!(lo < hi)) return lo;
     double x = 0.5 * (lo + hi), dxold = hi - lo, dx = dxold;
@@ -64,7 +65,7 @@ static inline double cd_root_newton(cd_fdf_fn fdf, const void *ctx, double lo, d
 /* Newton on f from x (a root estimate, e.g. from a polynomial), a step kept only while |f|
  * decreases; stops when a step is below rel * |x| or abs (abs = 0, rel = 0: only the |f| test).
  * Returns the polished x (x itself when no step helped), NaN when the callback failed. */
-static inline double cd_root_polish(cd_fdf_fn fdf, const void *ctx, double x, double rel, double abs,
+CD_INLINE double cd_root_polish(cd_fdf_fn fdf, const void *ctx, double x, double rel, double abs,
                                     int max_iter)
 {
     double df, f = fdf(ctx, x, &df);

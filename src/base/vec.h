@@ -10,34 +10,34 @@
 
 typedef cdist_vec3 vec3;
 
-static inline vec3 v3(double x, double y, double z) { vec3 r = {x, y, z}; return r; }
-static inline vec3 v_add(vec3 a, vec3 b) { return v3(a.x + b.x, a.y + b.y, a.z + b.z); }
-static inline vec3 v_sub(vec3 a, vec3 b) { return v3(a.x - b.x, a.y - b.y, a.z - b.z); }
-static inline vec3 v_scale(double s, vec3 a) { return v3(s * a.x, s * a.y, s * a.z); }
-static inline vec3 v_neg(vec3 a) { return v3(-a.x, -a.y, -a.z); }
+CD_INLINE vec3 v3(double x, double y, double z) { vec3 r = {x, y, z}; return r; }
+CD_INLINE vec3 v_add(vec3 a, vec3 b) { return v3(a.x + b.x, a.y + b.y, a.z + b.z); }
+CD_INLINE vec3 v_sub(vec3 a, vec3 b) { return v3(a.x - b.x, a.y - b.y, a.z - b.z); }
+CD_INLINE vec3 v_scale(double s, vec3 a) { return v3(s * a.x, s * a.y, s * a.z); }
+CD_INLINE vec3 v_neg(vec3 a) { return v3(-a.x, -a.y, -a.z); }
 /* a + s b */
-static inline vec3 v_axpy(vec3 a, double s, vec3 b) { return v3(fma(s, b.x, a.x), fma(s, b.y, a.y), fma(s, b.z, a.z)); }
-static inline double v_dot(vec3 a, vec3 b) { return fma(a.x, b.x, fma(a.y, b.y, a.z * b.z)); }
-static inline vec3 v_cross(vec3 a, vec3 b)
+CD_INLINE vec3 v_axpy(vec3 a, double s, vec3 b) { return v3(fma(s, b.x, a.x), fma(s, b.y, a.y), fma(s, b.z, a.z)); }
+CD_INLINE double v_dot(vec3 a, vec3 b) { return fma(a.x, b.x, fma(a.y, b.y, a.z * b.z)); }
+CD_INLINE vec3 v_cross(vec3 a, vec3 b)
 {
     return v3(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x);
 }
-static inline double v_sqr(vec3 a) { return v_dot(a, a); }
-static inline double v_norm(vec3 a) { return sqrt(v_sqr(a)); }
-static inline double v_dist(vec3 a, vec3 b) { return v_norm(v_sub(a, b)); }
-static inline double v_maxabs(vec3 a)
+CD_INLINE double v_sqr(vec3 a) { return v_dot(a, a); }
+CD_INLINE double v_norm(vec3 a) { return sqrt(v_sqr(a)); }
+CD_INLINE double v_dist(vec3 a, vec3 b) { return v_norm(v_sub(a, b)); }
+CD_INLINE double v_maxabs(vec3 a)
 {
     double m = fabs(a.x);
     if (fabs(a.y) > m) m = fabs(a.y);
     if (fabs(a.z) > m) m = fabs(a.z);
     return m;
 }
-static inline int v_isfinite(vec3 a) { return isfinite(a.x) && isfinite(a.y) && isfinite(a.z); }
+CD_INLINE int v_isfinite(vec3 a) { return isfinite(a.x) && isfinite(a.y) && isfinite(a.z); }
 
 /* The documented basis rule of cdist_circle_basis(): k = index of the smallest |n_k| (first on
  * ties), u = normalise(e_k - n_k n), v = n x u. n must be unit. Choosing the smallest component
  * keeps e_k far from parallel to n, so u is well conditioned. */
-static inline void v_basis(vec3 n, vec3 *u, vec3 *v)
+CD_INLINE void v_basis(vec3 n, vec3 *u, vec3 *v)
 {
     double ax = fabs(n.x), ay = fabs(n.y), az = fabs(n.z);
     vec3 e;
@@ -57,7 +57,7 @@ typedef struct cd_circle {
 } cd_circle;
 
 /* Angle of a point given relative to the circle centre, in (-pi, pi]; NaN when undefined. */
-static inline double cd_circle_angle(const cd_circle *c, vec3 rel)
+CD_INLINE double cd_circle_angle(const cd_circle *c, vec3 rel)
 {
     return cd_polar_angle(v_dot(c->u, rel), v_dot(c->v, rel));
 }

@@ -41,14 +41,14 @@ typedef struct lc_model {
 } lc_model;
 
 /* rho - r without cancellation, given x2 and rho. */
-static inline double rho_minus_r(const lc_model *m, double x2, double rho)
+CD_INLINE double rho_minus_r(const lc_model *m, double x2, double rho)
 {
     return MADD(x2, x2, (m->ax1 - m->r) * (m->ax1 + m->r)) / (rho + m->r);
 }
 
 /* F'/2 at height h and in-plane coordinate x2. On the axis (rho = 0) F' is undefined: side = -1
  * or +1 gives the one-sided limit (x2/rho -> side), side = 0 the mean of both. */
-static inline double fp_at(const lc_model *m, double h, double x2, int side)
+CD_INLINE double fp_at(const lc_model *m, double h, double x2, int side)
 {
     double rho = sqrt(MADD(m->x1, m->x1, x2 * x2));
     if (rho == 0.0) return m->a * h - side * m->r * m->m0;
@@ -57,7 +57,7 @@ static inline double fp_at(const lc_model *m, double h, double x2, int side)
 
 /* F'/2 and F''/2 together (the solvers' callback, base/roots.h): one square root and one
  * division. With w = 1 / (rho (rho + r)): (rho - r)/rho = num w and 1/rho = (rho + r) w. */
-static inline double fdf(const void *ctx, double s, double *df)
+CD_INLINE double fdf(const void *ctx, double s, double *df)
 {
     const lc_model *m = ctx;
     double h = MADD(m->a, s, m->h), x2 = MADD(m->m0, s, m->c2);
@@ -75,7 +75,7 @@ static inline double fdf(const void *ctx, double s, double *df)
 }
 
 /* Squared distance (scaled) at s. */
-static inline double f_at(const lc_model *m, double s)
+CD_INLINE double f_at(const lc_model *m, double s)
 {
     double h = MADD(m->a, s, m->h), x2 = MADD(m->m0, s, m->c2);
     double rho = sqrt(MADD(m->x1, m->x1, x2 * x2));
@@ -85,13 +85,13 @@ static inline double f_at(const lc_model *m, double s)
 
 /* Root of F' in [lo, hi] where F' increases: safeguarded Newton (base/roots.h), which
  * commutes with s -> -s when F' is odd, so mirrored brackets give mirrored roots. */
-static inline double solve(const lc_model *m, double lo, double hi)
+CD_INLINE double solve(const lc_model *m, double lo, double hi)
 {
     return cd_root_newton(fdf, m, lo, hi, +1, CD_ROOT_REL_ULPS * EPS, CD_ROOT_ABS, CD_ROOT_MAX_ITER);
 }
 
 /* Newton on F' from a polynomial root, kept only while |F'| decreases. */
-static inline double polish(const lc_model *m, double x)
+CD_INLINE double polish(const lc_model *m, double x)
 {
     return cd_root_polish(fdf, m, x, CD_ROOT_REL_ULPS * EPS, CD_ROOT_ABS, CD_POLISH_MAX_ITER);
 }
@@ -113,7 +113,7 @@ typedef struct lc_ctx {
     cd_cand cand[LC_MAX_CAND]; /* .equidistant: an on-axis point (every circle point as close) */
 } lc_ctx;
 
-static void push(lc_ctx *x, double d2, vec3 P, vec3 K, double t, double ang, int eq)
+CD_INLINE void push(lc_ctx *x, double d2, vec3 P, vec3 K, double t, double ang, int eq)
 {
     if (x->n >= LC_MAX_CAND) return;
     cd_cand *c = &x->cand[x->n];
@@ -127,7 +127,7 @@ static void push(lc_ctx *x, double d2, vec3 P, vec3 K, double t, double ang, int
 }
 
 /* Circle point in direction (X, Y) of the basis; (0, 0) gives the representative angle 0. */
-static vec3 circle_pt(const cd_circle *c, double X, double Y, double *ang)
+CD_INLINE vec3 circle_pt(const cd_circle *c, double X, double Y, double *ang)
 {
     double n2 = MADD(X, X, Y * Y);
     /* the core runs on scaled input (X, Y ~ 1): sqrt, with hypot only as a guard */
@@ -141,11 +141,12 @@ static vec3 circle_pt(const cd_circle *c, double X, double Y, double *ang)
         return v_scale(c->r, c->u);
     }
     *ang = cd_polar_angle(X, Y);
-    return v_add(v_scale(c->r * (X / n), c->u), v_scale(c->r * (Y / n), c->v));
+    double k = c->r / n;
+    return v_add(v_scale(k * X, c->u), v_scale(k * Y, c->v));
 }
 
 /* A critical point of the model at s. */
-static void offer_model(lc_ctx *x, const lc_model *m, double s)
+CD_INLINE void offer_model(lc_ctx *x, const lc_model *m, double s)
 {
     double h = MADD(m->a, s, m->h), x2 = MADD(m->m0, s, m->c2);
     double rho = sqrt(MADD(m->x1, m->x1, x2 * x2));
@@ -161,7 +162,7 @@ static void offer_model(lc_ctx *x, const lc_model *m, double s)
 }
 
 /* A finite end of the range: point-circle (cd_point_circle_core semantics, parameter t). */
-static void offer_end(lc_ctx *x, double t)
+CD_INLINE void offer_end(lc_ctx *x, double t)
 {
     const cd_circle *c = x->c;
     vec3 P = v_axpy(x->B, t, x->M);
@@ -179,7 +180,7 @@ static void offer_end(lc_ctx *x, double t)
  * tie tolerance: near a flat minimum (a tangent line, F ~ s^4) the solvers may stop at several
  * points of the flat bottom, which are not distinct minima, so only the lowest is kept. Genuine
  * pairs of minima (symmetric configurations) have a maximum between them. */
-static void merge_basins(lc_ctx *x, const lc_model *m, double tol)
+CD_INLINE void merge_basins(lc_ctx *x, const lc_model *m, double tol)
 {
     /* sort by t */
     for (int i = 1; i < x->n; i++)
@@ -418,7 +419,7 @@ cdist_status cd_linear_circle_ex(cdist_query *q, cdist_method method, vec3 B, ve
 
 /* Scale L for tie and distinctness tests: max(r, distance from the centre to the nearest point
  * of the line, ray or segment), the quantity ../shared/cases/README.md measures errors against. */
-static double range_scale(vec3 B, vec3 M, double tmin, double tmax, double r)
+CD_INLINE double range_scale(vec3 B, vec3 M, double tmin, double tmax, double r)
 {
     double t = fmin(fmax(-v_dot(B, M), tmin), tmax);
     return fmax(r, v_norm(v_axpy(B, t, M)));
@@ -433,7 +434,7 @@ static double range_scale(vec3 B, vec3 M, double tmin, double tmax, double r)
  * eps * |origin - C| in the translation and eps * |t| in the normalisation of D. The move is done
  * on origin - C kept exactly as two doubles, so nothing is rounded to the grid of the absolute
  * coordinates either (objects far from the coordinate origin). */
-vec3 cd_line_near_centre(vec3 origin, vec3 D, vec3 C, double tmin, double tmax, double *t0)
+CD_FMA_CLONES vec3 cd_line_near_centre(vec3 origin, vec3 D, vec3 C, double tmin, double tmax, double *t0)
 {
     /* origin - C = hi + lo exactly; B = hi + t0 D + lo, rounded once at the scale of B */
     vec3 lo3, hi3;
@@ -451,7 +452,7 @@ vec3 cd_line_near_centre(vec3 origin, vec3 D, vec3 C, double tmin, double tmax, 
 
 /* The core for origin + t D, t in [tmin, tmax] (M = D/|D|, len = |D|), circle cc; writes r
  * (without its method) and the method that answered. */
-static cdist_status run(cdist_query *q, vec3 origin, vec3 D, vec3 M, double len, double tmin, double tmax,
+CD_FMA_CLONES static cdist_status run(cdist_query *q, vec3 origin, vec3 D, vec3 M, double len, double tmin, double tmax,
                         const cd_circle *cc, cdist_result *r, cdist_method *used)
 {
     double t0;

@@ -116,7 +116,7 @@ cdist_status cd_linear_disk_ex(cdist_query *q, cdist_method method, vec3 B, vec3
 /* The point of the segment p0 + s (p1 - p0), s in [0, 1], nearest C, relative to C, from the
  * exact differences p0 - C and p1 - p0 (a rounded p1 - p0 would tilt the segment: 1e-8 off at
  * 1e8 from its start); one rounding at the scale of the result. */
-static vec3 segment_near_centre(vec3 p0, vec3 p1, vec3 C, double *s0)
+CD_FMA_CLONES static vec3 segment_near_centre(vec3 p0, vec3 p1, vec3 C, double *s0)
 {
     double a[3], al[3], dd[3], dl[3];
     const double P0[3] = {p0.x, p0.y, p0.z}, P1[3] = {p1.x, p1.y, p1.z}, CC[3] = {C.x, C.y, C.z};
@@ -142,7 +142,7 @@ static vec3 segment_near_centre(vec3 p0, vec3 p1, vec3 C, double *s0)
  * caller gave it (|D| = len, unit direction M = D / len). The parameter reported is t.
  * p1 (segments only): the end point, so that origin - C and p1 - origin are taken exactly.
  * Writes r (without its method) and the method that answered. */
-static cdist_status linear_disk_query(cdist_query *q, vec3 origin, vec3 D, double len, vec3 M, double tmin,
+CD_FMA_CLONES static cdist_status linear_disk_query(cdist_query *q, vec3 origin, vec3 D, double len, vec3 M, double tmin,
                                       double tmax, const vec3 *p1, const cd_circle *dk, cdist_result *r,
                                       cdist_method *used)
 {

@@ -9,7 +9,7 @@
  * v_basis (smallest |n_k|), u = (e_k - n_k n)/s and v = n x u for s = |e_k - n_k n| > 0, so
  * u . w = w_k / s and v . w = u . (w x n) = (p x n)_k / s = -(n x p)_k / s for w = (n x p) x n;
  * s cancels in atan2. */
-static inline double plane_angle(vec3 n, vec3 w, vec3 np)
+CD_INLINE double plane_angle(vec3 n, vec3 w, vec3 np)
 {
     double ax = fabs(n.x), ay = fabs(n.y), az = fabs(n.z);
     if (ax <= ay && ax <= az) return cd_polar_angle(w.x, -np.x);
@@ -18,7 +18,7 @@ static inline double plane_angle(vec3 n, vec3 w, vec3 np)
 }
 
 /* The representative circle point (angle 0) for a point on the axis: r u. */
-static inline vec3 axis_representative(const cd_circle *c)
+CD_INLINE vec3 axis_representative(const cd_circle *c)
 {
     vec3 u, v;
     v_basis(c->n, &u, &v);
@@ -27,7 +27,7 @@ static inline vec3 axis_representative(const cd_circle *c)
 
 /* The point is on the axis when its axis distance is below the rounding noise of |N x D|
  * (compared squared: no square root; p is scaled, so nothing underflows). */
-static inline int on_axis(vec3 p, double rho)
+CD_INLINE int on_axis(vec3 p, double rho)
 {
     const double k = CD_ON_AXIS_ULPS * DBL_EPSILON;
     return rho * rho <= (k * k) * v_sqr(p);
@@ -36,7 +36,7 @@ static inline int on_axis(vec3 p, double rho)
 /* Split p (relative to the centre) into height h along n, in-plane part w and axis distance rho.
  * w = (n x p) x n is the in-plane part; built from the cross product it stays in the plane and
  * keeps its direction accurate even within a few ulps of the axis, where p - h n would cancel. */
-static inline void split(vec3 p, vec3 n, double *h, vec3 *w, vec3 *np, double *rho)
+CD_INLINE void split(vec3 p, vec3 n, double *h, vec3 *w, vec3 *np, double *rho)
 {
     *np = v_cross(n, p);
     *h = v_dot(n, p);
@@ -44,7 +44,7 @@ static inline void split(vec3 p, vec3 n, double *h, vec3 *w, vec3 *np, double *r
     *rho = v_norm(*np);
 }
 
-static inline cd_point_pair circle_pair(vec3 p, const cd_circle *c, double h, vec3 w, vec3 np, double rho)
+CD_INLINE cd_point_pair circle_pair(vec3 p, const cd_circle *c, double h, vec3 w, vec3 np, double rho)
 {
     cd_point_pair q;
     q.equidistant = 0;
@@ -68,7 +68,7 @@ static inline cd_point_pair circle_pair(vec3 p, const cd_circle *c, double h, ve
     return q;
 }
 
-CD_FMA_CLONES cd_point_pair cd_point_circle_pair(vec3 p, const cd_circle *c)
+CD_INLINE cd_point_pair circle_pair_at(vec3 p, const cd_circle *c)
 {
     double h, rho;
     vec3 w, np;
@@ -76,7 +76,7 @@ CD_FMA_CLONES cd_point_pair cd_point_circle_pair(vec3 p, const cd_circle *c)
     return circle_pair(p, c, h, w, np, rho);
 }
 
-CD_FMA_CLONES cd_point_pair cd_point_disk_pair(vec3 p, const cd_circle *c)
+CD_INLINE cd_point_pair disk_pair_at(vec3 p, const cd_circle *c)
 {
     double h, rho;
     vec3 w, np;
@@ -90,6 +90,9 @@ CD_FMA_CLONES cd_point_pair cd_point_disk_pair(vec3 p, const cd_circle *c)
     q.equidistant = 0;
     return q;
 }
+
+CD_FMA_CLONES cd_point_pair cd_point_circle_pair(vec3 p, const cd_circle *c) { return circle_pair_at(p, c); }
+CD_FMA_CLONES cd_point_pair cd_point_disk_pair(vec3 p, const cd_circle *c) { return disk_pair_at(p, c); }
 
 void cd_point_circle_core(vec3 p, const cd_circle *c, cd_best *b, int swap)
 {
@@ -107,7 +110,7 @@ void cd_point_disk_core(vec3 p, const cd_circle *c, cd_best *b, int swap)
 
 /* Frame (translate to the centre) and scale (by 2^-e, exact, so that the scale is in [1, 2):
  * no underflow or overflow in squares for any accepted input), core, result. */
-void cd_point_result(vec3 p, const cd_circle *c, int disk, cdist_result *r)
+CD_FMA_CLONES void cd_point_result(vec3 p, const cd_circle *c, int disk, cdist_result *r)
 {
     vec3 rel = v_sub(p, c->c);
     int e = cd_scale_exponent(fmax(c->r, v_maxabs(rel)));
@@ -115,7 +118,7 @@ void cd_point_result(vec3 p, const cd_circle *c, int disk, cdist_result *r)
     vec3 ps = v_scale(down, rel);
     cd_circle sc = *c;
     sc.r = c->r * down;
-    cd_point_pair k = disk ? cd_point_disk_pair(ps, &sc) : cd_point_circle_pair(ps, &sc);
+    cd_point_pair k = disk ? disk_pair_at(ps, &sc) : circle_pair_at(ps, &sc);
     r->distance = sqrt(k.d2) * up;
     r->sqr_distance = (k.d2 * up) * up;
     r->num_pairs = 1;
