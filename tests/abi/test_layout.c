@@ -66,9 +66,70 @@ OFF(cdist_result, method, 152);
 OFF(cdist_result, iterations, 156);
 OFF(cdist_result, reserved, 160);
 
+SIZE(cdist_curve, 32);
+OFF(cdist_curve, fn, 0);
+OFF(cdist_curve, user, 8);
+OFF(cdist_curve, t0, 16);
+OFF(cdist_curve, t1, 24);
+
+SIZE(cdist_sphere, 32);
+OFF(cdist_sphere, center, 0);
+OFF(cdist_sphere, radius, 24);
+
+SIZE(cdist_capsule, 56);
+OFF(cdist_capsule, segment, 0);
+OFF(cdist_capsule, radius, 48);
+
+SIZE(cdist_torus, 64);
+OFF(cdist_torus, circle, 0);
+OFF(cdist_torus, tube_radius, 56);
+
+SIZE(cdist_rounded_disk, 64);
+OFF(cdist_rounded_disk, disk, 0);
+OFF(cdist_rounded_disk, radius, 56);
+
+SIZE(cdist_contact_pair, 136);
+OFF(cdist_contact_pair, point, 0);
+OFF(cdist_contact_pair, core_point, 48);
+OFF(cdist_contact_pair, normal, 96);
+OFF(cdist_contact_pair, param, 120);
+
+SIZE(cdist_contact, 368);
+OFF(cdist_contact, distance, 0);
+OFF(cdist_contact, core_distance, 8);
+OFF(cdist_contact, num_pairs, 16);
+OFF(cdist_contact, equidistant, 20);
+OFF(cdist_contact, flags, 24);
+OFF(cdist_contact, method, 28);
+OFF(cdist_contact, pairs, 32);
+OFF(cdist_contact, reserved, 304);
+
+SIZE(cdist_grad_object, 264);
+OFF(cdist_grad_object, d_center, 0);
+OFF(cdist_grad_object, d_normal, 24);
+OFF(cdist_grad_object, d_origin, 48);
+OFF(cdist_grad_object, d_direction, 72);
+OFF(cdist_grad_object, d_p0, 96);
+OFF(cdist_grad_object, d_p1, 120);
+OFF(cdist_grad_object, d_zero_direction, 144);
+OFF(cdist_grad_object, d_radius, 168);
+OFF(cdist_grad_object, d_radius_swept, 176);
+OFF(cdist_grad_object, d_start, 184);
+OFF(cdist_grad_object, d_end, 192);
+OFF(cdist_grad_object, reserved, 200);
+
+SIZE(cdist_grad, 600);
+OFF(cdist_grad, obj, 0);
+OFF(cdist_grad, flags, 528);
+OFF(cdist_grad, reserved_int, 532);
+OFF(cdist_grad, reserved, 536);
+
 SIZE(cdist_status, 4);
 SIZE(cdist_method, 4);
 SIZE(cdist_curve_fn, 8);
+SIZE(cdist_kind, 4);
+SIZE(cdist_contact_flag, 4);
+SIZE(cdist_grad_flag, 4);
 #define LAYOUT_CHECKED 1
 #endif
 
@@ -97,10 +158,41 @@ VALUE(CDIST_METHOD_POLYNOMIAL, 1);
 VALUE(CDIST_METHOD_ROBUST, 2);
 VALUE(CDIST_METHOD_ITERATION, 3);
 
+VALUE(CDIST_KIND_POINT_CIRCLE, 0);
+VALUE(CDIST_KIND_POINT_DISK, 1);
+VALUE(CDIST_KIND_LINE_CIRCLE, 2);
+VALUE(CDIST_KIND_RAY_CIRCLE, 3);
+VALUE(CDIST_KIND_SEGMENT_CIRCLE, 4);
+VALUE(CDIST_KIND_CIRCLE_CIRCLE, 5);
+VALUE(CDIST_KIND_LINE_DISK, 6);
+VALUE(CDIST_KIND_RAY_DISK, 7);
+VALUE(CDIST_KIND_SEGMENT_DISK, 8);
+VALUE(CDIST_KIND_CIRCLE_DISK, 9);
+VALUE(CDIST_KIND_DISK_DISK, 10);
+VALUE(CDIST_KIND_CURVE_CIRCLE, 11);
+VALUE(CDIST_KIND_CURVE_DISK, 12);
+VALUE(CDIST_KIND_ARC_CIRCLE, 13);
+VALUE(CDIST_KIND_ARC_ARC, 14);
+VALUE(CDIST_KIND_SEGMENT_ARC, 15);
+VALUE(CDIST_KIND_ARC_DISK, 16);
+VALUE(CDIST_KIND_HELIX_CIRCLE, 17);
+VALUE(CDIST_KIND_HELIX_DISK, 18);
+VALUE(CDIST_KIND_BEZIER3_CIRCLE, 19);
+VALUE(CDIST_KIND_BEZIER3_DISK, 20);
+
+VALUE(CDIST_CONTACT_CORE_TOUCH, 1);
+VALUE(CDIST_GRAD_NOT_DIFFERENTIABLE, 1);
+
 int main(void)
 {
     /* The library was compiled from the same header: its own sizes agree. */
-    int ok = cdist_result_size() == sizeof(cdist_result) && cdist_pair_size() == sizeof(cdist_pair);
+    int ok = cdist_result_size() == sizeof(cdist_result) && cdist_pair_size() == sizeof(cdist_pair)
+             && cdist_contact_size() == sizeof(cdist_contact) && cdist_grad_size() == sizeof(cdist_grad)
+             && cdist_swept_size(0) == sizeof(cdist_sphere) && cdist_swept_size(1) == sizeof(cdist_capsule)
+             && cdist_swept_size(2) == sizeof(cdist_torus) && cdist_swept_size(3) == sizeof(cdist_rounded_disk)
+             && cdist_kind_size_a(CDIST_KIND_CURVE_CIRCLE) == sizeof(cdist_curve)
+             && cdist_contact_flag_core_touch() == CDIST_CONTACT_CORE_TOUCH
+             && cdist_grad_flag_not_differentiable() == CDIST_GRAD_NOT_DIFFERENTIABLE;
 #ifndef LAYOUT_CHECKED
     printf("test_layout: enumerator values checked; struct layout skipped (documented for x86-64 only)\n");
 #endif
