@@ -36,7 +36,7 @@ for opt in sorted(options):
 for value in re.findall(r"--(?:method|format)=([a-z|]+)", helptext):
     for v in value.split("|"):
         check(v in text["circledist.1"], "circledist.1 does not mention '%s'" % v)
-kinds = re.findall(r"^  ([a-z][a-z0-9]{1,3}) +\S", helptext.split("Query kinds")[-1], re.M)
+kinds = re.findall(r"^  ([A-Za-z][A-Za-z0-9]{1,3}) +\S", helptext.split("Query kinds")[-1], re.M)
 check(len(kinds) >= 10, "query kinds found in --help: %d" % len(kinds))
 for kind in kinds:
     check(re.search(r"^%s\t" % kind, text["circledist.1"], re.M) is not None,
