@@ -2,7 +2,7 @@
 # SPDX-License-Identifier: MIT
 # The whole test suite: a release-style build and an ASan/UBSan build, every meson test in
 # both except the `slow` suite (long brute-force runs), which runs too when CIRCLEDIST_SLOW=1
-# (as .ci/run does). Prints a closing "N passed, N failed" line.
+# (as .ci/run does), together with a static-only build. Prints a closing "N passed, N failed" line.
 # usage: [CIRCLEDIST_SLOW=1] scripts/test.sh
 set -u
 cd "$(dirname "$0")/.."
@@ -39,6 +39,11 @@ run_suite build || status=1
 # run about 3x faster than at -O0 and ASan still reports every bad access it can see.
 ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 \
   run_suite build-sanitize -Db_sanitize=address,undefined -Db_lundef=false -Dbuildtype=debugoptimized || status=1
+# With CIRCLEDIST_SLOW=1 (CI): also a static-only build (-Ddefault_library=static), whose tests
+# skip only what needs a shared library (ctypes, exported-symbol checks).
+if [ "${CIRCLEDIST_SLOW:-0}" = 1 ]; then
+  run_suite build-static -Ddefault_library=static || status=1
+fi
 [ "$status" -ne 0 ] && [ "$total_fail" -eq 0 ] && total_fail=1
 echo "test suites: $total_ok passed, $total_fail failed"
 exit $status
