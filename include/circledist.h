@@ -19,7 +19,10 @@
 ///   C + r (cos a U + sin a V), with a in (-pi, pi].
 /// - Thread safety: a ::cdist_query handle must be used by one thread at a time. Use one
 ///   handle per thread; distinct handles share nothing. Functions without a handle argument
-///   are thread-safe.
+///   are thread-safe. A call that finds its handle in use by another thread's call returns
+///   ::CDIST_ERR_HANDLE_BUSY at once, without touching the handle (its result, when given,
+///   is set to NaN with no pairs); the calls of the point and lines families and the option
+///   setters detect this (an atomic flag per handle, taken on entry and released on exit).
 /// - The library never aborts, exits or prints. It never changes GSL's error handler.
 #ifndef CIRCLEDIST_H
 #define CIRCLEDIST_H

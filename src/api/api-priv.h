@@ -2,6 +2,8 @@
 #ifndef CDIST_API_PRIV_H
 #define CDIST_API_PRIV_H
 
+#include <math.h>
+#include <stdatomic.h>
 #include <stddef.h>
 
 #include "circledist.h"
@@ -25,6 +27,9 @@ struct cdist_query {
     /* Scratch owned by the handle (sized by the setters) so that queries never allocate. */
     double *scratch;
     size_t scratch_len;
+    /* Set while a call uses the handle (cd_enter .. cd_leave): a second thread entering at the
+     * same time gets CDIST_ERR_HANDLE_BUSY instead of corrupting the state above. */
+    atomic_int busy;
 };
 
 
@@ -44,7 +49,13 @@ cdist_status cd_ok(cdist_query *q, cdist_result *r, int method);
 /* Check that q and r are non-NULL; on failure fills r (when it exists) and returns a status. */
 cdist_status cd_check_handle(cdist_query *q, cdist_result *r);
 cdist_status cd_check_ptr(cdist_query *q, const void *p, const char *what);
-cdist_status cd_check_point(cdist_query *q, const cdist_vec3 *p, const char *what);
+cdist_status cd_check_point_slow(cdist_query *q, const cdist_vec3 *p, const char *what);
+/* A point: finite, |components| <= CD_MAX_ABS (one comparison each: false for NaN and inf). */
+static inline cdist_status cd_check_point(cdist_query *q, const cdist_vec3 *p, const char *what)
+{
+    if (p && fabs(p->x) <= CD_MAX_ABS && fabs(p->y) <= CD_MAX_ABS && fabs(p->z) <= CD_MAX_ABS) return CDIST_OK;
+    return cd_check_point_slow(q, p, what);
+}
 cdist_status cd_check_scalar(cdist_query *q, double x, const char *what);
 /* A direction or normal: finite, non-zero, unit within the handle's tolerance (or any length
  * when unit_required is 0). Writes the unit vector and the original length. */
@@ -56,5 +67,103 @@ cdist_status cd_check_circle(cdist_query *q, const cdist_circle *c, const char *
 /* The method a family runs: AUTO (or a method the family lacks) becomes `fallback`. */
 cdist_method cd_pick_method(const cdist_query *q, unsigned available_mask, cdist_method fallback);
 #define CD_HAS(m) (1u << (m))
+
+/* ---- the one entry path (src/api/entry.c) ----
+ * Every public query function runs
+ *     st = cd_enter(q, r);  if (st) return st;
+ *     validate its inputs (cd_check_*) -> frame and scale -> family core -> write r;
+ *     return cd_leave(q, r, st, method);
+ * cd_enter checks q and r and takes the handle's in-use flag: when another call holds it, it
+ * returns CDIST_ERR_HANDLE_BUSY without touching the handle (r, when not NULL, gets the error
+ * state). The result is not pre-filled: the core writes every field on success, and cd_leave
+ * puts r in the error state (NaN, no pairs) on failure. cd_leave also turns a success with a
+ * non-finite distance into CDIST_ERR_INTERNAL (never OK with NaN), records the status and
+ * message, and releases the flag. */
+cdist_status cd_enter_slow(cdist_query *q, cdist_result *r);
+static inline cdist_status cd_enter(cdist_query *q, cdist_result *r)
+{
+    if (q && r && !atomic_exchange_explicit(&q->busy, 1, memory_order_acquire)) return CDIST_OK;
+    return cd_enter_slow(q, r);
+}
+cdist_status cd_leave_slow(cdist_query *q, cdist_result *r, cdist_status st);
+static inline cdist_status cd_leave(cdist_query *q, cdist_result *r, cdist_status st, int method)
+{
+    if (st == CDIST_OK && isfinite(r->distance)) {
+        r->method = method;
+        q->last_status = CDIST_OK;
+        q->message[0] = '\0';
+        atomic_store_explicit(&q->busy, 0, memory_order_release);
+        return CDIST_OK;
+    }
+    return cd_leave_slow(q, r, st);
+}
+/* The same flag for the option setters (no result). */
+cdist_status cd_enter_setter(cdist_query *q);
+void cd_leave_setter(cdist_query *q);
+/* The error state of a result: NaN distances, points and parameters, no pairs. */
+void cd_result_set_error(cdist_result *r);
+/* The unused fields of a successful result: pairs from index n on NaN, iterations and reserved
+ * zero. */
+void cd_result_finish(cdist_result *r, int n);
+
+/* Scale a validated result back: distances and points times `up` (a power of two). */
+void cd_result_unscale(cdist_result *r, double up);
+/* A circle scaled by a power of two about the origin (centre and radius; n, u, v unchanged). */
+static inline void cd_circle_scale(cd_circle *c, double s)
+{
+    c->c = v_scale(s, c->c);
+    c->r *= s;
+}
+
+/* A circle or disk checked without building its basis (c, n, r only; u, v left unset), for
+ * families that do not need it; cd_frame_basis completes it. */
+cdist_status cd_check_circle_nobasis(cdist_query *q, const cdist_circle *c, const char *what, cd_circle *out);
+static inline void cd_frame_basis(cd_circle *c) { v_basis(c->n, &c->u, &c->v); }
+
+/* ---- the family table (src/api/family.c) ----
+ * One row per query family, indexed like the public cdist_kind numbers of the batch API: the
+ * methods it implements, what AUTO (or a method it lacks) runs, and which methods may call GSL
+ * (AUTO and ROBUST never do). */
+typedef enum cd_fam {
+    CD_FAM_POINT_CIRCLE = 0,
+    CD_FAM_POINT_DISK = 1,
+    CD_FAM_LINE_CIRCLE = 2,
+    CD_FAM_RAY_CIRCLE = 3,
+    CD_FAM_SEGMENT_CIRCLE = 4,
+    CD_FAM_CIRCLE_CIRCLE = 5,
+    CD_FAM_LINE_DISK = 6,
+    CD_FAM_RAY_DISK = 7,
+    CD_FAM_SEGMENT_DISK = 8,
+    CD_FAM_CIRCLE_DISK = 9,
+    CD_FAM_DISK_DISK = 10,
+    CD_FAM_CURVE_CIRCLE = 11,
+    CD_FAM_CURVE_DISK = 12,
+    CD_FAM_ARC_CIRCLE = 13,
+    CD_FAM_ARC_ARC = 14,
+    CD_FAM_SEGMENT_ARC = 15,
+    CD_FAM_ARC_DISK = 16,
+    CD_FAM_HELIX_CIRCLE = 17,
+    CD_FAM_HELIX_DISK = 18,
+    CD_FAM_BEZIER3_CIRCLE = 19,
+    CD_FAM_BEZIER3_DISK = 20,
+    CD_FAM_COUNT
+} cd_fam;
+
+typedef struct cd_family {
+    const char *name;         /* "point_circle", ... (the cdist_kind_name of the batch API) */
+    unsigned methods;         /* CD_HAS(m) for every method the family implements */
+    cdist_method auto_method; /* what AUTO and an unimplemented method run */
+    unsigned gsl_methods;     /* methods that may call GSL */
+} cd_family;
+
+extern const cd_family cd_family_table[CD_FAM_COUNT];
+
+/* The method family f runs for the handle's method. */
+static inline cdist_method cd_family_method(const cdist_query *q, cd_fam f)
+{
+    const cd_family *t = &cd_family_table[f];
+    cdist_method m = q->method;
+    return (m == CDIST_METHOD_AUTO || !(t->methods & CD_HAS(m))) ? t->auto_method : m;
+}
 
 #endif

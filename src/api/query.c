@@ -89,7 +89,7 @@ static cdist_status setter_ok(cdist_query *q)
     return CDIST_OK;
 }
 
-cdist_status cdist_query_set_method(cdist_query *q, cdist_method method)
+static cdist_status query_set_method_locked(cdist_query *q, cdist_method method)
 {
     if (!q) return CDIST_ERR_NULL_ARGUMENT;
     if ((unsigned)method > CDIST_METHOD_ITERATION)
@@ -98,9 +98,18 @@ cdist_status cdist_query_set_method(cdist_query *q, cdist_method method)
     return setter_ok(q);
 }
 
+cdist_status cdist_query_set_method(cdist_query *q, cdist_method method)
+{
+    cdist_status st = cd_enter_setter(q);
+    if (st) return st;
+    st = query_set_method_locked(q, method);
+    cd_leave_setter(q);
+    return st;
+}
+
 cdist_method cdist_query_get_method(const cdist_query *q) { return q ? q->method : CDIST_METHOD_AUTO; }
 
-cdist_status cdist_query_set_unit_tolerance(cdist_query *q, double tol)
+static cdist_status query_set_unit_tolerance_locked(cdist_query *q, double tol)
 {
     if (!q) return CDIST_ERR_NULL_ARGUMENT;
     if (!(tol >= 0.0)) return cd_fail(q, CDIST_ERR_BAD_OPTION, "unit tolerance must be >= 0 (got %g)", tol);
@@ -108,9 +117,18 @@ cdist_status cdist_query_set_unit_tolerance(cdist_query *q, double tol)
     return setter_ok(q);
 }
 
+cdist_status cdist_query_set_unit_tolerance(cdist_query *q, double tol)
+{
+    cdist_status st = cd_enter_setter(q);
+    if (st) return st;
+    st = query_set_unit_tolerance_locked(q, tol);
+    cd_leave_setter(q);
+    return st;
+}
+
 double cdist_query_get_unit_tolerance(const cdist_query *q) { return q ? q->unit_tol : CD_DEFAULT_UNIT_TOL; }
 
-cdist_status cdist_query_set_curve_samples(cdist_query *q, int samples)
+static cdist_status query_set_curve_samples_locked(cdist_query *q, int samples)
 {
     if (!q) return CDIST_ERR_NULL_ARGUMENT;
     if (samples < 8 || samples > CD_MAX_CURVE_SAMPLES)
@@ -127,15 +145,33 @@ cdist_status cdist_query_set_curve_samples(cdist_query *q, int samples)
     return setter_ok(q);
 }
 
+cdist_status cdist_query_set_curve_samples(cdist_query *q, int samples)
+{
+    cdist_status st = cd_enter_setter(q);
+    if (st) return st;
+    st = query_set_curve_samples_locked(q, samples);
+    cd_leave_setter(q);
+    return st;
+}
+
 int cdist_query_get_curve_samples(const cdist_query *q) { return q ? q->curve_samples : CD_DEFAULT_CURVE_SAMPLES; }
 
-cdist_status cdist_query_set_max_iterations(cdist_query *q, int max_iterations)
+static cdist_status query_set_max_iterations_locked(cdist_query *q, int max_iterations)
 {
     if (!q) return CDIST_ERR_NULL_ARGUMENT;
     if (max_iterations < 1)
         return cd_fail(q, CDIST_ERR_BAD_OPTION, "max iterations must be >= 1 (got %d)", max_iterations);
     q->max_iterations = max_iterations;
     return setter_ok(q);
+}
+
+cdist_status cdist_query_set_max_iterations(cdist_query *q, int max_iterations)
+{
+    cdist_status st = cd_enter_setter(q);
+    if (st) return st;
+    st = query_set_max_iterations_locked(q, max_iterations);
+    cd_leave_setter(q);
+    return st;
 }
 
 int cdist_query_get_max_iterations(const cdist_query *q) { return q ? q->max_iterations : CD_DEFAULT_MAX_ITERATIONS; }

@@ -6,6 +6,10 @@
 
 cdist_status cd_check_handle(cdist_query *q, cdist_result *r)
 {
+    if (q && atomic_load_explicit(&q->busy, memory_order_acquire)) {
+        if (r) cd_result_set_error(r);
+        return CDIST_ERR_HANDLE_BUSY; /* a call through cd_enter holds the handle */
+    }
     cd_begin(q, r);
     if (!q) return CDIST_ERR_NULL_ARGUMENT;
     if (!r) return cd_fail(q, CDIST_ERR_NULL_ARGUMENT, "result pointer is NULL");
@@ -24,7 +28,7 @@ cdist_status cd_check_scalar(cdist_query *q, double x, const char *what)
     return CDIST_OK;
 }
 
-cdist_status cd_check_point(cdist_query *q, const cdist_vec3 *p, const char *what)
+cdist_status cd_check_point_slow(cdist_query *q, const cdist_vec3 *p, const char *what)
 {
     if (!p) return cd_fail(q, CDIST_ERR_NULL_ARGUMENT, "%s pointer is NULL", what);
     if (!v_isfinite(*p))
@@ -35,17 +39,31 @@ cdist_status cd_check_point(cdist_query *q, const cdist_vec3 *p, const char *wha
     return CDIST_OK;
 }
 
+/* A non-zero vector d (finite, |components| <= CD_MAX_ABS) scaled exactly by a power of two so
+ * that its largest component is about 1: its squared length neither overflows nor underflows,
+ * also for subnormal components (1 / max|d_i| would overflow there). */
+static vec3 scaled_direction(vec3 d, double m, double *down)
+{
+    if (m >= 0x1p-500) {
+        *down = m; /* 1 / m is finite: the original arithmetic, kept bit for bit */
+        return v_scale(1.0 / m, d);
+    }
+    int e = cd_scale_exponent(m);
+    *down = cd_pow2(e);
+    return v_scale(cd_pow2(-e), d);
+}
+
 cdist_status cd_check_direction(cdist_query *q, const cdist_vec3 *d, const char *what, int unit_required, vec3 *unit,
                                 double *length)
 {
     cdist_status st = cd_check_point(q, d, what);
     if (st) return st;
-    /* Scale first so the length neither overflows nor underflows. */
     double m = v_maxabs(*d);
     if (m == 0.0) return cd_fail(q, CDIST_ERR_ZERO_VECTOR, "%s has zero length", what);
-    vec3 s = v_scale(1.0 / m, *d);
+    double down;
+    vec3 s = scaled_direction(*d, m, &down);
     double ns = v_norm(s);
-    double len = m * ns;
+    double len = ns * down; /* may underflow for a subnormal vector: only reported, never divided by */
     if (unit_required && q && !(fabs(len - 1.0) <= q->unit_tol))
         return cd_fail(q, CDIST_ERR_NOT_UNIT,
                        "%s has length %.17g, not 1 (tolerance %g; see cdist_query_set_unit_tolerance)", what, len,
@@ -55,31 +73,30 @@ cdist_status cd_check_direction(cdist_query *q, const cdist_vec3 *d, const char 
     return CDIST_OK;
 }
 
-/* Validation without message formatting: a valid circle formats no strings (that was a fifth
- * of a random circle-circle query). Returns 0 on any doubt; cd_check_circle then finds and
- * reports the problem. */
-static int circle_fast(const cdist_query *q, const cdist_circle *c, cd_circle *out)
+/* Validation without message formatting: a valid circle formats no strings. One comparison
+ * per number covers NaN, infinity and the range (|x| <= CD_MAX_ABS is false for all three);
+ * the normal's squared length is taken directly when it is safely in range. Returns 0 on any
+ * doubt; the slow path then finds and reports the problem, or accepts the circle. */
+static inline int circle_fast(const cdist_query *q, const cdist_circle *c, cd_circle *out)
 {
     vec3 p = c->center, d = c->normal;
     double r = c->radius;
-    if (!v_isfinite(p) || !v_isfinite(d) || !isfinite(r)) return 0;
-    if (v_maxabs(p) > CD_MAX_ABS || v_maxabs(d) > CD_MAX_ABS || fabs(r) > CD_MAX_ABS || r < 0.0) return 0;
+    if (!(fabs(p.x) <= CD_MAX_ABS && fabs(p.y) <= CD_MAX_ABS && fabs(p.z) <= CD_MAX_ABS && r >= 0.0 &&
+          r <= CD_MAX_ABS))
+        return 0;
     double m = v_maxabs(d);
-    if (m == 0.0) return 0;
-    vec3 sd = v_scale(1.0 / m, d); /* same arithmetic as cd_check_direction */
+    if (!(m >= 0x1p-500 && m <= CD_MAX_ABS)) return 0; /* also NaN or infinite components */
+    vec3 sd = v_scale(1.0 / m, d); /* the arithmetic of cd_check_direction before its scaling fix */
     double ns = v_norm(sd), len = m * ns;
     if (!(fabs(len - 1.0) <= q->unit_tol)) return 0;
     out->n = v_scale(1.0 / ns, sd);
     out->c = p;
     out->r = r;
-    v_basis(out->n, &out->u, &out->v);
     return 1;
 }
 
-cdist_status cd_check_circle(cdist_query *q, const cdist_circle *c, const char *what, cd_circle *out)
+static cdist_status circle_slow(cdist_query *q, const cdist_circle *c, const char *what, cd_circle *out)
 {
-    if (!c) return cd_fail(q, CDIST_ERR_NULL_ARGUMENT, "%s pointer is NULL", what);
-    if (q && circle_fast(q, c, out)) return CDIST_OK;
     char buf[64];
     snprintf(buf, sizeof buf, "%s centre", what);
     cdist_status st = cd_check_point(q, &c->center, buf);
@@ -93,8 +110,21 @@ cdist_status cd_check_circle(cdist_query *q, const cdist_circle *c, const char *
     if (c->radius < 0.0) return cd_fail(q, CDIST_ERR_NEGATIVE_RADIUS, "%s radius is negative (%g)", what, c->radius);
     out->c = c->center;
     out->r = c->radius;
-    v_basis(out->n, &out->u, &out->v);
     return CDIST_OK;
+}
+
+cdist_status cd_check_circle_nobasis(cdist_query *q, const cdist_circle *c, const char *what, cd_circle *out)
+{
+    if (!c) return cd_fail(q, CDIST_ERR_NULL_ARGUMENT, "%s pointer is NULL", what);
+    if (q && circle_fast(q, c, out)) return CDIST_OK;
+    return circle_slow(q, c, what, out);
+}
+
+cdist_status cd_check_circle(cdist_query *q, const cdist_circle *c, const char *what, cd_circle *out)
+{
+    cdist_status st = cd_check_circle_nobasis(q, c, what, out);
+    if (st == CDIST_OK) cd_frame_basis(out);
+    return st;
 }
 
 cdist_method cd_pick_method(const cdist_query *q, unsigned available_mask, cdist_method fallback)

@@ -13,7 +13,8 @@
  * be proved to exclude QR failure, so the ROBUST methods, which AUTO uses, never call GSL.
  * If a host has turned GSL's handler off and GSL still fails, the status is returned and the
  * caller falls back. */
-#include "poly.h"
+#include "base/poly.h"
+#include "base/roots.h"
 
 #include <float.h>
 #include <math.h>
@@ -69,19 +70,22 @@ static void sort_ascending(double *x, int n)
     }
 }
 
+typedef struct poly_ref {
+    const double *a;
+    int deg;
+} poly_ref;
+
+static double poly_fdf(const void *ctx, double x, double *df)
+{
+    const poly_ref *p = ctx;
+    return cd_poly_eval(p->a, p->deg, x, df);
+}
+
 /* A few Newton steps on the polynomial; a step is kept only while it reduces |p|. */
 static double polish(const double *a, int deg, double x)
 {
-    double dp, p = cd_poly_eval(a, deg, x, &dp);
-    for (int it = 0; it < 4 && p != 0.0 && dp != 0.0; it++) {
-        double xn = x - p / dp, dpn;
-        double pn = cd_poly_eval(a, deg, xn, &dpn);
-        if (!(fabs(pn) < fabs(p))) break;
-        x = xn;
-        p = pn;
-        dp = dpn;
-    }
-    return x;
+    poly_ref p = {a, deg};
+    return cd_root_polish(poly_fdf, &p, x, 0.0, 0.0, 4);
 }
 
 /* Fujiwara's bound on the moduli of the roots of sum a[i] x^i (a[n] != 0). */
@@ -105,7 +109,7 @@ static int nearly_even_or_odd(const double *a, int n)
         if (i % 2) odd = fmax(odd, fabs(a[i]));
         else even = fmax(even, fabs(a[i]));
     }
-    return fmin(even, odd) <= 1e-6 * fmax(even, odd);
+    return fmin(even, odd) <= CD_POLY_EVEN_REL * fmax(even, odd);
 }
 
 /* c(y) = a(y + s): synthetic division (Horner's scheme) n times, O(n^2). */
@@ -130,7 +134,7 @@ int cd_poly_real_roots(cd_poly_ws *ws, const double *coef, int degree, double im
      * relative to the largest: they only contribute roots of magnitude ~1/eps. */
     for (int i = 0; i <= degree; i++) a[i] = coef[i] / maxc;
     int deg = degree;
-    while (deg > 0 && fabs(a[deg]) <= 4.0 * DBL_EPSILON) deg--;
+    while (deg > 0 && fabs(a[deg]) <= CD_POLY_LEAD_ULPS * DBL_EPSILON) deg--;
     int n = 0;
     /* Exact zero constant terms: roots at 0, factored out. */
     int low = 0;

@@ -26,13 +26,8 @@
 
 #define EPS DBL_EPSILON
 
-/* Multiply-add in the model's hot loop: one rounding with a hardware fma, two otherwise (fma()
- * without hardware support is a slow library call; the model needs no single rounding there). */
-#ifdef FP_FAST_FMA
-#define MADD(a, b, c) fma(a, b, c)
-#else
-#define MADD(a, b, c) ((a) * (b) + (c))
-#endif
+/* Multiply-add in the model's hot loop (the FMA policy of base/numeric.h). */
+#define MADD(a, b, c) CD_MADD(a, b, c)
 
 typedef struct lc_model {
     double r;         /* radius (scaled) */
@@ -59,20 +54,23 @@ static inline double fp_at(const lc_model *m, double h, double x2, int side)
     return MADD(m->a, h, m->m0 * x2 * (rho_minus_r(m, x2, rho) / rho));
 }
 
-static inline double fp(const lc_model *m, double s)
+/* F'/2 and F''/2 together (the solvers' callback, base/roots.h): one square root and one
+ * division. With w = 1 / (rho (rho + r)): (rho - r)/rho = num w and 1/rho = (rho + r) w. */
+static inline double fdf(const void *ctx, double s, double *df)
 {
-    return fp_at(m, MADD(m->a, s, m->h), MADD(m->m0, s, m->c2), 0);
-}
-
-/* F''/2 */
-static inline double fpp(const lc_model *m, double s)
-{
-    double x2 = MADD(m->m0, s, m->c2);
+    const lc_model *m = ctx;
+    double h = MADD(m->a, s, m->h), x2 = MADD(m->m0, s, m->c2);
     double rho = sqrt(MADD(m->x1, m->x1, x2 * x2));
     double k = MADD(m->a, m->a, m->m0 * m->m0);
-    if (rho == 0.0) return -INFINITY;
-    double q = m->ax1 / rho;
-    return k - m->r * m->m0 * m->m0 * q * q / rho;
+    if (rho == 0.0) {
+        *df = -INFINITY;
+        return m->a * h;
+    }
+    double w = 1.0 / (rho * (rho + m->r));
+    double num = MADD(x2, x2, (m->ax1 - m->r) * (m->ax1 + m->r));
+    double ir = (rho + m->r) * w, q = m->ax1 * ir;
+    *df = k - m->r * m->m0 * m->m0 * q * q * ir;
+    return MADD(m->a, h, m->m0 * x2 * (num * w));
 }
 
 /* Squared distance (scaled) at s. */
@@ -84,51 +82,17 @@ static inline double f_at(const lc_model *m, double s)
     return MADD(h, h, dr * dr);
 }
 
-/* Root of F' in [lo, hi] where F' increases: Newton steps safeguarded by bisection (a Newton
- * step is taken only when it stays inside the bracket and shrinks faster than bisection would,
- * as in rtsafe). Every operation commutes with s -> -s when F' is odd, so mirrored brackets give
- * mirrored roots. */
-static double solve(const lc_model *m, double lo, double hi)
+/* Root of F' in [lo, hi] where F' increases: safeguarded Newton (base/roots.h), which
+ * commutes with s -> -s when F' is odd, so mirrored brackets give mirrored roots. */
+static inline double solve(const lc_model *m, double lo, double hi)
 {
-    if (!(lo < hi)) return lo;
-    double x = 0.5 * (lo + hi), dxold = hi - lo, dx = dxold;
-    for (int it = 0; it < 200; it++) {
-        double f = fp(m, x);
-        if (f == 0.0) return x;
-        if (f < 0.0) lo = x;
-        else hi = x;
-        double df = fpp(m, x), step = f / df, xn = x - step;
-        if (df > 0.0 && (fabs(step) <= 2.0 * EPS * fabs(x) || fabs(step) <= 0x1p-62)) return xn; /* converged */
-        if (!(df > 0.0) || !(xn > lo && xn < hi) || fabs(2.0 * f) > fabs(dxold * df)) {
-            dxold = dx;
-            xn = 0.5 * (lo + hi);
-            dx = fabs(xn - x);
-        } else {
-            dxold = dx;
-            dx = fabs(xn - x);
-        }
-        x = xn;
-        if (dx <= 2.0 * EPS * fabs(x) || !(hi - lo > 0x1p-62)) break;
-    }
-    return x;
+    return cd_root_newton(fdf, m, lo, hi, +1, CD_ROOT_REL_ULPS * EPS, CD_ROOT_ABS, CD_ROOT_MAX_ITER);
 }
 
 /* Newton on F' from a polynomial root, kept only while |F'| decreases. */
-static double polish(const lc_model *m, double x)
+static inline double polish(const lc_model *m, double x)
 {
-    double f = fp(m, x);
-    for (int it = 0; it < 60 && f != 0.0; it++) {
-        double df = fpp(m, x);
-        if (!(df != 0.0) || !isfinite(df)) break;
-        double xn = x - f / df;
-        double fn = fp(m, xn);
-        if (!(fabs(fn) < fabs(f))) break;
-        double dx = fabs(xn - x);
-        x = xn;
-        f = fn;
-        if (dx <= 2.0 * EPS * fabs(x) || dx <= 0x1p-62) break;
-    }
-    return x;
+    return cd_root_polish(fdf, m, x, CD_ROOT_REL_ULPS * EPS, CD_ROOT_ABS, CD_POLISH_MAX_ITER);
 }
 
 /* ---- candidates ---- */
@@ -140,6 +104,7 @@ typedef struct lc_ctx {
     vec3 B, M;        /* the caller's line (unscaled, relative to the centre) */
     double t0;        /* t of B0 */
     double sigma;     /* scale factor (power of two) */
+    double up;        /* 1 / sigma */
     double uO;        /* frame origin, scaled u */
     double rs;        /* scaled radius */
     double eqtol;     /* on-axis tolerance for rho (scaled) */
@@ -160,17 +125,12 @@ static void push(lc_ctx *x, double d2, vec3 P, vec3 K, double t, double ang, int
     x->n++;
 }
 
-static double angle2(double x, double y)
-{
-    if (x == 0.0 && y == 0.0) return NAN;
-    double a = atan2(y, x);
-    return (a == -M_PI) ? M_PI : a;
-}
-
 /* Circle point in direction (X, Y) of the basis; (0, 0) gives the representative angle 0. */
 static vec3 circle_pt(const cd_circle *c, double X, double Y, double *ang)
 {
-    double n = hypot(X, Y);
+    double n2 = MADD(X, X, Y * Y);
+    /* the core runs on scaled input (X, Y ~ 1): sqrt, with hypot only as a guard */
+    double n = (n2 >= 0x1p-1000 && n2 <= 0x1p1000) ? sqrt(n2) : hypot(X, Y);
     if (c->r == 0.0) {
         *ang = NAN;
         return v3(0, 0, 0);
@@ -179,7 +139,7 @@ static vec3 circle_pt(const cd_circle *c, double X, double Y, double *ang)
         *ang = 0.0;
         return v_scale(c->r, c->u);
     }
-    *ang = angle2(X, Y);
+    *ang = cd_polar_angle(X, Y);
     return v_add(v_scale(c->r * (X / n), c->u), v_scale(c->r * (Y / n), c->v));
 }
 
@@ -189,8 +149,8 @@ static void offer_model(lc_ctx *x, const lc_model *m, double s)
     double h = MADD(m->a, s, m->h), x2 = MADD(m->m0, s, m->c2);
     double rho = sqrt(MADD(m->x1, m->x1, x2 * x2));
     double dr = rho_minus_r(m, x2, rho);
-    double d2 = ldexp(MADD(h, h, dr * dr), -2 * ilogb(x->sigma));
-    double t = x->t0 + (x->uO + s) / x->sigma;
+    double d2 = (MADD(h, h, dr * dr) * x->up) * x->up;
+    double t = x->t0 + (x->uO + s) * x->up; /* exact: a power of two */
     vec3 P = v_axpy(x->B, t, x->M);
     /* X = x1 e1 + x2 e2, e1 = (-e2y, e2x) */
     double X = MADD(m->x1, -m->e2y, x2 * m->e2x), Y = MADD(m->x1, m->e2x, x2 * m->e2y);
@@ -207,7 +167,7 @@ static void offer_end(lc_ctx *x, double t)
     vec3 np = v_cross(c->n, P);
     double h = v_dot(c->n, P), rho = v_norm(np);
     vec3 w = v_cross(np, c->n);
-    int on_axis = rho <= 2.0 * EPS * v_norm(P);
+    int on_axis = rho <= CD_ON_AXIS_ULPS * EPS * v_norm(P);
     double ang;
     vec3 K = on_axis ? circle_pt(c, 0, 0, &ang) : circle_pt(c, v_dot(c->u, w), v_dot(c->v, w), &ang);
     double dr = rho - c->r;
@@ -227,13 +187,12 @@ static void merge_basins(lc_ctx *x, const lc_model *m, double tol)
             x->cand[j] = x->cand[j - 1];
             x->cand[j - 1] = tc;
         }
-    int e = ilogb(x->sigma);
     for (int i = 0; i + 1 < x->n;) {
         double sa = (x->cand[i].param[0] - x->t0) * x->sigma - x->uO;
         double sb = (x->cand[i + 1].param[0] - x->t0) * x->sigma - x->uO;
         double fmaxv = 0.0;
         for (int k = 1; k <= 3; k++) fmaxv = fmax(fmaxv, f_at(m, sa + 0.25 * k * (sb - sa)));
-        double dmid = ldexp(sqrt(fmaxv), -e);
+        double dmid = sqrt(fmaxv) * x->up;
         double d0 = sqrt(x->cand[i].d2), d1 = sqrt(x->cand[i + 1].d2);
         if (dmid > fmax(d0, d1) + tol) {
             i++;
@@ -249,7 +208,7 @@ static void merge_basins(lc_ctx *x, const lc_model *m, double tol)
 
 /* §4.2: brackets from the shape of G (odd, increasing, slope at most r m0^2/|x1| at x2 = 0),
  * local minima only, each found by safeguarded bisection. */
-static void robust_roots(const lc_model *m, double smin, double smax, double *roots, int *nr)
+CD_FMA_CLONES static void robust_roots(const lc_model *m, double smin, double smax, double *roots, int *nr)
 {
     double mu = fma(m->a, m->h, m->m0 * m->c2);
     double lo = -mu - m->r * m->m0, hi = -mu + m->r * m->m0;
@@ -300,7 +259,7 @@ static void robust_roots(const lc_model *m, double smin, double smax, double *ro
  * Every real root (generous imaginary tolerance: tangent lines give a root of multiplicity 4,
  * which the solver returns spread by ~eps^(1/4)) is polished by Newton on the true F'.
  * Returns the number of candidates, or -1 when the polynomial module failed. */
-static int poly_roots(cdist_query *q, const lc_model *m, double smin, double smax, double *roots)
+CD_FMA_CLONES static int poly_roots(cdist_query *q, const lc_model *m, double smin, double smax, double *roots)
 {
     double mu = fma(m->a, m->h, m->m0 * m->c2);
     double m0 = m->m0, c2 = m->c2, r2 = m->r * m->r;
@@ -312,7 +271,7 @@ static int poly_roots(cdist_query *q, const lc_model *m, double smin, double sma
     d[1] = 2.0 * mu * A0 + mu * mu * A1 - 2.0 * r2 * A2 * m0 * c2;
     d[0] = mu * mu * A0 - r2 * A2 * c2 * c2;
     double z[4];
-    int n = cd_poly_real_roots(q->poly, d, 4, 1e-3, z);
+    int n = cd_poly_real_roots(q->poly, d, 4, CD_LC_POLY_IMAG, z);
     if (n < 0) return -1;
     int k = 0;
     for (int i = 0; i < n; i++) {
@@ -324,7 +283,7 @@ static int poly_roots(cdist_query *q, const lc_model *m, double smin, double sma
 
 /* ---- the core ---- */
 
-static cdist_status linear_circle(cdist_query *q, cdist_method method, vec3 B, vec3 M, double tmin, double tmax,
+CD_FMA_CLONES static cdist_status linear_circle(cdist_query *q, cdist_method method, vec3 B, vec3 M, double tmin, double tmax,
                                   const cd_circle *c, cd_best *b, cdist_method *used)
 {
     if (method != CDIST_METHOD_POLYNOMIAL) method = CDIST_METHOD_ROBUST;
@@ -359,13 +318,14 @@ static cdist_status linear_circle(cdist_query *q, cdist_method method, vec3 B, v
     }
 
     double S = fmax(c->r, v_norm(B0));
-    int e = ilogb(S);
-    double sg = ldexp(1.0, -e);
+    int e = cd_scale_exponent(S);
+    double sg = cd_pow2(-e);
     x.sigma = sg;
+    x.up = cd_pow2(e);
     vec3 B0s = v_scale(sg, B0);
     double rs = c->r * sg;
     x.rs = rs;
-    x.eqtol = 4.0 * EPS * fmax(1.0, sg * v_norm(B));
+    x.eqtol = CD_LC_AXIS_ULPS * EPS * fmax(1.0, sg * v_norm(B));
     umin *= sg;
     umax *= sg;
 
@@ -381,7 +341,7 @@ static cdist_status linear_circle(cdist_query *q, cdist_method method, vec3 B, v
         goto done;
     }
 
-    if (m0 <= 4.0 * EPS) {
+    if (m0 <= CD_LC_PERP_ULPS * EPS) {
         /* Perpendicular to the plane (§4.1 cases 1, 2): F = (h0 + a u)^2 + (rho - r)^2 with rho
          * constant to rounding, so the minimum is the plane crossing, clamped to the range. On
          * the axis every circle point is equally close (equidistant, also for rays/segments). */
@@ -394,7 +354,7 @@ static cdist_status linear_circle(cdist_query *q, cdist_method method, vec3 B, v
         vec3 P = v_axpy(B, t, M);
         double ang;
         vec3 K = circle_pt(c, X, Y, &ang);
-        push(&x, ldexp(fma(h, h, dr * dr), 2 * e), P, K, t, ang, rho <= x.eqtol);
+        push(&x, (fma(h, h, dr * dr) * x.up) * x.up, P, K, t, ang, rho <= x.eqtol);
         goto done;
     }
 
@@ -447,12 +407,6 @@ done:;
     return CDIST_OK;
 }
 
-cdist_status cd_linear_circle(cdist_query *q, cdist_method method, vec3 B, vec3 M, double tmin, double tmax,
-                              const cd_circle *c, cd_best *b)
-{
-    return linear_circle(q, method, B, M, tmin, tmax, c, b, NULL);
-}
-
 cdist_status cd_linear_circle_ex(cdist_query *q, cdist_method method, vec3 B, vec3 M, double tmin, double tmax,
                                  const cd_circle *c, cd_best *b, cdist_method *used)
 {
@@ -460,8 +414,6 @@ cdist_status cd_linear_circle_ex(cdist_query *q, cdist_method method, vec3 B, ve
 }
 
 /* ---- public queries ---- */
-
-#define LC_METHODS (CD_HAS(CDIST_METHOD_POLYNOMIAL) | CD_HAS(CDIST_METHOD_ROBUST))
 
 /* Scale L for tie and distinctness tests: max(r, distance from the centre to the nearest point
  * of the line, ray or segment), the quantity ../shared/cases/README.md measures errors against. */
@@ -496,8 +448,10 @@ vec3 cd_line_near_centre(vec3 origin, vec3 D, vec3 C, double tmin, double tmax, 
     return v_add(v_axpy(hi3, t, D), lo3);
 }
 
+/* The core for origin + t D, t in [tmin, tmax] (M = D/|D|, len = |D|), circle cc; writes r
+ * (without its method) and the method that answered. */
 static cdist_status run(cdist_query *q, vec3 origin, vec3 D, vec3 M, double len, double tmin, double tmax,
-                        const cd_circle *cc, cdist_result *r)
+                        const cd_circle *cc, cdist_result *r, cdist_method *used)
 {
     double t0;
     vec3 B = cd_line_near_centre(origin, D, cc->c, tmin, tmax, &t0);
@@ -506,34 +460,49 @@ static cdist_status run(cdist_query *q, vec3 origin, vec3 D, vec3 M, double len,
     if (tmax == t0) hi = 0.0;
     cd_best b;
     cd_best_init(&b, range_scale(B, M, lo, hi, cc->r));
-    cdist_method used;
-    cdist_status st = cd_linear_circle_ex(q, cd_pick_method(q, LC_METHODS, CDIST_METHOD_ROBUST), B, M, lo, hi, cc,
-                                          &b, &used);
+    cdist_status st = cd_linear_circle_ex(q, cd_family_method(q, CD_FAM_LINE_CIRCLE), B, M, lo, hi, cc, &b, used);
     if (st) return st;
     if (b.n == 0) return cd_fail(q, CDIST_ERR_INTERNAL, "line-circle: no candidate");
     cd_best_to_result(&b, cc->c, 0, r);
+    cd_result_finish(r, r->num_pairs);
     for (int i = 0; i < r->num_pairs; i++) {
         double t = t0 + r->pairs[i].param[0] / len;
         r->pairs[i].param[0] = fmin(fmax(t, tmin), tmax);
     }
-    return cd_ok(q, r, used);
+    return CDIST_OK;
+}
+
+/* Frame and scale: the whole query scaled by 2^-e (exact) so that max(r, |origin - C|) is in
+ * [1, 2); the parameter t is unchanged (D is scaled with the origin), the
+ * distances and points are scaled back exactly. Inputs already validated. */
+static cdist_status run_scaled(cdist_query *q, vec3 origin, vec3 D, vec3 M, double len, double tmin, double tmax,
+                               cd_circle cc, cdist_result *r, cdist_method *used)
+{
+    int e = cd_lines_scale_exponent(origin, NULL, &cc);
+    double down = cd_pow2(-e);
+    cd_circle_scale(&cc, down);
+    cdist_status st = run(q, v_scale(down, origin), v_scale(down, D), M, len * down, tmin, tmax, &cc, r, used);
+    if (st == CDIST_OK) cd_result_unscale(r, cd_pow2(e));
+    return st;
 }
 
 static cdist_status linear_public(cdist_query *q, const cdist_vec3 *origin, const cdist_vec3 *dir, const void *obj,
                                   int is_ray, double tmin, double tmax, const cdist_circle *c, cdist_result *r)
 {
-    cdist_status st = cd_check_handle(q, r);
+    cdist_status st = cd_enter(q, r);
     if (st) return st;
-    if ((st = cd_check_ptr(q, obj, is_ray ? "ray" : "line"))) return st;
     cd_circle cc;
     vec3 M;
     double len;
-    if ((st = cd_check_point(q, origin, is_ray ? "ray origin" : "line origin")) ||
-        (st = cd_check_direction(q, dir, is_ray ? "ray direction" : "line direction", 1, &M, &len)) ||
-        (st = cd_check_circle(q, c, "circle", &cc)))
-        return st;
-    /* t is reported for the direction as passed */
-    return run(q, *origin, *dir, M, len, tmin, tmax, &cc, r);
+    cdist_method used = CDIST_METHOD_ROBUST;
+    if (!(st = cd_check_ptr(q, obj, is_ray ? "ray" : "line")) &&
+        !(st = cd_check_point(q, origin, is_ray ? "ray origin" : "line origin")) &&
+        !(st = cd_check_direction(q, dir, is_ray ? "ray direction" : "line direction", 1, &M, &len)) &&
+        !(st = cd_check_circle(q, c, "circle", &cc))) {
+        /* t is reported for the direction as passed */
+        st = run_scaled(q, *origin, *dir, M, len, tmin, tmax, cc, r, &used);
+    }
+    return cd_leave(q, r, st, used);
 }
 
 cdist_status cdist_line_circle(cdist_query *q, const cdist_line *l, const cdist_circle *c, cdist_result *r)
@@ -548,32 +517,32 @@ cdist_status cdist_ray_circle(cdist_query *q, const cdist_ray *l, const cdist_ci
 
 cdist_status cdist_segment_circle(cdist_query *q, const cdist_segment *s, const cdist_circle *c, cdist_result *r)
 {
-    cdist_status st = cd_check_handle(q, r);
+    cdist_status st = cd_enter(q, r);
     if (st) return st;
-    if ((st = cd_check_ptr(q, s, "segment"))) return st;
     cd_circle cc;
-    if ((st = cd_check_point(q, &s->p0, "segment p0")) || (st = cd_check_point(q, &s->p1, "segment p1")) ||
-        (st = cd_check_circle(q, c, "circle", &cc)))
-        return st;
+    cdist_method used = cd_family_method(q, CD_FAM_SEGMENT_CIRCLE);
+    if ((st = cd_check_ptr(q, s, "segment")) || (st = cd_check_point(q, &s->p0, "segment p0")) ||
+        (st = cd_check_point(q, &s->p1, "segment p1")) || (st = cd_check_circle(q, c, "circle", &cc)))
+        return cd_leave(q, r, st, used);
     vec3 D = v_sub(s->p1, s->p0);
     if (D.x == 0.0 && D.y == 0.0 && D.z == 0.0) {
         /* p0 == p1: the segment is a point; s = 0. */
-        vec3 rel = v_sub(s->p0, cc.c);
-        cd_best b;
-        cd_best_init(&b, fmax(cc.r, v_norm(rel)));
-        cd_point_circle_core(rel, &cc, &b, 0);
-        cd_best_to_result(&b, cc.c, 0, r);
-        for (int i = 0; i < r->num_pairs; i++) {
-            r->pairs[i].point[0] = s->p0;
-            r->pairs[i].param[0] = 0.0;
-        }
-        return cd_ok(q, r, cd_pick_method(q, LC_METHODS, CDIST_METHOD_ROBUST));
+        cd_point_result(s->p0, &cc, 0, r);
+        r->pairs[0].param[0] = 0.0;
+        return cd_leave(q, r, CDIST_OK, used);
     }
-    vec3 M;
+    /* scaled before D is normalised, so that 2^k times the input gives exactly 2^k times the
+     * answer (the normalisation of a tiny D takes another path) */
+    int e = cd_lines_scale_exponent(s->p0, &s->p1, &cc);
+    double down = cd_pow2(-e);
+    cd_circle_scale(&cc, down);
+    vec3 Ds = v_scale(down, D), M;
     double len;
-    if ((st = cd_check_direction(q, &D, "segment direction p1 - p0", 0, &M, &len))) return st;
-    if ((st = run(q, s->p0, D, M, len, 0.0, 1.0, &cc, r))) return st;
-    for (int i = 0; i < r->num_pairs; i++)
-        if (r->pairs[i].param[0] == 0.0) r->pairs[i].point[0] = s->p0; /* exactly the caller's start point */
-    return CDIST_OK;
+    if (!(st = cd_check_direction(q, &Ds, "segment direction p1 - p0", 0, &M, &len)) &&
+        !(st = run(q, v_scale(down, s->p0), Ds, M, len, 0.0, 1.0, &cc, r, &used))) {
+        cd_result_unscale(r, cd_pow2(e));
+        for (int i = 0; i < r->num_pairs; i++)
+            if (r->pairs[i].param[0] == 0.0) r->pairs[i].point[0] = s->p0; /* exactly the caller's start point */
+    }
+    return cd_leave(q, r, st, used);
 }

@@ -24,7 +24,7 @@ static void lin_offer(vec3 B, vec3 M, double t, const cd_circle *d, cd_best *b)
     for (int i = 0; i < tmp.n; i++) cd_best_offer(b, tmp.c[i].d2, tmp.c[i].p[0], tmp.c[i].p[1], t, tmp.c[i].param[1]);
 }
 
-static cdist_status linear_disk(cdist_query *q, cdist_method method, vec3 B, vec3 M, double tmin, double tmax,
+CD_FMA_CLONES static cdist_status linear_disk(cdist_query *q, cdist_method method, vec3 B, vec3 M, double tmin, double tmax,
                                 const cd_circle *d, cd_best *b, cdist_method *used)
 {
     *used = method == CDIST_METHOD_POLYNOMIAL ? method : CDIST_METHOD_ROBUST;
@@ -56,7 +56,7 @@ static cdist_status linear_disk(cdist_query *q, cdist_method method, vec3 B, vec
     cdist_status st;
     if (lo <= hi) {
         /* The piece over the disk. */
-        if (fabs(mn) <= 4.0 * DBL_EPSILON) {
+        if (fabs(mn) <= CD_LD_PARALLEL_ULPS * DBL_EPSILON) {
             /* Parallel to the plane (within rounding): |h| constant over a stretch. */
             double tt = isfinite(lo) ? lo : isfinite(hi) ? hi : fmin(fmax(0.0, lo), hi);
             if (isfinite(lo) && isfinite(hi)) tt = 0.5 * (lo + hi);
@@ -107,14 +107,11 @@ static cdist_status linear_disk(cdist_query *q, cdist_method method, vec3 B, vec
     return CDIST_OK;
 }
 
-cdist_status cd_linear_disk(cdist_query *q, cdist_method method, vec3 B, vec3 M, double tmin, double tmax,
-                            const cd_circle *d, cd_best *b)
+cdist_status cd_linear_disk_ex(cdist_query *q, cdist_method method, vec3 B, vec3 M, double tmin, double tmax,
+                               const cd_circle *d, cd_best *b, cdist_method *used)
 {
-    cdist_method used;
-    return linear_disk(q, method, B, M, tmin, tmax, d, b, &used);
+    return linear_disk(q, method, B, M, tmin, tmax, d, b, used);
 }
-
-#define CD_LINE_METHODS (CD_HAS(CDIST_METHOD_POLYNOMIAL) | CD_HAS(CDIST_METHOD_ROBUST))
 
 /* The point of the segment p0 + s (p1 - p0), s in [0, 1], nearest C, relative to C, from the
  * exact differences p0 - C and p1 - p0 (a rounded p1 - p0 would tilt the segment: 1e-8 off at
@@ -143,91 +140,95 @@ static vec3 segment_near_centre(vec3 p0, vec3 p1, vec3 C, double *s0)
 
 /* Shared driver: the linear object is origin + t D for t in [tmin, tmax], D exactly as the
  * caller gave it (|D| = len, unit direction M = D / len). The parameter reported is t.
- * p1 (segments only): the end point, so that origin - C and p1 - origin are taken exactly. */
+ * p1 (segments only): the end point, so that origin - C and p1 - origin are taken exactly.
+ * Writes r (without its method) and the method that answered. */
 static cdist_status linear_disk_query(cdist_query *q, vec3 origin, vec3 D, double len, vec3 M, double tmin,
-                                      double tmax, const vec3 *p1, const cd_circle *dk, cdist_result *r)
+                                      double tmax, const vec3 *p1, const cd_circle *dk, cdist_result *r,
+                                      cdist_method *used)
 {
     cd_circle d = *dk;
     vec3 offset = d.c;
     d.c = v3(0, 0, 0);
     /* Move the origin to the point of the range nearest the centre, with origin - C kept exact
      * and the line as given (not its rounded unit direction, which would tilt it by ~1e-16 rad,
-     * i.e. move it by 1e-8 at a distance of 1e8): see cd_line_near_centre in src/line_circle.c. */
+     * i.e. move it by 1e-8 at a distance of 1e8): see cd_line_near_centre in line_circle.c. */
     double t0;
     vec3 B = p1 ? segment_near_centre(origin, *p1, offset, &t0) : cd_line_near_centre(origin, D, offset, tmin, tmax, &t0);
     double lo = (tmin == t0) ? 0.0 : (tmin - t0) * len, hi = (tmax == t0) ? 0.0 : (tmax - t0) * len;
     double L = fmax(d.r, v_norm(B));
     cd_best best;
     cd_best_init(&best, L);
-    cdist_method m = cd_pick_method(q, CD_LINE_METHODS, CDIST_METHOD_ROBUST);
-    cdist_status st = linear_disk(q, m, B, M, lo, hi, &d, &best, &m);
+    cdist_status st = linear_disk(q, cd_family_method(q, CD_FAM_LINE_DISK), B, M, lo, hi, &d, &best, used);
     if (st) return st;
     if (best.n == 0) return cd_fail(q, CDIST_ERR_INTERNAL, "line-disk found no candidate");
     for (int i = 0; i < best.n; i++) best.c[i].param[0] = fmin(fmax(t0 + best.c[i].param[0] / len, tmin), tmax);
     cd_best_to_result(&best, offset, 0, r);
-    return cd_ok(q, r, m);
+    cd_result_finish(r, r->num_pairs);
+    return CDIST_OK;
+}
+
+/* Line or ray: validate, frame and scale (as in line_circle.c's run_scaled), core, result. */
+static cdist_status line_ray_disk(cdist_query *q, const void *obj, const cdist_vec3 *origin, const cdist_vec3 *dir,
+                                  int is_ray, const cdist_circle *d, cdist_result *r)
+{
+    cdist_status st = cd_enter(q, r);
+    if (st) return st;
+    vec3 M;
+    double len;
+    cd_circle dk;
+    cdist_method used = CDIST_METHOD_ROBUST;
+    if (!(st = cd_check_ptr(q, obj, is_ray ? "ray" : "line")) &&
+        !(st = cd_check_point(q, origin, is_ray ? "ray origin" : "line origin")) &&
+        !(st = cd_check_direction(q, dir, is_ray ? "ray direction" : "line direction", 1, &M, &len)) &&
+        !(st = cd_check_circle(q, d, "disk", &dk))) {
+        int e = cd_lines_scale_exponent(*origin, NULL, &dk);
+        double down = cd_pow2(-e);
+        cd_circle_scale(&dk, down);
+        st = linear_disk_query(q, v_scale(down, *origin), v_scale(down, *dir), len * down, M,
+                               is_ray ? 0.0 : -INFINITY, INFINITY, NULL, &dk, r, &used);
+        if (st == CDIST_OK) cd_result_unscale(r, cd_pow2(e));
+    }
+    return cd_leave(q, r, st, used);
 }
 
 cdist_status cdist_line_disk(cdist_query *q, const cdist_line *l, const cdist_circle *d, cdist_result *r)
 {
-    cdist_status st = cd_check_handle(q, r);
-    if (st) return st;
-    if ((st = cd_check_ptr(q, l, "line"))) return st;
-    vec3 dir;
-    double len;
-    cd_circle dk;
-    if ((st = cd_check_point(q, &l->origin, "line origin")) ||
-        (st = cd_check_direction(q, &l->direction, "line direction", 1, &dir, &len)) ||
-        (st = cd_check_circle(q, d, "disk", &dk)))
-        return st;
-    return linear_disk_query(q, l->origin, l->direction, len, dir, -INFINITY, INFINITY, NULL, &dk, r);
+    return line_ray_disk(q, l, l ? &l->origin : NULL, l ? &l->direction : NULL, 0, d, r);
 }
 
 cdist_status cdist_ray_disk(cdist_query *q, const cdist_ray *l, const cdist_circle *d, cdist_result *r)
 {
-    cdist_status st = cd_check_handle(q, r);
-    if (st) return st;
-    if ((st = cd_check_ptr(q, l, "ray"))) return st;
-    vec3 dir;
-    double len;
-    cd_circle dk;
-    if ((st = cd_check_point(q, &l->origin, "ray origin")) ||
-        (st = cd_check_direction(q, &l->direction, "ray direction", 1, &dir, &len)) ||
-        (st = cd_check_circle(q, d, "disk", &dk)))
-        return st;
-    return linear_disk_query(q, l->origin, l->direction, len, dir, 0.0, INFINITY, NULL, &dk, r);
+    return line_ray_disk(q, l, l ? &l->origin : NULL, l ? &l->direction : NULL, 1, d, r);
 }
 
 cdist_status cdist_segment_disk(cdist_query *q, const cdist_segment *s, const cdist_circle *d, cdist_result *r)
 {
-    cdist_status st = cd_check_handle(q, r);
+    cdist_status st = cd_enter(q, r);
     if (st) return st;
-    if ((st = cd_check_ptr(q, s, "segment"))) return st;
     cd_circle dk;
-    if ((st = cd_check_point(q, &s->p0, "segment p0")) || (st = cd_check_point(q, &s->p1, "segment p1")) ||
-        (st = cd_check_circle(q, d, "disk", &dk)))
-        return st;
-    vec3 M = v_sub(s->p1, s->p0);
-    double len = v_norm(M);
-    if (len == 0.0) {
+    cdist_method used = cd_family_method(q, CD_FAM_SEGMENT_DISK);
+    if ((st = cd_check_ptr(q, s, "segment")) || (st = cd_check_point(q, &s->p0, "segment p0")) ||
+        (st = cd_check_point(q, &s->p1, "segment p1")) || (st = cd_check_circle(q, d, "disk", &dk)))
+        return cd_leave(q, r, st, used);
+    vec3 D = v_sub(s->p1, s->p0);
+    if (D.x == 0.0 && D.y == 0.0 && D.z == 0.0) {
         /* A point: point-disk, with s = 0. */
-        cd_circle dd = dk;
-        vec3 offset = dd.c;
-        dd.c = v3(0, 0, 0);
-        vec3 p = v_sub(s->p0, offset);
-        cd_best best;
-        cd_best_init(&best, fmax(dd.r, v_norm(p)));
-        cd_point_disk_core(p, &dd, &best, 0);
-        for (int i = 0; i < best.n; i++) best.c[i].param[0] = 0.0;
-        cd_best_to_result(&best, offset, 0, r);
-        r->pairs[0].point[0] = s->p0;
-        return cd_ok(q, r, CDIST_METHOD_AUTO);
+        cd_point_result(s->p0, &dk, 1, r);
+        r->pairs[0].param[0] = 0.0;
+        return cd_leave(q, r, CDIST_OK, used);
     }
-    st = linear_disk_query(q, s->p0, M, len, v_scale(1.0 / len, M), 0.0, 1.0, &s->p1, &dk, r);
-    if (st) return st;
-    for (int i = 0; i < r->num_pairs; i++) {
-        if (r->pairs[i].param[0] == 0.0) r->pairs[i].point[0] = s->p0; /* exactly the caller's end points */
-        if (r->pairs[i].param[0] == 1.0) r->pairs[i].point[0] = s->p1;
+    int e = cd_lines_scale_exponent(s->p0, &s->p1, &dk);
+    double down = cd_pow2(-e);
+    cd_circle_scale(&dk, down);
+    vec3 p0 = v_scale(down, s->p0), p1 = v_scale(down, s->p1), Ds = v_scale(down, D), M;
+    double len;
+    if (!(st = cd_check_direction(q, &Ds, "segment direction p1 - p0", 0, &M, &len)) &&
+        !(st = linear_disk_query(q, p0, Ds, len, M, 0.0, 1.0, &p1, &dk, r, &used))) {
+        cd_result_unscale(r, cd_pow2(e));
+        for (int i = 0; i < r->num_pairs; i++) {
+            if (r->pairs[i].param[0] == 0.0) r->pairs[i].point[0] = s->p0; /* exactly the caller's end points */
+            if (r->pairs[i].param[0] == 1.0) r->pairs[i].point[0] = s->p1;
+        }
     }
-    return CDIST_OK;
+    return cd_leave(q, r, st, used);
 }

@@ -6,17 +6,9 @@
 #include "base/best.h"
 #include "base/vec.h"
 
-/* Points B + t M, t in [tmin, tmax] (infinite ends allowed), M unit, B relative to the centre
- * of c (c->c ignored), to circle c. param[0] of the candidates is t. Sets b->equidistant when
- * the whole line is the axis. Returns CDIST_OK or an internal failure. */
-cdist_status cd_linear_circle(cdist_query *q, cdist_method method, vec3 B, vec3 M, double tmin, double tmax,
-                              const cd_circle *c, cd_best *b);
-/* The same against a disk. */
-cdist_status cd_linear_disk(cdist_query *q, cdist_method method, vec3 B, vec3 M, double tmin, double tmax,
-                            const cd_circle *d, cd_best *b);
-
 /* ---- lines family (src/lines/line_circle.c) ----
- * cd_linear_circle semantics: candidates are every local minimum of the squared distance inside
+ * cd_linear_circle_ex: points B + t M, t in [tmin, tmax] (infinite ends allowed), M unit, B
+ * relative to the centre of c (c->c ignored). Semantics: candidates are every local minimum of the squared distance inside
  * [tmin, tmax] plus the finite ends (point-circle), with param[1] the circle angle. method is
  * POLYNOMIAL or anything else (= ROBUST). b->equidistant is set when the closest point found is
  * on the circle's axis (the line is the axis, or a ray/segment end or clamped point lies on it)
@@ -30,5 +22,18 @@ cdist_status cd_linear_circle_ex(cdist_query *q, cdist_method method, vec3 B, ve
  * the scale of B, and t0 (in units of D). Then call the core with M = D/|D| and the range
  * (tmin - t0)|D| .. (tmax - t0)|D|; a candidate's parameter in units of D is t0 + t/|D|. */
 vec3 cd_line_near_centre(vec3 origin, vec3 D, vec3 C, double tmin, double tmax, double *t0);
+
+/* Line-disk core: cd_linear_circle_ex semantics against a disk (src/lines/line_disk.c). */
+cdist_status cd_linear_disk_ex(cdist_query *q, cdist_method method, vec3 B, vec3 M, double tmin, double tmax,
+                               const cd_circle *d, cd_best *b, cdist_method *used);
+
+/* Scale exponent of a linear query (origin, optional segment end p1, circle c): from
+ * max(r, |origin - C|, |p1 - C|), see cd_scale_exponent. */
+static inline int cd_lines_scale_exponent(vec3 origin, const vec3 *p1, const cd_circle *c)
+{
+    double L = fmax(c->r, v_maxabs(v_sub(origin, c->c)));
+    if (p1) L = fmax(L, v_maxabs(v_sub(*p1, c->c)));
+    return cd_scale_exponent(L);
+}
 
 #endif

@@ -5,88 +5,146 @@
 
 #include "internal.h"
 
-/* Split p (relative to the centre) into height h along n, in-plane part w and axis distance rho. */
-static void split(vec3 p, const cd_circle *c, double *h, vec3 *w, double *rho)
+/* Circle angle of the in-plane direction w without the basis: with k the basis index of
+ * v_basis (smallest |n_k|), u = (e_k - n_k n)/s and v = n x u for s = |e_k - n_k n| > 0, so
+ * u . w = w_k / s and v . w = u . (w x n) = (p x n)_k / s = -(n x p)_k / s for w = (n x p) x n;
+ * s cancels in atan2. */
+static inline double plane_angle(vec3 n, vec3 w, vec3 np)
 {
-    /* w = (n x p) x n is the in-plane part; built from the cross product it stays in the plane
-     * and keeps its direction accurate even within a few ulps of the axis, where p - h n
-     * would cancel. */
-    vec3 np = v_cross(c->n, p);
-    *h = v_dot(c->n, p);
-    *w = v_cross(np, c->n);
-    *rho = v_norm(np);
+    double ax = fabs(n.x), ay = fabs(n.y), az = fabs(n.z);
+    if (ax <= ay && ax <= az) return cd_polar_angle(w.x, -np.x);
+    if (ay <= az) return cd_polar_angle(w.y, -np.y);
+    return cd_polar_angle(w.z, -np.z);
 }
 
-/* The point is on the axis when its axis distance is below the rounding noise of |N x D|. */
-static int on_axis(vec3 p, double rho) { return rho <= 2.0 * DBL_EPSILON * v_norm(p); }
+/* The representative circle point (angle 0) for a point on the axis: r u. */
+static inline vec3 axis_representative(const cd_circle *c)
+{
+    vec3 u, v;
+    v_basis(c->n, &u, &v);
+    return v_scale(c->r, u);
+}
+
+/* The point is on the axis when its axis distance is below the rounding noise of |N x D|
+ * (compared squared: no square root; p is scaled, so nothing underflows). */
+static inline int on_axis(vec3 p, double rho)
+{
+    const double k = CD_ON_AXIS_ULPS * DBL_EPSILON;
+    return rho * rho <= (k * k) * v_sqr(p);
+}
+
+/* Split p (relative to the centre) into height h along n, in-plane part w and axis distance rho.
+ * w = (n x p) x n is the in-plane part; built from the cross product it stays in the plane and
+ * keeps its direction accurate even within a few ulps of the axis, where p - h n would cancel. */
+static inline void split(vec3 p, vec3 n, double *h, vec3 *w, vec3 *np, double *rho)
+{
+    *np = v_cross(n, p);
+    *h = v_dot(n, p);
+    *w = v_cross(*np, n);
+    *rho = v_norm(*np);
+}
+
+static inline cd_point_pair circle_pair(vec3 p, const cd_circle *c, double h, vec3 w, vec3 np, double rho)
+{
+    cd_point_pair q;
+    q.equidistant = 0;
+    if (c->r == 0.0) {
+        q.k = v3(0, 0, 0);
+        q.angle = NAN;
+    } else if (on_axis(p, rho)) {
+        /* Every circle point is closest; angle 0 is the representative. */
+        q.k = axis_representative(c);
+        q.angle = 0.0;
+        q.equidistant = 1;
+    } else {
+        /* |w|, not rho: near the axis the rounding of n x p leaves it slightly off
+         * perpendicular to n, and only w (which is perpendicular) scaled by its own length
+         * lands on the circle. */
+        q.k = v_scale(c->r / v_norm(w), w);
+        q.angle = plane_angle(c->n, w, np);
+    }
+    double dr = rho - c->r;
+    q.d2 = fma(dr, dr, h * h);
+    return q;
+}
+
+CD_FMA_CLONES cd_point_pair cd_point_circle_pair(vec3 p, const cd_circle *c)
+{
+    double h, rho;
+    vec3 w, np;
+    split(p, c->n, &h, &w, &np, &rho);
+    return circle_pair(p, c, h, w, np, rho);
+}
+
+CD_FMA_CLONES cd_point_pair cd_point_disk_pair(vec3 p, const cd_circle *c)
+{
+    double h, rho;
+    vec3 w, np;
+    split(p, c->n, &h, &w, &np, &rho);
+    if (rho > c->r) return circle_pair(p, c, h, w, np, rho);
+    cd_point_pair q;
+    int axis = on_axis(p, rho);
+    q.angle = axis ? NAN : plane_angle(c->n, w, np);
+    q.k = axis ? v3(0, 0, 0) : w;
+    q.d2 = h * h;
+    q.equidistant = 0;
+    return q;
+}
 
 void cd_point_circle_core(vec3 p, const cd_circle *c, cd_best *b, int swap)
 {
-    double h, rho;
-    vec3 w;
-    split(p, c, &h, &w, &rho);
-    vec3 k;
-    double ang;
-    int equi = 0;
-    if (c->r == 0.0) {
-        k = v3(0, 0, 0);
-        ang = NAN;
-    } else if (on_axis(p, rho)) {
-        /* Every circle point is closest; angle 0 is the representative. */
-        k = v_scale(c->r, c->u);
-        ang = 0.0;
-        equi = 1;
-    } else {
-        double wn = v_norm(w);
-        k = v_scale(c->r / wn, w);
-        ang = cd_circle_angle(c, w);
-    }
-    double dr = rho - c->r;
-    double d2 = fma(dr, dr, h * h);
-    if (swap) cd_best_offer_flag(b, equi, d2, k, p, ang, NAN);
-    else cd_best_offer_flag(b, equi, d2, p, k, NAN, ang);
+    cd_point_pair q = cd_point_circle_pair(p, c);
+    if (swap) cd_best_offer_flag(b, q.equidistant, q.d2, q.k, p, q.angle, NAN);
+    else cd_best_offer_flag(b, q.equidistant, q.d2, p, q.k, NAN, q.angle);
 }
 
 void cd_point_disk_core(vec3 p, const cd_circle *c, cd_best *b, int swap)
 {
-    double h, rho;
-    vec3 w;
-    split(p, c, &h, &w, &rho);
-    if (rho > c->r) {
-        cd_point_circle_core(p, c, b, swap);
-        return;
-    }
-    double ang = on_axis(p, rho) ? NAN : cd_circle_angle(c, w);
-    vec3 k = on_axis(p, rho) ? v3(0, 0, 0) : w;
-    double d2 = h * h;
-    if (swap) cd_best_offer(b, d2, k, p, ang, NAN);
-    else cd_best_offer(b, d2, p, k, NAN, ang);
+    cd_point_pair q = cd_point_disk_pair(p, c);
+    if (swap) cd_best_offer_flag(b, q.equidistant, q.d2, q.k, p, q.angle, NAN);
+    else cd_best_offer_flag(b, q.equidistant, q.d2, p, q.k, NAN, q.angle);
 }
 
-typedef void (*point_core_fn)(vec3, const cd_circle *, cd_best *, int);
-
-static cdist_status point_query(cdist_query *q, const cdist_vec3 *p, const cdist_circle *c, cdist_result *r,
-                                const char *what, point_core_fn core)
+/* Frame (translate to the centre) and scale (by 2^-e, exact, so that the scale is in [1, 2):
+ * no underflow or overflow in squares for any accepted input), core, result. */
+void cd_point_result(vec3 p, const cd_circle *c, int disk, cdist_result *r)
 {
-    cdist_status st = cd_check_handle(q, r);
+    vec3 rel = v_sub(p, c->c);
+    int e = cd_scale_exponent(fmax(c->r, v_maxabs(rel)));
+    double down = cd_pow2(-e), up = cd_pow2(e);
+    vec3 ps = v_scale(down, rel);
+    cd_circle sc = *c;
+    sc.r = c->r * down;
+    cd_point_pair k = disk ? cd_point_disk_pair(ps, &sc) : cd_point_circle_pair(ps, &sc);
+    r->distance = sqrt(k.d2) * up;
+    r->sqr_distance = (k.d2 * up) * up;
+    r->num_pairs = 1;
+    r->equidistant = k.equidistant;
+    r->pairs[0].point[0] = p; /* exactly the caller's point */
+    r->pairs[0].point[1] = v_axpy(c->c, up, k.k);
+    r->pairs[0].param[0] = NAN;
+    r->pairs[0].param[1] = k.angle;
+    cd_result_finish(r, 1);
+}
+
+static inline cdist_status point_query(cdist_query *q, const cdist_vec3 *p, const cdist_circle *c, cdist_result *r,
+                                       int disk)
+{
+    cdist_status st = cd_enter(q, r);
     if (st) return st;
     cd_circle cc;
-    if ((st = cd_check_point(q, p, "point")) || (st = cd_check_circle(q, c, what, &cc))) return st;
-    vec3 rel = v_sub(*p, cc.c);
-    cd_best b;
-    cd_best_init(&b, fmax(cc.r, v_norm(rel)));
-    core(rel, &cc, &b, 0);
-    cd_best_to_result(&b, cc.c, 0, r);
-    r->pairs[0].point[0] = *p; /* exactly the caller's point, not (p - C) + C */
-    return cd_ok(q, r, CDIST_METHOD_AUTO);
+    if (!(st = cd_check_point(q, p, "point")) &&
+        !(st = cd_check_circle_nobasis(q, c, disk ? "disk" : "circle", &cc)))
+        cd_point_result(*p, &cc, disk, r);
+    return cd_leave(q, r, st, CDIST_METHOD_AUTO);
 }
 
 cdist_status cdist_point_circle(cdist_query *q, const cdist_vec3 *p, const cdist_circle *c, cdist_result *r)
 {
-    return point_query(q, p, c, r, "circle", cd_point_circle_core);
+    return point_query(q, p, c, r, 0);
 }
 
 cdist_status cdist_point_disk(cdist_query *q, const cdist_vec3 *p, const cdist_circle *d, cdist_result *r)
 {
-    return point_query(q, p, d, r, "disk", cd_point_disk_core);
+    return point_query(q, p, d, r, 1);
 }
