@@ -306,15 +306,6 @@ static inline void cc_track(cd_cc_sink *k, const cd_cc_pt *cur, double *Fmax)
     }
 }
 
-/* Evaluate F (lean) at angle t and track the extremes seen by the scan. */
-static void cc_sample(const cd_cc_frame *f, cd_cc_sink *k, double t, cd_cc_pt *cur, double *Fmax)
-{
-    double c, s;
-    sincos(t, &s, &c);
-    cd_cc_eval_lean(f, t, c, s, cur);
-    cc_track(k, cur, Fmax);
-}
-
 void cd_cc_pair_at(const cd_cc_frame *f, double t, cd_cc_sink *k)
 {
     double c, s;
@@ -442,14 +433,24 @@ static void min_offer(const cd_cc_frame *f, cd_cc_sink *k, double lo, double hi)
 static void scan_dense(const cd_cc_frame *f, cd_cc_sink *k, double *Fmax)
 {
     cd_cc_pt first = {0}, prev = {0}, cur;
-    double step = 2 * M_PI / CC_DENSE_SAMPLES;
+    double step = 2 * M_PI / CC_DENSE_SAMPLES, ch, sh, c = 0, s = 0;
+    sincos(step, &sh, &ch);
     for (int i = 0; i <= CC_DENSE_SAMPLES; i++) {
         if (i == CC_DENSE_SAMPLES) {
             cur = first;
             cur.t = M_PI;
         } else {
+            /* cos and sin by rotation, re-synchronised every 8 steps (drift of a few ulps) */
             double t = -M_PI + i * step;
-            cc_sample(f, k, t, &cur, Fmax);
+            if (i % 8 == 0) {
+                sincos(t, &s, &c);
+            } else {
+                double cn = c * ch - s * sh;
+                s = s * ch + c * sh;
+                c = cn;
+            }
+            cd_cc_eval_lean(f, t, c, s, &cur);
+            cc_track(k, &cur, Fmax);
         }
         if (i == 0) first = cur;
         else emit(k, &prev, &cur);
