@@ -24,8 +24,8 @@
 /* Circle c0 to circle c1 (c0->c at the origin, c1 relative to it). iterations may be NULL. */
 cdist_status cd_circle_circle_core(cdist_query *q, cdist_method method, const cd_circle *c0, const cd_circle *c1,
                                    cd_best *b, int *iterations);
-/* The non-robust circle-circle methods (src/cc_poly.c, src/cc_iteration.c), called by the
- * dispatcher in src/circle_circle.c with c0->c at the origin. Each handles every configuration
+/* The non-robust circle-circle methods (src/circles/cc_poly.c, src/circles/cc_iteration.c), called by the
+ * dispatcher in src/circles/circle_circle.c with c0->c at the origin. Each handles every configuration
  * (setting b->equidistant where infinitely many pairs are closest) and offers its candidates to
  * b, or returns a non-OK status to make the dispatcher fall back to the robust method. */
 cdist_status cd_cc_polynomial(cdist_query *q, const cd_circle *c0, const cd_circle *c1, cd_best *b);
@@ -48,7 +48,7 @@ cdist_status cd_circle_disk_core(cdist_query *q, cdist_method method, const cd_c
                                  cd_best *b);
 
 /* ---- cc_methods block: helpers shared by cd_cc_polynomial and cd_cc_iteration (defined in
- * src/cc_poly.c). c0 is at the origin, c1 at D. "side" s moves a point on circle s and measures
+ * src/circles/cc_poly.c). c0 is at the origin, c1 at D. "side" s moves a point on circle s and measures
  * its closed-form distance to the other circle: F_s(t) = dist^2(c_s(t), c_{1-s}). ---- */
 typedef struct cd_cc {
     const cd_circle *c[2];

@@ -1,4 +1,3 @@
-/* SPDX-License-Identifier: MIT */
 /* Circle to circle: public entry points, method dispatch, the robust method and the critical
  * angles used by the arc families.
  *
@@ -79,47 +78,16 @@
  * polynomial and iteration methods (cc_equidistant_post).
  * Radius 0: a zero-radius circle is a point and the point-circle core answers. */
 #include <math.h>
-#include <stdio.h>
 #include <string.h>
 
-#include "internal.h"
+#include "circles/circles-priv.h"
 
 #define CC_INIT_INTERVALS 8 /* half_sec[] below is tabulated for this value */
 #define CC_MIN_WIDTH (1.0 / 1073741824.0) /* 2^-30 rad */
 #define CC_EVAL_BUDGET 48 /* per initial interval */
 #define CC_DENSE_SAMPLES 512
 #define CC_STACK 40 /* > the deepest level (31) */
-#define CC_EQUI_ULPS 32.0
 #define CC_MIN_ITER 100 /* Brent minimisation steps (a golden step shrinks by 0.618: 100 reach any width) */
-
-/* The parameterised circle A at the origin and the other circle B. */
-typedef struct cc_frame {
-    double R, s;       /* radii of A and B */
-    vec3 u, v;         /* A's basis */
-    vec3 C, m;         /* B's centre relative to A's centre, B's unit normal */
-    vec3 al, be, ga;   /* w(t) = m x (P(t) - C) = al cos t + be sin t + ga */
-    double ha, hb, hc; /* h(t) = m.(P(t) - C) = ha cos t + hb sin t + hc */
-    double Cu, Cv;     /* sigma = D.D' = R (Cu sin t - Cv cos t) */
-    double M1, M2, M3; /* |H'| <= M1, |H''| <= M2, |H'''| <= M3 */
-    double eH, eH1, eH2; /* rounding bounds of the computed H, H', H'' */
-    double Hc;         /* sum of |Fourier coefficients| of H */
-    double epsL;       /* eps * (R + |C|): absolute rounding of positions */
-    double L;          /* problem scale max(R, s, |C|) */
-    double Lw, W1, nga; /* magnitudes of the terms of w, of |w'|, |ga| (rounding bounds) */
-} cc_frame;
-
-/* Values at one angle. */
-typedef struct cc_pt {
-    double t, c, s;
-    double H, H1, H2; /* H, H', H'' */
-    double eH, eH1, eH2; /* their rounding bounds at this point */
-    double F1;    /* F'/2 */
-    double F;     /* F */
-    double d;     /* sqrt(F) */
-    double Q, g;  /* rho^2 and w.w' */
-} cc_pt;
-
-static inline double dot3(vec3 a, vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
 
 /* ---- trigonometric polynomials of degree <= 4 as complex coefficients c_k, k = -4..4 ---- */
 typedef struct tpoly {
@@ -161,7 +129,7 @@ static void tp_mul(const tpoly *x, int dx, const tpoly *y, int dy, tpoly *z)
     *z = r;
 }
 
-static void frame_init(cc_frame *f, const cd_circle *A, vec3 C, const cd_circle *B)
+void cd_cc_frame_init(cd_cc_frame *f, const cd_circle *A, vec3 C, const cd_circle *B)
 {
     f->R = A->r;
     f->s = B->r;
@@ -173,15 +141,15 @@ static void frame_init(cc_frame *f, const cd_circle *A, vec3 C, const cd_circle 
     f->al = v_scale(f->R, v_cross(m, A->u));
     f->be = v_scale(f->R, v_cross(m, A->v));
     f->ga = v_neg(v_cross(m, C));
-    f->ha = f->R * dot3(m, A->u);
-    f->hb = f->R * dot3(m, A->v);
-    f->hc = -dot3(m, C);
-    f->Cu = dot3(C, A->u);
-    f->Cv = dot3(C, A->v);
+    f->ha = f->R * cd_cc_dot3(m, A->u);
+    f->hb = f->R * cd_cc_dot3(m, A->v);
+    f->hc = -cd_cc_dot3(m, C);
+    f->Cu = cd_cc_dot3(C, A->u);
+    f->Cv = cd_cc_dot3(C, A->v);
 
     /* Fourier coefficients of Q, sigma, g = w.w' and H = Q sigma^2 - s^2 g^2. */
-    double aa = dot3(f->al, f->al), bb = dot3(f->be, f->be), ab = dot3(f->al, f->be);
-    double ag = dot3(f->al, f->ga), bg = dot3(f->be, f->ga), gg = dot3(f->ga, f->ga);
+    double aa = cd_cc_dot3(f->al, f->al), bb = cd_cc_dot3(f->be, f->be), ab = cd_cc_dot3(f->al, f->be);
+    double ag = cd_cc_dot3(f->al, f->ga), bg = cd_cc_dot3(f->be, f->ga), gg = cd_cc_dot3(f->ga, f->ga);
     tpoly Q, S, G, T, H;
     tp_zero(&Q);
     tp_term(&Q, 0, 0.5 * (aa + bb) + gg, 0);
@@ -234,27 +202,13 @@ static void frame_init(cc_frame *f, const cd_circle *A, vec3 C, const cd_circle 
     f->nga = sqrt(gg);
 }
 
-/* Hot-path arithmetic without fma(): the library is built for baseline x86-64, where fma() is a
- * libm call; plain products are accurate enough for sampling and Newton steps (the final
- * distance of each pair is recomputed in pair_at). */
-/* w = al c + be s + ga and w' = be c - al s */
-static inline void w_at(const cc_frame *f, double c, double s, vec3 *w, vec3 *w1)
-{
-    w->x = f->al.x * c + f->be.x * s + f->ga.x;
-    w->y = f->al.y * c + f->be.y * s + f->ga.y;
-    w->z = f->al.z * c + f->be.z * s + f->ga.z;
-    w1->x = f->be.x * c - f->al.x * s;
-    w1->y = f->be.y * c - f->al.y * s;
-    w1->z = f->be.z * c - f->al.z * s;
-}
-
 /* Everything at angle t with (c, s) = (cos t, sin t). */
-static void cc_eval(const cc_frame *f, double t, double c, double s, cc_pt *p)
+static void cc_eval(const cd_cc_frame *f, double t, double c, double s, cd_cc_pt *p)
 {
     vec3 w, w1;
-    w_at(f, c, s, &w, &w1);
-    double Q = dot3(w, w), g = dot3(w, w1);
-    double g1 = dot3(w1, w1) + dot3(w, f->ga) - Q; /* w'.w' + w.w'', w'' = ga - w */
+    cd_cc_w_at(f, c, s, &w, &w1);
+    double Q = cd_cc_dot3(w, w), g = cd_cc_dot3(w, w1);
+    double g1 = cd_cc_dot3(w1, w1) + cd_cc_dot3(w, f->ga) - Q; /* w'.w' + w.w'', w'' = ga - w */
     double sig = f->R * (f->Cu * s - f->Cv * c), sig1 = f->R * (f->Cu * c + f->Cv * s);
     double s2 = f->s * f->s;
     p->t = t;
@@ -262,7 +216,7 @@ static void cc_eval(const cc_frame *f, double t, double c, double s, cc_pt *p)
     p->s = s;
     p->H = Q * sig * sig - s2 * g * g;
     p->H1 = 2 * g * sig * sig + 2 * Q * sig * sig1 - 2 * s2 * g * g1;
-    double g2 = 3 * (dot3(w1, f->ga) - g) - g; /* 3 w'.w'' + w.w''' with w''' = -w' */
+    double g2 = 3 * (cd_cc_dot3(w1, f->ga) - g) - g; /* 3 w'.w'' + w.w''' with w''' = -w' */
     p->H2 = 2 * g1 * sig * sig + 8 * g * sig * sig1 + 2 * Q * (sig1 * sig1 - sig * sig) - 2 * s2 * (g1 * g1 + g * g2);
     double rho = sqrt(Q);
     double h = f->ha * c + f->hb * s + f->hc, h1 = f->hb * c - f->ha * s;
@@ -289,24 +243,24 @@ static void cc_eval(const cc_frame *f, double t, double c, double s, cc_pt *p)
 }
 
 /* F'/2 and F''/2 only (for the refinement). */
-static void cc_deriv(const cc_frame *f, double c, double s, double *F1, double *F2)
+static void cc_deriv(const cd_cc_frame *f, double c, double s, double *F1, double *F2)
 {
     vec3 w, w1;
-    w_at(f, c, s, &w, &w1);
-    double Q = dot3(w, w), g = dot3(w, w1);
+    cd_cc_w_at(f, c, s, &w, &w1);
+    double Q = cd_cc_dot3(w, w), g = cd_cc_dot3(w, w1);
     double rho = sqrt(Q);
     double h = f->ha * c + f->hb * s + f->hc, h1 = f->hb * c - f->ha * s, h2 = f->hc - h;
     double dr = rho - f->s;
     double rp = rho > 0 ? g / rho : 0.0;
     *F1 = dr * rp + h * h1;
-    double g1 = dot3(w1, w1) + dot3(w, f->ga) - Q;
+    double g1 = cd_cc_dot3(w1, w1) + cd_cc_dot3(w, f->ga) - Q;
     double rpp = rho > 0 ? (g1 - rp * rp) / rho : 0.0;
     *F2 = rp * rp + dr * rpp + h1 * h1 + h * h2;
 }
 
 /* A root of F' in [a, b] where F'(a) and F'(b) have opposite signs (dir = +1 for (-,+), -1 for
  * (+,-)): safeguarded Newton on the true F', falling back to bisection. */
-static double refine(const cc_frame *f, const cc_pt *a, const cc_pt *b, int dir)
+static double refine(const cd_cc_frame *f, const cd_cc_pt *a, const cd_cc_pt *b, int dir)
 {
     double lo = a->t, hi = b->t; /* dir * F'(lo) < 0 <= dir * F'(hi) */
     double fa = dir * a->F1, fb = dir * b->F1;
@@ -342,44 +296,8 @@ static double refine(const cc_frame *f, const cc_pt *a, const cc_pt *b, int dir)
     return x;
 }
 
-/* Receiver of the critical points found by the scan. */
-typedef struct cc_sink {
-    const cc_frame *f;
-    int want_max;   /* also report local maxima (critical-angle mode) */
-    double *out;    /* critical mode: angles */
-    int cap, count; /* critical mode: room and number found (may exceed cap) */
-    cd_best *best;  /* robust mode */
-    int swapped;    /* robust mode: A is the second circle */
-    const cd_circle *A, *B;
-    double unscale; /* robust mode: the factor undoing the problem's scaling */
-    double tmin, Fmin; /* partition point with the smallest F */
-    double dmin;  /* smallest refined distance */
-    double rho_min; /* axis distance of the point giving dmin */
-} cc_sink;
-
-/* F and F'/2 only, at angle t with (c, s) = (cos t, sin t): the lean evaluation of the sampled
- * regions (dense scan, kink grid, budget fallback, minimum search), which read only the signs of
- * F' and the values of F and need none of H's rounding bounds. */
-static inline void cc_eval_lean(const cc_frame *f, double t, double c, double s, cc_pt *p)
-{
-    vec3 w, w1;
-    w_at(f, c, s, &w, &w1);
-    double Q = dot3(w, w), g = dot3(w, w1);
-    double rho = sqrt(Q);
-    double h = f->ha * c + f->hb * s + f->hc, h1 = f->hb * c - f->ha * s;
-    double dr = rho - f->s;
-    p->t = t;
-    p->c = c;
-    p->s = s;
-    p->F1 = dr * (rho > 0 ? g / rho : 0.0) + h * h1;
-    p->F = dr * dr + h * h;
-    p->d = sqrt(p->F);
-    p->Q = Q;
-    p->g = g;
-}
-
 /* Track the extremes of F seen by the scan. */
-static inline void cc_track(cc_sink *k, const cc_pt *cur, double *Fmax)
+static inline void cc_track(cd_cc_sink *k, const cd_cc_pt *cur, double *Fmax)
 {
     if (cur->F > *Fmax) *Fmax = cur->F;
     if (cur->F < k->Fmin) {
@@ -388,16 +306,7 @@ static inline void cc_track(cc_sink *k, const cc_pt *cur, double *Fmax)
     }
 }
 
-/* Evaluate F (lean) at angle t and track the extremes seen by the scan. */
-static void cc_sample(const cc_frame *f, cc_sink *k, double t, cc_pt *cur, double *Fmax)
-{
-    double c, s;
-    sincos(t, &s, &c);
-    cc_eval_lean(f, t, c, s, cur);
-    cc_track(k, cur, Fmax);
-}
-
-static void pair_at(const cc_frame *f, double t, cc_sink *k)
+void cd_cc_pair_at(const cd_cc_frame *f, double t, cd_cc_sink *k)
 {
     double c, s;
     sincos(t, &s, &c);
@@ -429,7 +338,7 @@ static void pair_at(const cc_frame *f, double t, cc_sink *k)
     }
 }
 
-static void emit(cc_sink *k, const cc_pt *a, const cc_pt *b)
+static void emit(cd_cc_sink *k, const cd_cc_pt *a, const cd_cc_pt *b)
 {
     int dir = 0;
     if (a->F1 < 0 && b->F1 >= 0) dir = 1;
@@ -440,14 +349,14 @@ static void emit(cc_sink *k, const cc_pt *a, const cc_pt *b)
         double ta = (t <= -M_PI) ? t + 2 * M_PI : (t > M_PI ? t - 2 * M_PI : t);
         if (k->count < k->cap) k->out[k->count] = ta;
         k->count++;
-        cc_pt p;
+        cd_cc_pt p;
         double c, s;
         sincos(t, &s, &c);
         cc_eval(k->f, t, c, s, &p);
         double d = sqrt(p.F);
         if (d < k->dmin) k->dmin = d;
     } else {
-        pair_at(k->f, t, k);
+        cd_cc_pair_at(k->f, t, k);
     }
 }
 
@@ -455,7 +364,7 @@ static void emit(cc_sink *k, const cc_pt *a, const cc_pt *b)
 /* Certificates on [a, b] (see the header comment). 1: resolved (<= 1 root of H). First order
  * with the global bounds M1, M2; second order with the endpoint values of H'' and M3 (from each
  * end over half the interval, the cubic lower bound taken at its worst, x = w/2). */
-static int certified(const cc_frame *f, const cc_pt *a, const cc_pt *b)
+static int certified(const cd_cc_frame *f, const cd_cc_pt *a, const cd_cc_pt *b)
 {
     double w = b->t - a->t, x = 0.5 * w;
     if ((a->H > 0 && b->H > 0) || (a->H < 0 && b->H < 0)) {
@@ -506,32 +415,42 @@ static double cc_F_at(const void *ctx, double t)
 {
     double c, s;
     sincos(t, &s, &c);
-    cc_pt p;
-    cc_eval_lean(ctx, t, c, s, &p);
+    cd_cc_pt p;
+    cd_cc_eval_lean(ctx, t, c, s, &p);
     return p.F;
 }
 
 /* Brent minimisation of F on [lo, hi] (src/base/roots.h); offers the best point (robust mode).
  * F is computed from accurate rho - s and h, so it keeps its relative accuracy even where F' is
  * noise, and near a minimum it is smooth at the scale of the bracket (parabolic steps). */
-static void min_offer(const cc_frame *f, cc_sink *k, double lo, double hi)
+static void min_offer(const cd_cc_frame *f, cd_cc_sink *k, double lo, double hi)
 {
     double t = cd_min_brent(cc_F_at, f, lo, hi, CD_ROOT_REL_ULPS * DBL_EPSILON, CD_ROOT_ABS, CC_MIN_ITER, NULL);
-    if (t == t) pair_at(f, t, k);
+    if (t == t) cd_cc_pair_at(f, t, k);
 }
 
 /* Dense sampling fallback: F' signs on CC_DENSE_SAMPLES points. */
-static void scan_dense(const cc_frame *f, cc_sink *k, double *Fmax)
+static void scan_dense(const cd_cc_frame *f, cd_cc_sink *k, double *Fmax)
 {
-    cc_pt first = {0}, prev = {0}, cur;
-    double step = 2 * M_PI / CC_DENSE_SAMPLES;
+    cd_cc_pt first = {0}, prev = {0}, cur;
+    double step = 2 * M_PI / CC_DENSE_SAMPLES, ch, sh, c = 0, s = 0;
+    sincos(step, &sh, &ch);
     for (int i = 0; i <= CC_DENSE_SAMPLES; i++) {
         if (i == CC_DENSE_SAMPLES) {
             cur = first;
             cur.t = M_PI;
         } else {
+            /* cos and sin by rotation, re-synchronised every 8 steps (drift of a few ulps) */
             double t = -M_PI + i * step;
-            cc_sample(f, k, t, &cur, Fmax);
+            if (i % 8 == 0) {
+                sincos(t, &s, &c);
+            } else {
+                double cn = c * ch - s * sh;
+                s = s * ch + c * sh;
+                c = cn;
+            }
+            cd_cc_eval_lean(f, t, c, s, &cur);
+            cc_track(k, &cur, Fmax);
         }
         if (i == 0) first = cur;
         else emit(k, &prev, &cur);
@@ -547,7 +466,7 @@ static void scan_dense(const cc_frame *f, cc_sink *k, double *Fmax)
  * where H is below its rounding and cannot be certified: those windows are scanned on a
  * geometric grid instead (see scan). Writes the angles, returns the count. */
 #define CC_KINK_REL 1e-6
-static int near_kinks(const cc_frame *f, const cc_pt *init, double *tk)
+static int near_kinks(const cd_cc_frame *f, const cd_cc_pt *init, double *tk)
 {
     enum { N = CC_INIT_INTERVALS };
     vec3 w, w1;
@@ -569,14 +488,14 @@ static int near_kinks(const cc_frame *f, const cc_pt *init, double *tk)
             double hc = it == 0 ? 0.70710678118654752 /* 0.5 / cos(pi / 4), N = 8 */
                                 : half_sec[it - 1 < 31 ? it - 1 : 31];
             double cm = (cl + ch) * hc, sm = (sl + sh) * hc;
-            w_at(f, cm, sm, &w, &w1);
-            rho = sqrt(dot3(w, w));
+            cd_cc_w_at(f, cm, sm, &w, &w1);
+            rho = sqrt(cd_cc_dot3(w, w));
             if (rho - 0.5 * f->W1 * width > thr) {
                 miss = 1;
                 break;
             }
             double m = 0.5 * (lo + hi);
-            if (dot3(w, w1) < 0) lo = m, cl = cm, sl = sm;
+            if (cd_cc_dot3(w, w1) < 0) lo = m, cl = cm, sl = sm;
             else hi = m, ch = cm, sh = sm;
             width *= 0.5;
         }
@@ -586,13 +505,13 @@ static int near_kinks(const cc_frame *f, const cc_pt *init, double *tk)
 }
 
 /* Half-width of the window around a near-crossing that only the geometric grid covers. */
-static double kink_core(const cc_frame *f, double t)
+static double kink_core(const cd_cc_frame *f, double t)
 {
     double c, s;
     sincos(t, &s, &c);
     vec3 w, w1;
-    w_at(f, c, s, &w, &w1);
-    double r = sqrt(sqrt(dot3(w, w)) / f->L);
+    cd_cc_w_at(f, c, s, &w, &w1);
+    double r = sqrt(sqrt(cd_cc_dot3(w, w)) / f->L);
     return fmin(0.05, 1e3 * r + 1e-12);
 }
 
@@ -607,10 +526,10 @@ static inline void small_sincos(double h, double *sn, double *cs)
 }
 
 /* The geometric grid around a near-crossing t: t +- 0.1 * 2^(-j/2) down to 1e-17, and t. */
-static void scan_kink(const cc_frame *f, cc_sink *k, double t, double *Fmax)
+static void scan_kink(const cd_cc_frame *f, cd_cc_sink *k, double t, double *Fmax)
 {
     enum { NG = 110 };
-    cc_pt prev, cur;
+    cd_cc_pt prev, cur;
     double ct, st;
     sincos(t, &st, &ct);
     int first = 1;
@@ -619,12 +538,12 @@ static void scan_kink(const cc_frame *f, cc_sink *k, double t, double *Fmax)
             int j = side < 0 ? jj : NG - 1 - jj; /* increasing angle */
             double h = side * ldexp(j % 2 ? 0.1 * M_SQRT1_2 : 0.1, -(j / 2)), ch, sh;
             if (side > 0 && jj == 0) {
-                cc_eval_lean(f, t, ct, st, &cur);
+                cd_cc_eval_lean(f, t, ct, st, &cur);
                 emit(k, &prev, &cur);
                 prev = cur;
             }
             small_sincos(h, &sh, &ch);
-            cc_eval_lean(f, t + h, ct * ch - st * sh, st * ch + ct * sh, &cur);
+            cd_cc_eval_lean(f, t + h, ct * ch - st * sh, st * ch + ct * sh, &cur);
             cc_track(k, &cur, Fmax);
             if (!first) emit(k, &prev, &cur);
             first = 0;
@@ -640,12 +559,12 @@ static void scan_kink(const cc_frame *f, cc_sink *k, double t, double *Fmax)
  * rounding level, where F is flat and may hold close minima): F' signs on a grid as fine as the
  * dense scan's and of at least 64 points, and in robust mode a minimisation of F
  * around the lowest grid point. */
-static void emit_sampled(const cc_frame *f, cc_sink *k, const cc_pt *a, const cc_pt *b, double *Fmax)
+static void emit_sampled(const cd_cc_frame *f, cd_cc_sink *k, const cd_cc_pt *a, const cd_cc_pt *b, double *Fmax)
 {
     double w = b->t - a->t;
     int n = (int)ceil(w / (2 * M_PI / CC_DENSE_SAMPLES));
     if (n < 64) n = 64;
-    cc_pt prev = *a, cur;
+    cd_cc_pt prev = *a, cur;
     double Fbest = a->F, tbest = a->t;
     /* cos and sin on the grid by rotation from the last exact pair (re-synchronised every 8
      * steps, so the drift stays at a few ulps). */
@@ -660,7 +579,7 @@ static void emit_sampled(const cc_frame *f, cc_sink *k, const cc_pt *a, const cc
             s = s * ch + c * sh;
             c = cn;
         }
-        cc_eval_lean(f, t, c, s, &cur);
+        cd_cc_eval_lean(f, t, c, s, &cur);
         cc_track(k, &cur, Fmax);
         if (cur.F < Fbest) Fbest = cur.F, tbest = cur.t;
         emit(k, &prev, &cur);
@@ -674,10 +593,10 @@ static void emit_sampled(const cc_frame *f, cc_sink *k, const cc_pt *a, const cc
 /* Walks [-pi, pi) (see the header comment) and hands every critical bracket to the sink.
  * Fmax: largest F at the partition points. Returns 1 when the certification gave up and the
  * sink does not allow the dense scan (nothing was emitted then), else 0. */
-static int scan(const cc_frame *f, cc_sink *k, double *Fmax)
+int cd_cc_scan(const cd_cc_frame *f, cd_cc_sink *k, double *Fmax)
 {
     *Fmax = 0;
-    cc_pt init[CC_INIT_INTERVALS + 1];
+    cd_cc_pt init[CC_INIT_INTERVALS + 1];
     /* cos and sin of -pi + i pi / 8 (exact to rounding). */
     static const double ic[16] = {-1, -0.92387953251128674, -0.70710678118654757, -0.38268343236508978, 0,
                                   0.38268343236508978, 0.70710678118654757, 0.92387953251128674, 1,
@@ -712,7 +631,7 @@ static int scan(const cc_frame *f, cc_sink *k, double *Fmax)
     /* Depth-first, left to right, so consecutive leaves share their endpoints: the current
      * interval is refined in place, right halves wait on the stack. */
     typedef struct {
-        cc_pt b;
+        cd_cc_pt b;
         int level;
     } ival;
     ival st[CC_STACK];
@@ -727,7 +646,7 @@ static int scan(const cc_frame *f, cc_sink *k, double *Fmax)
     for (int i = 0; i < CC_INIT_INTERVALS; i++)
         if (init[i].d < dbest) dbest = init[i].d;
     for (int i = 0; i < CC_INIT_INTERVALS; i++) {
-        cc_pt a = init[i], b = init[i + 1];
+        cd_cc_pt a = init[i], b = init[i + 1];
         int level = 0, sp = 0;
         evals = 0; /* a cluster of roots exhausts the budget of its own interval only */
         for (;;) {
@@ -777,7 +696,7 @@ static int scan(const cc_frame *f, cc_sink *k, double *Fmax)
             /* Midpoint from the endpoint cosines/sines (no transcendental call). */
             double hc = half_sec[level];
             double cm = (a.c + b.c) * hc, sm = (a.s + b.s) * hc;
-            cc_pt mid;
+            cd_cc_pt mid;
             cc_eval(f, 0.5 * (a.t + b.t), cm, sm, &mid);
             evals++;
             level++;
@@ -797,7 +716,7 @@ static int scan(const cc_frame *f, cc_sink *k, double *Fmax)
  * the count, or -1 when the planes are not parallel. The distances at these angles are
  * evaluated on the true F, so the tilt below the threshold moves the answer by at most
  * 2 CD_CC_PARALLEL_ULPS eps L. */
-static int parallel_critical(const cc_frame *f, double *t)
+int cd_cc_parallel_critical(const cd_cc_frame *f, double *t)
 {
     if (!(hypot(f->ha, f->hb) <= CD_CC_PARALLEL_ULPS * DBL_EPSILON * f->L)) return -1;
     double e = hypot(f->Cu, f->Cv), R = f->R, s = f->s;
@@ -815,333 +734,3 @@ static int parallel_critical(const cc_frame *f, double *t)
     return n;
 }
 
-/* The antisymmetric choice of the circle to parameterise: 1 when it is c1. */
-static int param_second(const cd_circle *c0, const cd_circle *c1, vec3 C)
-{
-    if (c0->r != c1->r) return c1->r > c0->r;
-    const double x[3] = {c0->n.x, c0->n.y, c0->n.z}, y[3] = {c1->n.x, c1->n.y, c1->n.z};
-    for (int i = 0; i < 3; i++)
-        if (x[i] != y[i]) return y[i] > x[i];
-    /* Same radius and normal: decide on the sign of the centre offset, which flips on a swap. */
-    const double z[3] = {C.x, C.y, C.z};
-    for (int i = 0; i < 3; i++)
-        if (z[i] != 0.0) return z[i] < 0.0;
-    return 0;
-}
-
-/* The robust method (see the header comment). */
-static cdist_status cc_robust(cdist_query *q, const cd_circle *c0, const cd_circle *c1, cd_best *b)
-{
-    vec3 C = v_sub(c1->c, c0->c); /* c0->c is the origin here; kept general */
-    int sw = param_second(c0, c1, C);
-    const cd_circle *A = sw ? c1 : c0, *B = sw ? c0 : c1;
-    vec3 CB = sw ? v_neg(C) : C; /* B's centre relative to A's */
-    double L = fmax(fmax(c0->r, c1->r), v_norm(C));
-    if (A->r == 0.0) {
-        /* Both are points. */
-        cd_best_offer(b, v_sqr(C), c0->c, c1->c, NAN, NAN);
-        return CDIST_OK;
-    }
-    if (B->r == 0.0) {
-        /* B is a point: the point-circle core (equidistant when it is on A's axis). */
-        if (!sw) {
-            cd_point_circle_core(C, c0, b, 1);
-        } else {
-            cd_best t;
-            cd_best_init(&t, b->scale);
-            cd_point_circle_core(CB, c1, &t, 0);
-            for (int i = 0; i < t.n; i++)
-                cd_best_offer_flag(b, t.c[i].equidistant, t.c[i].d2, v_add(t.c[i].p[0], C), v_add(t.c[i].p[1], C),
-                                   t.c[i].param[0], t.c[i].param[1]);
-        }
-        return CDIST_OK;
-    }
-    /* Scale the problem by a power of two (exact) so that L is about 1: H has terms of order
-     * L^6, which would overflow or underflow for coordinates near the 1e150 limit. */
-    int ex;
-    frexp(L, &ex);
-    double sc = ldexp(1.0, -ex), unsc = ldexp(1.0, ex);
-    cd_circle As = *A, Bs = *B;
-    As.c = v_scale(sc, A->c);
-    As.r = sc * A->r;
-    Bs.c = v_scale(sc, B->c);
-    Bs.r = sc * B->r;
-    CB = v_scale(sc, CB);
-    A = &As;
-    B = &Bs;
-    cc_frame f;
-    frame_init(&f, A, CB, B);
-    cc_sink k = {.f = &f, .best = b, .unscale = unsc, .swapped = sw, .A = A, .B = B,  .Fmin = INFINITY,
-                 .dmin = INFINITY, .rho_min = INFINITY};
-    double Fmax, tp[4];
-    int np = parallel_critical(&f, tp);
-    if (np > 0) {
-        /* Closed form; F's extremes are at rho's extremes (the first two angles). */
-        Fmax = 0;
-        for (int i = 0; i < np; i++) {
-            cc_pt p;
-            double c, s;
-            sincos(tp[i], &s, &c);
-            cc_eval_lean(&f, tp[i], c, s, &p);
-            if (p.F > Fmax) Fmax = p.F;
-            pair_at(&f, tp[i], &k);
-        }
-    } else {
-        scan(&f, &k, &Fmax);
-    }
-    /* F' never went from - to +: F is constant to rounding; any point is a closest one. */
-    if (b->n == 0 && isfinite(k.Fmin)) pair_at(&f, k.tmin, &k);
-    if (b->n == 0 || !isfinite(k.dmin)) return cd_fail(q, CDIST_ERR_INTERNAL, "circle-circle: no minimum found");
-    /* (a) F constant on A; (b) the closest point of A on B's axis. */
-    if (sqrt(Fmax) - k.dmin <= CC_EQUI_ULPS * DBL_EPSILON * f.L) b->equidistant = 1;
-    if (k.rho_min <= 8 * f.epsL * fmin(1.0, f.s / f.L)) b->equidistant = 1;
-    return CDIST_OK;
-}
-
-/* Distance from X to circle c (closed form, |N x D| for the axis distance). */
-static double pc_dist(vec3 X, const cd_circle *c, double *rho_out)
-{
-    vec3 D = v_sub(X, c->c);
-    vec3 w = v_cross(c->n, D);
-    double rho = v_norm(w), h = v_dot(c->n, D), dr = rho - c->r;
-    if (rho_out) *rho_out = rho;
-    return sqrt(fma(dr, dr, h * h));
-}
-
-/* The equidistance tests (a) and (b) of the header comment, method independent, applied to the
- * answer of the polynomial and iteration methods: (b) a closest point on the other circle's
- * axis; (a) 16 equally spaced points of either circle all at the minimum distance (the scan
- * stops at the first point that is not, so a generic query pays two evaluations). */
-static void cc_equidistant_post(const cd_circle *c0, const cd_circle *c1, cd_best *b)
-{
-    if (b->equidistant || b->n == 0) return;
-    const cd_circle *cs[2] = {c0, c1};
-    double d = sqrt(b->c[0].d2), Cn = v_norm(v_sub(c1->c, c0->c));
-    double L = fmax(fmax(c0->r, c1->r), Cn), tol = CC_EQUI_ULPS * DBL_EPSILON * L;
-    for (int side = 0; side < 2; side++) {
-        const cd_circle *me = cs[side], *other = cs[1 - side];
-        if (other->r > 0 && me->r >= 0) {
-            double rho;
-            pc_dist(b->c[0].p[side], other, &rho);
-            if (rho <= 8 * DBL_EPSILON * (me->r + other->r + Cn) * fmin(1.0, other->r / L)) {
-                b->equidistant = 1;
-                return;
-            }
-        }
-        if (me->r == 0) continue;
-        int j;
-        for (j = 0; j < 16; j++) {
-            double t = j * (M_PI / 8), c = cos(t), sn = sin(t);
-            vec3 X = v_add(me->c, v_add(v_scale(me->r * c, me->u), v_scale(me->r * sn, me->v)));
-            if (fabs(pc_dist(X, other, NULL) - d) > tol) break;
-        }
-        if (j == 16) {
-            b->equidistant = 1;
-            return;
-        }
-    }
-}
-
-/* Whether both arcs of circle c between the points at angles a and b rise above the tie level
- * (sampled at their midpoints) as seen from the other circle: then a and b are separate minima. */
-static int arcs_rise(const cd_circle *c, const cd_circle *other, double a, double b, double dbest, double tie)
-{
-    if (isnan(a) || isnan(b)) return 0;
-    double mid = b + 0.5 * remainder(a - b, 2.0 * M_PI);
-    for (int k = 0; k < 2; k++) {
-        double t = mid + k * M_PI;
-        vec3 X = v_add(c->c, v_add(v_scale(c->r * cos(t), c->u), v_scale(c->r * sin(t), c->v)));
-        if (!(pc_dist(X, other, NULL) - dbest > tie)) return 0;
-    }
-    return 1;
-}
-
-/* Method independent: two tied candidates are two closest pairs only when they are separate
- * minima, i.e. the distance rises between them along both arcs of the first circle or along both
- * arcs of the second. Otherwise they are two points of one flat minimum (e.g. circles in
- * parallel planes whose projections touch, where F is flat to fourth order) and the best
- * represents it. */
-static void cc_same_basin_filter(const cd_circle *c0, const cd_circle *c1, cd_best *b)
-{
-    double tie = CD_TIE_ULPS * DBL_EPSILON * b->scale;
-    while (b->n >= 2 && !cd_best_is_equidistant(b)) {
-        double dbest = sqrt(b->c[0].d2);
-        if (sqrt(b->c[1].d2) - dbest > tie) return;
-        const cd_cand *x = &b->c[0], *y = &b->c[1];
-        double a0 = cd_circle_angle(c0, v_sub(x->p[0], c0->c)), b0 = cd_circle_angle(c0, v_sub(y->p[0], c0->c));
-        double a1 = cd_circle_angle(c1, v_sub(x->p[1], c1->c)), b1 = cd_circle_angle(c1, v_sub(y->p[1], c1->c));
-        if (arcs_rise(c0, c1, a0, b0, dbest, tie) || arcs_rise(c1, c0, a1, b1, dbest, tie)) return;
-        for (int j = 1; j + 1 < b->n; j++) b->c[j] = b->c[j + 1];
-        b->n--;
-    }
-}
-
-/* Runs `method`; the robust method answers AUTO and is the fallback of a method that fails.
- * *answered: the method that produced the result. */
-static cdist_status cc_core(cdist_query *q, cdist_method method, const cd_circle *c0, const cd_circle *c1,
-                            cd_best *b, int *iterations, cdist_method *answered)
-{
-    if (iterations) *iterations = 0;
-    cdist_status st = CDIST_ERR_INTERNAL;
-    if (method == CDIST_METHOD_POLYNOMIAL) st = cd_cc_polynomial(q, c0, c1, b);
-    else if (method == CDIST_METHOD_ITERATION) st = cd_cc_iteration(q, c0, c1, b, iterations);
-    *answered = method;
-    if (method == CDIST_METHOD_AUTO || method == CDIST_METHOD_ROBUST || st != CDIST_OK) {
-        /* AUTO is the robust method (measured fastest and as exact); it is also the fallback. */
-        cd_best_init(b, b->scale);
-        if (iterations) *iterations = 0;
-        *answered = CDIST_METHOD_ROBUST;
-        st = cc_robust(q, c0, c1, b);
-    } else {
-        cc_equidistant_post(c0, c1, b);
-    }
-    if (st == CDIST_OK) cc_same_basin_filter(c0, c1, b);
-    return st;
-}
-
-cdist_status cd_circle_circle_core(cdist_query *q, cdist_method method, const cd_circle *c0, const cd_circle *c1,
-                                   cd_best *b, int *iterations)
-{
-    cdist_method answered;
-    return cc_core(q, method, c0, c1, b, iterations, &answered);
-}
-
-/* Angles where A crosses B's axis (w(t) = 0), the non-smooth points of F. */
-static int axis_crossings(const cc_frame *f, double *t)
-{
-    /* 2D coordinates in the plane orthogonal to m. */
-    vec3 e1, e2;
-    v_basis(f->m, &e1, &e2);
-    double ax = v_dot(f->al, e1), ay = v_dot(f->al, e2), bx = v_dot(f->be, e1), by = v_dot(f->be, e2);
-    double gx = -v_dot(f->ga, e1), gy = -v_dot(f->ga, e2); /* solve a c + b s = -ga */
-    double det = ax * by - ay * bx, tol = 1e-9;
-    double an = hypot(ax, ay), bn = hypot(bx, by);
-    if (fabs(det) > 1e-12 * an * bn) {
-        double c = (gx * by - gy * bx) / det, s = (ax * gy - ay * gx) / det;
-        double r = hypot(c, s);
-        if (fabs(r - 1) <= tol) {
-            t[0] = atan2(s, c);
-            return 1;
-        }
-        return 0;
-    }
-    /* a and b parallel: w(t) moves on a segment through ga along e. */
-    double ex = an >= bn ? ax : bx, ey = an >= bn ? ay : by, en = hypot(ex, ey);
-    if (!(en > 0)) return 0;
-    ex /= en;
-    ey /= en;
-    double perp = -gx * ey + gy * ex; /* component of -ga across the segment */
-    if (fabs(perp) > tol * (f->R + v_norm(f->C))) return 0;
-    double pa = ax * ex + ay * ey, pb = bx * ex + by * ey, pg = gx * ex + gy * ey;
-    double amp = hypot(pa, pb);
-    if (!(amp > 0) || fabs(pg) > amp * (1 + tol)) return 0;
-    double phi = atan2(pb, pa), dlt = acos(fmax(-1.0, fmin(1.0, pg / amp)));
-    int n = 0;
-    double cand[2] = {phi + dlt, phi - dlt};
-    for (int i = 0; i < (dlt == 0 ? 1 : 2); i++) {
-        double x = remainder(cand[i], 2 * M_PI);
-        if (x <= -M_PI) x += 2 * M_PI;
-        t[n++] = x;
-    }
-    return n;
-}
-
-int cd_circle_circle_critical(cdist_query *q, const cd_circle *c0, const cd_circle *c1, double *theta0, int cap)
-{
-    (void)q;
-    if (cap < 0) cap = 0;
-    if (c0->r == 0.0) return -1; /* a point: every angle gives the same point */
-    vec3 C = v_sub(c1->c, c0->c);
-    /* Angles do not change under scaling: work at L ~ 1 (see cc_robust). */
-    int ex;
-    frexp(fmax(fmax(c0->r, c1->r), v_norm(C)), &ex);
-    double sc = ldexp(1.0, -ex);
-    cd_circle a = *c0, b = *c1;
-    a.c = v3(0, 0, 0);
-    a.r *= sc;
-    b.c = v_scale(sc, C);
-    b.r *= sc;
-    c0 = &a;
-    c1 = &b;
-    C = b.c;
-    cc_frame f;
-    frame_init(&f, c0, C, c1);
-    cc_sink k = {.f = &f, .want_max = 1, .out = theta0, .cap = cap, .A = c0, .B = c1,
-                 .Fmin = INFINITY, .dmin = INFINITY, .rho_min = INFINITY};
-    double Fmax, tp[4];
-    int np = parallel_critical(&f, tp);
-    if (np > 0) {
-        double dlo = INFINITY, dhi = 0;
-        for (int i = 0; i < np; i++) {
-            cc_pt p;
-            double c, s;
-            sincos(tp[i], &s, &c);
-            cc_eval_lean(&f, tp[i], c, s, &p);
-            dlo = fmin(dlo, p.d);
-            dhi = fmax(dhi, p.d);
-            if (i < cap) theta0[i] = tp[i];
-        }
-        if (dhi - dlo <= CC_EQUI_ULPS * DBL_EPSILON * f.L) return -1;
-        return np < cap ? np : cap;
-    }
-    scan(&f, &k, &Fmax);
-    int n = k.count < cap ? k.count : cap;
-    double L = fmax(fmax(c0->r, c1->r), v_norm(C));
-    /* Constant F (also when F' never changes sign: a periodic F that is not constant has a
-     * bracketed minimum and maximum). */
-    if (k.count == 0 || sqrt(Fmax) - k.dmin <= CC_EQUI_ULPS * DBL_EPSILON * L) return -1;
-    double tk[2];
-    int nk = c1->r > 0 ? axis_crossings(&f, tk) : 0;
-    for (int i = 0; i < nk; i++) {
-        if (n < cap) theta0[n] = tk[i];
-        n++;
-    }
-    return n < cap ? n : cap;
-}
-
-int cd_circles_scale(cd_circle *a, cd_circle *b)
-{
-    int e = cd_scale_exponent(fmax(fmax(a->r, b->r), v_norm(b->c)));
-    a->r = ldexp(a->r, -e);
-    b->r = ldexp(b->r, -e);
-    b->c = v3(ldexp(b->c.x, -e), ldexp(b->c.y, -e), ldexp(b->c.z, -e));
-    return e;
-}
-
-void cd_circles_unscale_result(cdist_result *r, int e, vec3 offset)
-{
-    r->distance = ldexp(r->distance, e);
-    r->sqr_distance = ldexp(r->sqr_distance, 2 * e);
-    for (int i = 0; i < r->num_pairs; i++)
-        for (int j = 0; j < 2; j++) {
-            vec3 p = r->pairs[i].point[j];
-            r->pairs[i].point[j] = v_add(v3(ldexp(p.x, e), ldexp(p.y, e), ldexp(p.z, e)), offset);
-        }
-}
-
-cdist_status cdist_circle_circle(cdist_query *q, const cdist_circle *c0, const cdist_circle *c1, cdist_result *r)
-{
-    cdist_status st = cd_check_handle(q, r);
-    if (st) return st;
-    cd_circle a, b;
-    if ((st = cd_check_circle(q, c0, "first circle", &a)) || (st = cd_check_circle(q, c1, "second circle", &b)))
-        return st;
-    /* Work relative to the first centre. */
-    vec3 offset = a.c;
-    a.c = v3(0, 0, 0);
-    b.c = v_sub(b.c, offset);
-    int e = cd_circles_scale(&a, &b);
-    cd_best best;
-    cd_best_init(&best, fmax(fmax(a.r, b.r), v_norm(b.c)));
-    cdist_method m = cd_pick_method(q, CD_HAS(CDIST_METHOD_POLYNOMIAL) | CD_HAS(CDIST_METHOD_ROBUST) |
-                                           CD_HAS(CDIST_METHOD_ITERATION),
-                                    CDIST_METHOD_AUTO);
-    int iterations = 0;
-    cdist_method answered;
-    st = cc_core(q, m, &a, &b, &best, &iterations, &answered);
-    if (st) return st;
-    cd_best_to_result(&best, v3(0, 0, 0), 0, r);
-    cd_circles_unscale_result(r, e, offset);
-    r->iterations = iterations;
-    return cd_ok(q, r, answered);
-}

@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 /* Circle-circle by the degree-8 polynomial (Eberly, distance-to-circles-3d §5), plus the helpers
- * shared with the geometric iteration (src/cc_iteration.c): the true distance function with its
+ * shared with the geometric iteration (src/circles/cc_iteration.c): the true distance function with its
  * derivatives, the Newton polish, and the closed forms of the special configurations.
  *
  * Frame. The dispatcher puts c0's centre at the origin and c1 at D. For a point P on circle s

@@ -1,6 +1,5 @@
-/* SPDX-License-Identifier: MIT */
-/* Lines, rays, segments, circles and disks to disks (point-curve-circle-to-disk §2-§4,
- * line-circle-disk §2; derivations in docs/disk.md).
+/* Circle to disk (point-curve-circle-to-disk §2-§4; derivations in docs/disk.md). Disk to disk
+ * (disk_disk.c) runs this twice, rim of each against the other disk.
  *
  * The one lemma everything here rests on. Let G(X) be the distance from X to the disk, F(X)
  * the distance to its rim circle and h(X) the signed height over the disk's plane. Then
@@ -18,60 +17,7 @@
 #include <math.h>
 #include <string.h>
 
-#include "internal.h"
-
-#define TWO_PI 6.283185307179586476925286766559
-
-/* ------------------------------------------------------------------------------------------ */
-/* Shared helpers                                                                               */
-
-/* Angle in (-pi, pi]. */
-static double wrap_angle(double t)
-{
-    double a = remainder(t, TWO_PI);
-    return (a <= -M_PI) ? a + TWO_PI : a;
-}
-
-static double polar_angle(double x, double y)
-{
-    if (x == 0.0 && y == 0.0) return NAN;
-    double a = atan2(y, x);
-    return (a == -M_PI) ? M_PI : a;
-}
-
-/* Copy the candidates of src into dst; points shifted by `shift`; swap exchanges the roles of
- * the two objects. Returns the squared distance of src's best (INFINITY when empty). */
-static double merge_best(cd_best *dst, const cd_best *src, vec3 shift, int swap)
-{
-    for (int i = 0; i < src->n; i++) {
-        const cd_cand *c = &src->c[i];
-        vec3 p0 = v_add(c->p[0], shift), p1 = v_add(c->p[1], shift);
-        if (swap) cd_best_offer_flag(dst, c->equidistant, c->d2, p1, p0, c->param[1], c->param[0]);
-        else cd_best_offer_flag(dst, c->equidistant, c->d2, p0, p1, c->param[0], c->param[1]);
-    }
-    return src->n ? src->c[0].d2 : INFINITY;
-}
-
-/* Two squared distances tie when their distances agree within the cd_best tie tolerance. */
-static int ties(const cd_best *b, double d2a, double d2b)
-{
-    return fabs(sqrt(d2a) - sqrt(d2b)) <= CD_TIE_ULPS * DBL_EPSILON * b->scale;
-}
-
-/* An equidistant sub-result (squared distance eq_d2) makes the whole result equidistant only
- * when it attains the global minimum. */
-static void settle_equidistant(cd_best *b, double eq_d2)
-{
-    if (isfinite(eq_d2) && b->n > 0 && (eq_d2 <= b->c[0].d2 || ties(b, eq_d2, b->c[0].d2))) b->equidistant = 1;
-}
-
-/* When the closest set is convex (line/segment/disk against a disk), two distinct closest pairs
- * at distance zero mean a whole segment of contact: flag it. */
-static void convex_contact(cd_best *b)
-{
-    if (b->n >= 2 && ties(b, b->c[0].d2, b->c[1].d2) && sqrt(b->c[1].d2) <= CD_TIE_ULPS * DBL_EPSILON * b->scale)
-        b->equidistant = 1;
-}
+#include "circles/circles-priv.h"
 
 /* ------------------------------------------------------------------------------------------ */
 /* Circle to disk                                                                               */
@@ -187,7 +133,7 @@ static void cdk_offer(const cdk *k, double t, cd_best *b)
         double dr = k->small_circle ? ex / (rho + k->R) : rho - k->R;
         d2 = fma(dr, dr, z * z);
     }
-    cd_best_offer(b, d2, P, K, k->rho > 0.0 ? wrap_angle(t) : NAN, polar_angle(x, y));
+    cd_best_offer(b, d2, P, K, k->rho > 0.0 ? cd_wrap_angle(t) : NAN, cd_polar_angle(x, y));
 }
 
 /* Bracketed root of F' in [a, b] with sg F'(a) < 0 < sg F'(b) (sg = 1: a minimum of F, -1: a
@@ -377,7 +323,7 @@ static const double cdk_grid_cs[CDK_SAMPLES][2] = {
 static int cdk_robust_critical(const cdk *k, double *ts, int cap, double scale)
 {
     double f1s[CDK_SAMPLES + 1], Fs[CDK_SAMPLES + 1];
-    const double h = TWO_PI / CDK_SAMPLES;
+    const double h = CD_TWO_PI / CDK_SAMPLES;
     for (int i = 0; i < CDK_SAMPLES; i++) Fs[i] = cdk_rim_cs(k, cdk_grid_cs[i][0], cdk_grid_cs[i][1], &f1s[i], NULL);
     f1s[CDK_SAMPLES] = f1s[0];
     Fs[CDK_SAMPLES] = Fs[0];
@@ -506,7 +452,7 @@ static cdist_status cdk_solve(cdist_query *q, cdist_method method, const cdk *k,
     }
     if (n < 0) {
         /* ROBUST: every critical angle of F with certified root isolation (circle-circle robust
-         * method, Fourier bounds on the squared derivative, src/circle_circle.c), the rim being a
+         * method, Fourier bounds on the squared derivative, src/circles/cc_engine.c), the rim being a
          * circle; its own sampling as the fallback. */
         *used = CDIST_METHOD_ROBUST;
         n = cd_circle_circle_critical(q, k->c, k->d, ts, CDK_CAP);
@@ -544,7 +490,7 @@ static cdist_status circle_disk_solve(cdist_query *q, cdist_method method, const
         cd_best_init(&t, b->scale);
         cd_point_disk_core(v_neg(d->c), d, &t, 0);
         for (int i = 0; i < t.n; i++) t.c[i].param[0] = NAN;
-        merge_best(b, &t, d->c, 0);
+        cd_best_merge(b, &t, d->c, 0);
         b->equidistant = cd_best_is_equidistant(&t);
         return CDIST_OK;
     }
@@ -561,15 +507,15 @@ static cdist_status circle_disk_solve(cdist_query *q, cdist_method method, const
 /* Solved into a fresh collector, then merged into b: b may already hold other candidates (a
  * caller combining several objects), and an equidistant set here only makes b equidistant when
  * it attains b's minimum. */
-static cdist_status circle_disk_core(cdist_query *q, cdist_method method, const cd_circle *c, const cd_circle *d,
+cdist_status cd_circle_disk_core_ex(cdist_query *q, cdist_method method, const cd_circle *c, const cd_circle *d,
                                      cd_best *b, cdist_method *used)
 {
     cd_best t;
     cd_best_init(&t, b->scale);
     cdist_status st = circle_disk_solve(q, method, c, d, &t, used);
     if (st) return st;
-    double d2 = merge_best(b, &t, v3(0, 0, 0), 0);
-    if (cd_best_is_equidistant(&t)) settle_equidistant(b, d2);
+    double d2 = cd_best_merge(b, &t, v3(0, 0, 0), 0);
+    if (cd_best_is_equidistant(&t)) cd_best_settle_equidistant(b, d2);
     return CDIST_OK;
 }
 
@@ -577,11 +523,8 @@ cdist_status cd_circle_disk_core(cdist_query *q, cdist_method method, const cd_c
                                  cd_best *b)
 {
     cdist_method used;
-    return circle_disk_core(q, method, c, d, b, &used);
+    return cd_circle_disk_core_ex(q, method, c, d, b, &used);
 }
-
-#define CD_DISK_METHODS (CD_HAS(CDIST_METHOD_POLYNOMIAL) | CD_HAS(CDIST_METHOD_ROBUST))
-#define CD_DISK_AUTO CDIST_METHOD_ROBUST
 
 cdist_status cdist_circle_disk(cdist_query *q, const cdist_circle *c, const cdist_circle *d, cdist_result *r)
 {
@@ -596,66 +539,10 @@ cdist_status cdist_circle_disk(cdist_query *q, const cdist_circle *c, const cdis
     cd_best best;
     cd_best_init(&best, fmax(fmax(a.r, e.r), v_norm(e.c)));
     cdist_method m = cd_pick_method(q, CD_DISK_METHODS, CD_DISK_AUTO), used;
-    if ((st = circle_disk_core(q, m, &a, &e, &best, &used))) return st;
+    if ((st = cd_circle_disk_core_ex(q, m, &a, &e, &best, &used))) return st;
     if (best.n == 0) return cd_fail(q, CDIST_ERR_INTERNAL, "circle-disk found no candidate");
     cd_best_to_result(&best, v3(0, 0, 0), 0, r);
     cd_circles_unscale_result(r, ex, offset);
     return cd_ok(q, r, used);
 }
 
-/* ------------------------------------------------------------------------------------------ */
-/* Disk to disk                                                                                 */
-
-/* Lexicographic order of the inputs, so that f(a, b) and f(b, a) run the same computation. */
-static int circle_less(const cdist_circle *a, const cdist_circle *b)
-{
-    const double va[7] = {a->center.x, a->center.y, a->center.z, a->normal.x, a->normal.y, a->normal.z, a->radius};
-    const double vb[7] = {b->center.x, b->center.y, b->center.z, b->normal.x, b->normal.y, b->normal.z, b->radius};
-    for (int i = 0; i < 7; i++) {
-        if (va[i] < vb[i]) return 1;
-        if (va[i] > vb[i]) return 0;
-    }
-    return 0;
-}
-
-cdist_status cdist_disk_disk(cdist_query *q, const cdist_circle *d0, const cdist_circle *d1, cdist_result *r)
-{
-    cdist_status st = cd_check_handle(q, r);
-    if (st) return st;
-    cd_circle a, e;
-    if ((st = cd_check_circle(q, d0, "first disk", &a)) || (st = cd_check_circle(q, d1, "second disk", &e))) return st;
-    int swap = circle_less(d1, d0);
-    if (swap) {
-        cd_circle t = a;
-        a = e;
-        e = t;
-    }
-    vec3 offset = a.c;
-    a.c = v3(0, 0, 0);
-    e.c = v_sub(e.c, offset);
-    int ex = cd_circles_scale(&a, &e);
-    cd_best best;
-    cd_best_init(&best, fmax(fmax(a.r, e.r), v_norm(e.c)));
-    cdist_method m = cd_pick_method(q, CD_DISK_METHODS, CD_DISK_AUTO), used0, used1;
-    /* Rim of a to disk e, and rim of e to disk a (computed with e's centre as origin). */
-    cd_best b0, b1;
-    cd_best_init(&b0, best.scale);
-    cd_best_init(&b1, best.scale);
-    if ((st = circle_disk_core(q, m, &a, &e, &b0, &used0))) return st;
-    cd_circle a1 = a, e1 = e;
-    a1.c = v_neg(e.c);
-    e1.c = v3(0, 0, 0);
-    if ((st = circle_disk_core(q, m, &e1, &a1, &b1, &used1))) return st;
-    double d0sq = merge_best(&best, &b0, v3(0, 0, 0), 0);
-    double d1sq = merge_best(&best, &b1, e.c, 1);
-    if (best.n == 0) return cd_fail(q, CDIST_ERR_INTERNAL, "disk-disk found no candidate");
-    /* Parallel faces over each other: the closest set is a region. A rim over the other face
-     * (b0 or b1 equidistant) says so; a disk entirely over the other's face with its rim
-     * beyond it is caught the other way round. */
-    if (cd_best_is_equidistant(&b0)) settle_equidistant(&best, d0sq);
-    if (cd_best_is_equidistant(&b1)) settle_equidistant(&best, d1sq);
-    convex_contact(&best);
-    cd_best_to_result(&best, v3(0, 0, 0), swap, r);
-    cd_circles_unscale_result(r, ex, offset);
-    return cd_ok(q, r, used0 == CDIST_METHOD_ROBUST || used1 == CDIST_METHOD_ROBUST ? CDIST_METHOD_ROBUST : m);
-}

@@ -1,0 +1,99 @@
+/* The critical-angle service of circle-circle (used by circle-disk and the arcs): every
+ * critical angle of theta -> dist^2(c0(theta), c1), from the engine of cc_engine.c. */
+#include <math.h>
+
+#include "circles/circles-priv.h"
+
+/* Angles where A crosses B's axis (w(t) = 0), the non-smooth points of F. */
+static int axis_crossings(const cd_cc_frame *f, double *t)
+{
+    /* 2D coordinates in the plane orthogonal to m. */
+    vec3 e1, e2;
+    v_basis(f->m, &e1, &e2);
+    double ax = v_dot(f->al, e1), ay = v_dot(f->al, e2), bx = v_dot(f->be, e1), by = v_dot(f->be, e2);
+    double gx = -v_dot(f->ga, e1), gy = -v_dot(f->ga, e2); /* solve a c + b s = -ga */
+    double det = ax * by - ay * bx, tol = 1e-9;
+    double an = hypot(ax, ay), bn = hypot(bx, by);
+    if (fabs(det) > 1e-12 * an * bn) {
+        double c = (gx * by - gy * bx) / det, s = (ax * gy - ay * gx) / det;
+        double r = hypot(c, s);
+        if (fabs(r - 1) <= tol) {
+            t[0] = atan2(s, c);
+            return 1;
+        }
+        return 0;
+    }
+    /* a and b parallel: w(t) moves on a segment through ga along e. */
+    double ex = an >= bn ? ax : bx, ey = an >= bn ? ay : by, en = hypot(ex, ey);
+    if (!(en > 0)) return 0;
+    ex /= en;
+    ey /= en;
+    double perp = -gx * ey + gy * ex; /* component of -ga across the segment */
+    if (fabs(perp) > tol * (f->R + v_norm(f->C))) return 0;
+    double pa = ax * ex + ay * ey, pb = bx * ex + by * ey, pg = gx * ex + gy * ey;
+    double amp = hypot(pa, pb);
+    if (!(amp > 0) || fabs(pg) > amp * (1 + tol)) return 0;
+    double phi = atan2(pb, pa), dlt = acos(fmax(-1.0, fmin(1.0, pg / amp)));
+    int n = 0;
+    double cand[2] = {phi + dlt, phi - dlt};
+    for (int i = 0; i < (dlt == 0 ? 1 : 2); i++) {
+        double x = remainder(cand[i], 2 * M_PI);
+        if (x <= -M_PI) x += 2 * M_PI;
+        t[n++] = x;
+    }
+    return n;
+}
+
+int cd_circle_circle_critical(cdist_query *q, const cd_circle *c0, const cd_circle *c1, double *theta0, int cap)
+{
+    (void)q;
+    if (cap < 0) cap = 0;
+    if (c0->r == 0.0) return -1; /* a point: every angle gives the same point */
+    vec3 C = v_sub(c1->c, c0->c);
+    /* Angles do not change under scaling: work at L ~ 1 (see cc_robust). */
+    int ex;
+    frexp(fmax(fmax(c0->r, c1->r), v_norm(C)), &ex);
+    double sc = ldexp(1.0, -ex);
+    cd_circle a = *c0, b = *c1;
+    a.c = v3(0, 0, 0);
+    a.r *= sc;
+    b.c = v_scale(sc, C);
+    b.r *= sc;
+    c0 = &a;
+    c1 = &b;
+    C = b.c;
+    cd_cc_frame f;
+    cd_cc_frame_init(&f, c0, C, c1);
+    cd_cc_sink k = {.f = &f, .want_max = 1, .out = theta0, .cap = cap, .A = c0, .B = c1,
+                 .Fmin = INFINITY, .dmin = INFINITY, .rho_min = INFINITY};
+    double Fmax, tp[4];
+    int np = cd_cc_parallel_critical(&f, tp);
+    if (np > 0) {
+        double dlo = INFINITY, dhi = 0;
+        for (int i = 0; i < np; i++) {
+            cd_cc_pt p;
+            double c, s;
+            sincos(tp[i], &s, &c);
+            cd_cc_eval_lean(&f, tp[i], c, s, &p);
+            dlo = fmin(dlo, p.d);
+            dhi = fmax(dhi, p.d);
+            if (i < cap) theta0[i] = tp[i];
+        }
+        if (dhi - dlo <= CC_EQUI_ULPS * DBL_EPSILON * f.L) return -1;
+        return np < cap ? np : cap;
+    }
+    cd_cc_scan(&f, &k, &Fmax);
+    int n = k.count < cap ? k.count : cap;
+    double L = fmax(fmax(c0->r, c1->r), v_norm(C));
+    /* Constant F (also when F' never changes sign: a periodic F that is not constant has a
+     * bracketed minimum and maximum). */
+    if (k.count == 0 || sqrt(Fmax) - k.dmin <= CC_EQUI_ULPS * DBL_EPSILON * L) return -1;
+    double tk[2];
+    int nk = c1->r > 0 ? axis_crossings(&f, tk) : 0;
+    for (int i = 0; i < nk; i++) {
+        if (n < cap) theta0[n] = tk[i];
+        n++;
+    }
+    return n < cap ? n : cap;
+}
+

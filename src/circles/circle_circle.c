@@ -1,0 +1,166 @@
+/* SPDX-License-Identifier: MIT */
+/* Circle to circle: public entry points, the one scaling rule of the family, method dispatch
+ * (AUTO = the robust method of cc_robust.c, also the fallback of the polynomial and iteration
+ * methods), and the method-independent equidistance tests and same-basin filter described in
+ * cc_engine.c. */
+#include <math.h>
+#include <stdio.h>
+
+#include "circles/circles-priv.h"
+
+/* Distance from X to circle c (closed form, |N x D| for the axis distance). */
+static double pc_dist(vec3 X, const cd_circle *c, double *rho_out)
+{
+    vec3 D = v_sub(X, c->c);
+    vec3 w = v_cross(c->n, D);
+    double rho = v_norm(w), h = v_dot(c->n, D), dr = rho - c->r;
+    if (rho_out) *rho_out = rho;
+    return sqrt(fma(dr, dr, h * h));
+}
+
+/* The equidistance tests (a) and (b) of the header comment, method independent, applied to the
+ * answer of the polynomial and iteration methods: (b) a closest point on the other circle's
+ * axis; (a) 16 equally spaced points of either circle all at the minimum distance (the scan
+ * stops at the first point that is not, so a generic query pays two evaluations). */
+static void cc_equidistant_post(const cd_circle *c0, const cd_circle *c1, cd_best *b)
+{
+    if (b->equidistant || b->n == 0) return;
+    const cd_circle *cs[2] = {c0, c1};
+    double d = sqrt(b->c[0].d2), Cn = v_norm(v_sub(c1->c, c0->c));
+    double L = fmax(fmax(c0->r, c1->r), Cn), tol = CC_EQUI_ULPS * DBL_EPSILON * L;
+    for (int side = 0; side < 2; side++) {
+        const cd_circle *me = cs[side], *other = cs[1 - side];
+        if (other->r > 0 && me->r >= 0) {
+            double rho;
+            pc_dist(b->c[0].p[side], other, &rho);
+            if (rho <= 8 * DBL_EPSILON * (me->r + other->r + Cn) * fmin(1.0, other->r / L)) {
+                b->equidistant = 1;
+                return;
+            }
+        }
+        if (me->r == 0) continue;
+        int j;
+        for (j = 0; j < 16; j++) {
+            double t = j * (M_PI / 8), c = cos(t), sn = sin(t);
+            vec3 X = v_add(me->c, v_add(v_scale(me->r * c, me->u), v_scale(me->r * sn, me->v)));
+            if (fabs(pc_dist(X, other, NULL) - d) > tol) break;
+        }
+        if (j == 16) {
+            b->equidistant = 1;
+            return;
+        }
+    }
+}
+
+/* Whether both arcs of circle c between the points at angles a and b rise above the tie level
+ * (sampled at their midpoints) as seen from the other circle: then a and b are separate minima. */
+static int arcs_rise(const cd_circle *c, const cd_circle *other, double a, double b, double dbest, double tie)
+{
+    if (isnan(a) || isnan(b)) return 0;
+    double mid = b + 0.5 * remainder(a - b, 2.0 * M_PI);
+    for (int k = 0; k < 2; k++) {
+        double t = mid + k * M_PI;
+        vec3 X = v_add(c->c, v_add(v_scale(c->r * cos(t), c->u), v_scale(c->r * sin(t), c->v)));
+        if (!(pc_dist(X, other, NULL) - dbest > tie)) return 0;
+    }
+    return 1;
+}
+
+/* Method independent: two tied candidates are two closest pairs only when they are separate
+ * minima, i.e. the distance rises between them along both arcs of the first circle or along both
+ * arcs of the second. Otherwise they are two points of one flat minimum (e.g. circles in
+ * parallel planes whose projections touch, where F is flat to fourth order) and the best
+ * represents it. */
+static void cc_same_basin_filter(const cd_circle *c0, const cd_circle *c1, cd_best *b)
+{
+    double tie = CD_TIE_ULPS * DBL_EPSILON * b->scale;
+    while (b->n >= 2 && !cd_best_is_equidistant(b)) {
+        double dbest = sqrt(b->c[0].d2);
+        if (sqrt(b->c[1].d2) - dbest > tie) return;
+        const cd_cand *x = &b->c[0], *y = &b->c[1];
+        double a0 = cd_circle_angle(c0, v_sub(x->p[0], c0->c)), b0 = cd_circle_angle(c0, v_sub(y->p[0], c0->c));
+        double a1 = cd_circle_angle(c1, v_sub(x->p[1], c1->c)), b1 = cd_circle_angle(c1, v_sub(y->p[1], c1->c));
+        if (arcs_rise(c0, c1, a0, b0, dbest, tie) || arcs_rise(c1, c0, a1, b1, dbest, tie)) return;
+        for (int j = 1; j + 1 < b->n; j++) b->c[j] = b->c[j + 1];
+        b->n--;
+    }
+}
+
+/* Runs `method`; the robust method answers AUTO and is the fallback of a method that fails.
+ * *answered: the method that produced the result. */
+static cdist_status cc_core(cdist_query *q, cdist_method method, const cd_circle *c0, const cd_circle *c1,
+                            cd_best *b, int *iterations, cdist_method *answered)
+{
+    if (iterations) *iterations = 0;
+    cdist_status st = CDIST_ERR_INTERNAL;
+    if (method == CDIST_METHOD_POLYNOMIAL) st = cd_cc_polynomial(q, c0, c1, b);
+    else if (method == CDIST_METHOD_ITERATION) st = cd_cc_iteration(q, c0, c1, b, iterations);
+    *answered = method;
+    if (method == CDIST_METHOD_AUTO || method == CDIST_METHOD_ROBUST || st != CDIST_OK) {
+        /* AUTO is the robust method (measured fastest and as exact); it is also the fallback. */
+        cd_best_init(b, b->scale);
+        if (iterations) *iterations = 0;
+        *answered = CDIST_METHOD_ROBUST;
+        st = cd_cc_robust(q, c0, c1, b);
+    } else {
+        cc_equidistant_post(c0, c1, b);
+    }
+    if (st == CDIST_OK) cc_same_basin_filter(c0, c1, b);
+    return st;
+}
+
+cdist_status cd_circle_circle_core(cdist_query *q, cdist_method method, const cd_circle *c0, const cd_circle *c1,
+                                   cd_best *b, int *iterations)
+{
+    cdist_method answered;
+    return cc_core(q, method, c0, c1, b, iterations, &answered);
+}
+
+int cd_circles_scale(cd_circle *a, cd_circle *b)
+{
+    int e = cd_scale_exponent(fmax(fmax(a->r, b->r), v_norm(b->c)));
+    a->r = ldexp(a->r, -e);
+    b->r = ldexp(b->r, -e);
+    b->c = v3(ldexp(b->c.x, -e), ldexp(b->c.y, -e), ldexp(b->c.z, -e));
+    return e;
+}
+
+void cd_circles_unscale_result(cdist_result *r, int e, vec3 offset)
+{
+    r->distance = ldexp(r->distance, e);
+    r->sqr_distance = ldexp(r->sqr_distance, 2 * e);
+    for (int i = 0; i < r->num_pairs; i++)
+        for (int j = 0; j < 2; j++) {
+            vec3 p = r->pairs[i].point[j];
+            r->pairs[i].point[j] = v_add(v3(ldexp(p.x, e), ldexp(p.y, e), ldexp(p.z, e)), offset);
+        }
+}
+
+cdist_status cdist_circle_circle(cdist_query *q, const cdist_circle *c0, const cdist_circle *c1, cdist_result *r)
+{
+    cdist_status st = cd_check_handle(q, r);
+    if (st) return st;
+    cd_circle a, b;
+    if ((st = cd_check_circle(q, c0, "first circle", &a)) || (st = cd_check_circle(q, c1, "second circle", &b)))
+        return st;
+    /* Work relative to the first centre. */
+    vec3 offset = a.c;
+    a.c = v3(0, 0, 0);
+    b.c = v_sub(b.c, offset);
+    int e = cd_circles_scale(&a, &b);
+    cd_best best;
+    cd_best_init(&best, fmax(fmax(a.r, b.r), v_norm(b.c)));
+    cdist_method m = cd_pick_method(q, CD_HAS(CDIST_METHOD_POLYNOMIAL) | CD_HAS(CDIST_METHOD_ROBUST) |
+                                           CD_HAS(CDIST_METHOD_ITERATION),
+                                    CDIST_METHOD_AUTO);
+    int iterations = 0;
+    cdist_method answered;
+    st = cc_core(q, m, &a, &b, &best, &iterations, &answered);
+    if (st) return st;
+    cd_best_to_result(&best, v3(0, 0, 0), 0, r);
+    cd_circles_unscale_result(r, e, offset);
+    r->iterations = iterations;
+    return cd_ok(q, r, answered);
+}
+
+

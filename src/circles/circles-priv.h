@@ -1,0 +1,111 @@
+/* Private declarations of the circles family (src/circles): the trigonometric root-isolation
+ * engine of circle-circle (cc_engine.c, described there) shared by the robust method
+ * (cc_robust.c), the critical-angle service (cc_critical.c) and the dispatcher
+ * (circle_circle.c). Everything is in the units of a problem scaled to L in [1, 2). */
+#ifndef CDIST_CIRCLES_PRIV_H
+#define CDIST_CIRCLES_PRIV_H
+
+#include "internal.h"
+
+/* F constant on a circle (equidistant configuration (a)): variation below CC_EQUI_ULPS eps L. */
+#define CC_EQUI_ULPS 32.0
+
+/* The parameterised circle A at the origin and the other circle B. */
+typedef struct cd_cc_frame {
+    double R, s;       /* radii of A and B */
+    vec3 u, v;         /* A's basis */
+    vec3 C, m;         /* B's centre relative to A's centre, B's unit normal */
+    vec3 al, be, ga;   /* w(t) = m x (P(t) - C) = al cos t + be sin t + ga */
+    double ha, hb, hc; /* h(t) = m.(P(t) - C) = ha cos t + hb sin t + hc */
+    double Cu, Cv;     /* sigma = D.D' = R (Cu sin t - Cv cos t) */
+    double M1, M2, M3; /* |H'| <= M1, |H''| <= M2, |H'''| <= M3 */
+    double eH, eH1, eH2; /* rounding bounds of the computed H, H', H'' */
+    double Hc;         /* sum of |Fourier coefficients| of H */
+    double epsL;       /* eps * (R + |C|): absolute rounding of positions */
+    double L;          /* problem scale max(R, s, |C|) */
+    double Lw, W1, nga; /* magnitudes of the terms of w, of |w'|, |ga| (rounding bounds) */
+} cd_cc_frame;
+
+/* Values at one angle. */
+typedef struct cd_cc_pt {
+    double t, c, s;
+    double H, H1, H2; /* H, H', H'' */
+    double eH, eH1, eH2; /* their rounding bounds at this point */
+    double F1;    /* F'/2 */
+    double F;     /* F */
+    double d;     /* sqrt(F) */
+    double Q, g;  /* rho^2 and w.w' */
+} cd_cc_pt;
+
+/* Receiver of the critical points found by the scan. */
+typedef struct cd_cc_sink {
+    const cd_cc_frame *f;
+    int want_max;   /* also report local maxima (critical-angle mode) */
+    double *out;    /* critical mode: angles */
+    int cap, count; /* critical mode: room and number found (may exceed cap) */
+    cd_best *best;  /* robust mode */
+    int swapped;    /* robust mode: A is the second circle */
+    const cd_circle *A, *B;
+    double unscale; /* robust mode: the factor undoing the problem's scaling */
+    double tmin, Fmin; /* partition point with the smallest F */
+    double dmin;  /* smallest refined distance */
+    double rho_min; /* axis distance of the point giving dmin */
+} cd_cc_sink;
+
+static inline double cd_cc_dot3(vec3 a, vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+
+/* Hot-path arithmetic without fma(): the library is built for baseline x86-64, where fma() is a
+ * libm call; plain products are accurate enough for sampling and Newton steps (the final
+ * distance of each pair is recomputed in pair_at). */
+/* w = al c + be s + ga and w' = be c - al s */
+static inline void cd_cc_w_at(const cd_cc_frame *f, double c, double s, vec3 *w, vec3 *w1)
+{
+    w->x = f->al.x * c + f->be.x * s + f->ga.x;
+    w->y = f->al.y * c + f->be.y * s + f->ga.y;
+    w->z = f->al.z * c + f->be.z * s + f->ga.z;
+    w1->x = f->be.x * c - f->al.x * s;
+    w1->y = f->be.y * c - f->al.y * s;
+    w1->z = f->be.z * c - f->al.z * s;
+}
+
+/* F and F'/2 only, at angle t with (c, s) = (cos t, sin t): the lean evaluation of the sampled
+ * regions (dense scan, kink grid, budget fallback, minimum search), which read only the signs of
+ * F' and the values of F and need none of H's rounding bounds. */
+static inline void cd_cc_eval_lean(const cd_cc_frame *f, double t, double c, double s, cd_cc_pt *p)
+{
+    vec3 w, w1;
+    cd_cc_w_at(f, c, s, &w, &w1);
+    double Q = cd_cc_dot3(w, w), g = cd_cc_dot3(w, w1);
+    double rho = sqrt(Q);
+    double h = f->ha * c + f->hb * s + f->hc, h1 = f->hb * c - f->ha * s;
+    double dr = rho - f->s;
+    p->t = t;
+    p->c = c;
+    p->s = s;
+    p->F1 = dr * (rho > 0 ? g / rho : 0.0) + h * h1;
+    p->F = dr * dr + h * h;
+    p->d = sqrt(p->F);
+    p->Q = Q;
+    p->g = g;
+}
+
+/* The frame of A (parameterised, centre at the origin) and B (centre C relative to A's). */
+void cd_cc_frame_init(cd_cc_frame *f, const cd_circle *A, vec3 C, const cd_circle *B);
+/* Walks [-pi, pi) and hands every critical bracket of F to the sink (see cc_engine.c). Fmax:
+ * largest F seen at the partition points. */
+int cd_cc_scan(const cd_cc_frame *f, cd_cc_sink *k, double *Fmax);
+/* Offer the pair at angle t of A to the sink's collector (robust mode). */
+void cd_cc_pair_at(const cd_cc_frame *f, double t, cd_cc_sink *k);
+/* Parallel planes: F's critical angles in closed form (up to 4), or -1 when not parallel. */
+int cd_cc_parallel_critical(const cd_cc_frame *f, double *t);
+/* The robust method (c0 at the origin). */
+cdist_status cd_cc_robust(cdist_query *q, const cd_circle *c0, const cd_circle *c1, cd_best *b);
+/* Circle c (centre at the origin) to disk d, solved into a fresh collector and merged into b
+ * (an equidistant sub-result makes b equidistant only where it attains b's minimum); *used:
+ * the method that answered. */
+cdist_status cd_circle_disk_core_ex(cdist_query *q, cdist_method method, const cd_circle *c, const cd_circle *d,
+                                    cd_best *b, cdist_method *used);
+#define CD_DISK_METHODS (CD_HAS(CDIST_METHOD_POLYNOMIAL) | CD_HAS(CDIST_METHOD_ROBUST))
+#define CD_DISK_AUTO CDIST_METHOD_ROBUST
+
+#endif

@@ -1,0 +1,60 @@
+/* Disk to disk: the rim of each disk against the other disk (circle_disk.c); by the lemma of
+ * circle_disk.c the closest pair has a rim point on at least one side, or the faces are
+ * parallel and over each other (flagged equidistant). */
+#include <math.h>
+
+#include "circles/circles-priv.h"
+
+/* Lexicographic order of the inputs, so that f(a, b) and f(b, a) run the same computation. */
+static int circle_less(const cdist_circle *a, const cdist_circle *b)
+{
+    const double va[7] = {a->center.x, a->center.y, a->center.z, a->normal.x, a->normal.y, a->normal.z, a->radius};
+    const double vb[7] = {b->center.x, b->center.y, b->center.z, b->normal.x, b->normal.y, b->normal.z, b->radius};
+    for (int i = 0; i < 7; i++) {
+        if (va[i] < vb[i]) return 1;
+        if (va[i] > vb[i]) return 0;
+    }
+    return 0;
+}
+
+cdist_status cdist_disk_disk(cdist_query *q, const cdist_circle *d0, const cdist_circle *d1, cdist_result *r)
+{
+    cdist_status st = cd_check_handle(q, r);
+    if (st) return st;
+    cd_circle a, e;
+    if ((st = cd_check_circle(q, d0, "first disk", &a)) || (st = cd_check_circle(q, d1, "second disk", &e))) return st;
+    int swap = circle_less(d1, d0);
+    if (swap) {
+        cd_circle t = a;
+        a = e;
+        e = t;
+    }
+    vec3 offset = a.c;
+    a.c = v3(0, 0, 0);
+    e.c = v_sub(e.c, offset);
+    int ex = cd_circles_scale(&a, &e);
+    cd_best best;
+    cd_best_init(&best, fmax(fmax(a.r, e.r), v_norm(e.c)));
+    cdist_method m = cd_pick_method(q, CD_DISK_METHODS, CD_DISK_AUTO), used0, used1;
+    /* Rim of a to disk e, and rim of e to disk a (computed with e's centre as origin). */
+    cd_best b0, b1;
+    cd_best_init(&b0, best.scale);
+    cd_best_init(&b1, best.scale);
+    if ((st = cd_circle_disk_core_ex(q, m, &a, &e, &b0, &used0))) return st;
+    cd_circle a1 = a, e1 = e;
+    a1.c = v_neg(e.c);
+    e1.c = v3(0, 0, 0);
+    if ((st = cd_circle_disk_core_ex(q, m, &e1, &a1, &b1, &used1))) return st;
+    double d0sq = cd_best_merge(&best, &b0, v3(0, 0, 0), 0);
+    double d1sq = cd_best_merge(&best, &b1, e.c, 1);
+    if (best.n == 0) return cd_fail(q, CDIST_ERR_INTERNAL, "disk-disk found no candidate");
+    /* Parallel faces over each other: the closest set is a region. A rim over the other face
+     * (b0 or b1 equidistant) says so; a disk entirely over the other's face with its rim
+     * beyond it is caught the other way round. */
+    if (cd_best_is_equidistant(&b0)) cd_best_settle_equidistant(&best, d0sq);
+    if (cd_best_is_equidistant(&b1)) cd_best_settle_equidistant(&best, d1sq);
+    cd_best_convex_contact(&best);
+    cd_best_to_result(&best, v3(0, 0, 0), swap, r);
+    cd_circles_unscale_result(r, ex, offset);
+    return cd_ok(q, r, used0 == CDIST_METHOD_ROBUST || used1 == CDIST_METHOD_ROBUST ? CDIST_METHOD_ROBUST : m);
+}
