@@ -676,13 +676,14 @@ def _make_single_method(name, cls_a, cls_b, contact, grad):
         doc = """Signed distance from a %(A)s (a) to a %(B)s (b)%(G)s: cdist_%(name)s.
 
         a: %(A)s, b: %(B)s -- one object each (arrays are refused: the C batch API has no
-        swept kinds; loop in Python, one C call per entry). Returns %(R)s. Contact.distance =
+        swept kinds; loop in Python, one C call per entry). Contact.distance =
         core_distance - (r0 + r1), negative when the solids overlap; witness points, core
         points, normals. Raises CircleDistError on bad input (e.g. a negative radius).
-        method: a Method (or its name) for the core query of this call only."""
+        method: a Method (or its name) for the core query of this call only.
+        Returns %(R)s."""
         what.update(G=" with its gradient" if grad else "",
-                    R="(Contact, Grad): Grad holds the derivatives of the signed distance "
-                    "(d_radius_swept = -1 for each swept object)" if grad else "a Contact")
+                    R="(Contact, Grad); Grad holds the derivatives of the signed distance\n"
+                    "        (d_radius_swept = -1 for each swept object)" if grad else "a Contact")
     else:
         doc = """Minimum distance from a %(A)s (a) to a %(B)s (b) with its gradient: cdist_%(name)s.
 
