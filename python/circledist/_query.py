@@ -10,7 +10,7 @@ import numpy as np
 
 from . import _lib
 from ._objects import (Arc, Bezier3, Capsule, Circle, Disk, Helix, Line, Point, Ray,
-                       RoundedDisk, Segment, Sphere, Torus, as_float_array, coerce)
+                       RoundedDisk, Segment, Sphere, Torus, _plain, as_float_array, coerce)
 
 
 class Method(enum.IntEnum):
@@ -91,6 +91,17 @@ _OFFSETS = {k: v[1] for k, v in _lib.RESULT_DTYPE.fields.items()}
 assert (_OFFSETS["pairs"], _OFFSETS["num_pairs"], _OFFSETS["equidistant"], _OFFSETS["method"],
         _OFFSETS["iterations"], _lib.PAIR_DTYPE.itemsize, _RESULT_HEAD.size) == \
     (24, 16, 20, 152, 156, 64, 160), _OFFSETS
+# struct cdist_contact up to its reserved area: distance, core_distance, num_pairs,
+# equidistant, flags, method, pairs (2 x (point[2][3], core_point[2][3], normal, param[2])).
+_CONTACT_HEAD = struct.Struct("=2d4i34d")
+# struct cdist_grad: obj[2] (7 vec3, 4 doubles, reserved[8] each), flags, reserved_int, ...
+_GRAD_OBJECT_DOUBLES = _lib.GRAD_OBJECT_DTYPE.itemsize // 8
+_GRAD_FLAGS = struct.Struct("=i")
+_GRAD_OFFSETS = {k: v[1] for k, v in _lib.GRAD_DTYPE.fields.items()}
+_C_OFFSETS = {k: v[1] for k, v in _lib.CONTACT_DTYPE.fields.items()}
+assert (_C_OFFSETS["pairs"], _C_OFFSETS["method"], _lib.CONTACT_PAIR_DTYPE.itemsize,
+        _CONTACT_HEAD.size, _lib.GRAD_OBJECT_DTYPE.fields["d_end"][1], _GRAD_OBJECT_DOUBLES,
+        _GRAD_OFFSETS["flags"]) == (32, 28, 136, 304, 192, 33, 528), (_C_OFFSETS, _GRAD_OFFSETS)
 
 
 class Result:
@@ -244,18 +255,24 @@ class Contact:
 
     def __init__(self, raw):
         """raw: one cdist_contact as a numpy structured scalar or 0-d array (CONTACT_DTYPE)."""
-        raw = np.asarray(raw)
-        self.distance = float(raw["distance"])
-        self.core_distance = float(raw["core_distance"])
-        k = self.num_pairs = int(raw["num_pairs"])
-        self.equidistant = bool(raw["equidistant"])
-        self.flags = int(raw["flags"])
-        self.method = Method(int(raw["method"]))
-        pairs = raw["pairs"][:k]
-        self.points = pairs["point"].copy()
-        self.core_points = pairs["core_point"].copy()
-        self.normals = pairs["normal"].copy()
-        self.params = pairs["param"].copy()
+        self._read(np.ascontiguousarray(np.asarray(raw).reshape(1)).data)
+
+    @classmethod
+    def _from_buffer(cls, buffer):
+        c = cls.__new__(cls)
+        c._read(buffer)
+        return c
+
+    def _read(self, buffer):
+        v = _CONTACT_HEAD.unpack_from(buffer)
+        self.distance, self.core_distance = v[0], v[1]
+        k = self.num_pairs = v[2]
+        self.equidistant, self.flags, self.method = bool(v[3]), v[4], _METHODS[v[5]]
+        pairs = np.array(v[6:6 + 17 * k]).reshape(k, 17)   # point[2], core_point[2], normal, param
+        self.points = pairs[:, 0:6].reshape(k, 2, 3)
+        self.core_points = pairs[:, 6:12].reshape(k, 2, 3)
+        self.normals = pairs[:, 12:15]
+        self.params = pairs[:, 15:17]
 
     @property
     def core_touch(self):
@@ -284,21 +301,18 @@ class GradObject:
 
     __slots__ = _lib.GRAD_OBJECT_FIELDS
 
-    def __init__(self, raw):
-        """raw: one cdist_grad_object as a numpy structured scalar (GRAD_OBJECT_DTYPE)."""
-        for f in _lib.GRAD_OBJECT_FIELDS[:7]:
-            setattr(self, f, np.array(raw[f]))
-        for f in _lib.GRAD_OBJECT_FIELDS[7:]:
-            setattr(self, f, float(raw[f]))
+    def __init__(self, values):
+        """values: the 25 doubles of one cdist_grad_object up to its reserved area."""
+        values = np.asarray(values, dtype=np.float64)
+        for i, f in enumerate(_lib.GRAD_OBJECT_FIELDS[:7]):
+            setattr(self, f, values[3 * i:3 * i + 3])
+        for i, f in enumerate(_lib.GRAD_OBJECT_FIELDS[7:]):
+            setattr(self, f, float(values[21 + i]))
 
     def __repr__(self):
         return "GradObject(%s)" % ", ".join(
             "%s=%r" % (f, _plain(getattr(self, f))) for f in _lib.GRAD_OBJECT_FIELDS
             if np.any(getattr(self, f)))
-
-
-def _plain(v):
-    return v.tolist() if isinstance(v, np.ndarray) else v
 
 
 class Grad:
@@ -312,9 +326,18 @@ class Grad:
 
     def __init__(self, raw):
         """raw: one cdist_grad as a numpy structured scalar or 0-d array (GRAD_DTYPE)."""
-        raw = np.asarray(raw)
-        self.obj = (GradObject(raw["obj"][0]), GradObject(raw["obj"][1]))
-        self.flags = int(raw["flags"])
+        self._read(np.ascontiguousarray(np.asarray(raw).reshape(1)).data)
+
+    @classmethod
+    def _from_buffer(cls, buffer):
+        g = cls.__new__(cls)
+        g._read(buffer)
+        return g
+
+    def _read(self, buffer):
+        values = np.frombuffer(buffer, np.float64, 2 * _GRAD_OBJECT_DOUBLES).copy()
+        self.obj = (GradObject(values[:25]), GradObject(values[_GRAD_OBJECT_DOUBLES:][:25]))
+        self.flags = _GRAD_FLAGS.unpack_from(buffer, _GRAD_OFFSETS["flags"])[0]
 
     @property
     def differentiable(self):
@@ -323,7 +346,6 @@ class Grad:
 
     def __repr__(self):
         return "Grad(differentiable=%r, obj=(%r, %r))" % (self.differentiable, *self.obj)
-
 
 # Status codes that concern the whole call (not one entry): raised as CircleDistError.
 _CALL_ERRORS = {1, 11, 13, 15, 16}
@@ -381,8 +403,10 @@ class Query:
         self._one_buffer = self._one.data
         self._one_addr = self._one.ctypes.data
         self._contact = np.zeros(1, _lib.CONTACT_DTYPE)   # buffers of swept / gradient queries
+        self._contact_buffer = self._contact.data
         self._contact_addr = self._contact.ctypes.data
         self._grad = np.zeros(1, _lib.GRAD_DTYPE)
+        self._grad_buffer = self._grad.data
         self._grad_addr = self._grad.ctypes.data
         self._q = _lib.query_new()
         if not self._q:
@@ -542,8 +566,9 @@ class Query:
                     st = c_fn(q, a.address, b.address, out)
                 if st:
                     self._check(st)
-                res = Contact(self._contact[0]) if contact else Result._from_buffer(self._one_buffer)
-                return (res, Grad(self._grad[0])) if grad else res
+                res = Contact._from_buffer(self._contact_buffer) if contact else \
+                    Result._from_buffer(self._one_buffer)
+                return (res, Grad._from_buffer(self._grad_buffer)) if grad else res
             finally:
                 if old is not None:
                     _lib.query_set_method(q, old)

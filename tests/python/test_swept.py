@@ -257,6 +257,29 @@ def test_struct_layouts_match_library():
     for i, cls in enumerate((cd.Sphere, cd.Capsule, cd.Torus, cd.RoundedDisk)):
         assert _lib.swept_size(i) == 8 * cls.WIDTH
     assert (cd.Sphere.WIDTH, cd.Capsule.WIDTH, cd.Torus.WIDTH, cd.RoundedDisk.WIDTH) == (4, 7, 8, 8)
+    # the readers of the C structs against the numpy field layout
+    raw = np.zeros((), cd.CONTACT_DTYPE)
+    raw["distance"], raw["core_distance"], raw["num_pairs"], raw["flags"], raw["method"] = \
+        -0.5, 0.25, 2, 1, 2
+    raw["pairs"]["point"] = np.arange(12).reshape(2, 2, 3)
+    raw["pairs"]["core_point"] = 20 + np.arange(12).reshape(2, 2, 3)
+    raw["pairs"]["normal"] = [[0, 0, 1], [0, 1, 0]]
+    raw["pairs"]["param"] = [[7, 8], [9, 10]]
+    c = cd.Contact(raw)
+    assert (c.distance, c.core_distance, c.num_pairs, c.core_touch, c.method) == \
+        (-0.5, 0.25, 2, True, cd.Method.ROBUST)
+    assert c.pairs[1].points.tolist() == [[6, 7, 8], [9, 10, 11]]
+    assert c.pairs[1].core_points.tolist() == [[26, 27, 28], [29, 30, 31]]
+    assert c.normals.tolist() == [[0, 0, 1], [0, 1, 0]] and c.params.tolist() == [[7, 8], [9, 10]]
+    raw = np.zeros((), cd.GRAD_DTYPE)
+    raw["flags"] = 1
+    for k in range(2):
+        for i, f in enumerate(_lib.GRAD_OBJECT_FIELDS):
+            raw["obj"][k][f] = 100 * k + i
+    g = cd.Grad(raw)
+    assert not g.differentiable and g.flags == 1
+    assert g.obj[1].d_p1.tolist() == [105] * 3 and g.obj[0].d_end == 10
+    assert g.obj[1].d_radius_swept == 108 and g.obj[0].d_zero_direction.tolist() == [6] * 3
     t = cd.Torus(((1, 2, 3), (0, 0, 1), 4), 0.5)
     assert t.data.tolist() == [1, 2, 3, 0, 0, 1, 4, 0.5]
     assert isinstance(t.circle, cd.Circle) and t.tube_radius == 0.5
