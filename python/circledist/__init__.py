@@ -18,17 +18,29 @@ Queries (module functions and Query methods): point_circle, point_disk, line_cir
 ray_circle, segment_circle, circle_circle, line_disk, ray_disk, segment_disk, circle_disk,
 disk_disk, arc_circle, arc_arc, segment_arc, arc_disk, helix_circle, helix_disk,
 bezier3_circle, bezier3_disk, curve_circle, curve_disk; each takes method=, threads= and
-distance_only=. Errors: CircleDistError (status, name, message) from the library; ValueError
-or TypeError naming the argument for malformed Python input.
+distance_only=.
+
+Swept objects (a core swept by a ball): Sphere, Capsule, Torus, RoundedDisk. Their queries
+(torus_torus, torus_capsule, torus_sphere, torus_rounded_disk, capsule_capsule,
+capsule_sphere, capsule_rounded_disk, sphere_sphere, sphere_rounded_disk,
+rounded_disk_rounded_disk, torus_line, torus_ray, torus_segment, capsule_circle, capsule_disk,
+sphere_circle, sphere_disk) take one object each and return a Contact (signed distance,
+witness points, normals). Gradients: <query>_grad(a, b) for every swept query and for
+point/line/ray/segment/circle/disk/arc queries with a C _grad variant returns (result, Grad),
+Grad.obj[k].d_center etc. as in cdist_grad_object.
+
+Errors: CircleDistError (status, name, message) from the library; ValueError or TypeError
+naming the argument for malformed Python input.
 
 The C library is found through $CIRCLEDIST_LIBRARY (a path), else the library installed with
 this package by meson, else the system loader (libcircledist.so.1).
 """
-from ._lib import RESULT_DTYPE
-from ._objects import Arc, Bezier3, Circle, Disk, GeometricObject, Helix, Line, Point, Ray, Segment
-from ._query import (FUNCTIONS as _FUNCTIONS, BatchResult, CircleDistError, Method, Pair, Query,
-                     Result, circle_basis, circle_point, default_query, status_name, status_string,
-                     version)
+from ._lib import CONTACT_DTYPE, GRAD_DTYPE, RESULT_DTYPE
+from ._objects import (Arc, Bezier3, Capsule, Circle, Disk, GeometricObject, Helix, Line, Point,
+                       Ray, RoundedDisk, Segment, Sphere, Torus)
+from ._query import (FUNCTIONS as _FUNCTIONS, BatchResult, CircleDistError, Contact, ContactPair,
+                     Grad, GradObject, Method, Pair, Query, Result, circle_basis, circle_point,
+                     default_query, status_name, status_string, version)
 
 globals().update(_FUNCTIONS)
 
@@ -38,7 +50,9 @@ METHOD_AUTO, METHOD_POLYNOMIAL, METHOD_ROBUST, METHOD_ITERATION = (
 __version__ = "1.0.0"
 
 __all__ = ["Point", "Circle", "Disk", "Line", "Ray", "Segment", "Arc", "Helix", "Bezier3",
-           "GeometricObject", "Query", "Result", "BatchResult", "Pair", "Method",
+           "Sphere", "Capsule", "Torus", "RoundedDisk",
+           "GeometricObject", "Query", "Result", "BatchResult", "Pair", "Contact", "ContactPair",
+           "Grad", "GradObject", "Method",
            "CircleDistError", "circle_basis", "circle_point", "default_query", "status_name",
-           "status_string", "version", "RESULT_DTYPE", "METHOD_AUTO", "METHOD_POLYNOMIAL",
+           "status_string", "version", "RESULT_DTYPE", "CONTACT_DTYPE", "GRAD_DTYPE", "METHOD_AUTO", "METHOD_POLYNOMIAL",
            "METHOD_ROBUST", "METHOD_ITERATION"] + sorted(_FUNCTIONS)

@@ -135,6 +135,49 @@ if version_major() != 1:
     raise ImportError("circledist: library version %s is not ABI version 1" % version_string().decode())
 
 
+# Swept objects (contacts) and gradients (may be missing from an older library: the calls
+# then say so). struct cdist_contact / cdist_grad as numpy dtypes, checked below.
+contact_size = _decl("cdist_contact_size", _c.c_size_t, required=False)
+swept_size = _decl("cdist_swept_size", _c.c_size_t, _c.c_int, required=False)
+contact_flag_core_touch = _decl("cdist_contact_flag_core_touch", _c.c_int, required=False)
+grad_size = _decl("cdist_grad_size", _c.c_size_t, required=False)
+grad_flag_not_differentiable = _decl("cdist_grad_flag_not_differentiable", _c.c_int,
+                                     required=False)
+CONTACT_PAIR_DTYPE = np.dtype([("point", np.float64, (2, 3)), ("core_point", np.float64, (2, 3)),
+                               ("normal", np.float64, (3,)), ("param", np.float64, (2,))],
+                              align=True)
+CONTACT_DTYPE = np.dtype([("distance", np.float64), ("core_distance", np.float64),
+                          ("num_pairs", np.int32), ("equidistant", np.int32),
+                          ("flags", np.int32), ("method", np.int32),
+                          ("pairs", CONTACT_PAIR_DTYPE, (2,)), ("reserved", np.float64, (8,))],
+                         align=True)
+GRAD_OBJECT_FIELDS = ("d_center", "d_normal", "d_origin", "d_direction", "d_p0", "d_p1",
+                      "d_zero_direction", "d_radius", "d_radius_swept", "d_start", "d_end")
+GRAD_OBJECT_DTYPE = np.dtype([(f, np.float64, (3,)) for f in GRAD_OBJECT_FIELDS[:7]] +
+                             [(f, np.float64) for f in GRAD_OBJECT_FIELDS[7:]] +
+                             [("reserved", np.float64, (8,))], align=True)
+GRAD_DTYPE = np.dtype([("obj", GRAD_OBJECT_DTYPE, (2,)), ("flags", np.int32),
+                       ("reserved_int", np.int32), ("reserved", np.float64, (8,))], align=True)
+for _fn, _dt, _what in ((contact_size, CONTACT_DTYPE, "cdist_contact"),
+                        (grad_size, GRAD_DTYPE, "cdist_grad")):
+    if _fn is not None and _fn() != _dt.itemsize:
+        raise ImportError("circledist: the library's %s is %d bytes, this package expects %d"
+                          % (_what, _fn(), _dt.itemsize))
+CONTACT_CORE_TOUCH = contact_flag_core_touch() if contact_flag_core_touch is not None else 1
+GRAD_NOT_DIFFERENTIABLE = (grad_flag_not_differentiable()
+                           if grad_flag_not_differentiable is not None else 1)
+
+
 def single_query(name):
     """The C function cdist_<name>(q, a, b, result) for one query, with pointer arguments."""
     return _decl("cdist_" + name, _ST, _P, _P, _P, _P)
+
+
+def contact_query(name):
+    """cdist_<name>(q, a, b, contact) of a swept query, or None if the library lacks it."""
+    return _decl("cdist_" + name, _ST, _P, _P, _P, _P, required=False)
+
+
+def grad_query(name):
+    """cdist_<name>_grad(q, a, b, result_or_contact, grad), or None if the library lacks it."""
+    return _decl("cdist_" + name + "_grad", _ST, _P, _P, _P, _P, _P, required=False)

@@ -267,6 +267,48 @@ class Bezier3(GeometricObject):
              ("p3", 3, None, "control point 3 (t = 1)"))
 
 
+@_define
+class Sphere(GeometricObject):
+    """A sphere (a point swept by a ball): Sphere(center, radius), radius >= 0 (0: a point).
+    C struct: cdist_sphere (4 doubles)."""
+    __slots__ = ()
+    _SPEC = (("center", 3, None, "centre, shape (..., 3)"),
+             ("radius", None, None, "radius >= 0"))
+
+
+@_define
+class Capsule(GeometricObject):
+    """A capsule (a segment swept by a ball): Capsule(segment, radius).
+
+    segment is a Segment (or a (p0, p1) tuple; p0 == p1 is a sphere), radius >= 0.
+    C struct: cdist_capsule (7 doubles)."""
+    __slots__ = ()
+    _SPEC = (("segment", None, Segment, "the core Segment"),
+             ("radius", None, None, "radius of the ball, >= 0"))
+
+
+@_define
+class Torus(GeometricObject):
+    """A solid torus (a circle swept by a ball): Torus(circle, tube_radius).
+
+    circle is the centre line of the tube, a Circle (or a (center, normal, radius) tuple);
+    tube_radius >= 0 (larger than circle.radius: a spindle torus). C struct: cdist_torus
+    (8 doubles)."""
+    __slots__ = ()
+    _SPEC = (("circle", None, Circle, "the core Circle"),
+             ("tube_radius", None, None, "tube radius, >= 0"))
+
+
+@_define
+class RoundedDisk(GeometricObject):
+    """A rounded disk (a disk swept by a ball, a coin with rounded rim):
+    RoundedDisk(disk, radius), disk a Disk (or a (center, normal, radius) tuple), radius >= 0.
+    C struct: cdist_rounded_disk (8 doubles)."""
+    __slots__ = ()
+    _SPEC = (("disk", None, Disk, "the core Disk"),
+             ("radius", None, None, "radius of the ball, >= 0"))
+
+
 # Classes with the same C struct are interchangeable (the query decides the meaning).
 _SAME_LAYOUT = {Circle: (Circle, Disk), Disk: (Circle, Disk), Line: (Line, Ray), Ray: (Line, Ray)}
 

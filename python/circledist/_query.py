@@ -9,8 +9,8 @@ import threading
 import numpy as np
 
 from . import _lib
-from ._objects import (Arc, Bezier3, Circle, Disk, Helix, Line, Point, Ray, Segment,
-                       as_float_array, coerce)
+from ._objects import (Arc, Bezier3, Capsule, Circle, Disk, Helix, Line, Point, Ray,
+                       RoundedDisk, Segment, Sphere, Torus, _plain, as_float_array, coerce)
 
 
 class Method(enum.IntEnum):
@@ -91,6 +91,17 @@ _OFFSETS = {k: v[1] for k, v in _lib.RESULT_DTYPE.fields.items()}
 assert (_OFFSETS["pairs"], _OFFSETS["num_pairs"], _OFFSETS["equidistant"], _OFFSETS["method"],
         _OFFSETS["iterations"], _lib.PAIR_DTYPE.itemsize, _RESULT_HEAD.size) == \
     (24, 16, 20, 152, 156, 64, 160), _OFFSETS
+# struct cdist_contact up to its reserved area: distance, core_distance, num_pairs,
+# equidistant, flags, method, pairs (2 x (point[2][3], core_point[2][3], normal, param[2])).
+_CONTACT_HEAD = struct.Struct("=2d4i34d")
+# struct cdist_grad: obj[2] (7 vec3, 4 doubles, reserved[8] each), flags, reserved_int, ...
+_GRAD_OBJECT_DOUBLES = _lib.GRAD_OBJECT_DTYPE.itemsize // 8
+_GRAD_FLAGS = struct.Struct("=i")
+_GRAD_OFFSETS = {k: v[1] for k, v in _lib.GRAD_DTYPE.fields.items()}
+_C_OFFSETS = {k: v[1] for k, v in _lib.CONTACT_DTYPE.fields.items()}
+assert (_C_OFFSETS["pairs"], _C_OFFSETS["method"], _lib.CONTACT_PAIR_DTYPE.itemsize,
+        _CONTACT_HEAD.size, _lib.GRAD_OBJECT_DTYPE.fields["d_end"][1], _GRAD_OBJECT_DOUBLES,
+        _GRAD_OFFSETS["flags"]) == (32, 28, 136, 304, 192, 33, 528), (_C_OFFSETS, _GRAD_OFFSETS)
 
 
 class Result:
@@ -207,6 +218,135 @@ class BatchResult:
         return "<BatchResult shape=%s, %d failed>" % (self.shape, int(np.count_nonzero(self.status)))
 
 
+class ContactPair(tuple):
+    """One closest pair of a contact (swept-object) query: points (2, 3) witness points on the
+    two surfaces, core_points (2, 3) the closest pair of the cores, normal (3,) the unit
+    contact normal from the first object to the second, params (2,) the core points'
+    parameters (NaN for a point core). points[0] = core_points[0] + r0 normal,
+    points[1] = core_points[1] - r1 normal."""
+    __slots__ = ()
+
+    def __new__(cls, points, core_points, normal, params):
+        return tuple.__new__(cls, (points, core_points, normal, params))
+
+    points = property(lambda self: self[0], doc="witness points on the surfaces, shape (2, 3)")
+    core_points = property(lambda self: self[1], doc="closest points of the cores, shape (2, 3)")
+    normal = property(lambda self: self[2], doc="unit normal from the first object, shape (3,)")
+    params = property(lambda self: self[3], doc="core parameters, shape (2,)")
+
+    def __repr__(self):
+        return "ContactPair(points=%r, normal=%r)" % (self[0].tolist(), self[2].tolist())
+
+
+class Contact:
+    """The answer to one swept-object query (struct cdist_contact).
+
+    distance: the signed distance core_distance - (r0 + r1), negative when the solids overlap
+    (-distance is then the penetration depth); core_distance: the distance of the cores (point,
+    segment, circle, disk; plain objects are their own core, radius 0). pairs: list of 1 or 2
+    ContactPair; points, core_points (num_pairs, 2, 3), normals (num_pairs, 3), params
+    (num_pairs, 2) as arrays. equidistant: infinitely many closest pairs (from the core query).
+    flags: bits of cdist_contact_flag; core_touch: the cores touch or cross, so the normal is
+    chosen by the documented rule (CDIST_CONTACT_CORE_TOUCH, see docs/swept.md). method: the
+    Method that answered the core query."""
+
+    __slots__ = ("distance", "core_distance", "num_pairs", "equidistant", "flags", "method",
+                 "points", "core_points", "normals", "params")
+
+    def __init__(self, raw):
+        """raw: one cdist_contact as a numpy structured scalar or 0-d array (CONTACT_DTYPE)."""
+        self._read(np.ascontiguousarray(np.asarray(raw).reshape(1)).data)
+
+    @classmethod
+    def _from_buffer(cls, buffer):
+        c = cls.__new__(cls)
+        c._read(buffer)
+        return c
+
+    def _read(self, buffer):
+        v = _CONTACT_HEAD.unpack_from(buffer)
+        self.distance, self.core_distance = v[0], v[1]
+        k = self.num_pairs = v[2]
+        self.equidistant, self.flags, self.method = bool(v[3]), v[4], _METHODS[v[5]]
+        pairs = np.array(v[6:6 + 17 * k]).reshape(k, 17)   # point[2], core_point[2], normal, param
+        self.points = pairs[:, 0:6].reshape(k, 2, 3)
+        self.core_points = pairs[:, 6:12].reshape(k, 2, 3)
+        self.normals = pairs[:, 12:15]
+        self.params = pairs[:, 15:17]
+
+    @property
+    def core_touch(self):
+        """True when CDIST_CONTACT_CORE_TOUCH is set (the cores touch or cross)."""
+        return bool(self.flags & _lib.CONTACT_CORE_TOUCH)
+
+    @property
+    def pairs(self):
+        """The closest pairs as a list of ContactPair(points, core_points, normal, params)."""
+        return [ContactPair(*v) for v in zip(self.points, self.core_points, self.normals, self.params)]
+
+    def __repr__(self):
+        return "Contact(distance=%r, core_distance=%r, num_pairs=%d, equidistant=%r, " \
+            "core_touch=%r, method=%s)" % (self.distance, self.core_distance, self.num_pairs,
+                                           self.equidistant, self.core_touch, self.method.name)
+
+
+class GradObject:
+    """Derivatives of the distance with respect to one object's parameters (struct
+    cdist_grad_object): d_center, d_normal, d_origin, d_direction, d_p0, d_p1, d_zero_direction
+    (arrays (3,)), d_radius, d_radius_swept, d_start, d_end (floats). Fields that do not apply
+    to the object are 0. Normal and direction derivatives lie in the tangent space of the unit
+    sphere (dD = d_normal . dN for a dN keeping N unit). d_radius is a circle's, disk's or arc's
+    radius (the core radius of a torus or rounded disk); d_radius_swept the sphere or capsule
+    radius, torus tube radius or rounded-disk radius (-1)."""
+
+    __slots__ = _lib.GRAD_OBJECT_FIELDS
+
+    def __init__(self, values):
+        """values: the 25 doubles of one cdist_grad_object up to its reserved area."""
+        values = np.asarray(values, dtype=np.float64)
+        for i, f in enumerate(_lib.GRAD_OBJECT_FIELDS[:7]):
+            setattr(self, f, values[3 * i:3 * i + 3])
+        for i, f in enumerate(_lib.GRAD_OBJECT_FIELDS[7:]):
+            setattr(self, f, float(values[21 + i]))
+
+    def __repr__(self):
+        return "GradObject(%s)" % ", ".join(
+            "%s=%r" % (f, _plain(getattr(self, f))) for f in _lib.GRAD_OBJECT_FIELDS
+            if np.any(getattr(self, f)))
+
+
+class Grad:
+    """The gradient of one query's distance (struct cdist_grad): obj[0] (GradObject) for the
+    first object, obj[1] for the second; flags (bits of cdist_grad_flag). differentiable is
+    False when CDIST_GRAD_NOT_DIFFERENTIABLE is set: two closest pairs or an equidistant
+    result (a one-sided derivative of pairs[0] is given) or (core) distance 0 (the gradient is
+    0 there, swept radii -1). The rules are in circledist.h ("gradients")."""
+
+    __slots__ = ("obj", "flags")
+
+    def __init__(self, raw):
+        """raw: one cdist_grad as a numpy structured scalar or 0-d array (GRAD_DTYPE)."""
+        self._read(np.ascontiguousarray(np.asarray(raw).reshape(1)).data)
+
+    @classmethod
+    def _from_buffer(cls, buffer):
+        g = cls.__new__(cls)
+        g._read(buffer)
+        return g
+
+    def _read(self, buffer):
+        values = np.frombuffer(buffer, np.float64, 2 * _GRAD_OBJECT_DOUBLES).copy()
+        self.obj = (GradObject(values[:25]), GradObject(values[_GRAD_OBJECT_DOUBLES:][:25]))
+        self.flags = _GRAD_FLAGS.unpack_from(buffer, _GRAD_OFFSETS["flags"])[0]
+
+    @property
+    def differentiable(self):
+        """False when CDIST_GRAD_NOT_DIFFERENTIABLE is set."""
+        return not self.flags & _lib.GRAD_NOT_DIFFERENTIABLE
+
+    def __repr__(self):
+        return "Grad(differentiable=%r, obj=(%r, %r))" % (self.differentiable, *self.obj)
+
 # Status codes that concern the whole call (not one entry): raised as CircleDistError.
 _CALL_ERRORS = {1, 11, 13, 15, 16}
 
@@ -262,6 +402,12 @@ class Query:
         self._one = np.zeros(1, _lib.RESULT_DTYPE)        # result buffer of single queries
         self._one_buffer = self._one.data
         self._one_addr = self._one.ctypes.data
+        self._contact = np.zeros(1, _lib.CONTACT_DTYPE)   # buffers of swept / gradient queries
+        self._contact_buffer = self._contact.data
+        self._contact_addr = self._contact.ctypes.data
+        self._grad = np.zeros(1, _lib.GRAD_DTYPE)
+        self._grad_buffer = self._grad.data
+        self._grad_addr = self._grad.ctypes.data
         self._q = _lib.query_new()
         if not self._q:
             raise MemoryError("cdist_query_new failed")
@@ -340,17 +486,21 @@ class Query:
             pass
 
     # ---- the one query path ----------------------------------------------------------------
+    def _override_method(self, q, method):
+        """Set `method` for one call; returns the method to restore afterwards (None: none)."""
+        if method is None:
+            return None
+        m = _method_value(method)
+        old = _lib.query_get_method(q)
+        if m == old:
+            return None
+        self._check(_lib.query_set_method(q, m))
+        return old
+
     def _run(self, name, kind, a, b, method, threads, distance_only, single_call, out=None):
         with self._lock:
             q = self._handle()
-            old = None
-            if method is not None:
-                m = _method_value(method)
-                old = _lib.query_get_method(q)
-                if m != old:
-                    self._check(_lib.query_set_method(q, m))
-                else:
-                    old = None
+            old = self._override_method(q, method)
             try:
                 if threads is not None:
                     self.set_threads(threads)
@@ -395,6 +545,33 @@ class Query:
         if st in _CALL_ERRORS:
             self._check(st)
         return res
+
+    # ---- swept objects and gradients: one object each (the batch API has no such kinds) ----
+    def _single(self, name, c_fn, a, b, method, contact, grad):
+        if c_fn is None:
+            raise RuntimeError("%s: the loaded libcircledist has no cdist_%s%s"
+                               % (name, name.replace("_grad", ""), "_grad" if grad else ""))
+        if a.shape or b.shape:
+            raise ValueError("%s: takes one object each (cdist_batch has no swept or gradient "
+                             "kinds; loop over the entries in Python), got batch shapes %s and %s"
+                             % (name, a.shape, b.shape))
+        with self._lock:
+            q = self._handle()
+            old = self._override_method(q, method)
+            try:
+                out = self._contact_addr if contact else self._one_addr
+                if grad:
+                    st = c_fn(q, a.address, b.address, out, self._grad_addr)
+                else:
+                    st = c_fn(q, a.address, b.address, out)
+                if st:
+                    self._check(st)
+                res = Contact._from_buffer(self._contact_buffer) if contact else \
+                    Result._from_buffer(self._one_buffer)
+                return (res, Grad._from_buffer(self._grad_buffer)) if grad else res
+            finally:
+                if old is not None:
+                    _lib.query_set_method(q, old)
 
     # ---- curves ----------------------------------------------------------------------------
     def _curve(self, name, kind, f, t0, t1, other, method, threads, distance_only, out):
@@ -484,6 +661,75 @@ for _name, _kind, _ca, _cb in _KINDS:
     setattr(Query, _name, _make_method(_name, _kind, _ca, _cb))
 
 
+# Swept queries: name, first and second object class (one object each; cdist_<name>).
+_SWEPT_KINDS = [
+    ("torus_torus", Torus, Torus), ("torus_capsule", Torus, Capsule),
+    ("torus_sphere", Torus, Sphere), ("torus_rounded_disk", Torus, RoundedDisk),
+    ("capsule_capsule", Capsule, Capsule), ("capsule_sphere", Capsule, Sphere),
+    ("capsule_rounded_disk", Capsule, RoundedDisk), ("sphere_sphere", Sphere, Sphere),
+    ("sphere_rounded_disk", Sphere, RoundedDisk),
+    ("rounded_disk_rounded_disk", RoundedDisk, RoundedDisk),
+    ("torus_line", Torus, Line), ("torus_ray", Torus, Ray), ("torus_segment", Torus, Segment),
+    ("capsule_circle", Capsule, Circle), ("capsule_disk", Capsule, Disk),
+    ("sphere_circle", Sphere, Circle), ("sphere_disk", Sphere, Disk),
+]
+# Core queries with a cdist_<name>_grad variant.
+_GRAD_CORE = ["point_circle", "point_disk", "line_circle", "ray_circle", "segment_circle",
+              "circle_circle", "line_disk", "ray_disk", "segment_disk", "circle_disk", "disk_disk",
+              "arc_circle", "arc_arc", "segment_arc", "arc_disk"]
+if _lib.swept_size is not None:  # the swept structs must be the C library's
+    for _i, _cls in enumerate((Sphere, Capsule, Torus, RoundedDisk)):
+        if _lib.swept_size(_i) != 8 * _cls.WIDTH:
+            raise ImportError("circledist: the library's %s is %d bytes, this package expects %d"
+                              % (_cls.__name__, _lib.swept_size(_i), 8 * _cls.WIDTH))
+
+
+def _make_single_method(name, cls_a, cls_b, contact, grad):
+    c_name = name + "_grad" if grad else name
+    c_fn = _lib.grad_query(name) if grad else _lib.contact_query(name)
+
+    def query(self, a, b, *, method=None):
+        if type(a) is not cls_a:
+            a = coerce(a, cls_a, "%s: argument a (the %s)" % (c_name, cls_a.__name__))
+        if type(b) is not cls_b:
+            b = coerce(b, cls_b, "%s: argument b (the %s)" % (c_name, cls_b.__name__))
+        return self._single(c_name, c_fn, a, b, method, contact, grad)
+
+    query.__name__ = c_name
+    what = {"A": cls_a.__name__, "B": cls_b.__name__, "name": c_name}
+    if contact:
+        doc = """Signed distance from a %(A)s (a) to a %(B)s (b)%(G)s: cdist_%(name)s.
+
+        a: %(A)s, b: %(B)s -- one object each (arrays are refused: the C batch API has no
+        swept kinds; loop in Python, one C call per entry). Contact.distance =
+        core_distance - (r0 + r1), negative when the solids overlap; witness points, core
+        points, normals. Raises CircleDistError on bad input (e.g. a negative radius).
+        method: a Method (or its name) for the core query of this call only.
+        Returns %(R)s."""
+        what.update(G=" with its gradient" if grad else "",
+                    R="(Contact, Grad); Grad holds the derivatives of the signed distance\n"
+                    "        (d_radius_swept = -1 for each swept object)" if grad else "a Contact")
+    else:
+        doc = """Minimum distance from a %(A)s (a) to a %(B)s (b) with its gradient: cdist_%(name)s.
+
+        a: %(A)s, b: %(B)s -- one object each (arrays are refused: the C batch API has no
+        gradient kinds; loop in Python, one C call per entry). Returns (Result, Grad).
+        Raises CircleDistError on bad input. method: a Method (or its name) for this call only."""
+    query.__doc__ = doc % what
+    return query
+
+
+SINGLE_NAMES = []
+for _name, _ca, _cb in _SWEPT_KINDS:
+    for _grad in (False, True):
+        setattr(Query, _name + "_grad" * _grad, _make_single_method(_name, _ca, _cb, True, _grad))
+        SINGLE_NAMES.append(_name + "_grad" * _grad)
+for _name, _kind, _ca, _cb in _KINDS:
+    if _name in _GRAD_CORE:
+        setattr(Query, _name + "_grad", _make_single_method(_name, _ca, _cb, False, True))
+        SINGLE_NAMES.append(_name + "_grad")
+
+
 def _curve_method(name, kind):
     def query(self, f, t0, t1, other, *, method=None, threads=None, distance_only=False, out=None):
         other = coerce(other, Circle if kind == KIND_CURVE_CIRCLE else Disk, "%s: argument other" % name)
@@ -571,5 +817,23 @@ def _module_function(name):
     return query
 
 
+def _single_module_function(name):
+    unbound = getattr(Query, name)
+
+    def query(a, b, *, method=None, query=None):
+        h = query if query is not None else default_query()
+        return getattr(h, name)(a, b, method=method)
+    sig = inspect.signature(unbound)
+    query.__signature__ = sig.replace(parameters=[
+        p for p in sig.parameters.values() if p.name != "self"] + [
+        inspect.Parameter("query", inspect.Parameter.KEYWORD_ONLY, default=None)])
+    query.__name__ = name
+    query.__doc__ = unbound.__doc__ + """
+
+        Module-level form: uses this thread's default Query unless query= is given."""
+    return query
+
+
 QUERY_NAMES = [k[0] for k in _KINDS] + ["curve_circle", "curve_disk"]
 FUNCTIONS = {name: _module_function(name) for name in QUERY_NAMES}
+FUNCTIONS.update({name: _single_module_function(name) for name in SINGLE_NAMES})
