@@ -200,22 +200,9 @@ cdist_status cd_fail(cdist_query *q, cdist_status st, const char *fmt, ...)
     return st;
 }
 
-static void result_set_error(cdist_result *r)
-{
-    memset(r, 0, sizeof *r);
-    r->distance = NAN;
-    r->sqr_distance = NAN;
-    for (int i = 0; i < 2; i++) {
-        for (int k = 0; k < 2; k++) {
-            r->pairs[i].point[k] = v3(NAN, NAN, NAN);
-            r->pairs[i].param[k] = NAN;
-        }
-    }
-}
-
 void cd_begin(cdist_query *q, cdist_result *r)
 {
-    if (r) result_set_error(r);
+    if (r) cd_result_set_error(r);
     if (q) {
         q->message[0] = '\0';
         q->last_status = CDIST_OK;
