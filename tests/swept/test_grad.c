@@ -765,7 +765,7 @@ static void quad_check_curve(const char *dir, const char *file, int lc)
             int tangent = fl->type == F_NORMAL || fl->type == F_DIR;
             int cnt = fl->type == F_RADIUS ? 1 : (tangent ? 2 : 3);
             double sp = 0;
-            for (int c = 0; c < 3; c++) sp = fmax(sp, spread[fl->offset + c]);
+            for (int c = 0; c < (fl->type == F_RADIUS ? 1 : 3); c++) sp = fmax(sp, spread[fl->offset + c]);
             cdist_vec3 ta = tv(0, 0, 0), tb = ta;
             if (tangent) {
                 cdist_circle tmp = {tv(0, 0, 0), tv(ql.v[fl->offset], ql.v[fl->offset + 1], ql.v[fl->offset + 2]), 1};
