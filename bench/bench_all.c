@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* One benchmark for every query kind and every method the kind has, on the reference files:
  *   KIND_random.txt  mean ns/query over the whole file (the file looped, min of R repeats);
  *   KIND_hard.txt    each line timed alone (the line repeated, min of R repeats), then per family

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Batch throughput: ns/query per kind for the single-query loop, cdist_batch, cdist_batch_distance
  * and both with 2 threads, on N queries made by repeating the random reference file of the kind
  * (minimum over repeats; the machine is shared, so the minimum is the honest number).

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Per-family timing of a reference query file: each line timed alone (minimum over repeats),
  * then mean and max per family of the .labels file (or "all" without labels), plus max error
  * against .expected when given.

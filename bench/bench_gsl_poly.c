@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The bare GSL solve of a degree-8 polynomial (companion matrix QR), for comparison with the
  * circle-circle polynomial method in bench_all (min of 5 rounds).
  * usage: bench_gsl_poly [REPEATS] */

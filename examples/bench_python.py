@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """Per-query cost of the vectorised Python calls against the bare C batch call.
 
     python3 examples/bench_python.py [--n 1000000] [--repeats 5] [--threads 1]

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """Push planar circular coils apart with the distance gradient of libcircledist.
 
 N coils (circles: centre, unit normal, radius) start at target poses that are too close

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """Chain-mail screen with Dask: every pair of nearby rings of a sheet of up to 10^6 rings,
 answered by the vectorised circledist calls inside Dask tasks.
 

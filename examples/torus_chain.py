@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """A chain of linked tori: the clearance and closest pairs between neighbours, and a picture.
 
 Each torus is a core circle (centre, unit axis, major radius R) swept by a tube of radius r.

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # Before/after speed: builds REV (release) in a temporary git worktree and the current tree
 # (release) in a temporary build directory, compiles the CURRENT bench/bench_all.c +
 # tools/query_io.c against each library (with that library's own header), runs both in this

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Internal declarations shared by the query families. Nothing here is exported.
  * Umbrella header: the base layer (src/base), the API layer (src/api) and the point and lines
  * families (src/point, src/lines) have their own headers, included here so that every family

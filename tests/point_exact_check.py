@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: MIT
 """Point queries against exact values computed here (tests/point_exact.py, mpmath 50 digits).
 usage: point_exact_check.py REFCHECK DATA_DIR"""
 import os

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: MIT
 """The shared reference checked against mpmath where it changed: every line listed in
 tests/data/revision2_recomputed.txt (the 68 hard lines recomputed in revision 2) is recomputed
 here with the project's own high-precision brute forces (point_exact.py, lc_exact.py,

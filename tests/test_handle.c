@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The handle's in-use flag (issue 10 item 9) and non-finite hardening (issue 10 item 1).
  * Built against the internal library: the flag is set by hand for the deterministic checks.
  *  - a call entering a handle another call holds gets CDIST_ERR_HANDLE_BUSY and leaves the

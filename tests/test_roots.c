@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The root and minimum module (src/base/roots.h) and the numeric helpers (src/base/numeric.h),
  * against closed forms: built against the internal library. */
 #include <float.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Tiny and huge inputs (issue 10 item 2) for the point and lines families: every reference line
  * of pc pd lc ld rc rd sc sd (tests/data, revision 2) scaled by 2^k, k from -1000 to 500.
  *

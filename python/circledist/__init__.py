@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """circledist: exact minimum distances and all closest pairs between 3D circles, disks, points,
 lines, rays, segments, arcs, helices, cubic Beziers and callback curves (libcircledist).
 

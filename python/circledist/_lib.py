@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """Loading libcircledist and declaring the C functions (internal).
 
 The library is searched in this order, and the ImportError lists every place tried:

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """Geometric objects as numpy arrays laid out exactly like the C structs (internal module).
 
 Every object holds one float64 array ``data`` of shape ``batch_shape + (WIDTH,)`` whose last axis

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """Query handles, results and the query functions (internal module; see the package docs)."""
 import ctypes
 import enum

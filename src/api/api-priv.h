@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The API layer: the query handle, status recording, input validation, method choice. */
 #ifndef CDIST_API_PRIV_H
 #define CDIST_API_PRIV_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The family table (api-priv.h): methods per query family. Rows of families owned by other
  * subsystems state today's behaviour; their owners keep them current. */
 #include "internal.h"

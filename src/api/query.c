@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The query handle, options, status strings, version, status recording, circle frames. */
 #include <math.h>
 #include <stdarg.h>

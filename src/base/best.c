@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The candidate collector (best.h). */
 #include "base/best.h"
 

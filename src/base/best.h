@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The candidate collector: every family offers candidate pairs; the best (and, on a tie,
  * the second) become the result. */
 #ifndef CDIST_BASE_BEST_H

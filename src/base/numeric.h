@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Small exact-arithmetic and scaling helpers shared by every family. Header-only. */
 #ifndef CDIST_BASE_NUMERIC_H
 #define CDIST_BASE_NUMERIC_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Derivative-free solvers of the root and minimum module (declarations and conventions in
  * roots.h). Brent's zeroin and fmin follow R. P. Brent, "Algorithms for Minimization without
  * Derivatives" (1973), ch. 4 and 5. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The one root and minimum module of the library (every family's solvers go through it).
  *
  * A family describes its function by a callback and a context pointer:

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Every tolerance of the library, named once, with its unit and the reason for its value.
  * One section per family; families append their own section (and use only these names).
  * "eps" is DBL_EPSILON = 2^-52; "L" is the problem scale (max of the radii and the centre

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Batch subsystem (src/batch): the kind table, the per-range loop, worker threads and the
  * distance kernels. Nothing here is exported. */
 #ifndef CDIST_BATCH_PRIV_H

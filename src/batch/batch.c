@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The batch entry points: one generic entry per result type over a table of query kinds. A new
  * kind adds one enum value and one row here. */
 #include <math.h>

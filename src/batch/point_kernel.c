@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Distance kernels of point-circle and point-disk for cdist_batch_distance: the closed forms of
  * src/point.c with the validation of cd_check_point/cd_check_circle, operation by operation
  * (same roundings, fma where the scalar code calls fma), so every distance is bit-identical to

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Batch worker threads. A handle with T > 1 threads owns T - 1 pthreads, each with its own query
  * handle (workspaces included), created by cdist_query_set_threads and joined by
  * cdist_query_free; the calling thread is the T-th worker and uses the main handle. A batch hands

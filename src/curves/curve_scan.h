@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The curve engine shared by src/curves/curve.c (callback curves, helix, Bezier) and src/curves/arc.c (arcs).
  * Private to those two files. */
 #ifndef CDIST_CURVE_SCAN_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Gradients of the distance with respect to the objects' parameters, from the closest pair
  * (envelope theorem; the rules are documented in circledist.h). */
 #include <math.h>

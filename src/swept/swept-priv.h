@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Swept objects and gradients: shared between swept.c and grad.c. Built on the public API;
  * from the internals only validation/status recording (internal.h) and vec.h are used. */
 #ifndef CDIST_SWEPT_PRIV_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Swept objects (torus, capsule, sphere, rounded disk): the signed distance is the core
  * distance minus the radii; every closest pair, the equidistant flag and the method come from
  * the core query. Point-point, point-segment and segment-segment have no public core query and

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The single query of one batch entry, written independently of the library's kind table
  * (for the batch test and benchmark). */
 #ifndef CDIST_TEST_BATCH_SINGLE_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Batch entry points against the single queries, on every reference file found:
  *   test_batch DIR...   (reference files KIND_{random,hard}.txt/.expected looked up in each DIR)
  * - cdist_batch() is bit-identical to the single query of every entry, with bad entries (NaN,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* No allocation inside a batch once the handle is set up (threads included).
  * Method: this executable defines malloc, calloc, realloc, free and the aligned allocators; by ELF
  * symbol interposition they also serve the shared library's (and GSL's) calls. They count and

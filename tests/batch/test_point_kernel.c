@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The point-circle/point-disk distance kernels, each instruction set the machine has (scalar,
  * AVX2, AVX-512), against the single queries: a kernel leaves an entry to the scalar path exactly
  * when the single query rejects it, and its distances are bit-identical to the single query's.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Scale invariance of the circles family (cc, cd, dd): every line of a reference file, scaled
  * by 2^k (exact) for k from -1000 to 500 in a stride, must give 2^k times the reference
  * distance within the reference tolerance of the scaled problem. Lines whose scaled numbers

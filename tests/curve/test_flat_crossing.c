@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Curves lying nearly flat over a disk and crossing its plane inside the disk (issue 10 item 3):
  * the true distance is 0 by construction (the height changes sign along the curve, checked in
  * long double, and the whole curve lies inside the disk's cylinder), wherever the crossing is:

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Helices of many turns (issue 10 item 4): whole turns are skipped by a lower bound, so check
  * the answers against the long double brute force of brute.h over EVERY turn, on coils that
  * the target threads, surrounds, touches or misses; the issue's slow probes (a million turns of

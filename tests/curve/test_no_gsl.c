@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* AUTO and ROBUST never call GSL (issue 10 item 5). GSL's error handler is set to one that
  * aborts, and gsl_poly_complex_solve (the library's only GSL solver) is interposed by a
  * definition here that aborts too: every public query family (point, lines/rays/segments to

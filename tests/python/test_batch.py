@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """Vectorised calls: broadcasting, bad rows, threads, views, distance_only, curves. The
 reference files are checked in test_reference.py; here every vectorised answer is compared
 with the single query of the same entry (which tests/python/test_python.py and the C reference

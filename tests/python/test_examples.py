@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """The Python examples at small size: examples/torus_chain.py (clearances against a brute force
 over sampled core circles, the picture written) and examples/dask_chainmail.py (a Dask
 LocalCluster gives exactly the single-process answer; the spatial grid misses no pair)."""

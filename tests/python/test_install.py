@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """The package as users get it: `meson install --destdir` imports with no environment variable
 (the library path comes from the generated _build_config.py), and `pip install
 --no-build-isolation --no-index` of python/ works with Debian's pip and setuptools.

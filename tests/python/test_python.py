@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """Single queries through the package: results against closed forms and the shared reference,
 the Query API kept from the old one-module binding, objects, errors, basis functions and
 callback curves (run by meson with CIRCLEDIST_LIBRARY set)."""

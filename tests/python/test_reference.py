@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """Every query kind against the shared reference files (tests/data, else /work/shared/cases),
 answered by ONE vectorised call per file: the file's columns are exactly the C structs, so the
 objects are zero-copy views (Circle.from_array(table[:, 3:10]) ...). Error = |d - expected| / L

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """Swept objects (contact queries) and gradients through the Python package.
 
 Independent checks: the swept distance against the core distance from the package's core

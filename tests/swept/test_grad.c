@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Gradients (cdist_*_grad) against finite differences of the distance.
  *  - Every line of the shared reference files (tests/data/{pc,pd,lc,ld,cc,cd}_{random,hard}.txt;
  *    lc/ld lines are also run as rays and segments, cd lines also as circle-circle and

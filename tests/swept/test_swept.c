@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Swept objects (torus, capsule, sphere, rounded disk) against
  *  (1) the core query minus the radii (exact identity, bit for bit), plus the witness points
  *      and normals built from the core pairs;

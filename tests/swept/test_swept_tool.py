@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """The swept tool kinds (TT TK ... Sd): every kind is listed in --help with its columns, parses
 its documented number of columns, and answers hand-computed configurations (objects apart or
 overlapping along the x axis, distances by elementary geometry), with witness points on the
