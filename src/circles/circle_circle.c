@@ -118,7 +118,7 @@ cdist_status cd_circle_circle_core(cdist_query *q, cdist_method method, const cd
 
 int cd_circles_scale(cd_circle *a, cd_circle *b)
 {
-    int e = cd_scale_exponent(fmax(fmax(a->r, b->r), v_norm(b->c)));
+    int e = cd_scale_exponent(fmax(fmax(a->r, b->r), v_maxabs(b->c)));
     a->r = ldexp(a->r, -e);
     b->r = ldexp(b->r, -e);
     b->c = v3(ldexp(b->c.x, -e), ldexp(b->c.y, -e), ldexp(b->c.z, -e));
