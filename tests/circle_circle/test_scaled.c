@@ -47,6 +47,9 @@ static void regressions(cdist_query *q)
     /* Tiny inputs: the squared distance underflows, the distance must not. c0 passes through
      * c1's centre; c1 (radius 1e-200) is then at 1e-200 from that point, and no closer. */
     line_case(q, "cc 0 0 0 0 0 1 1e-200 1e-200 0 0 0 1 0 1e-200", 1e-200, 1e-15, -1);
+    /* Two points (radius 0) 8e-189 apart: the scale must come from the coordinates, not from a
+     * norm whose square underflows (it gave 0; found by the fuzz smoke test). */
+    line_case(q, "cc 0 8e-189 0 0 0 1 0 0 0 0 1 0 0 0", 8e-189, 1e-15, -1);
     /* Stacked coaxial disks 3e-170 apart (every pair of the overlap is closest). */
     line_case(q, "dd 0 0 0 0 0 1 1e-170 0 0 3e-170 0 0 1 1e-170", 3e-170, 1e-15, 1);
     line_case(q, "cd 0 0 0 0 0 1 1e-170 0 0 3e-170 0 0 1 1e-170", 3e-170, 1e-15, 1);
