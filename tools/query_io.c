@@ -83,6 +83,7 @@ KIND(bc, cdist_bezier3, bezier_at(v), cdist_circle, circle_at(v + 12), cdist_bez
 KIND(bd, cdist_bezier3, bezier_at(v), cdist_circle, circle_at(v + 12), cdist_bezier3_disk)
 #undef KIND
 
+#ifndef CDQ_NO_SWEPT /* defined when building against a library without swept objects (scripts/bench-compare.sh) */
 /* ---- swept kinds (src/swept) ----
  * A contact is written into the cdist_result the tool prints: distance = the signed distance,
  * sqr_distance = NaN (meaningless when negative), the points = the witness points on the
@@ -135,6 +136,7 @@ SWEPT(Sc, cdist_sphere, sphere_at(v), cdist_circle, circle_at(v + 4), cdist_sphe
 SWEPT(Sd, cdist_sphere, sphere_at(v), cdist_circle, circle_at(v + 4), cdist_sphere_disk)
 #undef SWEPT
 /* ---- end of swept kinds ---- */
+#endif
 
 const cdq_kind cdq_kinds[] = {
     {"pc", 10, run_pc, objects_pc, 0, {6, 0}, "Px Py Pz  " CIRC_COLS, "point to circle"},
@@ -156,6 +158,7 @@ const cdq_kind cdq_kinds[] = {
     {"hd", 20, run_hd, objects_hd, 18, {3, 16}, "Cx Cy Cz Ax Ay Az Ux Uy Uz r pitch t0 t1  " CIRC_COLS, "helix to disk"},
     {"bc", 19, run_bc, objects_bc, 19, {15, 0}, "P0x P0y P0z P1x P1y P1z P2x P2y P2z P3x P3y P3z  " CIRC_COLS, "cubic Bezier to circle"},
     {"bd", 19, run_bd, objects_bd, 20, {15, 0}, "P0x P0y P0z P1x P1y P1z P2x P2y P2z P3x P3y P3z  " CIRC_COLS, "cubic Bezier to disk"},
+#ifndef CDQ_NO_SWEPT
     /* ---- swept kinds (src/swept): upper case T torus, K capsule, S sphere, R rounded disk,
      * lower case the plain object. distance is signed (negative: penetration depth), the
      * points are the witness points on the surfaces (cdist_contact). ---- */
@@ -177,6 +180,7 @@ const cdq_kind cdq_kinds[] = {
     {"Sc", 11, run_Sc, NULL, -1, {7, 0}, SPH_COLS "  " CIRC_COLS, "sphere to circle (signed)"},
     {"Sd", 11, run_Sd, NULL, -1, {7, 0}, SPH_COLS "  " CIRC_COLS, "sphere to disk (signed)"},
     /* ---- end of swept kinds ---- */
+#endif
     {NULL, 0, NULL, NULL, -1, {0, 0}, NULL, NULL},
 };
 
