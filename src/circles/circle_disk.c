@@ -526,23 +526,31 @@ cdist_status cd_circle_disk_core(cdist_query *q, cdist_method method, const cd_c
     return cd_circle_disk_core_ex(q, method, c, d, b, &used);
 }
 
-cdist_status cdist_circle_disk(cdist_query *q, const cdist_circle *c, const cdist_circle *d, cdist_result *r)
+/* The scaled problem (c at the origin): the core, then r written in full. */
+static cdist_status circle_disk_query(cdist_query *q, cd_circle a, cd_circle e, cdist_result *r, cdist_method *used)
 {
-    cdist_status st = cd_check_handle(q, r);
-    if (st) return st;
-    cd_circle a, e;
-    if ((st = cd_check_circle(q, c, "circle", &a)) || (st = cd_check_circle(q, d, "disk", &e))) return st;
     vec3 offset = a.c;
     a.c = v3(0, 0, 0);
     e.c = v_sub(e.c, offset);
     int ex = cd_circles_scale(&a, &e);
     cd_best best;
     cd_best_init(&best, fmax(fmax(a.r, e.r), v_norm(e.c)));
-    cdist_method m = cd_pick_method(q, CD_DISK_METHODS, CD_DISK_AUTO), used;
-    if ((st = cd_circle_disk_core_ex(q, m, &a, &e, &best, &used))) return st;
+    cdist_status st = cd_circle_disk_core_ex(q, cd_family_method(q, CD_FAM_CIRCLE_DISK), &a, &e, &best, used);
+    if (st) return st;
     if (best.n == 0) return cd_fail(q, CDIST_ERR_INTERNAL, "circle-disk found no candidate");
     cd_best_to_result(&best, v3(0, 0, 0), 0, r);
+    cd_result_finish(r, r->num_pairs);
     cd_circles_unscale_result(r, ex, offset);
-    return cd_ok(q, r, used);
+    return CDIST_OK;
 }
 
+cdist_status cdist_circle_disk(cdist_query *q, const cdist_circle *c, const cdist_circle *d, cdist_result *r)
+{
+    cdist_status st = cd_enter(q, r);
+    if (st) return st;
+    cd_circle a, e;
+    cdist_method used = cd_family_method(q, CD_FAM_CIRCLE_DISK);
+    if (!(st = cd_check_circle(q, c, "circle", &a)) && !(st = cd_check_circle(q, d, "disk", &e)))
+        st = circle_disk_query(q, a, e, r, &used);
+    return cd_leave(q, r, st, used);
+}
