@@ -138,18 +138,18 @@ void cd_cc_frame_init(cd_cc_frame *f, const cd_circle *A, vec3 C, const cd_circl
     f->C = C;
     f->m = B->n;
     vec3 m = B->n;
-    f->al = v_scale(f->R, v_cross(m, A->u));
-    f->be = v_scale(f->R, v_cross(m, A->v));
-    f->ga = v_neg(v_cross(m, C));
-    f->ha = f->R * cd_cc_dot3(m, A->u);
-    f->hb = f->R * cd_cc_dot3(m, A->v);
-    f->hc = -cd_cc_dot3(m, C);
+    f->rg.al = v_scale(f->R, v_cross(m, A->u));
+    f->rg.be = v_scale(f->R, v_cross(m, A->v));
+    f->rg.ga = v_neg(v_cross(m, C));
+    f->rg.ha = f->R * cd_cc_dot3(m, A->u);
+    f->rg.hb = f->R * cd_cc_dot3(m, A->v);
+    f->rg.hc = -cd_cc_dot3(m, C);
     f->Cu = cd_cc_dot3(C, A->u);
     f->Cv = cd_cc_dot3(C, A->v);
 
     /* Fourier coefficients of Q, sigma, g = w.w' and H = Q sigma^2 - s^2 g^2. */
-    double aa = cd_cc_dot3(f->al, f->al), bb = cd_cc_dot3(f->be, f->be), ab = cd_cc_dot3(f->al, f->be);
-    double ag = cd_cc_dot3(f->al, f->ga), bg = cd_cc_dot3(f->be, f->ga), gg = cd_cc_dot3(f->ga, f->ga);
+    double aa = cd_cc_dot3(f->rg.al, f->rg.al), bb = cd_cc_dot3(f->rg.be, f->rg.be), ab = cd_cc_dot3(f->rg.al, f->rg.be);
+    double ag = cd_cc_dot3(f->rg.al, f->rg.ga), bg = cd_cc_dot3(f->rg.be, f->rg.ga), gg = cd_cc_dot3(f->rg.ga, f->rg.ga);
     tpoly Q, S, G, T, H;
     tp_zero(&Q);
     tp_term(&Q, 0, 0.5 * (aa + bb) + gg, 0);
@@ -202,13 +202,13 @@ void cd_cc_frame_init(cd_cc_frame *f, const cd_circle *A, vec3 C, const cd_circl
     f->nga = sqrt(gg);
 }
 
-/* Everything at angle t with (c, s) = (cos t, sin t). */
+/* Everything at angle t with (c, s) = (cos t, sin t): F and F'/2 by the ring evaluator, H with
+ * its derivatives and rounding bounds from the same w', g, g1. */
 static void cc_eval(const cd_cc_frame *f, double t, double c, double s, cd_cc_pt *p)
 {
-    vec3 w, w1;
-    cd_cc_w_at(f, c, s, &w, &w1);
-    double Q = cd_cc_dot3(w, w), g = cd_cc_dot3(w, w1);
-    double g1 = cd_cc_dot3(w1, w1) + cd_cc_dot3(w, f->ga) - Q; /* w'.w' + w.w'', w'' = ga - w */
+    cd_ring_val v;
+    cd_ring_eval(&f->rg, f->s, c, s, 2, &v);
+    double Q = v.Q, g = v.g, g1 = v.g1;
     double sig = f->R * (f->Cu * s - f->Cv * c), sig1 = f->R * (f->Cu * c + f->Cv * s);
     double s2 = f->s * f->s;
     p->t = t;
@@ -216,14 +216,11 @@ static void cc_eval(const cd_cc_frame *f, double t, double c, double s, cd_cc_pt
     p->s = s;
     p->H = Q * sig * sig - s2 * g * g;
     p->H1 = 2 * g * sig * sig + 2 * Q * sig * sig1 - 2 * s2 * g * g1;
-    double g2 = 3 * (cd_cc_dot3(w1, f->ga) - g) - g; /* 3 w'.w'' + w.w''' with w''' = -w' */
+    double g2 = 3 * (cd_cc_dot3(v.w1, f->rg.ga) - g) - g; /* 3 w'.w'' + w.w''' with w''' = -w' */
     p->H2 = 2 * g1 * sig * sig + 8 * g * sig * sig1 + 2 * Q * (sig1 * sig1 - sig * sig) - 2 * s2 * (g1 * g1 + g * g2);
-    double rho = sqrt(Q);
-    double h = f->ha * c + f->hb * s + f->hc, h1 = f->hb * c - f->ha * s;
-    double rp = rho > 0 ? g / rho : 0.0;
-    double dr = rho - f->s;
-    p->F1 = dr * rp + h * h1;
-    p->F = dr * dr + h * h;
+    double rho = v.rho;
+    p->F1 = v.F1;
+    p->F = v.F;
     p->d = sqrt(p->F);
     p->Q = Q;
     p->g = g;
@@ -245,17 +242,10 @@ static void cc_eval(const cd_cc_frame *f, double t, double c, double s, cd_cc_pt
 /* F'/2 and F''/2 only (for the refinement). */
 static void cc_deriv(const cd_cc_frame *f, double c, double s, double *F1, double *F2)
 {
-    vec3 w, w1;
-    cd_cc_w_at(f, c, s, &w, &w1);
-    double Q = cd_cc_dot3(w, w), g = cd_cc_dot3(w, w1);
-    double rho = sqrt(Q);
-    double h = f->ha * c + f->hb * s + f->hc, h1 = f->hb * c - f->ha * s, h2 = f->hc - h;
-    double dr = rho - f->s;
-    double rp = rho > 0 ? g / rho : 0.0;
-    *F1 = dr * rp + h * h1;
-    double g1 = cd_cc_dot3(w1, w1) + cd_cc_dot3(w, f->ga) - Q;
-    double rpp = rho > 0 ? (g1 - rp * rp) / rho : 0.0;
-    *F2 = rp * rp + dr * rpp + h1 * h1 + h * h2;
+    cd_ring_val v;
+    cd_ring_eval(&f->rg, f->s, c, s, 2, &v);
+    *F1 = v.F1;
+    *F2 = v.F2;
 }
 
 /* A root of F' in [a, b] where F'(a) and F'(b) have opposite signs (dir = +1 for (-,+), -1 for
@@ -469,7 +459,6 @@ static void scan_dense(const cd_cc_frame *f, cd_cc_sink *k, double *Fmax)
 static int near_kinks(const cd_cc_frame *f, const cd_cc_pt *init, double *tk)
 {
     enum { N = CC_INIT_INTERVALS };
-    vec3 w, w1;
     double thr = CC_KINK_REL * f->L;
     int n = 0;
     for (int i = 0; i < N && n < 2; i++) {
@@ -488,14 +477,15 @@ static int near_kinks(const cd_cc_frame *f, const cd_cc_pt *init, double *tk)
             double hc = it == 0 ? 0.70710678118654752 /* 0.5 / cos(pi / 4), N = 8 */
                                 : half_sec[it - 1 < 31 ? it - 1 : 31];
             double cm = (cl + ch) * hc, sm = (sl + sh) * hc;
-            cd_cc_w_at(f, cm, sm, &w, &w1);
-            rho = sqrt(cd_cc_dot3(w, w));
+            cd_ring_val v;
+            cd_ring_eval(&f->rg, f->s, cm, sm, 1, &v);
+            rho = v.rho;
             if (rho - 0.5 * f->W1 * width > thr) {
                 miss = 1;
                 break;
             }
             double m = 0.5 * (lo + hi);
-            if (cd_cc_dot3(w, w1) < 0) lo = m, cl = cm, sl = sm;
+            if (v.g < 0) lo = m, cl = cm, sl = sm;
             else hi = m, ch = cm, sh = sm;
             width *= 0.5;
         }
@@ -509,9 +499,9 @@ static double kink_core(const cd_cc_frame *f, double t)
 {
     double c, s;
     sincos(t, &s, &c);
-    vec3 w, w1;
-    cd_cc_w_at(f, c, s, &w, &w1);
-    double r = sqrt(sqrt(cd_cc_dot3(w, w)) / f->L);
+    cd_ring_val v;
+    cd_ring_eval(&f->rg, f->s, c, s, 0, &v);
+    double r = sqrt(v.rho / f->L);
     return fmin(0.05, 1e3 * r + 1e-12);
 }
 
@@ -718,7 +708,7 @@ int cd_cc_scan(const cd_cc_frame *f, cd_cc_sink *k, double *Fmax)
  * 2 CD_CC_PARALLEL_ULPS eps L. */
 int cd_cc_parallel_critical(const cd_cc_frame *f, double *t)
 {
-    if (!(hypot(f->ha, f->hb) <= CD_CC_PARALLEL_ULPS * DBL_EPSILON * f->L)) return -1;
+    if (!(hypot(f->rg.ha, f->rg.hb) <= CD_CC_PARALLEL_ULPS * DBL_EPSILON * f->L)) return -1;
     double e = hypot(f->Cu, f->Cv), R = f->R, s = f->s;
     double t0 = e > 0 ? atan2(f->Cv, f->Cu) : 0.0;
     int n = 0;
