@@ -49,7 +49,8 @@
  *     points each).
  *   In each of these, F' brackets are refined as above and, because F' is noise where F is
  *   flat while F itself (from accurate rho - s and h) keeps its relative accuracy, a
- *   golden-section search of F around the lowest sample is offered too.
+ *   golden-section search of F around the lowest sample is offered too, after the whole scan
+ *   and only where the Lipschitz bound leaves room below the attained minimum (cc_deferred).
  * The rounding bounds of H, H', H'' are local (eps times the magnitudes of the summed terms
  * at the point), which keeps H certifiable close to an axis crossing.
  * AUTO is this method: it was measured the fastest (1.5 us against 6.3 us for the polynomial
@@ -505,6 +506,24 @@ static double kink_core(const cd_cc_frame *f, double t)
     return fmin(0.05, 1e3 * r + 1e-12);
 }
 
+/* The neighbourhoods of the lowest grid points of the sampled intervals, minimised only after the
+ * whole circle is scanned: then the attained minimum is known, and a neighbourhood whose
+ * Lipschitz lower bound (d is R-Lipschitz in the angle) lies above it by more than the tie
+ * tolerance cannot hold the closest pair or a second one, and costs nothing. */
+#define CC_DEFER 32
+typedef struct cc_deferred {
+    int n;
+    double t[CC_DEFER], hw[CC_DEFER], d[CC_DEFER]; /* lowest grid point, half-width, its distance */
+} cc_deferred;
+
+static void deferred_offer(const cd_cc_frame *f, cd_cc_sink *k, const cc_deferred *df)
+{
+    double dbest = fmin(sqrt(k->Fmin), k->dmin);
+    double tie = CD_TIE_ULPS * DBL_EPSILON * f->L + 8 * DBL_EPSILON * (f->L + dbest);
+    for (int i = 0; i < df->n; i++)
+        if (df->d[i] - f->R * df->hw[i] <= dbest + tie) min_offer(f, k, df->t[i] - df->hw[i], df->t[i] + df->hw[i]);
+}
+
 /* cos h and sin h for |h| <= 0.1 by their Taylor series (truncation below 1e-26 there): the kink
  * grid's offsets, combined with cos t, sin t of the centre by the addition theorem, so the grid
  * costs no transcendental call. */
@@ -516,7 +535,7 @@ static inline void small_sincos(double h, double *sn, double *cs)
 }
 
 /* The geometric grid around a near-crossing t: t +- 0.1 * 2^(-j/2) down to 1e-17, and t. */
-static void scan_kink(const cd_cc_frame *f, cd_cc_sink *k, double t, double *Fmax)
+static void scan_kink(const cd_cc_frame *f, cd_cc_sink *k, double t, double *Fmax, cc_deferred *df)
 {
     enum { NG = 110 };
     cd_cc_pt prev, cur;
@@ -542,14 +561,24 @@ static void scan_kink(const cd_cc_frame *f, cd_cc_sink *k, double t, double *Fma
     /* Within about sqrt(eps) of the crossing, F' = 2 (rho - s) w.w'/rho + ... carries the
      * relative rounding eps L / rho of w.w' / rho and its sign is unreliable; F itself is
      * accurate (d to eps L). Polish the lowest grid neighbourhood by a minimisation of F. */
-    if (k->best) min_offer(f, k, t - 1e-3, t + 1e-3);
+    if (!k->best) return;
+    if (df->n < CC_DEFER) {
+        cd_cc_pt p;
+        cd_cc_eval_lean(f, t, ct, st, &p);
+        df->t[df->n] = t;
+        df->hw[df->n] = 1e-3;
+        df->d[df->n++] = p.d;
+    } else {
+        min_offer(f, k, t - 1e-3, t + 1e-3);
+    }
 }
 
 /* An interval left uncertified when the evaluation budget ran out (a cluster of roots of H at
  * rounding level, where F is flat and may hold close minima): F' signs on a grid as fine as the
  * dense scan's and of at least 64 points, and in robust mode a minimisation of F
  * around the lowest grid point. */
-static void emit_sampled(const cd_cc_frame *f, cd_cc_sink *k, const cd_cc_pt *a, const cd_cc_pt *b, double *Fmax)
+static void emit_sampled(const cd_cc_frame *f, cd_cc_sink *k, const cd_cc_pt *a, const cd_cc_pt *b, double *Fmax,
+                         cc_deferred *df)
 {
     double w = b->t - a->t;
     int n = (int)ceil(w / (2 * M_PI / CC_DENSE_SAMPLES));
@@ -577,7 +606,14 @@ static void emit_sampled(const cd_cc_frame *f, cd_cc_sink *k, const cd_cc_pt *a,
     }
     emit(k, &prev, b);
     if (b->F < Fbest) tbest = b->t;
-    if (k->best) min_offer(f, k, tbest - w / n, tbest + w / n);
+    if (!k->best) return;
+    if (df->n < CC_DEFER) {
+        df->t[df->n] = tbest;
+        df->hw[df->n] = w / n;
+        df->d[df->n++] = sqrt(fmin(Fbest, b->F));
+    } else {
+        min_offer(f, k, tbest - w / n, tbest + w / n);
+    }
 }
 
 /* Walks [-pi, pi) (see the header comment) and hands every critical bracket to the sink.
@@ -627,10 +663,12 @@ int cd_cc_scan(const cd_cc_frame *f, cd_cc_sink *k, double *Fmax)
     ival st[CC_STACK];
     int evals = 0;
     double tk[2], core[2];
+    cc_deferred deferred;
+    deferred.n = 0;
     int nk = near_kinks(f, init, tk);
     for (int i = 0; i < nk; i++) {
         core[i] = kink_core(f, tk[i]);
-        scan_kink(f, k, tk[i], Fmax);
+        scan_kink(f, k, tk[i], Fmax, &deferred);
     }
     double dbest = INFINITY; /* smallest sampled distance: the minimum is at most this */
     for (int i = 0; i < CC_INIT_INTERVALS; i++)
@@ -676,7 +714,7 @@ int cd_cc_scan(const cd_cc_frame *f, cd_cc_sink *k, double *Fmax)
                  * within rounding of B's axis) the rest is sampled, keeping the resolution
                  * already reached around the trouble spot. */
                 if (leaf) emit(k, &a, &b);
-                else emit_sampled(f, k, &a, &b, Fmax);
+                else emit_sampled(f, k, &a, &b, Fmax, &deferred);
                 if (sp == 0) break;
                 a = b;
                 b = st[--sp].b;
@@ -695,6 +733,7 @@ int cd_cc_scan(const cd_cc_frame *f, cd_cc_sink *k, double *Fmax)
             b = mid;
         }
     }
+    deferred_offer(f, k, &deferred);
     return 0;
 }
 
