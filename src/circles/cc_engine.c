@@ -43,7 +43,8 @@
  *     a sample is the answer; else F' is sampled on 512 points.
  *   - Near-crossings of B's axis (rho <= 1e-6 L, found by bisection on Q' with a Lipschitz
  *     early exit): H is below its rounding there; a core window (up to 0.05 rad) is skipped by
- *     the subdivision and covered by a geometric grid t_k +- 0.1 * 2^(-j/2) down to 1e-17.
+ *     the subdivision and covered by a geometric grid t_k +- 0.1 * 2^(-j/2) from twice the core
+ *     down to 1e-17.
  *   - An initial interval that uses up its budget of 48 evaluations (a cluster of roots at
  *     rounding level, e.g. near-tangent circles): its leftover intervals are sampled (>= 64
  *     points each).
@@ -535,16 +536,21 @@ static inline void small_sincos(double h, double *sn, double *cs)
 }
 
 /* The geometric grid around a near-crossing t: t +- 0.1 * 2^(-j/2) down to 1e-17, and t. */
-static void scan_kink(const cd_cc_frame *f, cd_cc_sink *k, double t, double *Fmax, cc_deferred *df)
+static void scan_kink(const cd_cc_frame *f, cd_cc_sink *k, double t, double core, double *Fmax, cc_deferred *df)
 {
     enum { NG = 110 };
     cd_cc_pt prev, cur;
     double ct, st;
     sincos(t, &st, &ct);
     int first = 1;
+    /* The grid starts at the first offset within twice the core: beyond the core the
+     * subdivision covers F (overlapping it a little). */
+    int j0 = 0;
+    while (j0 < NG - 1 && ldexp(j0 % 2 ? 0.1 * M_SQRT1_2 : 0.1, -(j0 / 2)) > 2 * core) j0++;
     for (int side = -1; side <= 1; side += 2)
         for (int jj = 0; jj < NG; jj++) {
             int j = side < 0 ? jj : NG - 1 - jj; /* increasing angle */
+            if (j < j0) continue;
             double h = side * ldexp(j % 2 ? 0.1 * M_SQRT1_2 : 0.1, -(j / 2)), ch, sh;
             if (side > 0 && jj == 0) {
                 cd_cc_eval_lean(f, t, ct, st, &cur);
@@ -668,7 +674,7 @@ int cd_cc_scan(const cd_cc_frame *f, cd_cc_sink *k, double *Fmax)
     int nk = near_kinks(f, init, tk);
     for (int i = 0; i < nk; i++) {
         core[i] = kink_core(f, tk[i]);
-        scan_kink(f, k, tk[i], Fmax, &deferred);
+        scan_kink(f, k, tk[i], core[i], Fmax, &deferred);
     }
     double dbest = INFINITY; /* smallest sampled distance: the minimum is at most this */
     for (int i = 0; i < CC_INIT_INTERVALS; i++)
