@@ -4,8 +4,10 @@
  *     h(t) = m . (P(t) - C) = ha cos t + hb sin t + hc     (height over B's plane)
  *     F = (rho - s)^2 + h^2,   F'/2 = (rho - s) rho' + h h',   rho' = w.w' / rho,
  *     F''/2 = rho'^2 + (rho - s) rho'' + h'^2 + h h'',   rho'' = ((w.w')' - rho'^2) / rho.
- * On B's axis (rho = 0, a kink of F) rho' and rho'' are taken as 0. The squared distance to the
- * disk bounded by B is h^2 where rho <= s (the point projects into the disk), F elsewhere.
+ * On B's axis (rho = 0, a kink of F) rho' and rho'' are taken as 0. Circle-disk searches on
+ * F of the disk's rim (the lemma of circle_disk.c); the point-disk distance it reports (h^2 where
+ * the point projects into the disk, F elsewhere) is formed in circle_disk.c, which decides
+ * "projects into" by an error-free expansion (rim_excess) that this evaluator does not need.
  * Used by the root-isolation engine (cc_engine.c), circle-disk (circle_disk.c, B the rim), and
  * the polynomial and iteration methods (cc_poly.c, which form w, h from 3D points and call
  * cd_ring_dist directly). Plain arithmetic, no fma(): without -mfma fma() is a libm call, and
@@ -47,9 +49,6 @@ static inline void cd_ring_dist(cd_ring_val *v, double s, int order)
     double rpp = rho > 0 ? (v->g1 - rp * rp) / rho : 0.0;
     v->F2 = rp * rp + dr * rpp + v->h1 * v->h1 + v->h * v->h2;
 }
-
-/* Squared distance to the disk bounded by B (after cd_ring_dist). */
-static inline double cd_ring_disk_d2(const cd_ring_val *v) { return v->dr > 0 ? v->F : v->h * v->h; }
 
 static inline double cd_ring_dot(vec3 a, vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
 
