@@ -19,9 +19,10 @@
 static cdist_vec3 pts[NQ];
 static cdist_line lines[NQ];
 static cdist_circle circs[NQ];
-static double want_pc[NQ], want_lc[NQ];
+static cdist_circle circs2[NQ];
+static double want_pc[NQ], want_lc[NQ], want_cc[NQ], want_cd[NQ], want_dd[NQ];
 static cdist_query *shared;
-static atomic_int wrong, busy_seen, ok_seen, ready;
+static atomic_int wrong, busy_seen, ok_seen, ready, point_busy;
 
 static void *hammer(void *arg)
 {
@@ -34,12 +35,23 @@ static void *hammer(void *arg)
         int i = (it * 7 + id) % NQ;
         cdist_status st;
         double want;
-        if ((it + id) % 3 == 0) {
+        int kind = (it + id) % 6;
+        if (kind == 0) {
             st = cdist_point_circle(shared, &pts[i], &circs[i], &r);
             want = want_pc[i];
-        } else if ((it + id) % 3 == 1) {
+        } else if (kind == 1) {
             st = cdist_line_circle(shared, &lines[i], &circs[i], &r);
             want = want_lc[i];
+        } else if (kind == 3) {
+            /* the circles family: a long call, so the other thread often finds the flag taken */
+            st = cdist_circle_circle(shared, &circs[i], &circs2[i], &r);
+            want = want_cc[i];
+        } else if (kind == 4) {
+            st = cdist_circle_disk(shared, &circs[i], &circs2[i], &r);
+            want = want_cd[i];
+        } else if (kind == 5) {
+            st = cdist_disk_disk(shared, &circs[i], &circs2[i], &r);
+            want = want_dd[i];
         } else {
             st = cdist_query_set_method(shared, CDIST_METHOD_AUTO);
             if (st != CDIST_OK && st != CDIST_ERR_HANDLE_BUSY) atomic_fetch_add(&wrong, 1);
@@ -47,6 +59,7 @@ static void *hammer(void *arg)
         }
         if (st == CDIST_ERR_HANDLE_BUSY) {
             atomic_fetch_add(&busy_seen, 1);
+            if (kind == 0) atomic_fetch_add(&point_busy, 1);
             if (!isnan(r.distance) || r.num_pairs != 0) atomic_fetch_add(&wrong, 1);
         } else if (st == CDIST_OK && r.distance == want) {
             atomic_fetch_add(&ok_seen, 1);
@@ -54,6 +67,46 @@ static void *hammer(void *arg)
             atomic_fetch_add(&wrong, 1);
         }
     }
+    return NULL;
+}
+
+/* Split mode: thread 0 runs the circles family until 20000 of its calls answered, thread 1 runs
+ * point-circle as long as thread 0 runs (so the two overlap whatever the scheduling). */
+static atomic_int circles_done;
+static void *hammer_split(void *arg)
+{
+    int id = (int)(size_t)arg, answered = 0;
+    cdist_result r;
+    atomic_fetch_add(&ready, 1);
+    while (atomic_load(&ready) < 2) {
+    }
+    for (int it = 0; id == 0 ? answered < 20000 : !atomic_load(&circles_done); it++) {
+        int i = (it * 7 + id) % NQ, kind = id == 0 ? it % 3 : 3;
+        cdist_status st;
+        double want;
+        if (kind == 0) {
+            st = cdist_circle_circle(shared, &circs[i], &circs2[i], &r);
+            want = want_cc[i];
+        } else if (kind == 1) {
+            st = cdist_circle_disk(shared, &circs[i], &circs2[i], &r);
+            want = want_cd[i];
+        } else if (kind == 2) {
+            st = cdist_disk_disk(shared, &circs[i], &circs2[i], &r);
+            want = want_dd[i];
+        } else {
+            st = cdist_point_circle(shared, &pts[i], &circs[i], &r);
+            want = want_pc[i];
+        }
+        if (st == CDIST_ERR_HANDLE_BUSY) {
+            if (kind == 3) atomic_fetch_add(&point_busy, 1);
+            if (!isnan(r.distance) || r.num_pairs != 0) atomic_fetch_add(&wrong, 1);
+        } else if (st == CDIST_OK && r.distance == want) {
+            answered++;
+        } else {
+            atomic_fetch_add(&wrong, 1);
+        }
+    }
+    if (id == 0) atomic_store(&circles_done, 1);
     return NULL;
 }
 
@@ -73,6 +126,28 @@ static void check_threads(void)
         want_pc[i] = r.distance;
         CHECK(cdist_line_circle(q, &lines[i], &circs[i], &r) == CDIST_OK, "lc %d", i);
         want_lc[i] = r.distance;
+        circs2[i].center = tv(srand1(), srand1(), srand1());
+        circs2[i].normal = rand_unit();
+        circs2[i].radius = 0.5 + urand();
+        CHECK(cdist_circle_circle(q, &circs[i], &circs2[i], &r) == CDIST_OK, "cc %d", i);
+        want_cc[i] = r.distance;
+        /* independent of the code under test: the circle-circle distance by dense sampling of
+         * the first circle against the closed-form point-circle distance */
+        double brute = INFINITY;
+        for (int k = 0; k < 20000; k++) {
+            cdist_vec3 x;
+            cdist_circle_point(&circs[i], 2 * M_PI * k / 20000, &x);
+            cdist_result rp;
+            cdist_point_circle(q, &x, &circs2[i], &rp);
+            brute = fmin(brute, rp.distance);
+        }
+        CHECK(want_cc[i] <= brute + 1e-14 && want_cc[i] >= brute - 1e-5, "cc %d: %.17g vs sampled %.17g", i, want_cc[i],
+              brute);
+        cdist_status sc = cdist_circle_disk(q, &circs[i], &circs2[i], &r);
+        CHECK(sc == CDIST_OK && r.distance <= want_cc[i] + 1e-14, "cd %d: %d %.17g %.17g", i, (int)sc, r.distance, want_cc[i]);
+        want_cd[i] = r.distance;
+        CHECK(cdist_disk_disk(q, &circs[i], &circs2[i], &r) == CDIST_OK && r.distance <= want_cd[i] + 1e-14, "dd %d", i);
+        want_dd[i] = r.distance;
     }
     cdist_query_free(q);
     shared = cdist_query_new();
@@ -89,6 +164,19 @@ static void check_threads(void)
     /* the flag is free again */
     cdist_result r;
     CHECK(cdist_point_circle(shared, &pts[0], &circs[0], &r) == CDIST_OK && r.distance == want_pc[0], "after threads");
+    /* The circle queries hold the flag too: point queries running beside nothing but circle
+     * queries are turned away (they would not be if the circles bypassed the flag). */
+    atomic_store(&ready, 0);
+    atomic_store(&point_busy, 0);
+    started = 0;
+    for (int t = 0; t < 2; t++)
+        if (pthread_create(&th[t], NULL, hammer_split, (void *)(size_t)t) == 0) started++;
+    CHECK(started == 2, "could not start the threads");
+    for (int t = 0; t < started; t++) pthread_join(th[t], NULL);
+    CHECK(atomic_load(&wrong) == 0, "%d wrong answers beside the circle queries", atomic_load(&wrong));
+    CHECK(atomic_load(&point_busy) > 0, "no point query was turned away by a running circle query");
+    printf("circles beside points: %d point queries turned away, %d wrong\n", atomic_load(&point_busy),
+           atomic_load(&wrong));
     cdist_query_free(shared);
 }
 
@@ -107,6 +195,12 @@ static void check_busy_flag(void)
     cdist_line l = {{0, 0, 5}, {1, 0, 0}};
     CHECK(cdist_segment_disk(q, &(cdist_segment){{0, 0, 1}, {1, 0, 1}}, &c, &r) == CDIST_ERR_HANDLE_BUSY, "busy sd");
     CHECK(cdist_line_circle(q, &l, &c, &r) == CDIST_ERR_HANDLE_BUSY, "busy lc");
+    cdist_circle c2 = {{0, 0, 2}, {1, 0, 0}, 1};
+    r.distance = 1.0;
+    CHECK(cdist_circle_circle(q, &c, &c2, &r) == CDIST_ERR_HANDLE_BUSY && isnan(r.distance) && r.num_pairs == 0,
+          "busy cc");
+    CHECK(cdist_circle_disk(q, &c, &c2, &r) == CDIST_ERR_HANDLE_BUSY, "busy cd");
+    CHECK(cdist_disk_disk(q, &c, &c2, &r) == CDIST_ERR_HANDLE_BUSY, "busy dd");
     CHECK(cdist_query_set_unit_tolerance(q, 1e-3) == CDIST_ERR_HANDLE_BUSY, "busy setter");
     CHECK(cdist_query_last_status(q) == CDIST_ERR_BAD_OPTION && !strcmp(cdist_query_last_error(q), before),
           "the busy calls touched the handle: %d '%s'", (int)cdist_query_last_status(q), cdist_query_last_error(q));

@@ -10,8 +10,8 @@ static int axis_crossings(const cd_cc_frame *f, double *t)
     /* 2D coordinates in the plane orthogonal to m. */
     vec3 e1, e2;
     v_basis(f->m, &e1, &e2);
-    double ax = v_dot(f->al, e1), ay = v_dot(f->al, e2), bx = v_dot(f->be, e1), by = v_dot(f->be, e2);
-    double gx = -v_dot(f->ga, e1), gy = -v_dot(f->ga, e2); /* solve a c + b s = -ga */
+    double ax = v_dot(f->rg.al, e1), ay = v_dot(f->rg.al, e2), bx = v_dot(f->rg.be, e1), by = v_dot(f->rg.be, e2);
+    double gx = -v_dot(f->rg.ga, e1), gy = -v_dot(f->rg.ga, e2); /* solve a c + b s = -ga */
     double det = ax * by - ay * bx, tol = 1e-9;
     double an = hypot(ax, ay), bn = hypot(bx, by);
     if (fabs(det) > 1e-12 * an * bn) {

@@ -43,13 +43,15 @@
  *     a sample is the answer; else F' is sampled on 512 points.
  *   - Near-crossings of B's axis (rho <= 1e-6 L, found by bisection on Q' with a Lipschitz
  *     early exit): H is below its rounding there; a core window (up to 0.05 rad) is skipped by
- *     the subdivision and covered by a geometric grid t_k +- 0.1 * 2^(-j/2) down to 1e-17.
+ *     the subdivision and covered by a geometric grid t_k +- 0.1 * 2^(-j/2) from twice the core
+ *     down to 1e-17.
  *   - An initial interval that uses up its budget of 48 evaluations (a cluster of roots at
  *     rounding level, e.g. near-tangent circles): its leftover intervals are sampled (>= 64
  *     points each).
  *   In each of these, F' brackets are refined as above and, because F' is noise where F is
  *   flat while F itself (from accurate rho - s and h) keeps its relative accuracy, a
- *   golden-section search of F around the lowest sample is offered too.
+ *   golden-section search of F around the lowest sample is offered too, after the whole scan
+ *   and only where the Lipschitz bound leaves room below the attained minimum (cc_deferred).
  * The rounding bounds of H, H', H'' are local (eps times the magnitudes of the summed terms
  * at the point), which keeps H certifiable close to an axis crossing.
  * AUTO is this method: it was measured the fastest (1.5 us against 6.3 us for the polynomial
@@ -138,18 +140,18 @@ void cd_cc_frame_init(cd_cc_frame *f, const cd_circle *A, vec3 C, const cd_circl
     f->C = C;
     f->m = B->n;
     vec3 m = B->n;
-    f->al = v_scale(f->R, v_cross(m, A->u));
-    f->be = v_scale(f->R, v_cross(m, A->v));
-    f->ga = v_neg(v_cross(m, C));
-    f->ha = f->R * cd_cc_dot3(m, A->u);
-    f->hb = f->R * cd_cc_dot3(m, A->v);
-    f->hc = -cd_cc_dot3(m, C);
+    f->rg.al = v_scale(f->R, v_cross(m, A->u));
+    f->rg.be = v_scale(f->R, v_cross(m, A->v));
+    f->rg.ga = v_neg(v_cross(m, C));
+    f->rg.ha = f->R * cd_cc_dot3(m, A->u);
+    f->rg.hb = f->R * cd_cc_dot3(m, A->v);
+    f->rg.hc = -cd_cc_dot3(m, C);
     f->Cu = cd_cc_dot3(C, A->u);
     f->Cv = cd_cc_dot3(C, A->v);
 
     /* Fourier coefficients of Q, sigma, g = w.w' and H = Q sigma^2 - s^2 g^2. */
-    double aa = cd_cc_dot3(f->al, f->al), bb = cd_cc_dot3(f->be, f->be), ab = cd_cc_dot3(f->al, f->be);
-    double ag = cd_cc_dot3(f->al, f->ga), bg = cd_cc_dot3(f->be, f->ga), gg = cd_cc_dot3(f->ga, f->ga);
+    double aa = cd_cc_dot3(f->rg.al, f->rg.al), bb = cd_cc_dot3(f->rg.be, f->rg.be), ab = cd_cc_dot3(f->rg.al, f->rg.be);
+    double ag = cd_cc_dot3(f->rg.al, f->rg.ga), bg = cd_cc_dot3(f->rg.be, f->rg.ga), gg = cd_cc_dot3(f->rg.ga, f->rg.ga);
     tpoly Q, S, G, T, H;
     tp_zero(&Q);
     tp_term(&Q, 0, 0.5 * (aa + bb) + gg, 0);
@@ -202,13 +204,13 @@ void cd_cc_frame_init(cd_cc_frame *f, const cd_circle *A, vec3 C, const cd_circl
     f->nga = sqrt(gg);
 }
 
-/* Everything at angle t with (c, s) = (cos t, sin t). */
+/* Everything at angle t with (c, s) = (cos t, sin t): F and F'/2 by the ring evaluator, H with
+ * its derivatives and rounding bounds from the same w', g, g1. */
 static void cc_eval(const cd_cc_frame *f, double t, double c, double s, cd_cc_pt *p)
 {
-    vec3 w, w1;
-    cd_cc_w_at(f, c, s, &w, &w1);
-    double Q = cd_cc_dot3(w, w), g = cd_cc_dot3(w, w1);
-    double g1 = cd_cc_dot3(w1, w1) + cd_cc_dot3(w, f->ga) - Q; /* w'.w' + w.w'', w'' = ga - w */
+    cd_ring_val v;
+    cd_ring_eval(&f->rg, f->s, c, s, 2, &v);
+    double Q = v.Q, g = v.g, g1 = v.g1;
     double sig = f->R * (f->Cu * s - f->Cv * c), sig1 = f->R * (f->Cu * c + f->Cv * s);
     double s2 = f->s * f->s;
     p->t = t;
@@ -216,14 +218,11 @@ static void cc_eval(const cd_cc_frame *f, double t, double c, double s, cd_cc_pt
     p->s = s;
     p->H = Q * sig * sig - s2 * g * g;
     p->H1 = 2 * g * sig * sig + 2 * Q * sig * sig1 - 2 * s2 * g * g1;
-    double g2 = 3 * (cd_cc_dot3(w1, f->ga) - g) - g; /* 3 w'.w'' + w.w''' with w''' = -w' */
+    double g2 = 3 * (cd_cc_dot3(v.w1, f->rg.ga) - g) - g; /* 3 w'.w'' + w.w''' with w''' = -w' */
     p->H2 = 2 * g1 * sig * sig + 8 * g * sig * sig1 + 2 * Q * (sig1 * sig1 - sig * sig) - 2 * s2 * (g1 * g1 + g * g2);
-    double rho = sqrt(Q);
-    double h = f->ha * c + f->hb * s + f->hc, h1 = f->hb * c - f->ha * s;
-    double rp = rho > 0 ? g / rho : 0.0;
-    double dr = rho - f->s;
-    p->F1 = dr * rp + h * h1;
-    p->F = dr * dr + h * h;
+    double rho = v.rho;
+    p->F1 = v.F1;
+    p->F = v.F;
     p->d = sqrt(p->F);
     p->Q = Q;
     p->g = g;
@@ -245,17 +244,10 @@ static void cc_eval(const cd_cc_frame *f, double t, double c, double s, cd_cc_pt
 /* F'/2 and F''/2 only (for the refinement). */
 static void cc_deriv(const cd_cc_frame *f, double c, double s, double *F1, double *F2)
 {
-    vec3 w, w1;
-    cd_cc_w_at(f, c, s, &w, &w1);
-    double Q = cd_cc_dot3(w, w), g = cd_cc_dot3(w, w1);
-    double rho = sqrt(Q);
-    double h = f->ha * c + f->hb * s + f->hc, h1 = f->hb * c - f->ha * s, h2 = f->hc - h;
-    double dr = rho - f->s;
-    double rp = rho > 0 ? g / rho : 0.0;
-    *F1 = dr * rp + h * h1;
-    double g1 = cd_cc_dot3(w1, w1) + cd_cc_dot3(w, f->ga) - Q;
-    double rpp = rho > 0 ? (g1 - rp * rp) / rho : 0.0;
-    *F2 = rp * rp + dr * rpp + h1 * h1 + h * h2;
+    cd_ring_val v;
+    cd_ring_eval(&f->rg, f->s, c, s, 2, &v);
+    *F1 = v.F1;
+    *F2 = v.F2;
 }
 
 /* A root of F' in [a, b] where F'(a) and F'(b) have opposite signs (dir = +1 for (-,+), -1 for
@@ -469,7 +461,6 @@ static void scan_dense(const cd_cc_frame *f, cd_cc_sink *k, double *Fmax)
 static int near_kinks(const cd_cc_frame *f, const cd_cc_pt *init, double *tk)
 {
     enum { N = CC_INIT_INTERVALS };
-    vec3 w, w1;
     double thr = CC_KINK_REL * f->L;
     int n = 0;
     for (int i = 0; i < N && n < 2; i++) {
@@ -488,14 +479,15 @@ static int near_kinks(const cd_cc_frame *f, const cd_cc_pt *init, double *tk)
             double hc = it == 0 ? 0.70710678118654752 /* 0.5 / cos(pi / 4), N = 8 */
                                 : half_sec[it - 1 < 31 ? it - 1 : 31];
             double cm = (cl + ch) * hc, sm = (sl + sh) * hc;
-            cd_cc_w_at(f, cm, sm, &w, &w1);
-            rho = sqrt(cd_cc_dot3(w, w));
+            cd_ring_val v;
+            cd_ring_eval(&f->rg, f->s, cm, sm, 1, &v);
+            rho = v.rho;
             if (rho - 0.5 * f->W1 * width > thr) {
                 miss = 1;
                 break;
             }
             double m = 0.5 * (lo + hi);
-            if (cd_cc_dot3(w, w1) < 0) lo = m, cl = cm, sl = sm;
+            if (v.g < 0) lo = m, cl = cm, sl = sm;
             else hi = m, ch = cm, sh = sm;
             width *= 0.5;
         }
@@ -509,10 +501,28 @@ static double kink_core(const cd_cc_frame *f, double t)
 {
     double c, s;
     sincos(t, &s, &c);
-    vec3 w, w1;
-    cd_cc_w_at(f, c, s, &w, &w1);
-    double r = sqrt(sqrt(cd_cc_dot3(w, w)) / f->L);
+    cd_ring_val v;
+    cd_ring_eval(&f->rg, f->s, c, s, 0, &v);
+    double r = sqrt(v.rho / f->L);
     return fmin(0.05, 1e3 * r + 1e-12);
+}
+
+/* The neighbourhoods of the lowest grid points of the sampled intervals, minimised only after the
+ * whole circle is scanned: then the attained minimum is known, and a neighbourhood whose
+ * Lipschitz lower bound (d is R-Lipschitz in the angle) lies above it by more than the tie
+ * tolerance cannot hold the closest pair or a second one, and costs nothing. */
+#define CC_DEFER 32
+typedef struct cc_deferred {
+    int n;
+    double t[CC_DEFER], hw[CC_DEFER], d[CC_DEFER]; /* lowest grid point, half-width, its distance */
+} cc_deferred;
+
+static void deferred_offer(const cd_cc_frame *f, cd_cc_sink *k, const cc_deferred *df)
+{
+    double dbest = fmin(sqrt(k->Fmin), k->dmin);
+    double tie = CD_TIE_ULPS * DBL_EPSILON * f->L + 8 * DBL_EPSILON * (f->L + dbest);
+    for (int i = 0; i < df->n; i++)
+        if (df->d[i] - f->R * df->hw[i] <= dbest + tie) min_offer(f, k, df->t[i] - df->hw[i], df->t[i] + df->hw[i]);
 }
 
 /* cos h and sin h for |h| <= 0.1 by their Taylor series (truncation below 1e-26 there): the kink
@@ -526,16 +536,21 @@ static inline void small_sincos(double h, double *sn, double *cs)
 }
 
 /* The geometric grid around a near-crossing t: t +- 0.1 * 2^(-j/2) down to 1e-17, and t. */
-static void scan_kink(const cd_cc_frame *f, cd_cc_sink *k, double t, double *Fmax)
+static void scan_kink(const cd_cc_frame *f, cd_cc_sink *k, double t, double core, double *Fmax, cc_deferred *df)
 {
     enum { NG = 110 };
     cd_cc_pt prev, cur;
     double ct, st;
     sincos(t, &st, &ct);
     int first = 1;
+    /* The grid starts at the first offset within twice the core: beyond the core the
+     * subdivision covers F (overlapping it a little). */
+    int j0 = 0;
+    while (j0 < NG - 1 && ldexp(j0 % 2 ? 0.1 * M_SQRT1_2 : 0.1, -(j0 / 2)) > 2 * core) j0++;
     for (int side = -1; side <= 1; side += 2)
         for (int jj = 0; jj < NG; jj++) {
             int j = side < 0 ? jj : NG - 1 - jj; /* increasing angle */
+            if (j < j0) continue;
             double h = side * ldexp(j % 2 ? 0.1 * M_SQRT1_2 : 0.1, -(j / 2)), ch, sh;
             if (side > 0 && jj == 0) {
                 cd_cc_eval_lean(f, t, ct, st, &cur);
@@ -552,14 +567,24 @@ static void scan_kink(const cd_cc_frame *f, cd_cc_sink *k, double t, double *Fma
     /* Within about sqrt(eps) of the crossing, F' = 2 (rho - s) w.w'/rho + ... carries the
      * relative rounding eps L / rho of w.w' / rho and its sign is unreliable; F itself is
      * accurate (d to eps L). Polish the lowest grid neighbourhood by a minimisation of F. */
-    if (k->best) min_offer(f, k, t - 1e-3, t + 1e-3);
+    if (!k->best) return;
+    if (df->n < CC_DEFER) {
+        cd_cc_pt p;
+        cd_cc_eval_lean(f, t, ct, st, &p);
+        df->t[df->n] = t;
+        df->hw[df->n] = 1e-3;
+        df->d[df->n++] = p.d;
+    } else {
+        min_offer(f, k, t - 1e-3, t + 1e-3);
+    }
 }
 
 /* An interval left uncertified when the evaluation budget ran out (a cluster of roots of H at
  * rounding level, where F is flat and may hold close minima): F' signs on a grid as fine as the
  * dense scan's and of at least 64 points, and in robust mode a minimisation of F
  * around the lowest grid point. */
-static void emit_sampled(const cd_cc_frame *f, cd_cc_sink *k, const cd_cc_pt *a, const cd_cc_pt *b, double *Fmax)
+static void emit_sampled(const cd_cc_frame *f, cd_cc_sink *k, const cd_cc_pt *a, const cd_cc_pt *b, double *Fmax,
+                         cc_deferred *df)
 {
     double w = b->t - a->t;
     int n = (int)ceil(w / (2 * M_PI / CC_DENSE_SAMPLES));
@@ -587,7 +612,14 @@ static void emit_sampled(const cd_cc_frame *f, cd_cc_sink *k, const cd_cc_pt *a,
     }
     emit(k, &prev, b);
     if (b->F < Fbest) tbest = b->t;
-    if (k->best) min_offer(f, k, tbest - w / n, tbest + w / n);
+    if (!k->best) return;
+    if (df->n < CC_DEFER) {
+        df->t[df->n] = tbest;
+        df->hw[df->n] = w / n;
+        df->d[df->n++] = sqrt(fmin(Fbest, b->F));
+    } else {
+        min_offer(f, k, tbest - w / n, tbest + w / n);
+    }
 }
 
 /* Walks [-pi, pi) (see the header comment) and hands every critical bracket to the sink.
@@ -637,10 +669,12 @@ int cd_cc_scan(const cd_cc_frame *f, cd_cc_sink *k, double *Fmax)
     ival st[CC_STACK];
     int evals = 0;
     double tk[2], core[2];
+    cc_deferred deferred;
+    deferred.n = 0;
     int nk = near_kinks(f, init, tk);
     for (int i = 0; i < nk; i++) {
         core[i] = kink_core(f, tk[i]);
-        scan_kink(f, k, tk[i], Fmax);
+        scan_kink(f, k, tk[i], core[i], Fmax, &deferred);
     }
     double dbest = INFINITY; /* smallest sampled distance: the minimum is at most this */
     for (int i = 0; i < CC_INIT_INTERVALS; i++)
@@ -686,7 +720,7 @@ int cd_cc_scan(const cd_cc_frame *f, cd_cc_sink *k, double *Fmax)
                  * within rounding of B's axis) the rest is sampled, keeping the resolution
                  * already reached around the trouble spot. */
                 if (leaf) emit(k, &a, &b);
-                else emit_sampled(f, k, &a, &b, Fmax);
+                else emit_sampled(f, k, &a, &b, Fmax, &deferred);
                 if (sp == 0) break;
                 a = b;
                 b = st[--sp].b;
@@ -705,6 +739,7 @@ int cd_cc_scan(const cd_cc_frame *f, cd_cc_sink *k, double *Fmax)
             b = mid;
         }
     }
+    deferred_offer(f, k, &deferred);
     return 0;
 }
 
@@ -718,7 +753,7 @@ int cd_cc_scan(const cd_cc_frame *f, cd_cc_sink *k, double *Fmax)
  * 2 CD_CC_PARALLEL_ULPS eps L. */
 int cd_cc_parallel_critical(const cd_cc_frame *f, double *t)
 {
-    if (!(hypot(f->ha, f->hb) <= CD_CC_PARALLEL_ULPS * DBL_EPSILON * f->L)) return -1;
+    if (!(hypot(f->rg.ha, f->rg.hb) <= CD_CC_PARALLEL_ULPS * DBL_EPSILON * f->L)) return -1;
     double e = hypot(f->Cu, f->Cv), R = f->R, s = f->s;
     double t0 = e > 0 ? atan2(f->Cv, f->Cu) : 0.0;
     int n = 0;

@@ -136,13 +136,9 @@ void cd_circles_unscale_result(cdist_result *r, int e, vec3 offset)
         }
 }
 
-cdist_status cdist_circle_circle(cdist_query *q, const cdist_circle *c0, const cdist_circle *c1, cdist_result *r)
+/* The scaled problem (a at the origin): the core, then r written in full. */
+static cdist_status cc_query(cdist_query *q, cd_circle a, cd_circle b, cdist_result *r, cdist_method *answered)
 {
-    cdist_status st = cd_check_handle(q, r);
-    if (st) return st;
-    cd_circle a, b;
-    if ((st = cd_check_circle(q, c0, "first circle", &a)) || (st = cd_check_circle(q, c1, "second circle", &b)))
-        return st;
     /* Work relative to the first centre. */
     vec3 offset = a.c;
     a.c = v3(0, 0, 0);
@@ -150,17 +146,24 @@ cdist_status cdist_circle_circle(cdist_query *q, const cdist_circle *c0, const c
     int e = cd_circles_scale(&a, &b);
     cd_best best;
     cd_best_init(&best, fmax(fmax(a.r, b.r), v_norm(b.c)));
-    cdist_method m = cd_pick_method(q, CD_HAS(CDIST_METHOD_POLYNOMIAL) | CD_HAS(CDIST_METHOD_ROBUST) |
-                                           CD_HAS(CDIST_METHOD_ITERATION),
-                                    CDIST_METHOD_AUTO);
     int iterations = 0;
-    cdist_method answered;
-    st = cc_core(q, m, &a, &b, &best, &iterations, &answered);
+    cdist_status st = cc_core(q, cd_family_method(q, CD_FAM_CIRCLE_CIRCLE), &a, &b, &best, &iterations, answered);
     if (st) return st;
+    if (best.n == 0) return cd_fail(q, CDIST_ERR_INTERNAL, "circle-circle found no candidate");
     cd_best_to_result(&best, v3(0, 0, 0), 0, r);
+    cd_result_finish(r, r->num_pairs);
     cd_circles_unscale_result(r, e, offset);
     r->iterations = iterations;
-    return cd_ok(q, r, answered);
+    return CDIST_OK;
 }
 
-
+cdist_status cdist_circle_circle(cdist_query *q, const cdist_circle *c0, const cdist_circle *c1, cdist_result *r)
+{
+    cdist_status st = cd_enter(q, r);
+    if (st) return st;
+    cd_circle a, b;
+    cdist_method answered = CDIST_METHOD_ROBUST;
+    if (!(st = cd_check_circle(q, c0, "first circle", &a)) && !(st = cd_check_circle(q, c1, "second circle", &b)))
+        st = cc_query(q, a, b, r, &answered);
+    return cd_leave(q, r, st, answered);
+}

@@ -26,6 +26,7 @@
  * x(t) = X[0] + X[1] cos t + X[2] sin t, the same for y, z; S(t) = Delta . Delta'. */
 typedef struct cdk {
     double X[3], Y[3], Z[3], S[3];
+    cd_ring rg;          /* the same circle for the ring evaluator (w = (x, y, 0), h = z) */
     double E0;           /* X0^2 + Y0^2 - R^2, to the last bit (see rim_excess) */
     int small_circle;    /* rho <= R: rim_excess expands around the circle's centre */
     double R;            /* disk radius */
@@ -59,6 +60,8 @@ static void cdk_init(cdk *k, const cd_circle *c, const cd_circle *d)
     double s1 = cd_two_sum(xh, yh, &e1), s2 = cd_two_sum(s1, -rh, &e2);
     k->E0 = s2 + (e2 + e1 + xl + yl - rl);
     k->small_circle = k->rho <= k->R;
+    k->rg = (cd_ring){v3(k->X[1], k->Y[1], 0.0), v3(k->X[2], k->Y[2], 0.0), v3(k->X[0], k->Y[0], 0.0),
+                      k->Z[1], k->Z[2], k->Z[0]};
     /* Delta . Delta' = (P - D) . P' = -D . P' since |P| is constant. */
     k->S[0] = 0.0; k->S[1] = -r * v_dot(D, c->v); k->S[2] = r * v_dot(D, c->u);
 }
@@ -66,31 +69,16 @@ static void cdk_init(cdk *k, const cd_circle *c, const cd_circle *d)
 static inline double trig1(const double *a, double cs, double sn) { return fma(a[1], cs, fma(a[2], sn, a[0])); }
 static inline double trig1d(const double *a, double cs, double sn) { return fma(a[2], cs, -a[1] * sn); }
 
-/* Half squared rim distance F = ((rho - R)^2 + z^2) / 2 along the circle: value, F', F''.
- * The hot path of the search: plain arithmetic (fma() is a library call without -mfma, and
- * hypot is slow; squares cannot overflow for inputs below 1e150). */
+/* Half squared rim distance F = ((rho - R)^2 + z^2) / 2 along the circle: value, F', F''
+ * (the ring evaluator; on the disk's axis F has a cusp, a maximum, where F'' is set to 1). */
 static double cdk_rim_cs(const cdk *k, double cs, double sn, double *f1, double *f2)
 {
-    const double *X = k->X, *Y = k->Y, *Z = k->Z;
-    double x = X[0] + X[1] * cs + X[2] * sn, y = Y[0] + Y[1] * cs + Y[2] * sn, z = Z[0] + Z[1] * cs + Z[2] * sn;
-    double xp = X[2] * cs - X[1] * sn, yp = Y[2] * cs - Y[1] * sn, zp = Z[2] * cs - Z[1] * sn;
-    double rho = sqrt(x * x + y * y);
-    double dr = rho - k->R;
-    double F = 0.5 * (dr * dr + z * z);
-    if (rho > 0.0) {
-        double r1 = (x * xp + y * yp) / rho;
-        if (f1) *f1 = dr * r1 + z * zp;
-        if (f2) {
-            double xpp = X[0] - x, ypp = Y[0] - y, zpp = Z[0] - z; /* x'' = -(x - x0) */
-            double r2 = (xp * xp + yp * yp + x * xpp + y * ypp - r1 * r1) / rho;
-            *f2 = r1 * r1 + dr * r2 + zp * zp + z * zpp;
-        }
-    } else {
-        /* On the disk's axis: F has a cusp (a maximum); any finite values do. */
-        if (f1) *f1 = z * zp;
-        if (f2) *f2 = 1.0;
-    }
-    return F;
+    cd_ring_val v;
+    v.F1 = v.F2 = 0.0;
+    cd_ring_eval(&k->rg, k->R, cs, sn, f2 ? 2 : f1 ? 1 : 0, &v);
+    if (f1) *f1 = v.F1;
+    if (f2) *f2 = v.rho > 0.0 ? v.F2 : 1.0;
+    return 0.5 * v.F;
 }
 
 static double cdk_rim(const cdk *k, double t, double *f1, double *f2)
@@ -526,23 +514,31 @@ cdist_status cd_circle_disk_core(cdist_query *q, cdist_method method, const cd_c
     return cd_circle_disk_core_ex(q, method, c, d, b, &used);
 }
 
-cdist_status cdist_circle_disk(cdist_query *q, const cdist_circle *c, const cdist_circle *d, cdist_result *r)
+/* The scaled problem (c at the origin): the core, then r written in full. */
+static cdist_status circle_disk_query(cdist_query *q, cd_circle a, cd_circle e, cdist_result *r, cdist_method *used)
 {
-    cdist_status st = cd_check_handle(q, r);
-    if (st) return st;
-    cd_circle a, e;
-    if ((st = cd_check_circle(q, c, "circle", &a)) || (st = cd_check_circle(q, d, "disk", &e))) return st;
     vec3 offset = a.c;
     a.c = v3(0, 0, 0);
     e.c = v_sub(e.c, offset);
     int ex = cd_circles_scale(&a, &e);
     cd_best best;
     cd_best_init(&best, fmax(fmax(a.r, e.r), v_norm(e.c)));
-    cdist_method m = cd_pick_method(q, CD_DISK_METHODS, CD_DISK_AUTO), used;
-    if ((st = cd_circle_disk_core_ex(q, m, &a, &e, &best, &used))) return st;
+    cdist_status st = cd_circle_disk_core_ex(q, cd_family_method(q, CD_FAM_CIRCLE_DISK), &a, &e, &best, used);
+    if (st) return st;
     if (best.n == 0) return cd_fail(q, CDIST_ERR_INTERNAL, "circle-disk found no candidate");
     cd_best_to_result(&best, v3(0, 0, 0), 0, r);
+    cd_result_finish(r, r->num_pairs);
     cd_circles_unscale_result(r, ex, offset);
-    return cd_ok(q, r, used);
+    return CDIST_OK;
 }
 
+cdist_status cdist_circle_disk(cdist_query *q, const cdist_circle *c, const cdist_circle *d, cdist_result *r)
+{
+    cdist_status st = cd_enter(q, r);
+    if (st) return st;
+    cd_circle a, e;
+    cdist_method used = cd_family_method(q, CD_FAM_CIRCLE_DISK);
+    if (!(st = cd_check_circle(q, c, "circle", &a)) && !(st = cd_check_circle(q, d, "disk", &e)))
+        st = circle_disk_query(q, a, e, r, &used);
+    return cd_leave(q, r, st, used);
+}

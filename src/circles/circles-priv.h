@@ -6,6 +6,7 @@
 #define CDIST_CIRCLES_PRIV_H
 
 #include "internal.h"
+#include "circles/ring_eval.h"
 
 /* F constant on a circle (equidistant configuration (a)): variation below CC_EQUI_ULPS eps L. */
 #define CC_EQUI_ULPS 32.0
@@ -15,8 +16,7 @@ typedef struct cd_cc_frame {
     double R, s;       /* radii of A and B */
     vec3 u, v;         /* A's basis */
     vec3 C, m;         /* B's centre relative to A's centre, B's unit normal */
-    vec3 al, be, ga;   /* w(t) = m x (P(t) - C) = al cos t + be sin t + ga */
-    double ha, hb, hc; /* h(t) = m.(P(t) - C) = ha cos t + hb sin t + hc */
+    cd_ring rg;        /* w(t) = m x (P(t) - C) and h(t) = m.(P(t) - C) (ring_eval.h) */
     double Cu, Cv;     /* sigma = D.D' = R (Cu sin t - Cv cos t) */
     double M1, M2, M3; /* |H'| <= M1, |H''| <= M2, |H'''| <= M3 */
     double eH, eH1, eH2; /* rounding bounds of the computed H, H', H'' */
@@ -52,41 +52,23 @@ typedef struct cd_cc_sink {
     double rho_min; /* axis distance of the point giving dmin */
 } cd_cc_sink;
 
-static inline double cd_cc_dot3(vec3 a, vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-
-/* Hot-path arithmetic without fma(): the library is built for baseline x86-64, where fma() is a
- * libm call; plain products are accurate enough for sampling and Newton steps (the final
- * distance of each pair is recomputed in pair_at). */
-/* w = al c + be s + ga and w' = be c - al s */
-static inline void cd_cc_w_at(const cd_cc_frame *f, double c, double s, vec3 *w, vec3 *w1)
-{
-    w->x = f->al.x * c + f->be.x * s + f->ga.x;
-    w->y = f->al.y * c + f->be.y * s + f->ga.y;
-    w->z = f->al.z * c + f->be.z * s + f->ga.z;
-    w1->x = f->be.x * c - f->al.x * s;
-    w1->y = f->be.y * c - f->al.y * s;
-    w1->z = f->be.z * c - f->al.z * s;
-}
+static inline double cd_cc_dot3(vec3 a, vec3 b) { return cd_ring_dot(a, b); }
 
 /* F and F'/2 only, at angle t with (c, s) = (cos t, sin t): the lean evaluation of the sampled
  * regions (dense scan, kink grid, budget fallback, minimum search), which read only the signs of
  * F' and the values of F and need none of H's rounding bounds. */
 static inline void cd_cc_eval_lean(const cd_cc_frame *f, double t, double c, double s, cd_cc_pt *p)
 {
-    vec3 w, w1;
-    cd_cc_w_at(f, c, s, &w, &w1);
-    double Q = cd_cc_dot3(w, w), g = cd_cc_dot3(w, w1);
-    double rho = sqrt(Q);
-    double h = f->ha * c + f->hb * s + f->hc, h1 = f->hb * c - f->ha * s;
-    double dr = rho - f->s;
+    cd_ring_val v;
+    cd_ring_eval(&f->rg, f->s, c, s, 1, &v);
     p->t = t;
     p->c = c;
     p->s = s;
-    p->F1 = dr * (rho > 0 ? g / rho : 0.0) + h * h1;
-    p->F = dr * dr + h * h;
-    p->d = sqrt(p->F);
-    p->Q = Q;
-    p->g = g;
+    p->F1 = v.F1;
+    p->F = v.F;
+    p->d = sqrt(v.F);
+    p->Q = v.Q;
+    p->g = v.g;
 }
 
 /* The frame of A (parameterised, centre at the origin) and B (centre C relative to A's). */

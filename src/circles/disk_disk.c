@@ -17,13 +17,10 @@ static int circle_less(const cdist_circle *a, const cdist_circle *b)
     return 0;
 }
 
-cdist_status cdist_disk_disk(cdist_query *q, const cdist_circle *d0, const cdist_circle *d1, cdist_result *r)
+/* The validated problem, swapped into the canonical order: the core, then r written in full. */
+static cdist_status dd_query(cdist_query *q, cd_circle a, cd_circle e, int swap, cdist_result *r, cdist_method *used)
 {
-    cdist_status st = cd_check_handle(q, r);
-    if (st) return st;
-    cd_circle a, e;
-    if ((st = cd_check_circle(q, d0, "first disk", &a)) || (st = cd_check_circle(q, d1, "second disk", &e))) return st;
-    int swap = circle_less(d1, d0);
+    cdist_status st;
     if (swap) {
         cd_circle t = a;
         a = e;
@@ -35,7 +32,7 @@ cdist_status cdist_disk_disk(cdist_query *q, const cdist_circle *d0, const cdist
     int ex = cd_circles_scale(&a, &e);
     cd_best best;
     cd_best_init(&best, fmax(fmax(a.r, e.r), v_norm(e.c)));
-    cdist_method m = cd_pick_method(q, CD_DISK_METHODS, CD_DISK_AUTO), used0, used1;
+    cdist_method m = cd_family_method(q, CD_FAM_DISK_DISK), used0, used1;
     /* Rim of a to disk e, and rim of e to disk a (computed with e's centre as origin). */
     cd_best b0, b1;
     cd_best_init(&b0, best.scale);
@@ -55,6 +52,19 @@ cdist_status cdist_disk_disk(cdist_query *q, const cdist_circle *d0, const cdist
     if (cd_best_is_equidistant(&b1)) cd_best_settle_equidistant(&best, d1sq);
     cd_best_convex_contact(&best);
     cd_best_to_result(&best, v3(0, 0, 0), swap, r);
+    cd_result_finish(r, r->num_pairs);
     cd_circles_unscale_result(r, ex, offset);
-    return cd_ok(q, r, used0 == CDIST_METHOD_ROBUST || used1 == CDIST_METHOD_ROBUST ? CDIST_METHOD_ROBUST : m);
+    *used = used0 == CDIST_METHOD_ROBUST || used1 == CDIST_METHOD_ROBUST ? CDIST_METHOD_ROBUST : m;
+    return CDIST_OK;
+}
+
+cdist_status cdist_disk_disk(cdist_query *q, const cdist_circle *d0, const cdist_circle *d1, cdist_result *r)
+{
+    cdist_status st = cd_enter(q, r);
+    if (st) return st;
+    cd_circle a, e;
+    cdist_method used = cd_family_method(q, CD_FAM_DISK_DISK);
+    if (!(st = cd_check_circle(q, d0, "first disk", &a)) && !(st = cd_check_circle(q, d1, "second disk", &e)))
+        st = dd_query(q, a, e, circle_less(d1, d0), r, &used);
+    return cd_leave(q, r, st, used);
 }
