@@ -45,16 +45,13 @@
 #include <math.h>
 
 #include "internal.h"
-#include "circles/ring_eval.h"
 
 /* ---------------------------------------------------------------------------------------- */
 /* Shared helpers (prototypes in the cc_methods block of internal.h)                          */
 /* ---------------------------------------------------------------------------------------- */
 
-/* The ring evaluator (circles/ring_eval.h) on w = n x dl, h = n.dl formed from the moving point
- * itself (so that F, which cd_cc_offer reports, is the distance of that very point); F' and F''
- * are twice its F'/2 and F''/2. Plain arithmetic on purpose: without hardware FMA in the build
- * flags fma() is a library call, and this function is the inner loop of every method. */
+/* Plain arithmetic on purpose: without hardware FMA in the build flags fma() is a library call,
+ * and this function is the inner loop of every method. */
 static inline double eval_cs(const cd_cc *g, int side, double ct, double st, double *f1, double *f2, vec3 *P,
                              vec3 *K)
 {
@@ -62,39 +59,32 @@ static inline double eval_cs(const cd_cc *g, int side, double ct, double st, dou
     double sg = side ? 1.0 : -1.0; /* moving centre relative to the fixed centre: +-D */
     double a = m->r * ct, bb = m->r * st;
     vec3 p = v3(a * m->u.x + bb * m->v.x, a * m->u.y + bb * m->v.y, a * m->u.z + bb * m->v.z);
+    vec3 dp = v3(a * m->v.x - bb * m->u.x, a * m->v.y - bb * m->u.y, a * m->v.z - bb * m->u.z);
     vec3 dl = v3(sg * g->D.x + p.x, sg * g->D.y + p.y, sg * g->D.z + p.z);
     vec3 n = f->n;
-    cd_ring_val v;
-    v.F1 = v.F2 = 0.0;
-    v.w = v_cross(n, dl);
-    v.Q = cd_ring_dot(v.w, v.w);
-    v.h = n.x * dl.x + n.y * dl.y + n.z * dl.z;
-    int order = f2 ? 2 : f1 ? 1 : 0;
-    if (order >= 1) {
-        vec3 dp = v3(a * m->v.x - bb * m->u.x, a * m->v.y - bb * m->u.y, a * m->v.z - bb * m->u.z);
-        v.w1 = v_cross(n, dp); /* w' = n x P' */
-        v.g = cd_ring_dot(v.w, v.w1);
-        v.h1 = cd_ring_dot(n, dp);
-        if (order >= 2) {
-            vec3 w2 = v_cross(p, n); /* w'' = n x P'' = -n x p */
-            v.g1 = cd_ring_dot(v.w1, v.w1) + cd_ring_dot(v.w, w2);
-            v.h2 = -cd_ring_dot(n, p);
-        }
+    double h = n.x * dl.x + n.y * dl.y + n.z * dl.z;
+    vec3 nd = v_cross(n, dl);
+    double rho = sqrt(nd.x * nd.x + nd.y * nd.y + nd.z * nd.z);
+    double e = rho - f->r;
+    double F = e * e + h * h;
+    vec3 k, E;
+    double d2f = 2.0 * m->r * m->r;
+    if (rho > 0.0) {
+        vec3 w = v_cross(nd, n);
+        double kr = f->r / rho, er = e / rho;
+        k = v3(kr * w.x, kr * w.y, kr * w.z);
+        E = v3(h * n.x + er * w.x, h * n.y + er * w.y, h * n.z + er * w.z);
+        double tp = (nd.x * dp.x + nd.y * dp.y + nd.z * dp.z) / rho;
+        d2f -= 2.0 * f->r * tp * tp / rho;
+    } else { /* on the other circle's axis: every point of it is closest (a kink of F) */
+        k = v_scale(f->r, f->u);
+        E = v_sub(dl, k);
     }
-    cd_ring_dist(&v, f->r, order);
-    if (f1) *f1 = 2.0 * v.F1;
-    if (f2) *f2 = 2.0 * v.F2;
+    if (f1) *f1 = 2.0 * (E.x * dp.x + E.y * dp.y + E.z * dp.z);
+    if (f2) *f2 = d2f - 2.0 * (E.x * p.x + E.y * p.y + E.z * p.z);
     if (P) *P = p;
-    if (K) {
-        if (v.rho > 0.0) {
-            vec3 w = v_cross(v.w, n);
-            double kr = f->r / v.rho;
-            *K = v3(kr * w.x, kr * w.y, kr * w.z);
-        } else { /* on the other circle's axis: every point of it is closest (a kink of F) */
-            *K = v_scale(f->r, f->u);
-        }
-    }
-    return v.F;
+    if (K) *K = k;
+    return F;
 }
 
 double cd_cc_eval(const cd_cc *g, int side, double t, double *f1, double *f2, vec3 *P, vec3 *K)
