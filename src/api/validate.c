@@ -84,12 +84,14 @@ CD_INLINE int circle_fast(const cdist_query *q, const cdist_circle *c, cd_circle
     if (!(fabs(p.x) <= CD_MAX_ABS && fabs(p.y) <= CD_MAX_ABS && fabs(p.z) <= CD_MAX_ABS && r >= 0.0 &&
           r <= CD_MAX_ABS))
         return 0;
-    double m = v_maxabs(d);
-    if (!(m >= 0x1p-500 && m <= CD_MAX_ABS)) return 0; /* also NaN or infinite components */
-    vec3 sd = v_scale(1.0 / m, d); /* the arithmetic of cd_check_direction before its scaling fix */
-    double ns = v_norm(sd), len = m * ns;
+    /* |d|^2 in [2^-1000, 2^1000]: every component finite and the square free of overflow and
+     * of harmful underflow (a component too small to square is below eps of the largest), so
+     * one square root and one division give the unit normal (within 1 ulp of any other way). */
+    double n2 = v_sqr(d);
+    if (!(n2 >= 0x1p-1000 && n2 <= 0x1p1000)) return 0; /* also NaN or infinite components */
+    double len = sqrt(n2);
     if (!(fabs(len - 1.0) <= q->unit_tol)) return 0;
-    out->n = v_scale(1.0 / ns, sd);
+    out->n = v_scale(1.0 / len, d);
     out->c = p;
     out->r = r;
     return 1;
