@@ -56,6 +56,17 @@ CD_INLINE vec3 scaled_direction(vec3 d, double m, double *down)
 CD_FMA_CLONES cdist_status cd_check_direction(cdist_query *q, const cdist_vec3 *d, const char *what, int unit_required, vec3 *unit,
                                 double *length)
 {
+    /* Fast path: |d|^2 in [2^-1000, 2^990] means every component is finite and below 2^495
+     * (< CD_MAX_ABS) and the square neither overflows nor loses the length to underflow. */
+    double n2 = d ? v_sqr(*d) : NAN;
+    if (n2 >= 0x1p-1000 && n2 <= 0x1p990) {
+        double len = sqrt(n2);
+        if (!unit_required || !q || fabs(len - 1.0) <= q->unit_tol) {
+            if (unit) *unit = v_scale(1.0 / len, *d);
+            if (length) *length = len;
+            return CDIST_OK;
+        }
+    }
     cdist_status st = cd_check_point(q, d, what);
     if (st) return st;
     double m = v_maxabs(*d);

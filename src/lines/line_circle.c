@@ -193,10 +193,10 @@ CD_INLINE void merge_basins(lc_ctx *x, const lc_model *m, double tol)
         double sa = (x->cand[i].param[0] - x->t0) * x->sigma - x->uO;
         double sb = (x->cand[i + 1].param[0] - x->t0) * x->sigma - x->uO;
         double fmaxv = 0.0;
-        for (int k = 1; k <= 3; k++) fmaxv = fmax(fmaxv, f_at(m, sa + 0.25 * k * (sb - sa)));
+        for (int k = 1; k <= 3; k++) fmaxv = cd_fmax(fmaxv, f_at(m, sa + 0.25 * k * (sb - sa)));
         double dmid = sqrt(fmaxv) * x->up;
         double d0 = sqrt(x->cand[i].d2), d1 = sqrt(x->cand[i + 1].d2);
-        if (dmid > fmax(d0, d1) + tol) {
+        if (dmid > cd_fmax(d0, d1) + tol) {
             i++;
             continue;
         }
@@ -228,7 +228,7 @@ CD_FMA_CLONES static void robust_roots(const lc_model *m, double smin, double sm
          * branch exists iff F'(sL) >= 0, on the right branch iff F'(sR) <= 0. */
         double cm = cbrt(m->m0 * m->ax1);
         double rhohat = cbrt(m->r) * cm * cm;
-        double x2hat = sqrt(fmax(0.0, (rhohat - m->ax1) * (rhohat + m->ax1)));
+        double x2hat = sqrt(cd_fmax(0.0, (rhohat - m->ax1) * (rhohat + m->ax1)));
         double sc = -m->c2 / m->m0;
         double sL = sc - x2hat / m->m0, sR = sc + x2hat / m->m0;
         double fL = fp_at(m, fma(m->a, sL, m->h), -x2hat, -1);
@@ -239,17 +239,17 @@ CD_FMA_CLONES static void robust_roots(const lc_model *m, double smin, double sm
         if (!left && !right) left = right = 1;
         if (left && lo <= sL) {
             br[nb][0] = lo;
-            br[nb][1] = fmin(sL, hi);
+            br[nb][1] = cd_fmin(sL, hi);
             nb++;
         }
         if (right && sR <= hi) {
-            br[nb][0] = fmax(sR, lo);
+            br[nb][0] = cd_fmax(sR, lo);
             br[nb][1] = hi;
             nb++;
         }
     }
     for (int i = 0; i < nb; i++) {
-        double a = fmax(br[i][0], smin), b = fmin(br[i][1], smax);
+        double a = cd_fmax(br[i][0], smin), b = cd_fmin(br[i][1], smax);
         if (a > b) continue;
         roots[(*nr)++] = solve(m, a, b);
     }
@@ -311,7 +311,7 @@ CD_FMA_CLONES static cdist_status linear_circle(cdist_query *q, cdist_method met
 
     if (c->r == 0.0) {
         /* The circle is its centre: nearest point of the range to the origin. */
-        double u = fmin(fmax(0.0, umin), umax);
+        double u = cd_fmin(cd_fmax(0.0, umin), umax);
         double t = (u == 0.0) ? t0 : t0 + u;
         if (tmin == tmax) t = tmin;
         vec3 P = (u == 0.0) ? B0 : v_axpy(B, t, M);
@@ -319,7 +319,7 @@ CD_FMA_CLONES static cdist_status linear_circle(cdist_query *q, cdist_method met
         goto done;
     }
 
-    double S = fmax(c->r, v_norm(B0));
+    double S = cd_fmax(c->r, v_norm(B0));
     int e = cd_scale_exponent(S);
     double sg = cd_pow2(-e);
     x.sigma = sg;
@@ -327,7 +327,7 @@ CD_FMA_CLONES static cdist_status linear_circle(cdist_query *q, cdist_method met
     vec3 B0s = v_scale(sg, B0);
     double rs = c->r * sg;
     x.rs = rs;
-    x.eqtol = CD_LC_AXIS_ULPS * EPS * fmax(1.0, sg * v_norm(B));
+    x.eqtol = CD_LC_AXIS_ULPS * EPS * cd_fmax(1.0, sg * v_norm(B));
     umin *= sg;
     umax *= sg;
 
@@ -347,7 +347,7 @@ CD_FMA_CLONES static cdist_status linear_circle(cdist_query *q, cdist_method met
         /* Perpendicular to the plane (§4.1 cases 1, 2): F = (h0 + a u)^2 + (rho - r)^2 with rho
          * constant to rounding, so the minimum is the plane crossing, clamped to the range. On
          * the axis every circle point is equally close (equidistant, also for rays/segments). */
-        double u = fmin(fmax(-h0 / a, umin), umax);
+        double u = cd_fmin(cd_fmax(-h0 / a, umin), umax);
         double X = fma(u, m2x, b2x), Y = fma(u, m2y, b2y);
         double rho = sqrt(X * X + Y * Y), h = fma(a, u, h0), dr = rho - rs;
         double t = x.t0 + u / sg;
@@ -421,8 +421,8 @@ cdist_status cd_linear_circle_ex(cdist_query *q, cdist_method method, vec3 B, ve
  * of the line, ray or segment), the quantity ../shared/cases/README.md measures errors against. */
 CD_INLINE double range_scale(vec3 B, vec3 M, double tmin, double tmax, double r)
 {
-    double t = fmin(fmax(-v_dot(B, M), tmin), tmax);
-    return fmax(r, v_norm(v_axpy(B, t, M)));
+    double t = cd_fmin(cd_fmax(-v_dot(B, M), tmin), tmax);
+    return cd_fmax(r, v_norm(v_axpy(B, t, M)));
 }
 
 /* Runs the core for the points origin + t D, t in [tmin, tmax] (D as the caller passed it, M its
@@ -445,7 +445,7 @@ CD_FMA_CLONES vec3 cd_line_near_centre(vec3 origin, vec3 D, vec3 C, double tmin,
     vec3 Ds = v_scale(1.0 / m, D); /* |D|^2 may underflow or overflow, |Ds|^2 cannot */
     double t = -(v_dot(hi3, Ds) / v_sqr(Ds)) / m;
     if (!isfinite(t)) t = 0.0;
-    t = fmin(fmax(t, tmin), tmax); /* rays and segments: stay on the object (no cancellation in t) */
+    t = cd_fmin(cd_fmax(t, tmin), tmax); /* rays and segments: stay on the object (no cancellation in t) */
     *t0 = t;
     return v_add(v_axpy(hi3, t, D), lo3);
 }
@@ -469,7 +469,7 @@ CD_FMA_CLONES static cdist_status run(cdist_query *q, vec3 origin, vec3 D, vec3 
     cd_result_finish(r, r->num_pairs);
     for (int i = 0; i < r->num_pairs; i++) {
         double t = t0 + r->pairs[i].param[0] / len;
-        r->pairs[i].param[0] = fmin(fmax(t, tmin), tmax);
+        r->pairs[i].param[0] = cd_fmin(cd_fmax(t, tmin), tmax);
     }
     return CDIST_OK;
 }

@@ -52,13 +52,13 @@ CD_FMA_CLONES static cdist_status linear_disk(cdist_query *q, cdist_method metho
         t1 = -INFINITY;
         t2 = INFINITY;
     }
-    double lo = fmax(tmin, t1), hi = fmin(tmax, t2);
+    double lo = cd_fmax(tmin, t1), hi = cd_fmin(tmax, t2);
     cdist_status st;
     if (lo <= hi) {
         /* The piece over the disk. */
         if (fabs(mn) <= CD_LD_PARALLEL_ULPS * DBL_EPSILON) {
             /* Parallel to the plane (within rounding): |h| constant over a stretch. */
-            double tt = isfinite(lo) ? lo : isfinite(hi) ? hi : fmin(fmax(0.0, lo), hi);
+            double tt = isfinite(lo) ? lo : isfinite(hi) ? hi : cd_fmin(cd_fmax(0.0, lo), hi);
             if (isfinite(lo) && isfinite(hi)) tt = 0.5 * (lo + hi);
             lin_offer(B, M, tt, d, &loc);
             if (hi > lo && R > 0.0) eq_d2 = loc.n ? loc.c[0].d2 : INFINITY;
@@ -67,7 +67,7 @@ CD_FMA_CLONES static cdist_status linear_disk(cdist_query *q, cdist_method metho
             if (tz >= lo && tz <= hi) {
                 /* Crossing point: polish once on h, clamp into the piece. */
                 double hz = v_dot(d->n, v_axpy(B, tz, M));
-                tz = fmin(fmax(tz - hz / mn, lo), hi);
+                tz = cd_fmin(cd_fmax(tz - hz / mn, lo), hi);
                 lin_offer(B, M, tz, d, &loc);
             }
             if (isfinite(lo)) lin_offer(B, M, lo, d, &loc);
@@ -124,14 +124,14 @@ CD_FMA_CLONES static vec3 segment_near_centre(vec3 p0, vec3 p1, vec3 C, double *
         a[i] = cd_two_diff(P0[i], CC[i], &al[i]);
         dd[i] = cd_two_diff(P1[i], P0[i], &dl[i]);
     }
-    double m = fmax(fabs(dd[0]), fmax(fabs(dd[1]), fabs(dd[2])));
+    double m = cd_fmax(fabs(dd[0]), cd_fmax(fabs(dd[1]), fabs(dd[2])));
     double num = 0.0, den = 0.0;
     for (int i = 0; i < 3; i++) {
         num += (a[i] / m) * (dd[i] / m);
         den += (dd[i] / m) * (dd[i] / m);
     }
     double t = (den > 0.0) ? -num / den : 0.0;
-    t = fmin(fmax(t, 0.0), 1.0);
+    t = cd_fmin(cd_fmax(t, 0.0), 1.0);
     *s0 = t;
     double B[3];
     for (int i = 0; i < 3; i++) B[i] = fma(t, dd[i], a[i]) + fma(t, dl[i], al[i]);
@@ -155,13 +155,13 @@ CD_FMA_CLONES static cdist_status linear_disk_query(cdist_query *q, vec3 origin,
     double t0;
     vec3 B = p1 ? segment_near_centre(origin, *p1, offset, &t0) : cd_line_near_centre(origin, D, offset, tmin, tmax, &t0);
     double lo = (tmin == t0) ? 0.0 : (tmin - t0) * len, hi = (tmax == t0) ? 0.0 : (tmax - t0) * len;
-    double L = fmax(d.r, v_norm(B));
+    double L = cd_fmax(d.r, v_norm(B));
     cd_best best;
     cd_best_init(&best, L);
     cdist_status st = linear_disk(q, cd_family_method(q, CD_FAM_LINE_DISK), B, M, lo, hi, &d, &best, used);
     if (st) return st;
     if (best.n == 0) return cd_fail(q, CDIST_ERR_INTERNAL, "line-disk found no candidate");
-    for (int i = 0; i < best.n; i++) best.c[i].param[0] = fmin(fmax(t0 + best.c[i].param[0] / len, tmin), tmax);
+    for (int i = 0; i < best.n; i++) best.c[i].param[0] = cd_fmin(cd_fmax(t0 + best.c[i].param[0] / len, tmin), tmax);
     cd_best_to_result(&best, offset, 0, r);
     cd_result_finish(r, r->num_pairs);
     return CDIST_OK;
