@@ -62,7 +62,7 @@ CD_FMA_CLONES cdist_status cd_check_direction(cdist_query *q, const cdist_vec3 *
     if (n2 >= 0x1p-1000 && n2 <= 0x1p990) {
         double len = sqrt(n2);
         if (!unit_required || !q || fabs(len - 1.0) <= q->unit_tol) {
-            if (unit) *unit = v_scale(1.0 / len, *d);
+            if (unit) *unit = v3(d->x / len, d->y / len, d->z / len);
             if (length) *length = len;
             return CDIST_OK;
         }
@@ -102,7 +102,7 @@ CD_INLINE int circle_fast(const cdist_query *q, const cdist_circle *c, cd_circle
     if (!(n2 >= 0x1p-1000 && n2 <= 0x1p1000)) return 0; /* also NaN or infinite components */
     double len = sqrt(n2);
     if (!(fabs(len - 1.0) <= q->unit_tol)) return 0;
-    out->n = v_scale(1.0 / len, d);
+    out->n = v3(d.x / len, d.y / len, d.z / len);
     out->c = p;
     out->r = r;
     return 1;
