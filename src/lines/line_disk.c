@@ -15,13 +15,11 @@
  *   outside: G = F, the line-circle distance, by cd_linear_circle restricted to the piece.
  * The lemma at the top makes the split points themselves unnecessary as candidates, but they
  * are offered anyway (cheap, and they protect against a split computed a few ulps off). */
-static void lin_offer(vec3 B, vec3 M, double t, const cd_circle *d, cd_best *b)
+CD_INLINE void lin_offer(vec3 B, vec3 M, double t, const cd_circle *d, cd_best *b)
 {
     vec3 p = v_axpy(B, t, M);
-    cd_best tmp;
-    cd_best_init(&tmp, b->scale);
-    cd_point_disk_core(p, d, &tmp, 0);
-    for (int i = 0; i < tmp.n; i++) cd_best_offer(b, tmp.c[i].d2, tmp.c[i].p[0], tmp.c[i].p[1], t, tmp.c[i].param[1]);
+    cd_point_pair k = cd_point_disk_pair(p, d); /* offered without its on-axis flag */
+    cd_best_offer(b, k.d2, p, k.k, t, k.angle);
 }
 
 CD_FMA_CLONES static cdist_status linear_disk(cdist_query *q, cdist_method method, vec3 B, vec3 M, double tmin, double tmax,
@@ -73,8 +71,26 @@ CD_FMA_CLONES static cdist_status linear_disk(cdist_query *q, cdist_method metho
             if (isfinite(lo)) lin_offer(B, M, lo, d, &loc);
             if (isfinite(hi)) lin_offer(B, M, hi, d, &loc);
         }
-        /* The outer pieces. */
-        if (tmin < lo) {
+        /* The outer pieces. When both exist and the ends lo, hi were offered above, one
+         * line-circle run over the whole range gives their minima at half the cost: its local
+         * minima outside (lo, hi) are those of the pieces, and a piece minimum clamped to lo or
+         * hi is the end already offered. */
+        int both = tmin < lo && hi < tmax && !(fabs(mn) <= CD_LD_PARALLEL_ULPS * DBL_EPSILON);
+        if (both) {
+            cd_best all, t;
+            cd_best_init(&all, b->scale);
+            if ((st = cd_linear_circle_ex(q, method, B, M, tmin, tmax, d, &all, &u1))) return st;
+            if (u1 == CDIST_METHOD_ROBUST) *used = u1;
+            cd_best_init(&t, b->scale);
+            for (int i = 0; i < all.n; i++) {
+                const cd_cand *k = &all.c[i];
+                if (k->param[0] <= lo || k->param[0] >= hi)
+                    cd_best_offer_flag(&t, k->equidistant, k->d2, k->p[0], k->p[1], k->param[0], k->param[1]);
+            }
+            double m2 = cd_best_merge(&loc, &t, v3(0, 0, 0), 0);
+            if (cd_best_is_equidistant(&t) && m2 < eq_d2) eq_d2 = m2;
+        }
+        if (!both && tmin < lo) {
             cd_best t;
             cd_best_init(&t, b->scale);
             if ((st = cd_linear_circle_ex(q, method, B, M, tmin, lo, d, &t, &u1))) return st;
@@ -82,7 +98,7 @@ CD_FMA_CLONES static cdist_status linear_disk(cdist_query *q, cdist_method metho
             double m2 = cd_best_merge(&loc, &t, v3(0, 0, 0), 0);
             if (cd_best_is_equidistant(&t) && m2 < eq_d2) eq_d2 = m2;
         }
-        if (hi < tmax) {
+        if (!both && hi < tmax) {
             cd_best t;
             cd_best_init(&t, b->scale);
             if ((st = cd_linear_circle_ex(q, method, B, M, hi, tmax, d, &t, &u1))) return st;
