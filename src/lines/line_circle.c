@@ -461,9 +461,19 @@ CD_FMA_CLONES vec3 cd_line_near_centre(vec3 origin, vec3 D, vec3 C, double tmin,
     hi3.x = cd_two_diff(origin.x, C.x, &lo3.x);
     hi3.y = cd_two_diff(origin.y, C.y, &lo3.y);
     hi3.z = cd_two_diff(origin.z, C.z, &lo3.z);
-    double m = v_maxabs(D);
-    vec3 Ds = v_scale(1.0 / m, D); /* |D|^2 may underflow or overflow, |Ds|^2 cannot */
-    double t = -(v_dot(hi3, Ds) / v_sqr(Ds)) / m;
+    double m = v_maxabs(D), t;
+    if (m >= 0x1p-1021 && m < 0x1p1022) {
+        /* D scaled by the power of two 2^-e of m (exact; |Ds|^2 in [1, 12)): one division,
+         * and t is exactly 2^k times itself for a query scaled by 2^k */
+        union { double d; unsigned long long u; } b = {m};
+        int e = (int)((b.u >> 52) & 0x7ff) - 1023;
+        double p = cd_pow2(-e);
+        vec3 Ds = v_scale(p, D);
+        t = -(v_dot(hi3, Ds) / v_sqr(Ds)) * p;
+    } else {
+        vec3 Ds = v_scale(1.0 / m, D); /* |D|^2 may underflow or overflow, |Ds|^2 cannot */
+        t = -(v_dot(hi3, Ds) / v_sqr(Ds)) / m;
+    }
     if (!isfinite(t)) t = 0.0;
     t = cd_fmin(cd_fmax(t, tmin), tmax); /* rays and segments: stay on the object (no cancellation in t) */
     *t0 = t;
