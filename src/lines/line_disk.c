@@ -77,18 +77,20 @@ CD_FMA_CLONES static cdist_status linear_disk(cdist_query *q, cdist_method metho
          * hi is the end already offered. */
         int both = tmin < lo && hi < tmax && !(fabs(mn) <= CD_LD_PARALLEL_ULPS * DBL_EPSILON);
         if (both) {
-            cd_best all, t;
+            cd_best all;
             cd_best_init(&all, b->scale);
             if ((st = cd_linear_circle_ex(q, method, B, M, tmin, tmax, d, &all, &u1))) return st;
             if (u1 == CDIST_METHOD_ROBUST) *used = u1;
-            cd_best_init(&t, b->scale);
+            /* straight into loc: `all` is sorted by d2, so the first kept candidate is the
+             * pieces' best (what merging a collector of them would report) */
+            int first = 1;
             for (int i = 0; i < all.n; i++) {
                 const cd_cand *k = &all.c[i];
-                if (k->param[0] <= lo || k->param[0] >= hi)
-                    cd_best_offer_flag(&t, k->equidistant, k->d2, k->p[0], k->p[1], k->param[0], k->param[1]);
+                if (!(k->param[0] <= lo || k->param[0] >= hi)) continue;
+                if (first && k->equidistant && k->d2 < eq_d2) eq_d2 = k->d2;
+                first = 0;
+                cd_best_offer_flag(&loc, k->equidistant, k->d2, k->p[0], k->p[1], k->param[0], k->param[1]);
             }
-            double m2 = cd_best_merge(&loc, &t, v3(0, 0, 0), 0);
-            if (cd_best_is_equidistant(&t) && m2 < eq_d2) eq_d2 = m2;
         }
         if (!both && tmin < lo) {
             cd_best t;
@@ -107,12 +109,10 @@ CD_FMA_CLONES static cdist_status linear_disk(cdist_query *q, cdist_method metho
             if (cd_best_is_equidistant(&t) && m2 < eq_d2) eq_d2 = m2;
         }
     } else {
-        cd_best t;
-        cd_best_init(&t, b->scale);
-        if ((st = cd_linear_circle_ex(q, method, B, M, tmin, tmax, d, &t, &u1))) return st;
+        /* loc is empty here: the core offers into it directly */
+        if ((st = cd_linear_circle_ex(q, method, B, M, tmin, tmax, d, &loc, &u1))) return st;
         if (u1 == CDIST_METHOD_ROBUST) *used = u1;
-        double m2 = cd_best_merge(&loc, &t, v3(0, 0, 0), 0);
-        if (cd_best_is_equidistant(&t)) eq_d2 = m2;
+        if (cd_best_is_equidistant(&loc)) eq_d2 = loc.c[0].d2;
     }
     if (isfinite(tmin)) lin_offer(B, M, tmin, d, &loc);
     if (isfinite(tmax)) lin_offer(B, M, tmax, d, &loc);
