@@ -33,8 +33,14 @@ CD_FMA_CLONES static cdist_status linear_disk(cdist_query *q, cdist_method metho
     vec3 Mp = v_cross(v_cross(d->n, M), d->n), Bp = v_cross(v_cross(d->n, B), d->n);
     double mp2 = v_sqr(Mp);
     double eq_d2 = INFINITY;
-    cd_best loc;
-    cd_best_init(&loc, b->scale);
+    /* Candidates are collected in loc, then merged into b; into b itself when b is still
+     * empty (the usual case), which is the same result without the copy. */
+    cd_best loc_store, *loc = b;
+    int direct = b->n == 0 && !b->equidistant;
+    if (!direct) {
+        loc = &loc_store;
+        cd_best_init(loc, b->scale);
+    }
     double t1 = INFINITY, t2 = -INFINITY; /* the projection is over the disk for t in [t1, t2] */
     if (mp2 > 0.0) {
         double mpn = sqrt(mp2);
@@ -58,18 +64,18 @@ CD_FMA_CLONES static cdist_status linear_disk(cdist_query *q, cdist_method metho
             /* Parallel to the plane (within rounding): |h| constant over a stretch. */
             double tt = isfinite(lo) ? lo : isfinite(hi) ? hi : cd_fmin(cd_fmax(0.0, lo), hi);
             if (isfinite(lo) && isfinite(hi)) tt = 0.5 * (lo + hi);
-            lin_offer(B, M, tt, d, &loc);
-            if (hi > lo && R > 0.0) eq_d2 = loc.n ? loc.c[0].d2 : INFINITY;
+            lin_offer(B, M, tt, d, loc);
+            if (hi > lo && R > 0.0) eq_d2 = loc->n ? loc->c[0].d2 : INFINITY;
         } else {
             double tz = -hB / mn;
             if (tz >= lo && tz <= hi) {
                 /* Crossing point: polish once on h, clamp into the piece. */
                 double hz = v_dot(d->n, v_axpy(B, tz, M));
                 tz = cd_fmin(cd_fmax(tz - hz / mn, lo), hi);
-                lin_offer(B, M, tz, d, &loc);
+                lin_offer(B, M, tz, d, loc);
             }
-            if (isfinite(lo)) lin_offer(B, M, lo, d, &loc);
-            if (isfinite(hi)) lin_offer(B, M, hi, d, &loc);
+            if (isfinite(lo)) lin_offer(B, M, lo, d, loc);
+            if (isfinite(hi)) lin_offer(B, M, hi, d, loc);
         }
         /* The outer pieces. When both exist and the ends lo, hi were offered above, one
          * line-circle run over the whole range gives their minima at half the cost: its local
@@ -89,7 +95,7 @@ CD_FMA_CLONES static cdist_status linear_disk(cdist_query *q, cdist_method metho
                 if (!(k->param[0] <= lo || k->param[0] >= hi)) continue;
                 if (first && k->equidistant && k->d2 < eq_d2) eq_d2 = k->d2;
                 first = 0;
-                cd_best_offer_flag(&loc, k->equidistant, k->d2, k->p[0], k->p[1], k->param[0], k->param[1]);
+                cd_best_offer_flag(loc, k->equidistant, k->d2, k->p[0], k->p[1], k->param[0], k->param[1]);
             }
         }
         if (!both && tmin < lo) {
@@ -97,7 +103,7 @@ CD_FMA_CLONES static cdist_status linear_disk(cdist_query *q, cdist_method metho
             cd_best_init(&t, b->scale);
             if ((st = cd_linear_circle_ex(q, method, B, M, tmin, lo, d, &t, &u1))) return st;
             if (u1 == CDIST_METHOD_ROBUST) *used = u1;
-            double m2 = cd_best_merge(&loc, &t, v3(0, 0, 0), 0);
+            double m2 = cd_best_merge(loc, &t, v3(0, 0, 0), 0);
             if (cd_best_is_equidistant(&t) && m2 < eq_d2) eq_d2 = m2;
         }
         if (!both && hi < tmax) {
@@ -105,21 +111,23 @@ CD_FMA_CLONES static cdist_status linear_disk(cdist_query *q, cdist_method metho
             cd_best_init(&t, b->scale);
             if ((st = cd_linear_circle_ex(q, method, B, M, hi, tmax, d, &t, &u1))) return st;
             if (u1 == CDIST_METHOD_ROBUST) *used = u1;
-            double m2 = cd_best_merge(&loc, &t, v3(0, 0, 0), 0);
+            double m2 = cd_best_merge(loc, &t, v3(0, 0, 0), 0);
             if (cd_best_is_equidistant(&t) && m2 < eq_d2) eq_d2 = m2;
         }
     } else {
         /* loc is empty here: the core offers into it directly */
-        if ((st = cd_linear_circle_ex(q, method, B, M, tmin, tmax, d, &loc, &u1))) return st;
+        if ((st = cd_linear_circle_ex(q, method, B, M, tmin, tmax, d, loc, &u1))) return st;
         if (u1 == CDIST_METHOD_ROBUST) *used = u1;
-        if (cd_best_is_equidistant(&loc)) eq_d2 = loc.c[0].d2;
+        if (cd_best_is_equidistant(loc)) eq_d2 = loc->c[0].d2;
     }
-    if (isfinite(tmin)) lin_offer(B, M, tmin, d, &loc);
-    if (isfinite(tmax)) lin_offer(B, M, tmax, d, &loc);
-    cd_best_settle_equidistant(&loc, eq_d2);
-    cd_best_convex_contact(&loc);
-    double d2 = cd_best_merge(b, &loc, v3(0, 0, 0), 0);
-    if (cd_best_is_equidistant(&loc)) cd_best_settle_equidistant(b, d2);
+    if (isfinite(tmin)) lin_offer(B, M, tmin, d, loc);
+    if (isfinite(tmax)) lin_offer(B, M, tmax, d, loc);
+    cd_best_settle_equidistant(loc, eq_d2);
+    cd_best_convex_contact(loc);
+    if (!direct) {
+        double d2 = cd_best_merge(b, loc, v3(0, 0, 0), 0);
+        if (cd_best_is_equidistant(loc)) cd_best_settle_equidistant(b, d2);
+    }
     return CDIST_OK;
 }
 
