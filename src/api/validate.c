@@ -56,17 +56,6 @@ CD_INLINE vec3 scaled_direction(vec3 d, double m, double *down)
 CD_FMA_CLONES cdist_status cd_check_direction(cdist_query *q, const cdist_vec3 *d, const char *what, int unit_required, vec3 *unit,
                                 double *length)
 {
-    /* Fast path: |d|^2 in [2^-1000, 2^990] means every component is finite and below 2^495
-     * (< CD_MAX_ABS) and the square neither overflows nor loses the length to underflow. */
-    double n2 = d ? v_sqr(*d) : NAN;
-    if (n2 >= 0x1p-1000 && n2 <= 0x1p990) {
-        double len = sqrt(n2);
-        if (!unit_required || !q || fabs(len - 1.0) <= q->unit_tol) {
-            if (unit) *unit = v3(d->x / len, d->y / len, d->z / len);
-            if (length) *length = len;
-            return CDIST_OK;
-        }
-    }
     cdist_status st = cd_check_point(q, d, what);
     if (st) return st;
     double m = v_maxabs(*d);
@@ -95,14 +84,14 @@ CD_INLINE int circle_fast(const cdist_query *q, const cdist_circle *c, cd_circle
     if (!(fabs(p.x) <= CD_MAX_ABS && fabs(p.y) <= CD_MAX_ABS && fabs(p.z) <= CD_MAX_ABS && r >= 0.0 &&
           r <= CD_MAX_ABS))
         return 0;
-    /* |d|^2 in [2^-1000, 2^1000]: every component finite and the square free of overflow and
-     * of harmful underflow (a component too small to square is below eps of the largest), so
-     * one square root and one division give the unit normal (within 1 ulp of any other way). */
-    double n2 = v_sqr(d);
-    if (!(n2 >= 0x1p-1000 && n2 <= 0x1p1000)) return 0; /* also NaN or infinite components */
-    double len = sqrt(n2);
+    double m = v_maxabs(d);
+    if (!(m >= 0x1p-500 && m <= CD_MAX_ABS)) return 0; /* also NaN or infinite components */
+    /* The arithmetic of cd_check_direction before its scaling fix, bit for bit: the batch
+     * point kernel (src/batch/point_kernel.c) repeats it and must agree with single calls. */
+    vec3 sd = v_scale(1.0 / m, d);
+    double ns = v_norm(sd), len = m * ns;
     if (!(fabs(len - 1.0) <= q->unit_tol)) return 0;
-    out->n = v3(d.x / len, d.y / len, d.z / len);
+    out->n = v_scale(1.0 / ns, sd);
     out->c = p;
     out->r = r;
     return 1;
