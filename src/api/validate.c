@@ -86,7 +86,9 @@ CD_INLINE int circle_fast(const cdist_query *q, const cdist_circle *c, cd_circle
         return 0;
     double m = v_maxabs(d);
     if (!(m >= 0x1p-500 && m <= CD_MAX_ABS)) return 0; /* also NaN or infinite components */
-    vec3 sd = v_scale(1.0 / m, d); /* the arithmetic of cd_check_direction before its scaling fix */
+    /* The arithmetic of cd_check_direction before its scaling fix, bit for bit: the batch
+     * point kernel (src/batch/point_kernel.c) repeats it and must agree with single calls. */
+    vec3 sd = v_scale(1.0 / m, d);
     double ns = v_norm(sd), len = m * ns;
     if (!(fabs(len - 1.0) <= q->unit_tol)) return 0;
     out->n = v_scale(1.0 / ns, sd);

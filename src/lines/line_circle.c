@@ -74,6 +74,26 @@ CD_INLINE double fdf(const void *ctx, double s, double *df)
     return MADD(m->a, h, m->m0 * x2 * (num * w));
 }
 
+/* fdf times P = rho^3 (rho + r) > 0, for the bracketed solver, which uses only the sign of f and
+ * the ratio f / f': the same Newton steps to rounding, with one division per step (the step)
+ * instead of two (w and the step): f P = a h P + m0 x2 num rho^2, f' P = k P - r m0^2 x1^2 (rho + r).
+ * Where P could underflow or overflow (rho far from 1; never in a scaled problem's bracket
+ * except near the axis) it is fdf itself. Not for cd_root_polish, which compares |f| at two
+ * points. */
+CD_INLINE double fdf_scaled(const void *ctx, double s, double *df)
+{
+    const lc_model *m = ctx;
+    double h = MADD(m->a, s, m->h), x2 = MADD(m->m0, s, m->c2);
+    double rho2 = MADD(m->x1, m->x1, x2 * x2);
+    if (!(rho2 >= 0x1p-200 && rho2 <= 0x1p200)) return fdf(ctx, s, df);
+    double rho = sqrt(rho2), rr = rho + m->r;
+    double k = MADD(m->a, m->a, m->m0 * m->m0);
+    double num = MADD(x2, x2, (m->ax1 - m->r) * (m->ax1 + m->r));
+    double P = (rho2 * rho) * rr;
+    *df = MADD(k, P, -(m->r * m->m0 * m->m0) * (m->ax1 * m->ax1) * rr);
+    return MADD(m->a * h, P, m->m0 * x2 * (num * rho2));
+}
+
 /* Squared distance (scaled) at s. */
 CD_INLINE double f_at(const lc_model *m, double s)
 {
@@ -87,7 +107,7 @@ CD_INLINE double f_at(const lc_model *m, double s)
  * commutes with s -> -s when F' is odd, so mirrored brackets give mirrored roots. */
 CD_INLINE double solve(const lc_model *m, double lo, double hi)
 {
-    return cd_root_newton(fdf, m, lo, hi, +1, CD_ROOT_REL_ULPS * EPS, CD_ROOT_ABS, CD_ROOT_MAX_ITER);
+    return cd_root_newton(fdf_scaled, m, lo, hi, +1, CD_ROOT_REL_ULPS * EPS, CD_ROOT_ABS, CD_ROOT_MAX_ITER);
 }
 
 /* Newton on F' from a polynomial root, kept only while |F'| decreases. */
@@ -193,10 +213,10 @@ CD_INLINE void merge_basins(lc_ctx *x, const lc_model *m, double tol)
         double sa = (x->cand[i].param[0] - x->t0) * x->sigma - x->uO;
         double sb = (x->cand[i + 1].param[0] - x->t0) * x->sigma - x->uO;
         double fmaxv = 0.0;
-        for (int k = 1; k <= 3; k++) fmaxv = fmax(fmaxv, f_at(m, sa + 0.25 * k * (sb - sa)));
+        for (int k = 1; k <= 3; k++) fmaxv = cd_fmax(fmaxv, f_at(m, sa + 0.25 * k * (sb - sa)));
         double dmid = sqrt(fmaxv) * x->up;
         double d0 = sqrt(x->cand[i].d2), d1 = sqrt(x->cand[i + 1].d2);
-        if (dmid > fmax(d0, d1) + tol) {
+        if (dmid > cd_fmax(d0, d1) + tol) {
             i++;
             continue;
         }
@@ -228,7 +248,7 @@ CD_FMA_CLONES static void robust_roots(const lc_model *m, double smin, double sm
          * branch exists iff F'(sL) >= 0, on the right branch iff F'(sR) <= 0. */
         double cm = cbrt(m->m0 * m->ax1);
         double rhohat = cbrt(m->r) * cm * cm;
-        double x2hat = sqrt(fmax(0.0, (rhohat - m->ax1) * (rhohat + m->ax1)));
+        double x2hat = sqrt(cd_fmax(0.0, (rhohat - m->ax1) * (rhohat + m->ax1)));
         double sc = -m->c2 / m->m0;
         double sL = sc - x2hat / m->m0, sR = sc + x2hat / m->m0;
         double fL = fp_at(m, fma(m->a, sL, m->h), -x2hat, -1);
@@ -239,17 +259,17 @@ CD_FMA_CLONES static void robust_roots(const lc_model *m, double smin, double sm
         if (!left && !right) left = right = 1;
         if (left && lo <= sL) {
             br[nb][0] = lo;
-            br[nb][1] = fmin(sL, hi);
+            br[nb][1] = cd_fmin(sL, hi);
             nb++;
         }
         if (right && sR <= hi) {
-            br[nb][0] = fmax(sR, lo);
+            br[nb][0] = cd_fmax(sR, lo);
             br[nb][1] = hi;
             nb++;
         }
     }
     for (int i = 0; i < nb; i++) {
-        double a = fmax(br[i][0], smin), b = fmin(br[i][1], smax);
+        double a = cd_fmax(br[i][0], smin), b = cd_fmin(br[i][1], smax);
         if (a > b) continue;
         roots[(*nr)++] = solve(m, a, b);
     }
@@ -311,7 +331,7 @@ CD_FMA_CLONES static cdist_status linear_circle(cdist_query *q, cdist_method met
 
     if (c->r == 0.0) {
         /* The circle is its centre: nearest point of the range to the origin. */
-        double u = fmin(fmax(0.0, umin), umax);
+        double u = cd_fmin(cd_fmax(0.0, umin), umax);
         double t = (u == 0.0) ? t0 : t0 + u;
         if (tmin == tmax) t = tmin;
         vec3 P = (u == 0.0) ? B0 : v_axpy(B, t, M);
@@ -319,7 +339,7 @@ CD_FMA_CLONES static cdist_status linear_circle(cdist_query *q, cdist_method met
         goto done;
     }
 
-    double S = fmax(c->r, v_norm(B0));
+    double S = cd_fmax(c->r, v_norm(B0));
     int e = cd_scale_exponent(S);
     double sg = cd_pow2(-e);
     x.sigma = sg;
@@ -327,7 +347,7 @@ CD_FMA_CLONES static cdist_status linear_circle(cdist_query *q, cdist_method met
     vec3 B0s = v_scale(sg, B0);
     double rs = c->r * sg;
     x.rs = rs;
-    x.eqtol = CD_LC_AXIS_ULPS * EPS * fmax(1.0, sg * v_norm(B));
+    x.eqtol = CD_LC_AXIS_ULPS * EPS * cd_fmax(1.0, sg * v_norm(B));
     umin *= sg;
     umax *= sg;
 
@@ -347,7 +367,7 @@ CD_FMA_CLONES static cdist_status linear_circle(cdist_query *q, cdist_method met
         /* Perpendicular to the plane (§4.1 cases 1, 2): F = (h0 + a u)^2 + (rho - r)^2 with rho
          * constant to rounding, so the minimum is the plane crossing, clamped to the range. On
          * the axis every circle point is equally close (equidistant, also for rays/segments). */
-        double u = fmin(fmax(-h0 / a, umin), umax);
+        double u = cd_fmin(cd_fmax(-h0 / a, umin), umax);
         double X = fma(u, m2x, b2x), Y = fma(u, m2y, b2y);
         double rho = sqrt(X * X + Y * Y), h = fma(a, u, h0), dr = rho - rs;
         double t = x.t0 + u / sg;
@@ -421,8 +441,8 @@ cdist_status cd_linear_circle_ex(cdist_query *q, cdist_method method, vec3 B, ve
  * of the line, ray or segment), the quantity ../shared/cases/README.md measures errors against. */
 CD_INLINE double range_scale(vec3 B, vec3 M, double tmin, double tmax, double r)
 {
-    double t = fmin(fmax(-v_dot(B, M), tmin), tmax);
-    return fmax(r, v_norm(v_axpy(B, t, M)));
+    double t = cd_fmin(cd_fmax(-v_dot(B, M), tmin), tmax);
+    return cd_fmax(r, v_norm(v_axpy(B, t, M)));
 }
 
 /* Runs the core for the points origin + t D, t in [tmin, tmax] (D as the caller passed it, M its
@@ -441,11 +461,21 @@ CD_FMA_CLONES vec3 cd_line_near_centre(vec3 origin, vec3 D, vec3 C, double tmin,
     hi3.x = cd_two_diff(origin.x, C.x, &lo3.x);
     hi3.y = cd_two_diff(origin.y, C.y, &lo3.y);
     hi3.z = cd_two_diff(origin.z, C.z, &lo3.z);
-    double m = v_maxabs(D);
-    vec3 Ds = v_scale(1.0 / m, D); /* |D|^2 may underflow or overflow, |Ds|^2 cannot */
-    double t = -(v_dot(hi3, Ds) / v_sqr(Ds)) / m;
+    double m = v_maxabs(D), t;
+    if (m >= 0x1p-1021 && m < 0x1p1022) {
+        /* D scaled by the power of two 2^-e of m (exact; |Ds|^2 in [1, 12)): one division,
+         * and t is exactly 2^k times itself for a query scaled by 2^k */
+        union { double d; unsigned long long u; } b = {m};
+        int e = (int)((b.u >> 52) & 0x7ff) - 1023;
+        double p = cd_pow2(-e);
+        vec3 Ds = v_scale(p, D);
+        t = -(v_dot(hi3, Ds) / v_sqr(Ds)) * p;
+    } else {
+        vec3 Ds = v_scale(1.0 / m, D); /* |D|^2 may underflow or overflow, |Ds|^2 cannot */
+        t = -(v_dot(hi3, Ds) / v_sqr(Ds)) / m;
+    }
     if (!isfinite(t)) t = 0.0;
-    t = fmin(fmax(t, tmin), tmax); /* rays and segments: stay on the object (no cancellation in t) */
+    t = cd_fmin(cd_fmax(t, tmin), tmax); /* rays and segments: stay on the object (no cancellation in t) */
     *t0 = t;
     return v_add(v_axpy(hi3, t, D), lo3);
 }
@@ -469,7 +499,7 @@ CD_FMA_CLONES static cdist_status run(cdist_query *q, vec3 origin, vec3 D, vec3 
     cd_result_finish(r, r->num_pairs);
     for (int i = 0; i < r->num_pairs; i++) {
         double t = t0 + r->pairs[i].param[0] / len;
-        r->pairs[i].param[0] = fmin(fmax(t, tmin), tmax);
+        r->pairs[i].param[0] = cd_fmin(cd_fmax(t, tmin), tmax);
     }
     return CDIST_OK;
 }

@@ -15,13 +15,11 @@
  *   outside: G = F, the line-circle distance, by cd_linear_circle restricted to the piece.
  * The lemma at the top makes the split points themselves unnecessary as candidates, but they
  * are offered anyway (cheap, and they protect against a split computed a few ulps off). */
-static void lin_offer(vec3 B, vec3 M, double t, const cd_circle *d, cd_best *b)
+CD_INLINE void lin_offer(vec3 B, vec3 M, double t, const cd_circle *d, cd_best *b)
 {
     vec3 p = v_axpy(B, t, M);
-    cd_best tmp;
-    cd_best_init(&tmp, b->scale);
-    cd_point_disk_core(p, d, &tmp, 0);
-    for (int i = 0; i < tmp.n; i++) cd_best_offer(b, tmp.c[i].d2, tmp.c[i].p[0], tmp.c[i].p[1], t, tmp.c[i].param[1]);
+    cd_point_pair k = cd_point_disk_pair(p, d); /* offered without its on-axis flag */
+    cd_best_offer(b, k.d2, p, k.k, t, k.angle);
 }
 
 CD_FMA_CLONES static cdist_status linear_disk(cdist_query *q, cdist_method method, vec3 B, vec3 M, double tmin, double tmax,
@@ -35,8 +33,14 @@ CD_FMA_CLONES static cdist_status linear_disk(cdist_query *q, cdist_method metho
     vec3 Mp = v_cross(v_cross(d->n, M), d->n), Bp = v_cross(v_cross(d->n, B), d->n);
     double mp2 = v_sqr(Mp);
     double eq_d2 = INFINITY;
-    cd_best loc;
-    cd_best_init(&loc, b->scale);
+    /* Candidates are collected in loc, then merged into b; into b itself when b is still
+     * empty (the usual case), which is the same result without the copy. */
+    cd_best loc_store, *loc = b;
+    int direct = b->n == 0 && !b->equidistant;
+    if (!direct) {
+        loc = &loc_store;
+        cd_best_init(loc, b->scale);
+    }
     double t1 = INFINITY, t2 = -INFINITY; /* the projection is over the disk for t in [t1, t2] */
     if (mp2 > 0.0) {
         double mpn = sqrt(mp2);
@@ -52,58 +56,78 @@ CD_FMA_CLONES static cdist_status linear_disk(cdist_query *q, cdist_method metho
         t1 = -INFINITY;
         t2 = INFINITY;
     }
-    double lo = fmax(tmin, t1), hi = fmin(tmax, t2);
+    double lo = cd_fmax(tmin, t1), hi = cd_fmin(tmax, t2);
     cdist_status st;
     if (lo <= hi) {
         /* The piece over the disk. */
         if (fabs(mn) <= CD_LD_PARALLEL_ULPS * DBL_EPSILON) {
             /* Parallel to the plane (within rounding): |h| constant over a stretch. */
-            double tt = isfinite(lo) ? lo : isfinite(hi) ? hi : fmin(fmax(0.0, lo), hi);
+            double tt = isfinite(lo) ? lo : isfinite(hi) ? hi : cd_fmin(cd_fmax(0.0, lo), hi);
             if (isfinite(lo) && isfinite(hi)) tt = 0.5 * (lo + hi);
-            lin_offer(B, M, tt, d, &loc);
-            if (hi > lo && R > 0.0) eq_d2 = loc.n ? loc.c[0].d2 : INFINITY;
+            lin_offer(B, M, tt, d, loc);
+            if (hi > lo && R > 0.0) eq_d2 = loc->n ? loc->c[0].d2 : INFINITY;
         } else {
             double tz = -hB / mn;
             if (tz >= lo && tz <= hi) {
                 /* Crossing point: polish once on h, clamp into the piece. */
                 double hz = v_dot(d->n, v_axpy(B, tz, M));
-                tz = fmin(fmax(tz - hz / mn, lo), hi);
-                lin_offer(B, M, tz, d, &loc);
+                tz = cd_fmin(cd_fmax(tz - hz / mn, lo), hi);
+                lin_offer(B, M, tz, d, loc);
             }
-            if (isfinite(lo)) lin_offer(B, M, lo, d, &loc);
-            if (isfinite(hi)) lin_offer(B, M, hi, d, &loc);
+            if (isfinite(lo)) lin_offer(B, M, lo, d, loc);
+            if (isfinite(hi)) lin_offer(B, M, hi, d, loc);
         }
-        /* The outer pieces. */
-        if (tmin < lo) {
+        /* The outer pieces. When both exist and the ends lo, hi were offered above, one
+         * line-circle run over the whole range gives their minima at half the cost: its local
+         * minima outside (lo, hi) are those of the pieces, and a piece minimum clamped to lo or
+         * hi is the end already offered. */
+        int both = tmin < lo && hi < tmax && !(fabs(mn) <= CD_LD_PARALLEL_ULPS * DBL_EPSILON);
+        if (both) {
+            cd_best all;
+            cd_best_init(&all, b->scale);
+            if ((st = cd_linear_circle_ex(q, method, B, M, tmin, tmax, d, &all, &u1))) return st;
+            if (u1 == CDIST_METHOD_ROBUST) *used = u1;
+            /* straight into loc: `all` is sorted by d2, so the first kept candidate is the
+             * pieces' best (what merging a collector of them would report) */
+            int first = 1;
+            for (int i = 0; i < all.n; i++) {
+                const cd_cand *k = &all.c[i];
+                if (!(k->param[0] <= lo || k->param[0] >= hi)) continue;
+                if (first && k->equidistant && k->d2 < eq_d2) eq_d2 = k->d2;
+                first = 0;
+                cd_best_offer_flag(loc, k->equidistant, k->d2, k->p[0], k->p[1], k->param[0], k->param[1]);
+            }
+        }
+        if (!both && tmin < lo) {
             cd_best t;
             cd_best_init(&t, b->scale);
             if ((st = cd_linear_circle_ex(q, method, B, M, tmin, lo, d, &t, &u1))) return st;
             if (u1 == CDIST_METHOD_ROBUST) *used = u1;
-            double m2 = cd_best_merge(&loc, &t, v3(0, 0, 0), 0);
+            double m2 = cd_best_merge(loc, &t, v3(0, 0, 0), 0);
             if (cd_best_is_equidistant(&t) && m2 < eq_d2) eq_d2 = m2;
         }
-        if (hi < tmax) {
+        if (!both && hi < tmax) {
             cd_best t;
             cd_best_init(&t, b->scale);
             if ((st = cd_linear_circle_ex(q, method, B, M, hi, tmax, d, &t, &u1))) return st;
             if (u1 == CDIST_METHOD_ROBUST) *used = u1;
-            double m2 = cd_best_merge(&loc, &t, v3(0, 0, 0), 0);
+            double m2 = cd_best_merge(loc, &t, v3(0, 0, 0), 0);
             if (cd_best_is_equidistant(&t) && m2 < eq_d2) eq_d2 = m2;
         }
     } else {
-        cd_best t;
-        cd_best_init(&t, b->scale);
-        if ((st = cd_linear_circle_ex(q, method, B, M, tmin, tmax, d, &t, &u1))) return st;
+        /* loc is empty here: the core offers into it directly */
+        if ((st = cd_linear_circle_ex(q, method, B, M, tmin, tmax, d, loc, &u1))) return st;
         if (u1 == CDIST_METHOD_ROBUST) *used = u1;
-        double m2 = cd_best_merge(&loc, &t, v3(0, 0, 0), 0);
-        if (cd_best_is_equidistant(&t)) eq_d2 = m2;
+        if (cd_best_is_equidistant(loc)) eq_d2 = loc->c[0].d2;
     }
-    if (isfinite(tmin)) lin_offer(B, M, tmin, d, &loc);
-    if (isfinite(tmax)) lin_offer(B, M, tmax, d, &loc);
-    cd_best_settle_equidistant(&loc, eq_d2);
-    cd_best_convex_contact(&loc);
-    double d2 = cd_best_merge(b, &loc, v3(0, 0, 0), 0);
-    if (cd_best_is_equidistant(&loc)) cd_best_settle_equidistant(b, d2);
+    if (isfinite(tmin)) lin_offer(B, M, tmin, d, loc);
+    if (isfinite(tmax)) lin_offer(B, M, tmax, d, loc);
+    cd_best_settle_equidistant(loc, eq_d2);
+    cd_best_convex_contact(loc);
+    if (!direct) {
+        double d2 = cd_best_merge(b, loc, v3(0, 0, 0), 0);
+        if (cd_best_is_equidistant(loc)) cd_best_settle_equidistant(b, d2);
+    }
     return CDIST_OK;
 }
 
@@ -124,14 +148,14 @@ CD_FMA_CLONES static vec3 segment_near_centre(vec3 p0, vec3 p1, vec3 C, double *
         a[i] = cd_two_diff(P0[i], CC[i], &al[i]);
         dd[i] = cd_two_diff(P1[i], P0[i], &dl[i]);
     }
-    double m = fmax(fabs(dd[0]), fmax(fabs(dd[1]), fabs(dd[2])));
+    double m = cd_fmax(fabs(dd[0]), cd_fmax(fabs(dd[1]), fabs(dd[2])));
     double num = 0.0, den = 0.0;
     for (int i = 0; i < 3; i++) {
         num += (a[i] / m) * (dd[i] / m);
         den += (dd[i] / m) * (dd[i] / m);
     }
     double t = (den > 0.0) ? -num / den : 0.0;
-    t = fmin(fmax(t, 0.0), 1.0);
+    t = cd_fmin(cd_fmax(t, 0.0), 1.0);
     *s0 = t;
     double B[3];
     for (int i = 0; i < 3; i++) B[i] = fma(t, dd[i], a[i]) + fma(t, dl[i], al[i]);
@@ -155,13 +179,13 @@ CD_FMA_CLONES static cdist_status linear_disk_query(cdist_query *q, vec3 origin,
     double t0;
     vec3 B = p1 ? segment_near_centre(origin, *p1, offset, &t0) : cd_line_near_centre(origin, D, offset, tmin, tmax, &t0);
     double lo = (tmin == t0) ? 0.0 : (tmin - t0) * len, hi = (tmax == t0) ? 0.0 : (tmax - t0) * len;
-    double L = fmax(d.r, v_norm(B));
+    double L = cd_fmax(d.r, v_norm(B));
     cd_best best;
     cd_best_init(&best, L);
     cdist_status st = linear_disk(q, cd_family_method(q, CD_FAM_LINE_DISK), B, M, lo, hi, &d, &best, used);
     if (st) return st;
     if (best.n == 0) return cd_fail(q, CDIST_ERR_INTERNAL, "line-disk found no candidate");
-    for (int i = 0; i < best.n; i++) best.c[i].param[0] = fmin(fmax(t0 + best.c[i].param[0] / len, tmin), tmax);
+    for (int i = 0; i < best.n; i++) best.c[i].param[0] = cd_fmin(cd_fmax(t0 + best.c[i].param[0] / len, tmin), tmax);
     cd_best_to_result(&best, offset, 0, r);
     cd_result_finish(r, r->num_pairs);
     return CDIST_OK;

@@ -27,12 +27,18 @@ vec3 cd_line_near_centre(vec3 origin, vec3 D, vec3 C, double tmin, double tmax, 
 cdist_status cd_linear_disk_ex(cdist_query *q, cdist_method method, vec3 B, vec3 M, double tmin, double tmax,
                                const cd_circle *d, cd_best *b, cdist_method *used);
 
+/* fmax and fmin without a libm call (gcc calls libm for them, since maxsd/minsd treat NaN
+ * differently): the same results, NaN operands included (the order of +0 and -0 aside).
+ * The point and lines hot paths used a dozen libm calls per query. */
+CD_INLINE double cd_fmax(double a, double b) { return a > b ? a : (b == b ? b : a); }
+CD_INLINE double cd_fmin(double a, double b) { return a < b ? a : (b == b ? b : a); }
+
 /* Scale exponent of a linear query (origin, optional segment end p1, circle c): from
  * max(r, |origin - C|, |p1 - C|), see cd_scale_exponent. */
 static inline int cd_lines_scale_exponent(vec3 origin, const vec3 *p1, const cd_circle *c)
 {
-    double L = fmax(c->r, v_maxabs(v_sub(origin, c->c)));
-    if (p1) L = fmax(L, v_maxabs(v_sub(*p1, c->c)));
+    double L = cd_fmax(c->r, v_maxabs(v_sub(origin, c->c)));
+    if (p1) L = cd_fmax(L, v_maxabs(v_sub(*p1, c->c)));
     return cd_scale_exponent(L);
 }
 

@@ -113,7 +113,7 @@ void cd_point_disk_core(vec3 p, const cd_circle *c, cd_best *b, int swap)
 CD_FMA_CLONES void cd_point_result(vec3 p, const cd_circle *c, int disk, cdist_result *r)
 {
     vec3 rel = v_sub(p, c->c);
-    int e = cd_scale_exponent(fmax(c->r, v_maxabs(rel)));
+    int e = cd_scale_exponent(cd_fmax(c->r, v_maxabs(rel)));
     double down = cd_pow2(-e), up = cd_pow2(e);
     vec3 ps = v_scale(down, rel);
     cd_circle sc = *c;
