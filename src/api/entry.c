@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The one entry path of the public queries (declarations and the protocol in api-priv.h). */
 #include <math.h>
 #include <string.h>

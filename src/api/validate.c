@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Input validation: every public query checks its inputs here before any family core runs. */
 #include <math.h>
 #include <stdio.h>

@@ -71,6 +71,12 @@ static inline double cd_wrap_angle(double t)
     return (a <= -M_PI) ? a + CD_TWO_PI : a;
 }
 
+/* fmax and fmin without a libm call (gcc calls libm for them, since maxsd/minsd treat NaN
+ * differently): the same results, NaN operands included (the order of +0 and -0 aside).
+ * The point and lines hot paths used a dozen libm calls per query. */
+CD_INLINE double cd_fmax(double a, double b) { return a > b ? a : (b == b ? b : a); }
+CD_INLINE double cd_fmin(double a, double b) { return a < b ? a : (b == b ? b : a); }
+
 /* atan(y / x) for 0 <= y <= x, x > 0: fdlibm's s_atan.c (Sun Microsystems, 1993; "permission
  * to use, copy, modify, and distribute this software is freely granted, provided that this
  * notice is preserved") restricted to that range: reduction to |t| < 7/16 and an odd

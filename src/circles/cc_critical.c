@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The critical-angle service of circle-circle (used by circle-disk and the arcs): every
  * critical angle of theta -> dist^2(c0(theta), c1), from the engine of cc_engine.c. */
 #include <math.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Circle to circle: public entry points, method dispatch, the robust method and the critical
  * angles used by the arc families.
  *

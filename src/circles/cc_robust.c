@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Circle to circle, the robust method (the AUTO answer): the engine of cc_engine.c on the
  * larger circle, parallel planes in closed form. */
 #include <math.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Circle to disk (point-curve-circle-to-disk §2-§4; derivations in docs/disk.md). Disk to disk
  * (disk_disk.c) runs this twice, rim of each against the other disk.
  *

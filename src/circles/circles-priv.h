@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Private declarations of the circles family (src/circles): the trigonometric root-isolation
  * engine of circle-circle (cc_engine.c, described there) shared by the robust method
  * (cc_robust.c), the critical-angle service (cc_critical.c) and the dispatcher

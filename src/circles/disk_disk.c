@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Disk to disk: the rim of each disk against the other disk (circle_disk.c); by the lemma of
  * circle_disk.c the closest pair has a rim point on at least one side, or the faces are
  * parallel and over each other (flagged equidistant). */

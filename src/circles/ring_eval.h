@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The ONE evaluator of the circles family: a point P(t) moving on a circle A, seen from a circle
  * B (radius s, unit normal m, centre C): its squared distance F(t) to B and the derivatives.
  *     w(t) = m x (P(t) - C) = al cos t + be sin t + ga     (offset from B's axis, |w| = rho)

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Lines, rays and segments to disks (point-curve-circle-to-disk §2-§4, line-circle-disk §2;
  * derivations in docs/disk.md). The lemma the split rests on (the distance to a disk is |h|
  * over the disk and the rim-circle distance elsewhere) is stated at the top of src/disk.c. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Lines family cores (src/lines): lines, rays and segments to circles and disks. */
 #ifndef CDIST_LINES_PRIV_H
 #define CDIST_LINES_PRIV_H
@@ -26,12 +27,6 @@ vec3 cd_line_near_centre(vec3 origin, vec3 D, vec3 C, double tmin, double tmax, 
 /* Line-disk core: cd_linear_circle_ex semantics against a disk (src/lines/line_disk.c). */
 cdist_status cd_linear_disk_ex(cdist_query *q, cdist_method method, vec3 B, vec3 M, double tmin, double tmax,
                                const cd_circle *d, cd_best *b, cdist_method *used);
-
-/* fmax and fmin without a libm call (gcc calls libm for them, since maxsd/minsd treat NaN
- * differently): the same results, NaN operands included (the order of +0 and -0 aside).
- * The point and lines hot paths used a dozen libm calls per query. */
-CD_INLINE double cd_fmax(double a, double b) { return a > b ? a : (b == b ? b : a); }
-CD_INLINE double cd_fmin(double a, double b) { return a < b ? a : (b == b ? b : a); }
 
 /* Scale exponent of a linear query (origin, optional segment end p1, circle c): from
  * max(r, |origin - C|, |p1 - C|), see cd_scale_exponent. */

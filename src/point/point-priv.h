@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Point family cores (src/point/point.c). */
 #ifndef CDIST_POINT_PRIV_H
 #define CDIST_POINT_PRIV_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Point-circle and point-disk (Eberly, distance-to-circles-3d §2; point-curve-circle-to-disk §2).
  * Work relative to the centre; the distance to the axis is |N x D| (accurate near the axis, where
  * sqrt(|D|^2 - h^2) would cancel). */
