@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: MIT */
-/* The polynomial module (src/poly.c, compiled into this test): real roots, guards, and the
+/* The polynomial module (src/base/poly.c, from the internal library): real roots, guards, and the
  * GSL error handler is never reached nor changed. The test is the host here, so it installs a
  * counting handler of its own: any call to it is a failure. */
 #include <gsl/gsl_errno.h>

@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 /* Distance kernels of point-circle and point-disk for cdist_batch_distance: the closed forms of
- * src/point.c with the validation of cd_check_point/cd_check_circle, operation by operation
+ * src/point/point.c with the validation of cd_check_point/cd_check_circle, operation by operation
  * (same roundings, fma where the scalar code calls fma), so every distance is bit-identical to
  * the single query's. AVX-512 (8 lanes) and AVX2 (4 lanes) versions are chosen at run time;
  * the scalar version serves the tails and other machines. Entries failing any check are left

@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* Lines, rays and segments to disks (point-curve-circle-to-disk §2-§4, line-circle-disk §2;
  * derivations in docs/disk.md). The lemma the split rests on (the distance to a disk is |h|
- * over the disk and the rim-circle distance elsewhere) is stated at the top of src/disk.c. */
+ * over the disk and the rim-circle distance elsewhere) is stated at the top of src/circles/circle_disk.c and in docs/disk.md. */
 #include <math.h>
 
 #include "internal.h"
