@@ -23,65 +23,65 @@
 /* ---- cores (inputs already translated so that the relevant centre is the origin) ---- */
 
 /* Circle c0 to circle c1 (c0->c at the origin, c1 relative to it). iterations may be NULL. */
-cdist_status cd_circle_circle_core(cdist_query *q, cdist_method method, const cd_circle *c0, const cd_circle *c1,
-                                   cd_best *b, int *iterations);
+cdist_status cdist__circle_circle_core(cdist_query *q, cdist_method method, const cdist__circle *c0, const cdist__circle *c1,
+                                   cdist__best *b, int *iterations);
 /* The non-robust circle-circle methods (src/circles/cc_poly.c, src/circles/cc_iteration.c), called by the
  * dispatcher in src/circles/circle_circle.c with c0->c at the origin. Each handles every configuration
  * (setting b->equidistant where infinitely many pairs are closest) and offers its candidates to
  * b, or returns a non-OK status to make the dispatcher fall back to the robust method. */
-cdist_status cd_cc_polynomial(cdist_query *q, const cd_circle *c0, const cd_circle *c1, cd_best *b);
-cdist_status cd_cc_iteration(cdist_query *q, const cd_circle *c0, const cd_circle *c1, cd_best *b, int *iterations);
+cdist_status cdist__cc_polynomial(cdist_query *q, const cdist__circle *c0, const cdist__circle *c1, cdist__best *b);
+cdist_status cdist__cc_iteration(cdist_query *q, const cdist__circle *c0, const cdist__circle *c1, cdist__best *b, int *iterations);
 
 /* Every critical angle on c0 (in c0's basis) of theta -> dist^2(c0(theta), c1); returns the
  * count (at most cap), or -1 when the function is constant (every angle critical). */
-int cd_circle_circle_critical(cdist_query *q, const cd_circle *c0, const cd_circle *c1, double *theta0, int cap);
+int cdist__circle_circle_critical(cdist_query *q, const cdist__circle *c0, const cdist__circle *c1, double *theta0, int cap);
 
 /* The circles family's one scaling rule (src/base/numeric.h): a at the origin, b relative to it;
  * both scaled by the power of two 2^-e that brings L = max(radii, |b centre|) into [1, 2).
- * Returns e. cd_circles_unscale_result undoes it on a result written with a zero offset and
+ * Returns e. cdist__circles_unscale_result undoes it on a result written with a zero offset and
  * then adds `offset` (the translation removed): exact, so tiny and huge inputs (1e-300, 1e150)
  * get the answer of their unit-scale copy. */
-int cd_circles_scale(cd_circle *a, cd_circle *b);
-void cd_circles_unscale_result(cdist_result *r, int e, vec3 offset);
+int cdist__circles_scale(cdist__circle *a, cdist__circle *b);
+void cdist__circles_unscale_result(cdist_result *r, int e, vec3 offset);
 
 /* Circle c to disk d (c->c at the origin, d relative to it). */
-cdist_status cd_circle_disk_core(cdist_query *q, cdist_method method, const cd_circle *c, const cd_circle *d,
-                                 cd_best *b);
+cdist_status cdist__circle_disk_core(cdist_query *q, cdist_method method, const cdist__circle *c, const cdist__circle *d,
+                                 cdist__best *b);
 
-/* ---- cc_methods block: helpers shared by cd_cc_polynomial and cd_cc_iteration (defined in
+/* ---- cc_methods block: helpers shared by cdist__cc_polynomial and cdist__cc_iteration (defined in
  * src/circles/cc_poly.c). c0 is at the origin, c1 at D. "side" s moves a point on circle s and measures
  * its closed-form distance to the other circle: F_s(t) = dist^2(c_s(t), c_{1-s}). ---- */
-typedef struct cd_cc {
-    const cd_circle *c[2];
+typedef struct cdist__cc {
+    const cdist__circle *c[2];
     vec3 D;   /* c1 centre relative to c0 centre */
     double L; /* problem scale */
-} cd_cc;
+} cdist__cc;
 /* F_s(t) with F' and F'' (either may be NULL); P, K (may be NULL): the moving point relative to
  * its own centre and the closest point of the other circle relative to that circle's centre. */
-double cd_cc_eval(const cd_cc *g, int side, double t, double *f1, double *f2, vec3 *P, vec3 *K);
+double cdist__cc_eval(const cdist__cc *g, int side, double t, double *f1, double *f2, vec3 *P, vec3 *K);
 /* Safeguarded Newton on F_s' from t; returns the polished angle and writes F there. */
-double cd_cc_polish(const cd_cc *g, int side, double t, double *F);
+double cdist__cc_polish(const cdist__cc *g, int side, double t, double *F);
 /* Offer the pair at angle t of side s (evaluated on the true distance). */
-void cd_cc_offer(const cd_cc *g, int side, double t, cd_best *b);
+void cdist__cc_offer(const cdist__cc *g, int side, double t, cdist__best *b);
 /* Zero radius and coaxial circles, answered in closed form: returns 1 when b is complete. */
-int cd_cc_closed_form(const cd_cc *g, cd_best *b);
+int cdist__cc_closed_form(const cdist__cc *g, cdist__best *b);
 /* Candidate angles on c0 for (nearly) parallel planes (Eberly 5.1-5.2, Li et al. 2.3);
  * returns the count (<= 4). */
-int cd_cc_parallel_candidates(const cd_cc *g, double *t0);
+int cdist__cc_parallel_candidates(const cdist__cc *g, double *t0);
 /* When the axes meet (within a loose tolerance), the unit normal m of the mirror plane through
  * both axes; returns 0 otherwise. */
-int cd_cc_mirror(const cd_cc *g, vec3 *m);
+int cdist__cc_mirror(const cdist__cc *g, vec3 *m);
 /* Offer polished minima (side, angle, F): the best, and the others unless they tie with it
  * without a barrier between them on c0 (one flat basin, not two symmetric minima). When F_s''
  * vanishes at the minimum, circle s may be at constant distance from the other (e.g. equal
  * perpendicular circles through each other's centre): tested by sampling, flagged equidistant. */
-void cd_cc_offer_minima(const cd_cc *g, int n, const int *side, const double *t, const double *F, cd_best *b);
+void cdist__cc_offer_minima(const cdist__cc *g, int n, const int *side, const double *t, const double *F, cdist__best *b);
 /* Both methods work on a copy scaled by a power of two (exact) so that the problem scale is
  * in [1, 2): squares neither overflow (coordinates up to 1e150) nor underflow (1e-300).
- * cd_cc_scale writes the scaled circles (c0 at the origin) and s; cd_cc_unscale offers the
+ * cdist__cc_scale writes the scaled circles (c0 at the origin) and s; cdist__cc_unscale offers the
  * scaled collector's candidates to b in the caller's units. */
-void cd_cc_scale(const cd_circle *c0, const cd_circle *c1, double L, cd_circle *a, cd_circle *b, double *s);
-void cd_cc_unscale(const cd_best *scaled, double s, cd_best *b);
+void cdist__cc_scale(const cdist__circle *c0, const cdist__circle *c1, double L, cdist__circle *a, cdist__circle *b, double *s);
+void cdist__cc_unscale(const cdist__best *scaled, double s, cdist__best *b);
 /* ---- end of cc_methods block ---- */
 
 #endif

@@ -216,17 +216,17 @@ static void check_final_guard(void)
 {
     cdist_query *q = cdist_query_new();
     cdist_result r;
-    CHECK(cd_enter(q, &r) == CDIST_OK, "enter");
+    CHECK(cdist__enter(q, &r) == CDIST_OK, "enter");
     r.distance = NAN; /* a core that went wrong */
     r.num_pairs = 1;
-    cdist_status st = cd_leave(q, &r, CDIST_OK, CDIST_METHOD_AUTO);
+    cdist_status st = cdist__leave(q, &r, CDIST_OK, CDIST_METHOD_AUTO);
     CHECK(st == CDIST_ERR_INTERNAL && r.num_pairs == 0 && cdist_query_last_status(q) == CDIST_ERR_INTERNAL &&
               strlen(cdist_query_last_error(q)) > 0,
           "non-finite distance let through: status %d", (int)st);
     CHECK(atomic_load(&q->busy) == 0, "flag released after a failure");
-    CHECK(cd_enter(q, &r) == CDIST_OK, "enter");
+    CHECK(cdist__enter(q, &r) == CDIST_OK, "enter");
     r.distance = INFINITY;
-    CHECK(cd_leave(q, &r, CDIST_OK, CDIST_METHOD_AUTO) == CDIST_ERR_INTERNAL, "infinite distance let through");
+    CHECK(cdist__leave(q, &r, CDIST_OK, CDIST_METHOD_AUTO) == CDIST_ERR_INTERNAL, "infinite distance let through");
     cdist_query_free(q);
 }
 

@@ -30,11 +30,11 @@ static double rel_residual(const double *a, int n, double x)
 int main(void)
 {
     gsl_set_error_handler(counting_handler);
-    cd_poly_ws *ws = cd_poly_ws_new();
+    cdist__poly_ws *ws = cdist__poly_ws_new();
     double roots[8];
     /* (x-1)(x-2)(x-3)(x+4) = x^4 - 2x^3 - 13x^2 + 38x - 24 */
     double q4[5] = {-24, 38, -13, -2, 1};
-    int n = cd_poly_real_roots(ws, q4, 4, 1e-8, roots);
+    int n = cdist__poly_real_roots(ws, q4, 4, 1e-8, roots);
     CHECK(n == 4, "quartic roots %d", n);
     if (n == 4) {
         CHECK_NEAR(roots[0], -4, 1e-14, "root -4");
@@ -44,23 +44,23 @@ int main(void)
     }
     /* Vanishing leading coefficients are dropped; zero constant terms give root 0. */
     double lead0[5] = {0, -2, 1, 0, 0}; /* x^2 - 2x */
-    n = cd_poly_real_roots(ws, lead0, 4, 1e-8, roots);
+    n = cdist__poly_real_roots(ws, lead0, 4, 1e-8, roots);
     CHECK(n == 2 && roots[0] == 0.0 && fabs(roots[1] - 2) < 1e-15, "dropped leading zeros: %d", n);
     double zero[3] = {0, 0, 0};
-    CHECK(cd_poly_real_roots(ws, zero, 2, 1e-8, roots) == CD_POLY_ZERO, "zero polynomial");
+    CHECK(cdist__poly_real_roots(ws, zero, 2, 1e-8, roots) == CD_POLY_ZERO, "zero polynomial");
     double bad[3] = {1, NAN, 1};
-    CHECK(cd_poly_real_roots(ws, bad, 2, 1e-8, roots) == CD_POLY_FAIL, "NaN coefficient");
+    CHECK(cdist__poly_real_roots(ws, bad, 2, 1e-8, roots) == CD_POLY_FAIL, "NaN coefficient");
     double inf[3] = {1, 0, INFINITY};
-    CHECK(cd_poly_real_roots(ws, inf, 2, 1e-8, roots) == CD_POLY_FAIL, "Inf coefficient");
-    CHECK(cd_poly_real_roots(ws, q4, 9, 1e-8, roots) == CD_POLY_FAIL, "degree too high");
-    CHECK(cd_poly_real_roots(NULL, q4, 4, 1e-8, roots) == CD_POLY_FAIL, "no workspace");
+    CHECK(cdist__poly_real_roots(ws, inf, 2, 1e-8, roots) == CD_POLY_FAIL, "Inf coefficient");
+    CHECK(cdist__poly_real_roots(ws, q4, 9, 1e-8, roots) == CD_POLY_FAIL, "degree too high");
+    CHECK(cdist__poly_real_roots(NULL, q4, 4, 1e-8, roots) == CD_POLY_FAIL, "no workspace");
     double constant[1] = {3};
-    CHECK(cd_poly_real_roots(ws, constant, 0, 1e-8, roots) == 0, "constant");
+    CHECK(cdist__poly_real_roots(ws, constant, 0, 1e-8, roots) == 0, "constant");
     /* The nearly even degree-8 polynomial on which GSL's QR failed to converge unshifted (equal
      * circles concentric to 1e-12 in different planes). */
     double even8[9] = {0.012685339533715968, 1.1173386777584377e-10, -0.15928175999602698, -8.9386063812693968e-10,
                        0.65928175999602701,  1.9092510231177577e-09, -1, -1.2077653804513858e-09, 0.5};
-    n = cd_poly_real_roots(ws, even8, 8, 1e-6, roots);
+    n = cdist__poly_real_roots(ws, even8, 8, 1e-6, roots);
     CHECK(n >= 0, "nearly even octic solved (%d)", n);
     for (int i = 0; i < n; i++) CHECK(rel_residual(even8, 8, roots[i]) < 1e-12, "octic root residual");
     /* Random nearly even / odd / exactly even / dense polynomials of every degree. */
@@ -73,11 +73,11 @@ int main(void)
             a[i] = mode == 0 ? r : mode == 1 ? ((i % 2) ? 0 : r) : mode == 2 ? ((i % 2) ? r * 1e-11 : r) : ((i % 2) ? r : r * 1e-11);
         }
         a[deg] = 0.5 + urand();
-        n = cd_poly_real_roots(ws, a, deg, 1e-8, roots);
+        n = cdist__poly_real_roots(ws, a, deg, 1e-8, roots);
         CHECK(n >= 0 && n <= deg, "random polynomial %d: %d roots", it, n);
         for (int i = 0; i < n; i++) CHECK(rel_residual(a, deg, roots[i]) < 1e-9, "random root residual");
     }
-    cd_poly_ws_free(ws);
+    cdist__poly_ws_free(ws);
     CHECK(handler_calls == 0, "GSL's error handler was called %d times", handler_calls);
     /* The module never changes the handler: ours is still installed. */
     CHECK(gsl_set_error_handler(NULL) == counting_handler, "handler unchanged");

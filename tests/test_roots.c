@@ -36,48 +36,48 @@ int main(void)
 {
     const double c = cbrt(2.0), rel = CD_ROOT_REL_ULPS * DBL_EPSILON;
     evals = 0;
-    double x = cd_root_newton(cube_fdf, NULL, 0.0, 5.0, +1, rel, CD_ROOT_ABS, CD_ROOT_MAX_ITER);
+    double x = cdist__root_newton(cube_fdf, NULL, 0.0, 5.0, +1, rel, CD_ROOT_ABS, CD_ROOT_MAX_ITER);
     CHECK(fabs(x - c) <= 4 * DBL_EPSILON, "newton: %.17g vs %.17g", x, c);
     CHECK(evals < 40, "newton took %d evaluations", evals);
     /* an empty bracket */
-    x = cd_root_newton(cube_fdf, NULL, 5.0, 0.0, +1, rel, CD_ROOT_ABS, CD_ROOT_MAX_ITER);
+    x = cdist__root_newton(cube_fdf, NULL, 5.0, 0.0, +1, rel, CD_ROOT_ABS, CD_ROOT_MAX_ITER);
     CHECK(x == 5.0, "empty bracket returns lo");
-    x = cd_root_polish(cube_fdf, NULL, 1.3, rel, CD_ROOT_ABS, CD_POLISH_MAX_ITER);
+    x = cdist__root_polish(cube_fdf, NULL, 1.3, rel, CD_ROOT_ABS, CD_POLISH_MAX_ITER);
     CHECK(fabs(x - c) <= 4 * DBL_EPSILON, "polish: %.17g vs %.17g", x, c);
     double fx;
-    x = cd_root_brent(cube_f, NULL, 0.0, -2.0, 5.0, 123.0, rel, 0.0, 200, &fx);
+    x = cdist__root_brent(cube_f, NULL, 0.0, -2.0, 5.0, 123.0, rel, 0.0, 200, &fx);
     CHECK(fabs(x - c) <= 8 * DBL_EPSILON && fabs(fx) <= 16 * DBL_EPSILON, "brent root: %.17g vs %.17g", x, c);
     double a = 1.234, fm;
-    x = cd_min_brent(cosmin, &a, 0.0, 3.0, 0.0, 1e-9, 200, &fm);
+    x = cdist__min_brent(cosmin, &a, 0.0, 3.0, 0.0, 1e-9, 200, &fm);
     CHECK(fabs(x - a) <= 2e-8 && fabs(fm + 1) <= 1e-15, "brent min: %.17g vs %.17g", x, a);
-    x = cd_min_golden(cosmin, &a, 0.0, 3.0, 1e-9, 200, &fm);
+    x = cdist__min_golden(cosmin, &a, 0.0, 3.0, 1e-9, 200, &fm);
     CHECK(fabs(x - a) <= 2e-8 && fabs(fm + 1) <= 1e-15, "golden min: %.17g vs %.17g", x, a);
-    x = cd_root_newton(fail_fdf, NULL, 0.0, 1.0, +1, rel, CD_ROOT_ABS, CD_ROOT_MAX_ITER);
+    x = cdist__root_newton(fail_fdf, NULL, 0.0, 1.0, +1, rel, CD_ROOT_ABS, CD_ROOT_MAX_ITER);
     CHECK(isnan(x), "failing callback gives NaN (%g)", x);
 
     /* error-free transforms */
-    double lo, s = cd_two_sum(1.0, 1e-30, &lo);
+    double lo, s = cdist__two_sum(1.0, 1e-30, &lo);
     CHECK(s == 1.0 && lo == 1e-30, "two_sum");
-    s = cd_two_diff(1.0, 1e-30, &lo);
+    s = cdist__two_diff(1.0, 1e-30, &lo);
     CHECK(s == 1.0 && lo == -1e-30, "two_diff");
-    double p = cd_two_prod(1.0 + DBL_EPSILON, 1.0 + DBL_EPSILON, &lo);
+    double p = cdist__two_prod(1.0 + DBL_EPSILON, 1.0 + DBL_EPSILON, &lo);
     CHECK(p == 1.0 + 2 * DBL_EPSILON && lo == DBL_EPSILON * DBL_EPSILON, "two_prod");
     /* angles */
-    CHECK(cd_wrap_angle(-M_PI) == M_PI && fabs(cd_wrap_angle(7.0) - (7.0 - 2 * M_PI)) < 1e-15, "wrap");
-    CHECK(isnan(cd_polar_angle(0, 0)) && cd_polar_angle(-1, -0.0) == M_PI && cd_polar_angle(-1, 0) == M_PI, "polar");
+    CHECK(cdist__wrap_angle(-M_PI) == M_PI && fabs(cdist__wrap_angle(7.0) - (7.0 - 2 * M_PI)) < 1e-15, "wrap");
+    CHECK(isnan(cdist__polar_angle(0, 0)) && cdist__polar_angle(-1, -0.0) == M_PI && cdist__polar_angle(-1, 0) == M_PI, "polar");
     int worst = 0;
     srand(3);
     for (int i = 0; i < 200000; i++) {
         double u = srand1() * pow(10, rand() % 9 - 4), v = srand1() * pow(10, rand() % 9 - 4);
-        double want = atan2(v, u), got = cd_polar_angle(u, v);
+        double want = atan2(v, u), got = cdist__polar_angle(u, v);
         if (want == -M_PI) want = M_PI;
         double ulps = fabs(got - want) / (nextafter(fabs(want), INFINITY) - fabs(want));
         if (ulps > worst) worst = (int)ceil(ulps);
     }
     CHECK(worst <= 2, "polar angle off atan2 by %d ulps", worst);
     /* scaling */
-    CHECK(cd_scale_exponent(1.0) == 0 && cd_scale_exponent(3.0) == 1 && cd_scale_exponent(0.75) == -1, "exponent");
-    CHECK(cd_scale_exponent(1e-310) == -CD_SCALE_MAX_EXP && cd_scale_exponent(0.0) == 0, "exponent clamp");
-    CHECK(cd_pow2(-1000) == ldexp(1.0, -1000) && cd_pow2(1000) == ldexp(1.0, 1000), "pow2");
+    CHECK(cdist__scale_exponent(1.0) == 0 && cdist__scale_exponent(3.0) == 1 && cdist__scale_exponent(0.75) == -1, "exponent");
+    CHECK(cdist__scale_exponent(1e-310) == -CD_SCALE_MAX_EXP && cdist__scale_exponent(0.0) == 0, "exponent clamp");
+    CHECK(cdist__pow2(-1000) == ldexp(1.0, -1000) && cdist__pow2(1000) == ldexp(1.0, 1000), "pow2");
     return check_summary("test_roots");
 }

@@ -24,77 +24,77 @@ struct cdist_query {
     int max_iterations;
     cdist_status last_status;
     char message[CD_MESSAGE_LEN];
-    cd_poly_ws *poly;
+    cdist__poly_ws *poly;
     /* Scratch owned by the handle (sized by the setters) so that queries never allocate. */
     double *scratch;
     size_t scratch_len;
-    /* Set while a call uses the handle (cd_enter .. cd_leave): a second thread entering at the
+    /* Set while a call uses the handle (cdist__enter .. cdist__leave): a second thread entering at the
      * same time gets CDIST_ERR_HANDLE_BUSY instead of corrupting the state above. */
     atomic_int busy;
-    struct cd_workers *workers; /* batch worker threads and their handles (src/batch); NULL = 1 thread */
+    struct cdist__workers *workers; /* batch worker threads and their handles (src/batch); NULL = 1 thread */
 };
 
-/* Batch workers (src/batch/workers.c). cd_workers_free joins the threads and frees their handles
- * (NULL allowed). cd_workers_sync gives every worker handle the options of q, sizing their
+/* Batch workers (src/batch/workers.c). cdist__workers_free joins the threads and frees their handles
+ * (NULL allowed). cdist__workers_sync gives every worker handle the options of q, sizing their
  * workspaces (called by every option setter, so that a batch never allocates). */
-void cd_workers_free(struct cd_workers *w);
-cdist_status cd_workers_sync(cdist_query *q);
+void cdist__workers_free(struct cdist__workers *w);
+cdist_status cdist__workers_sync(cdist_query *q);
 
 
 /* ---- validation and status ---- */
 
 /* Start a query: sets the result to the error state (NaN, no pairs) and clears the message. */
-void cd_begin(cdist_query *q, cdist_result *r);
+void cdist__begin(cdist_query *q, cdist_result *r);
 /* Record a failure (message printf-style) and return the status. q may be NULL. */
-cdist_status cd_fail(cdist_query *q, cdist_status st, const char *fmt, ...)
+cdist_status cdist__fail(cdist_query *q, cdist_status st, const char *fmt, ...)
 #if defined(__GNUC__)
     __attribute__((format(printf, 3, 4)))
 #endif
     ;
 /* Record success on the handle. */
-cdist_status cd_ok(cdist_query *q, cdist_result *r, int method);
+cdist_status cdist__ok(cdist_query *q, cdist_result *r, int method);
 
 /* Check that q and r are non-NULL; on failure fills r (when it exists) and returns a status. */
-cdist_status cd_check_handle(cdist_query *q, cdist_result *r);
-cdist_status cd_check_ptr(cdist_query *q, const void *p, const char *what);
-cdist_status cd_check_point_slow(cdist_query *q, const cdist_vec3 *p, const char *what);
+cdist_status cdist__check_handle(cdist_query *q, cdist_result *r);
+cdist_status cdist__check_ptr(cdist_query *q, const void *p, const char *what);
+cdist_status cdist__check_point_slow(cdist_query *q, const cdist_vec3 *p, const char *what);
 /* A point: finite, |components| <= CD_MAX_ABS (one comparison each: false for NaN and inf). */
-static inline cdist_status cd_check_point(cdist_query *q, const cdist_vec3 *p, const char *what)
+static inline cdist_status cdist__check_point(cdist_query *q, const cdist_vec3 *p, const char *what)
 {
     if (p && fabs(p->x) <= CD_MAX_ABS && fabs(p->y) <= CD_MAX_ABS && fabs(p->z) <= CD_MAX_ABS) return CDIST_OK;
-    return cd_check_point_slow(q, p, what);
+    return cdist__check_point_slow(q, p, what);
 }
-cdist_status cd_check_scalar(cdist_query *q, double x, const char *what);
+cdist_status cdist__check_scalar(cdist_query *q, double x, const char *what);
 /* A direction or normal: finite, non-zero, unit within the handle's tolerance (or any length
  * when unit_required is 0). Writes the unit vector and the original length. */
-cdist_status cd_check_direction(cdist_query *q, const cdist_vec3 *d, const char *what, int unit_required,
+cdist_status cdist__check_direction(cdist_query *q, const cdist_vec3 *d, const char *what, int unit_required,
                                 vec3 *unit, double *length);
 /* A circle or disk: writes the validated circle with its basis. */
-cdist_status cd_check_circle(cdist_query *q, const cdist_circle *c, const char *what, cd_circle *out);
+cdist_status cdist__check_circle(cdist_query *q, const cdist_circle *c, const char *what, cdist__circle *out);
 
 /* The method a family runs: AUTO (or a method the family lacks) becomes `fallback`. */
-cdist_method cd_pick_method(const cdist_query *q, unsigned available_mask, cdist_method fallback);
+cdist_method cdist__pick_method(const cdist_query *q, unsigned available_mask, cdist_method fallback);
 #define CD_HAS(m) (1u << (m))
 
 /* ---- the one entry path (src/api/entry.c) ----
  * Every public query function runs
- *     st = cd_enter(q, r);  if (st) return st;
- *     validate its inputs (cd_check_*) -> frame and scale -> family core -> write r;
- *     return cd_leave(q, r, st, method);
- * cd_enter checks q and r and takes the handle's in-use flag: when another call holds it, it
+ *     st = cdist__enter(q, r);  if (st) return st;
+ *     validate its inputs (cdist__check_*) -> frame and scale -> family core -> write r;
+ *     return cdist__leave(q, r, st, method);
+ * cdist__enter checks q and r and takes the handle's in-use flag: when another call holds it, it
  * returns CDIST_ERR_HANDLE_BUSY without touching the handle (r, when not NULL, gets the error
- * state). The result is not pre-filled: the core writes every field on success, and cd_leave
- * puts r in the error state (NaN, no pairs) on failure. cd_leave also turns a success with a
+ * state). The result is not pre-filled: the core writes every field on success, and cdist__leave
+ * puts r in the error state (NaN, no pairs) on failure. cdist__leave also turns a success with a
  * non-finite distance into CDIST_ERR_INTERNAL (never OK with NaN), records the status and
  * message, and releases the flag. */
-cdist_status cd_enter_slow(cdist_query *q, cdist_result *r);
-static inline cdist_status cd_enter(cdist_query *q, cdist_result *r)
+cdist_status cdist__enter_slow(cdist_query *q, cdist_result *r);
+static inline cdist_status cdist__enter(cdist_query *q, cdist_result *r)
 {
     if (q && r && !atomic_exchange_explicit(&q->busy, 1, memory_order_acquire)) return CDIST_OK;
-    return cd_enter_slow(q, r);
+    return cdist__enter_slow(q, r);
 }
-cdist_status cd_leave_slow(cdist_query *q, cdist_result *r, cdist_status st);
-static inline cdist_status cd_leave(cdist_query *q, cdist_result *r, cdist_status st, int method)
+cdist_status cdist__leave_slow(cdist_query *q, cdist_result *r, cdist_status st);
+static inline cdist_status cdist__leave(cdist_query *q, cdist_result *r, cdist_status st, int method)
 {
     if (st == CDIST_OK && isfinite(r->distance)) {
         r->method = method;
@@ -103,36 +103,36 @@ static inline cdist_status cd_leave(cdist_query *q, cdist_result *r, cdist_statu
         atomic_store_explicit(&q->busy, 0, memory_order_release);
         return CDIST_OK;
     }
-    return cd_leave_slow(q, r, st);
+    return cdist__leave_slow(q, r, st);
 }
 /* The same flag for the option setters (no result). */
-cdist_status cd_enter_setter(cdist_query *q);
-void cd_leave_setter(cdist_query *q);
+cdist_status cdist__enter_setter(cdist_query *q);
+void cdist__leave_setter(cdist_query *q);
 /* The error state of a result: NaN distances, points and parameters, no pairs. */
-void cd_result_set_error(cdist_result *r);
+void cdist__result_set_error(cdist_result *r);
 /* The unused fields of a successful result: pairs from index n on NaN, iterations and reserved
  * zero. */
-void cd_result_finish(cdist_result *r, int n);
+void cdist__result_finish(cdist_result *r, int n);
 
 /* Scale a validated result back: distances and points times `up` (a power of two). */
-void cd_result_unscale(cdist_result *r, double up);
+void cdist__result_unscale(cdist_result *r, double up);
 /* A circle scaled by a power of two about the origin (centre and radius; n, u, v unchanged). */
-static inline void cd_circle_scale(cd_circle *c, double s)
+static inline void cdist__circle_scale(cdist__circle *c, double s)
 {
     c->c = v_scale(s, c->c);
     c->r *= s;
 }
 
 /* A circle or disk checked without building its basis (c, n, r only; u, v left unset), for
- * families that do not need it; cd_frame_basis completes it. */
-cdist_status cd_check_circle_nobasis(cdist_query *q, const cdist_circle *c, const char *what, cd_circle *out);
-static inline void cd_frame_basis(cd_circle *c) { v_basis(c->n, &c->u, &c->v); }
+ * families that do not need it; cdist__frame_basis completes it. */
+cdist_status cdist__check_circle_nobasis(cdist_query *q, const cdist_circle *c, const char *what, cdist__circle *out);
+static inline void cdist__frame_basis(cdist__circle *c) { v_basis(c->n, &c->u, &c->v); }
 
 /* ---- the family table (src/api/family.c) ----
  * One row per query family, indexed like the public cdist_kind numbers of the batch API: the
  * methods it implements, what AUTO (or a method it lacks) runs, and which methods may call GSL
  * (AUTO and ROBUST never do). */
-typedef enum cd_fam {
+typedef enum cdist__fam {
     CD_FAM_POINT_CIRCLE = 0,
     CD_FAM_POINT_DISK = 1,
     CD_FAM_LINE_CIRCLE = 2,
@@ -155,21 +155,21 @@ typedef enum cd_fam {
     CD_FAM_BEZIER3_CIRCLE = 19,
     CD_FAM_BEZIER3_DISK = 20,
     CD_FAM_COUNT
-} cd_fam;
+} cdist__fam;
 
-typedef struct cd_family {
+typedef struct cdist__family {
     const char *name;         /* "point_circle", ... (the cdist_kind_name of the batch API) */
     unsigned methods;         /* CD_HAS(m) for every method the family implements */
     cdist_method auto_method; /* what AUTO and an unimplemented method run */
     unsigned gsl_methods;     /* methods that may call GSL */
-} cd_family;
+} cdist__family;
 
-extern const cd_family cd_family_table[CD_FAM_COUNT];
+extern const cdist__family cdist__family_table[CD_FAM_COUNT];
 
 /* The method family f runs for the handle's method. */
-static inline cdist_method cd_family_method(const cdist_query *q, cd_fam f)
+static inline cdist_method cdist__family_method(const cdist_query *q, cdist__fam f)
 {
-    const cd_family *t = &cd_family_table[f];
+    const cdist__family *t = &cdist__family_table[f];
     cdist_method m = q->method;
     return (m == CDIST_METHOD_AUTO || !(t->methods & CD_HAS(m))) ? t->auto_method : m;
 }

@@ -5,7 +5,7 @@
 
 #include "internal.h"
 
-void cd_result_set_error(cdist_result *r)
+void cdist__result_set_error(cdist_result *r)
 {
     memset(r, 0, sizeof *r);
     r->distance = NAN;
@@ -18,7 +18,7 @@ void cd_result_set_error(cdist_result *r)
     }
 }
 
-void cd_result_finish(cdist_result *r, int n)
+void cdist__result_finish(cdist_result *r, int n)
 {
     for (int i = n; i < 2; i++) {
         for (int k = 0; k < 2; k++) {
@@ -30,40 +30,40 @@ void cd_result_finish(cdist_result *r, int n)
     for (int i = 0; i < 8; i++) r->reserved[i] = 0.0;
 }
 
-cdist_status cd_enter_slow(cdist_query *q, cdist_result *r)
+cdist_status cdist__enter_slow(cdist_query *q, cdist_result *r)
 {
-    if (r) cd_result_set_error(r);
+    if (r) cdist__result_set_error(r);
     if (!q) return CDIST_ERR_NULL_ARGUMENT;
     if (r) return CDIST_ERR_HANDLE_BUSY; /* the fast path failed only on the flag */
     /* r is NULL: report it on the handle, if the handle is ours to write. */
     if (atomic_exchange_explicit(&q->busy, 1, memory_order_acquire)) return CDIST_ERR_HANDLE_BUSY;
-    cdist_status st = cd_fail(q, CDIST_ERR_NULL_ARGUMENT, "result pointer is NULL");
+    cdist_status st = cdist__fail(q, CDIST_ERR_NULL_ARGUMENT, "result pointer is NULL");
     atomic_store_explicit(&q->busy, 0, memory_order_release);
     return st;
 }
 
-cdist_status cd_leave_slow(cdist_query *q, cdist_result *r, cdist_status st)
+cdist_status cdist__leave_slow(cdist_query *q, cdist_result *r, cdist_status st)
 {
     if (st == CDIST_OK) {
         /* Final guard: a core that produced a non-finite distance is an internal failure. */
-        st = cd_fail(q, CDIST_ERR_INTERNAL, "internal failure: the distance came out %g", r->distance);
+        st = cdist__fail(q, CDIST_ERR_INTERNAL, "internal failure: the distance came out %g", r->distance);
     }
-    cd_result_set_error(r);
+    cdist__result_set_error(r);
     q->last_status = st;
     atomic_store_explicit(&q->busy, 0, memory_order_release);
     return st;
 }
 
-cdist_status cd_enter_setter(cdist_query *q)
+cdist_status cdist__enter_setter(cdist_query *q)
 {
     if (!q) return CDIST_ERR_NULL_ARGUMENT;
     if (atomic_exchange_explicit(&q->busy, 1, memory_order_acquire)) return CDIST_ERR_HANDLE_BUSY;
     return CDIST_OK;
 }
 
-void cd_leave_setter(cdist_query *q) { atomic_store_explicit(&q->busy, 0, memory_order_release); }
+void cdist__leave_setter(cdist_query *q) { atomic_store_explicit(&q->busy, 0, memory_order_release); }
 
-void cd_result_unscale(cdist_result *r, double up)
+void cdist__result_unscale(cdist_result *r, double up)
 {
     r->distance *= up;
     r->sqr_distance = (r->sqr_distance * up) * up;

@@ -8,7 +8,7 @@
 #define I CD_HAS(CDIST_METHOD_ITERATION)
 #define A CD_HAS(CDIST_METHOD_AUTO)
 
-const cd_family cd_family_table[CD_FAM_COUNT] = {
+const cdist__family cdist__family_table[CD_FAM_COUNT] = {
     [CD_FAM_POINT_CIRCLE] = {"point_circle", A, CDIST_METHOD_AUTO, 0}, /* closed form */
     [CD_FAM_POINT_DISK] = {"point_disk", A, CDIST_METHOD_AUTO, 0},
     [CD_FAM_LINE_CIRCLE] = {"line_circle", P | R, CDIST_METHOD_ROBUST, P},

@@ -65,7 +65,7 @@ cdist_query *cdist_query_new(void)
     q->curve_samples = CD_DEFAULT_CURVE_SAMPLES;
     q->max_iterations = CD_DEFAULT_MAX_ITERATIONS;
     q->last_status = CDIST_OK;
-    q->poly = cd_poly_ws_new();
+    q->poly = cdist__poly_ws_new();
     q->scratch_len = 4 * ((size_t)CD_DEFAULT_CURVE_SAMPLES + 1);
     q->scratch = malloc(q->scratch_len * sizeof(double));
     if (!q->poly || !q->scratch) {
@@ -78,15 +78,15 @@ cdist_query *cdist_query_new(void)
 void cdist_query_free(cdist_query *q)
 {
     if (!q) return;
-    cd_workers_free(q->workers);
-    cd_poly_ws_free(q->poly);
+    cdist__workers_free(q->workers);
+    cdist__poly_ws_free(q->poly);
     free(q->scratch);
     free(q);
 }
 
 static cdist_status setter_ok(cdist_query *q)
 {
-    cdist_status st = cd_workers_sync(q);
+    cdist_status st = cdist__workers_sync(q);
     if (st) return st;
     q->last_status = CDIST_OK;
     q->message[0] = '\0';
@@ -97,17 +97,17 @@ static cdist_status query_set_method_locked(cdist_query *q, cdist_method method)
 {
     if (!q) return CDIST_ERR_NULL_ARGUMENT;
     if ((unsigned)method > CDIST_METHOD_ITERATION)
-        return cd_fail(q, CDIST_ERR_BAD_OPTION, "method %d is not a cdist_method (0..3)", (int)method);
+        return cdist__fail(q, CDIST_ERR_BAD_OPTION, "method %d is not a cdist_method (0..3)", (int)method);
     q->method = method;
     return setter_ok(q);
 }
 
 cdist_status cdist_query_set_method(cdist_query *q, cdist_method method)
 {
-    cdist_status st = cd_enter_setter(q);
+    cdist_status st = cdist__enter_setter(q);
     if (st) return st;
     st = query_set_method_locked(q, method);
-    cd_leave_setter(q);
+    cdist__leave_setter(q);
     return st;
 }
 
@@ -116,17 +116,17 @@ cdist_method cdist_query_get_method(const cdist_query *q) { return q ? q->method
 static cdist_status query_set_unit_tolerance_locked(cdist_query *q, double tol)
 {
     if (!q) return CDIST_ERR_NULL_ARGUMENT;
-    if (!(tol >= 0.0)) return cd_fail(q, CDIST_ERR_BAD_OPTION, "unit tolerance must be >= 0 (got %g)", tol);
+    if (!(tol >= 0.0)) return cdist__fail(q, CDIST_ERR_BAD_OPTION, "unit tolerance must be >= 0 (got %g)", tol);
     q->unit_tol = tol;
     return setter_ok(q);
 }
 
 cdist_status cdist_query_set_unit_tolerance(cdist_query *q, double tol)
 {
-    cdist_status st = cd_enter_setter(q);
+    cdist_status st = cdist__enter_setter(q);
     if (st) return st;
     st = query_set_unit_tolerance_locked(q, tol);
-    cd_leave_setter(q);
+    cdist__leave_setter(q);
     return st;
 }
 
@@ -136,12 +136,12 @@ static cdist_status query_set_curve_samples_locked(cdist_query *q, int samples)
 {
     if (!q) return CDIST_ERR_NULL_ARGUMENT;
     if (samples < 8 || samples > CD_MAX_CURVE_SAMPLES)
-        return cd_fail(q, CDIST_ERR_BAD_OPTION, "curve samples must be in [8, %d] (got %d)", CD_MAX_CURVE_SAMPLES,
+        return cdist__fail(q, CDIST_ERR_BAD_OPTION, "curve samples must be in [8, %d] (got %d)", CD_MAX_CURVE_SAMPLES,
                        samples);
     size_t need = 4 * ((size_t)samples + 1);
     if (need > q->scratch_len) {
         double *s = realloc(q->scratch, need * sizeof(double));
-        if (!s) return cd_fail(q, CDIST_ERR_NO_MEMORY, "out of memory for %d curve samples", samples);
+        if (!s) return cdist__fail(q, CDIST_ERR_NO_MEMORY, "out of memory for %d curve samples", samples);
         q->scratch = s;
         q->scratch_len = need;
     }
@@ -151,10 +151,10 @@ static cdist_status query_set_curve_samples_locked(cdist_query *q, int samples)
 
 cdist_status cdist_query_set_curve_samples(cdist_query *q, int samples)
 {
-    cdist_status st = cd_enter_setter(q);
+    cdist_status st = cdist__enter_setter(q);
     if (st) return st;
     st = query_set_curve_samples_locked(q, samples);
-    cd_leave_setter(q);
+    cdist__leave_setter(q);
     return st;
 }
 
@@ -164,17 +164,17 @@ static cdist_status query_set_max_iterations_locked(cdist_query *q, int max_iter
 {
     if (!q) return CDIST_ERR_NULL_ARGUMENT;
     if (max_iterations < 1)
-        return cd_fail(q, CDIST_ERR_BAD_OPTION, "max iterations must be >= 1 (got %d)", max_iterations);
+        return cdist__fail(q, CDIST_ERR_BAD_OPTION, "max iterations must be >= 1 (got %d)", max_iterations);
     q->max_iterations = max_iterations;
     return setter_ok(q);
 }
 
 cdist_status cdist_query_set_max_iterations(cdist_query *q, int max_iterations)
 {
-    cdist_status st = cd_enter_setter(q);
+    cdist_status st = cdist__enter_setter(q);
     if (st) return st;
     st = query_set_max_iterations_locked(q, max_iterations);
-    cd_leave_setter(q);
+    cdist__leave_setter(q);
     return st;
 }
 
@@ -189,7 +189,7 @@ const char *cdist_query_last_error(const cdist_query *q)
 
 /* ---- status recording ---- */
 
-cdist_status cd_fail(cdist_query *q, cdist_status st, const char *fmt, ...)
+cdist_status cdist__fail(cdist_query *q, cdist_status st, const char *fmt, ...)
 {
     if (q) {
         va_list ap;
@@ -201,16 +201,16 @@ cdist_status cd_fail(cdist_query *q, cdist_status st, const char *fmt, ...)
     return st;
 }
 
-void cd_begin(cdist_query *q, cdist_result *r)
+void cdist__begin(cdist_query *q, cdist_result *r)
 {
-    if (r) cd_result_set_error(r);
+    if (r) cdist__result_set_error(r);
     if (q) {
         q->message[0] = '\0';
         q->last_status = CDIST_OK;
     }
 }
 
-cdist_status cd_ok(cdist_query *q, cdist_result *r, int method)
+cdist_status cdist__ok(cdist_query *q, cdist_result *r, int method)
 {
     r->method = method;
     q->last_status = CDIST_OK;
@@ -224,7 +224,7 @@ cdist_status cdist_circle_basis(const cdist_circle *c, cdist_vec3 *u, cdist_vec3
 {
     if (!c) return CDIST_ERR_NULL_ARGUMENT;
     vec3 n;
-    cdist_status st = cd_check_direction(NULL, &c->normal, "normal", 0, &n, NULL);
+    cdist_status st = cdist__check_direction(NULL, &c->normal, "normal", 0, &n, NULL);
     if (st) return st;
     vec3 uu, vv;
     v_basis(n, &uu, &vv);

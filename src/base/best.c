@@ -5,14 +5,14 @@
 #include <float.h>
 #include <math.h>
 
-void cd_best_init(cd_best *b, double scale)
+void cdist__best_init(cdist__best *b, double scale)
 {
     b->scale = (scale > 0.0 && isfinite(scale)) ? scale : 1.0;
     b->n = 0;
     b->equidistant = 0;
 }
 
-static int cand_distinct(const cd_best *b, const cd_cand *x, const cd_cand *y)
+static int cand_distinct(const cdist__best *b, const cdist__cand *x, const cdist__cand *y)
 {
     vec3 d0 = v_sub(x->p[0], y->p[0]), d1 = v_sub(x->p[1], y->p[1]);
     double tol = CD_DISTINCT_REL * b->scale;
@@ -21,10 +21,10 @@ static int cand_distinct(const cd_best *b, const cd_cand *x, const cd_cand *y)
     return v_norm(d0) + v_norm(d1) > tol;
 }
 
-void cd_best_offer_flag(cd_best *b, int equi, double d2, vec3 p0, vec3 p1, double param0, double param1)
+void cdist__best_offer_flag(cdist__best *b, int equi, double d2, vec3 p0, vec3 p1, double param0, double param1)
 {
     if (!(d2 >= 0.0)) return; /* NaN candidates are ignored */
-    cd_cand c = {equi, d2, {p0, p1}, {param0, param1}};
+    cdist__cand c = {equi, d2, {p0, p1}, {param0, param1}};
     /* Merge with a kept candidate describing the same pair: keep the smaller distance. */
     for (int i = 0; i < b->n; i++) {
         if (!cand_distinct(b, &c, &b->c[i])) {
@@ -43,12 +43,12 @@ void cd_best_offer_flag(cd_best *b, int equi, double d2, vec3 p0, vec3 p1, doubl
     if (b->n < CD_BEST_KEEP) b->n++;
 }
 
-void cd_best_offer(cd_best *b, double d2, vec3 p0, vec3 p1, double param0, double param1)
+void cdist__best_offer(cdist__best *b, double d2, vec3 p0, vec3 p1, double param0, double param1)
 {
-    cd_best_offer_flag(b, 0, d2, p0, p1, param0, param1);
+    cdist__best_offer_flag(b, 0, d2, p0, p1, param0, param1);
 }
 
-void cd_best_to_result(const cd_best *b, vec3 offset, int swap, cdist_result *r)
+void cdist__best_to_result(const cdist__best *b, vec3 offset, int swap, cdist_result *r)
 {
     if (b->n == 0) return;
     int a = swap ? 1 : 0;
@@ -63,7 +63,7 @@ void cd_best_to_result(const cd_best *b, vec3 offset, int swap, cdist_result *r)
     }
     r->num_pairs = np;
     for (int i = 0; i < np; i++) {
-        const cd_cand *c = &b->c[i];
+        const cdist__cand *c = &b->c[i];
         r->pairs[i].point[a] = v_add(c->p[0], offset);
         r->pairs[i].point[1 - a] = v_add(c->p[1], offset);
         r->pairs[i].param[a] = c->param[0];
@@ -71,31 +71,31 @@ void cd_best_to_result(const cd_best *b, vec3 offset, int swap, cdist_result *r)
     }
 }
 
-double cd_best_merge(cd_best *dst, const cd_best *src, vec3 shift, int swap)
+double cdist__best_merge(cdist__best *dst, const cdist__best *src, vec3 shift, int swap)
 {
     for (int i = 0; i < src->n; i++) {
-        const cd_cand *c = &src->c[i];
+        const cdist__cand *c = &src->c[i];
         vec3 p0 = v_add(c->p[0], shift), p1 = v_add(c->p[1], shift);
-        if (swap) cd_best_offer_flag(dst, c->equidistant, c->d2, p1, p0, c->param[1], c->param[0]);
-        else cd_best_offer_flag(dst, c->equidistant, c->d2, p0, p1, c->param[0], c->param[1]);
+        if (swap) cdist__best_offer_flag(dst, c->equidistant, c->d2, p1, p0, c->param[1], c->param[0]);
+        else cdist__best_offer_flag(dst, c->equidistant, c->d2, p0, p1, c->param[0], c->param[1]);
     }
     return src->n ? src->c[0].d2 : INFINITY;
 }
 
-int cd_best_ties(const cd_best *b, double d2a, double d2b)
+int cdist__best_ties(const cdist__best *b, double d2a, double d2b)
 {
     return fabs(sqrt(d2a) - sqrt(d2b)) <= CD_TIE_ULPS * DBL_EPSILON * b->scale;
 }
 
-void cd_best_settle_equidistant(cd_best *b, double eq_d2)
+void cdist__best_settle_equidistant(cdist__best *b, double eq_d2)
 {
-    if (isfinite(eq_d2) && b->n > 0 && (eq_d2 <= b->c[0].d2 || cd_best_ties(b, eq_d2, b->c[0].d2)))
+    if (isfinite(eq_d2) && b->n > 0 && (eq_d2 <= b->c[0].d2 || cdist__best_ties(b, eq_d2, b->c[0].d2)))
         b->equidistant = 1;
 }
 
-void cd_best_convex_contact(cd_best *b)
+void cdist__best_convex_contact(cdist__best *b)
 {
-    if (b->n >= 2 && cd_best_ties(b, b->c[0].d2, b->c[1].d2) &&
+    if (b->n >= 2 && cdist__best_ties(b, b->c[0].d2, b->c[1].d2) &&
         sqrt(b->c[1].d2) <= CD_TIE_ULPS * DBL_EPSILON * b->scale)
         b->equidistant = 1;
 }

@@ -12,54 +12,54 @@
 
 #define CD_BEST_KEEP 4
 
-typedef struct cd_cand {
+typedef struct cdist__cand {
     int equidistant; /* this candidate stands for infinitely many equally close pairs */
     double d2;
     vec3 p[2];
     double param[2];
-} cd_cand;
+} cdist__cand;
 
-typedef struct cd_best {
+typedef struct cdist__best {
     double scale;    /* problem scale L, for the tie and distinctness tests */
     int n;           /* candidates kept, sorted by d2 */
     int equidistant; /* set by a family whose whole configuration has infinitely many closest pairs */
-    cd_cand c[CD_BEST_KEEP];
-} cd_best;
+    cdist__cand c[CD_BEST_KEEP];
+} cdist__best;
 
 /* Two distances within CD_TIE_ULPS * eps * scale are a tie (both pairs are reported) when
  * their pairs are distinct: further apart than CD_DISTINCT_REL * scale (tolerances.h). */
 
-void cd_best_init(cd_best *b, double scale);
+void cdist__best_init(cdist__best *b, double scale);
 /* Whether the result would be flagged equidistant (the whole configuration, or the best
  * candidate stands for infinitely many pairs). */
-static inline int cd_best_is_equidistant(const cd_best *b)
+static inline int cdist__best_is_equidistant(const cdist__best *b)
 {
     return b->equidistant || (b->n > 0 && b->c[0].equidistant);
 }
 /* Offer a candidate: p0 on the first object, p1 on the second, d2 = its squared distance
  * computed as accurately as the family can (usually from the true distance function). */
-void cd_best_offer(cd_best *b, double d2, vec3 p0, vec3 p1, double param0, double param1);
+void cdist__best_offer(cdist__best *b, double d2, vec3 p0, vec3 p1, double param0, double param1);
 /* Same with a flag: equidistant = 1 for a candidate that represents infinitely many equally
  * close pairs (e.g. a point on a circle's axis); the result is flagged equidistant only if that
  * candidate is the best. For moving candidates from one collector to another, pass the source
  * candidate's .equidistant. */
-void cd_best_offer_flag(cd_best *b, int equidistant, double d2, vec3 p0, vec3 p1, double param0, double param1);
+void cdist__best_offer_flag(cdist__best *b, int equidistant, double d2, vec3 p0, vec3 p1, double param0, double param1);
 /* Write the result: the best pair and, on a tie, the second; points moved by `offset`
  * (the translation the family removed). swap exchanges the objects' roles (f(b,a) from f(a,b)). */
-void cd_best_to_result(const cd_best *b, vec3 offset, int swap, cdist_result *r);
+void cdist__best_to_result(const cdist__best *b, vec3 offset, int swap, cdist_result *r);
 
 /* ---- combining collectors (families that split a query into sub-queries) ---- */
 
 /* Copy the candidates of src into dst; points shifted by `shift`; swap exchanges the roles of
  * the two objects. Returns the squared distance of src's best (INFINITY when empty). */
-double cd_best_merge(cd_best *dst, const cd_best *src, vec3 shift, int swap);
+double cdist__best_merge(cdist__best *dst, const cdist__best *src, vec3 shift, int swap);
 /* Two squared distances tie when their distances agree within the tie tolerance of b. */
-int cd_best_ties(const cd_best *b, double d2a, double d2b);
+int cdist__best_ties(const cdist__best *b, double d2a, double d2b);
 /* An equidistant sub-result (squared distance eq_d2) makes the whole result equidistant only
  * when it attains the global minimum. */
-void cd_best_settle_equidistant(cd_best *b, double eq_d2);
+void cdist__best_settle_equidistant(cdist__best *b, double eq_d2);
 /* When the closest set is convex (line/segment/disk against a disk), two distinct closest pairs
  * at distance zero mean a whole segment of contact: flag it. */
-void cd_best_convex_contact(cd_best *b);
+void cdist__best_convex_contact(cdist__best *b);
 
 #endif

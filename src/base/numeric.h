@@ -42,7 +42,7 @@
 /* ---- error-free transforms ---- */
 
 /* a + b = s + *lo exactly (Knuth's TwoSum; no condition on |a|, |b|). */
-static inline double cd_two_sum(double a, double b, double *lo)
+static inline double cdist__two_sum(double a, double b, double *lo)
 {
     double s = a + b, bb = s - a;
     *lo = (a - (s - bb)) + (b - bb);
@@ -50,10 +50,10 @@ static inline double cd_two_sum(double a, double b, double *lo)
 }
 
 /* a - b = s + *lo exactly. */
-static inline double cd_two_diff(double a, double b, double *lo) { return cd_two_sum(a, -b, lo); }
+static inline double cdist__two_diff(double a, double b, double *lo) { return cdist__two_sum(a, -b, lo); }
 
 /* a * b = p + *lo exactly (needs a correctly rounded fma). */
-static inline double cd_two_prod(double a, double b, double *lo)
+static inline double cdist__two_prod(double a, double b, double *lo)
 {
     double p = a * b;
     *lo = fma(a, b, -p);
@@ -65,7 +65,7 @@ static inline double cd_two_prod(double a, double b, double *lo)
 #define CD_TWO_PI 6.283185307179586476925286766559
 
 /* Angle t wrapped to (-pi, pi]. */
-static inline double cd_wrap_angle(double t)
+static inline double cdist__wrap_angle(double t)
 {
     double a = remainder(t, CD_TWO_PI);
     return (a <= -M_PI) ? a + CD_TWO_PI : a;
@@ -74,15 +74,15 @@ static inline double cd_wrap_angle(double t)
 /* fmax and fmin without a libm call (gcc calls libm for them, since maxsd/minsd treat NaN
  * differently): the same results, NaN operands included (the order of +0 and -0 aside).
  * The point and lines hot paths used a dozen libm calls per query. */
-CD_INLINE double cd_fmax(double a, double b) { return a > b ? a : (b == b ? b : a); }
-CD_INLINE double cd_fmin(double a, double b) { return a < b ? a : (b == b ? b : a); }
+CD_INLINE double cdist__fmax(double a, double b) { return a > b ? a : (b == b ? b : a); }
+CD_INLINE double cdist__fmin(double a, double b) { return a < b ? a : (b == b ? b : a); }
 
 /* atan(y / x) for 0 <= y <= x, x > 0: fdlibm's s_atan.c (Sun Microsystems, 1993; "permission
  * to use, copy, modify, and distribute this software is freely granted, provided that this
  * notice is preserved") restricted to that range: reduction to |t| < 7/16 and an odd
  * polynomial of degree 23. The reduced argument is formed from y and x directly, with one
  * division ((2y - x) and (y - x) are exact by Sterbenz's lemma in their ranges). */
-CD_INLINE double cd_atan_ratio(double y, double x)
+CD_INLINE double cdist__atan_ratio(double y, double x)
 {
     static const double aT[] = {
         3.33333333333329318027e-01,  -1.99999999998764832476e-01, 1.42857142725034663711e-01,
@@ -115,7 +115,7 @@ CD_INLINE double cd_atan_ratio(double y, double x)
 /* Polar angle of (x, y) in (-pi, pi]; NaN for (0, 0). Within 2 ulps of atan2 (measured on 2e7
  * random and near-axis arguments: 1 ulp) and about twice as fast, with one division: the point
  * queries spent a third of their time in atan2. */
-CD_INLINE double cd_polar_angle(double x, double y)
+CD_INLINE double cdist__polar_angle(double x, double y)
 {
     const double pio2_hi = 1.57079632679489655800e+00, pio2_lo = 6.12323399573676603587e-17;
     const double pi_hi = 3.1415926535897931160e+00, pi_lo = 1.2246467991473531772e-16;
@@ -123,17 +123,17 @@ CD_INLINE double cd_polar_angle(double x, double y)
     if (x != x || y != y) return NAN;
     double ax = fabs(x), ay = fabs(y), a;
     if (ay <= ax) {
-        a = cd_atan_ratio(ay, ax);
+        a = cdist__atan_ratio(ay, ax);
         if (x < 0.0) a = pi_hi - (a - pi_lo);
     } else {
-        double b = cd_atan_ratio(ax, ay);
+        double b = cdist__atan_ratio(ax, ay);
         a = (x < 0.0) ? pio2_hi + (b + pio2_lo) : pio2_hi - (b - pio2_lo);
     }
     return (y < 0.0 && a != pi_hi) ? -a : a; /* -pi is reported as pi */
 }
 
 /* ---- power-of-two scaling (exact) ----
- * A family works on a copy scaled by 2^-e where e = cd_scale_exponent(L), so that the problem
+ * A family works on a copy scaled by 2^-e where e = cdist__scale_exponent(L), so that the problem
  * scale L * 2^-e is in [1, 2): squares neither overflow nor underflow, and the answer scales
  * back exactly (lengths times 2^e, squared lengths times 2^e twice; exact unless a value is
  * subnormal). L must be finite; L = 0 (or NaN) gives 0. The exponent is clamped to
@@ -142,7 +142,7 @@ CD_INLINE double cd_polar_angle(double x, double y)
  * scaled to about 2^-22 or more, still free of underflow in squares. */
 #define CD_SCALE_MAX_EXP 1000
 
-static inline int cd_scale_exponent(double L)
+static inline int cdist__scale_exponent(double L)
 {
     int e;
     if (!(L > 0.0) || !isfinite(L)) return 0;
@@ -159,7 +159,7 @@ static inline int cd_scale_exponent(double L)
 }
 
 /* 2^e for |e| <= 1022, exactly, without a libm call. */
-static inline double cd_pow2(int e)
+static inline double cdist__pow2(int e)
 {
     union { unsigned long long u; double d; } b = {(unsigned long long)(e + 1023) << 52};
     return b.d;

@@ -26,15 +26,15 @@
 /* Relative size of the symmetry-breaking shift (see the top comment). */
 #define CD_POLY_SHIFT 0.0377438833
 
-struct cd_poly_ws {
+struct cdist__poly_ws {
     /* ws[d] solves degree d (d + 1 coefficients), for 2 <= d <= CD_POLY_MAX_DEGREE. */
     gsl_poly_complex_workspace ws[CD_POLY_MAX_DEGREE + 1];
     double matrix[CD_POLY_MAX_DEGREE * CD_POLY_MAX_DEGREE * (CD_POLY_MAX_DEGREE + 1)];
 };
 
-cd_poly_ws *cd_poly_ws_new(void)
+cdist__poly_ws *cdist__poly_ws_new(void)
 {
-    cd_poly_ws *w = calloc(1, sizeof *w);
+    cdist__poly_ws *w = calloc(1, sizeof *w);
     if (!w) return NULL;
     double *m = w->matrix;
     for (int d = 2; d <= CD_POLY_MAX_DEGREE; d++) {
@@ -45,9 +45,9 @@ cd_poly_ws *cd_poly_ws_new(void)
     return w;
 }
 
-void cd_poly_ws_free(cd_poly_ws *ws) { free(ws); }
+void cdist__poly_ws_free(cdist__poly_ws *ws) { free(ws); }
 
-double cd_poly_eval(const double *coef, int degree, double x, double *deriv)
+double cdist__poly_eval(const double *coef, int degree, double x, double *deriv)
 {
     double p = coef[degree], dp = 0.0;
     for (int i = degree - 1; i >= 0; i--) {
@@ -79,14 +79,14 @@ typedef struct poly_ref {
 static double poly_fdf(const void *ctx, double x, double *df)
 {
     const poly_ref *p = ctx;
-    return cd_poly_eval(p->a, p->deg, x, df);
+    return cdist__poly_eval(p->a, p->deg, x, df);
 }
 
 /* A few Newton steps on the polynomial; a step is kept only while it reduces |p|. */
 static double polish(const double *a, int deg, double x)
 {
     poly_ref p = {a, deg};
-    return cd_root_polish(poly_fdf, &p, x, 0.0, 0.0, 4);
+    return cdist__root_polish(poly_fdf, &p, x, 0.0, 0.0, 4);
 }
 
 /* Fujiwara's bound on the moduli of the roots of sum a[i] x^i (a[n] != 0). */
@@ -121,7 +121,7 @@ static void taylor_shift(const double *a, int n, double s, double *c)
         for (int j = n - 1; j >= i; j--) c[j] = fma(s, c[j + 1], c[j]);
 }
 
-int cd_poly_real_roots(cd_poly_ws *ws, const double *coef, int degree, double imag_tol, double *roots)
+int cdist__poly_real_roots(cdist__poly_ws *ws, const double *coef, int degree, double imag_tol, double *roots)
 {
     if (!ws || degree < 0 || degree > CD_POLY_MAX_DEGREE) return CD_POLY_FAIL;
     double a[CD_POLY_MAX_DEGREE + 1];

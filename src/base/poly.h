@@ -5,11 +5,11 @@
 
 #define CD_POLY_MAX_DEGREE 8
 
-typedef struct cd_poly_ws cd_poly_ws;
+typedef struct cdist__poly_ws cdist__poly_ws;
 
 /* Workspaces for every degree up to CD_POLY_MAX_DEGREE. NULL when memory runs out. */
-cd_poly_ws *cd_poly_ws_new(void);
-void cd_poly_ws_free(cd_poly_ws *ws);
+cdist__poly_ws *cdist__poly_ws_new(void);
+void cdist__poly_ws_free(cdist__poly_ws *ws);
 
 /* Real roots of sum_{i=0}^{degree} coef[i] x^i (ascending order), sorted ascending, written to
  * roots (room for `degree` values). Leading coefficients below a relative threshold are
@@ -20,9 +20,9 @@ void cd_poly_ws_free(cd_poly_ws *ws);
  * CD_POLY_FAIL when a coefficient is not finite, degree is out of range, or GSL failed. */
 #define CD_POLY_ZERO (-1)
 #define CD_POLY_FAIL (-2)
-int cd_poly_real_roots(cd_poly_ws *ws, const double *coef, int degree, double imag_tol, double *roots);
+int cdist__poly_real_roots(cdist__poly_ws *ws, const double *coef, int degree, double imag_tol, double *roots);
 
 /* Horner evaluation of the polynomial and its derivative. */
-double cd_poly_eval(const double *coef, int degree, double x, double *deriv);
+double cdist__poly_eval(const double *coef, int degree, double x, double *deriv);
 
 #endif

@@ -7,7 +7,7 @@
 #include <float.h>
 #include <math.h>
 
-double cd_root_brent(cd_f_fn f, const void *ctx, double a, double fa, double b, double fb, double rel, double abs,
+double cdist__root_brent(cdist__f_fn f, const void *ctx, double a, double fa, double b, double fb, double rel, double abs,
                      int max_iter, double *fx)
 {
     if (fa != fa || fb != fb) return NAN;
@@ -59,7 +59,7 @@ double cd_root_brent(cd_f_fn f, const void *ctx, double a, double fa, double b, 
     return b;
 }
 
-double cd_min_brent(cd_f_fn f, const void *ctx, double a, double b, double rel, double abs, int max_iter,
+double cdist__min_brent(cdist__f_fn f, const void *ctx, double a, double b, double rel, double abs, int max_iter,
                     double *fmin)
 {
     const double cgold = 0.3819660112501051; /* (3 - sqrt 5) / 2 */
@@ -119,7 +119,7 @@ double cd_min_brent(cd_f_fn f, const void *ctx, double a, double b, double rel, 
     return x;
 }
 
-double cd_min_golden(cd_f_fn f, const void *ctx, double lo, double hi, double abs, int max_iter, double *fmin)
+double cdist__min_golden(cdist__f_fn f, const void *ctx, double lo, double hi, double abs, int max_iter, double *fmin)
 {
     const double g = 0.6180339887498949;
     double x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo);

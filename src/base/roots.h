@@ -2,8 +2,8 @@
 /* The one root and minimum module of the library (every family's solvers go through it).
  *
  * A family describes its function by a callback and a context pointer:
- *     cd_fdf_fn: f(x) returned, f'(x) written to *df   (for the Newton-based solvers)
- *     cd_f_fn:   f(x) returned                         (derivative-free Brent solvers)
+ *     cdist__fdf_fn: f(x) returned, f'(x) written to *df   (for the Newton-based solvers)
+ *     cdist__f_fn:   f(x) returned                         (derivative-free Brent solvers)
  * A callback that fails (e.g. a user curve returning an error) returns NaN and records the
  * reason in its context; every solver then stops and returns NaN.
  *
@@ -11,7 +11,7 @@
  * library's defaults are CD_ROOT_REL_ULPS * eps and CD_ROOT_ABS (src/base/tolerances.h), for
  * problems scaled to L in [1, 2) (src/base/numeric.h).
  *
- * cd_root_newton and cd_root_polish are always inlined so that a hot family (line-circle) gets
+ * cdist__root_newton and cdist__root_polish are always inlined so that a hot family (line-circle) gets
  * them specialised for its callback (the call through the pointer is inlined away); the
  * Brent solvers are out of line (roots.c). */
 #ifndef CDIST_BASE_ROOTS_H
@@ -22,8 +22,8 @@
 #include "base/numeric.h"
 #include "base/tolerances.h"
 
-typedef double (*cd_fdf_fn)(const void *ctx, double x, double *df);
-typedef double (*cd_f_fn)(const void *ctx, double x);
+typedef double (*cdist__fdf_fn)(const void *ctx, double x, double *df);
+typedef double (*cdist__f_fn)(const void *ctx, double x);
 
 /* Root of f in [lo, hi] where f increases through zero (dir = +1: f(lo) <= 0 <= f(hi)) or
  * decreases (dir = -1), the ends' values not needed. Safeguarded Newton (rtsafe): starts at the
@@ -32,7 +32,7 @@ typedef double (*cd_f_fn)(const void *ctx, double x);
  * Converged when a Newton step is below rel * |x| or abs, or the bracket is below abs.
  * Every operation commutes with x -> -x for an odd f, so mirrored brackets give mirrored
  * roots. Returns lo when lo >= hi, NaN when the callback failed. */
-CD_INLINE double cd_root_newton(cd_fdf_fn fdf, const void *ctx, double lo, double hi, int dir, double rel,
+CD_INLINE double cdist__root_newton(cdist__fdf_fn fdf, const void *ctx, double lo, double hi, int dir, double rel,
                                  double abs, int max_iter)
 {
     if (!(lo < hi)) return lo;
@@ -66,7 +66,7 @@ CD_INLINE double cd_root_newton(cd_fdf_fn fdf, const void *ctx, double lo, doubl
 /* Newton on f from x (a root estimate, e.g. from a polynomial), a step kept only while |f|
  * decreases; stops when a step is below rel * |x| or abs (abs = 0, rel = 0: only the |f| test).
  * Returns the polished x (x itself when no step helped), NaN when the callback failed. */
-CD_INLINE double cd_root_polish(cd_fdf_fn fdf, const void *ctx, double x, double rel, double abs,
+CD_INLINE double cdist__root_polish(cdist__fdf_fn fdf, const void *ctx, double x, double rel, double abs,
                                     int max_iter)
 {
     double df, f = fdf(ctx, x, &df);
@@ -91,7 +91,7 @@ CD_INLINE double cd_root_polish(cd_fdf_fn fdf, const void *ctx, double x, double
  * shrink the bracket fast enough). Stops when the bracket half-width is below
  * rel * |x| + abs. Writes f at the returned root to *fx (may be NULL; that is the last value
  * evaluated there, or fa/fb). Returns NaN when the callback failed. */
-double cd_root_brent(cd_f_fn f, const void *ctx, double a, double fa, double b, double fb, double rel, double abs,
+double cdist__root_brent(cdist__f_fn f, const void *ctx, double a, double fa, double b, double fb, double rel, double abs,
                      int max_iter, double *fx);
 
 /* Local minimum of f on [a, b]: Brent's method (parabolic steps through the three best
@@ -99,12 +99,12 @@ double cd_root_brent(cd_f_fn f, const void *ctx, double a, double fa, double b, 
  * around the best point is within 2 (rel * |x| + abs). Writes f at the minimum to *fmin (may be
  * NULL). Returns NaN when the callback failed. abs should exceed the noise of f's argmin,
  * about sqrt(eps) * |b - a| for a smooth f (a parabola cannot resolve below it). */
-double cd_min_brent(cd_f_fn f, const void *ctx, double a, double b, double rel, double abs, int max_iter,
+double cdist__min_brent(cdist__f_fn f, const void *ctx, double a, double b, double rel, double abs, int max_iter,
                     double *fmin);
 
 /* Golden-section search for a minimum of f on [lo, hi] (no parabolic steps: for functions
  * whose values are accurate but whose shape is not smooth at the scale of the bracket). Stops
  * when the bracket is below abs or after max_iter steps. Same conventions. */
-double cd_min_golden(cd_f_fn f, const void *ctx, double lo, double hi, double abs, int max_iter, double *fmin);
+double cdist__min_golden(cdist__f_fn f, const void *ctx, double lo, double hi, double abs, int max_iter, double *fmin);
 
 #endif

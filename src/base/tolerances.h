@@ -90,7 +90,7 @@
  * (0.618^60 ~ 3e-13 of a two-sample bracket, below which g's sign is noise anyway). */
 #define CD_CURVE_GOLDEN_ULPS 4.0
 #define CD_CURVE_GOLDEN_MAX_ITER 60
-/* cd_cs_polish's first step from a candidate, relative to max(span, |t|), growing by 4 at most
+/* cdist__cs_polish's first step from a candidate, relative to max(span, |t|), growing by 4 at most
  * CD_CURVE_POLISH_STEPS times (4^40 covers any span). */
 #define CD_CURVE_POLISH_STEP_REL 1e-10
 #define CD_CURVE_POLISH_STEPS 40

@@ -51,15 +51,15 @@ CD_INLINE void v_basis(vec3 n, vec3 *u, vec3 *v)
 }
 
 /* A validated circle: unit normal n, basis u, v (cdist_circle_basis rule), radius r. */
-typedef struct cd_circle {
+typedef struct cdist__circle {
     vec3 c, n, u, v;
     double r;
-} cd_circle;
+} cdist__circle;
 
 /* Angle of a point given relative to the circle centre, in (-pi, pi]; NaN when undefined. */
-CD_INLINE double cd_circle_angle(const cd_circle *c, vec3 rel)
+CD_INLINE double cdist__circle_angle(const cdist__circle *c, vec3 rel)
 {
-    return cd_polar_angle(v_dot(c->u, rel), v_dot(c->v, rel));
+    return cdist__polar_angle(v_dot(c->u, rel), v_dot(c->v, rel));
 }
 
 #endif

@@ -97,7 +97,7 @@ size_t cdist_kind_size_b(cdist_kind k) { return kind_ok(k) ? kinds[k].size_b : 0
 
 /* ---- one range of entries ---- */
 
-static void record(cd_slot *slot, cdist_query *h, size_t i, cdist_status st)
+static void record(cdist__slot *slot, cdist_query *h, size_t i, cdist_status st)
 {
     if (st == CDIST_OK || slot->fail != SIZE_MAX) return; /* a thread meets its entries in order */
     slot->fail = i;
@@ -106,18 +106,18 @@ static void record(cd_slot *slot, cdist_query *h, size_t i, cdist_status st)
 }
 
 /* The scalar path of one entry: the single query itself. */
-static void entry(cdist_query *h, const cd_job *job, size_t i, cd_slot *slot)
+static void entry(cdist_query *h, const cdist__job *job, size_t i, cdist__slot *slot)
 {
     kind_fn f = kinds[job->kind].full;
     dist_fn df = kinds[job->kind].dist;
     cdist_status st;
     if (job->results) {
-        st = f(h, cd_job_a(job, i), cd_job_b(job, i), &job->results[i]);
+        st = f(h, cdist__job_a(job, i), cdist__job_b(job, i), &job->results[i]);
     } else if (df) {
-        st = df(h, cd_job_a(job, i), cd_job_b(job, i), &job->distances[i]);
+        st = df(h, cdist__job_a(job, i), cdist__job_b(job, i), &job->distances[i]);
     } else {
         cdist_result r;
-        st = f(h, cd_job_a(job, i), cd_job_b(job, i), &r);
+        st = f(h, cdist__job_a(job, i), cdist__job_b(job, i), &r);
         job->distances[i] = r.distance;
     }
     if (job->statuses) job->statuses[i] = st;
@@ -135,13 +135,13 @@ static inline size_t lowest_bit(uint64_t x)
 #endif
 }
 
-void cd_batch_range(cdist_query *h, const cd_job *job, size_t lo, size_t hi, cd_slot *slot)
+void cdist__batch_range(cdist_query *h, const cdist__job *job, size_t lo, size_t hi, cdist__slot *slot)
 {
     int kernel = kinds[job->kind].kernel;
     if (job->distances && kernel != NO_KERNEL) {
         for (size_t i = lo; i < hi; i += 64) {
             size_t cnt = hi - i < 64 ? hi - i : 64;
-            uint64_t left = cd_point_distance_kernel(job, kernel == POINT_DISK_KERNEL, h->unit_tol, i, cnt);
+            uint64_t left = cdist__point_distance_kernel(job, kernel == POINT_DISK_KERNEL, h->unit_tol, i, cnt);
             if (job->statuses)
                 for (size_t k = 0; k < cnt; k++) job->statuses[i + k] = CDIST_OK;
             for (; left; left &= left - 1) entry(h, job, i + lowest_bit(left), slot);
@@ -158,36 +158,36 @@ static cdist_status fail_all(cdist_query *q, cdist_status st, size_t n, cdist_re
                              cdist_status *statuses, const char *why)
 {
     for (size_t i = 0; i < n; i++) {
-        if (results) cd_begin(NULL, &results[i]);
+        if (results) cdist__begin(NULL, &results[i]);
         if (distances) distances[i] = NAN;
         if (statuses) statuses[i] = st;
     }
     if (!q) return st;
-    cd_begin(q, NULL);
-    return cd_fail(q, st, "batch: %s", why);
+    cdist__begin(q, NULL);
+    return cdist__fail(q, st, "batch: %s", why);
 }
 
 static cdist_status run(cdist_query *q, cdist_kind kind, size_t n, const void *a, ptrdiff_t a_stride, const void *b,
                         ptrdiff_t b_stride, cdist_result *results, double *distances, cdist_status *statuses)
 {
     if (n == 0) {
-        if (q) cd_begin(q, NULL);
+        if (q) cdist__begin(q, NULL);
         return q ? CDIST_OK : CDIST_ERR_NULL_ARGUMENT;
     }
     if (!q) return fail_all(q, CDIST_ERR_NULL_ARGUMENT, n, results, distances, statuses, "");
     if (!kind_ok(kind)) {
         fail_all(q, CDIST_ERR_BAD_KIND, n, results, distances, statuses, "");
-        return cd_fail(q, CDIST_ERR_BAD_KIND, "batch: %d is not a cdist_kind (0..%d)", (int)kind, KIND_COUNT - 1);
+        return cdist__fail(q, CDIST_ERR_BAD_KIND, "batch: %d is not a cdist_kind (0..%d)", (int)kind, KIND_COUNT - 1);
     }
     if (!a || !b || !(results || distances))
         return fail_all(q, CDIST_ERR_NULL_ARGUMENT, n, results, distances, statuses,
                         !a ? "first object array is NULL" : !b ? "second object array is NULL" : "output array is NULL");
-    cd_job job = {kind, n, a, b, a_stride, b_stride, results, distances, statuses, 0};
-    cd_slot first;
-    cd_workers_run(q, &job, &first);
-    cd_begin(q, NULL);
+    cdist__job job = {kind, n, a, b, a_stride, b_stride, results, distances, statuses, 0};
+    cdist__slot first;
+    cdist__workers_run(q, &job, &first);
+    cdist__begin(q, NULL);
     if (first.fail == SIZE_MAX) return CDIST_OK;
-    return cd_fail(q, first.status, "batch entry %zu: %.200s", first.fail, first.message);
+    return cdist__fail(q, first.status, "batch entry %zu: %.200s", first.fail, first.message);
 }
 
 cdist_status cdist_batch(cdist_query *q, cdist_kind kind, size_t n, const void *a, ptrdiff_t a_stride, const void *b,

@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 /* Distance kernels of point-circle and point-disk for cdist_batch_distance: the closed forms of
- * src/point/point.c with the validation of cd_check_point/cd_check_circle, operation by operation
+ * src/point/point.c with the validation of cdist__check_point/cdist__check_circle, operation by operation
  * (same roundings, fma where the scalar code calls fma), so every distance is bit-identical to
  * the single query's. AVX-512 (8 lanes) and AVX2 (4 lanes) versions are chosen at run time;
  * the scalar version serves the tails and other machines. Entries failing any check are left
@@ -50,12 +50,12 @@ static int point_one(const cdist_vec3 *P, const cdist_circle *C, int disk, doubl
     return 0;
 }
 
-static uint64_t kernel_scalar(const cd_job *job, int disk, double tol, size_t lo, size_t count)
+static uint64_t kernel_scalar(const cdist__job *job, int disk, double tol, size_t lo, size_t count)
 {
     uint64_t left = 0;
     for (size_t k = 0; k < count; k++) {
         size_t i = lo + k;
-        if (point_one(cd_job_a(job, i), cd_job_b(job, i), disk, tol, &job->distances[i])) left |= (uint64_t)1 << k;
+        if (point_one(cdist__job_a(job, i), cdist__job_b(job, i), disk, tol, &job->distances[i])) left |= (uint64_t)1 << k;
     }
     return left;
 }
@@ -116,7 +116,7 @@ AVX512 static inline void load8(const char *p, ptrdiff_t stride, int fields, __m
     col[7] = _mm512_setzero_pd();
 }
 
-AVX512 static uint64_t kernel_avx512(const cd_job *job, int disk, double tol, size_t lo, size_t count)
+AVX512 static uint64_t kernel_avx512(const cdist__job *job, int disk, double tol, size_t lo, size_t count)
 {
     uint64_t left = 0;
     size_t k = 0;
@@ -124,7 +124,7 @@ AVX512 static uint64_t kernel_avx512(const cd_job *job, int disk, double tol, si
     const __m512d vtol = _mm512_set1_pd(tol);
     for (; k + 8 <= count; k += 8) {
         size_t i = lo + k;
-        const char *pa = cd_job_a(job, i), *pb = cd_job_b(job, i);
+        const char *pa = cdist__job_a(job, i), *pb = cdist__job_b(job, i);
         __m512d col[8], pt[8];
         load8(pb, job->b_stride, 7, col);
         load8(pa, job->a_stride, 3, pt);
@@ -177,7 +177,7 @@ AVX2 static inline int in4(__m256d x, __m256d y, __m256d z, __m256d lim)
     return le4(abs4(x), lim) & le4(abs4(y), lim) & le4(abs4(z), lim);
 }
 
-AVX2 static uint64_t kernel_avx2(const cd_job *job, int disk, double tol, size_t lo, size_t count)
+AVX2 static uint64_t kernel_avx2(const cdist__job *job, int disk, double tol, size_t lo, size_t count)
 {
     uint64_t left = 0;
     size_t k = 0;
@@ -187,7 +187,7 @@ AVX2 static uint64_t kernel_avx2(const cd_job *job, int disk, double tol, size_t
     const __m256i ia = _mm256_set_epi64x(3 * as, 2 * as, as, 0), ib = _mm256_set_epi64x(3 * bs, 2 * bs, bs, 0);
     for (; k + 4 <= count; k += 4) {
         size_t i = lo + k;
-        const char *pa = cd_job_a(job, i), *pb = cd_job_b(job, i);
+        const char *pa = cdist__job_a(job, i), *pb = cdist__job_b(job, i);
         __m256d px = _mm256_i64gather_pd((const double *)pa, ia, 1),
                 py = _mm256_i64gather_pd((const double *)(pa + 8), ia, 1),
                 pz = _mm256_i64gather_pd((const double *)(pa + 16), ia, 1);
@@ -228,7 +228,7 @@ AVX2 static uint64_t kernel_avx2(const cd_job *job, int disk, double tol, size_t
     return left;
 }
 
-typedef uint64_t (*kernel_fn)(const cd_job *, int, double, size_t, size_t);
+typedef uint64_t (*kernel_fn)(const cdist__job *, int, double, size_t, size_t);
 
 static kernel_fn pick(void)
 {
@@ -238,7 +238,7 @@ static kernel_fn pick(void)
     return kernel_scalar;
 }
 
-uint64_t cd_point_distance_kernel(const cd_job *job, int disk, double unit_tol, size_t lo, size_t count)
+uint64_t cdist__point_distance_kernel(const cdist__job *job, int disk, double unit_tol, size_t lo, size_t count)
 {
     static kernel_fn chosen; /* a benign race: every thread computes the same value */
     kernel_fn f = __atomic_load_n(&chosen, __ATOMIC_RELAXED);
@@ -251,7 +251,7 @@ uint64_t cd_point_distance_kernel(const cd_job *job, int disk, double unit_tol, 
 
 #else
 
-uint64_t cd_point_distance_kernel(const cd_job *job, int disk, double unit_tol, size_t lo, size_t count)
+uint64_t cdist__point_distance_kernel(const cdist__job *job, int disk, double unit_tol, size_t lo, size_t count)
 {
     return kernel_scalar(job, disk, unit_tol, lo, count);
 }

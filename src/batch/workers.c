@@ -26,14 +26,14 @@ static inline void cpu_relax(void)
 #endif
 }
 
-typedef struct cd_worker {
-    struct cd_workers *pool;
+typedef struct cdist__worker {
+    struct cdist__workers *pool;
     cdist_query *handle;
     pthread_t thread;
-    cd_slot slot;
-} cd_worker;
+    cdist__slot slot;
+} cdist__worker;
 
-struct cd_workers {
+struct cdist__workers {
     int threads; /* including the calling thread */
     int started; /* pthreads running */
     pthread_mutex_t mutex;
@@ -41,26 +41,26 @@ struct cd_workers {
     atomic_ulong generation; /* incremented (under the mutex) per batch and to quit */
     int pending;              /* workers still busy with the current batch */
     int quit;
-    const cd_job *job;
+    const cdist__job *job;
     atomic_size_t next; /* first entry not yet handed out */
-    cd_worker w[];      /* threads - 1 */
+    cdist__worker w[];      /* threads - 1 */
 };
 
 /* Take chunks until none is left. */
-static void drain(struct cd_workers *p, const cd_job *job, cdist_query *h, cd_slot *slot)
+static void drain(struct cdist__workers *p, const cdist__job *job, cdist_query *h, cdist__slot *slot)
 {
     for (;;) {
         size_t lo = atomic_fetch_add_explicit(&p->next, job->chunk, memory_order_relaxed);
         if (lo >= job->n) return;
         size_t hi = job->n - lo < job->chunk ? job->n : lo + job->chunk;
-        cd_batch_range(h, job, lo, hi, slot);
+        cdist__batch_range(h, job, lo, hi, slot);
     }
 }
 
 static void *worker_main(void *arg)
 {
-    cd_worker *w = arg;
-    struct cd_workers *p = w->pool;
+    cdist__worker *w = arg;
+    struct cdist__workers *p = w->pool;
     unsigned long seen = 0;
     for (;;) {
         for (int i = 0; i < CD_SPIN && atomic_load_explicit(&p->generation, memory_order_relaxed) == seen; i++)
@@ -73,7 +73,7 @@ static void *worker_main(void *arg)
             return NULL;
         }
         seen = atomic_load_explicit(&p->generation, memory_order_relaxed);
-        const cd_job *job = p->job;
+        const cdist__job *job = p->job;
         pthread_mutex_unlock(&p->mutex);
         w->slot.fail = SIZE_MAX;
         drain(p, job, w->handle, &w->slot);
@@ -83,7 +83,7 @@ static void *worker_main(void *arg)
     }
 }
 
-void cd_workers_free(struct cd_workers *p)
+void cdist__workers_free(struct cdist__workers *p)
 {
     if (!p) return;
     if (p->started > 0) {
@@ -110,13 +110,13 @@ static cdist_status sync_one(cdist_query *q, cdist_query *w)
     if ((st = cdist_query_set_method(w, q->method)) || (st = cdist_query_set_unit_tolerance(w, q->unit_tol)) ||
         (st = cdist_query_set_curve_samples(w, q->curve_samples)) ||
         (st = cdist_query_set_max_iterations(w, q->max_iterations)))
-        return cd_fail(q, st, "worker handle: %s", cdist_query_last_error(w));
+        return cdist__fail(q, st, "worker handle: %s", cdist_query_last_error(w));
     return CDIST_OK;
 }
 
-cdist_status cd_workers_sync(cdist_query *q)
+cdist_status cdist__workers_sync(cdist_query *q)
 {
-    struct cd_workers *p = q->workers;
+    struct cdist__workers *p = q->workers;
     if (!p) return CDIST_OK;
     for (int i = 0; i < p->threads - 1; i++) {
         cdist_status st = sync_one(q, p->w[i].handle);
@@ -129,14 +129,14 @@ cdist_status cdist_query_set_threads(cdist_query *q, int threads)
 {
     if (!q) return CDIST_ERR_NULL_ARGUMENT;
     if (threads < 1 || threads > CD_MAX_THREADS)
-        return cd_fail(q, CDIST_ERR_BAD_OPTION, "threads must be in [1, %d] (got %d)", CD_MAX_THREADS, threads);
-    cd_begin(q, NULL);
+        return cdist__fail(q, CDIST_ERR_BAD_OPTION, "threads must be in [1, %d] (got %d)", CD_MAX_THREADS, threads);
+    cdist__begin(q, NULL);
     if (threads == cdist_query_get_threads(q)) return CDIST_OK;
-    cd_workers_free(q->workers);
+    cdist__workers_free(q->workers);
     q->workers = NULL;
     if (threads == 1) return CDIST_OK;
-    struct cd_workers *p = calloc(1, sizeof *p + (size_t)(threads - 1) * sizeof(cd_worker));
-    if (!p) return cd_fail(q, CDIST_ERR_NO_MEMORY, "out of memory for %d threads", threads);
+    struct cdist__workers *p = calloc(1, sizeof *p + (size_t)(threads - 1) * sizeof(cdist__worker));
+    if (!p) return cdist__fail(q, CDIST_ERR_NO_MEMORY, "out of memory for %d threads", threads);
     p->threads = threads;
     pthread_mutex_init(&p->mutex, NULL);
     pthread_cond_init(&p->start, NULL);
@@ -147,15 +147,15 @@ cdist_status cdist_query_set_threads(cdist_query *q, int threads)
         p->w[i].pool = p;
         p->w[i].handle = cdist_query_new();
         if (!p->w[i].handle || sync_one(q, p->w[i].handle)) {
-            cd_workers_free(p);
-            return cd_fail(q, CDIST_ERR_NO_MEMORY, "out of memory for the handles of %d threads", threads);
+            cdist__workers_free(p);
+            return cdist__fail(q, CDIST_ERR_NO_MEMORY, "out of memory for the handles of %d threads", threads);
         }
     }
     for (int i = 0; i < threads - 1; i++) {
         int e = pthread_create(&p->w[i].thread, NULL, worker_main, &p->w[i]);
         if (e) {
-            cd_workers_free(p);
-            return cd_fail(q, CDIST_ERR_THREAD, "could not start worker thread %d of %d (error %d)", i + 1,
+            cdist__workers_free(p);
+            return cdist__fail(q, CDIST_ERR_THREAD, "could not start worker thread %d of %d (error %d)", i + 1,
                            threads, e);
         }
         p->started++;
@@ -166,21 +166,21 @@ cdist_status cdist_query_set_threads(cdist_query *q, int threads)
 
 int cdist_query_get_threads(const cdist_query *q) { return (q && q->workers) ? q->workers->threads : 1; }
 
-static void take_lower(cd_slot *first, const cd_slot *s)
+static void take_lower(cdist__slot *first, const cdist__slot *s)
 {
     if (s->fail < first->fail) *first = *s;
 }
 
-void cd_workers_run(cdist_query *q, const cd_job *job_in, cd_slot *first)
+void cdist__workers_run(cdist_query *q, const cdist__job *job_in, cdist__slot *first)
 {
-    struct cd_workers *p = q->workers;
-    cd_job job = *job_in;
+    struct cdist__workers *p = q->workers;
+    cdist__job job = *job_in;
     first->fail = SIZE_MAX;
     int threads = p ? p->threads : 1;
     if (threads > 1 && job.n < (size_t)threads * CD_MIN_ENTRIES_PER_THREAD) threads = 1;
-    if (threads == 1 || cd_workers_sync(q)) {
+    if (threads == 1 || cdist__workers_sync(q)) {
         job.chunk = job.n;
-        cd_batch_range(q, &job, 0, job.n, first);
+        cdist__batch_range(q, &job, 0, job.n, first);
         return;
     }
     /* Chunks: about 16 per thread (load balance), a multiple of the kernels' 64 entries. */

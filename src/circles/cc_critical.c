@@ -6,7 +6,7 @@
 #include "circles/circles-priv.h"
 
 /* Angles where A crosses B's axis (w(t) = 0), the non-smooth points of F. */
-static int axis_crossings(const cd_cc_frame *f, double *t)
+static int axis_crossings(const cdist__cc_frame *f, double *t)
 {
     /* 2D coordinates in the plane orthogonal to m. */
     vec3 e1, e2;
@@ -45,7 +45,7 @@ static int axis_crossings(const cd_cc_frame *f, double *t)
     return n;
 }
 
-int cd_circle_circle_critical(cdist_query *q, const cd_circle *c0, const cd_circle *c1, double *theta0, int cap)
+int cdist__circle_circle_critical(cdist_query *q, const cdist__circle *c0, const cdist__circle *c1, double *theta0, int cap)
 {
     (void)q;
     if (cap < 0) cap = 0;
@@ -55,7 +55,7 @@ int cd_circle_circle_critical(cdist_query *q, const cd_circle *c0, const cd_circ
     int ex;
     frexp(fmax(fmax(c0->r, c1->r), v_norm(C)), &ex);
     double sc = ldexp(1.0, -ex);
-    cd_circle a = *c0, b = *c1;
+    cdist__circle a = *c0, b = *c1;
     a.c = v3(0, 0, 0);
     a.r *= sc;
     b.c = v_scale(sc, C);
@@ -63,19 +63,19 @@ int cd_circle_circle_critical(cdist_query *q, const cd_circle *c0, const cd_circ
     c0 = &a;
     c1 = &b;
     C = b.c;
-    cd_cc_frame f;
-    cd_cc_frame_init(&f, c0, C, c1);
-    cd_cc_sink k = {.f = &f, .want_max = 1, .out = theta0, .cap = cap, .A = c0, .B = c1,
+    cdist__cc_frame f;
+    cdist__cc_frame_init(&f, c0, C, c1);
+    cdist__cc_sink k = {.f = &f, .want_max = 1, .out = theta0, .cap = cap, .A = c0, .B = c1,
                  .Fmin = INFINITY, .dmin = INFINITY, .rho_min = INFINITY};
     double Fmax, tp[4];
-    int np = cd_cc_parallel_critical(&f, tp);
+    int np = cdist__cc_parallel_critical(&f, tp);
     if (np > 0) {
         double dlo = INFINITY, dhi = 0;
         for (int i = 0; i < np; i++) {
-            cd_cc_pt p;
+            cdist__cc_pt p;
             double c, s;
             sincos(tp[i], &s, &c);
-            cd_cc_eval_lean(&f, tp[i], c, s, &p);
+            cdist__cc_eval_lean(&f, tp[i], c, s, &p);
             dlo = fmin(dlo, p.d);
             dhi = fmax(dhi, p.d);
             if (i < cap) theta0[i] = tp[i];
@@ -83,7 +83,7 @@ int cd_circle_circle_critical(cdist_query *q, const cd_circle *c0, const cd_circ
         if (dhi - dlo <= CC_EQUI_ULPS * DBL_EPSILON * f.L) return -1;
         return np < cap ? np : cap;
     }
-    cd_cc_scan(&f, &k, &Fmax);
+    cdist__cc_scan(&f, &k, &Fmax);
     int n = k.count < cap ? k.count : cap;
     double L = fmax(fmax(c0->r, c1->r), v_norm(C));
     /* Constant F (also when F' never changes sign: a periodic F that is not constant has a

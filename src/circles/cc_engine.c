@@ -132,7 +132,7 @@ static void tp_mul(const tpoly *x, int dx, const tpoly *y, int dy, tpoly *z)
     *z = r;
 }
 
-void cd_cc_frame_init(cd_cc_frame *f, const cd_circle *A, vec3 C, const cd_circle *B)
+void cdist__cc_frame_init(cdist__cc_frame *f, const cdist__circle *A, vec3 C, const cdist__circle *B)
 {
     f->R = A->r;
     f->s = B->r;
@@ -144,15 +144,15 @@ void cd_cc_frame_init(cd_cc_frame *f, const cd_circle *A, vec3 C, const cd_circl
     f->rg.al = v_scale(f->R, v_cross(m, A->u));
     f->rg.be = v_scale(f->R, v_cross(m, A->v));
     f->rg.ga = v_neg(v_cross(m, C));
-    f->rg.ha = f->R * cd_cc_dot3(m, A->u);
-    f->rg.hb = f->R * cd_cc_dot3(m, A->v);
-    f->rg.hc = -cd_cc_dot3(m, C);
-    f->Cu = cd_cc_dot3(C, A->u);
-    f->Cv = cd_cc_dot3(C, A->v);
+    f->rg.ha = f->R * cdist__cc_dot3(m, A->u);
+    f->rg.hb = f->R * cdist__cc_dot3(m, A->v);
+    f->rg.hc = -cdist__cc_dot3(m, C);
+    f->Cu = cdist__cc_dot3(C, A->u);
+    f->Cv = cdist__cc_dot3(C, A->v);
 
     /* Fourier coefficients of Q, sigma, g = w.w' and H = Q sigma^2 - s^2 g^2. */
-    double aa = cd_cc_dot3(f->rg.al, f->rg.al), bb = cd_cc_dot3(f->rg.be, f->rg.be), ab = cd_cc_dot3(f->rg.al, f->rg.be);
-    double ag = cd_cc_dot3(f->rg.al, f->rg.ga), bg = cd_cc_dot3(f->rg.be, f->rg.ga), gg = cd_cc_dot3(f->rg.ga, f->rg.ga);
+    double aa = cdist__cc_dot3(f->rg.al, f->rg.al), bb = cdist__cc_dot3(f->rg.be, f->rg.be), ab = cdist__cc_dot3(f->rg.al, f->rg.be);
+    double ag = cdist__cc_dot3(f->rg.al, f->rg.ga), bg = cdist__cc_dot3(f->rg.be, f->rg.ga), gg = cdist__cc_dot3(f->rg.ga, f->rg.ga);
     tpoly Q, S, G, T, H;
     tp_zero(&Q);
     tp_term(&Q, 0, 0.5 * (aa + bb) + gg, 0);
@@ -207,10 +207,10 @@ void cd_cc_frame_init(cd_cc_frame *f, const cd_circle *A, vec3 C, const cd_circl
 
 /* Everything at angle t with (c, s) = (cos t, sin t): F and F'/2 by the ring evaluator, H with
  * its derivatives and rounding bounds from the same w', g, g1. */
-static void cc_eval(const cd_cc_frame *f, double t, double c, double s, cd_cc_pt *p)
+static void cc_eval(const cdist__cc_frame *f, double t, double c, double s, cdist__cc_pt *p)
 {
-    cd_ring_val v;
-    cd_ring_eval(&f->rg, f->s, c, s, 2, &v);
+    cdist__ring_val v;
+    cdist__ring_eval(&f->rg, f->s, c, s, 2, &v);
     double Q = v.Q, g = v.g, g1 = v.g1;
     double sig = f->R * (f->Cu * s - f->Cv * c), sig1 = f->R * (f->Cu * c + f->Cv * s);
     double s2 = f->s * f->s;
@@ -219,7 +219,7 @@ static void cc_eval(const cd_cc_frame *f, double t, double c, double s, cd_cc_pt
     p->s = s;
     p->H = Q * sig * sig - s2 * g * g;
     p->H1 = 2 * g * sig * sig + 2 * Q * sig * sig1 - 2 * s2 * g * g1;
-    double g2 = 3 * (cd_cc_dot3(v.w1, f->rg.ga) - g) - g; /* 3 w'.w'' + w.w''' with w''' = -w' */
+    double g2 = 3 * (cdist__cc_dot3(v.w1, f->rg.ga) - g) - g; /* 3 w'.w'' + w.w''' with w''' = -w' */
     p->H2 = 2 * g1 * sig * sig + 8 * g * sig * sig1 + 2 * Q * (sig1 * sig1 - sig * sig) - 2 * s2 * (g1 * g1 + g * g2);
     double rho = v.rho;
     p->F1 = v.F1;
@@ -243,17 +243,17 @@ static void cc_eval(const cd_cc_frame *f, double t, double c, double s, cd_cc_pt
 }
 
 /* F'/2 and F''/2 only (for the refinement). */
-static void cc_deriv(const cd_cc_frame *f, double c, double s, double *F1, double *F2)
+static void cc_deriv(const cdist__cc_frame *f, double c, double s, double *F1, double *F2)
 {
-    cd_ring_val v;
-    cd_ring_eval(&f->rg, f->s, c, s, 2, &v);
+    cdist__ring_val v;
+    cdist__ring_eval(&f->rg, f->s, c, s, 2, &v);
     *F1 = v.F1;
     *F2 = v.F2;
 }
 
 /* A root of F' in [a, b] where F'(a) and F'(b) have opposite signs (dir = +1 for (-,+), -1 for
  * (+,-)): safeguarded Newton on the true F', falling back to bisection. */
-static double refine(const cd_cc_frame *f, const cd_cc_pt *a, const cd_cc_pt *b, int dir)
+static double refine(const cdist__cc_frame *f, const cdist__cc_pt *a, const cdist__cc_pt *b, int dir)
 {
     double lo = a->t, hi = b->t; /* dir * F'(lo) < 0 <= dir * F'(hi) */
     double fa = dir * a->F1, fb = dir * b->F1;
@@ -290,7 +290,7 @@ static double refine(const cd_cc_frame *f, const cd_cc_pt *a, const cd_cc_pt *b,
 }
 
 /* Track the extremes of F seen by the scan. */
-static inline void cc_track(cd_cc_sink *k, const cd_cc_pt *cur, double *Fmax)
+static inline void cc_track(cdist__cc_sink *k, const cdist__cc_pt *cur, double *Fmax)
 {
     if (cur->F > *Fmax) *Fmax = cur->F;
     if (cur->F < k->Fmin) {
@@ -299,7 +299,7 @@ static inline void cc_track(cd_cc_sink *k, const cd_cc_pt *cur, double *Fmax)
     }
 }
 
-void cd_cc_pair_at(const cd_cc_frame *f, double t, cd_cc_sink *k)
+void cdist__cc_pair_at(const cdist__cc_frame *f, double t, cdist__cc_sink *k)
 {
     double c, s;
     sincos(t, &s, &c);
@@ -314,7 +314,7 @@ void cd_cc_pair_at(const cd_cc_frame *f, double t, cd_cc_sink *k)
     if (rho > 0) {
         dir = v_cross(w, f->m);
         dir = v_scale(f->s / v_norm(dir), dir);
-        tb = cd_circle_angle(k->B, dir);
+        tb = cdist__circle_angle(k->B, dir);
     } else {
         dir = v_scale(f->s, k->B->u);
         tb = 0.0;
@@ -323,15 +323,15 @@ void cd_cc_pair_at(const cd_cc_frame *f, double t, cd_cc_sink *k)
     double ta = (t <= -M_PI) ? t + 2 * M_PI : (t > M_PI ? t - 2 * M_PI : t);
     if (k->B->r == 0.0) tb = NAN;
     double u = k->unscale, d = sqrt(d2);
-    if (!k->swapped) cd_best_offer(k->best, d2 * u * u, v_scale(u, P), v_scale(u, K), ta, tb);
-    else cd_best_offer(k->best, d2 * u * u, v_scale(u, v_sub(K, f->C)), v_scale(u, v_sub(P, f->C)), tb, ta);
+    if (!k->swapped) cdist__best_offer(k->best, d2 * u * u, v_scale(u, P), v_scale(u, K), ta, tb);
+    else cdist__best_offer(k->best, d2 * u * u, v_scale(u, v_sub(K, f->C)), v_scale(u, v_sub(P, f->C)), tb, ta);
     if (d < k->dmin) {
         k->dmin = d;
         k->rho_min = rho;
     }
 }
 
-static void emit(cd_cc_sink *k, const cd_cc_pt *a, const cd_cc_pt *b)
+static void emit(cdist__cc_sink *k, const cdist__cc_pt *a, const cdist__cc_pt *b)
 {
     int dir = 0;
     if (a->F1 < 0 && b->F1 >= 0) dir = 1;
@@ -342,14 +342,14 @@ static void emit(cd_cc_sink *k, const cd_cc_pt *a, const cd_cc_pt *b)
         double ta = (t <= -M_PI) ? t + 2 * M_PI : (t > M_PI ? t - 2 * M_PI : t);
         if (k->count < k->cap) k->out[k->count] = ta;
         k->count++;
-        cd_cc_pt p;
+        cdist__cc_pt p;
         double c, s;
         sincos(t, &s, &c);
         cc_eval(k->f, t, c, s, &p);
         double d = sqrt(p.F);
         if (d < k->dmin) k->dmin = d;
     } else {
-        cd_cc_pair_at(k->f, t, k);
+        cdist__cc_pair_at(k->f, t, k);
     }
 }
 
@@ -357,7 +357,7 @@ static void emit(cd_cc_sink *k, const cd_cc_pt *a, const cd_cc_pt *b)
 /* Certificates on [a, b] (see the header comment). 1: resolved (<= 1 root of H). First order
  * with the global bounds M1, M2; second order with the endpoint values of H'' and M3 (from each
  * end over half the interval, the cubic lower bound taken at its worst, x = w/2). */
-static int certified(const cd_cc_frame *f, const cd_cc_pt *a, const cd_cc_pt *b)
+static int certified(const cdist__cc_frame *f, const cdist__cc_pt *a, const cdist__cc_pt *b)
 {
     double w = b->t - a->t, x = 0.5 * w;
     if ((a->H > 0 && b->H > 0) || (a->H < 0 && b->H < 0)) {
@@ -408,24 +408,24 @@ static double cc_F_at(const void *ctx, double t)
 {
     double c, s;
     sincos(t, &s, &c);
-    cd_cc_pt p;
-    cd_cc_eval_lean(ctx, t, c, s, &p);
+    cdist__cc_pt p;
+    cdist__cc_eval_lean(ctx, t, c, s, &p);
     return p.F;
 }
 
 /* Brent minimisation of F on [lo, hi] (src/base/roots.h); offers the best point (robust mode).
  * F is computed from accurate rho - s and h, so it keeps its relative accuracy even where F' is
  * noise, and near a minimum it is smooth at the scale of the bracket (parabolic steps). */
-static void min_offer(const cd_cc_frame *f, cd_cc_sink *k, double lo, double hi)
+static void min_offer(const cdist__cc_frame *f, cdist__cc_sink *k, double lo, double hi)
 {
-    double t = cd_min_brent(cc_F_at, f, lo, hi, CD_ROOT_REL_ULPS * DBL_EPSILON, CD_ROOT_ABS, CC_MIN_ITER, NULL);
-    if (t == t) cd_cc_pair_at(f, t, k);
+    double t = cdist__min_brent(cc_F_at, f, lo, hi, CD_ROOT_REL_ULPS * DBL_EPSILON, CD_ROOT_ABS, CC_MIN_ITER, NULL);
+    if (t == t) cdist__cc_pair_at(f, t, k);
 }
 
 /* Dense sampling fallback: F' signs on CC_DENSE_SAMPLES points. */
-static void scan_dense(const cd_cc_frame *f, cd_cc_sink *k, double *Fmax)
+static void scan_dense(const cdist__cc_frame *f, cdist__cc_sink *k, double *Fmax)
 {
-    cd_cc_pt first = {0}, prev = {0}, cur;
+    cdist__cc_pt first = {0}, prev = {0}, cur;
     double step = 2 * M_PI / CC_DENSE_SAMPLES, ch, sh, c = 0, s = 0;
     sincos(step, &sh, &ch);
     for (int i = 0; i <= CC_DENSE_SAMPLES; i++) {
@@ -442,7 +442,7 @@ static void scan_dense(const cd_cc_frame *f, cd_cc_sink *k, double *Fmax)
                 s = s * ch + c * sh;
                 c = cn;
             }
-            cd_cc_eval_lean(f, t, c, s, &cur);
+            cdist__cc_eval_lean(f, t, c, s, &cur);
             cc_track(k, &cur, Fmax);
         }
         if (i == 0) first = cur;
@@ -459,7 +459,7 @@ static void scan_dense(const cd_cc_frame *f, cd_cc_sink *k, double *Fmax)
  * where H is below its rounding and cannot be certified: those windows are scanned on a
  * geometric grid instead (see scan). Writes the angles, returns the count. */
 #define CC_KINK_REL 1e-6
-static int near_kinks(const cd_cc_frame *f, const cd_cc_pt *init, double *tk)
+static int near_kinks(const cdist__cc_frame *f, const cdist__cc_pt *init, double *tk)
 {
     enum { N = CC_INIT_INTERVALS };
     double thr = CC_KINK_REL * f->L;
@@ -480,8 +480,8 @@ static int near_kinks(const cd_cc_frame *f, const cd_cc_pt *init, double *tk)
             double hc = it == 0 ? 0.70710678118654752 /* 0.5 / cos(pi / 4), N = 8 */
                                 : half_sec[it - 1 < 31 ? it - 1 : 31];
             double cm = (cl + ch) * hc, sm = (sl + sh) * hc;
-            cd_ring_val v;
-            cd_ring_eval(&f->rg, f->s, cm, sm, 1, &v);
+            cdist__ring_val v;
+            cdist__ring_eval(&f->rg, f->s, cm, sm, 1, &v);
             rho = v.rho;
             if (rho - 0.5 * f->W1 * width > thr) {
                 miss = 1;
@@ -498,12 +498,12 @@ static int near_kinks(const cd_cc_frame *f, const cd_cc_pt *init, double *tk)
 }
 
 /* Half-width of the window around a near-crossing that only the geometric grid covers. */
-static double kink_core(const cd_cc_frame *f, double t)
+static double kink_core(const cdist__cc_frame *f, double t)
 {
     double c, s;
     sincos(t, &s, &c);
-    cd_ring_val v;
-    cd_ring_eval(&f->rg, f->s, c, s, 0, &v);
+    cdist__ring_val v;
+    cdist__ring_eval(&f->rg, f->s, c, s, 0, &v);
     double r = sqrt(v.rho / f->L);
     return fmin(0.05, 1e3 * r + 1e-12);
 }
@@ -518,7 +518,7 @@ typedef struct cc_deferred {
     double t[CC_DEFER], hw[CC_DEFER], d[CC_DEFER]; /* lowest grid point, half-width, its distance */
 } cc_deferred;
 
-static void deferred_offer(const cd_cc_frame *f, cd_cc_sink *k, const cc_deferred *df)
+static void deferred_offer(const cdist__cc_frame *f, cdist__cc_sink *k, const cc_deferred *df)
 {
     double dbest = fmin(sqrt(k->Fmin), k->dmin);
     double tie = CD_TIE_ULPS * DBL_EPSILON * f->L + 8 * DBL_EPSILON * (f->L + dbest);
@@ -537,10 +537,10 @@ static inline void small_sincos(double h, double *sn, double *cs)
 }
 
 /* The geometric grid around a near-crossing t: t +- 0.1 * 2^(-j/2) down to 1e-17, and t. */
-static void scan_kink(const cd_cc_frame *f, cd_cc_sink *k, double t, double core, double *Fmax, cc_deferred *df)
+static void scan_kink(const cdist__cc_frame *f, cdist__cc_sink *k, double t, double core, double *Fmax, cc_deferred *df)
 {
     enum { NG = 110 };
-    cd_cc_pt prev, cur;
+    cdist__cc_pt prev, cur;
     double ct, st;
     sincos(t, &st, &ct);
     int first = 1;
@@ -554,12 +554,12 @@ static void scan_kink(const cd_cc_frame *f, cd_cc_sink *k, double t, double core
             if (j < j0) continue;
             double h = side * ldexp(j % 2 ? 0.1 * M_SQRT1_2 : 0.1, -(j / 2)), ch, sh;
             if (side > 0 && jj == 0) {
-                cd_cc_eval_lean(f, t, ct, st, &cur);
+                cdist__cc_eval_lean(f, t, ct, st, &cur);
                 emit(k, &prev, &cur);
                 prev = cur;
             }
             small_sincos(h, &sh, &ch);
-            cd_cc_eval_lean(f, t + h, ct * ch - st * sh, st * ch + ct * sh, &cur);
+            cdist__cc_eval_lean(f, t + h, ct * ch - st * sh, st * ch + ct * sh, &cur);
             cc_track(k, &cur, Fmax);
             if (!first) emit(k, &prev, &cur);
             first = 0;
@@ -570,8 +570,8 @@ static void scan_kink(const cd_cc_frame *f, cd_cc_sink *k, double t, double core
      * accurate (d to eps L). Polish the lowest grid neighbourhood by a minimisation of F. */
     if (!k->best) return;
     if (df->n < CC_DEFER) {
-        cd_cc_pt p;
-        cd_cc_eval_lean(f, t, ct, st, &p);
+        cdist__cc_pt p;
+        cdist__cc_eval_lean(f, t, ct, st, &p);
         df->t[df->n] = t;
         df->hw[df->n] = 1e-3;
         df->d[df->n++] = p.d;
@@ -584,13 +584,13 @@ static void scan_kink(const cd_cc_frame *f, cd_cc_sink *k, double t, double core
  * rounding level, where F is flat and may hold close minima): F' signs on a grid as fine as the
  * dense scan's and of at least 64 points, and in robust mode a minimisation of F
  * around the lowest grid point. */
-static void emit_sampled(const cd_cc_frame *f, cd_cc_sink *k, const cd_cc_pt *a, const cd_cc_pt *b, double *Fmax,
+static void emit_sampled(const cdist__cc_frame *f, cdist__cc_sink *k, const cdist__cc_pt *a, const cdist__cc_pt *b, double *Fmax,
                          cc_deferred *df)
 {
     double w = b->t - a->t;
     int n = (int)ceil(w / (2 * M_PI / CC_DENSE_SAMPLES));
     if (n < 64) n = 64;
-    cd_cc_pt prev = *a, cur;
+    cdist__cc_pt prev = *a, cur;
     double Fbest = a->F, tbest = a->t;
     /* cos and sin on the grid by rotation from the last exact pair (re-synchronised every 8
      * steps, so the drift stays at a few ulps). */
@@ -605,7 +605,7 @@ static void emit_sampled(const cd_cc_frame *f, cd_cc_sink *k, const cd_cc_pt *a,
             s = s * ch + c * sh;
             c = cn;
         }
-        cd_cc_eval_lean(f, t, c, s, &cur);
+        cdist__cc_eval_lean(f, t, c, s, &cur);
         cc_track(k, &cur, Fmax);
         if (cur.F < Fbest) Fbest = cur.F, tbest = cur.t;
         emit(k, &prev, &cur);
@@ -626,10 +626,10 @@ static void emit_sampled(const cd_cc_frame *f, cd_cc_sink *k, const cd_cc_pt *a,
 /* Walks [-pi, pi) (see the header comment) and hands every critical bracket to the sink.
  * Fmax: largest F at the partition points. Returns 1 when the certification gave up and the
  * sink does not allow the dense scan (nothing was emitted then), else 0. */
-int cd_cc_scan(const cd_cc_frame *f, cd_cc_sink *k, double *Fmax)
+int cdist__cc_scan(const cdist__cc_frame *f, cdist__cc_sink *k, double *Fmax)
 {
     *Fmax = 0;
-    cd_cc_pt init[CC_INIT_INTERVALS + 1];
+    cdist__cc_pt init[CC_INIT_INTERVALS + 1];
     /* cos and sin of -pi + i pi / 8 (exact to rounding). */
     static const double ic[16] = {-1, -0.92387953251128674, -0.70710678118654757, -0.38268343236508978, 0,
                                   0.38268343236508978, 0.70710678118654757, 0.92387953251128674, 1,
@@ -664,7 +664,7 @@ int cd_cc_scan(const cd_cc_frame *f, cd_cc_sink *k, double *Fmax)
     /* Depth-first, left to right, so consecutive leaves share their endpoints: the current
      * interval is refined in place, right halves wait on the stack. */
     typedef struct {
-        cd_cc_pt b;
+        cdist__cc_pt b;
         int level;
     } ival;
     ival st[CC_STACK];
@@ -681,7 +681,7 @@ int cd_cc_scan(const cd_cc_frame *f, cd_cc_sink *k, double *Fmax)
     for (int i = 0; i < CC_INIT_INTERVALS; i++)
         if (init[i].d < dbest) dbest = init[i].d;
     for (int i = 0; i < CC_INIT_INTERVALS; i++) {
-        cd_cc_pt a = init[i], b = init[i + 1];
+        cdist__cc_pt a = init[i], b = init[i + 1];
         int level = 0, sp = 0;
         evals = 0; /* a cluster of roots exhausts the budget of its own interval only */
         for (;;) {
@@ -731,7 +731,7 @@ int cd_cc_scan(const cd_cc_frame *f, cd_cc_sink *k, double *Fmax)
             /* Midpoint from the endpoint cosines/sines (no transcendental call). */
             double hc = half_sec[level];
             double cm = (a.c + b.c) * hc, sm = (a.s + b.s) * hc;
-            cd_cc_pt mid;
+            cdist__cc_pt mid;
             cc_eval(f, 0.5 * (a.t + b.t), cm, sm, &mid);
             evals++;
             level++;
@@ -752,20 +752,20 @@ int cd_cc_scan(const cd_cc_frame *f, cd_cc_sink *k, double *Fmax)
  * the count, or -1 when the planes are not parallel. The distances at these angles are
  * evaluated on the true F, so the tilt below the threshold moves the answer by at most
  * 2 CD_CC_PARALLEL_ULPS eps L. */
-int cd_cc_parallel_critical(const cd_cc_frame *f, double *t)
+int cdist__cc_parallel_critical(const cdist__cc_frame *f, double *t)
 {
     if (!(hypot(f->rg.ha, f->rg.hb) <= CD_CC_PARALLEL_ULPS * DBL_EPSILON * f->L)) return -1;
     double e = hypot(f->Cu, f->Cv), R = f->R, s = f->s;
     double t0 = e > 0 ? atan2(f->Cv, f->Cu) : 0.0;
     int n = 0;
     t[n++] = t0;
-    t[n++] = cd_wrap_angle(t0 + M_PI);
+    t[n++] = cdist__wrap_angle(t0 + M_PI);
     if (e > 0 && fabs(R - e) < s && s < R + e) {
         /* rho = s: cos(t - t0) = (R^2 + e^2 - s^2) / (2 R e), formed without cancellation */
         double x = ((R - s) * (R + s) + e * e) / (2 * R * e);
         double a = acos(fmax(-1.0, fmin(1.0, x)));
-        t[n++] = cd_wrap_angle(t0 + a);
-        t[n++] = cd_wrap_angle(t0 - a);
+        t[n++] = cdist__wrap_angle(t0 + a);
+        t[n++] = cdist__wrap_angle(t0 - a);
     }
     return n;
 }

@@ -11,8 +11,8 @@
  * projection with both projections in C0's frame: in vector form it is identical, so one loop
  * serves both; for parallel planes (|N0 x N1| <= 1e-13) the paper's closed forms of §2.3 (separated,
  * overlapping: two pairs at distance |pz|, contained) are used instead (shared with the
- * polynomial method: cd_cc_parallel_candidates), and §2.4 (coincident axes: every pair
- * closest, distance sqrt((R1 - R)^2 + pz^2), equidistant) by cd_cc_closed_form. Remark 1
+ * polynomial method: cdist__cc_parallel_candidates), and §2.4 (coincident axes: every pair
+ * closest, distance sqrt((R1 - R)^2 + pz^2), equidistant) by cdist__cc_closed_form. Remark 1
  * (perpendicular axes meeting with the centre of C1 on C0's axis) is a case of meeting axes
  * handled below.
  *
@@ -23,14 +23,14 @@
  *   a final check of F on 16 evenly spread angles of C0; a sample below every fixed point found
  *   starts one more iteration.
  * - Linear (and, near tangency, sublinear) convergence: every distinct fixed point is finished
- *   by safeguarded Newton on the true distance F(theta) (cd_cc_polish), so the answer is exact
+ *   by safeguarded Newton on the true distance F(theta) (cdist__cc_polish), so the answer is exact
  *   to a few ulps whatever the iteration's tolerance.
  * - Axes that meet: the paper reflects the C0 point about the plane through both axes and
  *   iterates again for the second pair; here the reflected point is polished directly, so both
  *   symmetric pairs come out equally accurate.
- * - Scale: the query runs on a copy scaled by a power of two (cd_cc_scale), so squares neither
+ * - Scale: the query runs on a copy scaled by a power of two (cdist__cc_scale), so squares neither
  *   overflow nor underflow; ties, flat minima and circles at constant distance from the other
- *   are sorted out by cd_cc_offer_minima, shared with the polynomial method.
+ *   are sorted out by cdist__cc_offer_minima, shared with the polynomial method.
  * The iteration count reported is that of the start which produced the reported pair (<= the
  * cap); closed forms (points, coaxial, parallel planes) report 0. */
 #include <math.h>
@@ -43,7 +43,7 @@
 
 /* Orthogonal projection of x (relative to the origin = c0's centre) onto circle c centred at
  * cc. On the axis every point is a foot; the basis direction u is taken. */
-static vec3 project(const cd_circle *c, vec3 cc, vec3 x)
+static vec3 project(const cdist__circle *c, vec3 cc, vec3 x)
 {
     /* plain arithmetic: the inner loop (fma() is a library call without hardware FMA flags) */
     double dx = x.x - cc.x, dy = x.y - cc.y, dz = x.z - cc.z;
@@ -57,9 +57,9 @@ static vec3 project(const cd_circle *c, vec3 cc, vec3 x)
 
 /* Alternating projection starting from the point x1 of c1. Returns the angle of the final
  * point of c0 and the number of iterations. */
-static double iterate(const cd_cc *g, vec3 x1, int cap, int *count)
+static double iterate(const cdist__cc *g, vec3 x1, int cap, int *count)
 {
-    const cd_circle *c0 = g->c[0], *c1 = g->c[1];
+    const cdist__circle *c0 = g->c[0], *c1 = g->c[1];
     vec3 zero = v3(0, 0, 0);
     vec3 k0 = project(c0, zero, x1);
     double d2 = INFINITY;
@@ -78,7 +78,7 @@ static double iterate(const cd_cc *g, vec3 x1, int cap, int *count)
         if (stop) break;
     }
     *count = k;
-    double a = cd_circle_angle(c0, k0);
+    double a = cdist__circle_angle(c0, k0);
     return isnan(a) ? 0.0 : a;
 }
 
@@ -87,35 +87,35 @@ typedef struct fixed_pt {
     int iters;
 } fixed_pt;
 
-static cdist_status iteration(cdist_query *q, const cd_circle *c0, const cd_circle *c1, cd_best *b, int *iterations);
+static cdist_status iteration(cdist_query *q, const cdist__circle *c0, const cdist__circle *c1, cdist__best *b, int *iterations);
 
-cdist_status cd_cc_iteration(cdist_query *q, const cd_circle *c0, const cd_circle *c1, cd_best *b, int *iterations)
+cdist_status cdist__cc_iteration(cdist_query *q, const cdist__circle *c0, const cdist__circle *c1, cdist__best *b, int *iterations)
 {
-    cd_circle a, bb;
+    cdist__circle a, bb;
     double s;
-    cd_cc_scale(c0, c1, b->scale, &a, &bb, &s);
-    cd_best sb;
-    cd_best_init(&sb, b->scale * s);
+    cdist__cc_scale(c0, c1, b->scale, &a, &bb, &s);
+    cdist__best sb;
+    cdist__best_init(&sb, b->scale * s);
     cdist_status st = iteration(q, &a, &bb, &sb, iterations);
-    if (st == CDIST_OK) cd_cc_unscale(&sb, s, b);
+    if (st == CDIST_OK) cdist__cc_unscale(&sb, s, b);
     return st;
 }
 
-static cdist_status iteration(cdist_query *q, const cd_circle *c0, const cd_circle *c1, cd_best *b, int *iterations)
+static cdist_status iteration(cdist_query *q, const cdist__circle *c0, const cdist__circle *c1, cdist__best *b, int *iterations)
 {
-    cd_cc g = {{c0, c1}, c1->c, b->scale};
+    cdist__cc g = {{c0, c1}, c1->c, b->scale};
     int dummy;
     if (!iterations) iterations = &dummy;
     *iterations = 0;
-    if (cd_cc_closed_form(&g, b)) return CDIST_OK; /* points; §2.4 coincident axes */
+    if (cdist__cc_closed_form(&g, b)) return CDIST_OK; /* points; §2.4 coincident axes */
     double sn = v_norm(v_cross(c0->n, c1->n));
     if (sn <= 1e-13) { /* §2.3: parallel axes, closed forms, polished */
         double t0[4];
-        int k = cd_cc_parallel_candidates(&g, t0);
+        int k = cdist__cc_parallel_candidates(&g, t0);
         int sd[4] = {0, 0, 0, 0};
         double F[4];
-        for (int i = 0; i < k; i++) t0[i] = cd_cc_polish(&g, 0, t0[i], &F[i]);
-        cd_cc_offer_minima(&g, k, sd, t0, F, b);
+        for (int i = 0; i < k; i++) t0[i] = cdist__cc_polish(&g, 0, t0[i], &F[i]);
+        cdist__cc_offer_minima(&g, k, sd, t0, F, b);
         return CDIST_OK;
     }
     int cap = q->max_iterations > 0 ? q->max_iterations : CD_DEFAULT_MAX_ITERATIONS;
@@ -137,7 +137,7 @@ static cdist_status iteration(cdist_query *q, const cd_circle *c0, const cd_circ
             double Fs = INFINITY, ts = 0.0;
             for (int i = 0; i < CC_CHECKS; i++) {
                 double t = -M_PI + (2.0 * M_PI / CC_CHECKS) * (i + 0.5);
-                double F = cd_cc_eval(&g, 0, t, NULL, NULL, NULL, NULL);
+                double F = cdist__cc_eval(&g, 0, t, NULL, NULL, NULL, NULL);
                 if (F < Fs) Fs = F, ts = t;
             }
             if (!(Fs < best)) break;
@@ -148,7 +148,7 @@ static cdist_status iteration(cdist_query *q, const cd_circle *c0, const cd_circ
         int cnt;
         double t = iterate(&g, x1, cap, &cnt);
         double F;
-        t = cd_cc_polish(&g, 0, t, &F);
+        t = cdist__cc_polish(&g, 0, t, &F);
         /* distinct fixed points only (after the Newton finish, so distinct close minima stay) */
         int dup = -1;
         for (int i = 0; i < nf; i++) {
@@ -164,16 +164,16 @@ static cdist_status iteration(cdist_query *q, const cd_circle *c0, const cd_circ
     }
     /* Axes meeting: the mirror image of every near-best pair (the paper's second pair). */
     vec3 m;
-    if (cd_cc_mirror(&g, &m)) {
+    if (cdist__cc_mirror(&g, &m)) {
         int n0 = nf;
         double margin = 1e-3 * best + 1e-6 * g.L * g.L;
         for (int i = 0; i < n0; i++) {
             if (!(fp[i].F <= best + margin)) continue;
             vec3 p = v_axpy(v_scale(cos(fp[i].t), c0->u), sin(fp[i].t), c0->v);
             p = v_axpy(p, -2.0 * v_dot(p, m), m);
-            double a = cd_circle_angle(c0, p), F;
+            double a = cdist__circle_angle(c0, p), F;
             if (isnan(a)) continue;
-            a = cd_cc_polish(&g, 0, a, &F);
+            a = cdist__cc_polish(&g, 0, a, &F);
             fp[nf].t = a, fp[nf].F = F, fp[nf].iters = fp[i].iters, nf++;
         }
     }
@@ -183,7 +183,7 @@ static cdist_status iteration(cdist_query *q, const cd_circle *c0, const cd_circ
         sd[i] = 0, ft[i] = fp[i].t, fF[i] = fp[i].F;
         if (fp[i].F < fp[ib].F) ib = i;
     }
-    cd_cc_offer_minima(&g, nf, sd, ft, fF, b);
+    cdist__cc_offer_minima(&g, nf, sd, ft, fF, b);
     *iterations = nf ? fp[ib].iters : 0;
     return CDIST_OK;
 }

@@ -52,10 +52,10 @@
 
 /* Plain arithmetic on purpose: without hardware FMA in the build flags fma() is a library call,
  * and this function is the inner loop of every method. */
-static inline double eval_cs(const cd_cc *g, int side, double ct, double st, double *f1, double *f2, vec3 *P,
+static inline double eval_cs(const cdist__cc *g, int side, double ct, double st, double *f1, double *f2, vec3 *P,
                              vec3 *K)
 {
-    const cd_circle *m = g->c[side], *f = g->c[1 - side];
+    const cdist__circle *m = g->c[side], *f = g->c[1 - side];
     double sg = side ? 1.0 : -1.0; /* moving centre relative to the fixed centre: +-D */
     double a = m->r * ct, bb = m->r * st;
     vec3 p = v3(a * m->u.x + bb * m->v.x, a * m->u.y + bb * m->v.y, a * m->u.z + bb * m->v.z);
@@ -87,15 +87,15 @@ static inline double eval_cs(const cd_cc *g, int side, double ct, double st, dou
     return F;
 }
 
-double cd_cc_eval(const cd_cc *g, int side, double t, double *f1, double *f2, vec3 *P, vec3 *K)
+double cdist__cc_eval(const cdist__cc *g, int side, double t, double *f1, double *f2, vec3 *P, vec3 *K)
 {
     return eval_cs(g, side, cos(t), sin(t), f1, f2, P, K);
 }
 
-double cd_cc_polish(const cd_cc *g, int side, double t, double *Fout)
+double cdist__cc_polish(const cdist__cc *g, int side, double t, double *Fout)
 {
     double f1, f2;
-    double F = cd_cc_eval(g, side, t, &f1, &f2, NULL, NULL);
+    double F = cdist__cc_eval(g, side, t, &f1, &f2, NULL, NULL);
     double L = g->L;
     for (int it = 0; it < 60; it++) {
         double step;
@@ -110,7 +110,7 @@ double cd_cc_polish(const cd_cc *g, int side, double t, double *Fout)
         int ok = 0;
         for (int half = 0; half < 40; half++) {
             tn = t + step;
-            Fn = cd_cc_eval(g, side, tn, &g1, &g2, NULL, NULL);
+            Fn = cdist__cc_eval(g, side, tn, &g1, &g2, NULL, NULL);
             if (Fn <= F + tolF) {
                 ok = 1;
                 break;
@@ -128,19 +128,19 @@ double cd_cc_polish(const cd_cc *g, int side, double t, double *Fout)
     return t;
 }
 
-void cd_cc_offer(const cd_cc *g, int side, double t, cd_best *b)
+void cdist__cc_offer(const cdist__cc *g, int side, double t, cdist__best *b)
 {
     vec3 P, K;
-    double F = cd_cc_eval(g, side, t, NULL, NULL, &P, &K);
-    const cd_circle *m = g->c[side], *f = g->c[1 - side];
-    double am = cd_circle_angle(m, P), af = cd_circle_angle(f, K);
+    double F = cdist__cc_eval(g, side, t, NULL, NULL, &P, &K);
+    const cdist__circle *m = g->c[side], *f = g->c[1 - side];
+    double am = cdist__circle_angle(m, P), af = cdist__circle_angle(f, K);
     if (m->r == 0.0) am = NAN;
     if (f->r == 0.0) af = NAN;
-    if (side == 0) cd_best_offer(b, F, P, v_add(K, g->D), am, af);
-    else cd_best_offer(b, F, K, v_add(P, g->D), af, am);
+    if (side == 0) cdist__best_offer(b, F, P, v_add(K, g->D), am, af);
+    else cdist__best_offer(b, F, K, v_add(P, g->D), af, am);
 }
 
-void cd_cc_scale(const cd_circle *c0, const cd_circle *c1, double L, cd_circle *a, cd_circle *b, double *s)
+void cdist__cc_scale(const cdist__circle *c0, const cdist__circle *c1, double L, cdist__circle *a, cdist__circle *b, double *s)
 {
     int e = 0;
     frexp(L > 0.0 && isfinite(L) ? L : 1.0, &e); /* L = m 2^e, m in [0.5, 1) */
@@ -154,39 +154,39 @@ void cd_cc_scale(const cd_circle *c0, const cd_circle *c1, double L, cd_circle *
     *s = k;
 }
 
-void cd_cc_unscale(const cd_best *sc, double s, cd_best *b)
+void cdist__cc_unscale(const cdist__best *sc, double s, cdist__best *b)
 {
     double is = 1.0 / s; /* a power of two: exact */
     for (int i = 0; i < sc->n; i++) {
-        const cd_cand *c = &sc->c[i];
-        cd_best_offer_flag(b, c->equidistant, c->d2 * is * is, v_scale(is, c->p[0]), v_scale(is, c->p[1]),
+        const cdist__cand *c = &sc->c[i];
+        cdist__best_offer_flag(b, c->equidistant, c->d2 * is * is, v_scale(is, c->p[0]), v_scale(is, c->p[1]),
                            c->param[0], c->param[1]);
     }
     b->equidistant |= sc->equidistant;
 }
 
 /* Angle on c0 of the pair found at angle t of side s. */
-static double c0_angle(const cd_cc *g, int side, double t)
+static double c0_angle(const cdist__cc *g, int side, double t)
 {
     if (side == 0) return t;
     vec3 K;
-    cd_cc_eval(g, 1, t, NULL, NULL, NULL, &K);
-    double a = cd_circle_angle(g->c[0], K);
+    cdist__cc_eval(g, 1, t, NULL, NULL, NULL, &K);
+    double a = cdist__circle_angle(g->c[0], K);
     return isnan(a) ? 0.0 : a;
 }
 
 /* Is F_s within `tie` of dbest (in distance) at 64 evenly spread angles? (A smooth variation
  * is seen at >= cos(pi / 64) of its amplitude.) */
-static int flat_side(const cd_cc *g, int s, double dbest, double tie)
+static int flat_side(const cdist__cc *g, int s, double dbest, double tie)
 {
     for (int i = 0; i < 64; i++) {
-        double F = cd_cc_eval(g, s, -M_PI + (M_PI / 32.0) * (i + 0.37), NULL, NULL, NULL, NULL);
+        double F = cdist__cc_eval(g, s, -M_PI + (M_PI / 32.0) * (i + 0.37), NULL, NULL, NULL, NULL);
         if (!(sqrt(F) - dbest <= tie)) return 0;
     }
     return 1;
 }
 
-void cd_cc_offer_minima(const cd_cc *g, int n, const int *side, const double *t, const double *F, cd_best *b)
+void cdist__cc_offer_minima(const cdist__cc *g, int n, const int *side, const double *t, const double *F, cdist__best *b)
 {
     if (n <= 0) return;
     int ib = 0;
@@ -194,15 +194,15 @@ void cd_cc_offer_minima(const cd_cc *g, int n, const int *side, const double *t,
         if (F[i] < F[ib]) ib = i;
     double dbest = sqrt(F[ib]), tie = CD_TIE_ULPS * DBL_EPSILON * g->L;
     double abest = c0_angle(g, side[ib], t[ib]);
-    cd_cc_offer(g, side[ib], t[ib], b);
+    cdist__cc_offer(g, side[ib], t[ib], b);
     /* A circle at constant distance from the other has F_s'' = 0 everywhere; only then are the
      * samples taken (a flat minimum that is not constant fails them). */
     vec3 K;
     double f2[2];
     int sb = side[ib];
-    cd_cc_eval(g, sb, t[ib], NULL, &f2[sb], NULL, &K);
-    double ao = cd_circle_angle(g->c[1 - sb], K);
-    cd_cc_eval(g, 1 - sb, isnan(ao) ? 0.0 : ao, NULL, &f2[1 - sb], NULL, NULL);
+    cdist__cc_eval(g, sb, t[ib], NULL, &f2[sb], NULL, &K);
+    double ao = cdist__circle_angle(g->c[1 - sb], K);
+    cdist__cc_eval(g, 1 - sb, isnan(ao) ? 0.0 : ao, NULL, &f2[1 - sb], NULL, NULL);
     for (int s = 0; s < 2; s++) {
         if (fabs(f2[s]) <= 1e-9 * g->c[s]->r * g->L && flat_side(g, s, dbest, tie)) {
             b->equidistant = 1;
@@ -217,11 +217,11 @@ void cd_cc_offer_minima(const cd_cc *g, int n, const int *side, const double *t,
              * one flat minimum and the best represents it. */
             double ai = c0_angle(g, side[i], t[i]);
             double mid = ai + 0.5 * remainder(abest - ai, 2.0 * M_PI);
-            double f1 = cd_cc_eval(g, 0, mid, NULL, NULL, NULL, NULL);
-            double f2 = cd_cc_eval(g, 0, mid + M_PI, NULL, NULL, NULL, NULL);
+            double f1 = cdist__cc_eval(g, 0, mid, NULL, NULL, NULL, NULL);
+            double f2 = cdist__cc_eval(g, 0, mid + M_PI, NULL, NULL, NULL, NULL);
             if (!(sqrt(f1) - dbest > tie && sqrt(f2) - dbest > tie)) continue;
         }
-        cd_cc_offer(g, side[i], t[i], b);
+        cdist__cc_offer(g, side[i], t[i], b);
     }
 }
 
@@ -231,25 +231,25 @@ void cd_cc_offer_minima(const cd_cc *g, int n, const int *side, const double *t,
  * starting points; the polish finds the true minima of slightly tilted circles). */
 #define CC_NEAR_PARALLEL 1e-2
 
-int cd_cc_closed_form(const cd_cc *g, cd_best *b)
+int cdist__cc_closed_form(const cdist__cc *g, cdist__best *b)
 {
-    const cd_circle *c0 = g->c[0], *c1 = g->c[1];
+    const cdist__circle *c0 = g->c[0], *c1 = g->c[1];
     if (c1->r == 0.0) { /* c1 is the point D (c0 may be a point too) */
-        cd_point_circle_core(g->D, c0, b, 1);
+        cdist__point_circle_core(g->D, c0, b, 1);
         return 1;
     }
     if (c0->r == 0.0) { /* c0 is the origin: point-circle relative to c1, moved back by D */
-        cd_best t;
-        cd_best_init(&t, b->scale);
-        cd_point_circle_core(v_neg(g->D), c1, &t, 0);
+        cdist__best t;
+        cdist__best_init(&t, b->scale);
+        cdist__point_circle_core(v_neg(g->D), c1, &t, 0);
         for (int i = 0; i < t.n; i++)
-            cd_best_offer_flag(b, t.c[i].equidistant, t.c[i].d2, v3(0, 0, 0), v_add(t.c[i].p[1], g->D), NAN,
+            cdist__best_offer_flag(b, t.c[i].equidistant, t.c[i].d2, v3(0, 0, 0), v_add(t.c[i].p[1], g->D), NAN,
                                t.c[i].param[1]);
         return 1;
     }
     /* Coaxial (Eberly §5.1 (a), §5.2; Li et al. §2.4): every point of either circle is equally
      * far from the other, distance sqrt((r1 - r0)^2 + h^2). Doubles are rarely exactly coaxial,
-     * so the test is the one cd_best applies to ties: the distance varies over the circle by less
+     * so the test is the one cdist__best applies to ties: the distance varies over the circle by less
      * than CD_TIE_ULPS ulps of the scale. Bound of that variation, for a point of c1 against c0
      * (s = |n0 x n1|, d0 = |n0 x D| the centre's offset from c0's axis): its height over c0's plane
      * varies by <= 2 r1 s, its axis distance by <= 2 d0 + r1 s^2, and the point-circle distance is
@@ -260,23 +260,23 @@ int cd_cc_closed_form(const cd_cc *g, cd_best *b)
     double var = fmin(2.0 * d0 + c1->r * sn * (2.0 + sn), 2.0 * d1 + c0->r * sn * (2.0 + sn));
     if (var <= CD_TIE_ULPS * DBL_EPSILON * g->L) {
         double F;
-        double t = cd_cc_polish(g, 0, 0.0, &F);
-        cd_cc_offer(g, 0, t, b);
+        double t = cdist__cc_polish(g, 0, 0.0, &F);
+        cdist__cc_offer(g, 0, t, b);
         b->equidistant = 1;
         return 1;
     }
     return 0;
 }
 
-static double angle_of(const cd_circle *c, vec3 dir)
+static double angle_of(const cdist__circle *c, vec3 dir)
 {
-    double a = cd_circle_angle(c, dir);
+    double a = cdist__circle_angle(c, dir);
     return isnan(a) ? 0.0 : a;
 }
 
-int cd_cc_parallel_candidates(const cd_cc *g, double *t0)
+int cdist__cc_parallel_candidates(const cdist__cc *g, double *t0)
 {
-    const cd_circle *c0 = g->c[0], *c1 = g->c[1];
+    const cdist__circle *c0 = g->c[0], *c1 = g->c[1];
     vec3 n = c0->n;
     vec3 nd = v_cross(n, g->D);
     double din = v_norm(nd);
@@ -303,7 +303,7 @@ int cd_cc_parallel_candidates(const cd_cc *g, double *t0)
     return k;
 }
 
-int cd_cc_mirror(const cd_cc *g, vec3 *m)
+int cdist__cc_mirror(const cdist__cc *g, vec3 *m)
 {
     vec3 c = v_cross(g->c[0]->n, g->c[1]->n);
     double s = v_norm(c);
@@ -347,9 +347,9 @@ static void cand_add(cc_cands *c, int side, double t) { cand_add_cs(c, side, cos
 
 /* Angle on circle `side` of the mirror image (plane through both axes, normal m) of the point
  * at angle t. */
-static double mirror_angle(const cd_cc *g, int side, vec3 m, double t)
+static double mirror_angle(const cdist__cc *g, int side, vec3 m, double t)
 {
-    const cd_circle *c = g->c[side];
+    const cdist__circle *c = g->c[side];
     vec3 p = v_axpy(v_scale(cos(t), c->u), sin(t), c->v);
     p = v_axpy(p, -2.0 * v_dot(p, m), m);
     return angle_of(c, p);
@@ -357,7 +357,7 @@ static double mirror_angle(const cd_cc *g, int side, vec3 m, double t)
 
 /* Evaluate every candidate, polish those near the best value, add mirror images when the axes
  * meet, offer the polished minima. */
-static void finish_candidates(const cd_cc *g, cc_cands *c, cd_best *b)
+static void finish_candidates(const cdist__cc *g, cc_cands *c, cdist__best *b)
 {
     double Fmin = INFINITY;
     for (int i = 0; i < c->n; i++) {
@@ -368,7 +368,7 @@ static void finish_candidates(const cd_cc *g, cc_cands *c, cd_best *b)
      * the margin keeps every candidate that could polish below the best. */
     double margin = 1e-3 * Fmin + 1e-4 * g->L * g->L;
     vec3 m;
-    int mir = cd_cc_mirror(g, &m);
+    int mir = cdist__cc_mirror(g, &m);
     double pt[CC_MAXCAND], pF[CC_MAXCAND];
     int ps[CC_MAXCAND], np = 0;
     double best = INFINITY;
@@ -381,7 +381,7 @@ static void finish_candidates(const cd_cc *g, cc_cands *c, cd_best *b)
                 dup = 1;
         if (dup) continue;
         double F;
-        double t = cd_cc_polish(g, c->side[i], atan2(c->st[i], c->ct[i]), &F);
+        double t = cdist__cc_polish(g, c->side[i], atan2(c->st[i], c->ct[i]), &F);
         ps[np] = c->side[i], pt[np] = t, pF[np] = F, np++;
         if (F < best) best = F;
     }
@@ -390,26 +390,26 @@ static void finish_candidates(const cd_cc *g, cc_cands *c, cd_best *b)
         for (int i = 0; i < n0 && np < CC_MAXCAND; i++) {
             if (!(pF[i] <= best + margin)) continue;
             double F;
-            double t = cd_cc_polish(g, ps[i], mirror_angle(g, ps[i], m, pt[i]), &F);
+            double t = cdist__cc_polish(g, ps[i], mirror_angle(g, ps[i], m, pt[i]), &F);
             ps[np] = ps[i], pt[np] = t, pF[np] = F, np++;
         }
     }
-    cd_cc_offer_minima(g, np, ps, pt, pF, b);
+    cdist__cc_offer_minima(g, np, ps, pt, pF, b);
 }
 
 /* Candidates shared by both sides' special structure: parallel closed forms, and the points
  * of each circle in the mirror plane when the axes meet (critical by symmetry; §5.3's
  * t = 0, pi when the centres are on the normal line). */
-static void special_candidates(const cd_cc *g, cc_cands *c)
+static void special_candidates(const cdist__cc *g, cc_cands *c)
 {
     double sn = v_norm(v_cross(g->c[0]->n, g->c[1]->n));
     if (sn <= CC_NEAR_PARALLEL) {
         double t0[4];
-        int k = cd_cc_parallel_candidates(g, t0);
+        int k = cdist__cc_parallel_candidates(g, t0);
         for (int i = 0; i < k; i++) cand_add(c, 0, t0[i]);
     }
     vec3 m;
-    if (cd_cc_mirror(g, &m)) {
+    if (cdist__cc_mirror(g, &m)) {
         for (int s = 0; s < 2; s++) {
             vec3 dir = v_cross(m, g->c[s]->n);
             double a = angle_of(g->c[s], dir);
@@ -446,9 +446,9 @@ static int paxpy(double *out, int da, double s, const double *b, int db)
  * max(r_fixed, |D|) (the fixed circle becomes the unit circle unless the circles are far apart,
  * when the centre distance becomes 1) so that no coefficient overflows. Writes p6 (deg 4),
  * p7 (deg 3), phi (deg 8). */
-static void build_phi(const cd_cc *g, int side, double *p6, double *p7, double *phi)
+static void build_phi(const cdist__cc *g, int side, double *p6, double *p7, double *phi)
 {
-    const cd_circle *m = g->c[side], *f = g->c[1 - side];
+    const cdist__circle *m = g->c[side], *f = g->c[1 - side];
     double k = 1.0 / fmax(f->r, v_norm(g->D));
     vec3 D = v_scale(side ? k : -k, g->D);
     double r1 = m->r * k, r0 = f->r * k, r02 = r0 * r0;
@@ -498,24 +498,24 @@ static void build_phi(const cd_cc *g, int side, double *p6, double *p7, double *
     paxpy(phi, 8, -1.0, t2, 8);
 }
 
-static cdist_status polynomial(cdist_query *q, const cd_circle *c0, const cd_circle *c1, cd_best *b);
+static cdist_status polynomial(cdist_query *q, const cdist__circle *c0, const cdist__circle *c1, cdist__best *b);
 
-cdist_status cd_cc_polynomial(cdist_query *q, const cd_circle *c0, const cd_circle *c1, cd_best *b)
+cdist_status cdist__cc_polynomial(cdist_query *q, const cdist__circle *c0, const cdist__circle *c1, cdist__best *b)
 {
-    cd_circle a, bb;
+    cdist__circle a, bb;
     double s;
-    cd_cc_scale(c0, c1, b->scale, &a, &bb, &s);
-    cd_best sb;
-    cd_best_init(&sb, b->scale * s);
+    cdist__cc_scale(c0, c1, b->scale, &a, &bb, &s);
+    cdist__best sb;
+    cdist__best_init(&sb, b->scale * s);
     cdist_status st = polynomial(q, &a, &bb, &sb);
-    if (st == CDIST_OK) cd_cc_unscale(&sb, s, b);
+    if (st == CDIST_OK) cdist__cc_unscale(&sb, s, b);
     return st;
 }
 
-static cdist_status polynomial(cdist_query *q, const cd_circle *c0, const cd_circle *c1, cd_best *b)
+static cdist_status polynomial(cdist_query *q, const cdist__circle *c0, const cdist__circle *c1, cdist__best *b)
 {
-    cd_cc g = {{c0, c1}, c1->c, b->scale};
-    if (cd_cc_closed_form(&g, b)) return CDIST_OK;
+    cdist__cc g = {{c0, c1}, c1->c, b->scale};
+    if (cdist__cc_closed_form(&g, b)) return CDIST_OK;
     cc_cands c;
     c.n = 0;
     special_candidates(&g, &c);
@@ -531,7 +531,7 @@ static cdist_status polynomial(cdist_query *q, const cd_circle *c0, const cd_cir
     int concentric = v_norm(c1->c) <= 1e-6 * fmax(c0->r, c1->r);
     if (concentric) {
         for (int s = 0; s < 2; s++) {
-            const cd_circle *m = g.c[s], *f = g.c[1 - s];
+            const cdist__circle *m = g.c[s], *f = g.c[1 - s];
             double nu = v_dot(f->n, m->u), nv = v_dot(f->n, m->v);
             double a1 = atan2(-nu, nv), a2 = atan2(nv, nu);
             cand_add(&c, s, a1);
@@ -543,8 +543,8 @@ static cdist_status polynomial(cdist_query *q, const cd_circle *c0, const cd_cir
     if (!concentric && (sn > CC_PARALLEL || c.n == 0)) {
         double p6[5], p7[4], phi[9], roots[8];
         build_phi(&g, side, p6, p7, phi);
-        int nr = cd_poly_real_roots(q->poly, phi, 8, CC_IMAG_TOL, roots);
-        if (nr == CD_POLY_FAIL) return cd_fail(q, CDIST_ERR_INTERNAL, "circle-circle: polynomial solver failed");
+        int nr = cdist__poly_real_roots(q->poly, phi, 8, CC_IMAG_TOL, roots);
+        if (nr == CD_POLY_FAIL) return cdist__fail(q, CDIST_ERR_INTERNAL, "circle-circle: polynomial solver failed");
         double s7 = 0.0;
         for (int i = 0; i <= 3; i++) s7 += fabs(p7[i]);
         for (int i = 0; i < nr; i++) {

@@ -6,7 +6,7 @@
 #include "circles/circles-priv.h"
 
 /* The antisymmetric choice of the circle to parameterise: 1 when it is c1. */
-static int param_second(const cd_circle *c0, const cd_circle *c1, vec3 C)
+static int param_second(const cdist__circle *c0, const cdist__circle *c1, vec3 C)
 {
     if (c0->r != c1->r) return c1->r > c0->r;
     const double x[3] = {c0->n.x, c0->n.y, c0->n.z}, y[3] = {c1->n.x, c1->n.y, c1->n.z};
@@ -20,28 +20,28 @@ static int param_second(const cd_circle *c0, const cd_circle *c1, vec3 C)
 }
 
 /* The robust method (see the header comment). */
-cdist_status cd_cc_robust(cdist_query *q, const cd_circle *c0, const cd_circle *c1, cd_best *b)
+cdist_status cdist__cc_robust(cdist_query *q, const cdist__circle *c0, const cdist__circle *c1, cdist__best *b)
 {
     vec3 C = v_sub(c1->c, c0->c); /* c0->c is the origin here; kept general */
     int sw = param_second(c0, c1, C);
-    const cd_circle *A = sw ? c1 : c0, *B = sw ? c0 : c1;
+    const cdist__circle *A = sw ? c1 : c0, *B = sw ? c0 : c1;
     vec3 CB = sw ? v_neg(C) : C; /* B's centre relative to A's */
     double L = fmax(fmax(c0->r, c1->r), v_norm(C));
     if (A->r == 0.0) {
         /* Both are points. */
-        cd_best_offer(b, v_sqr(C), c0->c, c1->c, NAN, NAN);
+        cdist__best_offer(b, v_sqr(C), c0->c, c1->c, NAN, NAN);
         return CDIST_OK;
     }
     if (B->r == 0.0) {
         /* B is a point: the point-circle core (equidistant when it is on A's axis). */
         if (!sw) {
-            cd_point_circle_core(C, c0, b, 1);
+            cdist__point_circle_core(C, c0, b, 1);
         } else {
-            cd_best t;
-            cd_best_init(&t, b->scale);
-            cd_point_circle_core(CB, c1, &t, 0);
+            cdist__best t;
+            cdist__best_init(&t, b->scale);
+            cdist__point_circle_core(CB, c1, &t, 0);
             for (int i = 0; i < t.n; i++)
-                cd_best_offer_flag(b, t.c[i].equidistant, t.c[i].d2, v_add(t.c[i].p[0], C), v_add(t.c[i].p[1], C),
+                cdist__best_offer_flag(b, t.c[i].equidistant, t.c[i].d2, v_add(t.c[i].p[0], C), v_add(t.c[i].p[1], C),
                                    t.c[i].param[0], t.c[i].param[1]);
         }
         return CDIST_OK;
@@ -51,7 +51,7 @@ cdist_status cd_cc_robust(cdist_query *q, const cd_circle *c0, const cd_circle *
     int ex;
     frexp(L, &ex);
     double sc = ldexp(1.0, -ex), unsc = ldexp(1.0, ex);
-    cd_circle As = *A, Bs = *B;
+    cdist__circle As = *A, Bs = *B;
     As.c = v_scale(sc, A->c);
     As.r = sc * A->r;
     Bs.c = v_scale(sc, B->c);
@@ -59,29 +59,29 @@ cdist_status cd_cc_robust(cdist_query *q, const cd_circle *c0, const cd_circle *
     CB = v_scale(sc, CB);
     A = &As;
     B = &Bs;
-    cd_cc_frame f;
-    cd_cc_frame_init(&f, A, CB, B);
-    cd_cc_sink k = {.f = &f, .best = b, .unscale = unsc, .swapped = sw, .A = A, .B = B,  .Fmin = INFINITY,
+    cdist__cc_frame f;
+    cdist__cc_frame_init(&f, A, CB, B);
+    cdist__cc_sink k = {.f = &f, .best = b, .unscale = unsc, .swapped = sw, .A = A, .B = B,  .Fmin = INFINITY,
                  .dmin = INFINITY, .rho_min = INFINITY};
     double Fmax, tp[4];
-    int np = cd_cc_parallel_critical(&f, tp);
+    int np = cdist__cc_parallel_critical(&f, tp);
     if (np > 0) {
         /* Closed form; F's extremes are at rho's extremes (the first two angles). */
         Fmax = 0;
         for (int i = 0; i < np; i++) {
-            cd_cc_pt p;
+            cdist__cc_pt p;
             double c, s;
             sincos(tp[i], &s, &c);
-            cd_cc_eval_lean(&f, tp[i], c, s, &p);
+            cdist__cc_eval_lean(&f, tp[i], c, s, &p);
             if (p.F > Fmax) Fmax = p.F;
-            cd_cc_pair_at(&f, tp[i], &k);
+            cdist__cc_pair_at(&f, tp[i], &k);
         }
     } else {
-        cd_cc_scan(&f, &k, &Fmax);
+        cdist__cc_scan(&f, &k, &Fmax);
     }
     /* F' never went from - to +: F is constant to rounding; any point is a closest one. */
-    if (b->n == 0 && isfinite(k.Fmin)) cd_cc_pair_at(&f, k.tmin, &k);
-    if (b->n == 0 || !isfinite(k.dmin)) return cd_fail(q, CDIST_ERR_INTERNAL, "circle-circle: no minimum found");
+    if (b->n == 0 && isfinite(k.Fmin)) cdist__cc_pair_at(&f, k.tmin, &k);
+    if (b->n == 0 || !isfinite(k.dmin)) return cdist__fail(q, CDIST_ERR_INTERNAL, "circle-circle: no minimum found");
     /* (a) F constant on A; (b) the closest point of A on B's axis. */
     if (sqrt(Fmax) - k.dmin <= CC_EQUI_ULPS * DBL_EPSILON * f.L) b->equidistant = 1;
     if (k.rho_min <= 8 * f.epsL * fmin(1.0, f.s / f.L)) b->equidistant = 1;

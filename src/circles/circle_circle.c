@@ -9,7 +9,7 @@
 #include "circles/circles-priv.h"
 
 /* Distance from X to circle c (closed form, |N x D| for the axis distance). */
-static double pc_dist(vec3 X, const cd_circle *c, double *rho_out)
+static double pc_dist(vec3 X, const cdist__circle *c, double *rho_out)
 {
     vec3 D = v_sub(X, c->c);
     vec3 w = v_cross(c->n, D);
@@ -22,14 +22,14 @@ static double pc_dist(vec3 X, const cd_circle *c, double *rho_out)
  * answer of the polynomial and iteration methods: (b) a closest point on the other circle's
  * axis; (a) 16 equally spaced points of either circle all at the minimum distance (the scan
  * stops at the first point that is not, so a generic query pays two evaluations). */
-static void cc_equidistant_post(const cd_circle *c0, const cd_circle *c1, cd_best *b)
+static void cc_equidistant_post(const cdist__circle *c0, const cdist__circle *c1, cdist__best *b)
 {
     if (b->equidistant || b->n == 0) return;
-    const cd_circle *cs[2] = {c0, c1};
+    const cdist__circle *cs[2] = {c0, c1};
     double d = sqrt(b->c[0].d2), Cn = v_norm(v_sub(c1->c, c0->c));
     double L = fmax(fmax(c0->r, c1->r), Cn), tol = CC_EQUI_ULPS * DBL_EPSILON * L;
     for (int side = 0; side < 2; side++) {
-        const cd_circle *me = cs[side], *other = cs[1 - side];
+        const cdist__circle *me = cs[side], *other = cs[1 - side];
         if (other->r > 0 && me->r >= 0) {
             double rho;
             pc_dist(b->c[0].p[side], other, &rho);
@@ -54,7 +54,7 @@ static void cc_equidistant_post(const cd_circle *c0, const cd_circle *c1, cd_bes
 
 /* Whether both arcs of circle c between the points at angles a and b rise above the tie level
  * (sampled at their midpoints) as seen from the other circle: then a and b are separate minima. */
-static int arcs_rise(const cd_circle *c, const cd_circle *other, double a, double b, double dbest, double tie)
+static int arcs_rise(const cdist__circle *c, const cdist__circle *other, double a, double b, double dbest, double tie)
 {
     if (isnan(a) || isnan(b)) return 0;
     double mid = b + 0.5 * remainder(a - b, 2.0 * M_PI);
@@ -71,15 +71,15 @@ static int arcs_rise(const cd_circle *c, const cd_circle *other, double a, doubl
  * arcs of the second. Otherwise they are two points of one flat minimum (e.g. circles in
  * parallel planes whose projections touch, where F is flat to fourth order) and the best
  * represents it. */
-static void cc_same_basin_filter(const cd_circle *c0, const cd_circle *c1, cd_best *b)
+static void cc_same_basin_filter(const cdist__circle *c0, const cdist__circle *c1, cdist__best *b)
 {
     double tie = CD_TIE_ULPS * DBL_EPSILON * b->scale;
-    while (b->n >= 2 && !cd_best_is_equidistant(b)) {
+    while (b->n >= 2 && !cdist__best_is_equidistant(b)) {
         double dbest = sqrt(b->c[0].d2);
         if (sqrt(b->c[1].d2) - dbest > tie) return;
-        const cd_cand *x = &b->c[0], *y = &b->c[1];
-        double a0 = cd_circle_angle(c0, v_sub(x->p[0], c0->c)), b0 = cd_circle_angle(c0, v_sub(y->p[0], c0->c));
-        double a1 = cd_circle_angle(c1, v_sub(x->p[1], c1->c)), b1 = cd_circle_angle(c1, v_sub(y->p[1], c1->c));
+        const cdist__cand *x = &b->c[0], *y = &b->c[1];
+        double a0 = cdist__circle_angle(c0, v_sub(x->p[0], c0->c)), b0 = cdist__circle_angle(c0, v_sub(y->p[0], c0->c));
+        double a1 = cdist__circle_angle(c1, v_sub(x->p[1], c1->c)), b1 = cdist__circle_angle(c1, v_sub(y->p[1], c1->c));
         if (arcs_rise(c0, c1, a0, b0, dbest, tie) || arcs_rise(c1, c0, a1, b1, dbest, tie)) return;
         for (int j = 1; j + 1 < b->n; j++) b->c[j] = b->c[j + 1];
         b->n--;
@@ -88,20 +88,20 @@ static void cc_same_basin_filter(const cd_circle *c0, const cd_circle *c1, cd_be
 
 /* Runs `method`; the robust method answers AUTO and is the fallback of a method that fails.
  * *answered: the method that produced the result. */
-static cdist_status cc_core(cdist_query *q, cdist_method method, const cd_circle *c0, const cd_circle *c1,
-                            cd_best *b, int *iterations, cdist_method *answered)
+static cdist_status cc_core(cdist_query *q, cdist_method method, const cdist__circle *c0, const cdist__circle *c1,
+                            cdist__best *b, int *iterations, cdist_method *answered)
 {
     if (iterations) *iterations = 0;
     cdist_status st = CDIST_ERR_INTERNAL;
-    if (method == CDIST_METHOD_POLYNOMIAL) st = cd_cc_polynomial(q, c0, c1, b);
-    else if (method == CDIST_METHOD_ITERATION) st = cd_cc_iteration(q, c0, c1, b, iterations);
+    if (method == CDIST_METHOD_POLYNOMIAL) st = cdist__cc_polynomial(q, c0, c1, b);
+    else if (method == CDIST_METHOD_ITERATION) st = cdist__cc_iteration(q, c0, c1, b, iterations);
     *answered = method;
     if (method == CDIST_METHOD_AUTO || method == CDIST_METHOD_ROBUST || st != CDIST_OK) {
         /* AUTO is the robust method (measured fastest and as exact); it is also the fallback. */
-        cd_best_init(b, b->scale);
+        cdist__best_init(b, b->scale);
         if (iterations) *iterations = 0;
         *answered = CDIST_METHOD_ROBUST;
-        st = cd_cc_robust(q, c0, c1, b);
+        st = cdist__cc_robust(q, c0, c1, b);
     } else {
         cc_equidistant_post(c0, c1, b);
     }
@@ -109,23 +109,23 @@ static cdist_status cc_core(cdist_query *q, cdist_method method, const cd_circle
     return st;
 }
 
-cdist_status cd_circle_circle_core(cdist_query *q, cdist_method method, const cd_circle *c0, const cd_circle *c1,
-                                   cd_best *b, int *iterations)
+cdist_status cdist__circle_circle_core(cdist_query *q, cdist_method method, const cdist__circle *c0, const cdist__circle *c1,
+                                   cdist__best *b, int *iterations)
 {
     cdist_method answered;
     return cc_core(q, method, c0, c1, b, iterations, &answered);
 }
 
-int cd_circles_scale(cd_circle *a, cd_circle *b)
+int cdist__circles_scale(cdist__circle *a, cdist__circle *b)
 {
-    int e = cd_scale_exponent(fmax(fmax(a->r, b->r), v_maxabs(b->c)));
+    int e = cdist__scale_exponent(fmax(fmax(a->r, b->r), v_maxabs(b->c)));
     a->r = ldexp(a->r, -e);
     b->r = ldexp(b->r, -e);
     b->c = v3(ldexp(b->c.x, -e), ldexp(b->c.y, -e), ldexp(b->c.z, -e));
     return e;
 }
 
-void cd_circles_unscale_result(cdist_result *r, int e, vec3 offset)
+void cdist__circles_unscale_result(cdist_result *r, int e, vec3 offset)
 {
     r->distance = ldexp(r->distance, e);
     r->sqr_distance = ldexp(r->sqr_distance, 2 * e);
@@ -137,33 +137,33 @@ void cd_circles_unscale_result(cdist_result *r, int e, vec3 offset)
 }
 
 /* The scaled problem (a at the origin): the core, then r written in full. */
-static cdist_status cc_query(cdist_query *q, cd_circle a, cd_circle b, cdist_result *r, cdist_method *answered)
+static cdist_status cc_query(cdist_query *q, cdist__circle a, cdist__circle b, cdist_result *r, cdist_method *answered)
 {
     /* Work relative to the first centre. */
     vec3 offset = a.c;
     a.c = v3(0, 0, 0);
     b.c = v_sub(b.c, offset);
-    int e = cd_circles_scale(&a, &b);
-    cd_best best;
-    cd_best_init(&best, fmax(fmax(a.r, b.r), v_norm(b.c)));
+    int e = cdist__circles_scale(&a, &b);
+    cdist__best best;
+    cdist__best_init(&best, fmax(fmax(a.r, b.r), v_norm(b.c)));
     int iterations = 0;
-    cdist_status st = cc_core(q, cd_family_method(q, CD_FAM_CIRCLE_CIRCLE), &a, &b, &best, &iterations, answered);
+    cdist_status st = cc_core(q, cdist__family_method(q, CD_FAM_CIRCLE_CIRCLE), &a, &b, &best, &iterations, answered);
     if (st) return st;
-    if (best.n == 0) return cd_fail(q, CDIST_ERR_INTERNAL, "circle-circle found no candidate");
-    cd_best_to_result(&best, v3(0, 0, 0), 0, r);
-    cd_result_finish(r, r->num_pairs);
-    cd_circles_unscale_result(r, e, offset);
+    if (best.n == 0) return cdist__fail(q, CDIST_ERR_INTERNAL, "circle-circle found no candidate");
+    cdist__best_to_result(&best, v3(0, 0, 0), 0, r);
+    cdist__result_finish(r, r->num_pairs);
+    cdist__circles_unscale_result(r, e, offset);
     r->iterations = iterations;
     return CDIST_OK;
 }
 
 cdist_status cdist_circle_circle(cdist_query *q, const cdist_circle *c0, const cdist_circle *c1, cdist_result *r)
 {
-    cdist_status st = cd_enter(q, r);
+    cdist_status st = cdist__enter(q, r);
     if (st) return st;
-    cd_circle a, b;
+    cdist__circle a, b;
     cdist_method answered = CDIST_METHOD_ROBUST;
-    if (!(st = cd_check_circle(q, c0, "first circle", &a)) && !(st = cd_check_circle(q, c1, "second circle", &b)))
+    if (!(st = cdist__check_circle(q, c0, "first circle", &a)) && !(st = cdist__check_circle(q, c1, "second circle", &b)))
         st = cc_query(q, a, b, r, &answered);
-    return cd_leave(q, r, st, answered);
+    return cdist__leave(q, r, st, answered);
 }

@@ -27,16 +27,16 @@
  * x(t) = X[0] + X[1] cos t + X[2] sin t, the same for y, z; S(t) = Delta . Delta'. */
 typedef struct cdk {
     double X[3], Y[3], Z[3], S[3];
-    cd_ring rg;          /* the same circle for the ring evaluator (w = (x, y, 0), h = z) */
+    cdist__ring rg;          /* the same circle for the ring evaluator (w = (x, y, 0), h = z) */
     double E0;           /* X0^2 + Y0^2 - R^2, to the last bit (see rim_excess) */
     int small_circle;    /* rho <= R: rim_excess expands around the circle's centre */
     double R;            /* disk radius */
     double rho;          /* circle radius */
     vec3 A, B, D, n, u, v;
-    const cd_circle *c, *d; /* the circle (centre at the origin) and the disk */
+    const cdist__circle *c, *d; /* the circle (centre at the origin) and the disk */
 } cdk;
 
-static void cdk_init(cdk *k, const cd_circle *c, const cd_circle *d)
+static void cdk_init(cdk *k, const cdist__circle *c, const cdist__circle *d)
 {
     vec3 D = d->c;
     k->c = c;
@@ -56,12 +56,12 @@ static void cdk_init(cdk *k, const cd_circle *c, const cd_circle *d)
     /* E0 by error-free products and sums (base/numeric.h): the in-plane excess of the circle's
      * centre over the rim, exact to rounding even when R is huge and the gap tiny. */
     double xl, yl, rl, e1, e2;
-    double xh = cd_two_prod(k->X[0], k->X[0], &xl), yh = cd_two_prod(k->Y[0], k->Y[0], &yl);
-    double rh = cd_two_prod(k->R, k->R, &rl);
-    double s1 = cd_two_sum(xh, yh, &e1), s2 = cd_two_sum(s1, -rh, &e2);
+    double xh = cdist__two_prod(k->X[0], k->X[0], &xl), yh = cdist__two_prod(k->Y[0], k->Y[0], &yl);
+    double rh = cdist__two_prod(k->R, k->R, &rl);
+    double s1 = cdist__two_sum(xh, yh, &e1), s2 = cdist__two_sum(s1, -rh, &e2);
     k->E0 = s2 + (e2 + e1 + xl + yl - rl);
     k->small_circle = k->rho <= k->R;
-    k->rg = (cd_ring){v3(k->X[1], k->Y[1], 0.0), v3(k->X[2], k->Y[2], 0.0), v3(k->X[0], k->Y[0], 0.0),
+    k->rg = (cdist__ring){v3(k->X[1], k->Y[1], 0.0), v3(k->X[2], k->Y[2], 0.0), v3(k->X[0], k->Y[0], 0.0),
                       k->Z[1], k->Z[2], k->Z[0]};
     /* Delta . Delta' = (P - D) . P' = -D . P' since |P| is constant. */
     k->S[0] = 0.0; k->S[1] = -r * v_dot(D, c->v); k->S[2] = r * v_dot(D, c->u);
@@ -74,9 +74,9 @@ static inline double trig1d(const double *a, double cs, double sn) { return fma(
  * (the ring evaluator; on the disk's axis F has a cusp, a maximum, where F'' is set to 1). */
 static double cdk_rim_cs(const cdk *k, double cs, double sn, double *f1, double *f2)
 {
-    cd_ring_val v;
+    cdist__ring_val v;
     v.F1 = v.F2 = 0.0;
-    cd_ring_eval(&k->rg, k->R, cs, sn, f2 ? 2 : f1 ? 1 : 0, &v);
+    cdist__ring_eval(&k->rg, k->R, cs, sn, f2 ? 2 : f1 ? 1 : 0, &v);
     if (f1) *f1 = v.F1;
     if (f2) *f2 = v.rho > 0.0 ? v.F2 : 1.0;
     return 0.5 * v.F;
@@ -104,7 +104,7 @@ static inline double rim_excess(const cdk *k, double x, double y, double cs, dou
 }
 
 /* Offer the circle point at angle t with its closest disk point (the true point-disk distance). */
-static void cdk_offer(const cdk *k, double t, cd_best *b)
+static void cdk_offer(const cdk *k, double t, cdist__best *b)
 {
     double sn, cs;
     sincos(t, &sn, &cs);
@@ -122,7 +122,7 @@ static void cdk_offer(const cdk *k, double t, cd_best *b)
         double dr = k->small_circle ? ex / (rho + k->R) : rho - k->R;
         d2 = fma(dr, dr, z * z);
     }
-    cd_best_offer(b, d2, P, K, k->rho > 0.0 ? cd_wrap_angle(t) : NAN, cd_polar_angle(x, y));
+    cdist__best_offer(b, d2, P, K, k->rho > 0.0 ? cdist__wrap_angle(t) : NAN, cdist__polar_angle(x, y));
 }
 
 /* Bracketed root of F' in [a, b] with sg F'(a) < 0 < sg F'(b) (sg = 1: a minimum of F, -1: a
@@ -201,7 +201,7 @@ static int cdk_poly_critical(cdist_query *q, const cdk *k, double *ts)
     double R2 = (k->R * s) * (k->R * s);
     for (int i = 0; i < 9; i++) a[i] = fma(-R2, bq[i], a[i]);
     double roots[8];
-    int nr = cd_poly_real_roots(q->poly, a, 8, 1e-3, roots);
+    int nr = cdist__poly_real_roots(q->poly, a, 8, 1e-3, roots);
     if (nr == CD_POLY_ZERO) return -1;
     if (nr < 0) return -2;
     int n = 0;
@@ -382,7 +382,7 @@ static int cdk_poly_minima(cdist_query *q, const cdk *k, double *ts, int cap, do
 }
 
 /* Parallel planes (within rounding): closed forms (docs/disk.md). Returns 1 when handled. */
-static int cdk_parallel(const cdk *k, cd_best *b)
+static int cdk_parallel(const cdk *k, cdist__best *b)
 {
     double sinang = hypot(k->Z[1], k->Z[2]);
     if (!(sinang <= 8.0 * DBL_EPSILON * k->rho)) return 0;
@@ -405,7 +405,7 @@ static int cdk_parallel(const cdk *k, cd_best *b)
     return 1;
 }
 
-static cdist_status cdk_solve(cdist_query *q, cdist_method method, const cdk *k, cd_best *b, cdist_method *used)
+static cdist_status cdk_solve(cdist_query *q, cdist_method method, const cdk *k, cdist__best *b, cdist_method *used)
 {
     *used = method;
     if (cdk_parallel(k, b)) return CDIST_OK;
@@ -444,7 +444,7 @@ static cdist_status cdk_solve(cdist_query *q, cdist_method method, const cdk *k,
          * method, Fourier bounds on the squared derivative, src/circles/cc_engine.c), the rim being a
          * circle; its own sampling as the fallback. */
         *used = CDIST_METHOD_ROBUST;
-        n = cd_circle_circle_critical(q, k->c, k->d, ts, CDK_CAP);
+        n = cdist__circle_circle_critical(q, k->c, k->d, ts, CDK_CAP);
         if (n == -1) {
             n = 0; /* F constant: the rim gives no isolated candidate; z candidates rule */
             ts[n++] = 0.0;
@@ -469,23 +469,23 @@ static cdist_status cdk_solve(cdist_query *q, cdist_method method, const cdk *k,
 }
 
 /* Circle c (centre at the origin) to disk d (centre relative to c's). */
-static cdist_status circle_disk_solve(cdist_query *q, cdist_method method, const cd_circle *c, const cd_circle *d,
-                                      cd_best *b, cdist_method *used)
+static cdist_status circle_disk_solve(cdist_query *q, cdist_method method, const cdist__circle *c, const cdist__circle *d,
+                                      cdist__best *b, cdist_method *used)
 {
     *used = method;
     if (c->r == 0.0) {
         /* The circle is its centre (the origin): point to disk, points relative to d's centre. */
-        cd_best t;
-        cd_best_init(&t, b->scale);
-        cd_point_disk_core(v_neg(d->c), d, &t, 0);
+        cdist__best t;
+        cdist__best_init(&t, b->scale);
+        cdist__point_disk_core(v_neg(d->c), d, &t, 0);
         for (int i = 0; i < t.n; i++) t.c[i].param[0] = NAN;
-        cd_best_merge(b, &t, d->c, 0);
-        b->equidistant = cd_best_is_equidistant(&t);
+        cdist__best_merge(b, &t, d->c, 0);
+        b->equidistant = cdist__best_is_equidistant(&t);
         return CDIST_OK;
     }
     if (d->r == 0.0) {
         /* The disk is its centre: point to circle. */
-        cd_point_circle_core(d->c, c, b, 1);
+        cdist__point_circle_core(d->c, c, b, 1);
         return CDIST_OK;
     }
     cdk k;
@@ -496,50 +496,50 @@ static cdist_status circle_disk_solve(cdist_query *q, cdist_method method, const
 /* Solved into a fresh collector, then merged into b: b may already hold other candidates (a
  * caller combining several objects), and an equidistant set here only makes b equidistant when
  * it attains b's minimum. */
-cdist_status cd_circle_disk_core_ex(cdist_query *q, cdist_method method, const cd_circle *c, const cd_circle *d,
-                                     cd_best *b, cdist_method *used)
+cdist_status cdist__circle_disk_core_ex(cdist_query *q, cdist_method method, const cdist__circle *c, const cdist__circle *d,
+                                     cdist__best *b, cdist_method *used)
 {
-    cd_best t;
-    cd_best_init(&t, b->scale);
+    cdist__best t;
+    cdist__best_init(&t, b->scale);
     cdist_status st = circle_disk_solve(q, method, c, d, &t, used);
     if (st) return st;
-    double d2 = cd_best_merge(b, &t, v3(0, 0, 0), 0);
-    if (cd_best_is_equidistant(&t)) cd_best_settle_equidistant(b, d2);
+    double d2 = cdist__best_merge(b, &t, v3(0, 0, 0), 0);
+    if (cdist__best_is_equidistant(&t)) cdist__best_settle_equidistant(b, d2);
     return CDIST_OK;
 }
 
-cdist_status cd_circle_disk_core(cdist_query *q, cdist_method method, const cd_circle *c, const cd_circle *d,
-                                 cd_best *b)
+cdist_status cdist__circle_disk_core(cdist_query *q, cdist_method method, const cdist__circle *c, const cdist__circle *d,
+                                 cdist__best *b)
 {
     cdist_method used;
-    return cd_circle_disk_core_ex(q, method, c, d, b, &used);
+    return cdist__circle_disk_core_ex(q, method, c, d, b, &used);
 }
 
 /* The scaled problem (c at the origin): the core, then r written in full. */
-static cdist_status circle_disk_query(cdist_query *q, cd_circle a, cd_circle e, cdist_result *r, cdist_method *used)
+static cdist_status circle_disk_query(cdist_query *q, cdist__circle a, cdist__circle e, cdist_result *r, cdist_method *used)
 {
     vec3 offset = a.c;
     a.c = v3(0, 0, 0);
     e.c = v_sub(e.c, offset);
-    int ex = cd_circles_scale(&a, &e);
-    cd_best best;
-    cd_best_init(&best, fmax(fmax(a.r, e.r), v_norm(e.c)));
-    cdist_status st = cd_circle_disk_core_ex(q, cd_family_method(q, CD_FAM_CIRCLE_DISK), &a, &e, &best, used);
+    int ex = cdist__circles_scale(&a, &e);
+    cdist__best best;
+    cdist__best_init(&best, fmax(fmax(a.r, e.r), v_norm(e.c)));
+    cdist_status st = cdist__circle_disk_core_ex(q, cdist__family_method(q, CD_FAM_CIRCLE_DISK), &a, &e, &best, used);
     if (st) return st;
-    if (best.n == 0) return cd_fail(q, CDIST_ERR_INTERNAL, "circle-disk found no candidate");
-    cd_best_to_result(&best, v3(0, 0, 0), 0, r);
-    cd_result_finish(r, r->num_pairs);
-    cd_circles_unscale_result(r, ex, offset);
+    if (best.n == 0) return cdist__fail(q, CDIST_ERR_INTERNAL, "circle-disk found no candidate");
+    cdist__best_to_result(&best, v3(0, 0, 0), 0, r);
+    cdist__result_finish(r, r->num_pairs);
+    cdist__circles_unscale_result(r, ex, offset);
     return CDIST_OK;
 }
 
 cdist_status cdist_circle_disk(cdist_query *q, const cdist_circle *c, const cdist_circle *d, cdist_result *r)
 {
-    cdist_status st = cd_enter(q, r);
+    cdist_status st = cdist__enter(q, r);
     if (st) return st;
-    cd_circle a, e;
-    cdist_method used = cd_family_method(q, CD_FAM_CIRCLE_DISK);
-    if (!(st = cd_check_circle(q, c, "circle", &a)) && !(st = cd_check_circle(q, d, "disk", &e)))
+    cdist__circle a, e;
+    cdist_method used = cdist__family_method(q, CD_FAM_CIRCLE_DISK);
+    if (!(st = cdist__check_circle(q, c, "circle", &a)) && !(st = cdist__check_circle(q, d, "disk", &e)))
         st = circle_disk_query(q, a, e, r, &used);
-    return cd_leave(q, r, st, used);
+    return cdist__leave(q, r, st, used);
 }

@@ -13,11 +13,11 @@
 #define CC_EQUI_ULPS 32.0
 
 /* The parameterised circle A at the origin and the other circle B. */
-typedef struct cd_cc_frame {
+typedef struct cdist__cc_frame {
     double R, s;       /* radii of A and B */
     vec3 u, v;         /* A's basis */
     vec3 C, m;         /* B's centre relative to A's centre, B's unit normal */
-    cd_ring rg;        /* w(t) = m x (P(t) - C) and h(t) = m.(P(t) - C) (ring_eval.h) */
+    cdist__ring rg;        /* w(t) = m x (P(t) - C) and h(t) = m.(P(t) - C) (ring_eval.h) */
     double Cu, Cv;     /* sigma = D.D' = R (Cu sin t - Cv cos t) */
     double M1, M2, M3; /* |H'| <= M1, |H''| <= M2, |H'''| <= M3 */
     double eH, eH1, eH2; /* rounding bounds of the computed H, H', H'' */
@@ -25,10 +25,10 @@ typedef struct cd_cc_frame {
     double epsL;       /* eps * (R + |C|): absolute rounding of positions */
     double L;          /* problem scale max(R, s, |C|) */
     double Lw, W1, nga; /* magnitudes of the terms of w, of |w'|, |ga| (rounding bounds) */
-} cd_cc_frame;
+} cdist__cc_frame;
 
 /* Values at one angle. */
-typedef struct cd_cc_pt {
+typedef struct cdist__cc_pt {
     double t, c, s;
     double H, H1, H2; /* H, H', H'' */
     double eH, eH1, eH2; /* their rounding bounds at this point */
@@ -36,32 +36,32 @@ typedef struct cd_cc_pt {
     double F;     /* F */
     double d;     /* sqrt(F) */
     double Q, g;  /* rho^2 and w.w' */
-} cd_cc_pt;
+} cdist__cc_pt;
 
 /* Receiver of the critical points found by the scan. */
-typedef struct cd_cc_sink {
-    const cd_cc_frame *f;
+typedef struct cdist__cc_sink {
+    const cdist__cc_frame *f;
     int want_max;   /* also report local maxima (critical-angle mode) */
     double *out;    /* critical mode: angles */
     int cap, count; /* critical mode: room and number found (may exceed cap) */
-    cd_best *best;  /* robust mode */
+    cdist__best *best;  /* robust mode */
     int swapped;    /* robust mode: A is the second circle */
-    const cd_circle *A, *B;
+    const cdist__circle *A, *B;
     double unscale; /* robust mode: the factor undoing the problem's scaling */
     double tmin, Fmin; /* partition point with the smallest F */
     double dmin;  /* smallest refined distance */
     double rho_min; /* axis distance of the point giving dmin */
-} cd_cc_sink;
+} cdist__cc_sink;
 
-static inline double cd_cc_dot3(vec3 a, vec3 b) { return cd_ring_dot(a, b); }
+static inline double cdist__cc_dot3(vec3 a, vec3 b) { return cdist__ring_dot(a, b); }
 
 /* F and F'/2 only, at angle t with (c, s) = (cos t, sin t): the lean evaluation of the sampled
  * regions (dense scan, kink grid, budget fallback, minimum search), which read only the signs of
  * F' and the values of F and need none of H's rounding bounds. */
-static inline void cd_cc_eval_lean(const cd_cc_frame *f, double t, double c, double s, cd_cc_pt *p)
+static inline void cdist__cc_eval_lean(const cdist__cc_frame *f, double t, double c, double s, cdist__cc_pt *p)
 {
-    cd_ring_val v;
-    cd_ring_eval(&f->rg, f->s, c, s, 1, &v);
+    cdist__ring_val v;
+    cdist__ring_eval(&f->rg, f->s, c, s, 1, &v);
     p->t = t;
     p->c = c;
     p->s = s;
@@ -73,21 +73,21 @@ static inline void cd_cc_eval_lean(const cd_cc_frame *f, double t, double c, dou
 }
 
 /* The frame of A (parameterised, centre at the origin) and B (centre C relative to A's). */
-void cd_cc_frame_init(cd_cc_frame *f, const cd_circle *A, vec3 C, const cd_circle *B);
+void cdist__cc_frame_init(cdist__cc_frame *f, const cdist__circle *A, vec3 C, const cdist__circle *B);
 /* Walks [-pi, pi) and hands every critical bracket of F to the sink (see cc_engine.c). Fmax:
  * largest F seen at the partition points. */
-int cd_cc_scan(const cd_cc_frame *f, cd_cc_sink *k, double *Fmax);
+int cdist__cc_scan(const cdist__cc_frame *f, cdist__cc_sink *k, double *Fmax);
 /* Offer the pair at angle t of A to the sink's collector (robust mode). */
-void cd_cc_pair_at(const cd_cc_frame *f, double t, cd_cc_sink *k);
+void cdist__cc_pair_at(const cdist__cc_frame *f, double t, cdist__cc_sink *k);
 /* Parallel planes: F's critical angles in closed form (up to 4), or -1 when not parallel. */
-int cd_cc_parallel_critical(const cd_cc_frame *f, double *t);
+int cdist__cc_parallel_critical(const cdist__cc_frame *f, double *t);
 /* The robust method (c0 at the origin). */
-cdist_status cd_cc_robust(cdist_query *q, const cd_circle *c0, const cd_circle *c1, cd_best *b);
+cdist_status cdist__cc_robust(cdist_query *q, const cdist__circle *c0, const cdist__circle *c1, cdist__best *b);
 /* Circle c (centre at the origin) to disk d, solved into a fresh collector and merged into b
  * (an equidistant sub-result makes b equidistant only where it attains b's minimum); *used:
  * the method that answered. */
-cdist_status cd_circle_disk_core_ex(cdist_query *q, cdist_method method, const cd_circle *c, const cd_circle *d,
-                                    cd_best *b, cdist_method *used);
+cdist_status cdist__circle_disk_core_ex(cdist_query *q, cdist_method method, const cdist__circle *c, const cdist__circle *d,
+                                    cdist__best *b, cdist_method *used);
 #define CD_DISK_METHODS (CD_HAS(CDIST_METHOD_POLYNOMIAL) | CD_HAS(CDIST_METHOD_ROBUST))
 #define CD_DISK_AUTO CDIST_METHOD_ROBUST
 

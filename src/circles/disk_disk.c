@@ -19,53 +19,53 @@ static int circle_less(const cdist_circle *a, const cdist_circle *b)
 }
 
 /* The validated problem, swapped into the canonical order: the core, then r written in full. */
-static cdist_status dd_query(cdist_query *q, cd_circle a, cd_circle e, int swap, cdist_result *r, cdist_method *used)
+static cdist_status dd_query(cdist_query *q, cdist__circle a, cdist__circle e, int swap, cdist_result *r, cdist_method *used)
 {
     cdist_status st;
     if (swap) {
-        cd_circle t = a;
+        cdist__circle t = a;
         a = e;
         e = t;
     }
     vec3 offset = a.c;
     a.c = v3(0, 0, 0);
     e.c = v_sub(e.c, offset);
-    int ex = cd_circles_scale(&a, &e);
-    cd_best best;
-    cd_best_init(&best, fmax(fmax(a.r, e.r), v_norm(e.c)));
-    cdist_method m = cd_family_method(q, CD_FAM_DISK_DISK), used0, used1;
+    int ex = cdist__circles_scale(&a, &e);
+    cdist__best best;
+    cdist__best_init(&best, fmax(fmax(a.r, e.r), v_norm(e.c)));
+    cdist_method m = cdist__family_method(q, CD_FAM_DISK_DISK), used0, used1;
     /* Rim of a to disk e, and rim of e to disk a (computed with e's centre as origin). */
-    cd_best b0, b1;
-    cd_best_init(&b0, best.scale);
-    cd_best_init(&b1, best.scale);
-    if ((st = cd_circle_disk_core_ex(q, m, &a, &e, &b0, &used0))) return st;
-    cd_circle a1 = a, e1 = e;
+    cdist__best b0, b1;
+    cdist__best_init(&b0, best.scale);
+    cdist__best_init(&b1, best.scale);
+    if ((st = cdist__circle_disk_core_ex(q, m, &a, &e, &b0, &used0))) return st;
+    cdist__circle a1 = a, e1 = e;
     a1.c = v_neg(e.c);
     e1.c = v3(0, 0, 0);
-    if ((st = cd_circle_disk_core_ex(q, m, &e1, &a1, &b1, &used1))) return st;
-    double d0sq = cd_best_merge(&best, &b0, v3(0, 0, 0), 0);
-    double d1sq = cd_best_merge(&best, &b1, e.c, 1);
-    if (best.n == 0) return cd_fail(q, CDIST_ERR_INTERNAL, "disk-disk found no candidate");
+    if ((st = cdist__circle_disk_core_ex(q, m, &e1, &a1, &b1, &used1))) return st;
+    double d0sq = cdist__best_merge(&best, &b0, v3(0, 0, 0), 0);
+    double d1sq = cdist__best_merge(&best, &b1, e.c, 1);
+    if (best.n == 0) return cdist__fail(q, CDIST_ERR_INTERNAL, "disk-disk found no candidate");
     /* Parallel faces over each other: the closest set is a region. A rim over the other face
      * (b0 or b1 equidistant) says so; a disk entirely over the other's face with its rim
      * beyond it is caught the other way round. */
-    if (cd_best_is_equidistant(&b0)) cd_best_settle_equidistant(&best, d0sq);
-    if (cd_best_is_equidistant(&b1)) cd_best_settle_equidistant(&best, d1sq);
-    cd_best_convex_contact(&best);
-    cd_best_to_result(&best, v3(0, 0, 0), swap, r);
-    cd_result_finish(r, r->num_pairs);
-    cd_circles_unscale_result(r, ex, offset);
+    if (cdist__best_is_equidistant(&b0)) cdist__best_settle_equidistant(&best, d0sq);
+    if (cdist__best_is_equidistant(&b1)) cdist__best_settle_equidistant(&best, d1sq);
+    cdist__best_convex_contact(&best);
+    cdist__best_to_result(&best, v3(0, 0, 0), swap, r);
+    cdist__result_finish(r, r->num_pairs);
+    cdist__circles_unscale_result(r, ex, offset);
     *used = used0 == CDIST_METHOD_ROBUST || used1 == CDIST_METHOD_ROBUST ? CDIST_METHOD_ROBUST : m;
     return CDIST_OK;
 }
 
 cdist_status cdist_disk_disk(cdist_query *q, const cdist_circle *d0, const cdist_circle *d1, cdist_result *r)
 {
-    cdist_status st = cd_enter(q, r);
+    cdist_status st = cdist__enter(q, r);
     if (st) return st;
-    cd_circle a, e;
-    cdist_method used = cd_family_method(q, CD_FAM_DISK_DISK);
-    if (!(st = cd_check_circle(q, d0, "first disk", &a)) && !(st = cd_check_circle(q, d1, "second disk", &e)))
+    cdist__circle a, e;
+    cdist_method used = cdist__family_method(q, CD_FAM_DISK_DISK);
+    if (!(st = cdist__check_circle(q, d0, "first disk", &a)) && !(st = cdist__check_circle(q, d1, "second disk", &e)))
         st = dd_query(q, a, e, circle_less(d1, d0), r, &used);
-    return cd_leave(q, r, st, used);
+    return cdist__leave(q, r, st, used);
 }

@@ -27,7 +27,7 @@
  *  - arc-disk: the endpoints, the critical angles of the distance to the rim circle and the
  *    closed-form angles where the height over the plane or its derivative vanishes (see
  *    arc_minima).
- * The interior critical angles come from cd_circle_circle_critical (the circle-circle family)
+ * The interior critical angles come from cdist__circle_circle_critical (the circle-circle family)
  * when it provides them (it returns 0 when unavailable: a smooth periodic function always has at
  * least two critical angles), each polished on the true derivative; otherwise (a constant
  * function, parallel planes for the disk) from the sampling engine of src/curves/curve.c over the
@@ -41,7 +41,7 @@
 #define CRIT_CAP 64
 
 typedef struct arcx {
-    cd_circle c; /* centre in the query's frame; u, v the library basis */
+    cdist__circle c; /* centre in the query's frame; u, v the library basis */
     vec3 U, V;   /* the arc's frame */
     double start, end;
     double phi0; /* library-basis angle of U: library angle = arc angle + phi0 */
@@ -50,18 +50,18 @@ typedef struct arcx {
 static cdist_status check_arc(cdist_query *q, const cdist_arc *a, const char *what, arcx *x)
 {
     char buf[64];
-    if (!a) return cd_fail(q, CDIST_ERR_NULL_ARGUMENT, "%s pointer is NULL", what);
-    cdist_status st = cd_check_circle(q, &a->circle, what, &x->c);
+    if (!a) return cdist__fail(q, CDIST_ERR_NULL_ARGUMENT, "%s pointer is NULL", what);
+    cdist_status st = cdist__check_circle(q, &a->circle, what, &x->c);
     if (st) return st;
     snprintf(buf, sizeof buf, "%s zero_direction", what);
-    if ((st = cd_cs_zero_frame(q, x->c.n, &a->zero_direction, buf, &x->U, &x->V))) return st;
+    if ((st = cdist__cs_zero_frame(q, x->c.n, &a->zero_direction, buf, &x->U, &x->V))) return st;
     if (!isfinite(a->start) || !isfinite(a->end))
-        return cd_fail(q, CDIST_ERR_NOT_FINITE, "%s angles [%g, %g] are not finite", what, a->start, a->end);
+        return cdist__fail(q, CDIST_ERR_NOT_FINITE, "%s angles [%g, %g] are not finite", what, a->start, a->end);
     if (a->start > a->end)
-        return cd_fail(q, CDIST_ERR_BAD_INTERVAL, "%s start %.17g > end %.17g", what, a->start, a->end);
+        return cdist__fail(q, CDIST_ERR_BAD_INTERVAL, "%s start %.17g > end %.17g", what, a->start, a->end);
     double slack = CD_ARC_SPAN_ULPS * DBL_EPSILON * fmax(TWO_PI, fmax(fabs(a->start), fabs(a->end)));
     if (!(a->end - a->start <= TWO_PI + slack))
-        return cd_fail(q, CDIST_ERR_BAD_INTERVAL, "%s spans %.17g > 2 pi", what, a->end - a->start);
+        return cdist__fail(q, CDIST_ERR_BAD_INTERVAL, "%s spans %.17g > 2 pi", what, a->end - a->start);
     x->start = a->start;
     x->end = a->end;
     x->phi0 = atan2(v_dot(x->U, x->c.v), v_dot(x->U, x->c.u));
@@ -101,12 +101,12 @@ static double arc_angle(const arcx *a, vec3 rel, int *inside)
 /* Offer point p (the query's frame; parameter tp on its own object) against arc a: the closest
  * point of a's circle when its angle is in range, and (ends != 0) both endpoints. p_first: p is
  * on the query's first object. */
-static void offer_point_arc(cd_cs_coll *k, vec3 p, double tp, const arcx *a, int p_first, int ends)
+static void offer_point_arc(cdist__cs_coll *k, vec3 p, double tp, const arcx *a, int p_first, int ends)
 {
     if (a->c.r == 0.0) {
         vec3 c = a->c.c;
-        if (p_first) cd_cs_coll_offer(k, v_sqr(v_sub(p, c)), p, c, tp, NAN, 0);
-        else cd_cs_coll_offer(k, v_sqr(v_sub(p, c)), c, p, NAN, tp, 0);
+        if (p_first) cdist__cs_coll_offer(k, v_sqr(v_sub(p, c)), p, c, tp, NAN, 0);
+        else cdist__cs_coll_offer(k, v_sqr(v_sub(p, c)), c, p, NAN, tp, 0);
         return;
     }
     if (ends) {
@@ -114,20 +114,20 @@ static void offer_point_arc(cd_cs_coll *k, vec3 p, double tp, const arcx *a, int
             double ang = e ? a->end : a->start;
             vec3 E = arc_point(a, ang);
             double d2 = v_sqr(v_sub(p, E));
-            if (p_first) cd_cs_coll_offer(k, d2, p, E, tp, ang, 0);
-            else cd_cs_coll_offer(k, d2, E, p, ang, tp, 0);
+            if (p_first) cdist__cs_coll_offer(k, d2, p, E, tp, ang, 0);
+            else cdist__cs_coll_offer(k, d2, E, p, ang, tp, 0);
         }
     }
-    cd_best tmp;
-    cd_best_init(&tmp, k->b.scale);
+    cdist__best tmp;
+    cdist__best_init(&tmp, k->b.scale);
     vec3 rel = v_sub(p, a->c.c);
-    cd_point_circle_core(rel, &a->c, &tmp, 0);
+    cdist__point_circle_core(rel, &a->c, &tmp, 0);
     if (tmp.n == 0) return;
     double d2 = tmp.c[0].d2;
     vec3 K;
     double ang;
     int eq = 0;
-    if (cd_best_is_equidistant(&tmp) || cd_cs_near_axis(k, rel, &a->c)) {
+    if (cdist__best_is_equidistant(&tmp) || cdist__cs_near_axis(k, rel, &a->c)) {
         /* p on the axis (within rounding of the problem's scale): every arc point is closest;
          * the start point represents them. */
         ang = a->start;
@@ -140,8 +140,8 @@ static void offer_point_arc(cd_cs_coll *k, vec3 p, double tp, const arcx *a, int
         if (!inside) return;
         K = v_add(tmp.c[0].p[1], a->c.c);
     }
-    if (p_first) cd_cs_coll_offer(k, d2, p, K, tp, ang, eq);
-    else cd_cs_coll_offer(k, d2, K, p, ang, tp, eq);
+    if (p_first) cdist__cs_coll_offer(k, d2, p, K, tp, ang, eq);
+    else cdist__cs_coll_offer(k, d2, K, p, ang, tp, eq);
 }
 
 /* Candidate callback: the scanned object's point p at parameter t against the arc in cand_ctx
@@ -151,7 +151,7 @@ typedef struct cand_arc_ctx {
     int scanned_first;
 } cand_arc_ctx;
 
-static void cand_arc(const cd_cs_scan *s, double t, vec3 p)
+static void cand_arc(const cdist__cs_scan *s, double t, vec3 p)
 {
     const cand_arc_ctx *cx = s->cand_ctx;
     offer_point_arc(s->k, p, t, cx->target, cx->scanned_first, 0);
@@ -159,13 +159,13 @@ static void cand_arc(const cd_cs_scan *s, double t, vec3 p)
 
 /* Polish the candidate at arc angle a (any representative modulo 2 pi) if it falls in X's
  * range. */
-static cdist_status polish_in_range(cd_cs_scan *s, const arcx *X, double a)
+static cdist_status polish_in_range(cdist__cs_scan *s, const arcx *X, double a)
 {
     double k = fmod(a - X->start, TWO_PI);
     if (k < 0.0) k += TWO_PI;
     double m = X->start + k;
     if (!(m <= X->end)) return CDIST_OK;
-    return cd_cs_polish(s, m, X->start, X->end);
+    return cdist__cs_polish(s, m, X->start, X->end);
 }
 
 /* Every minimum of theta -> dist^2(X(theta), circle or disk Y) over X's range, handed to the
@@ -177,7 +177,7 @@ static cdist_status polish_in_range(cd_cs_scan *s, const arcx *X, double a)
  * atan2(B, A) and opposite, h = 0 at atan2(B, A) +- acos(-hc / hypot(A, B))). Every such angle
  * is polished on the true D' and evaluated on the true distance, so the ones that fall in the
  * other region are merely extra candidates. */
-static cdist_status arc_minima(cd_cs_scan *s, const arcx *X, const cd_circle *Y, int *exact, int *n_const)
+static cdist_status arc_minima(cdist__cs_scan *s, const arcx *X, const cdist__circle *Y, int *exact, int *n_const)
 {
     cdist_query *q = s->q;
     cdist_status st;
@@ -190,10 +190,10 @@ static cdist_status arc_minima(cd_cs_scan *s, const arcx *X, const cd_circle *Y,
     *exact = 0;
     if (X->end > X->start) {
         double th[CRIT_CAP];
-        cd_circle c0 = X->c, c1 = *Y;
+        cdist__circle c0 = X->c, c1 = *Y;
         c1.c = v_sub(Y->c, X->c.c);
         c0.c = v3(0, 0, 0);
-        n = cd_circle_circle_critical(q, &c0, &c1, th, CRIT_CAP);
+        n = cdist__circle_circle_critical(q, &c0, &c1, th, CRIT_CAP);
         double A = 0.0, B = 0.0, hc = 0.0, R = 0.0;
         if (s->disk) {
             A = X->c.r * v_dot(Y->n, X->U);
@@ -223,10 +223,10 @@ static cdist_status arc_minima(cd_cs_scan *s, const arcx *X, const cd_circle *Y,
     }
     s->k->flat_ties = 1;
     if (n_const) *n_const = !s->disk && n == -1;
-    return cd_cs_scan_run(s, X->start, X->end, q->curve_samples);
+    return cdist__cs_scan_run(s, X->start, X->end, q->curve_samples);
 }
 
-static double arc_scale(const arcx *a, const cd_circle *c)
+static double arc_scale(const arcx *a, const cdist__circle *c)
 {
     return fmax(fmax(a->c.r, c->r), v_dist(a->c.c, c->c));
 }
@@ -237,48 +237,48 @@ static cdist_status arc_target(cdist_query *q, const cdist_arc *a, const cdist_c
 {
     cdist_status st;
     arcx A;
-    cd_circle C;
-    if ((st = check_arc(q, a, "arc", &A)) || (st = cd_check_circle(q, c, disk ? "disk" : "circle", &C))) return st;
+    cdist__circle C;
+    if ((st = check_arc(q, a, "arc", &A)) || (st = cdist__check_circle(q, c, disk ? "disk" : "circle", &C))) return st;
     vec3 origin = A.c.c;
     A.c.c = v3(0, 0, 0);
     C.c = v_sub(C.c, origin);
-    int e = cd_scale_exponent(fmax(fmax(A.c.r, C.r), v_maxabs(C.c)));
-    double down = cd_pow2(-e);
+    int e = cdist__scale_exponent(fmax(fmax(A.c.r, C.r), v_maxabs(C.c)));
+    double down = cdist__pow2(-e);
     A.c.r *= down;
     C.r *= down;
     C.c = v_scale(down, C.c);
-    cd_cs_coll k;
-    cd_cs_coll_init(&k, arc_scale(&A, &C));
+    cdist__cs_coll k;
+    cdist__cs_coll_init(&k, arc_scale(&A, &C));
     if (A.c.r == 0.0) {
-        cd_cs_offer_point(&k, A.c.c, NAN, &C, disk, 0);
+        cdist__cs_offer_point(&k, A.c.c, NAN, &C, disk, 0);
     } else {
-        cd_cs_scan s = {q, arc_eval, &A, &C, disk, &k, NULL, NULL, 0, 0.0, 0.0};
+        cdist__cs_scan s = {q, arc_eval, &A, &C, disk, &k, NULL, NULL, 0, 0.0, 0.0};
         /* Endpoints always; then the interior minima. */
-        cd_cs_offer_point(&k, arc_point(&A, A.start), A.start, &C, disk, 0);
-        cd_cs_offer_point(&k, arc_point(&A, A.end), A.end, &C, disk, 0);
+        cdist__cs_offer_point(&k, arc_point(&A, A.start), A.start, &C, disk, 0);
+        cdist__cs_offer_point(&k, arc_point(&A, A.end), A.end, &C, disk, 0);
         int exact, constant;
         if ((st = arc_minima(&s, &A, &C, &exact, &constant))) return st;
-        if (!exact && (st = cd_cs_flat_check(&s, A.start, A.end, (A.end - A.start) / q->curve_samples))) return st;
+        if (!exact && (st = cdist__cs_flat_check(&s, A.start, A.end, (A.end - A.start) / q->curve_samples))) return st;
         /* The circle-circle function is constant (within its own tolerance, as
          * cdist_circle_circle flags it): every arc point is closest. */
         if (constant && A.end > A.start) k.b.equidistant = 1;
     }
-    cd_cs_coll_result(&k, cd_pow2(e), origin, r);
+    cdist__cs_coll_result(&k, cdist__pow2(e), origin, r);
     return CDIST_OK;
 }
 
 cdist_status cdist_arc_circle(cdist_query *q, const cdist_arc *a, const cdist_circle *c, cdist_result *r)
 {
-    cdist_status st = cd_enter(q, r);
+    cdist_status st = cdist__enter(q, r);
     if (st) return st;
-    return cd_leave(q, r, arc_target(q, a, c, r, 0), CDIST_METHOD_ROBUST);
+    return cdist__leave(q, r, arc_target(q, a, c, r, 0), CDIST_METHOD_ROBUST);
 }
 
 cdist_status cdist_arc_disk(cdist_query *q, const cdist_arc *a, const cdist_circle *d, cdist_result *r)
 {
-    cdist_status st = cd_enter(q, r);
+    cdist_status st = cdist__enter(q, r);
     if (st) return st;
-    return cd_leave(q, r, arc_target(q, a, d, r, 1), CDIST_METHOD_ROBUST);
+    return cdist__leave(q, r, arc_target(q, a, d, r, 1), CDIST_METHOD_ROBUST);
 }
 
 /* ---- arc to arc ---- */
@@ -291,13 +291,13 @@ static cdist_status arc_arc(cdist_query *q, const cdist_arc *a0, const cdist_arc
     vec3 origin = A.c.c;
     A.c.c = v3(0, 0, 0);
     B.c.c = v_sub(B.c.c, origin);
-    int e = cd_scale_exponent(fmax(fmax(A.c.r, B.c.r), v_maxabs(B.c.c)));
-    double down = cd_pow2(-e);
+    int e = cdist__scale_exponent(fmax(fmax(A.c.r, B.c.r), v_maxabs(B.c.c)));
+    double down = cdist__pow2(-e);
     A.c.r *= down;
     B.c.r *= down;
     B.c.c = v_scale(down, B.c.c);
-    cd_cs_coll k;
-    cd_cs_coll_init(&k, arc_scale(&A, &B.c));
+    cdist__cs_coll k;
+    cdist__cs_coll_init(&k, arc_scale(&A, &B.c));
     /* The four endpoint-to-arc distances (a radius-0 arc is its centre). */
     if (A.c.r == 0.0) offer_point_arc(&k, A.c.c, NAN, &B, 1, 1);
     else {
@@ -313,12 +313,12 @@ static cdist_status arc_arc(cdist_query *q, const cdist_arc *a0, const cdist_arc
     if (A.c.r > 0.0 && B.c.r > 0.0) {
         int exact;
         cand_arc_ctx ca = {&B, 1}, cb = {&A, 0};
-        cd_cs_scan s = {q, arc_eval, &A, &B.c, 0, &k, cand_arc, &ca, 0, 0.0, 0.0};
+        cdist__cs_scan s = {q, arc_eval, &A, &B.c, 0, &k, cand_arc, &ca, 0, 0.0, 0.0};
         if ((st = arc_minima(&s, &A, &B.c, &exact, NULL))) return st;
-        cd_cs_scan t = {q, arc_eval, &B, &A.c, 0, &k, cand_arc, &cb, 0, 0.0, 0.0};
+        cdist__cs_scan t = {q, arc_eval, &B, &A.c, 0, &k, cand_arc, &cb, 0, 0.0, 0.0};
         if ((st = arc_minima(&t, &B, &A.c, &exact, NULL))) return st;
     }
-    cd_cs_coll_result(&k, cd_pow2(e), origin, r);
+    cdist__cs_coll_result(&k, cdist__pow2(e), origin, r);
     return CDIST_OK;
 }
 
@@ -340,22 +340,22 @@ static cdist_status seg_eval(cdist_query *q, const void *ctx, double t, vec3 *p,
 static cdist_status segment_arc(cdist_query *q, const cdist_segment *sg, const cdist_arc *a, cdist_result *r)
 {
     cdist_status st;
-    if (!sg) return cd_fail(q, CDIST_ERR_NULL_ARGUMENT, "segment pointer is NULL");
-    if ((st = cd_check_point(q, &sg->p0, "segment p0")) || (st = cd_check_point(q, &sg->p1, "segment p1"))) return st;
+    if (!sg) return cdist__fail(q, CDIST_ERR_NULL_ARGUMENT, "segment pointer is NULL");
+    if ((st = cdist__check_point(q, &sg->p0, "segment p0")) || (st = cdist__check_point(q, &sg->p1, "segment p1"))) return st;
     arcx A;
     if ((st = check_arc(q, a, "arc", &A))) return st;
     vec3 origin = A.c.c;
     A.c.c = v3(0, 0, 0);
     seg_x S = {v_sub(sg->p0, origin), v_sub(sg->p1, sg->p0)};
     vec3 S1 = v_sub(sg->p1, origin);
-    int e = cd_scale_exponent(fmax(A.c.r, fmax(v_maxabs(S.p0), v_maxabs(S1))));
-    double down = cd_pow2(-e);
+    int e = cdist__scale_exponent(fmax(A.c.r, fmax(v_maxabs(S.p0), v_maxabs(S1))));
+    double down = cdist__pow2(-e);
     A.c.r *= down;
     S.p0 = v_scale(down, S.p0);
     S.m = v_scale(down, S.m);
     S1 = v_scale(down, S1);
-    cd_cs_coll k;
-    cd_cs_coll_init(&k, fmax(A.c.r, fmax(v_norm(S.p0), v_norm(S1))));
+    cdist__cs_coll k;
+    cdist__cs_coll_init(&k, fmax(A.c.r, fmax(v_norm(S.p0), v_norm(S1))));
     /* Segment endpoints to the arc. */
     offer_point_arc(&k, S.p0, 0.0, &A, 1, 1);
     offer_point_arc(&k, S1, 1.0, &A, 1, 1);
@@ -368,7 +368,7 @@ static cdist_status segment_arc(cdist_query *q, const cdist_segment *sg, const c
         double s = mm > 0.0 ? v_dot(v_sub(E, S.p0), S.m) / mm : 0.0;
         s = s < 0.0 ? 0.0 : (s > 1.0 ? 1.0 : s);
         vec3 P = s == 1.0 ? S1 : v_axpy(S.p0, s, S.m);
-        cd_cs_coll_offer(&k, v_sqr(v_sub(P, E)), P, E, s, ang, 0);
+        cdist__cs_coll_offer(&k, v_sqr(v_sub(P, E)), P, E, s, ang, 0);
     }
     /* Interior: minima of s -> dist^2(seg(s), circle) within r/|M| of the foot. */
     if (mm > 0.0 && A.c.r > 0.0) {
@@ -378,39 +378,39 @@ static cdist_status segment_arc(cdist_query *q, const cdist_segment *sg, const c
         double lo = fmax(0.0, foot - half), hi = fmin(1.0, foot + half);
         if (lo <= hi) {
             cand_arc_ctx ca = {&A, 1};
-            cd_cs_scan s = {q, seg_eval, &S, &A.c, 0, &k, cand_arc, &ca, 0, 0.0, fmax(v_norm(S.p0), v_norm(S1))};
+            cdist__cs_scan s = {q, seg_eval, &S, &A.c, 0, &k, cand_arc, &ca, 0, 0.0, fmax(v_norm(S.p0), v_norm(S1))};
             /* The local minima of the segment's distance to the full circle in the window, from
              * the lines family's robust (GSL-free) core on the line through the foot, each
              * polished on the true derivative and offered when its circle point is in range. */
-            cd_best lm;
-            cd_best_init(&lm, k.b.scale);
+            cdist__best lm;
+            cdist__best_init(&lm, k.b.scale);
             vec3 M = v_scale(1.0 / len, S.m), B = v_axpy(S.p0, foot, S.m);
-            st = cd_linear_circle_ex(q, CDIST_METHOD_ROBUST, B, M, (lo - foot) * len, (hi - foot) * len, &A.c, &lm,
+            st = cdist__linear_circle_ex(q, CDIST_METHOD_ROBUST, B, M, (lo - foot) * len, (hi - foot) * len, &A.c, &lm,
                                      NULL);
             if (st == CDIST_OK) {
                 for (int i = 0; i < lm.n; i++) {
                     double t = fmin(fmax(foot + lm.c[i].param[0] / len, lo), hi);
-                    if ((st = cd_cs_polish(&s, t, lo, hi))) return st;
+                    if ((st = cdist__cs_polish(&s, t, lo, hi))) return st;
                 }
-            } else if ((st = cd_cs_scan_run(&s, lo, hi, q->curve_samples))) {
+            } else if ((st = cdist__cs_scan_run(&s, lo, hi, q->curve_samples))) {
                 return st;
             }
         }
     }
-    cd_cs_coll_result(&k, cd_pow2(e), origin, r);
+    cdist__cs_coll_result(&k, cdist__pow2(e), origin, r);
     return CDIST_OK;
 }
 
 cdist_status cdist_arc_arc(cdist_query *q, const cdist_arc *a0, const cdist_arc *a1, cdist_result *r)
 {
-    cdist_status st = cd_enter(q, r);
+    cdist_status st = cdist__enter(q, r);
     if (st) return st;
-    return cd_leave(q, r, arc_arc(q, a0, a1, r), CDIST_METHOD_ROBUST);
+    return cdist__leave(q, r, arc_arc(q, a0, a1, r), CDIST_METHOD_ROBUST);
 }
 
 cdist_status cdist_segment_arc(cdist_query *q, const cdist_segment *sg, const cdist_arc *a, cdist_result *r)
 {
-    cdist_status st = cd_enter(q, r);
+    cdist_status st = cdist__enter(q, r);
     if (st) return st;
-    return cd_leave(q, r, segment_arc(q, sg, a, r), CDIST_METHOD_ROBUST);
+    return cdist__leave(q, r, segment_arc(q, sg, a, r), CDIST_METHOD_ROBUST);
 }

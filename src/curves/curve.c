@@ -48,24 +48,24 @@
 
 /* ---- collector ---- */
 
-void cd_cs_coll_init(cd_cs_coll *k, double scale)
+void cdist__cs_coll_init(cdist__cs_coll *k, double scale)
 {
-    cd_best_init(&k->b, scale);
+    cdist__best_init(&k->b, scale);
     k->eq_d2 = INFINITY;
     k->flat_ties = 0;
 }
 
-void cd_cs_coll_offer(cd_cs_coll *k, double d2, vec3 p0, vec3 p1, double a0, double a1, int eq)
+void cdist__cs_coll_offer(cdist__cs_coll *k, double d2, vec3 p0, vec3 p1, double a0, double a1, int eq)
 {
-    cd_best_offer(&k->b, d2, p0, p1, a0, a1);
+    cdist__best_offer(&k->b, d2, p0, p1, a0, a1);
     if (eq && d2 < k->eq_d2) k->eq_d2 = d2;
 }
 
-static double tie_tol(const cd_cs_coll *k) { return CD_TIE_ULPS * DBL_EPSILON * k->b.scale; }
+static double tie_tol(const cdist__cs_coll *k) { return CD_TIE_ULPS * DBL_EPSILON * k->b.scale; }
 
-void cd_cs_coll_finish(cd_cs_coll *k)
+void cdist__cs_coll_finish(cdist__cs_coll *k)
 {
-    cd_best *b = &k->b;
+    cdist__best *b = &k->b;
     if (b->n == 0) return;
     double d0 = sqrt(b->c[0].d2);
     /* A candidate with infinitely many closest pairs (a point on the circle's axis, ...). */
@@ -76,15 +76,15 @@ void cd_cs_coll_finish(cd_cs_coll *k)
     if (k->flat_ties && b->n >= 3 && sqrt(b->c[2].d2) - d0 <= tie_tol(k)) b->equidistant = 1;
 }
 
-void cd_cs_coll_result(cd_cs_coll *k, double up, vec3 origin, cdist_result *r)
+void cdist__cs_coll_result(cdist__cs_coll *k, double up, vec3 origin, cdist_result *r)
 {
-    cd_cs_coll_finish(k);
+    cdist__cs_coll_finish(k);
     if (k->b.n == 0) {
-        r->distance = NAN; /* no candidate: cd_leave reports an internal failure */
+        r->distance = NAN; /* no candidate: cdist__leave reports an internal failure */
         return;
     }
-    cd_best_to_result(&k->b, v3(0, 0, 0), 0, r);
-    cd_result_finish(r, r->num_pairs);
+    cdist__best_to_result(&k->b, v3(0, 0, 0), 0, r);
+    cdist__result_finish(r, r->num_pairs);
     /* The distance from the scaled one (its square may underflow when the distance is below
      * 1e-154: sqr_distance is then 0 or subnormal, the distance is still exact). */
     r->distance *= up;
@@ -99,22 +99,22 @@ void cd_cs_coll_result(cd_cs_coll *k, double up, vec3 origin, cdist_result *r)
         }
 }
 
-void cd_cs_offer_point(cd_cs_coll *k, vec3 p, double t, const cd_circle *c, int disk, int swap)
+void cdist__cs_offer_point(cdist__cs_coll *k, vec3 p, double t, const cdist__circle *c, int disk, int swap)
 {
-    cd_best tmp;
-    cd_best_init(&tmp, k->b.scale);
+    cdist__best tmp;
+    cdist__best_init(&tmp, k->b.scale);
     vec3 rel = v_sub(p, c->c);
-    if (disk) cd_point_disk_core(rel, c, &tmp, 0);
-    else cd_point_circle_core(rel, c, &tmp, 0);
+    if (disk) cdist__point_disk_core(rel, c, &tmp, 0);
+    else cdist__point_circle_core(rel, c, &tmp, 0);
     if (tmp.n == 0) return;
-    const cd_cand *x = &tmp.c[0];
+    const cdist__cand *x = &tmp.c[0];
     vec3 kp = v_add(x->p[1], c->c);
-    int eq = cd_best_is_equidistant(&tmp) || (!disk && cd_cs_near_axis(k, rel, c));
-    if (swap) cd_cs_coll_offer(k, x->d2, kp, p, x->param[1], t, eq);
-    else cd_cs_coll_offer(k, x->d2, p, kp, t, x->param[1], eq);
+    int eq = cdist__best_is_equidistant(&tmp) || (!disk && cdist__cs_near_axis(k, rel, c));
+    if (swap) cdist__cs_coll_offer(k, x->d2, kp, p, x->param[1], t, eq);
+    else cdist__cs_coll_offer(k, x->d2, p, kp, t, x->param[1], eq);
 }
 
-int cd_cs_near_axis(const cd_cs_coll *k, vec3 rel, const cd_circle *c)
+int cdist__cs_near_axis(const cdist__cs_coll *k, vec3 rel, const cdist__circle *c)
 {
     /* Within this distance of the axis the distance to the circle's points varies by less
      * than the tie tolerance: the closest pairs form a continuum up to rounding. */
@@ -133,7 +133,7 @@ typedef struct sample {
     double speed; /* |P'| (1-norm) */
 } sample;
 
-static cdist_status eval(const cd_cs_scan *s, double t, sample *o)
+static cdist_status eval(const cdist__cs_scan *s, double t, sample *o)
 {
     vec3 P, D;
     cdist_status st = s->ev(s->q, s->ctx, t, &P, &D);
@@ -141,7 +141,7 @@ static cdist_status eval(const cd_cs_scan *s, double t, sample *o)
     /* Plain arithmetic (no fma calls: this is the inner loop); g only needs its sign right
      * away from its rounding level `tol`, and every offered candidate is re-evaluated by the
      * accurate point-circle/disk cores. */
-    const cd_circle *c = s->c;
+    const cdist__circle *c = s->c;
     vec3 n = c->n;
     vec3 rel = v_sub(P, c->c);
     double h = n.x * rel.x + n.y * rel.y + n.z * rel.z;
@@ -167,13 +167,13 @@ static cdist_status eval(const cd_cs_scan *s, double t, sample *o)
     return CDIST_OK;
 }
 
-static void offer_sample(const cd_cs_scan *s, double t, const sample *x)
+static void offer_sample(const cdist__cs_scan *s, double t, const sample *x)
 {
     if (s->cand) s->cand(s, t, x->p);
-    else cd_cs_offer_point(s->k, x->p, t, s->c, s->disk, 0);
+    else cdist__cs_offer_point(s->k, x->p, t, s->c, s->disk, 0);
 }
 
-static cdist_status offer_at(const cd_cs_scan *s, double t)
+static cdist_status offer_at(const cdist__cs_scan *s, double t)
 {
     sample x;
     cdist_status st = eval(s, t, &x);
@@ -188,16 +188,16 @@ enum { CS_F_G, CS_F_H, CS_F_RIM, CS_F_RHO, CS_F_DIP };
 
 /* Context of one solve: which function of the sample, the sign for the dip search, and the
  * status of a failed evaluation (a user callback's error: the solver then gets NaN and stops). */
-typedef struct cd_cs_fn_ctx {
-    const cd_cs_scan *s;
+typedef struct cdist__cs_fn_ctx {
+    const cdist__cs_scan *s;
     int what;
     double sg;
     cdist_status st;
-} cd_cs_fn_ctx;
+} cdist__cs_fn_ctx;
 
-static double cd_cs_fn(const void *ctx, double t)
+static double cdist__cs_fn(const void *ctx, double t)
 {
-    cd_cs_fn_ctx *c = (cd_cs_fn_ctx *)ctx; /* the status is recorded here (roots.h convention) */
+    cdist__cs_fn_ctx *c = (cdist__cs_fn_ctx *)ctx; /* the status is recorded here (roots.h convention) */
     sample x;
     if (c->st) return NAN;
     if ((c->st = eval(c->s, t, &x))) return NAN;
@@ -212,13 +212,13 @@ static double cd_cs_fn(const void *ctx, double t)
 
 /* Bracket resolution of the scan's solvers: the resolution of t plus a fraction of an ulp of
  * the scanned span (CD_CURVE_SPAN_ULPS). */
-static double cd_cs_abs_tol(const cd_cs_scan *s) { return CD_CURVE_SPAN_ULPS * DBL_EPSILON * s->span; }
+static double cdist__cs_abs_tol(const cdist__cs_scan *s) { return CD_CURVE_SPAN_ULPS * DBL_EPSILON * s->span; }
 
 /* The root of the function `what` bracketed by [a, b] (fa, fb of opposite signs), offered. */
-static cdist_status root_offer(const cd_cs_scan *s, int what, double a, double fa, double b, double fb)
+static cdist_status root_offer(const cdist__cs_scan *s, int what, double a, double fa, double b, double fb)
 {
-    cd_cs_fn_ctx c = {s, what, 1.0, CDIST_OK};
-    double t = cd_root_brent(cd_cs_fn, &c, a, fa, b, fb, CD_ROOT_REL_ULPS * DBL_EPSILON, cd_cs_abs_tol(s), CD_CURVE_ROOT_MAX_ITER,
+    cdist__cs_fn_ctx c = {s, what, 1.0, CDIST_OK};
+    double t = cdist__root_brent(cdist__cs_fn, &c, a, fa, b, fb, CD_ROOT_REL_ULPS * DBL_EPSILON, cdist__cs_abs_tol(s), CD_CURVE_ROOT_MAX_ITER,
                              NULL);
     if (c.st) return c.st;
     if (t != t) return CDIST_OK;
@@ -226,27 +226,27 @@ static cdist_status root_offer(const cd_cs_scan *s, int what, double a, double f
 }
 
 /* Refine the minimum of F bracketed by g(a) < 0 < g(b) and offer it. */
-static cdist_status refine_offer(const cd_cs_scan *s, double a, double ga, double b, double gb)
+static cdist_status refine_offer(const cdist__cs_scan *s, double a, double ga, double b, double gb)
 {
     return root_offer(s, CS_F_G, a, ga, b, gb);
 }
 
 /* g keeps the sign sg at a and b; look for an extremum of g in between that crosses zero
  * (golden section on sg * g) and refine the minimum of F it brackets. */
-static cdist_status dip_search(const cd_cs_scan *s, double a, double b, double sg)
+static cdist_status dip_search(const cdist__cs_scan *s, double a, double b, double sg)
 {
-    cd_cs_fn_ctx c = {s, CS_F_DIP, sg, CDIST_OK};
-    double vm, tol = CD_CURVE_GOLDEN_ULPS * DBL_EPSILON * (fabs(a) + fabs(b)) + cd_cs_abs_tol(s);
-    double tm = cd_min_golden(cd_cs_fn, &c, a, b, tol, CD_CURVE_GOLDEN_MAX_ITER, &vm);
+    cdist__cs_fn_ctx c = {s, CS_F_DIP, sg, CDIST_OK};
+    double vm, tol = CD_CURVE_GOLDEN_ULPS * DBL_EPSILON * (fabs(a) + fabs(b)) + cdist__cs_abs_tol(s);
+    double tm = cdist__min_golden(cdist__cs_fn, &c, a, b, tol, CD_CURVE_GOLDEN_MAX_ITER, &vm);
     if (c.st) return c.st;
     if (!(vm < 0.0)) return CDIST_OK;
     /* g > 0 dips below: the minimum of F is right of tm; g < 0 bumps above: left. */
-    cd_cs_fn_ctx e = {s, CS_F_G, 1.0, CDIST_OK};
+    cdist__cs_fn_ctx e = {s, CS_F_G, 1.0, CDIST_OK};
     if (sg > 0) {
-        double gb = cd_cs_fn(&e, b);
+        double gb = cdist__cs_fn(&e, b);
         return e.st ? e.st : refine_offer(s, tm, sg * vm, b, gb);
     }
-    double ga = cd_cs_fn(&e, a);
+    double ga = cdist__cs_fn(&e, a);
     return e.st ? e.st : refine_offer(s, a, ga, tm, sg * vm);
 }
 
@@ -254,13 +254,13 @@ static cdist_status dip_search(const cd_cs_scan *s, double a, double b, double s
  * crossing on h itself and offer it. Where the crossing is inside the disk the distance is 0, a
  * minimum that g = h h' shows only at the rounding level of g when the curve lies nearly flat
  * (h' tiny), so the g brackets cannot be trusted to see it. */
-static cdist_status crossing_offer(const cd_cs_scan *s, double a, double ha, double b, double hb)
+static cdist_status crossing_offer(const cdist__cs_scan *s, double a, double ha, double b, double hb)
 {
     return root_offer(s, CS_F_H, a, ha, b, hb);
 }
 
 /* Locate the sign change of rho - r between a and b and offer the partition point. */
-static cdist_status partition_offer(const cd_cs_scan *s, double a, double da, double b, double db)
+static cdist_status partition_offer(const cdist__cs_scan *s, double a, double da, double b, double db)
 {
     return root_offer(s, CS_F_RIM, a, da, b, db);
 }
@@ -268,11 +268,11 @@ static cdist_status partition_offer(const cd_cs_scan *s, double a, double da, do
 /* The curve's closest approach to the circle's axis in [a, b] (golden section on rho), offered:
  * where the curve crosses the axis F has a kink, and in a flat configuration the kink rounded by
  * a near miss is a dip as narrow as the miss distance, invisible to the samples. */
-static cdist_status axis_offer(const cd_cs_scan *s, double a, double b)
+static cdist_status axis_offer(const cdist__cs_scan *s, double a, double b)
 {
-    cd_cs_fn_ctx c = {s, CS_F_RHO, 1.0, CDIST_OK};
-    double tol = CD_CURVE_GOLDEN_ULPS / 2.0 * DBL_EPSILON * (fabs(a) + fabs(b)) + cd_cs_abs_tol(s);
-    double t = cd_min_golden(cd_cs_fn, &c, a, b, tol, 2 * CD_CURVE_GOLDEN_MAX_ITER, NULL);
+    cdist__cs_fn_ctx c = {s, CS_F_RHO, 1.0, CDIST_OK};
+    double tol = CD_CURVE_GOLDEN_ULPS / 2.0 * DBL_EPSILON * (fabs(a) + fabs(b)) + cdist__cs_abs_tol(s);
+    double t = cdist__min_golden(cdist__cs_fn, &c, a, b, tol, 2 * CD_CURVE_GOLDEN_MAX_ITER, NULL);
     if (c.st) return c.st;
     if (t != t) return CDIST_OK;
     return offer_at(s, t);
@@ -284,7 +284,7 @@ static double t_at(double t0, double t1, int i, int n)
     return t0 + (t1 - t0) * ((double)i / n);
 }
 
-cdist_status cd_cs_scan_run(cd_cs_scan *s, double t0, double t1, int n)
+cdist_status cdist__cs_scan_run(cdist__cs_scan *s, double t0, double t1, int n)
 {
     cdist_query *q = s->q;
     cdist_status st;
@@ -361,9 +361,9 @@ cdist_status cd_cs_scan_run(cd_cs_scan *s, double t0, double t1, int n)
     return CDIST_OK;
 }
 
-cdist_status cd_cs_flat_check(cd_cs_scan *s, double t0, double t1, double delta)
+cdist_status cdist__cs_flat_check(cdist__cs_scan *s, double t0, double t1, double delta)
 {
-    cd_cs_coll *k = s->k;
+    cdist__cs_coll *k = s->k;
     if (k->b.n == 0 || k->b.equidistant || !(t0 < t1) || s->cand) return CDIST_OK;
     double t = k->b.c[0].param[0];
     if (!isfinite(t)) return CDIST_OK;
@@ -382,7 +382,7 @@ cdist_status cd_cs_flat_check(cd_cs_scan *s, double t0, double t1, double delta)
     return CDIST_OK;
 }
 
-cdist_status cd_cs_polish(cd_cs_scan *s, double t, double lo, double hi)
+cdist_status cdist__cs_polish(cdist__cs_scan *s, double t, double lo, double hi)
 {
     sample x, y;
     cdist_status st;
@@ -432,41 +432,41 @@ static cdist_status user_eval(cdist_query *q, const void *ctx, double t, vec3 *p
     const user_curve *u = ctx;
     cdist_vec3 P = {NAN, NAN, NAN}, D = {NAN, NAN, NAN};
     int rc = u->f(u->user, t, &P, &D);
-    if (rc) return cd_fail(q, CDIST_ERR_CALLBACK_FAILED, "curve callback returned %d at t = %.17g", rc, t);
+    if (rc) return cdist__fail(q, CDIST_ERR_CALLBACK_FAILED, "curve callback returned %d at t = %.17g", rc, t);
     if (!v_isfinite(P) || !v_isfinite(D))
-        return cd_fail(q, CDIST_ERR_CALLBACK_NOT_FINITE,
+        return cdist__fail(q, CDIST_ERR_CALLBACK_NOT_FINITE,
                        "curve callback gave a non-finite %s at t = %.17g", v_isfinite(P) ? "derivative" : "position",
                        t);
     if (v_maxabs(P) > CD_MAX_ABS || v_maxabs(D) > CD_MAX_ABS)
-        return cd_fail(q, CDIST_ERR_OUT_OF_RANGE, "curve callback gave a value beyond 1e150 at t = %.17g", t);
+        return cdist__fail(q, CDIST_ERR_OUT_OF_RANGE, "curve callback gave a value beyond 1e150 at t = %.17g", t);
     *p = v_scale(u->down, v_sub(P, u->origin));
     *dp = v_scale(u->down, D);
     return CDIST_OK;
 }
 
-cdist_status cd_cs_check_interval(cdist_query *q, double t0, double t1, const char *what)
+cdist_status cdist__cs_check_interval(cdist_query *q, double t0, double t1, const char *what)
 {
     if (!isfinite(t0) || !isfinite(t1))
-        return cd_fail(q, CDIST_ERR_NOT_FINITE, "%s interval [%g, %g] is not finite", what, t0, t1);
-    if (t0 > t1) return cd_fail(q, CDIST_ERR_BAD_INTERVAL, "%s interval [%.17g, %.17g] is reversed", what, t0, t1);
+        return cdist__fail(q, CDIST_ERR_NOT_FINITE, "%s interval [%g, %g] is not finite", what, t0, t1);
+    if (t0 > t1) return cdist__fail(q, CDIST_ERR_BAD_INTERVAL, "%s interval [%.17g, %.17g] is reversed", what, t0, t1);
     if (!isfinite(t1 - t0))
-        return cd_fail(q, CDIST_ERR_BAD_INTERVAL, "%s interval [%g, %g] is too long", what, t0, t1);
+        return cdist__fail(q, CDIST_ERR_BAD_INTERVAL, "%s interval [%g, %g] is too long", what, t0, t1);
     return CDIST_OK;
 }
 
 /* Run a curve (evaluated in the frame whose origin is `origin`) against circle or disk cc
  * (its centre already relative to that frame) and write the result. */
-static cdist_status run_curve(cdist_query *q, cd_cs_eval_fn ev, const void *ctx, double t0, double t1,
-                              const cd_circle *cc, int disk, vec3 origin, double scale, double frame_mag,
+static cdist_status run_curve(cdist_query *q, cdist__cs_eval_fn ev, const void *ctx, double t0, double t1,
+                              const cdist__circle *cc, int disk, vec3 origin, double scale, double frame_mag,
                               double up, cdist_result *r)
 {
-    cd_cs_coll k;
-    cd_cs_coll_init(&k, scale);
-    cd_cs_scan s = {q, ev, ctx, cc, disk, &k, NULL, NULL, 1, 0.0, frame_mag};
-    cdist_status st = cd_cs_scan_run(&s, t0, t1, q->curve_samples);
-    if (!st) st = cd_cs_flat_check(&s, t0, t1, (t1 - t0) / q->curve_samples);
+    cdist__cs_coll k;
+    cdist__cs_coll_init(&k, scale);
+    cdist__cs_scan s = {q, ev, ctx, cc, disk, &k, NULL, NULL, 1, 0.0, frame_mag};
+    cdist_status st = cdist__cs_scan_run(&s, t0, t1, q->curve_samples);
+    if (!st) st = cdist__cs_flat_check(&s, t0, t1, (t1 - t0) / q->curve_samples);
     if (st) return st;
-    cd_cs_coll_result(&k, up, origin, r);
+    cdist__cs_coll_result(&k, up, origin, r);
     return CDIST_OK;
 }
 
@@ -474,10 +474,10 @@ static cdist_status curve_query(cdist_query *q, cdist_curve_fn f, void *user, do
                                 const cdist_circle *c, cdist_result *r, int disk)
 {
     cdist_status st;
-    if (!f) return cd_fail(q, CDIST_ERR_NULL_ARGUMENT, "curve callback is NULL");
-    cd_circle cc;
-    if ((st = cd_check_circle(q, c, disk ? "disk" : "circle", &cc))) return st;
-    if ((st = cd_cs_check_interval(q, t0, t1, "curve"))) return st;
+    if (!f) return cdist__fail(q, CDIST_ERR_NULL_ARGUMENT, "curve callback is NULL");
+    cdist__circle cc;
+    if ((st = cdist__check_circle(q, c, disk ? "disk" : "circle", &cc))) return st;
+    if ((st = cdist__cs_check_interval(q, t0, t1, "curve"))) return st;
     user_curve u = {f, user, cc.c, 1.0};
     vec3 origin = cc.c;
     cc.c = v3(0, 0, 0);
@@ -491,41 +491,41 @@ static cdist_status curve_query(cdist_query *q, cdist_curve_fn f, void *user, do
         if ((st = user_eval(q, &u, t, &P, &D))) return st;
         L = fmax(L, v_maxabs(P));
     }
-    int e = cd_scale_exponent(L);
-    u.down = cd_pow2(-e);
+    int e = cdist__scale_exponent(L);
+    u.down = cdist__pow2(-e);
     cc.r *= u.down;
     /* The callback's positions are absolute: their rounding is relative to |origin| too. */
-    return run_curve(q, user_eval, &u, t0, t1, &cc, disk, origin, cc.r, v_maxabs(origin) * u.down, cd_pow2(e), r);
+    return run_curve(q, user_eval, &u, t0, t1, &cc, disk, origin, cc.r, v_maxabs(origin) * u.down, cdist__pow2(e), r);
 }
 
 cdist_status cdist_curve_circle(cdist_query *q, cdist_curve_fn f, void *user, double t0, double t1,
                                 const cdist_circle *c, cdist_result *r)
 {
-    cdist_status st = cd_enter(q, r);
+    cdist_status st = cdist__enter(q, r);
     if (st) return st;
-    return cd_leave(q, r, curve_query(q, f, user, t0, t1, c, r, 0), CDIST_METHOD_ROBUST);
+    return cdist__leave(q, r, curve_query(q, f, user, t0, t1, c, r, 0), CDIST_METHOD_ROBUST);
 }
 
 cdist_status cdist_curve_disk(cdist_query *q, cdist_curve_fn f, void *user, double t0, double t1,
                               const cdist_circle *d, cdist_result *r)
 {
-    cdist_status st = cd_enter(q, r);
+    cdist_status st = cdist__enter(q, r);
     if (st) return st;
-    return cd_leave(q, r, curve_query(q, f, user, t0, t1, d, r, 1), CDIST_METHOD_ROBUST);
+    return cdist__leave(q, r, curve_query(q, f, user, t0, t1, d, r, 1), CDIST_METHOD_ROBUST);
 }
 
 /* ---- frames ---- */
 
-cdist_status cd_cs_zero_frame(cdist_query *q, vec3 n, const cdist_vec3 *zd, const char *what, vec3 *U, vec3 *V)
+cdist_status cdist__cs_zero_frame(cdist_query *q, vec3 n, const cdist_vec3 *zd, const char *what, vec3 *U, vec3 *V)
 {
     vec3 z;
-    cdist_status st = cd_check_direction(q, zd, what, 0, &z, NULL);
+    cdist_status st = cdist__check_direction(q, zd, what, 0, &z, NULL);
     if (st) return st;
     vec3 w = v_cross(n, z);
     double sn = v_norm(w);
     /* U = (n x z) x n / |n x z| is z projected onto the plane; refuse an ill-defined one. */
     if (!(sn > CD_CURVE_PARALLEL_SIN))
-        return cd_fail(q, CDIST_ERR_ZERO_VECTOR, "%s is parallel to the normal/axis (sin %.3g)", what, sn);
+        return cdist__fail(q, CDIST_ERR_ZERO_VECTOR, "%s is parallel to the normal/axis (sin %.3g)", what, sn);
     *U = v_scale(1.0 / sn, v_cross(w, n));
     *V = v_cross(n, *U);
     return CDIST_OK;
@@ -560,7 +560,7 @@ typedef struct helix_bound {
     double rgap;     /* distance from the helix radius to the target's radial range */
 } helix_bound;
 
-static helix_bound helix_bound_init(const helix_x *hx, const cd_circle *c, int disk)
+static helix_bound helix_bound_init(const helix_x *hx, const cdist__circle *c, int disk)
 {
     helix_bound hb;
     vec3 n = hx->n;
@@ -602,7 +602,7 @@ static double helix_piece_lb(const helix_bound *hb, const helix_x *hx, double a,
  * CDIST_ERR_COST_LIMIT before the long scan.
  * After the nearest piece: the pieces whose bound does not exceed the distance found there are
  * all the pieces that may be scanned (the best only decreases); refuse when they cost too much. */
-static cdist_status helix_cost_check(const cd_cs_scan *s, const helix_x *hx, const helix_bound *hb, double t0,
+static cdist_status helix_cost_check(const cdist__cs_scan *s, const helix_x *hx, const helix_bound *hb, double t0,
                                      double plen, long pieces, long mid)
 {
     double best = s->k->b.n ? sqrt(s->k->b.c[0].d2) : INFINITY;
@@ -613,7 +613,7 @@ static cdist_status helix_cost_check(const cd_cs_scan *s, const helix_x *hx, con
     for (long i = mid + 1; i < pieces && count <= limit; i++, count++)
         if (helix_piece_lb(hb, hx, t0 + (double)i * plen, t0 + (double)(i + 1) * plen) > margin) break;
     if (count > limit)
-        return cd_fail(s->q, CDIST_ERR_COST_LIMIT,
+        return cdist__fail(s->q, CDIST_ERR_COST_LIMIT,
                        "helix: more than %ld turns are about equally close to the target (cost limit: %.0f "
                        "samples)",
                        limit, CD_CURVE_HELIX_MAX_SAMPLES);
@@ -624,7 +624,7 @@ static cdist_status helix_cost_check(const cd_cs_scan *s, const helix_x *hx, con
  * lower bound, from the piece nearest the target axially outwards (the bound is unimodal in i:
  * the axial gap shrinks, stays 0 while the pieces overlap the target's range, then grows),
  * stopping on each side at the first piece whose bound exceeds the best distance so far. */
-static cdist_status helix_pieces(cd_cs_scan *s, const helix_x *hx, double t0, double plen, long pieces, double t1)
+static cdist_status helix_pieces(cdist__cs_scan *s, const helix_x *hx, double t0, double plen, long pieces, double t1)
 {
     cdist_query *q = s->q;
     helix_bound hb = helix_bound_init(hx, s->c, s->disk);
@@ -660,7 +660,7 @@ static cdist_status helix_pieces(cd_cs_scan *s, const helix_x *hx, double t0, do
             else i = ++hi;
         }
         double a = t0 + (double)i * plen, b = (i == pieces - 1) ? t1 : t0 + (double)(i + 1) * plen;
-        if ((st = cd_cs_scan_run(s, a, b, q->curve_samples))) return st;
+        if ((st = cdist__cs_scan_run(s, a, b, q->curve_samples))) return st;
         if (i == mid && (st = helix_cost_check(s, hx, &hb, t0, plen, pieces, mid))) return st;
     }
     return CDIST_OK;
@@ -671,22 +671,22 @@ static cdist_status helix_query(cdist_query *q, const cdist_helix *h, const cdis
                                 int disk)
 {
     cdist_status st;
-    if (!h) return cd_fail(q, CDIST_ERR_NULL_ARGUMENT, "helix pointer is NULL");
-    cd_circle cc;
+    if (!h) return cdist__fail(q, CDIST_ERR_NULL_ARGUMENT, "helix pointer is NULL");
+    cdist__circle cc;
     helix_x hx;
-    if ((st = cd_check_point(q, &h->center, "helix centre")) ||
-        (st = cd_check_direction(q, &h->axis, "helix axis", 1, &hx.n, NULL)) ||
-        (st = cd_cs_zero_frame(q, hx.n, &h->zero_direction, "helix zero_direction", &hx.u, &hx.v)) ||
-        (st = cd_check_scalar(q, h->radius, "helix radius")) || (st = cd_check_scalar(q, h->pitch, "helix pitch")))
+    if ((st = cdist__check_point(q, &h->center, "helix centre")) ||
+        (st = cdist__check_direction(q, &h->axis, "helix axis", 1, &hx.n, NULL)) ||
+        (st = cdist__cs_zero_frame(q, hx.n, &h->zero_direction, "helix zero_direction", &hx.u, &hx.v)) ||
+        (st = cdist__check_scalar(q, h->radius, "helix radius")) || (st = cdist__check_scalar(q, h->pitch, "helix pitch")))
         return st;
-    if (h->radius < 0.0) return cd_fail(q, CDIST_ERR_NEGATIVE_RADIUS, "helix radius is negative (%g)", h->radius);
-    if ((st = cd_cs_check_interval(q, h->t0, h->t1, "helix"))) return st;
-    if ((st = cd_check_circle(q, c, disk ? "disk" : "circle", &cc))) return st;
+    if (h->radius < 0.0) return cdist__fail(q, CDIST_ERR_NEGATIVE_RADIUS, "helix radius is negative (%g)", h->radius);
+    if ((st = cdist__cs_check_interval(q, h->t0, h->t1, "helix"))) return st;
+    if ((st = cdist__check_circle(q, c, disk ? "disk" : "circle", &cc))) return st;
     double t0 = h->t0, t1 = h->t1;
     if ((t1 - t0) > 2.0 * M_PI * CD_CURVE_HELIX_MAX_TURNS)
-        return cd_fail(q, CDIST_ERR_BAD_INTERVAL, "helix has more than %g turns", CD_CURVE_HELIX_MAX_TURNS);
+        return cdist__fail(q, CDIST_ERR_BAD_INTERVAL, "helix has more than %g turns", CD_CURVE_HELIX_MAX_TURNS);
     if (fabs(t1) * fabs(h->pitch) > CD_MAX_ABS || fabs(t0) * fabs(h->pitch) > CD_MAX_ABS)
-        return cd_fail(q, CDIST_ERR_OUT_OF_RANGE, "helix reaches beyond 1e150");
+        return cdist__fail(q, CDIST_ERR_OUT_OF_RANGE, "helix reaches beyond 1e150");
     hx.r = h->radius;
     hx.rise = h->pitch / (2.0 * M_PI);
     /* Pitch 0 repeats one circle: one turn covers it. (Radius 0 is a segment of the axis: one
@@ -695,8 +695,8 @@ static cdist_status helix_query(cdist_query *q, const cdist_helix *h, const cdis
     vec3 origin = cc.c;
     hx.c = v_sub(h->center, origin);
     cc.c = v3(0, 0, 0);
-    int e = cd_scale_exponent(fmax(fmax(cc.r, hx.r), fmax(v_maxabs(hx.c), fabs(hx.rise) * fmax(fabs(t0), fabs(t1)))));
-    double down = cd_pow2(-e);
+    int e = cdist__scale_exponent(fmax(fmax(cc.r, hx.r), fmax(v_maxabs(hx.c), fabs(hx.rise) * fmax(fabs(t0), fabs(t1)))));
+    double down = cdist__pow2(-e);
     hx.c = v_scale(down, hx.c);
     hx.r *= down;
     hx.rise *= down;
@@ -706,31 +706,31 @@ static cdist_status helix_query(cdist_query *q, const cdist_helix *h, const cdis
     long pieces = (h->radius == 0.0) ? 1 : (long)ceil(len / (2.0 * M_PI));
     if (pieces < 1) pieces = 1;
     double plen = len / (double)pieces;
-    cd_cs_coll k;
-    cd_cs_coll_init(&k, fmax(cc.r, v_norm(hx.c)));
-    cd_cs_scan s = {q, helix_eval, &hx, &cc, disk, &k, NULL, NULL, 1, 0.0, 0.0};
+    cdist__cs_coll k;
+    cdist__cs_coll_init(&k, fmax(cc.r, v_norm(hx.c)));
+    cdist__cs_scan s = {q, helix_eval, &hx, &cc, disk, &k, NULL, NULL, 1, 0.0, 0.0};
     if (pieces == 1) {
-        if ((st = cd_cs_scan_run(&s, t0, t1, q->curve_samples))) return st;
+        if ((st = cdist__cs_scan_run(&s, t0, t1, q->curve_samples))) return st;
     } else if ((st = helix_pieces(&s, &hx, t0, plen, pieces, t1))) {
         return st;
     }
-    if ((st = cd_cs_flat_check(&s, t0, t1, plen / q->curve_samples))) return st;
-    cd_cs_coll_result(&k, cd_pow2(e), origin, r);
+    if ((st = cdist__cs_flat_check(&s, t0, t1, plen / q->curve_samples))) return st;
+    cdist__cs_coll_result(&k, cdist__pow2(e), origin, r);
     return CDIST_OK;
 }
 
 cdist_status cdist_helix_circle(cdist_query *q, const cdist_helix *h, const cdist_circle *c, cdist_result *r)
 {
-    cdist_status st = cd_enter(q, r);
+    cdist_status st = cdist__enter(q, r);
     if (st) return st;
-    return cd_leave(q, r, helix_query(q, h, c, r, 0), CDIST_METHOD_ROBUST);
+    return cdist__leave(q, r, helix_query(q, h, c, r, 0), CDIST_METHOD_ROBUST);
 }
 
 cdist_status cdist_helix_disk(cdist_query *q, const cdist_helix *h, const cdist_circle *d, cdist_result *r)
 {
-    cdist_status st = cd_enter(q, r);
+    cdist_status st = cdist__enter(q, r);
     if (st) return st;
-    return cd_leave(q, r, helix_query(q, h, d, r, 1), CDIST_METHOD_ROBUST);
+    return cdist__leave(q, r, helix_query(q, h, d, r, 1), CDIST_METHOD_ROBUST);
 }
 
 /* ---- cubic Bezier ---- */
@@ -755,13 +755,13 @@ static cdist_status bezier_query(cdist_query *q, const cdist_bezier3 *bz, const 
                                  int disk)
 {
     cdist_status st;
-    if (!bz) return cd_fail(q, CDIST_ERR_NULL_ARGUMENT, "Bezier pointer is NULL");
+    if (!bz) return cdist__fail(q, CDIST_ERR_NULL_ARGUMENT, "Bezier pointer is NULL");
     static const char *names[4] = {"Bezier control point 0", "Bezier control point 1", "Bezier control point 2",
                                    "Bezier control point 3"};
     for (int i = 0; i < 4; i++)
-        if ((st = cd_check_point(q, &bz->p[i], names[i]))) return st;
-    cd_circle cc;
-    if ((st = cd_check_circle(q, c, disk ? "disk" : "circle", &cc))) return st;
+        if ((st = cdist__check_point(q, &bz->p[i], names[i]))) return st;
+    cdist__circle cc;
+    if ((st = cdist__check_circle(q, c, disk ? "disk" : "circle", &cc))) return st;
     vec3 origin = cc.c;
     bez_x bx;
     double scale = cc.r;
@@ -769,24 +769,24 @@ static cdist_status bezier_query(cdist_query *q, const cdist_bezier3 *bz, const 
         bx.p[i] = v_sub(bz->p[i], origin);
         scale = fmax(scale, v_maxabs(bx.p[i]));
     }
-    int e = cd_scale_exponent(scale);
-    double down = cd_pow2(-e);
+    int e = cdist__scale_exponent(scale);
+    double down = cdist__pow2(-e);
     for (int i = 0; i < 4; i++) bx.p[i] = v_scale(down, bx.p[i]);
     cc.r *= down;
     cc.c = v3(0, 0, 0);
-    return run_curve(q, bez_eval, &bx, 0.0, 1.0, &cc, disk, origin, scale * down, 0.0, cd_pow2(e), r);
+    return run_curve(q, bez_eval, &bx, 0.0, 1.0, &cc, disk, origin, scale * down, 0.0, cdist__pow2(e), r);
 }
 
 cdist_status cdist_bezier3_circle(cdist_query *q, const cdist_bezier3 *b, const cdist_circle *c, cdist_result *r)
 {
-    cdist_status st = cd_enter(q, r);
+    cdist_status st = cdist__enter(q, r);
     if (st) return st;
-    return cd_leave(q, r, bezier_query(q, b, c, r, 0), CDIST_METHOD_ROBUST);
+    return cdist__leave(q, r, bezier_query(q, b, c, r, 0), CDIST_METHOD_ROBUST);
 }
 
 cdist_status cdist_bezier3_disk(cdist_query *q, const cdist_bezier3 *b, const cdist_circle *d, cdist_result *r)
 {
-    cdist_status st = cd_enter(q, r);
+    cdist_status st = cdist__enter(q, r);
     if (st) return st;
-    return cd_leave(q, r, bezier_query(q, b, d, r, 1), CDIST_METHOD_ROBUST);
+    return cdist__leave(q, r, bezier_query(q, b, d, r, 1), CDIST_METHOD_ROBUST);
 }

@@ -6,67 +6,67 @@
 
 #include "internal.h"
 
-/* Candidate collector: cd_best plus the smallest squared distance among candidates that have
+/* Candidate collector: cdist__best plus the smallest squared distance among candidates that have
  * infinitely many closest pairs (set as the result's equidistant flag only if that candidate
  * ends up the minimum). */
-typedef struct cd_cs_coll {
-    cd_best b;
+typedef struct cdist__cs_coll {
+    cdist__best b;
     double eq_d2;
     int flat_ties; /* set on the degenerate sampling paths (a constant function was scanned):
                     * three distinct tied candidates then mean a continuum */
-} cd_cs_coll;
+} cdist__cs_coll;
 
-void cd_cs_coll_init(cd_cs_coll *k, double scale);
-void cd_cs_coll_offer(cd_cs_coll *k, double d2, vec3 p0, vec3 p1, double a0, double a1, int eq);
+void cdist__cs_coll_init(cdist__cs_coll *k, double scale);
+void cdist__cs_coll_offer(cdist__cs_coll *k, double d2, vec3 p0, vec3 p1, double a0, double a1, int eq);
 /* Sets b.equidistant from the equidistant candidates and (flat_ties) from three-way ties. */
-void cd_cs_coll_finish(cd_cs_coll *k);
-/* The families work on a copy of the problem scaled by down = 2^-e (cd_scale_exponent of its
+void cdist__cs_coll_finish(cdist__cs_coll *k);
+/* The families work on a copy of the problem scaled by down = 2^-e (cdist__scale_exponent of its
  * scale: exact, and squared distances neither underflow nor overflow). Unscale the collector by
- * up = 2^e, finish it (cd_cs_coll_finish) and write the result, points moved by origin. */
-void cd_cs_coll_result(cd_cs_coll *k, double up, vec3 origin, cdist_result *r);
+ * up = 2^e, finish it (cdist__cs_coll_finish) and write the result, points moved by origin. */
+void cdist__cs_coll_result(cdist__cs_coll *k, double up, vec3 origin, cdist_result *r);
 /* Offer point p (any frame) with parameter t against circle/disk c (c->c in the same frame);
  * swap puts p second. */
-void cd_cs_offer_point(cd_cs_coll *k, vec3 p, double t, const cd_circle *c, int disk, int swap);
+void cdist__cs_offer_point(cdist__cs_coll *k, vec3 p, double t, const cdist__circle *c, int disk, int swap);
 
 /* rel (relative to c's centre) is on c's axis up to the rounding of the problem's scale
  * (CD_CURVE_AXIS_ULPS). */
-int cd_cs_near_axis(const cd_cs_coll *k, vec3 rel, const cd_circle *c);
+int cdist__cs_near_axis(const cdist__cs_coll *k, vec3 rel, const cdist__circle *c);
 
 /* A curve: position and derivative at t, in the scan's frame. Returns CDIST_OK or a status
- * (already recorded with cd_fail). */
-typedef cdist_status (*cd_cs_eval_fn)(cdist_query *q, const void *ctx, double t, vec3 *p, vec3 *dp);
+ * (already recorded with cdist__fail). */
+typedef cdist_status (*cdist__cs_eval_fn)(cdist_query *q, const void *ctx, double t, vec3 *p, vec3 *dp);
 
-typedef struct cd_cs_scan cd_cs_scan;
+typedef struct cdist__cs_scan cdist__cs_scan;
 /* Receives each candidate parameter t (and its point p) instead of the default point offer. */
-typedef void (*cd_cs_cand_fn)(const cd_cs_scan *s, double t, vec3 p);
+typedef void (*cdist__cs_cand_fn)(const cdist__cs_scan *s, double t, vec3 p);
 
-struct cd_cs_scan {
+struct cdist__cs_scan {
     cdist_query *q;
-    cd_cs_eval_fn ev;
+    cdist__cs_eval_fn ev;
     const void *ctx;
-    const cd_circle *c; /* target circle/disk, its centre c->c in the scan's frame */
+    const cdist__circle *c; /* target circle/disk, its centre c->c in the scan's frame */
     int disk;
-    cd_cs_coll *k;
-    cd_cs_cand_fn cand;    /* NULL: offer the point against c into k */
+    cdist__cs_coll *k;
+    cdist__cs_cand_fn cand;    /* NULL: offer the point against c into k */
     const void *cand_ctx;
     int update_scale;   /* raise k->b.scale to the sampled extent */
-    double span;        /* set by cd_cs_scan_run */
+    double span;        /* set by cdist__cs_scan_run */
     double frame_mag;   /* magnitude of the frame's coordinates (rounding level of positions) */
 };
 
 /* Bound, refine and offer every minimum of the distance over [t0, t1] with n samples
  * (at most the handle's curve sample count). */
-cdist_status cd_cs_scan_run(cd_cs_scan *s, double t0, double t1, int n);
+cdist_status cdist__cs_scan_run(cdist__cs_scan *s, double t0, double t1, int n);
 /* Polish a candidate minimum near t (from another method) within [lo, hi]: walk to the nearest
  * sign change of g in the direction of descent, refine, and offer the result. */
-cdist_status cd_cs_polish(cd_cs_scan *s, double t, double lo, double hi);
+cdist_status cdist__cs_polish(cdist__cs_scan *s, double t, double lo, double hi);
 /* After the scans: flag equidistance when the distance is flat (within the tie tolerance)
  * at t* +- delta around the best parameter (a curve lying on a continuum of minima). */
-cdist_status cd_cs_flat_check(cd_cs_scan *s, double t0, double t1, double delta);
+cdist_status cdist__cs_flat_check(cdist__cs_scan *s, double t0, double t1, double delta);
 /* t0, t1 finite (NOT_FINITE), t0 <= t1 and t1 - t0 finite (BAD_INTERVAL). */
-cdist_status cd_cs_check_interval(cdist_query *q, double t0, double t1, const char *what);
+cdist_status cdist__cs_check_interval(cdist_query *q, double t0, double t1, const char *what);
 /* U = zd projected onto the plane of unit normal n, normalised; V = n x U. ZERO_VECTOR when zd
  * is zero or within CD_CURVE_PARALLEL_SIN of n. */
-cdist_status cd_cs_zero_frame(cdist_query *q, vec3 n, const cdist_vec3 *zd, const char *what, vec3 *U, vec3 *V);
+cdist_status cdist__cs_zero_frame(cdist_query *q, vec3 n, const cdist_vec3 *zd, const char *what, vec3 *U, vec3 *V);
 
 #endif

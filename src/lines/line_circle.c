@@ -78,7 +78,7 @@ CD_INLINE double fdf(const void *ctx, double s, double *df)
  * the ratio f / f': the same Newton steps to rounding, with one division per step (the step)
  * instead of two (w and the step): f P = a h P + m0 x2 num rho^2, f' P = k P - r m0^2 x1^2 (rho + r).
  * Where P could underflow or overflow (rho far from 1; never in a scaled problem's bracket
- * except near the axis) it is fdf itself. Not for cd_root_polish, which compares |f| at two
+ * except near the axis) it is fdf itself. Not for cdist__root_polish, which compares |f| at two
  * points. */
 CD_INLINE double fdf_scaled(const void *ctx, double s, double *df)
 {
@@ -107,13 +107,13 @@ CD_INLINE double f_at(const lc_model *m, double s)
  * commutes with s -> -s when F' is odd, so mirrored brackets give mirrored roots. */
 CD_INLINE double solve(const lc_model *m, double lo, double hi)
 {
-    return cd_root_newton(fdf_scaled, m, lo, hi, +1, CD_ROOT_REL_ULPS * EPS, CD_ROOT_ABS, CD_ROOT_MAX_ITER);
+    return cdist__root_newton(fdf_scaled, m, lo, hi, +1, CD_ROOT_REL_ULPS * EPS, CD_ROOT_ABS, CD_ROOT_MAX_ITER);
 }
 
 /* Newton on F' from a polynomial root, kept only while |F'| decreases. */
 CD_INLINE double polish(const lc_model *m, double x)
 {
-    return cd_root_polish(fdf, m, x, CD_ROOT_REL_ULPS * EPS, CD_ROOT_ABS, CD_POLISH_MAX_ITER);
+    return cdist__root_polish(fdf, m, x, CD_ROOT_REL_ULPS * EPS, CD_ROOT_ABS, CD_POLISH_MAX_ITER);
 }
 
 /* ---- candidates ---- */
@@ -121,7 +121,7 @@ CD_INLINE double polish(const lc_model *m, double x)
 #define LC_MAX_CAND 8
 
 typedef struct lc_ctx {
-    const cd_circle *c;
+    const cdist__circle *c;
     vec3 B, M;        /* the caller's line (unscaled, relative to the centre) */
     double t0;        /* t of B0 */
     double sigma;     /* scale factor (power of two) */
@@ -130,13 +130,13 @@ typedef struct lc_ctx {
     double rs;        /* scaled radius */
     double eqtol;     /* on-axis tolerance for rho (scaled) */
     int n;
-    cd_cand cand[LC_MAX_CAND]; /* .equidistant: an on-axis point (every circle point as close) */
+    cdist__cand cand[LC_MAX_CAND]; /* .equidistant: an on-axis point (every circle point as close) */
 } lc_ctx;
 
 CD_INLINE void push(lc_ctx *x, double d2, vec3 P, vec3 K, double t, double ang, int eq)
 {
     if (x->n >= LC_MAX_CAND) return;
-    cd_cand *c = &x->cand[x->n];
+    cdist__cand *c = &x->cand[x->n];
     c->d2 = d2;
     c->p[0] = P;
     c->p[1] = K;
@@ -147,7 +147,7 @@ CD_INLINE void push(lc_ctx *x, double d2, vec3 P, vec3 K, double t, double ang, 
 }
 
 /* Circle point in direction (X, Y) of the basis; (0, 0) gives the representative angle 0. */
-CD_INLINE vec3 circle_pt(const cd_circle *c, double X, double Y, double *ang)
+CD_INLINE vec3 circle_pt(const cdist__circle *c, double X, double Y, double *ang)
 {
     double n2 = MADD(X, X, Y * Y);
     /* the core runs on scaled input (X, Y ~ 1): sqrt, with hypot only as a guard */
@@ -160,7 +160,7 @@ CD_INLINE vec3 circle_pt(const cd_circle *c, double X, double Y, double *ang)
         *ang = 0.0;
         return v_scale(c->r, c->u);
     }
-    *ang = cd_polar_angle(X, Y);
+    *ang = cdist__polar_angle(X, Y);
     double k = c->r / n;
     return v_add(v_scale(k * X, c->u), v_scale(k * Y, c->v));
 }
@@ -181,10 +181,10 @@ CD_INLINE void offer_model(lc_ctx *x, const lc_model *m, double s)
     push(x, d2, P, K, t, ang, rho <= x->eqtol);
 }
 
-/* A finite end of the range: point-circle (cd_point_circle_core semantics, parameter t). */
+/* A finite end of the range: point-circle (cdist__point_circle_core semantics, parameter t). */
 CD_INLINE void offer_end(lc_ctx *x, double t)
 {
-    const cd_circle *c = x->c;
+    const cdist__circle *c = x->c;
     vec3 P = v_axpy(x->B, t, x->M);
     vec3 np = v_cross(c->n, P);
     double h = v_dot(c->n, P), rho = v_norm(np);
@@ -205,7 +205,7 @@ CD_INLINE void merge_basins(lc_ctx *x, const lc_model *m, double tol)
     /* sort by t */
     for (int i = 1; i < x->n; i++)
         for (int j = i; j > 0 && x->cand[j].param[0] < x->cand[j - 1].param[0]; j--) {
-            cd_cand tc = x->cand[j];
+            cdist__cand tc = x->cand[j];
             x->cand[j] = x->cand[j - 1];
             x->cand[j - 1] = tc;
         }
@@ -213,10 +213,10 @@ CD_INLINE void merge_basins(lc_ctx *x, const lc_model *m, double tol)
         double sa = (x->cand[i].param[0] - x->t0) * x->sigma - x->uO;
         double sb = (x->cand[i + 1].param[0] - x->t0) * x->sigma - x->uO;
         double fmaxv = 0.0;
-        for (int k = 1; k <= 3; k++) fmaxv = cd_fmax(fmaxv, f_at(m, sa + 0.25 * k * (sb - sa)));
+        for (int k = 1; k <= 3; k++) fmaxv = cdist__fmax(fmaxv, f_at(m, sa + 0.25 * k * (sb - sa)));
         double dmid = sqrt(fmaxv) * x->up;
         double d0 = sqrt(x->cand[i].d2), d1 = sqrt(x->cand[i + 1].d2);
-        if (dmid > cd_fmax(d0, d1) + tol) {
+        if (dmid > cdist__fmax(d0, d1) + tol) {
             i++;
             continue;
         }
@@ -248,7 +248,7 @@ CD_FMA_CLONES static void robust_roots(const lc_model *m, double smin, double sm
          * branch exists iff F'(sL) >= 0, on the right branch iff F'(sR) <= 0. */
         double cm = cbrt(m->m0 * m->ax1);
         double rhohat = cbrt(m->r) * cm * cm;
-        double x2hat = sqrt(cd_fmax(0.0, (rhohat - m->ax1) * (rhohat + m->ax1)));
+        double x2hat = sqrt(cdist__fmax(0.0, (rhohat - m->ax1) * (rhohat + m->ax1)));
         double sc = -m->c2 / m->m0;
         double sL = sc - x2hat / m->m0, sR = sc + x2hat / m->m0;
         double fL = fp_at(m, fma(m->a, sL, m->h), -x2hat, -1);
@@ -259,17 +259,17 @@ CD_FMA_CLONES static void robust_roots(const lc_model *m, double smin, double sm
         if (!left && !right) left = right = 1;
         if (left && lo <= sL) {
             br[nb][0] = lo;
-            br[nb][1] = cd_fmin(sL, hi);
+            br[nb][1] = cdist__fmin(sL, hi);
             nb++;
         }
         if (right && sR <= hi) {
-            br[nb][0] = cd_fmax(sR, lo);
+            br[nb][0] = cdist__fmax(sR, lo);
             br[nb][1] = hi;
             nb++;
         }
     }
     for (int i = 0; i < nb; i++) {
-        double a = cd_fmax(br[i][0], smin), b = cd_fmin(br[i][1], smax);
+        double a = cdist__fmax(br[i][0], smin), b = cdist__fmin(br[i][1], smax);
         if (a > b) continue;
         roots[(*nr)++] = solve(m, a, b);
     }
@@ -293,7 +293,7 @@ CD_FMA_CLONES static int poly_roots(cdist_query *q, const lc_model *m, double sm
     d[1] = 2.0 * mu * A0 + mu * mu * A1 - 2.0 * r2 * A2 * m0 * c2;
     d[0] = mu * mu * A0 - r2 * A2 * c2 * c2;
     double z[4];
-    int n = cd_poly_real_roots(q->poly, d, 4, CD_LC_POLY_IMAG, z);
+    int n = cdist__poly_real_roots(q->poly, d, 4, CD_LC_POLY_IMAG, z);
     if (n < 0) return -1;
     int k = 0;
     for (int i = 0; i < n; i++) {
@@ -306,12 +306,12 @@ CD_FMA_CLONES static int poly_roots(cdist_query *q, const lc_model *m, double sm
 /* ---- the core ---- */
 
 CD_FMA_CLONES static cdist_status linear_circle(cdist_query *q, cdist_method method, vec3 B, vec3 M, double tmin, double tmax,
-                                  const cd_circle *c, cd_best *b, cdist_method *used)
+                                  const cdist__circle *c, cdist__best *b, cdist_method *used)
 {
     if (method != CDIST_METHOD_POLYNOMIAL) method = CDIST_METHOD_ROBUST;
     if (used) *used = method;
     if (!(tmin <= tmax) || isnan(tmin) || isnan(tmax) || !v_isfinite(B) || !v_isfinite(M))
-        return cd_fail(q, CDIST_ERR_INTERNAL, "line-circle core: bad range [%g, %g] or input", tmin, tmax);
+        return cdist__fail(q, CDIST_ERR_INTERNAL, "line-circle core: bad range [%g, %g] or input", tmin, tmax);
     lc_ctx x;
     x.c = c;
     x.B = B;
@@ -331,7 +331,7 @@ CD_FMA_CLONES static cdist_status linear_circle(cdist_query *q, cdist_method met
 
     if (c->r == 0.0) {
         /* The circle is its centre: nearest point of the range to the origin. */
-        double u = cd_fmin(cd_fmax(0.0, umin), umax);
+        double u = cdist__fmin(cdist__fmax(0.0, umin), umax);
         double t = (u == 0.0) ? t0 : t0 + u;
         if (tmin == tmax) t = tmin;
         vec3 P = (u == 0.0) ? B0 : v_axpy(B, t, M);
@@ -339,15 +339,15 @@ CD_FMA_CLONES static cdist_status linear_circle(cdist_query *q, cdist_method met
         goto done;
     }
 
-    double S = cd_fmax(c->r, v_norm(B0));
-    int e = cd_scale_exponent(S);
-    double sg = cd_pow2(-e);
+    double S = cdist__fmax(c->r, v_norm(B0));
+    int e = cdist__scale_exponent(S);
+    double sg = cdist__pow2(-e);
     x.sigma = sg;
-    x.up = cd_pow2(e);
+    x.up = cdist__pow2(e);
     vec3 B0s = v_scale(sg, B0);
     double rs = c->r * sg;
     x.rs = rs;
-    x.eqtol = CD_LC_AXIS_ULPS * EPS * cd_fmax(1.0, sg * v_norm(B));
+    x.eqtol = CD_LC_AXIS_ULPS * EPS * cdist__fmax(1.0, sg * v_norm(B));
     umin *= sg;
     umax *= sg;
 
@@ -367,7 +367,7 @@ CD_FMA_CLONES static cdist_status linear_circle(cdist_query *q, cdist_method met
         /* Perpendicular to the plane (§4.1 cases 1, 2): F = (h0 + a u)^2 + (rho - r)^2 with rho
          * constant to rounding, so the minimum is the plane crossing, clamped to the range. On
          * the axis every circle point is equally close (equidistant, also for rays/segments). */
-        double u = cd_fmin(cd_fmax(-h0 / a, umin), umax);
+        double u = cdist__fmin(cdist__fmax(-h0 / a, umin), umax);
         double X = fma(u, m2x, b2x), Y = fma(u, m2y, b2y);
         double rho = sqrt(X * X + Y * Y), h = fma(a, u, h0), dr = rho - rs;
         double t = x.t0 + u / sg;
@@ -423,14 +423,14 @@ done:;
     /* Offer everything; an on-axis candidate makes the result equidistant only if it ends up
      * the best in b (an on-axis end that is not the minimum sets nothing). */
     for (int i = 0; i < x.n; i++) {
-        const cd_cand *k = &x.cand[i];
-        cd_best_offer_flag(b, k->equidistant, k->d2, k->p[0], k->p[1], k->param[0], k->param[1]);
+        const cdist__cand *k = &x.cand[i];
+        cdist__best_offer_flag(b, k->equidistant, k->d2, k->p[0], k->p[1], k->param[0], k->param[1]);
     }
     return CDIST_OK;
 }
 
-cdist_status cd_linear_circle_ex(cdist_query *q, cdist_method method, vec3 B, vec3 M, double tmin, double tmax,
-                                 const cd_circle *c, cd_best *b, cdist_method *used)
+cdist_status cdist__linear_circle_ex(cdist_query *q, cdist_method method, vec3 B, vec3 M, double tmin, double tmax,
+                                 const cdist__circle *c, cdist__best *b, cdist_method *used)
 {
     return linear_circle(q, method, B, M, tmin, tmax, c, b, used);
 }
@@ -441,8 +441,8 @@ cdist_status cd_linear_circle_ex(cdist_query *q, cdist_method method, vec3 B, ve
  * of the line, ray or segment), the quantity ../shared/cases/README.md measures errors against. */
 CD_INLINE double range_scale(vec3 B, vec3 M, double tmin, double tmax, double r)
 {
-    double t = cd_fmin(cd_fmax(-v_dot(B, M), tmin), tmax);
-    return cd_fmax(r, v_norm(v_axpy(B, t, M)));
+    double t = cdist__fmin(cdist__fmax(-v_dot(B, M), tmin), tmax);
+    return cdist__fmax(r, v_norm(v_axpy(B, t, M)));
 }
 
 /* Runs the core for the points origin + t D, t in [tmin, tmax] (D as the caller passed it, M its
@@ -454,20 +454,20 @@ CD_INLINE double range_scale(vec3 B, vec3 M, double tmin, double tmax, double r)
  * eps * |origin - C| in the translation and eps * |t| in the normalisation of D. The move is done
  * on origin - C kept exactly as two doubles, so nothing is rounded to the grid of the absolute
  * coordinates either (objects far from the coordinate origin). */
-CD_FMA_CLONES vec3 cd_line_near_centre(vec3 origin, vec3 D, vec3 C, double tmin, double tmax, double *t0)
+CD_FMA_CLONES vec3 cdist__line_near_centre(vec3 origin, vec3 D, vec3 C, double tmin, double tmax, double *t0)
 {
     /* origin - C = hi + lo exactly; B = hi + t0 D + lo, rounded once at the scale of B */
     vec3 lo3, hi3;
-    hi3.x = cd_two_diff(origin.x, C.x, &lo3.x);
-    hi3.y = cd_two_diff(origin.y, C.y, &lo3.y);
-    hi3.z = cd_two_diff(origin.z, C.z, &lo3.z);
+    hi3.x = cdist__two_diff(origin.x, C.x, &lo3.x);
+    hi3.y = cdist__two_diff(origin.y, C.y, &lo3.y);
+    hi3.z = cdist__two_diff(origin.z, C.z, &lo3.z);
     double m = v_maxabs(D), t;
     if (m >= 0x1p-1021 && m < 0x1p1022) {
         /* D scaled by the power of two 2^-e of m (exact; |Ds|^2 in [1, 12)): one division,
          * and t is exactly 2^k times itself for a query scaled by 2^k */
         union { double d; unsigned long long u; } b = {m};
         int e = (int)((b.u >> 52) & 0x7ff) - 1023;
-        double p = cd_pow2(-e);
+        double p = cdist__pow2(-e);
         vec3 Ds = v_scale(p, D);
         t = -(v_dot(hi3, Ds) / v_sqr(Ds)) * p;
     } else {
@@ -475,7 +475,7 @@ CD_FMA_CLONES vec3 cd_line_near_centre(vec3 origin, vec3 D, vec3 C, double tmin,
         t = -(v_dot(hi3, Ds) / v_sqr(Ds)) / m;
     }
     if (!isfinite(t)) t = 0.0;
-    t = cd_fmin(cd_fmax(t, tmin), tmax); /* rays and segments: stay on the object (no cancellation in t) */
+    t = cdist__fmin(cdist__fmax(t, tmin), tmax); /* rays and segments: stay on the object (no cancellation in t) */
     *t0 = t;
     return v_add(v_axpy(hi3, t, D), lo3);
 }
@@ -483,23 +483,23 @@ CD_FMA_CLONES vec3 cd_line_near_centre(vec3 origin, vec3 D, vec3 C, double tmin,
 /* The core for origin + t D, t in [tmin, tmax] (M = D/|D|, len = |D|), circle cc; writes r
  * (without its method) and the method that answered. */
 CD_FMA_CLONES static cdist_status run(cdist_query *q, vec3 origin, vec3 D, vec3 M, double len, double tmin, double tmax,
-                        const cd_circle *cc, cdist_result *r, cdist_method *used)
+                        const cdist__circle *cc, cdist_result *r, cdist_method *used)
 {
     double t0;
-    vec3 B = cd_line_near_centre(origin, D, cc->c, tmin, tmax, &t0);
+    vec3 B = cdist__line_near_centre(origin, D, cc->c, tmin, tmax, &t0);
     double lo = (tmin - t0) * len, hi = (tmax - t0) * len;
     if (tmin == t0) lo = 0.0;
     if (tmax == t0) hi = 0.0;
-    cd_best b;
-    cd_best_init(&b, range_scale(B, M, lo, hi, cc->r));
-    cdist_status st = cd_linear_circle_ex(q, cd_family_method(q, CD_FAM_LINE_CIRCLE), B, M, lo, hi, cc, &b, used);
+    cdist__best b;
+    cdist__best_init(&b, range_scale(B, M, lo, hi, cc->r));
+    cdist_status st = cdist__linear_circle_ex(q, cdist__family_method(q, CD_FAM_LINE_CIRCLE), B, M, lo, hi, cc, &b, used);
     if (st) return st;
-    if (b.n == 0) return cd_fail(q, CDIST_ERR_INTERNAL, "line-circle: no candidate");
-    cd_best_to_result(&b, cc->c, 0, r);
-    cd_result_finish(r, r->num_pairs);
+    if (b.n == 0) return cdist__fail(q, CDIST_ERR_INTERNAL, "line-circle: no candidate");
+    cdist__best_to_result(&b, cc->c, 0, r);
+    cdist__result_finish(r, r->num_pairs);
     for (int i = 0; i < r->num_pairs; i++) {
         double t = t0 + r->pairs[i].param[0] / len;
-        r->pairs[i].param[0] = cd_fmin(cd_fmax(t, tmin), tmax);
+        r->pairs[i].param[0] = cdist__fmin(cdist__fmax(t, tmin), tmax);
     }
     return CDIST_OK;
 }
@@ -508,33 +508,33 @@ CD_FMA_CLONES static cdist_status run(cdist_query *q, vec3 origin, vec3 D, vec3 
  * [1, 2); the parameter t is unchanged (D is scaled with the origin), the
  * distances and points are scaled back exactly. Inputs already validated. */
 static cdist_status run_scaled(cdist_query *q, vec3 origin, vec3 D, vec3 M, double len, double tmin, double tmax,
-                               cd_circle cc, cdist_result *r, cdist_method *used)
+                               cdist__circle cc, cdist_result *r, cdist_method *used)
 {
-    int e = cd_lines_scale_exponent(origin, NULL, &cc);
-    double down = cd_pow2(-e);
-    cd_circle_scale(&cc, down);
+    int e = cdist__lines_scale_exponent(origin, NULL, &cc);
+    double down = cdist__pow2(-e);
+    cdist__circle_scale(&cc, down);
     cdist_status st = run(q, v_scale(down, origin), v_scale(down, D), M, len * down, tmin, tmax, &cc, r, used);
-    if (st == CDIST_OK) cd_result_unscale(r, cd_pow2(e));
+    if (st == CDIST_OK) cdist__result_unscale(r, cdist__pow2(e));
     return st;
 }
 
 static cdist_status linear_public(cdist_query *q, const cdist_vec3 *origin, const cdist_vec3 *dir, const void *obj,
                                   int is_ray, double tmin, double tmax, const cdist_circle *c, cdist_result *r)
 {
-    cdist_status st = cd_enter(q, r);
+    cdist_status st = cdist__enter(q, r);
     if (st) return st;
-    cd_circle cc;
+    cdist__circle cc;
     vec3 M;
     double len;
     cdist_method used = CDIST_METHOD_ROBUST;
-    if (!(st = cd_check_ptr(q, obj, is_ray ? "ray" : "line")) &&
-        !(st = cd_check_point(q, origin, is_ray ? "ray origin" : "line origin")) &&
-        !(st = cd_check_direction(q, dir, is_ray ? "ray direction" : "line direction", 1, &M, &len)) &&
-        !(st = cd_check_circle(q, c, "circle", &cc))) {
+    if (!(st = cdist__check_ptr(q, obj, is_ray ? "ray" : "line")) &&
+        !(st = cdist__check_point(q, origin, is_ray ? "ray origin" : "line origin")) &&
+        !(st = cdist__check_direction(q, dir, is_ray ? "ray direction" : "line direction", 1, &M, &len)) &&
+        !(st = cdist__check_circle(q, c, "circle", &cc))) {
         /* t is reported for the direction as passed */
         st = run_scaled(q, *origin, *dir, M, len, tmin, tmax, cc, r, &used);
     }
-    return cd_leave(q, r, st, used);
+    return cdist__leave(q, r, st, used);
 }
 
 cdist_status cdist_line_circle(cdist_query *q, const cdist_line *l, const cdist_circle *c, cdist_result *r)
@@ -549,32 +549,32 @@ cdist_status cdist_ray_circle(cdist_query *q, const cdist_ray *l, const cdist_ci
 
 cdist_status cdist_segment_circle(cdist_query *q, const cdist_segment *s, const cdist_circle *c, cdist_result *r)
 {
-    cdist_status st = cd_enter(q, r);
+    cdist_status st = cdist__enter(q, r);
     if (st) return st;
-    cd_circle cc;
-    cdist_method used = cd_family_method(q, CD_FAM_SEGMENT_CIRCLE);
-    if ((st = cd_check_ptr(q, s, "segment")) || (st = cd_check_point(q, &s->p0, "segment p0")) ||
-        (st = cd_check_point(q, &s->p1, "segment p1")) || (st = cd_check_circle(q, c, "circle", &cc)))
-        return cd_leave(q, r, st, used);
+    cdist__circle cc;
+    cdist_method used = cdist__family_method(q, CD_FAM_SEGMENT_CIRCLE);
+    if ((st = cdist__check_ptr(q, s, "segment")) || (st = cdist__check_point(q, &s->p0, "segment p0")) ||
+        (st = cdist__check_point(q, &s->p1, "segment p1")) || (st = cdist__check_circle(q, c, "circle", &cc)))
+        return cdist__leave(q, r, st, used);
     vec3 D = v_sub(s->p1, s->p0);
     if (D.x == 0.0 && D.y == 0.0 && D.z == 0.0) {
         /* p0 == p1: the segment is a point; s = 0. */
-        cd_point_result(s->p0, &cc, 0, r);
+        cdist__point_result(s->p0, &cc, 0, r);
         r->pairs[0].param[0] = 0.0;
-        return cd_leave(q, r, CDIST_OK, used);
+        return cdist__leave(q, r, CDIST_OK, used);
     }
     /* scaled before D is normalised, so that 2^k times the input gives exactly 2^k times the
      * answer (the normalisation of a tiny D takes another path) */
-    int e = cd_lines_scale_exponent(s->p0, &s->p1, &cc);
-    double down = cd_pow2(-e);
-    cd_circle_scale(&cc, down);
+    int e = cdist__lines_scale_exponent(s->p0, &s->p1, &cc);
+    double down = cdist__pow2(-e);
+    cdist__circle_scale(&cc, down);
     vec3 Ds = v_scale(down, D), M;
     double len;
-    if (!(st = cd_check_direction(q, &Ds, "segment direction p1 - p0", 0, &M, &len)) &&
+    if (!(st = cdist__check_direction(q, &Ds, "segment direction p1 - p0", 0, &M, &len)) &&
         !(st = run(q, v_scale(down, s->p0), Ds, M, len, 0.0, 1.0, &cc, r, &used))) {
-        cd_result_unscale(r, cd_pow2(e));
+        cdist__result_unscale(r, cdist__pow2(e));
         for (int i = 0; i < r->num_pairs; i++)
             if (r->pairs[i].param[0] == 0.0) r->pairs[i].point[0] = s->p0; /* exactly the caller's start point */
     }
-    return cd_leave(q, r, st, used);
+    return cdist__leave(q, r, st, used);
 }

@@ -13,18 +13,18 @@
  * Split the range where the projection onto the plane enters and leaves the disk:
  *   over the disk: G = |h(t)| with h linear, so its minimum on the piece is at the plane
  *     crossing (distance 0) or at an end of the piece;
- *   outside: G = F, the line-circle distance, by cd_linear_circle restricted to the piece.
+ *   outside: G = F, the line-circle distance, by cdist__linear_circle restricted to the piece.
  * The lemma at the top makes the split points themselves unnecessary as candidates, but they
  * are offered anyway (cheap, and they protect against a split computed a few ulps off). */
-CD_INLINE void lin_offer(vec3 B, vec3 M, double t, const cd_circle *d, cd_best *b)
+CD_INLINE void lin_offer(vec3 B, vec3 M, double t, const cdist__circle *d, cdist__best *b)
 {
     vec3 p = v_axpy(B, t, M);
-    cd_point_pair k = cd_point_disk_pair(p, d); /* offered without its on-axis flag */
-    cd_best_offer(b, k.d2, p, k.k, t, k.angle);
+    cdist__point_pair k = cdist__point_disk_pair(p, d); /* offered without its on-axis flag */
+    cdist__best_offer(b, k.d2, p, k.k, t, k.angle);
 }
 
 CD_FMA_CLONES static cdist_status linear_disk(cdist_query *q, cdist_method method, vec3 B, vec3 M, double tmin, double tmax,
-                                const cd_circle *d, cd_best *b, cdist_method *used)
+                                const cdist__circle *d, cdist__best *b, cdist_method *used)
 {
     *used = method == CDIST_METHOD_POLYNOMIAL ? method : CDIST_METHOD_ROBUST;
     cdist_method u1 = *used;
@@ -36,11 +36,11 @@ CD_FMA_CLONES static cdist_status linear_disk(cdist_query *q, cdist_method metho
     double eq_d2 = INFINITY;
     /* Candidates are collected in loc, then merged into b; into b itself when b is still
      * empty (the usual case), which is the same result without the copy. */
-    cd_best loc_store, *loc = b;
+    cdist__best loc_store, *loc = b;
     int direct = b->n == 0 && !b->equidistant;
     if (!direct) {
         loc = &loc_store;
-        cd_best_init(loc, b->scale);
+        cdist__best_init(loc, b->scale);
     }
     double t1 = INFINITY, t2 = -INFINITY; /* the projection is over the disk for t in [t1, t2] */
     if (mp2 > 0.0) {
@@ -57,13 +57,13 @@ CD_FMA_CLONES static cdist_status linear_disk(cdist_query *q, cdist_method metho
         t1 = -INFINITY;
         t2 = INFINITY;
     }
-    double lo = cd_fmax(tmin, t1), hi = cd_fmin(tmax, t2);
+    double lo = cdist__fmax(tmin, t1), hi = cdist__fmin(tmax, t2);
     cdist_status st;
     if (lo <= hi) {
         /* The piece over the disk. */
         if (fabs(mn) <= CD_LD_PARALLEL_ULPS * DBL_EPSILON) {
             /* Parallel to the plane (within rounding): |h| constant over a stretch. */
-            double tt = isfinite(lo) ? lo : isfinite(hi) ? hi : cd_fmin(cd_fmax(0.0, lo), hi);
+            double tt = isfinite(lo) ? lo : isfinite(hi) ? hi : cdist__fmin(cdist__fmax(0.0, lo), hi);
             if (isfinite(lo) && isfinite(hi)) tt = 0.5 * (lo + hi);
             lin_offer(B, M, tt, d, loc);
             if (hi > lo && R > 0.0) eq_d2 = loc->n ? loc->c[0].d2 : INFINITY;
@@ -72,7 +72,7 @@ CD_FMA_CLONES static cdist_status linear_disk(cdist_query *q, cdist_method metho
             if (tz >= lo && tz <= hi) {
                 /* Crossing point: polish once on h, clamp into the piece. */
                 double hz = v_dot(d->n, v_axpy(B, tz, M));
-                tz = cd_fmin(cd_fmax(tz - hz / mn, lo), hi);
+                tz = cdist__fmin(cdist__fmax(tz - hz / mn, lo), hi);
                 lin_offer(B, M, tz, d, loc);
             }
             if (isfinite(lo)) lin_offer(B, M, lo, d, loc);
@@ -84,56 +84,56 @@ CD_FMA_CLONES static cdist_status linear_disk(cdist_query *q, cdist_method metho
          * hi is the end already offered. */
         int both = tmin < lo && hi < tmax && !(fabs(mn) <= CD_LD_PARALLEL_ULPS * DBL_EPSILON);
         if (both) {
-            cd_best all;
-            cd_best_init(&all, b->scale);
-            if ((st = cd_linear_circle_ex(q, method, B, M, tmin, tmax, d, &all, &u1))) return st;
+            cdist__best all;
+            cdist__best_init(&all, b->scale);
+            if ((st = cdist__linear_circle_ex(q, method, B, M, tmin, tmax, d, &all, &u1))) return st;
             if (u1 == CDIST_METHOD_ROBUST) *used = u1;
             /* straight into loc: `all` is sorted by d2, so the first kept candidate is the
              * pieces' best (what merging a collector of them would report) */
             int first = 1;
             for (int i = 0; i < all.n; i++) {
-                const cd_cand *k = &all.c[i];
+                const cdist__cand *k = &all.c[i];
                 if (!(k->param[0] <= lo || k->param[0] >= hi)) continue;
                 if (first && k->equidistant && k->d2 < eq_d2) eq_d2 = k->d2;
                 first = 0;
-                cd_best_offer_flag(loc, k->equidistant, k->d2, k->p[0], k->p[1], k->param[0], k->param[1]);
+                cdist__best_offer_flag(loc, k->equidistant, k->d2, k->p[0], k->p[1], k->param[0], k->param[1]);
             }
         }
         if (!both && tmin < lo) {
-            cd_best t;
-            cd_best_init(&t, b->scale);
-            if ((st = cd_linear_circle_ex(q, method, B, M, tmin, lo, d, &t, &u1))) return st;
+            cdist__best t;
+            cdist__best_init(&t, b->scale);
+            if ((st = cdist__linear_circle_ex(q, method, B, M, tmin, lo, d, &t, &u1))) return st;
             if (u1 == CDIST_METHOD_ROBUST) *used = u1;
-            double m2 = cd_best_merge(loc, &t, v3(0, 0, 0), 0);
-            if (cd_best_is_equidistant(&t) && m2 < eq_d2) eq_d2 = m2;
+            double m2 = cdist__best_merge(loc, &t, v3(0, 0, 0), 0);
+            if (cdist__best_is_equidistant(&t) && m2 < eq_d2) eq_d2 = m2;
         }
         if (!both && hi < tmax) {
-            cd_best t;
-            cd_best_init(&t, b->scale);
-            if ((st = cd_linear_circle_ex(q, method, B, M, hi, tmax, d, &t, &u1))) return st;
+            cdist__best t;
+            cdist__best_init(&t, b->scale);
+            if ((st = cdist__linear_circle_ex(q, method, B, M, hi, tmax, d, &t, &u1))) return st;
             if (u1 == CDIST_METHOD_ROBUST) *used = u1;
-            double m2 = cd_best_merge(loc, &t, v3(0, 0, 0), 0);
-            if (cd_best_is_equidistant(&t) && m2 < eq_d2) eq_d2 = m2;
+            double m2 = cdist__best_merge(loc, &t, v3(0, 0, 0), 0);
+            if (cdist__best_is_equidistant(&t) && m2 < eq_d2) eq_d2 = m2;
         }
     } else {
         /* loc is empty here: the core offers into it directly */
-        if ((st = cd_linear_circle_ex(q, method, B, M, tmin, tmax, d, loc, &u1))) return st;
+        if ((st = cdist__linear_circle_ex(q, method, B, M, tmin, tmax, d, loc, &u1))) return st;
         if (u1 == CDIST_METHOD_ROBUST) *used = u1;
-        if (cd_best_is_equidistant(loc)) eq_d2 = loc->c[0].d2;
+        if (cdist__best_is_equidistant(loc)) eq_d2 = loc->c[0].d2;
     }
     if (isfinite(tmin)) lin_offer(B, M, tmin, d, loc);
     if (isfinite(tmax)) lin_offer(B, M, tmax, d, loc);
-    cd_best_settle_equidistant(loc, eq_d2);
-    cd_best_convex_contact(loc);
+    cdist__best_settle_equidistant(loc, eq_d2);
+    cdist__best_convex_contact(loc);
     if (!direct) {
-        double d2 = cd_best_merge(b, loc, v3(0, 0, 0), 0);
-        if (cd_best_is_equidistant(loc)) cd_best_settle_equidistant(b, d2);
+        double d2 = cdist__best_merge(b, loc, v3(0, 0, 0), 0);
+        if (cdist__best_is_equidistant(loc)) cdist__best_settle_equidistant(b, d2);
     }
     return CDIST_OK;
 }
 
-cdist_status cd_linear_disk_ex(cdist_query *q, cdist_method method, vec3 B, vec3 M, double tmin, double tmax,
-                               const cd_circle *d, cd_best *b, cdist_method *used)
+cdist_status cdist__linear_disk_ex(cdist_query *q, cdist_method method, vec3 B, vec3 M, double tmin, double tmax,
+                               const cdist__circle *d, cdist__best *b, cdist_method *used)
 {
     return linear_disk(q, method, B, M, tmin, tmax, d, b, used);
 }
@@ -146,17 +146,17 @@ CD_FMA_CLONES static vec3 segment_near_centre(vec3 p0, vec3 p1, vec3 C, double *
     double a[3], al[3], dd[3], dl[3];
     const double P0[3] = {p0.x, p0.y, p0.z}, P1[3] = {p1.x, p1.y, p1.z}, CC[3] = {C.x, C.y, C.z};
     for (int i = 0; i < 3; i++) {
-        a[i] = cd_two_diff(P0[i], CC[i], &al[i]);
-        dd[i] = cd_two_diff(P1[i], P0[i], &dl[i]);
+        a[i] = cdist__two_diff(P0[i], CC[i], &al[i]);
+        dd[i] = cdist__two_diff(P1[i], P0[i], &dl[i]);
     }
-    double m = cd_fmax(fabs(dd[0]), cd_fmax(fabs(dd[1]), fabs(dd[2])));
+    double m = cdist__fmax(fabs(dd[0]), cdist__fmax(fabs(dd[1]), fabs(dd[2])));
     double num = 0.0, den = 0.0;
     for (int i = 0; i < 3; i++) {
         num += (a[i] / m) * (dd[i] / m);
         den += (dd[i] / m) * (dd[i] / m);
     }
     double t = (den > 0.0) ? -num / den : 0.0;
-    t = cd_fmin(cd_fmax(t, 0.0), 1.0);
+    t = cdist__fmin(cdist__fmax(t, 0.0), 1.0);
     *s0 = t;
     double B[3];
     for (int i = 0; i < 3; i++) B[i] = fma(t, dd[i], a[i]) + fma(t, dl[i], al[i]);
@@ -168,27 +168,27 @@ CD_FMA_CLONES static vec3 segment_near_centre(vec3 p0, vec3 p1, vec3 C, double *
  * p1 (segments only): the end point, so that origin - C and p1 - origin are taken exactly.
  * Writes r (without its method) and the method that answered. */
 CD_FMA_CLONES static cdist_status linear_disk_query(cdist_query *q, vec3 origin, vec3 D, double len, vec3 M, double tmin,
-                                      double tmax, const vec3 *p1, const cd_circle *dk, cdist_result *r,
+                                      double tmax, const vec3 *p1, const cdist__circle *dk, cdist_result *r,
                                       cdist_method *used)
 {
-    cd_circle d = *dk;
+    cdist__circle d = *dk;
     vec3 offset = d.c;
     d.c = v3(0, 0, 0);
     /* Move the origin to the point of the range nearest the centre, with origin - C kept exact
      * and the line as given (not its rounded unit direction, which would tilt it by ~1e-16 rad,
-     * i.e. move it by 1e-8 at a distance of 1e8): see cd_line_near_centre in line_circle.c. */
+     * i.e. move it by 1e-8 at a distance of 1e8): see cdist__line_near_centre in line_circle.c. */
     double t0;
-    vec3 B = p1 ? segment_near_centre(origin, *p1, offset, &t0) : cd_line_near_centre(origin, D, offset, tmin, tmax, &t0);
+    vec3 B = p1 ? segment_near_centre(origin, *p1, offset, &t0) : cdist__line_near_centre(origin, D, offset, tmin, tmax, &t0);
     double lo = (tmin == t0) ? 0.0 : (tmin - t0) * len, hi = (tmax == t0) ? 0.0 : (tmax - t0) * len;
-    double L = cd_fmax(d.r, v_norm(B));
-    cd_best best;
-    cd_best_init(&best, L);
-    cdist_status st = linear_disk(q, cd_family_method(q, CD_FAM_LINE_DISK), B, M, lo, hi, &d, &best, used);
+    double L = cdist__fmax(d.r, v_norm(B));
+    cdist__best best;
+    cdist__best_init(&best, L);
+    cdist_status st = linear_disk(q, cdist__family_method(q, CD_FAM_LINE_DISK), B, M, lo, hi, &d, &best, used);
     if (st) return st;
-    if (best.n == 0) return cd_fail(q, CDIST_ERR_INTERNAL, "line-disk found no candidate");
-    for (int i = 0; i < best.n; i++) best.c[i].param[0] = cd_fmin(cd_fmax(t0 + best.c[i].param[0] / len, tmin), tmax);
-    cd_best_to_result(&best, offset, 0, r);
-    cd_result_finish(r, r->num_pairs);
+    if (best.n == 0) return cdist__fail(q, CDIST_ERR_INTERNAL, "line-disk found no candidate");
+    for (int i = 0; i < best.n; i++) best.c[i].param[0] = cdist__fmin(cdist__fmax(t0 + best.c[i].param[0] / len, tmin), tmax);
+    cdist__best_to_result(&best, offset, 0, r);
+    cdist__result_finish(r, r->num_pairs);
     return CDIST_OK;
 }
 
@@ -196,24 +196,24 @@ CD_FMA_CLONES static cdist_status linear_disk_query(cdist_query *q, vec3 origin,
 static cdist_status line_ray_disk(cdist_query *q, const void *obj, const cdist_vec3 *origin, const cdist_vec3 *dir,
                                   int is_ray, const cdist_circle *d, cdist_result *r)
 {
-    cdist_status st = cd_enter(q, r);
+    cdist_status st = cdist__enter(q, r);
     if (st) return st;
     vec3 M;
     double len;
-    cd_circle dk;
+    cdist__circle dk;
     cdist_method used = CDIST_METHOD_ROBUST;
-    if (!(st = cd_check_ptr(q, obj, is_ray ? "ray" : "line")) &&
-        !(st = cd_check_point(q, origin, is_ray ? "ray origin" : "line origin")) &&
-        !(st = cd_check_direction(q, dir, is_ray ? "ray direction" : "line direction", 1, &M, &len)) &&
-        !(st = cd_check_circle(q, d, "disk", &dk))) {
-        int e = cd_lines_scale_exponent(*origin, NULL, &dk);
-        double down = cd_pow2(-e);
-        cd_circle_scale(&dk, down);
+    if (!(st = cdist__check_ptr(q, obj, is_ray ? "ray" : "line")) &&
+        !(st = cdist__check_point(q, origin, is_ray ? "ray origin" : "line origin")) &&
+        !(st = cdist__check_direction(q, dir, is_ray ? "ray direction" : "line direction", 1, &M, &len)) &&
+        !(st = cdist__check_circle(q, d, "disk", &dk))) {
+        int e = cdist__lines_scale_exponent(*origin, NULL, &dk);
+        double down = cdist__pow2(-e);
+        cdist__circle_scale(&dk, down);
         st = linear_disk_query(q, v_scale(down, *origin), v_scale(down, *dir), len * down, M,
                                is_ray ? 0.0 : -INFINITY, INFINITY, NULL, &dk, r, &used);
-        if (st == CDIST_OK) cd_result_unscale(r, cd_pow2(e));
+        if (st == CDIST_OK) cdist__result_unscale(r, cdist__pow2(e));
     }
-    return cd_leave(q, r, st, used);
+    return cdist__leave(q, r, st, used);
 }
 
 cdist_status cdist_line_disk(cdist_query *q, const cdist_line *l, const cdist_circle *d, cdist_result *r)
@@ -228,32 +228,32 @@ cdist_status cdist_ray_disk(cdist_query *q, const cdist_ray *l, const cdist_circ
 
 cdist_status cdist_segment_disk(cdist_query *q, const cdist_segment *s, const cdist_circle *d, cdist_result *r)
 {
-    cdist_status st = cd_enter(q, r);
+    cdist_status st = cdist__enter(q, r);
     if (st) return st;
-    cd_circle dk;
-    cdist_method used = cd_family_method(q, CD_FAM_SEGMENT_DISK);
-    if ((st = cd_check_ptr(q, s, "segment")) || (st = cd_check_point(q, &s->p0, "segment p0")) ||
-        (st = cd_check_point(q, &s->p1, "segment p1")) || (st = cd_check_circle(q, d, "disk", &dk)))
-        return cd_leave(q, r, st, used);
+    cdist__circle dk;
+    cdist_method used = cdist__family_method(q, CD_FAM_SEGMENT_DISK);
+    if ((st = cdist__check_ptr(q, s, "segment")) || (st = cdist__check_point(q, &s->p0, "segment p0")) ||
+        (st = cdist__check_point(q, &s->p1, "segment p1")) || (st = cdist__check_circle(q, d, "disk", &dk)))
+        return cdist__leave(q, r, st, used);
     vec3 D = v_sub(s->p1, s->p0);
     if (D.x == 0.0 && D.y == 0.0 && D.z == 0.0) {
         /* A point: point-disk, with s = 0. */
-        cd_point_result(s->p0, &dk, 1, r);
+        cdist__point_result(s->p0, &dk, 1, r);
         r->pairs[0].param[0] = 0.0;
-        return cd_leave(q, r, CDIST_OK, used);
+        return cdist__leave(q, r, CDIST_OK, used);
     }
-    int e = cd_lines_scale_exponent(s->p0, &s->p1, &dk);
-    double down = cd_pow2(-e);
-    cd_circle_scale(&dk, down);
+    int e = cdist__lines_scale_exponent(s->p0, &s->p1, &dk);
+    double down = cdist__pow2(-e);
+    cdist__circle_scale(&dk, down);
     vec3 p0 = v_scale(down, s->p0), p1 = v_scale(down, s->p1), Ds = v_scale(down, D), M;
     double len;
-    if (!(st = cd_check_direction(q, &Ds, "segment direction p1 - p0", 0, &M, &len)) &&
+    if (!(st = cdist__check_direction(q, &Ds, "segment direction p1 - p0", 0, &M, &len)) &&
         !(st = linear_disk_query(q, p0, Ds, len, M, 0.0, 1.0, &p1, &dk, r, &used))) {
-        cd_result_unscale(r, cd_pow2(e));
+        cdist__result_unscale(r, cdist__pow2(e));
         for (int i = 0; i < r->num_pairs; i++) {
             if (r->pairs[i].param[0] == 0.0) r->pairs[i].point[0] = s->p0; /* exactly the caller's end points */
             if (r->pairs[i].param[0] == 1.0) r->pairs[i].point[0] = s->p1;
         }
     }
-    return cd_leave(q, r, st, used);
+    return cdist__leave(q, r, st, used);
 }

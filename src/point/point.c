@@ -13,13 +13,13 @@
 CD_INLINE double plane_angle(vec3 n, vec3 w, vec3 np)
 {
     double ax = fabs(n.x), ay = fabs(n.y), az = fabs(n.z);
-    if (ax <= ay && ax <= az) return cd_polar_angle(w.x, -np.x);
-    if (ay <= az) return cd_polar_angle(w.y, -np.y);
-    return cd_polar_angle(w.z, -np.z);
+    if (ax <= ay && ax <= az) return cdist__polar_angle(w.x, -np.x);
+    if (ay <= az) return cdist__polar_angle(w.y, -np.y);
+    return cdist__polar_angle(w.z, -np.z);
 }
 
 /* The representative circle point (angle 0) for a point on the axis: r u. */
-CD_INLINE vec3 axis_representative(const cd_circle *c)
+CD_INLINE vec3 axis_representative(const cdist__circle *c)
 {
     vec3 u, v;
     v_basis(c->n, &u, &v);
@@ -45,9 +45,9 @@ CD_INLINE void split(vec3 p, vec3 n, double *h, vec3 *w, vec3 *np, double *rho)
     *rho = v_norm(*np);
 }
 
-CD_INLINE cd_point_pair circle_pair(vec3 p, const cd_circle *c, double h, vec3 w, vec3 np, double rho)
+CD_INLINE cdist__point_pair circle_pair(vec3 p, const cdist__circle *c, double h, vec3 w, vec3 np, double rho)
 {
-    cd_point_pair q;
+    cdist__point_pair q;
     q.equidistant = 0;
     if (c->r == 0.0) {
         q.k = v3(0, 0, 0);
@@ -69,7 +69,7 @@ CD_INLINE cd_point_pair circle_pair(vec3 p, const cd_circle *c, double h, vec3 w
     return q;
 }
 
-CD_INLINE cd_point_pair circle_pair_at(vec3 p, const cd_circle *c)
+CD_INLINE cdist__point_pair circle_pair_at(vec3 p, const cdist__circle *c)
 {
     double h, rho;
     vec3 w, np;
@@ -77,13 +77,13 @@ CD_INLINE cd_point_pair circle_pair_at(vec3 p, const cd_circle *c)
     return circle_pair(p, c, h, w, np, rho);
 }
 
-CD_INLINE cd_point_pair disk_pair_at(vec3 p, const cd_circle *c)
+CD_INLINE cdist__point_pair disk_pair_at(vec3 p, const cdist__circle *c)
 {
     double h, rho;
     vec3 w, np;
     split(p, c->n, &h, &w, &np, &rho);
     if (rho > c->r) return circle_pair(p, c, h, w, np, rho);
-    cd_point_pair q;
+    cdist__point_pair q;
     int axis = on_axis(p, rho);
     q.angle = axis ? NAN : plane_angle(c->n, w, np);
     q.k = axis ? v3(0, 0, 0) : w;
@@ -92,34 +92,34 @@ CD_INLINE cd_point_pair disk_pair_at(vec3 p, const cd_circle *c)
     return q;
 }
 
-CD_FMA_CLONES cd_point_pair cd_point_circle_pair(vec3 p, const cd_circle *c) { return circle_pair_at(p, c); }
-CD_FMA_CLONES cd_point_pair cd_point_disk_pair(vec3 p, const cd_circle *c) { return disk_pair_at(p, c); }
+CD_FMA_CLONES cdist__point_pair cdist__point_circle_pair(vec3 p, const cdist__circle *c) { return circle_pair_at(p, c); }
+CD_FMA_CLONES cdist__point_pair cdist__point_disk_pair(vec3 p, const cdist__circle *c) { return disk_pair_at(p, c); }
 
-void cd_point_circle_core(vec3 p, const cd_circle *c, cd_best *b, int swap)
+void cdist__point_circle_core(vec3 p, const cdist__circle *c, cdist__best *b, int swap)
 {
-    cd_point_pair q = cd_point_circle_pair(p, c);
-    if (swap) cd_best_offer_flag(b, q.equidistant, q.d2, q.k, p, q.angle, NAN);
-    else cd_best_offer_flag(b, q.equidistant, q.d2, p, q.k, NAN, q.angle);
+    cdist__point_pair q = cdist__point_circle_pair(p, c);
+    if (swap) cdist__best_offer_flag(b, q.equidistant, q.d2, q.k, p, q.angle, NAN);
+    else cdist__best_offer_flag(b, q.equidistant, q.d2, p, q.k, NAN, q.angle);
 }
 
-void cd_point_disk_core(vec3 p, const cd_circle *c, cd_best *b, int swap)
+void cdist__point_disk_core(vec3 p, const cdist__circle *c, cdist__best *b, int swap)
 {
-    cd_point_pair q = cd_point_disk_pair(p, c);
-    if (swap) cd_best_offer_flag(b, q.equidistant, q.d2, q.k, p, q.angle, NAN);
-    else cd_best_offer_flag(b, q.equidistant, q.d2, p, q.k, NAN, q.angle);
+    cdist__point_pair q = cdist__point_disk_pair(p, c);
+    if (swap) cdist__best_offer_flag(b, q.equidistant, q.d2, q.k, p, q.angle, NAN);
+    else cdist__best_offer_flag(b, q.equidistant, q.d2, p, q.k, NAN, q.angle);
 }
 
 /* Frame (translate to the centre) and scale (by 2^-e, exact, so that the scale is in [1, 2):
  * no underflow or overflow in squares for any accepted input), core, result. */
-CD_FMA_CLONES void cd_point_result(vec3 p, const cd_circle *c, int disk, cdist_result *r)
+CD_FMA_CLONES void cdist__point_result(vec3 p, const cdist__circle *c, int disk, cdist_result *r)
 {
     vec3 rel = v_sub(p, c->c);
-    int e = cd_scale_exponent(cd_fmax(c->r, v_maxabs(rel)));
-    double down = cd_pow2(-e), up = cd_pow2(e);
+    int e = cdist__scale_exponent(cdist__fmax(c->r, v_maxabs(rel)));
+    double down = cdist__pow2(-e), up = cdist__pow2(e);
     vec3 ps = v_scale(down, rel);
-    cd_circle sc = *c;
+    cdist__circle sc = *c;
     sc.r = c->r * down;
-    cd_point_pair k = disk ? disk_pair_at(ps, &sc) : circle_pair_at(ps, &sc);
+    cdist__point_pair k = disk ? disk_pair_at(ps, &sc) : circle_pair_at(ps, &sc);
     r->distance = sqrt(k.d2) * up;
     r->sqr_distance = (k.d2 * up) * up;
     r->num_pairs = 1;
@@ -128,19 +128,19 @@ CD_FMA_CLONES void cd_point_result(vec3 p, const cd_circle *c, int disk, cdist_r
     r->pairs[0].point[1] = v_axpy(c->c, up, k.k);
     r->pairs[0].param[0] = NAN;
     r->pairs[0].param[1] = k.angle;
-    cd_result_finish(r, 1);
+    cdist__result_finish(r, 1);
 }
 
 static inline cdist_status point_query(cdist_query *q, const cdist_vec3 *p, const cdist_circle *c, cdist_result *r,
                                        int disk)
 {
-    cdist_status st = cd_enter(q, r);
+    cdist_status st = cdist__enter(q, r);
     if (st) return st;
-    cd_circle cc;
-    if (!(st = cd_check_point(q, p, "point")) &&
-        !(st = cd_check_circle_nobasis(q, c, disk ? "disk" : "circle", &cc)))
-        cd_point_result(*p, &cc, disk, r);
-    return cd_leave(q, r, st, CDIST_METHOD_AUTO);
+    cdist__circle cc;
+    if (!(st = cdist__check_point(q, p, "point")) &&
+        !(st = cdist__check_circle_nobasis(q, c, disk ? "disk" : "circle", &cc)))
+        cdist__point_result(*p, &cc, disk, r);
+    return cdist__leave(q, r, st, CDIST_METHOD_AUTO);
 }
 
 cdist_status cdist_point_circle(cdist_query *q, const cdist_vec3 *p, const cdist_circle *c, cdist_result *r)

@@ -17,7 +17,7 @@ static vec3 unit(vec3 v)
 /* Component of g orthogonal to the unit vector n. */
 static vec3 perp(vec3 g, vec3 n) { return v_axpy(g, -v_dot(g, n), n); }
 
-void cd_grad_set_error(cdist_grad *g)
+void cdist__grad_set_error(cdist_grad *g)
 {
     if (!g) return;
     memset(g, 0, sizeof *g);
@@ -98,7 +98,7 @@ static void arc_grad(const cdist_arc *arc, vec3 X, double a, vec3 w, cdist_grad_
 }
 
 /* Gradient of one object whose closest point is X with parameter t, dD = w . dX. */
-static void object_grad(const cd_core_obj *ob, vec3 X, double t, vec3 w, cdist_grad_object *o)
+static void object_grad(const cdist__core_obj *ob, vec3 X, double t, vec3 w, cdist_grad_object *o)
 {
     switch (ob->type) {
     case CD_CORE_POINT: o->d_center = w; break;
@@ -124,7 +124,7 @@ static void object_grad(const cd_core_obj *ob, vec3 X, double t, vec3 w, cdist_g
 
 /* Unit tangent of a curve object at its closest point (0 for points and disks). 'interior'
  * says the point is not an end of a segment/ray/arc. */
-static vec3 curve_tangent(const cd_core_obj *o, vec3 X, double t, int *interior)
+static vec3 curve_tangent(const cdist__core_obj *o, vec3 X, double t, int *interior)
 {
     *interior = 1;
     switch (o->type) {
@@ -154,16 +154,16 @@ static vec3 curve_tangent(const cd_core_obj *o, vec3 X, double t, int *interior)
  * object is a disk met at a point clearly inside its rim, and the other is a curve crossing
  * the disk's plane transversally away from its ends, or a second disk (also met inside its
  * rim) in a transversal plane. */
-static int zero_on_neighbourhood(const cd_core_obj *a, const cd_core_obj *b, const cdist_result *r)
+static int zero_on_neighbourhood(const cdist__core_obj *a, const cdist__core_obj *b, const cdist_result *r)
 {
     const double transversal = 1e-6; /* sine of the smallest crossing angle treated as stable */
-    const cd_core_obj *ob[2] = {a, b};
+    const cdist__core_obj *ob[2] = {a, b};
     for (int k = 0; k < 2; k++) {
         if (ob[k]->type != CD_CORE_DISK) continue;
         const cdist_circle *dk = ob[k]->obj;
         vec3 N = unit(dk->normal);
         if (!disk_interior(dk, N, r->pairs[0].point[k])) continue;
-        const cd_core_obj *o = ob[1 - k];
+        const cdist__core_obj *o = ob[1 - k];
         vec3 X = r->pairs[0].point[1 - k];
         if (o->type == CD_CORE_DISK) {
             const cdist_circle *d2 = o->obj;
@@ -178,7 +178,7 @@ static int zero_on_neighbourhood(const cd_core_obj *a, const cd_core_obj *b, con
     return 0;
 }
 
-void cd_grad_fill(const cd_core_obj *a, const cd_core_obj *b, const cdist_result *r, cdist_grad *g)
+void cdist__grad_fill(const cdist__core_obj *a, const cdist__core_obj *b, const cdist_result *r, cdist_grad *g)
 {
     memset(g, 0, sizeof *g);
     if (a->swept) g->obj[0].d_radius_swept = -1.0;
@@ -197,7 +197,7 @@ void cd_grad_fill(const cd_core_obj *a, const cd_core_obj *b, const cdist_result
     /* At a disk's interior point w is exactly along the disk's normal (first-order optimality);
      * P - Q loses the direction's accuracy when the distance is tiny against the coordinates,
      * so take it from the structure. */
-    const cd_core_obj *ob[2] = {a, b};
+    const cdist__core_obj *ob[2] = {a, b};
     vec3 X[2] = {P, Q};
     for (int k = 0; k < 2; k++) {
         if (ob[k]->type != CD_CORE_DISK) continue;
@@ -212,24 +212,24 @@ void cd_grad_fill(const cd_core_obj *a, const cd_core_obj *b, const cdist_result
 size_t cdist_grad_size(void) { return sizeof(cdist_grad); }
 int cdist_grad_flag_not_differentiable(void) { return CDIST_GRAD_NOT_DIFFERENTIABLE; }
 
-static cdist_status grad_query(cdist_query *q, cd_core_obj a, cd_core_obj b, cdist_result *r, cdist_grad *g)
+static cdist_status grad_query(cdist_query *q, cdist__core_obj a, cdist__core_obj b, cdist_result *r, cdist_grad *g)
 {
-    cd_grad_set_error(g);
+    cdist__grad_set_error(g);
     if (!r) {
-        cd_begin(q, NULL);
-        return q ? cd_fail(q, CDIST_ERR_NULL_ARGUMENT, "result pointer is NULL") : CDIST_ERR_NULL_ARGUMENT;
+        cdist__begin(q, NULL);
+        return q ? cdist__fail(q, CDIST_ERR_NULL_ARGUMENT, "result pointer is NULL") : CDIST_ERR_NULL_ARGUMENT;
     }
-    cdist_status st = cd_core_query(q, &a, &b, r);
+    cdist_status st = cdist__core_query(q, &a, &b, r);
     if (st) return st;
-    if (!g) return cd_fail(q, CDIST_ERR_NULL_ARGUMENT, "gradient pointer is NULL");
-    cd_grad_fill(&a, &b, r, g);
+    if (!g) return cdist__fail(q, CDIST_ERR_NULL_ARGUMENT, "gradient pointer is NULL");
+    cdist__grad_fill(&a, &b, r, g);
     return CDIST_OK;
 }
 
 #define GRAD_QUERY(name, TA, TB, ka, kb)                                                                           \
     cdist_status name(cdist_query *q, const TA *a, const TB *b, cdist_result *r, cdist_grad *g)                    \
     {                                                                                                              \
-        cd_core_obj oa = {ka, a, 0.0, 0}, ob = {kb, b, 0.0, 0};                                                    \
+        cdist__core_obj oa = {ka, a, 0.0, 0}, ob = {kb, b, 0.0, 0};                                                    \
         return grad_query(q, oa, ob, r, g);                                                                        \
     }
 
@@ -251,25 +251,25 @@ GRAD_QUERY(cdist_arc_disk_grad, cdist_arc, cdist_circle, CD_CORE_ARC, CD_CORE_DI
 
 /* ---- swept objects ---- */
 
-static cdist_status swept_grad_query(cdist_query *q, cd_core_obj a, cd_core_obj b, cdist_contact *c, cdist_grad *g)
+static cdist_status swept_grad_query(cdist_query *q, cdist__core_obj a, cdist__core_obj b, cdist_contact *c, cdist_grad *g)
 {
-    cd_grad_set_error(g);
+    cdist__grad_set_error(g);
     cdist_result core;
-    cdist_status st = cd_swept_query(q, &a, &b, c, &core);
+    cdist_status st = cdist__swept_query(q, &a, &b, c, &core);
     if (st) return st;
-    if (!g) return cd_fail(q, CDIST_ERR_NULL_ARGUMENT, "gradient pointer is NULL");
-    cd_grad_fill(&a, &b, &core, g);
+    if (!g) return cdist__fail(q, CDIST_ERR_NULL_ARGUMENT, "gradient pointer is NULL");
+    cdist__grad_fill(&a, &b, &core, g);
     return CDIST_OK;
 }
 
-static cd_core_obj sw(cd_core_type t, const void *obj, const double *radius)
+static cdist__core_obj sw(cdist__core_type t, const void *obj, const double *radius)
 {
-    cd_core_obj o = {t, obj, obj ? *radius : 0.0, 1};
+    cdist__core_obj o = {t, obj, obj ? *radius : 0.0, 1};
     return o;
 }
-static cd_core_obj plain(cd_core_type t, const void *obj)
+static cdist__core_obj plain(cdist__core_type t, const void *obj)
 {
-    cd_core_obj o = {t, obj, 0.0, 0};
+    cdist__core_obj o = {t, obj, 0.0, 0};
     return o;
 }
 #define TORUS(x) sw(CD_CORE_CIRCLE, (x) ? &(x)->circle : NULL, (x) ? &(x)->tube_radius : NULL)

@@ -9,7 +9,7 @@
 struct cdist_grad; /* public header, gradient section */
 
 /* The core of an object: what a swept object sweeps, or the plain object itself. */
-typedef enum cd_core_type {
+typedef enum cdist__core_type {
     CD_CORE_POINT,
     CD_CORE_SEGMENT,
     CD_CORE_LINE,
@@ -17,24 +17,24 @@ typedef enum cd_core_type {
     CD_CORE_CIRCLE,
     CD_CORE_DISK,
     CD_CORE_ARC
-} cd_core_type;
+} cdist__core_type;
 
-typedef struct cd_core_obj {
-    cd_core_type type;
+typedef struct cdist__core_obj {
+    cdist__core_type type;
     const void *obj; /* cdist_vec3, cdist_segment, cdist_line, cdist_ray, cdist_circle, cdist_arc */
     double radius;   /* the ball radius (0 for a plain object) */
     int swept;       /* 1 for a swept object (its radius is an input) */
-} cd_core_obj;
+} cdist__core_obj;
 
 /* The core query between a and b (any order: a missing order is answered swapped). */
-cdist_status cd_core_query(cdist_query *q, const cd_core_obj *a, const cd_core_obj *b, cdist_result *r);
+cdist_status cdist__core_query(cdist_query *q, const cdist__core_obj *a, const cdist__core_obj *b, cdist_result *r);
 /* A swept query: validates the radii, answers the core query, writes the contact. core
  * (may be NULL) receives the core result. */
-cdist_status cd_swept_query(cdist_query *q, const cd_core_obj *a, const cd_core_obj *b, cdist_contact *c,
+cdist_status cdist__swept_query(cdist_query *q, const cdist__core_obj *a, const cdist__core_obj *b, cdist_contact *c,
                             cdist_result *core);
 /* Fill g from the core result r (the query succeeded). */
-void cd_grad_fill(const cd_core_obj *a, const cd_core_obj *b, const cdist_result *r, struct cdist_grad *g);
+void cdist__grad_fill(const cdist__core_obj *a, const cdist__core_obj *b, const cdist_result *r, struct cdist_grad *g);
 /* Gradient in the error state (all NaN, flags 0). */
-void cd_grad_set_error(struct cdist_grad *g);
+void cdist__grad_set_error(struct cdist_grad *g);
 
 #endif

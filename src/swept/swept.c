@@ -35,29 +35,29 @@ static vec3 segment_at(vec3 p0, vec3 d, double s) { return v_axpy(p0, s, d); }
 
 static cdist_status point_point(cdist_query *q, const cdist_vec3 *a, const cdist_vec3 *b, cdist_result *r)
 {
-    cdist_status st = cd_check_handle(q, r);
-    if (st || (st = cd_check_point(q, a, "point")) || (st = cd_check_point(q, b, "point"))) return st;
+    cdist_status st = cdist__check_handle(q, r);
+    if (st || (st = cdist__check_point(q, a, "point")) || (st = cdist__check_point(q, b, "point"))) return st;
     result_fill(r, v_dist(*a, *b), 0, *a, *b, NAN, NAN);
-    return cd_ok(q, r, CDIST_METHOD_AUTO);
+    return cdist__ok(q, r, CDIST_METHOD_AUTO);
 }
 
 static cdist_status check_segment(cdist_query *q, const cdist_segment *s)
 {
-    cdist_status st = cd_check_ptr(q, s, "segment");
-    if (st || (st = cd_check_point(q, &s->p0, "segment p0")) || (st = cd_check_point(q, &s->p1, "segment p1")))
+    cdist_status st = cdist__check_ptr(q, s, "segment");
+    if (st || (st = cdist__check_point(q, &s->p0, "segment p0")) || (st = cdist__check_point(q, &s->p1, "segment p1")))
         return st;
     return CDIST_OK;
 }
 
 static cdist_status point_segment(cdist_query *q, const cdist_vec3 *p, const cdist_segment *s, cdist_result *r)
 {
-    cdist_status st = cd_check_handle(q, r);
-    if (st || (st = cd_check_point(q, p, "point")) || (st = check_segment(q, s))) return st;
+    cdist_status st = cdist__check_handle(q, r);
+    if (st || (st = cdist__check_point(q, p, "point")) || (st = check_segment(q, s))) return st;
     vec3 d = v_sub(s->p1, s->p0);
     double t = segment_clamp(s->p0, d, *p);
     vec3 x = t == 1.0 ? s->p1 : segment_at(s->p0, d, t);
     result_fill(r, v_dist(*p, x), 0, *p, x, NAN, t);
-    return cd_ok(q, r, CDIST_METHOD_AUTO);
+    return cdist__ok(q, r, CDIST_METHOD_AUTO);
 }
 
 /* Segment-segment: the interior critical point (when both parameters are inside [0, 1]) and
@@ -66,7 +66,7 @@ static cdist_status point_segment(cdist_query *q, const cdist_vec3 *p, const cdi
  * only exist along a flat valley (parallel segments), which is flagged equidistant. */
 static cdist_status segment_segment(cdist_query *q, const cdist_segment *a, const cdist_segment *b, cdist_result *r)
 {
-    cdist_status st = cd_check_handle(q, r);
+    cdist_status st = cdist__check_handle(q, r);
     if (st || (st = check_segment(q, a)) || (st = check_segment(q, b))) return st;
     vec3 da = v_sub(a->p1, a->p0), db = v_sub(b->p1, b->p0);
     double best = INFINITY, bs = 0, bt = 0;
@@ -102,7 +102,7 @@ static cdist_status segment_segment(cdist_query *q, const cdist_segment *a, cons
         equi = hi - lo > 1e-12;
     }
     result_fill(r, best, equi, bp, bq, bs, bt);
-    return cd_ok(q, r, CDIST_METHOD_AUTO);
+    return cdist__ok(q, r, CDIST_METHOD_AUTO);
 }
 
 /* ---- core dispatch ---- */
@@ -120,7 +120,7 @@ static void result_swap(cdist_result *r)
 }
 
 /* The core query for (ta, tb) in this order, or -1 when that order has none. */
-static int core_direct(cdist_query *q, cd_core_type ta, const void *a, cd_core_type tb, const void *b,
+static int core_direct(cdist_query *q, cdist__core_type ta, const void *a, cdist__core_type tb, const void *b,
                        cdist_result *r, cdist_status *st)
 {
 #define PAIR(x, y) ((x) * 16 + (y))
@@ -148,7 +148,7 @@ static int core_direct(cdist_query *q, cd_core_type ta, const void *a, cd_core_t
 #undef PAIR
 }
 
-cdist_status cd_core_query(cdist_query *q, const cd_core_obj *a, const cd_core_obj *b, cdist_result *r)
+cdist_status cdist__core_query(cdist_query *q, const cdist__core_obj *a, const cdist__core_obj *b, cdist_result *r)
 {
     cdist_status st = CDIST_ERR_INTERNAL;
     if (core_direct(q, a->type, a->obj, b->type, b->obj, r, &st) == 0) return st;
@@ -156,8 +156,8 @@ cdist_status cd_core_query(cdist_query *q, const cd_core_obj *a, const cd_core_o
         if (st == CDIST_OK) result_swap(r);
         return st;
     }
-    cd_begin(q, r);
-    return cd_fail(q, CDIST_ERR_INTERNAL, "no core query for this pair of objects");
+    cdist__begin(q, r);
+    return cdist__fail(q, CDIST_ERR_INTERNAL, "no core query for this pair of objects");
 }
 
 /* ---- contact ---- */
@@ -186,7 +186,7 @@ static vec3 unit_or_zero(vec3 v)
 }
 
 /* Reference point of a core (for the orientation of a touch normal). */
-static vec3 core_reference(const cd_core_obj *o)
+static vec3 core_reference(const cdist__core_obj *o)
 {
     switch (o->type) {
     case CD_CORE_POINT: return *(const cdist_vec3 *)o->obj;
@@ -204,7 +204,7 @@ static vec3 core_reference(const cd_core_obj *o)
 }
 
 /* Unit tangent of a curve core at its core point p (0 when not a curve or undefined). */
-static vec3 core_tangent(const cd_core_obj *o, vec3 p)
+static vec3 core_tangent(const cdist__core_obj *o, vec3 p)
 {
     switch (o->type) {
     case CD_CORE_SEGMENT: {
@@ -225,7 +225,7 @@ static vec3 core_tangent(const cd_core_obj *o, vec3 p)
     }
 }
 
-static vec3 core_plane_normal(const cd_core_obj *o)
+static vec3 core_plane_normal(const cdist__core_obj *o)
 {
     if (o->type == CD_CORE_CIRCLE || o->type == CD_CORE_DISK)
         return unit_or_zero(((const cdist_circle *)o->obj)->normal);
@@ -233,7 +233,7 @@ static vec3 core_plane_normal(const cd_core_obj *o)
     return v3(0, 0, 0);
 }
 
-static vec3 core_line_perp(const cd_core_obj *o, vec3 p)
+static vec3 core_line_perp(const cdist__core_obj *o, vec3 p)
 {
     if (o->type != CD_CORE_SEGMENT && o->type != CD_CORE_LINE && o->type != CD_CORE_RAY) return v3(0, 0, 0);
     vec3 t = core_tangent(o, p);
@@ -244,7 +244,7 @@ static vec3 core_line_perp(const cd_core_obj *o, vec3 p)
 }
 
 /* The documented normal when the cores touch (CDIST_CONTACT_CORE_TOUCH). */
-static vec3 touch_normal(const cd_core_obj *a, const cd_core_obj *b, vec3 pa, vec3 pb)
+static vec3 touch_normal(const cdist__core_obj *a, const cdist__core_obj *b, vec3 pa, vec3 pb)
 {
     vec3 n = v3(0, 0, 0);
     vec3 ta = core_tangent(a, pa), tb = core_tangent(b, pb);
@@ -262,30 +262,30 @@ static vec3 touch_normal(const cd_core_obj *a, const cd_core_obj *b, vec3 pa, ve
     return s < 0.0 ? v_neg(n) : n;
 }
 
-static cdist_status check_radius(cdist_query *q, const cd_core_obj *o, const char *what)
+static cdist_status check_radius(cdist_query *q, const cdist__core_obj *o, const char *what)
 {
     if (!o->swept) return CDIST_OK;
-    cdist_status st = cd_check_scalar(q, o->radius, what);
+    cdist_status st = cdist__check_scalar(q, o->radius, what);
     if (st) return st;
-    if (o->radius < 0.0) return cd_fail(q, CDIST_ERR_NEGATIVE_RADIUS, "%s is negative (%g)", what, o->radius);
+    if (o->radius < 0.0) return cdist__fail(q, CDIST_ERR_NEGATIVE_RADIUS, "%s is negative (%g)", what, o->radius);
     return CDIST_OK;
 }
 
-cdist_status cd_swept_query(cdist_query *q, const cd_core_obj *a, const cd_core_obj *b, cdist_contact *c,
+cdist_status cdist__swept_query(cdist_query *q, const cdist__core_obj *a, const cdist__core_obj *b, cdist_contact *c,
                             cdist_result *core)
 {
     cdist_result local;
     cdist_result *r = core ? core : &local;
     if (c) contact_set_error(c);
-    cd_begin(q, r);
+    cdist__begin(q, r);
     if (!q) return CDIST_ERR_NULL_ARGUMENT;
-    if (!c) return cd_fail(q, CDIST_ERR_NULL_ARGUMENT, "contact pointer is NULL");
-    if (!a->obj) return cd_fail(q, CDIST_ERR_NULL_ARGUMENT, "first object pointer is NULL");
-    if (!b->obj) return cd_fail(q, CDIST_ERR_NULL_ARGUMENT, "second object pointer is NULL");
+    if (!c) return cdist__fail(q, CDIST_ERR_NULL_ARGUMENT, "contact pointer is NULL");
+    if (!a->obj) return cdist__fail(q, CDIST_ERR_NULL_ARGUMENT, "first object pointer is NULL");
+    if (!b->obj) return cdist__fail(q, CDIST_ERR_NULL_ARGUMENT, "second object pointer is NULL");
     cdist_status st;
     if ((st = check_radius(q, a, "first object's radius")) || (st = check_radius(q, b, "second object's radius")))
         return st;
-    if ((st = cd_core_query(q, a, b, r))) return st;
+    if ((st = cdist__core_query(q, a, b, r))) return st;
     c->core_distance = r->distance;
     c->distance = r->distance - (a->radius + b->radius);
     c->num_pairs = r->num_pairs;
@@ -331,37 +331,37 @@ size_t cdist_swept_size(int which)
 }
 
 /* Object descriptors (NULL objects stay NULL so the query reports them). */
-static cd_core_obj torus_obj(const cdist_torus *t)
+static cdist__core_obj torus_obj(const cdist_torus *t)
 {
-    cd_core_obj o = {CD_CORE_CIRCLE, t ? (const void *)&t->circle : NULL, t ? t->tube_radius : 0.0, 1};
+    cdist__core_obj o = {CD_CORE_CIRCLE, t ? (const void *)&t->circle : NULL, t ? t->tube_radius : 0.0, 1};
     return o;
 }
-static cd_core_obj capsule_obj(const cdist_capsule *t)
+static cdist__core_obj capsule_obj(const cdist_capsule *t)
 {
-    cd_core_obj o = {CD_CORE_SEGMENT, t ? (const void *)&t->segment : NULL, t ? t->radius : 0.0, 1};
+    cdist__core_obj o = {CD_CORE_SEGMENT, t ? (const void *)&t->segment : NULL, t ? t->radius : 0.0, 1};
     return o;
 }
-static cd_core_obj sphere_obj(const cdist_sphere *t)
+static cdist__core_obj sphere_obj(const cdist_sphere *t)
 {
-    cd_core_obj o = {CD_CORE_POINT, t ? (const void *)&t->center : NULL, t ? t->radius : 0.0, 1};
+    cdist__core_obj o = {CD_CORE_POINT, t ? (const void *)&t->center : NULL, t ? t->radius : 0.0, 1};
     return o;
 }
-static cd_core_obj rdisk_obj(const cdist_rounded_disk *t)
+static cdist__core_obj rdisk_obj(const cdist_rounded_disk *t)
 {
-    cd_core_obj o = {CD_CORE_DISK, t ? (const void *)&t->disk : NULL, t ? t->radius : 0.0, 1};
+    cdist__core_obj o = {CD_CORE_DISK, t ? (const void *)&t->disk : NULL, t ? t->radius : 0.0, 1};
     return o;
 }
-static cd_core_obj plain_obj(cd_core_type type, const void *p)
+static cdist__core_obj plain_obj(cdist__core_type type, const void *p)
 {
-    cd_core_obj o = {type, p, 0.0, 0};
+    cdist__core_obj o = {type, p, 0.0, 0};
     return o;
 }
 
 #define SWEPT_QUERY(name, TA, TB, mka, mkb)                                                                        \
     cdist_status name(cdist_query *q, const TA *a, const TB *b, cdist_contact *c)                                  \
     {                                                                                                              \
-        cd_core_obj oa = mka, ob = mkb;                                                                            \
-        return cd_swept_query(q, &oa, &ob, c, NULL);                                                               \
+        cdist__core_obj oa = mka, ob = mkb;                                                                            \
+        return cdist__swept_query(q, &oa, &ob, c, NULL);                                                               \
     }
 
 SWEPT_QUERY(cdist_torus_torus, cdist_torus, cdist_torus, torus_obj(a), torus_obj(b))

@@ -54,13 +54,13 @@ static void make(void)
     }
 }
 
-typedef uint64_t (*kfn)(const cd_job *, int, double, size_t, size_t);
+typedef uint64_t (*kfn)(const cdist__job *, int, double, size_t, size_t);
 
 static void check_kernel(const char *name, kfn k, cdist_query *q, double tol)
 {
     cdist_query_set_unit_tolerance(q, tol);
     for (int disk = 0; disk < 2; disk++) {
-        cd_job job = {disk ? CDIST_KIND_POINT_DISK : CDIST_KIND_POINT_CIRCLE, N, (const char *)P, (const char *)C,
+        cdist__job job = {disk ? CDIST_KIND_POINT_DISK : CDIST_KIND_POINT_CIRCLE, N, (const char *)P, (const char *)C,
                       sizeof P[0], sizeof C[0], NULL, D, NULL, 64};
         int bad = 0, wrong_left = 0, checked = 0;
         for (size_t lo = 0; lo < N; lo += 64) {

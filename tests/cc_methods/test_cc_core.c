@@ -29,18 +29,18 @@ static int run_file(cdist_query *q, const char *path)
                    &B.center.y, &B.center.z, &B.normal.x, &B.normal.y, &B.normal.z, &B.radius) != 15 ||
             strcmp(kind, "cc"))
             continue;
-        cd_circle a, b;
-        CHECK(cd_check_circle(q, &A, "a", &a) == CDIST_OK && cd_check_circle(q, &B, "b", &b) == CDIST_OK,
+        cdist__circle a, b;
+        CHECK(cdist__check_circle(q, &A, "a", &a) == CDIST_OK && cdist__check_circle(q, &B, "b", &b) == CDIST_OK,
               "%s:%d: invalid circles", path, lineno);
         b.c = v_sub(b.c, a.c);
         a.c = v3(0, 0, 0);
         double L = fmax(fmax(a.r, b.r), v_norm(b.c));
-        cd_best bp, bi;
-        cd_best_init(&bp, L);
-        cd_best_init(&bi, L);
+        cdist__best bp, bi;
+        cdist__best_init(&bp, L);
+        cdist__best_init(&bi, L);
         int iters = -1;
-        cdist_status sp = cd_cc_polynomial(q, &a, &b, &bp);
-        cdist_status si = cd_cc_iteration(q, &a, &b, &bi, &iters);
+        cdist_status sp = cdist__cc_polynomial(q, &a, &b, &bp);
+        cdist_status si = cdist__cc_iteration(q, &a, &b, &bi, &iters);
         CHECK(sp == CDIST_OK && bp.n >= 1, "%s:%d: polynomial failed (%s)", path, lineno, cdist_query_last_error(q));
         CHECK(si == CDIST_OK && bi.n >= 1, "%s:%d: iteration failed (%s)", path, lineno, cdist_query_last_error(q));
         CHECK(iters >= 0 && iters <= q->max_iterations, "%s:%d: iterations %d", path, lineno, iters);

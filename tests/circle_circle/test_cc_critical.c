@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: MIT */
-/* cd_circle_circle_critical (internal; this test is linked with the library sources): every
+/* cdist__circle_circle_critical (internal; this test is linked with the library sources): every
  * critical angle of theta -> dist^2(c0(theta), c1) is found (checked against a long double
  * sampling of the function), every returned angle is critical or an axis crossing, -1 for the
  * constant cases, and the minimum over the returned angles is the circle-circle distance. */
@@ -24,9 +24,9 @@ static double circ_dist(double a, double b)
 
 static int critical(const cdist_circle *c0, const cdist_circle *c1, double *t, int cap)
 {
-    cd_circle a, b;
-    if (cd_check_circle(q, c0, "c0", &a) || cd_check_circle(q, c1, "c1", &b)) return -2;
-    return cd_circle_circle_critical(q, &a, &b, t, cap);
+    cdist__circle a, b;
+    if (cdist__check_circle(q, c0, "c0", &a) || cdist__check_circle(q, c1, "c1", &b)) return -2;
+    return cdist__circle_circle_critical(q, &a, &b, t, cap);
 }
 
 static void random_case(int i, cdist_circle c0, cdist_circle c1)
