@@ -387,10 +387,21 @@ static double time_items(item *items, size_t n, cdist_result *res, cdist_status 
     return 1e9 * best / (double)n;
 }
 
+/* Allocation for the tool's own buffers: out of memory ends the tool with the usage status. */
+static void *xrealloc(void *p, size_t size)
+{
+    void *r = realloc(p, size ? size : 1);
+    if (!r) {
+        fprintf(stderr, "circledist: out of memory\n");
+        exit(EXIT_USAGE);
+    }
+    return r;
+}
+
 static int bench(const settings *s, const char **files, int nfiles, cdist_query *q, char *buf)
 {
     size_t n = 0, cap = 1024;
-    item *items = malloc(cap * sizeof *items);
+    item *items = xrealloc(NULL, cap * sizeof *items);
     long bad = 0;
     int failed_open = 0;
     for (int i = 0; i < nfiles; i++) {
@@ -403,7 +414,7 @@ static int bench(const settings *s, const char **files, int nfiles, cdist_query 
         }
         long lineno = 0;
         for (;;) {
-            if (n == cap) items = realloc(items, (cap *= 2) * sizeof *items);
+            if (n == cap) items = xrealloc(items, (cap *= 2) * sizeof *items);
             if (!next_item(f, a, &lineno, buf, s->normalize, &items[n])) break;
             if (items[n].bad) {
                 fprintf(stderr, "circledist: %s: error: line %ld: %s\n", a, items[n].lineno, items[n].err);
@@ -419,8 +430,8 @@ static int bench(const settings *s, const char **files, int nfiles, cdist_query 
         free(items);
         return EXIT_BAD_LINES;
     }
-    cdist_result *res = malloc(n * sizeof *res);
-    cdist_status *st = malloc(n * sizeof *st);
+    cdist_result *res = xrealloc(NULL, n * sizeof *res);
+    cdist_status *st = xrealloc(NULL, n * sizeof *st);
     batch_buf bb = {0};
     if (s->jobs > 1 && !batch_buf_init(&bb, n)) {
         fprintf(stderr, "circledist: out of memory\n");
@@ -441,7 +452,7 @@ static int bench(const settings *s, const char **files, int nfiles, cdist_query 
         kinds += m > 0;
     }
     if (kinds > 1) {
-        item *sub = malloc(n * sizeof *sub);
+        item *sub = xrealloc(NULL, n * sizeof *sub);
         for (const cdq_kind *k = cdq_kinds; k->name; k++) {
             size_t m = 0;
             for (size_t i = 0; i < n; i++)
@@ -461,13 +472,16 @@ static int bench(const settings *s, const char **files, int nfiles, cdist_query 
 
 /* ---- main ---- */
 
-static int parse_jobs(const char *v)
+/* A whole number in [1, max], else 0. */
+static int parse_count(const char *v, long max)
 {
     char *end;
     errno = 0;
     long j = strtol(v, &end, 10);
-    return (errno || end == v || *end || j < 1 || j > 256) ? 0 : (int)j;
+    return (errno || end == v || *end || j < 1 || j > max) ? 0 : (int)j;
 }
+
+static int parse_jobs(const char *v) { return parse_count(v, 256); }
 
 /* Flushes and closes standard output; a write error (disk full, closed pipe) is reported. */
 static int finish_output(void)
@@ -514,10 +528,12 @@ int main(int argc, char **argv)
         else if ((!strcmp(a, "-j") && i + 1 < argc && (s.jobs = parse_jobs(argv[++i]))) ||
                  (!strncmp(a, "-j", 2) && a[2] && (s.jobs = parse_jobs(a + 2))) ||
                  (!strncmp(a, "--jobs=", 7) && (s.jobs = parse_jobs(a + 7)))) {
-        } else if (!strncmp(a, "--bench=", 8) && (s.bench = parse_jobs(a + 8)) > 0) {
+        } else if (!strncmp(a, "--bench=", 8) && (s.bench = parse_count(a + 8, 1000000)) > 0) {
         } else {
-            if (!strncmp(a, "-j", 2) || !strncmp(a, "--jobs", 6) || !strncmp(a, "--bench", 7))
+            if (!strncmp(a, "-j", 2) || !strncmp(a, "--jobs", 6))
                 fprintf(stderr, "circledist: bad value in '%s' (a number from 1 to 256 is needed)\n", a);
+            else if (!strncmp(a, "--bench", 7))
+                fprintf(stderr, "circledist: bad value in '%s' (a number of runs from 1 to 1000000 is needed)\n", a);
             else
                 fprintf(stderr, "circledist: unknown option '%s'\n", a);
             free(files);

@@ -72,8 +72,7 @@ cdist_status cdist__check_direction(cdist_query *q, const cdist_vec3 *d, const c
 /* A circle or disk: writes the validated circle with its basis. */
 cdist_status cdist__check_circle(cdist_query *q, const cdist_circle *c, const char *what, cdist__circle *out);
 
-/* The method a family runs: AUTO (or a method the family lacks) becomes `fallback`. */
-cdist_method cdist__pick_method(const cdist_query *q, unsigned available_mask, cdist_method fallback);
+/* Bit of a method in a family's method set (cdist__family.methods). */
 #define CD_HAS(m) (1u << (m))
 
 /* ---- the one entry path (src/api/entry.c) ----

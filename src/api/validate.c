@@ -130,10 +130,3 @@ CD_FMA_CLONES cdist_status cdist__check_circle(cdist_query *q, const cdist_circl
     return st;
 }
 
-cdist_method cdist__pick_method(const cdist_query *q, unsigned available_mask, cdist_method fallback)
-{
-    cdist_method m = q->method;
-    if (m == CDIST_METHOD_AUTO || !(available_mask & CD_HAS(m))) return fallback;
-    return m;
-}
-
