@@ -112,12 +112,23 @@ int main(void)
         lin[i] = (cdist_line){{sin(t), 0.5, cos(t)}, {0.6, 0.0, 0.8}};
         arcs[i] = (cdist_arc){circ[i], {1, 0, 0}, -1.0, 0.5 + 0.001 * i};
         hel[i] = (cdist_helix){{0, 0, 0}, {0, 0, 1}, {1, 0, 0}, 0.5, 0.3, 0.0, 6.0};
+    }
+    for (int i = 0; i < N; i++) { /* after every circle is set (circ[i + 3] is read) */
         cc[i] = circ_curve_of(&circ[(i + 3) % N]);
         curv[i] = (cdist_curve){circ_fn, &cc[i], -M_PI, M_PI};
     }
     long before = atomic_load(&allocations);
     cdist_query *q = cdist_query_new();
-    /* the counter sees the library's allocations (else this test could not fail) */
+    /* the counter sees the library's allocations (else this test could not fail); under valgrind,
+     * whose own allocator replaces every malloc, the test cannot count and is skipped */
+    if (atomic_load(&allocations) == before) {
+        const char *pre = getenv("LD_PRELOAD");
+        if (pre && strstr(pre, "vgpreload")) {
+            printf("SKIP: valgrind replaces the allocator; nothing to count\n");
+            cdist_query_free(q);
+            return 77;
+        }
+    }
     CHECK(atomic_load(&allocations) > before, "the interposed malloc did not see cdist_query_new");
     cdist_query_set_curve_samples(q, 64);
     batches(q, "1 thread");

@@ -113,8 +113,25 @@ static lv ladd(lv a, lv b) { lv r = {a.x + b.x, a.y + b.y, a.z + b.z}; return r;
 static lv lsc(ld s, lv a) { lv r = {s * a.x, s * a.y, s * a.z}; return r; }
 static ld ldot(lv a, lv b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
 static lv lcross(lv a, lv b) { lv r = {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; return r; }
-static ld lnorm(lv a) { return sqrtl(ldot(a, a)); }
-static lv lunit(lv a) { return lsc(1.0L / lnorm(a), a); }
+/* Scaled by the largest component: in double (valgrind runs long double as double) the squares
+ * of tiny or huge components would underflow or overflow. */
+static ld lnorm(lv a)
+{
+    ld m = fabsl(a.x) > fabsl(a.y) ? fabsl(a.x) : fabsl(a.y);
+    if (fabsl(a.z) > m) m = fabsl(a.z);
+    if (!(m > 0) || isinf(m)) return m;
+    lv s = {a.x / m, a.y / m, a.z / m};
+    return m * sqrtl(ldot(s, s));
+}
+/* Scaled first: subnormal components must not underflow the norm (valgrind runs long double as
+ * double, where the squares of 1e-320 vanish). */
+static lv lunit(lv a)
+{
+    ld m = fabsl(a.x) > fabsl(a.y) ? fabsl(a.x) : fabsl(a.y);
+    if (fabsl(a.z) > m) m = fabsl(a.z);
+    lv s = {a.x / m, a.y / m, a.z / m}; /* divided: 1 / m overflows for subnormal m */
+    return lsc(1.0L / lnorm(s), s);
+}
 
 enum { O_POINT, O_CIRCLE, O_DISK, O_LINE, O_ARC, O_HELIX, O_BEZIER, O_CURVE };
 typedef struct obj {
@@ -142,9 +159,14 @@ static ld d_obj(const obj *o, lv x, double param)
     case O_LINE: {
         lv p0 = L3(v), m = L3(v + 3);
         if (o->tmax == 1.0L) m = lsub(m, p0); /* segment: p0 p1 */
-        ld mm = ldot(m, m), t = mm > 0 ? ldot(lsub(x, p0), m) / mm : 0;
-        t = t < o->tmin ? o->tmin : (t > o->tmax ? o->tmax : t);
-        return lnorm(lsub(x, ladd(p0, lsc(t, m))));
+        /* in units of the direction's largest component (no underflow of m.m in double) */
+        ld sc = fabsl(m.x) > fabsl(m.y) ? fabsl(m.x) : fabsl(m.y);
+        if (fabsl(m.z) > sc) sc = fabsl(m.z);
+        if (!(sc > 0)) return lnorm(lsub(x, p0));
+        lv mu = {m.x / sc, m.y / sc, m.z / sc};
+        ld t = ldot(lsub(x, p0), mu) / ldot(mu, mu), lo = o->tmin * sc, hi = o->tmax * sc;
+        t = t < lo ? lo : (t > hi ? hi : t);
+        return lnorm(lsub(x, ladd(p0, lsc(t, mu))));
     }
     case O_ARC: {
         /* NaN: the angle is meaningless (a radius negligible at the problem's scale). */
