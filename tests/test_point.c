@@ -1,5 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* Point-circle and point-disk: exact constructions, far-from-origin, near-axis, properties. */
+#include <float.h>
+
 #include "check.h"
 
 static cdist_query *q;
@@ -137,9 +139,31 @@ static void properties(void)
     }
 }
 
+/* A point 1e-160 of the scale from the axis (but not on it, at the axis tolerance): the in-plane
+ * direction has subnormal squares; the reported circle point must still lie on the circle. Found
+ * by libFuzzer (radius 5.6e112, offset from the axis 1.3e-47). */
+static void near_axis_tiny_offset(void)
+{
+    cdist_result r;
+    double R = 5.6133372798172279e+112;
+    for (int k = 0; k < 40; k++) {
+        double off = ldexp(1.3e-47, -8 * k), hgt = ldexp(2.9e-33, -8 * k);
+        cdist_vec3 p = tv(-off, 0, hgt);
+        cdist_circle c = circ(0, 0, 0, 0, 0, 1, R);
+        CHECK(cdist_point_circle(q, &p, &c, &r) == CDIST_OK, "near axis %d", k);
+        cdist_vec3 k1 = r.pairs[0].point[1];
+        double rho = hypot(k1.x, k1.y);
+        /* (equidistant may be set: every circle point is equally close to far below an ulp) */
+        CHECK(fabs(rho - R) <= 4 * DBL_EPSILON * R && k1.z == 0, "near axis %d: circle point at radius %.17g (R %.17g), z %g",
+              k, rho, R, k1.z);
+        CHECK(fabs(r.distance - hypot(R, hgt)) <= 2 * DBL_EPSILON * R, "near axis %d: distance", k);
+    }
+}
+
 int main(void)
 {
     q = cdist_query_new();
+    near_axis_tiny_offset();
     CHECK(q != NULL, "handle");
     exact_cases();
     properties();

@@ -53,6 +53,10 @@
 /* A point is on the circle's axis when its axis distance |n x p| is below the rounding noise
  * of the cross product: CD_ON_AXIS_ULPS * eps * |p|. Then every circle point is closest. */
 #define CD_ON_AXIS_ULPS 2.0
+/* Point queries work at a scale in [1, 2); below this (units of that scale) the in-plane part w
+ * of a point near the axis has subnormal squares, and is rescaled before it is normalised
+ * (not a tolerance of the answer: only where exact rescaling is needed). */
+#define CD_POINT_TINY_W 0x1p-500
 
 /* ---- lines family (src/lines) ---- */
 

@@ -61,7 +61,12 @@ CD_INLINE cdist__point_pair circle_pair(vec3 p, const cdist__circle *c, double h
         /* |w|, not rho: near the axis the rounding of n x p leaves it slightly off
          * perpendicular to n, and only w (which is perpendicular) scaled by its own length
          * lands on the circle. */
-        q.k = v_scale(c->r / v_norm(w), w);
+        /* A point within 1e-150 of the scale from the axis has a w whose squares are
+         * subnormal: normalise a copy scaled to its largest component there. */
+        vec3 ws = w;
+        double m = v_maxabs(w);
+        if (m < CD_POINT_TINY_W) ws = v3(w.x / m, w.y / m, w.z / m);
+        q.k = v_scale(c->r / v_norm(ws), ws);
         q.angle = plane_angle(c->n, w, np);
     }
     double dr = rho - c->r;
