@@ -60,7 +60,7 @@ static cdist_status point_segment(cdist_query *q, const cdist_vec3 *p, const cdi
     return cdist__ok(q, r, CDIST_METHOD_AUTO);
 }
 
-/* Segment-segment: the interior critical point (when both parameters are inside [0, 1]) and
+/* Segment-segment: the interior critical point (s inside [0, 1], t its projection on b) and
  * the four end-point-to-segment candidates, each measured on the true distance. The squared
  * distance is convex in (s, t), so the smallest candidate is the minimum; two distinct minima
  * only exist along a flat valley (parallel segments), which is flagged equidistant. */
@@ -79,16 +79,36 @@ static cdist_status segment_segment(cdist_query *q, const cdist_segment *a, cons
         double dd = v_dist(P, Q);                                                                                  \
         if (dd < best) { best = dd; bs = s__; bt = t__; bp = P; bq = Q; }                                          \
     } while (0)
-    double A = v_sqr(da), E = v_sqr(db), B = v_dot(da, db);
-    vec3 w = v_sub(a->p0, b->p0);
-    double C = v_dot(da, w), F = v_dot(db, w);
-    double den = A * E - B * B;
-    vec3 cr = v_cross(da, db);
-    int parallel = !(v_sqr(cr) > 1e-24 * A * E);
-    if (!parallel && den > 0.0) {
-        double s = (B * F - C * E) / den, t = (A * F - B * C) / den;
-        if (s >= 0.0 && s <= 1.0 && t >= 0.0 && t <= 1.0) CAND(s, t);
+    double A = v_sqr(da), E = v_sqr(db);
+    /* Interior critical point, backward stable for nearly parallel segments (A E - B^2 cancels
+     * completely there): with c = db - lambda da and w' = w - mu da (both nearly orthogonal to
+     * da, formed by fma), n = da x c = da x db and s = mu + ((w' x db) . n) / |n|^2, every
+     * product is of small accurate factors. Scaled by a power of two so that |n|^2 neither
+     * overflows nor underflows. t is the projection of a(s) on b: the candidate pair is
+     * feasible and measured on the true distance, and an s optimal for inputs perturbed by
+     * rounding gives a distance within rounding of the minimum. */
+    vec3 w = v_sub(b->p0, a->p0);
+    double m = fmax(v_maxabs(w), fmax(v_maxabs(da), v_maxabs(db)));
+    double down = m > 0.0 ? cdist__pow2(-cdist__scale_exponent(m)) : 1.0;
+    vec3 sa = v_scale(down, da), sb = v_scale(down, db), sw = v_scale(down, w);
+    double sA = v_sqr(sa);
+    int parallel = 1;
+    if (sA > 0.0) {
+        vec3 c = v_axpy(sb, -v_dot(sb, sa) / sA, sa);
+        double mu = v_dot(sw, sa) / sA;
+        vec3 wp = v_axpy(sw, -mu, sa);
+        vec3 n = v_cross(sa, c);
+        double den = v_sqr(n);
+        parallel = !(den > 1e-24 * sA * v_sqr(sb));
+        if (den > 0.0) {
+            double s = mu + v_dot(v_cross(wp, sb), n) / den;
+            if (s >= 0.0 && s <= 1.0) {
+                vec3 P = s == 1.0 ? a->p1 : segment_at(a->p0, da, s);
+                CAND(s, segment_clamp(b->p0, db, P));
+            }
+        }
     }
+    /* The four end-point candidates always: they carry the answer when den is tiny or 0. */
     CAND(0.0, segment_clamp(b->p0, db, a->p0));
     CAND(1.0, segment_clamp(b->p0, db, a->p1));
     CAND(segment_clamp(a->p0, da, b->p0), 0.0);
