@@ -215,10 +215,7 @@ int cdist_grad_flag_not_differentiable(void) { return CDIST_GRAD_NOT_DIFFERENTIA
 static cdist_status grad_query(cdist_query *q, cdist__core_obj a, cdist__core_obj b, cdist_result *r, cdist_grad *g)
 {
     cdist__grad_set_error(g);
-    if (!r) {
-        cdist__begin(q, NULL);
-        return q ? cdist__fail(q, CDIST_ERR_NULL_ARGUMENT, "result pointer is NULL") : CDIST_ERR_NULL_ARGUMENT;
-    }
+    if (!r) return cdist__enter(q, NULL); /* reports the NULL result under the in-use flag */
     cdist_status st = cdist__core_query(q, &a, &b, r);
     if (st) return st;
     if (!g) return cdist__fail(q, CDIST_ERR_NULL_ARGUMENT, "gradient pointer is NULL");

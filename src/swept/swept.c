@@ -35,10 +35,11 @@ static vec3 segment_at(vec3 p0, vec3 d, double s) { return v_axpy(p0, s, d); }
 
 static cdist_status point_point(cdist_query *q, const cdist_vec3 *a, const cdist_vec3 *b, cdist_result *r)
 {
-    cdist_status st = cdist__check_handle(q, r);
-    if (st || (st = cdist__check_point(q, a, "point")) || (st = cdist__check_point(q, b, "point"))) return st;
-    result_fill(r, v_dist(*a, *b), 0, *a, *b, NAN, NAN);
-    return cdist__ok(q, r, CDIST_METHOD_AUTO);
+    cdist_status st = cdist__enter(q, r);
+    if (st) return st;
+    if (!(st = cdist__check_point(q, a, "point")) && !(st = cdist__check_point(q, b, "point")))
+        result_fill(r, v_dist(*a, *b), 0, *a, *b, NAN, NAN);
+    return cdist__leave(q, r, st, CDIST_METHOD_AUTO);
 }
 
 static cdist_status check_segment(cdist_query *q, const cdist_segment *s)
@@ -51,13 +52,15 @@ static cdist_status check_segment(cdist_query *q, const cdist_segment *s)
 
 static cdist_status point_segment(cdist_query *q, const cdist_vec3 *p, const cdist_segment *s, cdist_result *r)
 {
-    cdist_status st = cdist__check_handle(q, r);
-    if (st || (st = cdist__check_point(q, p, "point")) || (st = check_segment(q, s))) return st;
+    cdist_status st = cdist__enter(q, r);
+    if (st) return st;
+    if ((st = cdist__check_point(q, p, "point")) || (st = check_segment(q, s)))
+        return cdist__leave(q, r, st, CDIST_METHOD_AUTO);
     vec3 d = v_sub(s->p1, s->p0);
     double t = segment_clamp(s->p0, d, *p);
     vec3 x = t == 1.0 ? s->p1 : segment_at(s->p0, d, t);
     result_fill(r, v_dist(*p, x), 0, *p, x, NAN, t);
-    return cdist__ok(q, r, CDIST_METHOD_AUTO);
+    return cdist__leave(q, r, CDIST_OK, CDIST_METHOD_AUTO);
 }
 
 /* Segment-segment: the interior critical point (s inside [0, 1], t its projection on b) and
@@ -66,8 +69,10 @@ static cdist_status point_segment(cdist_query *q, const cdist_vec3 *p, const cdi
  * only exist along a flat valley (parallel segments), which is flagged equidistant. */
 static cdist_status segment_segment(cdist_query *q, const cdist_segment *a, const cdist_segment *b, cdist_result *r)
 {
-    cdist_status st = cdist__check_handle(q, r);
-    if (st || (st = check_segment(q, a)) || (st = check_segment(q, b))) return st;
+    cdist_status st = cdist__enter(q, r);
+    if (st) return st;
+    if ((st = check_segment(q, a)) || (st = check_segment(q, b)))
+        return cdist__leave(q, r, st, CDIST_METHOD_AUTO);
     vec3 da = v_sub(a->p1, a->p0), db = v_sub(b->p1, b->p0);
     double best = INFINITY, bs = 0, bt = 0;
     vec3 bp = a->p0, bq = b->p0;
@@ -122,7 +127,7 @@ static cdist_status segment_segment(cdist_query *q, const cdist_segment *a, cons
         equi = hi - lo > 1e-12;
     }
     result_fill(r, best, equi, bp, bq, bs, bt);
-    return cdist__ok(q, r, CDIST_METHOD_AUTO);
+    return cdist__leave(q, r, CDIST_OK, CDIST_METHOD_AUTO);
 }
 
 /* ---- core dispatch ---- */
@@ -176,8 +181,9 @@ cdist_status cdist__core_query(cdist_query *q, const cdist__core_obj *a, const c
         if (st == CDIST_OK) result_swap(r);
         return st;
     }
-    cdist__begin(q, r);
-    return cdist__fail(q, CDIST_ERR_INTERNAL, "no core query for this pair of objects");
+    if ((st = cdist__enter(q, r))) return st;
+    return cdist__leave(q, r, cdist__fail(q, CDIST_ERR_INTERNAL, "no core query for this pair of objects"),
+                        CDIST_METHOD_AUTO);
 }
 
 /* ---- contact ---- */
@@ -297,14 +303,16 @@ cdist_status cdist__swept_query(cdist_query *q, const cdist__core_obj *a, const 
     cdist_result local;
     cdist_result *r = core ? core : &local;
     if (c) contact_set_error(c);
-    cdist__begin(q, r);
-    if (!q) return CDIST_ERR_NULL_ARGUMENT;
-    if (!c) return cdist__fail(q, CDIST_ERR_NULL_ARGUMENT, "contact pointer is NULL");
-    if (!a->obj) return cdist__fail(q, CDIST_ERR_NULL_ARGUMENT, "first object pointer is NULL");
-    if (!b->obj) return cdist__fail(q, CDIST_ERR_NULL_ARGUMENT, "second object pointer is NULL");
-    cdist_status st;
-    if ((st = check_radius(q, a, "first object's radius")) || (st = check_radius(q, b, "second object's radius")))
-        return st;
+    /* Own validation under the handle's in-use flag (a busy handle is left untouched), released
+     * before the core query, which takes the flag itself; afterwards only c is written. */
+    cdist_status st = cdist__enter(q, r);
+    if (st) return st;
+    if (!c) st = cdist__fail(q, CDIST_ERR_NULL_ARGUMENT, "contact pointer is NULL");
+    else if (!a->obj) st = cdist__fail(q, CDIST_ERR_NULL_ARGUMENT, "first object pointer is NULL");
+    else if (!b->obj) st = cdist__fail(q, CDIST_ERR_NULL_ARGUMENT, "second object pointer is NULL");
+    else if (!(st = check_radius(q, a, "first object's radius"))) st = check_radius(q, b, "second object's radius");
+    if (st) return cdist__leave(q, r, st, CDIST_METHOD_AUTO);
+    cdist__leave_setter(q); /* releases the flag only: r is written by the core query */
     if ((st = cdist__core_query(q, a, b, r))) return st;
     c->core_distance = r->distance;
     c->distance = r->distance - (a->radius + b->radius);
