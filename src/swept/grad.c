@@ -212,13 +212,25 @@ void cdist__grad_fill(const cdist__core_obj *a, const cdist__core_obj *b, const 
 size_t cdist_grad_size(void) { return sizeof(cdist_grad); }
 int cdist_grad_flag_not_differentiable(void) { return CDIST_GRAD_NOT_DIFFERENTIABLE; }
 
+/* A NULL output pointer, found before any query runs: reported on the handle under its in-use
+ * flag (a busy handle is left untouched); r (may be NULL) gets the error state. */
+static cdist_status null_output(cdist_query *q, cdist_result *r, const char *what)
+{
+    cdist_result scratch;
+    if (!r) r = &scratch;
+    cdist_status st = cdist__enter(q, r);
+    if (st) return st;
+    st = cdist__fail(q, CDIST_ERR_NULL_ARGUMENT, "%s pointer is NULL", what);
+    return cdist__leave(q, r, st, CDIST_METHOD_AUTO);
+}
+
 static cdist_status grad_query(cdist_query *q, cdist__core_obj a, cdist__core_obj b, cdist_result *r, cdist_grad *g)
 {
     cdist__grad_set_error(g);
-    if (!r) return cdist__enter(q, NULL); /* reports the NULL result under the in-use flag */
+    if (!r) return null_output(q, NULL, "result");
+    if (!g) return null_output(q, r, "gradient");
     cdist_status st = cdist__core_query(q, &a, &b, r);
     if (st) return st;
-    if (!g) return cdist__fail(q, CDIST_ERR_NULL_ARGUMENT, "gradient pointer is NULL");
     cdist__grad_fill(&a, &b, r, g);
     return CDIST_OK;
 }
@@ -251,10 +263,13 @@ GRAD_QUERY(cdist_arc_disk_grad, cdist_arc, cdist_circle, CD_CORE_ARC, CD_CORE_DI
 static cdist_status swept_grad_query(cdist_query *q, cdist__core_obj a, cdist__core_obj b, cdist_contact *c, cdist_grad *g)
 {
     cdist__grad_set_error(g);
+    if (!g) {
+        if (c) cdist__contact_set_error(c);
+        return null_output(q, NULL, c ? "gradient" : "contact");
+    }
     cdist_result core;
     cdist_status st = cdist__swept_query(q, &a, &b, c, &core);
     if (st) return st;
-    if (!g) return cdist__fail(q, CDIST_ERR_NULL_ARGUMENT, "gradient pointer is NULL");
     cdist__grad_fill(&a, &b, &core, g);
     return CDIST_OK;
 }

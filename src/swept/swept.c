@@ -188,7 +188,7 @@ cdist_status cdist__core_query(cdist_query *q, const cdist__core_obj *a, const c
 
 /* ---- contact ---- */
 
-static void contact_set_error(cdist_contact *c)
+void cdist__contact_set_error(cdist_contact *c)
 {
     memset(c, 0, sizeof *c);
     c->distance = NAN;
@@ -302,7 +302,7 @@ cdist_status cdist__swept_query(cdist_query *q, const cdist__core_obj *a, const 
 {
     cdist_result local;
     cdist_result *r = core ? core : &local;
-    if (c) contact_set_error(c);
+    if (c) cdist__contact_set_error(c);
     /* Own validation under the handle's in-use flag (a busy handle is left untouched), released
      * before the core query, which takes the flag itself; afterwards only c is written. */
     cdist_status st = cdist__enter(q, r);

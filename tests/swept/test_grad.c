@@ -431,7 +431,26 @@ static void check_errors(void)
               isnan(r.distance),
           "bad input: NaN gradient");
     c.normal = tv(0, 0, 1);
-    CHECK(cdist_point_circle_grad(q, &p, &c, &r, NULL) == CDIST_ERR_NULL_ARGUMENT, "NULL gradient");
+    p = tv(0, 0, 2); /* a valid query (distance sqrt 5): a NULL gradient must not leave its result */
+    r.distance = 1.0;
+    r.num_pairs = 1;
+    CHECK(cdist_point_circle_grad(q, &p, &c, &r, NULL) == CDIST_ERR_NULL_ARGUMENT && isnan(r.distance) &&
+              r.num_pairs == 0 && cdist_query_last_status(q) == CDIST_ERR_NULL_ARGUMENT,
+          "NULL gradient: result %.17g with %d pairs, status %d", r.distance, r.num_pairs,
+          (int)cdist_query_last_status(q));
+    cdist_sphere s0 = {tv(0, 0, 0), 0.5}, s1 = {tv(3, 0, 0), 0.5};
+    cdist_contact ct;
+    ct.distance = 1.0;
+    ct.num_pairs = 1;
+    CHECK(cdist_sphere_sphere_grad(q, &s0, &s1, &ct, NULL) == CDIST_ERR_NULL_ARGUMENT && isnan(ct.distance) &&
+              ct.num_pairs == 0 && cdist_query_last_status(q) == CDIST_ERR_NULL_ARGUMENT,
+          "swept NULL gradient: contact %.17g with %d pairs", ct.distance, ct.num_pairs);
+    CHECK(cdist_sphere_sphere_grad(q, &s0, &s1, NULL, &g) == CDIST_ERR_NULL_ARGUMENT && isnan(g.obj[0].d_center.x),
+          "swept NULL contact");
+    CHECK(cdist_sphere_sphere_grad(q, &s0, &s1, &ct, &g) == CDIST_OK && ct.distance == 2.0 &&
+              g.obj[0].d_center.x == -1.0,
+          "swept gradient after the errors: %.17g", ct.distance);
+    p = tv(0, 0, 0);
     CHECK(cdist_point_circle_grad(q, &p, &c, NULL, &g) == CDIST_ERR_NULL_ARGUMENT, "NULL result");
     CHECK(cdist_point_circle_grad(NULL, &p, &c, &r, &g) == CDIST_ERR_NULL_ARGUMENT, "NULL handle");
     CHECK(cdist_grad_size() == sizeof(cdist_grad), "grad size");
