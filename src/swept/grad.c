@@ -74,8 +74,23 @@ static void arc_grad(const cdist_arc *arc, vec3 X, double a, vec3 w, cdist_grad_
     vec3 Pz = perp(z, N);
     double pz = v_norm(Pz);
     vec3 U = v_scale(1.0 / pz, Pz), V = v_cross(N, U);
-    double r = c->radius, ca = cos(a), sa = sin(a);
+    double r = c->radius;
     o->d_center = w;
+    if (r == 0.0) {
+        /* Every angle is the centre (the query's angle is NaN): only the centre moves X, and
+         * the radius is differentiated from the right (r -> 0+), where X leaves along the arc
+         * direction that decreases the distance most: min over the span of w . (cos a U + sin a V). */
+        double wu = v_dot(w, U), wv = v_dot(w, V);
+        double best = fmin(wu * cos(arc->start) + wv * sin(arc->start), wu * cos(arc->end) + wv * sin(arc->end));
+        double am = atan2(-wv, -wu); /* direction of -w in the plane */
+        am += 2.0 * M_PI * ceil((arc->start - am) / (2.0 * M_PI));
+        if (am <= arc->end) best = fmin(best, -hypot(wu, wv));
+        o->d_radius = best;
+        o->d_normal = o->d_zero_direction = v3(0, 0, 0);
+        o->d_start = o->d_end = 0.0;
+        return;
+    }
+    double ca = cos(a), sa = sin(a);
     o->d_radius = v_dot(w, v_add(v_scale(ca, U), v_scale(sa, V)));
     (void)X;
     /* dX = r (ca dU + sa dV), dV = dN x U + N x dU.
@@ -205,6 +220,10 @@ void cdist__grad_fill(const cdist__core_obj *a, const cdist__core_obj *b, const 
         vec3 N = unit(c->normal);
         if (disk_interior(c, N, X[k])) w = v_dot(w, N) >= 0.0 ? N : v_neg(N);
     }
+    /* An arc of radius 0 is differentiated from the right: a one-sided derivative. */
+    for (int k = 0; k < 2; k++)
+        if (ob[k]->type == CD_CORE_ARC && ((const cdist_arc *)ob[k]->obj)->circle.radius == 0.0)
+            g->flags |= CDIST_GRAD_NOT_DIFFERENTIABLE;
     object_grad(a, P, r->pairs[0].param[0], w, &g->obj[0]);
     object_grad(b, Q, r->pairs[0].param[1], v_neg(w), &g->obj[1]);
 }

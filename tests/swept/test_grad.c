@@ -460,6 +460,31 @@ static void check_errors(void)
     cdist_circle c0 = {tv(0, 0, 0), tv(0, 0, 1), 0};
     CHECK(cdist_point_circle_grad(q, &p2, &c0, &r, &g) == CDIST_OK && fabs(g.obj[1].d_radius + 0.6) < 1e-15,
           "radius 0: right derivative -0.6 (got %.17g)", g.obj[1].d_radius);
+    /* an arc of radius 0 (the query's angle is NaN): finite, flagged one-sided gradient; the
+     * radius derivative against a forward difference of the distance query */
+    cdist_circle cy = {tv(0, 0, 4), tv(1, 0, 0), 1}; /* closest point (0, 0, 3) from the origin */
+    const double spans[][2] = {{0, 2 * M_PI}, {0, M_PI / 4}, {M_PI, 1.5 * M_PI}, {-3, -1}};
+    for (int k = 0; k < 4; k++) {
+        cdist_arc a0 = {{tv(0, 0, 0), tv(1, 0, 0), 0}, tv(0, 1, 0), spans[k][0], spans[k][1]};
+        CHECK(cdist_arc_circle_grad(q, &a0, &cy, &r, &g) == CDIST_OK, "arc radius 0: status");
+        const cdist_grad_object *o = &g.obj[0];
+        int finite = isfinite(o->d_radius) && isfinite(o->d_start) && isfinite(o->d_end) &&
+                     isfinite(o->d_center.x + o->d_center.y + o->d_center.z) &&
+                     isfinite(o->d_normal.x + o->d_normal.y + o->d_normal.z) &&
+                     isfinite(o->d_zero_direction.x + o->d_zero_direction.y + o->d_zero_direction.z);
+        CHECK(finite && (g.flags & CDIST_GRAD_NOT_DIFFERENTIABLE), "arc radius 0 span %d: finite, flagged", k);
+        CHECK(fabs(o->d_center.z + 1) < 1e-15, "arc radius 0: d_center (%g %g %g)", o->d_center.x, o->d_center.y,
+              o->d_center.z);
+        cdist_result r0, r1;
+        const double h = 1e-7;
+        cdist_arc ah = a0;
+        ah.circle.radius = h;
+        CHECK(cdist_arc_circle(q, &a0, &cy, &r0) == CDIST_OK && cdist_arc_circle(q, &ah, &cy, &r1) == CDIST_OK,
+              "arc radius 0: distances");
+        double fd = (r1.distance - r0.distance) / h;
+        CHECK(fabs(o->d_radius - fd) < 1e-6, "arc radius 0 span %d: d_radius %.17g vs forward difference %.17g", k,
+              o->d_radius, fd);
+    }
 }
 
 /* Random configurations of every kind (arcs with random spans: many closest points at an end;
