@@ -6,14 +6,6 @@
 
 #include "swept-priv.h"
 
-static vec3 unit(vec3 v)
-{
-    double m = v_maxabs(v);
-    if (m == 0.0) return v3(0, 0, 0);
-    v = v_scale(1.0 / m, v);
-    return v_scale(1.0 / v_norm(v), v);
-}
-
 /* Component of g orthogonal to the unit vector n. */
 static vec3 perp(vec3 g, vec3 n) { return v_axpy(g, -v_dot(g, n), n); }
 
@@ -41,7 +33,7 @@ static int disk_interior(const cdist_circle *c, vec3 N, vec3 X)
 /* Circle or disk at point X (on it) with outward gradient vector w (dD = w . dX). */
 static void circle_like(const cdist_circle *c, vec3 X, vec3 w, int disk, cdist_grad_object *o)
 {
-    vec3 N = unit(c->normal);
+    vec3 N = v_unit_or_zero(c->normal);
     vec3 rel = v_sub(X, c->center);
     o->d_center = w;
     if (c->radius == 0.0) {
@@ -69,7 +61,7 @@ static void circle_like(const cdist_circle *c, vec3 X, vec3 w, int disk, cdist_g
 static void arc_grad(const cdist_arc *arc, vec3 X, double a, vec3 w, cdist_grad_object *o)
 {
     const cdist_circle *c = &arc->circle;
-    vec3 N = unit(c->normal);
+    vec3 N = v_unit_or_zero(c->normal);
     vec3 z = arc->zero_direction;
     vec3 Pz = perp(z, N);
     double pz = v_norm(Pz);
@@ -119,8 +111,9 @@ static void object_grad(const cdist__core_obj *ob, vec3 X, double t, vec3 w, cdi
     case CD_CORE_POINT: o->d_center = w; break;
     case CD_CORE_LINE:
     case CD_CORE_RAY: {
-        const cdist_line *l = ob->obj; /* cdist_ray has the same layout */
-        vec3 d = unit(l->direction);
+        vec3 dir = ob->type == CD_CORE_LINE ? ((const cdist_line *)ob->obj)->direction
+                                            : ((const cdist_ray *)ob->obj)->direction;
+        vec3 d = v_unit_or_zero(dir);
         o->d_origin = w;
         o->d_direction = v_scale(t, perp(w, d));
         break;
@@ -143,23 +136,23 @@ static vec3 curve_tangent(const cdist__core_obj *o, vec3 X, double t, int *inter
 {
     *interior = 1;
     switch (o->type) {
-    case CD_CORE_LINE: return unit(((const cdist_line *)o->obj)->direction);
+    case CD_CORE_LINE: return v_unit_or_zero(((const cdist_line *)o->obj)->direction);
     case CD_CORE_RAY:
         *interior = t > 0.0;
-        return unit(((const cdist_ray *)o->obj)->direction);
+        return v_unit_or_zero(((const cdist_ray *)o->obj)->direction);
     case CD_CORE_SEGMENT: {
         const cdist_segment *sg = o->obj;
         *interior = t > 0.0 && t < 1.0;
-        return unit(v_sub(sg->p1, sg->p0));
+        return v_unit_or_zero(v_sub(sg->p1, sg->p0));
     }
     case CD_CORE_CIRCLE: {
         const cdist_circle *c = o->obj;
-        return unit(v_cross(unit(c->normal), v_sub(X, c->center)));
+        return v_unit_or_zero(v_cross(v_unit_or_zero(c->normal), v_sub(X, c->center)));
     }
     case CD_CORE_ARC: {
         const cdist_arc *a = o->obj;
         *interior = t > a->start && t < a->end;
-        return unit(v_cross(unit(a->circle.normal), v_sub(X, a->circle.center)));
+        return v_unit_or_zero(v_cross(v_unit_or_zero(a->circle.normal), v_sub(X, a->circle.center)));
     }
     default: *interior = 0; return v3(0, 0, 0);
     }
@@ -176,13 +169,13 @@ static int zero_on_neighbourhood(const cdist__core_obj *a, const cdist__core_obj
     for (int k = 0; k < 2; k++) {
         if (ob[k]->type != CD_CORE_DISK) continue;
         const cdist_circle *dk = ob[k]->obj;
-        vec3 N = unit(dk->normal);
+        vec3 N = v_unit_or_zero(dk->normal);
         if (!disk_interior(dk, N, r->pairs[0].point[k])) continue;
         const cdist__core_obj *o = ob[1 - k];
         vec3 X = r->pairs[0].point[1 - k];
         if (o->type == CD_CORE_DISK) {
             const cdist_circle *d2 = o->obj;
-            vec3 N2 = unit(d2->normal);
+            vec3 N2 = v_unit_or_zero(d2->normal);
             if (disk_interior(d2, N2, X) && v_norm(v_cross(N, N2)) > transversal) return 1;
             continue;
         }
@@ -208,7 +201,7 @@ void cdist__grad_fill(const cdist__core_obj *a, const cdist__core_obj *b, const 
         if (!zero_on_neighbourhood(a, b, r)) g->flags |= CDIST_GRAD_NOT_DIFFERENTIABLE;
         return;
     }
-    vec3 w = unit(d);
+    vec3 w = v_unit_or_zero(d);
     /* At a disk's interior point w is exactly along the disk's normal (first-order optimality);
      * P - Q loses the direction's accuracy when the distance is tiny against the coordinates,
      * so take it from the structure. */
@@ -217,7 +210,7 @@ void cdist__grad_fill(const cdist__core_obj *a, const cdist__core_obj *b, const 
     for (int k = 0; k < 2; k++) {
         if (ob[k]->type != CD_CORE_DISK) continue;
         const cdist_circle *c = ob[k]->obj;
-        vec3 N = unit(c->normal);
+        vec3 N = v_unit_or_zero(c->normal);
         if (disk_interior(c, N, X[k])) w = v_dot(w, N) >= 0.0 ? N : v_neg(N);
     }
     /* An arc of radius 0 is differentiated from the right: a one-sided derivative. */

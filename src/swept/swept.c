@@ -203,14 +203,6 @@ void cdist__contact_set_error(cdist_contact *c)
     }
 }
 
-static vec3 unit_or_zero(vec3 v)
-{
-    double m = v_maxabs(v);
-    if (m == 0.0) return v3(0, 0, 0);
-    v = v_scale(1.0 / m, v);
-    return v_scale(1.0 / v_norm(v), v);
-}
-
 /* Reference point of a core (for the orientation of a touch normal). */
 static vec3 core_reference(const cdist__core_obj *o)
 {
@@ -235,17 +227,17 @@ static vec3 core_tangent(const cdist__core_obj *o, vec3 p)
     switch (o->type) {
     case CD_CORE_SEGMENT: {
         const cdist_segment *s = o->obj;
-        return unit_or_zero(v_sub(s->p1, s->p0));
+        return v_unit_or_zero(v_sub(s->p1, s->p0));
     }
-    case CD_CORE_LINE: return unit_or_zero(((const cdist_line *)o->obj)->direction);
-    case CD_CORE_RAY: return unit_or_zero(((const cdist_ray *)o->obj)->direction);
+    case CD_CORE_LINE: return v_unit_or_zero(((const cdist_line *)o->obj)->direction);
+    case CD_CORE_RAY: return v_unit_or_zero(((const cdist_ray *)o->obj)->direction);
     case CD_CORE_CIRCLE: {
         const cdist_circle *c = o->obj;
-        return unit_or_zero(v_cross(unit_or_zero(c->normal), v_sub(p, c->center)));
+        return v_unit_or_zero(v_cross(v_unit_or_zero(c->normal), v_sub(p, c->center)));
     }
     case CD_CORE_ARC: {
         const cdist_circle *c = &((const cdist_arc *)o->obj)->circle;
-        return unit_or_zero(v_cross(unit_or_zero(c->normal), v_sub(p, c->center)));
+        return v_unit_or_zero(v_cross(v_unit_or_zero(c->normal), v_sub(p, c->center)));
     }
     default: return v3(0, 0, 0);
     }
@@ -254,8 +246,8 @@ static vec3 core_tangent(const cdist__core_obj *o, vec3 p)
 static vec3 core_plane_normal(const cdist__core_obj *o)
 {
     if (o->type == CD_CORE_CIRCLE || o->type == CD_CORE_DISK)
-        return unit_or_zero(((const cdist_circle *)o->obj)->normal);
-    if (o->type == CD_CORE_ARC) return unit_or_zero(((const cdist_arc *)o->obj)->circle.normal);
+        return v_unit_or_zero(((const cdist_circle *)o->obj)->normal);
+    if (o->type == CD_CORE_ARC) return v_unit_or_zero(((const cdist_arc *)o->obj)->circle.normal);
     return v3(0, 0, 0);
 }
 
@@ -276,7 +268,7 @@ static vec3 touch_normal(const cdist__core_obj *a, const cdist__core_obj *b, vec
     vec3 ta = core_tangent(a, pa), tb = core_tangent(b, pb);
     if (v_sqr(ta) > 0.0 && v_sqr(tb) > 0.0) {
         vec3 x = v_cross(ta, tb);
-        if (v_norm(x) > 1e-8) n = unit_or_zero(x);
+        if (v_norm(x) > 1e-8) n = v_unit_or_zero(x);
     }
     if (v_sqr(n) == 0.0) n = core_plane_normal(a);
     if (v_sqr(n) == 0.0) n = core_plane_normal(b);
@@ -329,7 +321,7 @@ cdist_status cdist__swept_query(cdist_query *q, const cdist__core_obj *a, const 
             n = touch_normal(a, b, pa, pb);
             c->flags |= CDIST_CONTACT_CORE_TOUCH;
         } else {
-            n = unit_or_zero(d);
+            n = v_unit_or_zero(d);
         }
         cp->core_point[0] = pa;
         cp->core_point[1] = pb;
