@@ -486,6 +486,12 @@ static ld ref_seg_seg(cdist_segment a, cdist_segment b)
     return best;
 }
 
+/* The scale of a pair of segments: the largest distance of an end from the origin. */
+static double seg_scale(cdist_segment a, cdist_segment b)
+{
+    return fmax(fmax(vnorm(a.p0), vnorm(a.p1)), fmax(vnorm(b.p0), vnorm(b.p1)));
+}
+
 /* Capsule-capsule cores (radius 0): nearly parallel segments at angles e = 1e-3 .. 1e-12 (the
  * closed form used to cancel in A E - B^2) and random ones, against the long double reference;
  * the error bound is 4e-15 of the scale (largest coordinate). */
@@ -512,7 +518,7 @@ static void check_segment_segment(cdist_query *q)
             cdist_contact c;
             CHECK(cdist_capsule_capsule(q, &ca, &cb, &c) == CDIST_OK, "segment-segment status");
             double ref = (double)ref_seg_seg(ca.segment, cb.segment);
-            double L = fmax(fmax(vnorm(ca.segment.p0), vnorm(ca.segment.p1)), fmax(vnorm(cb.segment.p0), vnorm(cb.segment.p1)));
+            double L = seg_scale(ca.segment, cb.segment);
             double err = fabs(c.core_distance - ref) / L;
             if (err > worst) worst = err;
             CHECK(err <= 4e-15, "nearly parallel e=%g rep %d: %.17g vs reference %.17g (%.3g of scale)", e, rep,
@@ -523,14 +529,16 @@ static void check_segment_segment(cdist_query *q)
     }
     for (int rep = 0; rep < 2000; rep++) {
         cdist_capsule ca = {{rpoint(3), rpoint(3)}, 0}, cb = {{rpoint(3), rpoint(3)}, 0};
-        if (rep % 4 == 0) cb.segment.p1 = tv(cb.segment.p0.x + (ca.segment.p1.x - ca.segment.p0.x), cb.segment.p0.y + (ca.segment.p1.y - ca.segment.p0.y), cb.segment.p0.z + (ca.segment.p1.z - ca.segment.p0.z)); /* parallel */
+        cdist_vec3 b0 = cb.segment.p0, a0 = ca.segment.p0, a1 = ca.segment.p1;
+        if (rep % 4 == 0) cb.segment.p1 = tv(b0.x + (a1.x - a0.x), b0.y + (a1.y - a0.y), b0.z + (a1.z - a0.z)); /* parallel */
         cdist_contact c;
         CHECK(cdist_capsule_capsule(q, &ca, &cb, &c) == CDIST_OK, "random segment-segment status");
         double ref = (double)ref_seg_seg(ca.segment, cb.segment);
-        double L = fmax(fmax(vnorm(ca.segment.p0), vnorm(ca.segment.p1)), fmax(vnorm(cb.segment.p0), vnorm(cb.segment.p1)));
+        double L = seg_scale(ca.segment, cb.segment);
         double err = fabs(c.core_distance - ref) / L;
         if (err > worst) worst = err;
-        CHECK(err <= 4e-15, "random segments %d: %.17g vs reference %.17g (%.3g of scale)", rep, c.core_distance, ref, err);
+        CHECK(err <= 4e-15, "random segments %d: %.17g vs reference %.17g (%.3g of scale)", rep, c.core_distance, ref,
+              err);
     }
     printf("segment-segment: max error %.3g of scale\n", worst);
 }
