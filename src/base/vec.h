@@ -32,6 +32,15 @@ CD_INLINE double v_maxabs(vec3 a)
     if (fabs(a.z) > m) m = fabs(a.z);
     return m;
 }
+/* a / |a|, or 0 for a = 0; divided by its largest component first, so |a|^2 neither overflows
+ * nor underflows. */
+CD_INLINE vec3 v_unit_or_zero(vec3 a)
+{
+    double m = v_maxabs(a);
+    if (m == 0.0) return v3(0, 0, 0);
+    a = v_scale(1.0 / m, a);
+    return v_scale(1.0 / v_norm(a), a);
+}
 CD_INLINE int v_isfinite(vec3 a) { return isfinite(a.x) && isfinite(a.y) && isfinite(a.z); }
 
 /* The documented basis rule of cdist_circle_basis(): k = index of the smallest |n_k| (first on

@@ -6,14 +6,6 @@
 
 #include "swept-priv.h"
 
-static vec3 unit(vec3 v)
-{
-    double m = v_maxabs(v);
-    if (m == 0.0) return v3(0, 0, 0);
-    v = v_scale(1.0 / m, v);
-    return v_scale(1.0 / v_norm(v), v);
-}
-
 /* Component of g orthogonal to the unit vector n. */
 static vec3 perp(vec3 g, vec3 n) { return v_axpy(g, -v_dot(g, n), n); }
 
@@ -41,7 +33,7 @@ static int disk_interior(const cdist_circle *c, vec3 N, vec3 X)
 /* Circle or disk at point X (on it) with outward gradient vector w (dD = w . dX). */
 static void circle_like(const cdist_circle *c, vec3 X, vec3 w, int disk, cdist_grad_object *o)
 {
-    vec3 N = unit(c->normal);
+    vec3 N = v_unit_or_zero(c->normal);
     vec3 rel = v_sub(X, c->center);
     o->d_center = w;
     if (c->radius == 0.0) {
@@ -69,13 +61,28 @@ static void circle_like(const cdist_circle *c, vec3 X, vec3 w, int disk, cdist_g
 static void arc_grad(const cdist_arc *arc, vec3 X, double a, vec3 w, cdist_grad_object *o)
 {
     const cdist_circle *c = &arc->circle;
-    vec3 N = unit(c->normal);
+    vec3 N = v_unit_or_zero(c->normal);
     vec3 z = arc->zero_direction;
     vec3 Pz = perp(z, N);
     double pz = v_norm(Pz);
     vec3 U = v_scale(1.0 / pz, Pz), V = v_cross(N, U);
-    double r = c->radius, ca = cos(a), sa = sin(a);
+    double r = c->radius;
     o->d_center = w;
+    if (r == 0.0) {
+        /* Every angle is the centre (the query's angle is NaN): only the centre moves X, and
+         * the radius is differentiated from the right (r -> 0+), where X leaves along the arc
+         * direction that decreases the distance most: min over the span of w . (cos a U + sin a V). */
+        double wu = v_dot(w, U), wv = v_dot(w, V);
+        double best = fmin(wu * cos(arc->start) + wv * sin(arc->start), wu * cos(arc->end) + wv * sin(arc->end));
+        double am = atan2(-wv, -wu); /* direction of -w in the plane */
+        am += 2.0 * M_PI * ceil((arc->start - am) / (2.0 * M_PI));
+        if (am <= arc->end) best = fmin(best, -hypot(wu, wv));
+        o->d_radius = best;
+        o->d_normal = o->d_zero_direction = v3(0, 0, 0);
+        o->d_start = o->d_end = 0.0;
+        return;
+    }
+    double ca = cos(a), sa = sin(a);
     o->d_radius = v_dot(w, v_add(v_scale(ca, U), v_scale(sa, V)));
     (void)X;
     /* dX = r (ca dU + sa dV), dV = dN x U + N x dU.
@@ -104,8 +111,9 @@ static void object_grad(const cdist__core_obj *ob, vec3 X, double t, vec3 w, cdi
     case CD_CORE_POINT: o->d_center = w; break;
     case CD_CORE_LINE:
     case CD_CORE_RAY: {
-        const cdist_line *l = ob->obj; /* cdist_ray has the same layout */
-        vec3 d = unit(l->direction);
+        vec3 dir = ob->type == CD_CORE_LINE ? ((const cdist_line *)ob->obj)->direction
+                                            : ((const cdist_ray *)ob->obj)->direction;
+        vec3 d = v_unit_or_zero(dir);
         o->d_origin = w;
         o->d_direction = v_scale(t, perp(w, d));
         break;
@@ -128,23 +136,23 @@ static vec3 curve_tangent(const cdist__core_obj *o, vec3 X, double t, int *inter
 {
     *interior = 1;
     switch (o->type) {
-    case CD_CORE_LINE: return unit(((const cdist_line *)o->obj)->direction);
+    case CD_CORE_LINE: return v_unit_or_zero(((const cdist_line *)o->obj)->direction);
     case CD_CORE_RAY:
         *interior = t > 0.0;
-        return unit(((const cdist_ray *)o->obj)->direction);
+        return v_unit_or_zero(((const cdist_ray *)o->obj)->direction);
     case CD_CORE_SEGMENT: {
         const cdist_segment *sg = o->obj;
         *interior = t > 0.0 && t < 1.0;
-        return unit(v_sub(sg->p1, sg->p0));
+        return v_unit_or_zero(v_sub(sg->p1, sg->p0));
     }
     case CD_CORE_CIRCLE: {
         const cdist_circle *c = o->obj;
-        return unit(v_cross(unit(c->normal), v_sub(X, c->center)));
+        return v_unit_or_zero(v_cross(v_unit_or_zero(c->normal), v_sub(X, c->center)));
     }
     case CD_CORE_ARC: {
         const cdist_arc *a = o->obj;
         *interior = t > a->start && t < a->end;
-        return unit(v_cross(unit(a->circle.normal), v_sub(X, a->circle.center)));
+        return v_unit_or_zero(v_cross(v_unit_or_zero(a->circle.normal), v_sub(X, a->circle.center)));
     }
     default: *interior = 0; return v3(0, 0, 0);
     }
@@ -161,13 +169,13 @@ static int zero_on_neighbourhood(const cdist__core_obj *a, const cdist__core_obj
     for (int k = 0; k < 2; k++) {
         if (ob[k]->type != CD_CORE_DISK) continue;
         const cdist_circle *dk = ob[k]->obj;
-        vec3 N = unit(dk->normal);
+        vec3 N = v_unit_or_zero(dk->normal);
         if (!disk_interior(dk, N, r->pairs[0].point[k])) continue;
         const cdist__core_obj *o = ob[1 - k];
         vec3 X = r->pairs[0].point[1 - k];
         if (o->type == CD_CORE_DISK) {
             const cdist_circle *d2 = o->obj;
-            vec3 N2 = unit(d2->normal);
+            vec3 N2 = v_unit_or_zero(d2->normal);
             if (disk_interior(d2, N2, X) && v_norm(v_cross(N, N2)) > transversal) return 1;
             continue;
         }
@@ -193,7 +201,7 @@ void cdist__grad_fill(const cdist__core_obj *a, const cdist__core_obj *b, const 
         if (!zero_on_neighbourhood(a, b, r)) g->flags |= CDIST_GRAD_NOT_DIFFERENTIABLE;
         return;
     }
-    vec3 w = unit(d);
+    vec3 w = v_unit_or_zero(d);
     /* At a disk's interior point w is exactly along the disk's normal (first-order optimality);
      * P - Q loses the direction's accuracy when the distance is tiny against the coordinates,
      * so take it from the structure. */
@@ -202,9 +210,13 @@ void cdist__grad_fill(const cdist__core_obj *a, const cdist__core_obj *b, const 
     for (int k = 0; k < 2; k++) {
         if (ob[k]->type != CD_CORE_DISK) continue;
         const cdist_circle *c = ob[k]->obj;
-        vec3 N = unit(c->normal);
+        vec3 N = v_unit_or_zero(c->normal);
         if (disk_interior(c, N, X[k])) w = v_dot(w, N) >= 0.0 ? N : v_neg(N);
     }
+    /* An arc of radius 0 is differentiated from the right: a one-sided derivative. */
+    for (int k = 0; k < 2; k++)
+        if (ob[k]->type == CD_CORE_ARC && ((const cdist_arc *)ob[k]->obj)->circle.radius == 0.0)
+            g->flags |= CDIST_GRAD_NOT_DIFFERENTIABLE;
     object_grad(a, P, r->pairs[0].param[0], w, &g->obj[0]);
     object_grad(b, Q, r->pairs[0].param[1], v_neg(w), &g->obj[1]);
 }
@@ -212,16 +224,25 @@ void cdist__grad_fill(const cdist__core_obj *a, const cdist__core_obj *b, const 
 size_t cdist_grad_size(void) { return sizeof(cdist_grad); }
 int cdist_grad_flag_not_differentiable(void) { return CDIST_GRAD_NOT_DIFFERENTIABLE; }
 
+/* A NULL output pointer, found before any query runs: reported on the handle under its in-use
+ * flag (a busy handle is left untouched); r (may be NULL) gets the error state. */
+static cdist_status null_output(cdist_query *q, cdist_result *r, const char *what)
+{
+    cdist_result scratch;
+    if (!r) r = &scratch;
+    cdist_status st = cdist__enter(q, r);
+    if (st) return st;
+    st = cdist__fail(q, CDIST_ERR_NULL_ARGUMENT, "%s pointer is NULL", what);
+    return cdist__leave(q, r, st, CDIST_METHOD_AUTO);
+}
+
 static cdist_status grad_query(cdist_query *q, cdist__core_obj a, cdist__core_obj b, cdist_result *r, cdist_grad *g)
 {
     cdist__grad_set_error(g);
-    if (!r) {
-        cdist__begin(q, NULL);
-        return q ? cdist__fail(q, CDIST_ERR_NULL_ARGUMENT, "result pointer is NULL") : CDIST_ERR_NULL_ARGUMENT;
-    }
+    if (!r) return null_output(q, NULL, "result");
+    if (!g) return null_output(q, r, "gradient");
     cdist_status st = cdist__core_query(q, &a, &b, r);
     if (st) return st;
-    if (!g) return cdist__fail(q, CDIST_ERR_NULL_ARGUMENT, "gradient pointer is NULL");
     cdist__grad_fill(&a, &b, r, g);
     return CDIST_OK;
 }
@@ -254,10 +275,13 @@ GRAD_QUERY(cdist_arc_disk_grad, cdist_arc, cdist_circle, CD_CORE_ARC, CD_CORE_DI
 static cdist_status swept_grad_query(cdist_query *q, cdist__core_obj a, cdist__core_obj b, cdist_contact *c, cdist_grad *g)
 {
     cdist__grad_set_error(g);
+    if (!g) {
+        if (c) cdist__contact_set_error(c);
+        return null_output(q, NULL, c ? "gradient" : "contact");
+    }
     cdist_result core;
     cdist_status st = cdist__swept_query(q, &a, &b, c, &core);
     if (st) return st;
-    if (!g) return cdist__fail(q, CDIST_ERR_NULL_ARGUMENT, "gradient pointer is NULL");
     cdist__grad_fill(&a, &b, &core, g);
     return CDIST_OK;
 }

@@ -32,6 +32,8 @@ cdist_status cdist__core_query(cdist_query *q, const cdist__core_obj *a, const c
  * (may be NULL) receives the core result. */
 cdist_status cdist__swept_query(cdist_query *q, const cdist__core_obj *a, const cdist__core_obj *b, cdist_contact *c,
                             cdist_result *core);
+/* A contact in the error state (NaN, no pairs, flags 0). */
+void cdist__contact_set_error(cdist_contact *c);
 /* Fill g from the core result r (the query succeeded). */
 void cdist__grad_fill(const cdist__core_obj *a, const cdist__core_obj *b, const cdist_result *r, struct cdist_grad *g);
 /* Gradient in the error state (all NaN, flags 0). */

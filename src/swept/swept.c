@@ -35,10 +35,11 @@ static vec3 segment_at(vec3 p0, vec3 d, double s) { return v_axpy(p0, s, d); }
 
 static cdist_status point_point(cdist_query *q, const cdist_vec3 *a, const cdist_vec3 *b, cdist_result *r)
 {
-    cdist_status st = cdist__check_handle(q, r);
-    if (st || (st = cdist__check_point(q, a, "point")) || (st = cdist__check_point(q, b, "point"))) return st;
-    result_fill(r, v_dist(*a, *b), 0, *a, *b, NAN, NAN);
-    return cdist__ok(q, r, CDIST_METHOD_AUTO);
+    cdist_status st = cdist__enter(q, r);
+    if (st) return st;
+    if (!(st = cdist__check_point(q, a, "point")) && !(st = cdist__check_point(q, b, "point")))
+        result_fill(r, v_dist(*a, *b), 0, *a, *b, NAN, NAN);
+    return cdist__leave(q, r, st, CDIST_METHOD_AUTO);
 }
 
 static cdist_status check_segment(cdist_query *q, const cdist_segment *s)
@@ -51,23 +52,27 @@ static cdist_status check_segment(cdist_query *q, const cdist_segment *s)
 
 static cdist_status point_segment(cdist_query *q, const cdist_vec3 *p, const cdist_segment *s, cdist_result *r)
 {
-    cdist_status st = cdist__check_handle(q, r);
-    if (st || (st = cdist__check_point(q, p, "point")) || (st = check_segment(q, s))) return st;
+    cdist_status st = cdist__enter(q, r);
+    if (st) return st;
+    if ((st = cdist__check_point(q, p, "point")) || (st = check_segment(q, s)))
+        return cdist__leave(q, r, st, CDIST_METHOD_AUTO);
     vec3 d = v_sub(s->p1, s->p0);
     double t = segment_clamp(s->p0, d, *p);
     vec3 x = t == 1.0 ? s->p1 : segment_at(s->p0, d, t);
     result_fill(r, v_dist(*p, x), 0, *p, x, NAN, t);
-    return cdist__ok(q, r, CDIST_METHOD_AUTO);
+    return cdist__leave(q, r, CDIST_OK, CDIST_METHOD_AUTO);
 }
 
-/* Segment-segment: the interior critical point (when both parameters are inside [0, 1]) and
+/* Segment-segment: the interior critical point (s inside [0, 1], t its projection on b) and
  * the four end-point-to-segment candidates, each measured on the true distance. The squared
  * distance is convex in (s, t), so the smallest candidate is the minimum; two distinct minima
  * only exist along a flat valley (parallel segments), which is flagged equidistant. */
 static cdist_status segment_segment(cdist_query *q, const cdist_segment *a, const cdist_segment *b, cdist_result *r)
 {
-    cdist_status st = cdist__check_handle(q, r);
-    if (st || (st = check_segment(q, a)) || (st = check_segment(q, b))) return st;
+    cdist_status st = cdist__enter(q, r);
+    if (st) return st;
+    if ((st = check_segment(q, a)) || (st = check_segment(q, b)))
+        return cdist__leave(q, r, st, CDIST_METHOD_AUTO);
     vec3 da = v_sub(a->p1, a->p0), db = v_sub(b->p1, b->p0);
     double best = INFINITY, bs = 0, bt = 0;
     vec3 bp = a->p0, bq = b->p0;
@@ -79,16 +84,36 @@ static cdist_status segment_segment(cdist_query *q, const cdist_segment *a, cons
         double dd = v_dist(P, Q);                                                                                  \
         if (dd < best) { best = dd; bs = s__; bt = t__; bp = P; bq = Q; }                                          \
     } while (0)
-    double A = v_sqr(da), E = v_sqr(db), B = v_dot(da, db);
-    vec3 w = v_sub(a->p0, b->p0);
-    double C = v_dot(da, w), F = v_dot(db, w);
-    double den = A * E - B * B;
-    vec3 cr = v_cross(da, db);
-    int parallel = !(v_sqr(cr) > 1e-24 * A * E);
-    if (!parallel && den > 0.0) {
-        double s = (B * F - C * E) / den, t = (A * F - B * C) / den;
-        if (s >= 0.0 && s <= 1.0 && t >= 0.0 && t <= 1.0) CAND(s, t);
+    double A = v_sqr(da), E = v_sqr(db);
+    /* Interior critical point, backward stable for nearly parallel segments (A E - B^2 cancels
+     * completely there): with c = db - lambda da and w' = w - mu da (both nearly orthogonal to
+     * da, formed by fma), n = da x c = da x db and s = mu + ((w' x db) . n) / |n|^2, every
+     * product is of small accurate factors. Scaled by a power of two so that |n|^2 neither
+     * overflows nor underflows. t is the projection of a(s) on b: the candidate pair is
+     * feasible and measured on the true distance, and an s optimal for inputs perturbed by
+     * rounding gives a distance within rounding of the minimum. */
+    vec3 w = v_sub(b->p0, a->p0);
+    double m = fmax(v_maxabs(w), fmax(v_maxabs(da), v_maxabs(db)));
+    double down = m > 0.0 ? cdist__pow2(-cdist__scale_exponent(m)) : 1.0;
+    vec3 sa = v_scale(down, da), sb = v_scale(down, db), sw = v_scale(down, w);
+    double sA = v_sqr(sa);
+    int parallel = 1;
+    if (sA > 0.0) {
+        vec3 c = v_axpy(sb, -v_dot(sb, sa) / sA, sa);
+        double mu = v_dot(sw, sa) / sA;
+        vec3 wp = v_axpy(sw, -mu, sa);
+        vec3 n = v_cross(sa, c);
+        double den = v_sqr(n);
+        parallel = !(den > 1e-24 * sA * v_sqr(sb));
+        if (den > 0.0) {
+            double s = mu + v_dot(v_cross(wp, sb), n) / den;
+            if (s >= 0.0 && s <= 1.0) {
+                vec3 P = s == 1.0 ? a->p1 : segment_at(a->p0, da, s);
+                CAND(s, segment_clamp(b->p0, db, P));
+            }
+        }
     }
+    /* The four end-point candidates always: they carry the answer when den is tiny or 0. */
     CAND(0.0, segment_clamp(b->p0, db, a->p0));
     CAND(1.0, segment_clamp(b->p0, db, a->p1));
     CAND(segment_clamp(a->p0, da, b->p0), 0.0);
@@ -102,7 +127,7 @@ static cdist_status segment_segment(cdist_query *q, const cdist_segment *a, cons
         equi = hi - lo > 1e-12;
     }
     result_fill(r, best, equi, bp, bq, bs, bt);
-    return cdist__ok(q, r, CDIST_METHOD_AUTO);
+    return cdist__leave(q, r, CDIST_OK, CDIST_METHOD_AUTO);
 }
 
 /* ---- core dispatch ---- */
@@ -156,13 +181,14 @@ cdist_status cdist__core_query(cdist_query *q, const cdist__core_obj *a, const c
         if (st == CDIST_OK) result_swap(r);
         return st;
     }
-    cdist__begin(q, r);
-    return cdist__fail(q, CDIST_ERR_INTERNAL, "no core query for this pair of objects");
+    if ((st = cdist__enter(q, r))) return st;
+    return cdist__leave(q, r, cdist__fail(q, CDIST_ERR_INTERNAL, "no core query for this pair of objects"),
+                        CDIST_METHOD_AUTO);
 }
 
 /* ---- contact ---- */
 
-static void contact_set_error(cdist_contact *c)
+void cdist__contact_set_error(cdist_contact *c)
 {
     memset(c, 0, sizeof *c);
     c->distance = NAN;
@@ -175,14 +201,6 @@ static void contact_set_error(cdist_contact *c)
         }
         c->pairs[i].normal = v3(NAN, NAN, NAN);
     }
-}
-
-static vec3 unit_or_zero(vec3 v)
-{
-    double m = v_maxabs(v);
-    if (m == 0.0) return v3(0, 0, 0);
-    v = v_scale(1.0 / m, v);
-    return v_scale(1.0 / v_norm(v), v);
 }
 
 /* Reference point of a core (for the orientation of a touch normal). */
@@ -209,17 +227,17 @@ static vec3 core_tangent(const cdist__core_obj *o, vec3 p)
     switch (o->type) {
     case CD_CORE_SEGMENT: {
         const cdist_segment *s = o->obj;
-        return unit_or_zero(v_sub(s->p1, s->p0));
+        return v_unit_or_zero(v_sub(s->p1, s->p0));
     }
-    case CD_CORE_LINE: return unit_or_zero(((const cdist_line *)o->obj)->direction);
-    case CD_CORE_RAY: return unit_or_zero(((const cdist_ray *)o->obj)->direction);
+    case CD_CORE_LINE: return v_unit_or_zero(((const cdist_line *)o->obj)->direction);
+    case CD_CORE_RAY: return v_unit_or_zero(((const cdist_ray *)o->obj)->direction);
     case CD_CORE_CIRCLE: {
         const cdist_circle *c = o->obj;
-        return unit_or_zero(v_cross(unit_or_zero(c->normal), v_sub(p, c->center)));
+        return v_unit_or_zero(v_cross(v_unit_or_zero(c->normal), v_sub(p, c->center)));
     }
     case CD_CORE_ARC: {
         const cdist_circle *c = &((const cdist_arc *)o->obj)->circle;
-        return unit_or_zero(v_cross(unit_or_zero(c->normal), v_sub(p, c->center)));
+        return v_unit_or_zero(v_cross(v_unit_or_zero(c->normal), v_sub(p, c->center)));
     }
     default: return v3(0, 0, 0);
     }
@@ -228,8 +246,8 @@ static vec3 core_tangent(const cdist__core_obj *o, vec3 p)
 static vec3 core_plane_normal(const cdist__core_obj *o)
 {
     if (o->type == CD_CORE_CIRCLE || o->type == CD_CORE_DISK)
-        return unit_or_zero(((const cdist_circle *)o->obj)->normal);
-    if (o->type == CD_CORE_ARC) return unit_or_zero(((const cdist_arc *)o->obj)->circle.normal);
+        return v_unit_or_zero(((const cdist_circle *)o->obj)->normal);
+    if (o->type == CD_CORE_ARC) return v_unit_or_zero(((const cdist_arc *)o->obj)->circle.normal);
     return v3(0, 0, 0);
 }
 
@@ -250,7 +268,7 @@ static vec3 touch_normal(const cdist__core_obj *a, const cdist__core_obj *b, vec
     vec3 ta = core_tangent(a, pa), tb = core_tangent(b, pb);
     if (v_sqr(ta) > 0.0 && v_sqr(tb) > 0.0) {
         vec3 x = v_cross(ta, tb);
-        if (v_norm(x) > 1e-8) n = unit_or_zero(x);
+        if (v_norm(x) > 1e-8) n = v_unit_or_zero(x);
     }
     if (v_sqr(n) == 0.0) n = core_plane_normal(a);
     if (v_sqr(n) == 0.0) n = core_plane_normal(b);
@@ -276,15 +294,17 @@ cdist_status cdist__swept_query(cdist_query *q, const cdist__core_obj *a, const 
 {
     cdist_result local;
     cdist_result *r = core ? core : &local;
-    if (c) contact_set_error(c);
-    cdist__begin(q, r);
-    if (!q) return CDIST_ERR_NULL_ARGUMENT;
-    if (!c) return cdist__fail(q, CDIST_ERR_NULL_ARGUMENT, "contact pointer is NULL");
-    if (!a->obj) return cdist__fail(q, CDIST_ERR_NULL_ARGUMENT, "first object pointer is NULL");
-    if (!b->obj) return cdist__fail(q, CDIST_ERR_NULL_ARGUMENT, "second object pointer is NULL");
-    cdist_status st;
-    if ((st = check_radius(q, a, "first object's radius")) || (st = check_radius(q, b, "second object's radius")))
-        return st;
+    if (c) cdist__contact_set_error(c);
+    /* Own validation under the handle's in-use flag (a busy handle is left untouched), released
+     * before the core query, which takes the flag itself; afterwards only c is written. */
+    cdist_status st = cdist__enter(q, r);
+    if (st) return st;
+    if (!c) st = cdist__fail(q, CDIST_ERR_NULL_ARGUMENT, "contact pointer is NULL");
+    else if (!a->obj) st = cdist__fail(q, CDIST_ERR_NULL_ARGUMENT, "first object pointer is NULL");
+    else if (!b->obj) st = cdist__fail(q, CDIST_ERR_NULL_ARGUMENT, "second object pointer is NULL");
+    else if (!(st = check_radius(q, a, "first object's radius"))) st = check_radius(q, b, "second object's radius");
+    if (st) return cdist__leave(q, r, st, CDIST_METHOD_AUTO);
+    cdist__leave_setter(q); /* releases the flag only: r is written by the core query */
     if ((st = cdist__core_query(q, a, b, r))) return st;
     c->core_distance = r->distance;
     c->distance = r->distance - (a->radius + b->radius);
@@ -301,7 +321,7 @@ cdist_status cdist__swept_query(cdist_query *q, const cdist__core_obj *a, const 
             n = touch_normal(a, b, pa, pb);
             c->flags |= CDIST_CONTACT_CORE_TOUCH;
         } else {
-            n = unit_or_zero(d);
+            n = v_unit_or_zero(d);
         }
         cp->core_point[0] = pa;
         cp->core_point[1] = pb;

@@ -431,7 +431,26 @@ static void check_errors(void)
               isnan(r.distance),
           "bad input: NaN gradient");
     c.normal = tv(0, 0, 1);
-    CHECK(cdist_point_circle_grad(q, &p, &c, &r, NULL) == CDIST_ERR_NULL_ARGUMENT, "NULL gradient");
+    p = tv(0, 0, 2); /* a valid query (distance sqrt 5): a NULL gradient must not leave its result */
+    r.distance = 1.0;
+    r.num_pairs = 1;
+    CHECK(cdist_point_circle_grad(q, &p, &c, &r, NULL) == CDIST_ERR_NULL_ARGUMENT && isnan(r.distance) &&
+              r.num_pairs == 0 && cdist_query_last_status(q) == CDIST_ERR_NULL_ARGUMENT,
+          "NULL gradient: result %.17g with %d pairs, status %d", r.distance, r.num_pairs,
+          (int)cdist_query_last_status(q));
+    cdist_sphere s0 = {tv(0, 0, 0), 0.5}, s1 = {tv(3, 0, 0), 0.5};
+    cdist_contact ct;
+    ct.distance = 1.0;
+    ct.num_pairs = 1;
+    CHECK(cdist_sphere_sphere_grad(q, &s0, &s1, &ct, NULL) == CDIST_ERR_NULL_ARGUMENT && isnan(ct.distance) &&
+              ct.num_pairs == 0 && cdist_query_last_status(q) == CDIST_ERR_NULL_ARGUMENT,
+          "swept NULL gradient: contact %.17g with %d pairs", ct.distance, ct.num_pairs);
+    CHECK(cdist_sphere_sphere_grad(q, &s0, &s1, NULL, &g) == CDIST_ERR_NULL_ARGUMENT && isnan(g.obj[0].d_center.x),
+          "swept NULL contact");
+    CHECK(cdist_sphere_sphere_grad(q, &s0, &s1, &ct, &g) == CDIST_OK && ct.distance == 2.0 &&
+              g.obj[0].d_center.x == -1.0,
+          "swept gradient after the errors: %.17g", ct.distance);
+    p = tv(0, 0, 0);
     CHECK(cdist_point_circle_grad(q, &p, &c, NULL, &g) == CDIST_ERR_NULL_ARGUMENT, "NULL result");
     CHECK(cdist_point_circle_grad(NULL, &p, &c, &r, &g) == CDIST_ERR_NULL_ARGUMENT, "NULL handle");
     CHECK(cdist_grad_size() == sizeof(cdist_grad), "grad size");
@@ -441,6 +460,31 @@ static void check_errors(void)
     cdist_circle c0 = {tv(0, 0, 0), tv(0, 0, 1), 0};
     CHECK(cdist_point_circle_grad(q, &p2, &c0, &r, &g) == CDIST_OK && fabs(g.obj[1].d_radius + 0.6) < 1e-15,
           "radius 0: right derivative -0.6 (got %.17g)", g.obj[1].d_radius);
+    /* an arc of radius 0 (the query's angle is NaN): finite, flagged one-sided gradient; the
+     * radius derivative against a forward difference of the distance query */
+    cdist_circle cy = {tv(0, 0, 4), tv(1, 0, 0), 1}; /* closest point (0, 0, 3) from the origin */
+    const double spans[][2] = {{0, 2 * M_PI}, {0, M_PI / 4}, {M_PI, 1.5 * M_PI}, {-3, -1}};
+    for (int k = 0; k < 4; k++) {
+        cdist_arc a0 = {{tv(0, 0, 0), tv(1, 0, 0), 0}, tv(0, 1, 0), spans[k][0], spans[k][1]};
+        CHECK(cdist_arc_circle_grad(q, &a0, &cy, &r, &g) == CDIST_OK, "arc radius 0: status");
+        const cdist_grad_object *o = &g.obj[0];
+        int finite = isfinite(o->d_radius) && isfinite(o->d_start) && isfinite(o->d_end) &&
+                     isfinite(o->d_center.x + o->d_center.y + o->d_center.z) &&
+                     isfinite(o->d_normal.x + o->d_normal.y + o->d_normal.z) &&
+                     isfinite(o->d_zero_direction.x + o->d_zero_direction.y + o->d_zero_direction.z);
+        CHECK(finite && (g.flags & CDIST_GRAD_NOT_DIFFERENTIABLE), "arc radius 0 span %d: finite, flagged", k);
+        CHECK(fabs(o->d_center.z + 1) < 1e-15, "arc radius 0: d_center (%g %g %g)", o->d_center.x, o->d_center.y,
+              o->d_center.z);
+        cdist_result r0, r1;
+        const double h = 1e-7;
+        cdist_arc ah = a0;
+        ah.circle.radius = h;
+        CHECK(cdist_arc_circle(q, &a0, &cy, &r0) == CDIST_OK && cdist_arc_circle(q, &ah, &cy, &r1) == CDIST_OK,
+              "arc radius 0: distances");
+        double fd = (r1.distance - r0.distance) / h;
+        CHECK(fabs(o->d_radius - fd) < 1e-6, "arc radius 0 span %d: d_radius %.17g vs forward difference %.17g", k,
+              o->d_radius, fd);
+    }
 }
 
 /* Random configurations of every kind (arcs with random spans: many closest points at an end;

@@ -455,6 +455,94 @@ static void check_touch_and_errors(cdist_query *q)
     CHECK(cdist_contact_flag_core_touch() == CDIST_CONTACT_CORE_TOUCH, "flag function");
 }
 
+/* Segment-segment reference: f(s) = distance from a(s) to segment b (exact projection) is convex
+ * in s; golden-section search in long double. Independent of the library's closed form. */
+static ld ref_point_seg(lv p, lv b0, lv db)
+{
+    ld dd = ldot(db, db), t = dd > 0 ? ldot(lsub(p, b0), db) / dd : 0;
+    if (t < 0) t = 0;
+    if (t > 1) t = 1;
+    return lnorm(lsub(p, ladd(b0, lsc(t, db))));
+}
+static ld ref_seg_seg(cdist_segment a, cdist_segment b)
+{
+    lv a0 = lvv(a.p0), da = lsub(lvv(a.p1), a0), b0 = lvv(b.p0), db = lsub(lvv(b.p1), b0);
+    const ld g = (sqrtl(5.0L) - 1) / 2;
+    ld lo = 0, hi = 1, x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo);
+    ld f1 = ref_point_seg(ladd(a0, lsc(x1, da)), b0, db), f2 = ref_point_seg(ladd(a0, lsc(x2, da)), b0, db);
+    for (int it = 0; it < 200; it++) {
+        if (f1 <= f2) {
+            hi = x2, x2 = x1, f2 = f1, x1 = hi - g * (hi - lo);
+            f1 = ref_point_seg(ladd(a0, lsc(x1, da)), b0, db);
+        } else {
+            lo = x1, x1 = x2, f1 = f2, x2 = lo + g * (hi - lo);
+            f2 = ref_point_seg(ladd(a0, lsc(x2, da)), b0, db);
+        }
+    }
+    ld best = f1 < f2 ? f1 : f2;
+    ld e0 = ref_point_seg(a0, b0, db), e1 = ref_point_seg(ladd(a0, da), b0, db);
+    if (e0 < best) best = e0;
+    if (e1 < best) best = e1;
+    return best;
+}
+
+/* The scale of a pair of segments: the largest distance of an end from the origin. */
+static double seg_scale(cdist_segment a, cdist_segment b)
+{
+    return fmax(fmax(vnorm(a.p0), vnorm(a.p1)), fmax(vnorm(b.p0), vnorm(b.p1)));
+}
+
+/* Capsule-capsule cores (radius 0): nearly parallel segments at angles e = 1e-3 .. 1e-12 (the
+ * closed form used to cancel in A E - B^2) and random ones, against the long double reference;
+ * the error bound is 4e-15 of the scale (largest coordinate). */
+static void check_segment_segment(cdist_query *q)
+{
+    double worst = 0;
+    for (int k = 3; k <= 12; k++) {
+        double e = pow(10.0, -k);
+        /* the reviewer's case: distance 1e-7 at s = t = 0.3 */
+        cdist_capsule ca = {{{0, 0, 0}, {1, 0, 0}}, 0}, cb = {{{0, -0.3 * e, 1e-7}, {1, 0.7 * e, 1e-7}}, 0};
+        for (int rep = 0; rep < 40; rep++) {
+            if (rep > 0) {
+                /* random nearly parallel pairs: a random direction, b tilted by e, offset apart */
+                cdist_vec3 o = rpoint(2), d = rand_unit(), u = rand_unit();
+                double len = 0.5 + urand(), h = pow(10.0, -1 - 8 * urand()), sh = urand() - 0.5;
+                ca.segment.p0 = o;
+                ca.segment.p1 = tv(o.x + len * d.x, o.y + len * d.y, o.z + len * d.z);
+                cdist_vec3 b0 = tv(o.x + sh * d.x + h * u.x, o.y + sh * d.y + h * u.y, o.z + sh * d.z + h * u.z);
+                double lb = len * (0.5 + urand());
+                cdist_vec3 w = rand_unit();
+                cb.segment.p0 = b0;
+                cb.segment.p1 = tv(b0.x + lb * (d.x + e * w.x), b0.y + lb * (d.y + e * w.y), b0.z + lb * (d.z + e * w.z));
+            }
+            cdist_contact c;
+            CHECK(cdist_capsule_capsule(q, &ca, &cb, &c) == CDIST_OK, "segment-segment status");
+            double ref = (double)ref_seg_seg(ca.segment, cb.segment);
+            double L = seg_scale(ca.segment, cb.segment);
+            double err = fabs(c.core_distance - ref) / L;
+            if (err > worst) worst = err;
+            CHECK(err <= 4e-15, "nearly parallel e=%g rep %d: %.17g vs reference %.17g (%.3g of scale)", e, rep,
+                  c.core_distance, ref, err);
+            if (rep == 0 && k == 9)
+                CHECK(fabs(c.core_distance - 1e-7) <= 4e-15, "reviewer's case %.17g", c.core_distance);
+        }
+    }
+    for (int rep = 0; rep < 2000; rep++) {
+        cdist_capsule ca = {{rpoint(3), rpoint(3)}, 0}, cb = {{rpoint(3), rpoint(3)}, 0};
+        cdist_vec3 b0 = cb.segment.p0, a0 = ca.segment.p0, a1 = ca.segment.p1;
+        if (rep % 4 == 0) cb.segment.p1 = tv(b0.x + (a1.x - a0.x), b0.y + (a1.y - a0.y), b0.z + (a1.z - a0.z)); /* parallel */
+        cdist_contact c;
+        CHECK(cdist_capsule_capsule(q, &ca, &cb, &c) == CDIST_OK, "random segment-segment status");
+        double ref = (double)ref_seg_seg(ca.segment, cb.segment);
+        double L = seg_scale(ca.segment, cb.segment);
+        double err = fabs(c.core_distance - ref) / L;
+        if (err > worst) worst = err;
+        CHECK(err <= 4e-15, "random segments %d: %.17g vs reference %.17g (%.3g of scale)", rep, c.core_distance, ref,
+              err);
+    }
+    printf("segment-segment: max error %.3g of scale\n", worst);
+}
+
 int main(void)
 {
     cdist_query *q = cdist_query_new();
@@ -482,6 +570,7 @@ int main(void)
               kname[pairs[pi][0]], kname[pairs[pi][1]], n_overlap[pi], n_apart[pi]);
     }
     check_touch_and_errors(q);
+    check_segment_segment(q);
     cdist_query_free(q);
     return check_summary("swept");
 }
