@@ -2,6 +2,7 @@
 /* The batch entry points: one generic entry per result type over a table of query kinds. A new
  * kind adds one enum value and one row here. */
 #include <math.h>
+#include <stdatomic.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <string.h>
@@ -167,14 +168,10 @@ static cdist_status fail_all(cdist_query *q, cdist_status st, size_t n, cdist_re
     return cdist__fail(q, st, "batch: %s", why);
 }
 
-static cdist_status run(cdist_query *q, cdist_kind kind, size_t n, const void *a, ptrdiff_t a_stride, const void *b,
-                        ptrdiff_t b_stride, cdist_result *results, double *distances, cdist_status *statuses)
+static cdist_status run_locked(cdist_query *q, cdist_kind kind, size_t n, const void *a, ptrdiff_t a_stride,
+                               const void *b, ptrdiff_t b_stride, cdist_result *results, double *distances,
+                               cdist_status *statuses)
 {
-    if (n == 0) {
-        if (q) cdist__begin(q, NULL);
-        return q ? CDIST_OK : CDIST_ERR_NULL_ARGUMENT;
-    }
-    if (!q) return fail_all(q, CDIST_ERR_NULL_ARGUMENT, n, results, distances, statuses, "");
     if (!kind_ok(kind)) {
         fail_all(q, CDIST_ERR_BAD_KIND, n, results, distances, statuses, "");
         return cdist__fail(q, CDIST_ERR_BAD_KIND, "batch: %d is not a cdist_kind (0..%d)", (int)kind, KIND_COUNT - 1);
@@ -184,10 +181,28 @@ static cdist_status run(cdist_query *q, cdist_kind kind, size_t n, const void *a
                         !a ? "first object array is NULL" : !b ? "second object array is NULL" : "output array is NULL");
     cdist__job job = {kind, n, a, b, a_stride, b_stride, results, distances, statuses, 0};
     cdist__slot first;
-    cdist__workers_run(q, &job, &first);
+    if (cdist__workers_run(q, &job, &first)) /* another call held the handle while the options were read */
+        return fail_all(NULL, CDIST_ERR_HANDLE_BUSY, n, results, distances, statuses, "");
     cdist__begin(q, NULL);
     if (first.fail == SIZE_MAX) return CDIST_OK;
     return cdist__fail(q, first.status, "batch entry %zu: %.200s", first.fail, first.message);
+}
+
+static cdist_status run(cdist_query *q, cdist_kind kind, size_t n, const void *a, ptrdiff_t a_stride, const void *b,
+                        ptrdiff_t b_stride, cdist_result *results, double *distances, cdist_status *statuses)
+{
+    if (!q) return n ? fail_all(q, CDIST_ERR_NULL_ARGUMENT, n, results, distances, statuses, "") : CDIST_ERR_NULL_ARGUMENT;
+    /* One batch at a time per handle (it owns the worker pool and the worker handles); a second
+     * one fails every entry without touching the handle. */
+    if (atomic_exchange_explicit(&q->batch_busy, 1, memory_order_acquire))
+        return fail_all(NULL, CDIST_ERR_HANDLE_BUSY, n, results, distances, statuses, "");
+    cdist_status st = CDIST_OK;
+    if (n == 0)
+        cdist__begin(q, NULL);
+    else
+        st = run_locked(q, kind, n, a, a_stride, b, b_stride, results, distances, statuses);
+    atomic_store_explicit(&q->batch_busy, 0, memory_order_release);
+    return st;
 }
 
 cdist_status cdist_batch(cdist_query *q, cdist_kind kind, size_t n, const void *a, ptrdiff_t a_stride, const void *b,
