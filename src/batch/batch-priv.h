@@ -18,7 +18,7 @@ typedef struct cdist__job {
     cdist_result *results; /* full batch, else NULL */
     double *distances;     /* distance-only batch, else NULL */
     cdist_status *statuses; /* may be NULL */
-    size_t chunk;           /* entries taken at a time by a thread (a multiple of 8) */
+    size_t chunk;           /* entries taken at a time by a thread (a multiple of 64, the kernels' block; n on one thread) */
 } cdist__job;
 
 static inline const void *cdist__job_a(const cdist__job *j, size_t i) { return j->a + (ptrdiff_t)i * j->a_stride; }

@@ -145,9 +145,14 @@ static cdist_status set_threads_locked(cdist_query *q, int threads)
     for (int i = 0; i < threads - 1; i++) {
         p->w[i].pool = p;
         p->w[i].handle = cdist_query_new();
-        if (!p->w[i].handle || sync_one(q, p->w[i].handle)) {
+        if (!p->w[i].handle) {
             cdist__workers_free(p);
             return cdist__fail(q, CDIST_ERR_NO_MEMORY, "out of memory for the handles of %d threads", threads);
+        }
+        cdist_status st = sync_one(q, p->w[i].handle); /* its own status and message (e.g. a bad option) */
+        if (st) {
+            cdist__workers_free(p);
+            return st;
         }
     }
     for (int i = 0; i < threads - 1; i++) {
