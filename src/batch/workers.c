@@ -191,17 +191,16 @@ static void take_lower(cdist__slot *first, const cdist__slot *s)
 
 cdist_status cdist__workers_run(cdist_query *q, const cdist__job *job_in, cdist__slot *first)
 {
-    struct cdist__workers *p = q->workers;
     cdist__job job = *job_in;
     first->fail = SIZE_MAX;
+    /* The pool and q's options are read under q's flag: a setter or cdist_query_set_threads that
+     * passed its batch check before this batch began has finished by then, later ones refuse. */
+    if (cdist__enter_setter(q)) return CDIST_ERR_HANDLE_BUSY;
+    struct cdist__workers *p = q->workers;
     int threads = p ? p->threads : 1;
     if (threads > 1 && job.n < (size_t)threads * CD_MIN_ENTRIES_PER_THREAD) threads = 1;
-    if (threads > 1) {
-        /* q's options are read under its flag (setters write them under it). */
-        if (cdist__enter_setter(q)) return CDIST_ERR_HANDLE_BUSY;
-        if (cdist__workers_sync(q)) threads = 1;
-        cdist__leave_setter(q);
-    }
+    if (threads > 1 && cdist__workers_sync(q)) threads = 1;
+    cdist__leave_setter(q);
     if (threads == 1) {
         job.chunk = job.n;
         cdist__batch_range(q, &job, 0, job.n, first);

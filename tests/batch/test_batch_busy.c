@@ -6,6 +6,7 @@
  * with statuses other than BUSY). */
 #include <math.h>
 #include <pthread.h>
+#include <stdatomic.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -64,7 +65,7 @@ static void *call_batches(void *arg)
     return NULL;
 }
 
-static volatile int stop;
+static atomic_int stop;
 static int threads_now;
 static void *call_setters(void *arg)
 {
