@@ -31,6 +31,11 @@ struct cdist_query {
     /* Set while a call uses the handle (cdist__enter .. cdist__leave): a second thread entering at the
      * same time gets CDIST_ERR_HANDLE_BUSY instead of corrupting the state above. */
     atomic_int busy;
+    /* Set while a batch runs (src/batch/batch.c): the batch answers its entries with the public
+     * queries on this handle, which take `busy` one by one, so the batch as a whole (the shared
+     * worker pool and the worker handles) needs its own flag. Option setters and
+     * cdist_query_set_threads refuse while it is set. */
+    atomic_int batch_busy;
     struct cdist__workers *workers; /* batch worker threads and their handles (src/batch); NULL = 1 thread */
 };
 

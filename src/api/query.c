@@ -84,6 +84,19 @@ void cdist_query_free(cdist_query *q)
     free(q);
 }
 
+/* An option setter takes the handle's flag and also refuses while a batch runs: a batch copies the
+ * options to its worker handles once at its start and its entries must all see the same options. */
+static cdist_status enter_option_setter(cdist_query *q)
+{
+    cdist_status st = cdist__enter_setter(q);
+    if (st) return st;
+    if (atomic_load_explicit(&q->batch_busy, memory_order_acquire)) {
+        cdist__leave_setter(q);
+        return CDIST_ERR_HANDLE_BUSY;
+    }
+    return CDIST_OK;
+}
+
 static cdist_status setter_ok(cdist_query *q)
 {
     cdist_status st = cdist__workers_sync(q);
@@ -104,7 +117,7 @@ static cdist_status query_set_method_locked(cdist_query *q, cdist_method method)
 
 cdist_status cdist_query_set_method(cdist_query *q, cdist_method method)
 {
-    cdist_status st = cdist__enter_setter(q);
+    cdist_status st = enter_option_setter(q);
     if (st) return st;
     st = query_set_method_locked(q, method);
     cdist__leave_setter(q);
@@ -123,7 +136,7 @@ static cdist_status query_set_unit_tolerance_locked(cdist_query *q, double tol)
 
 cdist_status cdist_query_set_unit_tolerance(cdist_query *q, double tol)
 {
-    cdist_status st = cdist__enter_setter(q);
+    cdist_status st = enter_option_setter(q);
     if (st) return st;
     st = query_set_unit_tolerance_locked(q, tol);
     cdist__leave_setter(q);
@@ -151,7 +164,7 @@ static cdist_status query_set_curve_samples_locked(cdist_query *q, int samples)
 
 cdist_status cdist_query_set_curve_samples(cdist_query *q, int samples)
 {
-    cdist_status st = cdist__enter_setter(q);
+    cdist_status st = enter_option_setter(q);
     if (st) return st;
     st = query_set_curve_samples_locked(q, samples);
     cdist__leave_setter(q);
@@ -171,7 +184,7 @@ static cdist_status query_set_max_iterations_locked(cdist_query *q, int max_iter
 
 cdist_status cdist_query_set_max_iterations(cdist_query *q, int max_iterations)
 {
-    cdist_status st = cdist__enter_setter(q);
+    cdist_status st = enter_option_setter(q);
     if (st) return st;
     st = query_set_max_iterations_locked(q, max_iterations);
     cdist__leave_setter(q);

@@ -18,7 +18,7 @@ typedef struct cdist__job {
     cdist_result *results; /* full batch, else NULL */
     double *distances;     /* distance-only batch, else NULL */
     cdist_status *statuses; /* may be NULL */
-    size_t chunk;           /* entries taken at a time by a thread (a multiple of 8) */
+    size_t chunk;           /* entries taken at a time by a thread (a multiple of 64, the kernels' block; n on one thread) */
 } cdist__job;
 
 static inline const void *cdist__job_a(const cdist__job *j, size_t i) { return j->a + (ptrdiff_t)i * j->a_stride; }
@@ -37,8 +37,10 @@ typedef struct cdist__slot {
 void cdist__batch_range(cdist_query *h, const cdist__job *job, size_t lo, size_t hi, cdist__slot *slot);
 
 /* Run the whole job with q's worker threads (or on the calling thread alone); *first gets the
- * lowest failing entry of all threads. */
-void cdist__workers_run(cdist_query *q, const cdist__job *job, cdist__slot *first);
+ * lowest failing entry of all threads. The caller holds q's batch flag. Returns
+ * CDIST_ERR_HANDLE_BUSY (and runs nothing) when another call held q while its options were to be
+ * copied to the workers. */
+cdist_status cdist__workers_run(cdist_query *q, const cdist__job *job, cdist__slot *first);
 
 /* Distance kernels of point-circle (disk = 0) and point-disk (disk = 1) for entries
  * [lo, lo + count), count <= 64: writes distances[i] of every entry whose inputs pass the fast

@@ -2,6 +2,7 @@
 /* The batch entry points: one generic entry per result type over a table of query kinds. A new
  * kind adds one enum value and one row here. */
 #include <math.h>
+#include <stdatomic.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <string.h>
@@ -48,50 +49,69 @@ static cdist_status k_curve_disk(cdist_query *q, const void *a, const void *b, c
     return cdist_curve_disk(q, c->fn, c->user, c->t0, c->t1, b, r);
 }
 
-/* A family's distance-only query (no pairs, params or flags; the same status and message as the
- * full query, *d NaN on failure), for kinds whose family offers one; NULL: the full query. */
-typedef cdist_status (*dist_fn)(cdist_query *q, const void *a, const void *b, double *d);
-
 /* The distance kernel of a kind, if any (zero, the default of a row: none). */
 enum { NO_KERNEL = 0, POINT_CIRCLE_KERNEL, POINT_DISK_KERNEL };
 
+/* A kind's name is its family's (cdist__family_table): the kind and family numbers agree. */
 static const struct {
-    const char *name;
     size_t size_a, size_b;
     kind_fn full;
     int kernel;
-    dist_fn dist;
 } kinds[] = {
-    [CDIST_KIND_POINT_CIRCLE] = {"point_circle", sizeof(cdist_vec3), sizeof(cdist_circle), k_point_circle,
+    [CDIST_KIND_POINT_CIRCLE] = {sizeof(cdist_vec3), sizeof(cdist_circle), k_point_circle,
                                  .kernel = POINT_CIRCLE_KERNEL},
-    [CDIST_KIND_POINT_DISK] = {"point_disk", sizeof(cdist_vec3), sizeof(cdist_circle), k_point_disk,
+    [CDIST_KIND_POINT_DISK] = {sizeof(cdist_vec3), sizeof(cdist_circle), k_point_disk,
                                .kernel = POINT_DISK_KERNEL},
-    [CDIST_KIND_LINE_CIRCLE] = {"line_circle", sizeof(cdist_line), sizeof(cdist_circle), k_line_circle},
-    [CDIST_KIND_RAY_CIRCLE] = {"ray_circle", sizeof(cdist_ray), sizeof(cdist_circle), k_ray_circle},
-    [CDIST_KIND_SEGMENT_CIRCLE] = {"segment_circle", sizeof(cdist_segment), sizeof(cdist_circle), k_segment_circle},
-    [CDIST_KIND_CIRCLE_CIRCLE] = {"circle_circle", sizeof(cdist_circle), sizeof(cdist_circle), k_circle_circle},
-    [CDIST_KIND_LINE_DISK] = {"line_disk", sizeof(cdist_line), sizeof(cdist_circle), k_line_disk},
-    [CDIST_KIND_RAY_DISK] = {"ray_disk", sizeof(cdist_ray), sizeof(cdist_circle), k_ray_disk},
-    [CDIST_KIND_SEGMENT_DISK] = {"segment_disk", sizeof(cdist_segment), sizeof(cdist_circle), k_segment_disk},
-    [CDIST_KIND_CIRCLE_DISK] = {"circle_disk", sizeof(cdist_circle), sizeof(cdist_circle), k_circle_disk},
-    [CDIST_KIND_DISK_DISK] = {"disk_disk", sizeof(cdist_circle), sizeof(cdist_circle), k_disk_disk},
-    [CDIST_KIND_CURVE_CIRCLE] = {"curve_circle", sizeof(cdist_curve), sizeof(cdist_circle), k_curve_circle},
-    [CDIST_KIND_CURVE_DISK] = {"curve_disk", sizeof(cdist_curve), sizeof(cdist_circle), k_curve_disk},
-    [CDIST_KIND_ARC_CIRCLE] = {"arc_circle", sizeof(cdist_arc), sizeof(cdist_circle), k_arc_circle},
-    [CDIST_KIND_ARC_ARC] = {"arc_arc", sizeof(cdist_arc), sizeof(cdist_arc), k_arc_arc},
-    [CDIST_KIND_SEGMENT_ARC] = {"segment_arc", sizeof(cdist_segment), sizeof(cdist_arc), k_segment_arc},
-    [CDIST_KIND_ARC_DISK] = {"arc_disk", sizeof(cdist_arc), sizeof(cdist_circle), k_arc_disk},
-    [CDIST_KIND_HELIX_CIRCLE] = {"helix_circle", sizeof(cdist_helix), sizeof(cdist_circle), k_helix_circle},
-    [CDIST_KIND_HELIX_DISK] = {"helix_disk", sizeof(cdist_helix), sizeof(cdist_circle), k_helix_disk},
-    [CDIST_KIND_BEZIER3_CIRCLE] = {"bezier3_circle", sizeof(cdist_bezier3), sizeof(cdist_circle), k_bezier3_circle},
-    [CDIST_KIND_BEZIER3_DISK] = {"bezier3_disk", sizeof(cdist_bezier3), sizeof(cdist_circle), k_bezier3_disk},
+    [CDIST_KIND_LINE_CIRCLE] = {sizeof(cdist_line), sizeof(cdist_circle), k_line_circle},
+    [CDIST_KIND_RAY_CIRCLE] = {sizeof(cdist_ray), sizeof(cdist_circle), k_ray_circle},
+    [CDIST_KIND_SEGMENT_CIRCLE] = {sizeof(cdist_segment), sizeof(cdist_circle), k_segment_circle},
+    [CDIST_KIND_CIRCLE_CIRCLE] = {sizeof(cdist_circle), sizeof(cdist_circle), k_circle_circle},
+    [CDIST_KIND_LINE_DISK] = {sizeof(cdist_line), sizeof(cdist_circle), k_line_disk},
+    [CDIST_KIND_RAY_DISK] = {sizeof(cdist_ray), sizeof(cdist_circle), k_ray_disk},
+    [CDIST_KIND_SEGMENT_DISK] = {sizeof(cdist_segment), sizeof(cdist_circle), k_segment_disk},
+    [CDIST_KIND_CIRCLE_DISK] = {sizeof(cdist_circle), sizeof(cdist_circle), k_circle_disk},
+    [CDIST_KIND_DISK_DISK] = {sizeof(cdist_circle), sizeof(cdist_circle), k_disk_disk},
+    [CDIST_KIND_CURVE_CIRCLE] = {sizeof(cdist_curve), sizeof(cdist_circle), k_curve_circle},
+    [CDIST_KIND_CURVE_DISK] = {sizeof(cdist_curve), sizeof(cdist_circle), k_curve_disk},
+    [CDIST_KIND_ARC_CIRCLE] = {sizeof(cdist_arc), sizeof(cdist_circle), k_arc_circle},
+    [CDIST_KIND_ARC_ARC] = {sizeof(cdist_arc), sizeof(cdist_arc), k_arc_arc},
+    [CDIST_KIND_SEGMENT_ARC] = {sizeof(cdist_segment), sizeof(cdist_arc), k_segment_arc},
+    [CDIST_KIND_ARC_DISK] = {sizeof(cdist_arc), sizeof(cdist_circle), k_arc_disk},
+    [CDIST_KIND_HELIX_CIRCLE] = {sizeof(cdist_helix), sizeof(cdist_circle), k_helix_circle},
+    [CDIST_KIND_HELIX_DISK] = {sizeof(cdist_helix), sizeof(cdist_circle), k_helix_disk},
+    [CDIST_KIND_BEZIER3_CIRCLE] = {sizeof(cdist_bezier3), sizeof(cdist_circle), k_bezier3_circle},
+    [CDIST_KIND_BEZIER3_DISK] = {sizeof(cdist_bezier3), sizeof(cdist_circle), k_bezier3_disk},
 };
 #define KIND_COUNT ((int)(sizeof kinds / sizeof kinds[0]))
+#define SAME_NUMBER(K) _Static_assert((int)CDIST_KIND_##K == (int)CD_FAM_##K, "cdist_kind and family of " #K)
+SAME_NUMBER(POINT_CIRCLE);
+SAME_NUMBER(POINT_DISK);
+SAME_NUMBER(LINE_CIRCLE);
+SAME_NUMBER(RAY_CIRCLE);
+SAME_NUMBER(SEGMENT_CIRCLE);
+SAME_NUMBER(CIRCLE_CIRCLE);
+SAME_NUMBER(LINE_DISK);
+SAME_NUMBER(RAY_DISK);
+SAME_NUMBER(SEGMENT_DISK);
+SAME_NUMBER(CIRCLE_DISK);
+SAME_NUMBER(DISK_DISK);
+SAME_NUMBER(CURVE_CIRCLE);
+SAME_NUMBER(CURVE_DISK);
+SAME_NUMBER(ARC_CIRCLE);
+SAME_NUMBER(ARC_ARC);
+SAME_NUMBER(SEGMENT_ARC);
+SAME_NUMBER(ARC_DISK);
+SAME_NUMBER(HELIX_CIRCLE);
+SAME_NUMBER(HELIX_DISK);
+SAME_NUMBER(BEZIER3_CIRCLE);
+SAME_NUMBER(BEZIER3_DISK);
+#undef SAME_NUMBER
+_Static_assert(KIND_COUNT == CD_FAM_COUNT, "one family per cdist_kind");
 
 static int kind_ok(cdist_kind k) { return (unsigned)k < (unsigned)KIND_COUNT && kinds[k].full; }
 
 int cdist_kind_count(void) { return KIND_COUNT; }
-const char *cdist_kind_name(cdist_kind k) { return kind_ok(k) ? kinds[k].name : NULL; }
+const char *cdist_kind_name(cdist_kind k) { return kind_ok(k) ? cdist__family_table[k].name : NULL; }
 size_t cdist_kind_size_a(cdist_kind k) { return kind_ok(k) ? kinds[k].size_a : 0; }
 size_t cdist_kind_size_b(cdist_kind k) { return kind_ok(k) ? kinds[k].size_b : 0; }
 
@@ -109,12 +129,9 @@ static void record(cdist__slot *slot, cdist_query *h, size_t i, cdist_status st)
 static void entry(cdist_query *h, const cdist__job *job, size_t i, cdist__slot *slot)
 {
     kind_fn f = kinds[job->kind].full;
-    dist_fn df = kinds[job->kind].dist;
     cdist_status st;
     if (job->results) {
         st = f(h, cdist__job_a(job, i), cdist__job_b(job, i), &job->results[i]);
-    } else if (df) {
-        st = df(h, cdist__job_a(job, i), cdist__job_b(job, i), &job->distances[i]);
     } else {
         cdist_result r;
         st = f(h, cdist__job_a(job, i), cdist__job_b(job, i), &r);
@@ -167,14 +184,10 @@ static cdist_status fail_all(cdist_query *q, cdist_status st, size_t n, cdist_re
     return cdist__fail(q, st, "batch: %s", why);
 }
 
-static cdist_status run(cdist_query *q, cdist_kind kind, size_t n, const void *a, ptrdiff_t a_stride, const void *b,
-                        ptrdiff_t b_stride, cdist_result *results, double *distances, cdist_status *statuses)
+static cdist_status run_locked(cdist_query *q, cdist_kind kind, size_t n, const void *a, ptrdiff_t a_stride,
+                               const void *b, ptrdiff_t b_stride, cdist_result *results, double *distances,
+                               cdist_status *statuses)
 {
-    if (n == 0) {
-        if (q) cdist__begin(q, NULL);
-        return q ? CDIST_OK : CDIST_ERR_NULL_ARGUMENT;
-    }
-    if (!q) return fail_all(q, CDIST_ERR_NULL_ARGUMENT, n, results, distances, statuses, "");
     if (!kind_ok(kind)) {
         fail_all(q, CDIST_ERR_BAD_KIND, n, results, distances, statuses, "");
         return cdist__fail(q, CDIST_ERR_BAD_KIND, "batch: %d is not a cdist_kind (0..%d)", (int)kind, KIND_COUNT - 1);
@@ -184,10 +197,28 @@ static cdist_status run(cdist_query *q, cdist_kind kind, size_t n, const void *a
                         !a ? "first object array is NULL" : !b ? "second object array is NULL" : "output array is NULL");
     cdist__job job = {kind, n, a, b, a_stride, b_stride, results, distances, statuses, 0};
     cdist__slot first;
-    cdist__workers_run(q, &job, &first);
+    if (cdist__workers_run(q, &job, &first)) /* another call held the handle while the options were read */
+        return fail_all(NULL, CDIST_ERR_HANDLE_BUSY, n, results, distances, statuses, "");
     cdist__begin(q, NULL);
     if (first.fail == SIZE_MAX) return CDIST_OK;
     return cdist__fail(q, first.status, "batch entry %zu: %.200s", first.fail, first.message);
+}
+
+static cdist_status run(cdist_query *q, cdist_kind kind, size_t n, const void *a, ptrdiff_t a_stride, const void *b,
+                        ptrdiff_t b_stride, cdist_result *results, double *distances, cdist_status *statuses)
+{
+    if (!q) return n ? fail_all(q, CDIST_ERR_NULL_ARGUMENT, n, results, distances, statuses, "") : CDIST_ERR_NULL_ARGUMENT;
+    /* One batch at a time per handle (it owns the worker pool and the worker handles); a second
+     * one fails every entry without touching the handle. */
+    if (atomic_exchange_explicit(&q->batch_busy, 1, memory_order_acquire))
+        return fail_all(NULL, CDIST_ERR_HANDLE_BUSY, n, results, distances, statuses, "");
+    cdist_status st = CDIST_OK;
+    if (n == 0)
+        cdist__begin(q, NULL);
+    else
+        st = run_locked(q, kind, n, a, a_stride, b, b_stride, results, distances, statuses);
+    atomic_store_explicit(&q->batch_busy, 0, memory_order_release);
+    return st;
 }
 
 cdist_status cdist_batch(cdist_query *q, cdist_kind kind, size_t n, const void *a, ptrdiff_t a_stride, const void *b,

@@ -20,6 +20,10 @@
 _Static_assert(offsetof(cdist_vec3, y) == 8 && offsetof(cdist_vec3, z) == 16, "cdist_vec3 layout");
 _Static_assert(offsetof(cdist_circle, normal) == 24 && offsetof(cdist_circle, radius) == 48, "cdist_circle layout");
 
+/* The smallest largest normal component the fast path takes (circle_fast in src/api/validate.c):
+ * below it 1 / m overflows, and the single query rescales by a power of two instead. */
+#define CD_KERNEL_MIN_NORMAL 0x1p-500
+
 /* Finite and within 1e150 (NaN fails every comparison). */
 static inline int in_range(vec3 a)
 {
@@ -33,7 +37,7 @@ static int point_one(const cdist_vec3 *P, const cdist_circle *C, int disk, doubl
     double r = C->radius;
     if (!in_range(p) || !in_range(c) || !in_range(nd) || !(r >= 0.0 && r <= CD_MAX_ABS)) return 1;
     double m = v_maxabs(nd);
-    if (!(m > 0.0)) return 1;
+    if (!(m >= CD_KERNEL_MIN_NORMAL)) return 1;
     vec3 sd = v_scale(1.0 / m, nd);
     double ns = v_norm(sd);
     if (!(fabs(m * ns - 1.0) <= tol)) return 1;
@@ -133,7 +137,8 @@ AVX512 static uint64_t kernel_avx512(const cdist__job *job, int disk, double tol
         __m512d m = max3_8(dx, dy, dz);
         __mmask8 ok = in8(px, py, pz, lim) & in8(cx, cy, cz, lim) & in8(dx, dy, dz, lim) &
                       _mm512_cmp_pd_mask(r, zero, _CMP_GE_OQ) &
-                      _mm512_cmp_pd_mask(r, lim, _CMP_LE_OQ) & _mm512_cmp_pd_mask(m, zero, _CMP_GT_OQ);
+                      _mm512_cmp_pd_mask(r, lim, _CMP_LE_OQ) &
+                      _mm512_cmp_pd_mask(m, _mm512_set1_pd(CD_KERNEL_MIN_NORMAL), _CMP_GE_OQ);
         __m512d im = _mm512_div_pd(one, m);
         __m512d sx = _mm512_mul_pd(im, dx), sy = _mm512_mul_pd(im, dy), sz = _mm512_mul_pd(im, dz);
         __m512d ns = _mm512_sqrt_pd(dot8(sx, sy, sz, sx, sy, sz));
@@ -200,7 +205,7 @@ AVX2 static uint64_t kernel_avx2(const cdist__job *job, int disk, double tol, si
         __m256d r = _mm256_i64gather_pd((const double *)(pb + 48), ib, 1);
         __m256d m = max3_4(dx, dy, dz);
         int ok = in4(px, py, pz, lim) & in4(cx, cy, cz, lim) & in4(dx, dy, dz, lim) & le4(zero, r) &
-                 le4(r, lim) & _mm256_movemask_pd(_mm256_cmp_pd(m, zero, _CMP_GT_OQ));
+                 le4(r, lim) & le4(_mm256_set1_pd(CD_KERNEL_MIN_NORMAL), m);
         __m256d im = _mm256_div_pd(one, m);
         __m256d sx = _mm256_mul_pd(im, dx), sy = _mm256_mul_pd(im, dy), sz = _mm256_mul_pd(im, dz);
         __m256d ns = _mm256_sqrt_pd(dot4(sx, sy, sz, sx, sy, sz));

@@ -125,9 +125,8 @@ cdist_status cdist__workers_sync(cdist_query *q)
     return CDIST_OK;
 }
 
-cdist_status cdist_query_set_threads(cdist_query *q, int threads)
+static cdist_status set_threads_locked(cdist_query *q, int threads)
 {
-    if (!q) return CDIST_ERR_NULL_ARGUMENT;
     if (threads < 1 || threads > CD_MAX_THREADS)
         return cdist__fail(q, CDIST_ERR_BAD_OPTION, "threads must be in [1, %d] (got %d)", CD_MAX_THREADS, threads);
     cdist__begin(q, NULL);
@@ -146,9 +145,14 @@ cdist_status cdist_query_set_threads(cdist_query *q, int threads)
     for (int i = 0; i < threads - 1; i++) {
         p->w[i].pool = p;
         p->w[i].handle = cdist_query_new();
-        if (!p->w[i].handle || sync_one(q, p->w[i].handle)) {
+        if (!p->w[i].handle) {
             cdist__workers_free(p);
             return cdist__fail(q, CDIST_ERR_NO_MEMORY, "out of memory for the handles of %d threads", threads);
+        }
+        cdist_status st = sync_one(q, p->w[i].handle); /* its own status and message (e.g. a bad option) */
+        if (st) {
+            cdist__workers_free(p);
+            return st;
         }
     }
     for (int i = 0; i < threads - 1; i++) {
@@ -164,6 +168,20 @@ cdist_status cdist_query_set_threads(cdist_query *q, int threads)
     return CDIST_OK;
 }
 
+/* Under the handle's flag, and refused while a batch runs: the pool it would free is in use. */
+cdist_status cdist_query_set_threads(cdist_query *q, int threads)
+{
+    cdist_status st = cdist__enter_setter(q);
+    if (st) return st;
+    if (atomic_load_explicit(&q->batch_busy, memory_order_acquire)) {
+        cdist__leave_setter(q);
+        return CDIST_ERR_HANDLE_BUSY;
+    }
+    st = set_threads_locked(q, threads);
+    cdist__leave_setter(q);
+    return st;
+}
+
 int cdist_query_get_threads(const cdist_query *q) { return (q && q->workers) ? q->workers->threads : 1; }
 
 static void take_lower(cdist__slot *first, const cdist__slot *s)
@@ -171,17 +189,22 @@ static void take_lower(cdist__slot *first, const cdist__slot *s)
     if (s->fail < first->fail) *first = *s;
 }
 
-void cdist__workers_run(cdist_query *q, const cdist__job *job_in, cdist__slot *first)
+cdist_status cdist__workers_run(cdist_query *q, const cdist__job *job_in, cdist__slot *first)
 {
-    struct cdist__workers *p = q->workers;
     cdist__job job = *job_in;
     first->fail = SIZE_MAX;
+    /* The pool and q's options are read under q's flag: a setter or cdist_query_set_threads that
+     * passed its batch check before this batch began has finished by then, later ones refuse. */
+    if (cdist__enter_setter(q)) return CDIST_ERR_HANDLE_BUSY;
+    struct cdist__workers *p = q->workers;
     int threads = p ? p->threads : 1;
     if (threads > 1 && job.n < (size_t)threads * CD_MIN_ENTRIES_PER_THREAD) threads = 1;
-    if (threads == 1 || cdist__workers_sync(q)) {
+    if (threads > 1 && cdist__workers_sync(q)) threads = 1;
+    cdist__leave_setter(q);
+    if (threads == 1) {
         job.chunk = job.n;
         cdist__batch_range(q, &job, 0, job.n, first);
-        return;
+        return CDIST_OK;
     }
     /* Chunks: about 16 per thread (load balance), a multiple of the kernels' 64 entries. */
     size_t chunk = job.n / ((size_t)threads * 16);
@@ -200,4 +223,5 @@ void cdist__workers_run(cdist_query *q, const cdist__job *job_in, cdist__slot *f
     while (p->pending > 0) pthread_cond_wait(&p->done, &p->mutex);
     pthread_mutex_unlock(&p->mutex);
     for (int i = 0; i < p->threads - 1; i++) take_lower(first, &p->w[i].slot);
+    return CDIST_OK;
 }

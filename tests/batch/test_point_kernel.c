@@ -91,6 +91,69 @@ static void check_kernel(const char *name, kfn k, cdist_query *q, double tol)
     }
 }
 
+/* Normals whose largest component is below 0x1p-500 (down to subnormal), with any length
+ * accepted (tolerance INFINITY): the single query rescales them by a power of two and answers;
+ * a kernel must leave them to the scalar path (1 / m overflows there and gave NaN with CDIST_OK).
+ * Reference: the single query, entry by entry, and the brute fact that a distance is a number. */
+enum { NT = 64 };
+static void check_tiny_normals(const char *name, kfn k, cdist_query *q)
+{
+    static const double comp[] = {1e-310, 0x1p-501, 0x1.fffffffffffffp-501, 0x1p-500, 1e-200, 0.25};
+    cdist_vec3 tp[NT];
+    cdist_circle tc[NT];
+    double td[NT];
+    for (int i = 0; i < NT; i++) {
+        double c = comp[i % 6];
+        tc[i] = (cdist_circle){{0.5 * i, -1.0, 2.0}, {c, (i & 8) ? 0.0 : c, c}, 1.0 + i};
+        tp[i] = (cdist_vec3){3.0, 0.25 * i, -1.5};
+    }
+    cdist_query_set_unit_tolerance(q, INFINITY);
+    for (int disk = 0; disk < 2; disk++) {
+        cdist__job job = {disk ? CDIST_KIND_POINT_DISK : CDIST_KIND_POINT_CIRCLE, NT, (const char *)tp, (const char *)tc,
+                          sizeof tp[0], sizeof tc[0], NULL, td, NULL, 64};
+        for (int i = 0; i < NT; i++) td[i] = -1.0;
+        uint64_t left = k(&job, disk, INFINITY, 0, NT);
+        for (int i = 0; i < NT; i++) {
+            int tiny = comp[i % 6] < 0x1p-500;
+            CHECK((int)(left >> i & 1) == tiny, "%s disk=%d normal component %g: kernel %s", name, disk, comp[i % 6],
+                  (left >> i & 1) ? "left it" : "answered it");
+            if (left >> i & 1) continue;
+            cdist_result r;
+            cdist_status st = disk ? cdist_point_disk(q, &tp[i], &tc[i], &r) : cdist_point_circle(q, &tp[i], &tc[i], &r);
+            CHECK(st == CDIST_OK && !memcmp(&td[i], &r.distance, sizeof(double)),
+                  "%s disk=%d entry %d: %.17g vs single %.17g", name, disk, i, td[i], r.distance);
+        }
+    }
+}
+
+/* The same normals through the public batch: status and distance of every entry as the single
+ * query's (before the fix: NaN with CDIST_OK). */
+static void check_tiny_normals_batch(cdist_query *q)
+{
+    cdist_vec3 p = {1.0, 2.0, 3.0};
+    cdist_circle c = {{0.0, 0.0, 0.0}, {1e-310, 1e-310, 1e-310}, 2.0};
+    cdist_vec3 tp[NT];
+    cdist_circle tc[NT];
+    double td[NT];
+    cdist_status ts[NT];
+    for (int i = 0; i < NT; i++) tp[i] = p, tc[i] = c, tc[i].radius = 0.5 * i;
+    cdist_query_set_unit_tolerance(q, INFINITY);
+    for (int disk = 0; disk < 2; disk++) {
+        cdist_status st = cdist_batch_distance(q, disk ? CDIST_KIND_POINT_DISK : CDIST_KIND_POINT_CIRCLE, NT, tp,
+                                               sizeof tp[0], tc, sizeof tc[0], td, ts);
+        CHECK(st == CDIST_OK, "batch of tiny normals: %s", cdist_status_name(st));
+        int bad = 0;
+        for (int i = 0; i < NT; i++) {
+            cdist_result r;
+            cdist_status s1 = disk ? cdist_point_disk(q, &tp[i], &tc[i], &r) : cdist_point_circle(q, &tp[i], &tc[i], &r);
+            if ((ts[i] != s1 || !(td[i] == r.distance) || isnan(td[i])) && bad++ < 3)
+                CHECK(0, "batch disk=%d entry %d: %.17g (%s) vs single %.17g (%s)", disk, i, td[i],
+                      cdist_status_name(ts[i]), r.distance, cdist_status_name(s1));
+        }
+        CHECK(bad == 0, "batch disk=%d: %d tiny-normal entries differ from the single query", disk, bad);
+    }
+}
+
 int main(void)
 {
     make();
@@ -107,6 +170,12 @@ int main(void)
         else printf("no AVX-512 here: skipped\n");
 #endif
     }
+    check_tiny_normals("scalar", kernel_scalar, q);
+#ifdef CD_X86_KERNELS
+    if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma")) check_tiny_normals("avx2", kernel_avx2, q);
+    if (__builtin_cpu_supports("avx512f")) check_tiny_normals("avx512", kernel_avx512, q);
+#endif
+    check_tiny_normals_batch(q);
     cdist_query_free(q);
     return check_summary("point-kernel");
 }
