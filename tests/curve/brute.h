@@ -179,4 +179,35 @@ static inline ld bf_axis_dips(bf_fn f, bf_fn rho, const void *ctx, ld t0, ld t1,
     return best;
 }
 
+/* A helix against a circle or disk, in long double: its point at t and the point-circle/disk
+ * distance there (the function bf_min1d minimises). */
+typedef struct bf_helix {
+    lv c, n, u, v;
+    ld r, rise;
+    bf_circle k;
+    int disk;
+} bf_helix;
+
+static inline bf_helix bf_helix_of(const cdist_helix *h, const cdist_circle *c, int disk)
+{
+    bf_helix x;
+    x.c = lv_of(h->center);
+    x.n = lv_unit(lv_of(h->axis));
+    lv z = lv_of(h->zero_direction);
+    x.u = lv_unit(lv_sub(z, lv_scale(lv_dot(z, x.n), x.n)));
+    x.v = lv_cross(x.n, x.u);
+    x.r = h->radius;
+    x.rise = (ld)h->pitch / (2 * 3.14159265358979323846264338327950288L);
+    x.k = bf_circ(*c);
+    x.disk = disk;
+    return x;
+}
+
+static inline ld bf_f_helix(const void *p, ld t)
+{
+    const bf_helix *h = p;
+    lv pt = lv_add(h->c, lv_add(lv_scale(h->r * cosl(t), h->u), lv_add(lv_scale(h->r * sinl(t), h->v), lv_scale(h->rise * t, h->n))));
+    return h->disk ? bf_point_disk(pt, &h->k) : bf_point_circle(pt, &h->k);
+}
+
 #endif

@@ -9,34 +9,12 @@
 static cdist_query *q;
 static double worst;
 
-typedef struct bf_helix {
-    lv c, n, u, v;
-    ld r, rise;
-    bf_circle k;
-    int disk;
-} bf_helix;
-
-static ld f_helix(const void *p, ld t)
-{
-    const bf_helix *h = p;
-    lv pt = lv_add(h->c, lv_add(lv_scale(h->r * cosl(t), h->u), lv_add(lv_scale(h->r * sinl(t), h->v), lv_scale(h->rise * t, h->n))));
-    return h->disk ? bf_point_disk(pt, &h->k) : bf_point_circle(pt, &h->k);
-}
 
 static void against_brute(int id, const cdist_helix *h, const cdist_circle *c, int disk)
 {
-    bf_helix x;
-    x.c = lv_of(h->center);
-    x.n = lv_unit(lv_of(h->axis));
-    lv z = lv_of(h->zero_direction);
-    x.u = lv_unit(lv_sub(z, lv_scale(lv_dot(z, x.n), x.n)));
-    x.v = lv_cross(x.n, x.u);
-    x.r = h->radius;
-    x.rise = (ld)h->pitch / (2 * 3.14159265358979323846264338327950288L);
-    x.k = bf_circ(*c);
-    x.disk = disk;
+    bf_helix x = bf_helix_of(h, c, disk);
     int ns = (int)(2048 * (1 + (h->t1 - h->t0) / (2 * M_PI)));
-    ld ref = bf_min1d(f_helix, &x, h->t0, h->t1, ns);
+    ld ref = bf_min1d(bf_f_helix, &x, h->t0, h->t1, ns);
     cdist_result r;
     cdist_status st = (disk ? cdist_helix_disk : cdist_helix_circle)(q, h, c, &r);
     CHECK(st == CDIST_OK, "helix %d: %s", id, cdist_query_last_error(q));
