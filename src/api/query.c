@@ -97,6 +97,17 @@ static cdist_status enter_option_setter(cdist_query *q)
     return CDIST_OK;
 }
 
+/* A public option setter: the *_locked body under the handle's flag (enter_option_setter). */
+#define OPTION_SETTER(name, type, locked)                                                          \
+    cdist_status name(cdist_query *q, type value)                                                  \
+    {                                                                                              \
+        cdist_status st = enter_option_setter(q);                                                  \
+        if (st) return st;                                                                         \
+        st = locked(q, value);                                                                     \
+        cdist__leave_setter(q);                                                                    \
+        return st;                                                                                 \
+    }
+
 static cdist_status setter_ok(cdist_query *q)
 {
     cdist_status st = cdist__workers_sync(q);
@@ -115,14 +126,7 @@ static cdist_status query_set_method_locked(cdist_query *q, cdist_method method)
     return setter_ok(q);
 }
 
-cdist_status cdist_query_set_method(cdist_query *q, cdist_method method)
-{
-    cdist_status st = enter_option_setter(q);
-    if (st) return st;
-    st = query_set_method_locked(q, method);
-    cdist__leave_setter(q);
-    return st;
-}
+OPTION_SETTER(cdist_query_set_method, cdist_method, query_set_method_locked)
 
 cdist_method cdist_query_get_method(const cdist_query *q) { return q ? q->method : CDIST_METHOD_AUTO; }
 
@@ -134,14 +138,7 @@ static cdist_status query_set_unit_tolerance_locked(cdist_query *q, double tol)
     return setter_ok(q);
 }
 
-cdist_status cdist_query_set_unit_tolerance(cdist_query *q, double tol)
-{
-    cdist_status st = enter_option_setter(q);
-    if (st) return st;
-    st = query_set_unit_tolerance_locked(q, tol);
-    cdist__leave_setter(q);
-    return st;
-}
+OPTION_SETTER(cdist_query_set_unit_tolerance, double, query_set_unit_tolerance_locked)
 
 double cdist_query_get_unit_tolerance(const cdist_query *q) { return q ? q->unit_tol : CD_DEFAULT_UNIT_TOL; }
 
@@ -162,14 +159,7 @@ static cdist_status query_set_curve_samples_locked(cdist_query *q, int samples)
     return setter_ok(q);
 }
 
-cdist_status cdist_query_set_curve_samples(cdist_query *q, int samples)
-{
-    cdist_status st = enter_option_setter(q);
-    if (st) return st;
-    st = query_set_curve_samples_locked(q, samples);
-    cdist__leave_setter(q);
-    return st;
-}
+OPTION_SETTER(cdist_query_set_curve_samples, int, query_set_curve_samples_locked)
 
 int cdist_query_get_curve_samples(const cdist_query *q) { return q ? q->curve_samples : CD_DEFAULT_CURVE_SAMPLES; }
 
@@ -182,14 +172,7 @@ static cdist_status query_set_max_iterations_locked(cdist_query *q, int max_iter
     return setter_ok(q);
 }
 
-cdist_status cdist_query_set_max_iterations(cdist_query *q, int max_iterations)
-{
-    cdist_status st = enter_option_setter(q);
-    if (st) return st;
-    st = query_set_max_iterations_locked(q, max_iterations);
-    cdist__leave_setter(q);
-    return st;
-}
+OPTION_SETTER(cdist_query_set_max_iterations, int, query_set_max_iterations_locked)
 
 int cdist_query_get_max_iterations(const cdist_query *q) { return q ? q->max_iterations : CD_DEFAULT_MAX_ITERATIONS; }
 
