@@ -337,26 +337,26 @@ CDIST_API cdist_status cdist_bezier3_disk(cdist_query *q, const cdist_bezier3 *b
  *  ::cdist_circle, ...). cdist_kind_size_a() and cdist_kind_size_b() give their sizes. */
 typedef enum cdist_kind {
     CDIST_KIND_POINT_CIRCLE = 0,    /**< a: cdist_vec3,     b: cdist_circle */
-    CDIST_KIND_POINT_DISK = 1,      /**< a: cdist_vec3,     b: cdist_circle (disk) */
+    CDIST_KIND_POINT_DISK = 1,      /**< a: cdist_vec3,     b: cdist_circle as a disk */
     CDIST_KIND_LINE_CIRCLE = 2,     /**< a: cdist_line,     b: cdist_circle */
     CDIST_KIND_RAY_CIRCLE = 3,      /**< a: cdist_ray,      b: cdist_circle */
     CDIST_KIND_SEGMENT_CIRCLE = 4,  /**< a: cdist_segment,  b: cdist_circle */
     CDIST_KIND_CIRCLE_CIRCLE = 5,   /**< a: cdist_circle,   b: cdist_circle */
-    CDIST_KIND_LINE_DISK = 6,       /**< a: cdist_line,     b: cdist_circle (disk) */
-    CDIST_KIND_RAY_DISK = 7,        /**< a: cdist_ray,      b: cdist_circle (disk) */
-    CDIST_KIND_SEGMENT_DISK = 8,    /**< a: cdist_segment,  b: cdist_circle (disk) */
-    CDIST_KIND_CIRCLE_DISK = 9,     /**< a: cdist_circle,   b: cdist_circle (disk) */
-    CDIST_KIND_DISK_DISK = 10,      /**< a: cdist_circle (disk), b: cdist_circle (disk) */
-    CDIST_KIND_CURVE_CIRCLE = 11,   /**< a: cdist_curve (callback + interval), b: cdist_circle */
-    CDIST_KIND_CURVE_DISK = 12,     /**< a: cdist_curve,    b: cdist_circle (disk) */
+    CDIST_KIND_LINE_DISK = 6,       /**< a: cdist_line,     b: cdist_circle as a disk */
+    CDIST_KIND_RAY_DISK = 7,        /**< a: cdist_ray,      b: cdist_circle as a disk */
+    CDIST_KIND_SEGMENT_DISK = 8,    /**< a: cdist_segment,  b: cdist_circle as a disk */
+    CDIST_KIND_CIRCLE_DISK = 9,     /**< a: cdist_circle,   b: cdist_circle as a disk */
+    CDIST_KIND_DISK_DISK = 10,      /**< a: cdist_circle as a disk, b: cdist_circle as a disk */
+    CDIST_KIND_CURVE_CIRCLE = 11,   /**< a: cdist_curve: callback and interval, b: cdist_circle */
+    CDIST_KIND_CURVE_DISK = 12,     /**< a: cdist_curve,    b: cdist_circle as a disk */
     CDIST_KIND_ARC_CIRCLE = 13,     /**< a: cdist_arc,      b: cdist_circle */
     CDIST_KIND_ARC_ARC = 14,        /**< a: cdist_arc,      b: cdist_arc */
     CDIST_KIND_SEGMENT_ARC = 15,    /**< a: cdist_segment,  b: cdist_arc */
-    CDIST_KIND_ARC_DISK = 16,       /**< a: cdist_arc,      b: cdist_circle (disk) */
+    CDIST_KIND_ARC_DISK = 16,       /**< a: cdist_arc,      b: cdist_circle as a disk */
     CDIST_KIND_HELIX_CIRCLE = 17,   /**< a: cdist_helix,    b: cdist_circle */
-    CDIST_KIND_HELIX_DISK = 18,     /**< a: cdist_helix,    b: cdist_circle (disk) */
+    CDIST_KIND_HELIX_DISK = 18,     /**< a: cdist_helix,    b: cdist_circle as a disk */
     CDIST_KIND_BEZIER3_CIRCLE = 19, /**< a: cdist_bezier3,  b: cdist_circle */
-    CDIST_KIND_BEZIER3_DISK = 20    /**< a: cdist_bezier3,  b: cdist_circle (disk) */
+    CDIST_KIND_BEZIER3_DISK = 20    /**< a: cdist_bezier3,  b: cdist_circle as a disk */
     /* swept objects (torus, capsule, sphere, rounded disk) are appended from 21 on */
 } cdist_kind;
 
@@ -456,7 +456,7 @@ typedef struct cdist_contact_pair {
      *  (core_point[1] - core_point[0]) / core_distance when the cores are apart, otherwise
      *  chosen by the rule of ::CDIST_CONTACT_CORE_TOUCH. */
     cdist_vec3 normal;
-    /** Parameters of the core points as in ::cdist_pair (NaN for a point core). */
+    /** Parameters of the core points as in ::cdist_pair; NaN for a point core. */
     double param[2];
 } cdist_contact_pair;
 
