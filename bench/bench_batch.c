@@ -19,19 +19,6 @@ static double now(void)
     return t.tv_sec + 1e-9 * t.tv_nsec;
 }
 
-static const struct {
-    const char *file;
-    cdist_kind kind;
-} kinds[] = {
-    {"pc", CDIST_KIND_POINT_CIRCLE}, {"pd", CDIST_KIND_POINT_DISK},   {"lc", CDIST_KIND_LINE_CIRCLE},
-    {"rc", CDIST_KIND_RAY_CIRCLE},   {"sc", CDIST_KIND_SEGMENT_CIRCLE}, {"cc", CDIST_KIND_CIRCLE_CIRCLE},
-    {"ld", CDIST_KIND_LINE_DISK},    {"rd", CDIST_KIND_RAY_DISK},     {"sd", CDIST_KIND_SEGMENT_DISK},
-    {"cd", CDIST_KIND_CIRCLE_DISK},  {"dd", CDIST_KIND_DISK_DISK},    {"ac", CDIST_KIND_ARC_CIRCLE},
-    {"aa", CDIST_KIND_ARC_ARC},      {"sa", CDIST_KIND_SEGMENT_ARC},  {"ad", CDIST_KIND_ARC_DISK},
-    {"hc", CDIST_KIND_HELIX_CIRCLE}, {"hd", CDIST_KIND_HELIX_DISK},   {"bc", CDIST_KIND_BEZIER3_CIRCLE},
-    {"bd", CDIST_KIND_BEZIER3_DISK},
-};
-
 /* Reads DIR/KIND_random.txt into the object arrays; returns the number of distinct lines. */
 static size_t load(int ndirs, char **dirs, const char *k, cdist_kind kind, size_t n, unsigned char *A,
                    unsigned char *B)
@@ -96,12 +83,12 @@ int main(int argc, char **argv)
     double *dist = malloc(n * sizeof *dist);
     cdist_status *st = malloc(n * sizeof *st);
     int rc = 0;
-    for (size_t k = 0; k < sizeof kinds / sizeof kinds[0]; k++) {
-        if (only && !strstr(only, kinds[k].file)) continue;
-        cdist_kind kind = kinds[k].kind;
+    for (const cdq_kind *kd = cdq_kinds; kd->name; kd++) { /* every kind with a batch kind */
+        if (kd->batch_kind < 0 || (only && !strstr(only, kd->name))) continue;
+        cdist_kind kind = (cdist_kind)kd->batch_kind;
         size_t sa = cdist_kind_size_a(kind), sb = cdist_kind_size_b(kind);
         unsigned char *A = malloc(n * sa), *B = malloc(n * sb);
-        if (!load(argc - first, argv + first, kinds[k].file, kind, n, A, B)) {
+        if (!load(argc - first, argv + first, kd->name, kind, n, A, B)) {
             free(A);
             free(B);
             continue;

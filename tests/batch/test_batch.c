@@ -23,20 +23,12 @@
 #include "query_io.h"
 #include "single.h"
 
+/* Beyond the tool's kinds (tools/query_io.c, each read from its own files): callback curves, the
+ * first circle of the cc/cd lines as a curve. */
 static const struct {
     const char *file;
     cdist_kind kind;
-} files[] = {
-    {"pc", CDIST_KIND_POINT_CIRCLE},   {"pd", CDIST_KIND_POINT_DISK},     {"lc", CDIST_KIND_LINE_CIRCLE},
-    {"rc", CDIST_KIND_RAY_CIRCLE},     {"sc", CDIST_KIND_SEGMENT_CIRCLE}, {"cc", CDIST_KIND_CIRCLE_CIRCLE},
-    {"ld", CDIST_KIND_LINE_DISK},      {"rd", CDIST_KIND_RAY_DISK},       {"sd", CDIST_KIND_SEGMENT_DISK},
-    {"cd", CDIST_KIND_CIRCLE_DISK},    {"dd", CDIST_KIND_DISK_DISK},      {"ac", CDIST_KIND_ARC_CIRCLE},
-    {"aa", CDIST_KIND_ARC_ARC},        {"sa", CDIST_KIND_SEGMENT_ARC},    {"ad", CDIST_KIND_ARC_DISK},
-    {"hc", CDIST_KIND_HELIX_CIRCLE},   {"hd", CDIST_KIND_HELIX_DISK},     {"bc", CDIST_KIND_BEZIER3_CIRCLE},
-    {"bd", CDIST_KIND_BEZIER3_DISK},
-    /* callback curves: the first circle of cc/cd lines as a curve */
-    {"cc", CDIST_KIND_CURVE_CIRCLE},   {"cd", CDIST_KIND_CURVE_DISK},
-};
+} curve_files[] = {{"cc", CDIST_KIND_CURVE_CIRCLE}, {"cd", CDIST_KIND_CURVE_DISK}};
 
 static uint64_t rng = 88172645463325252ull;
 static uint64_t next_rand(void)
@@ -436,8 +428,12 @@ int main(int argc, char **argv)
     strides(q);
     concurrency(q);
     const char *sets[] = {"random", "hard"};
-    for (size_t k = 0; k < sizeof files / sizeof files[0]; k++)
-        for (int s = 0; s < 2; s++) run_file(q, argc - first, argv + first, files[k].file, files[k].kind, sets[s]);
+    for (int s = 0; s < 2; s++) {
+        for (const cdq_kind *kd = cdq_kinds; kd->name; kd++)
+            if (kd->batch_kind >= 0) run_file(q, argc - first, argv + first, kd->name, (cdist_kind)kd->batch_kind, sets[s]);
+        for (size_t k = 0; k < sizeof curve_files / sizeof curve_files[0]; k++)
+            run_file(q, argc - first, argv + first, curve_files[k].file, curve_files[k].kind, sets[s]);
+    }
     cdist_query_free(q);
     return check_summary("batch");
 }
