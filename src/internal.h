@@ -36,13 +36,14 @@ cdist_status cdist__cc_iteration(cdist_query *q, const cdist__circle *c0, const 
  * count (at most cap), or -1 when the function is constant (every angle critical). */
 int cdist__circle_circle_critical(cdist_query *q, const cdist__circle *c0, const cdist__circle *c1, double *theta0, int cap);
 
-/* The circles family's one scaling rule (src/base/numeric.h): a at the origin, b relative to it;
- * both scaled by the power of two 2^-e that brings L = max(radii, |b centre|) into [1, 2).
- * Returns e. cdist__circles_unscale_result undoes it on a result written with a zero offset and
- * then adds `offset` (the translation removed): exact, so tiny and huge inputs (1e-300, 1e150)
- * get the answer of their unit-scale copy. */
-int cdist__circles_scale(cdist__circle *a, cdist__circle *b);
-void cdist__circles_unscale_result(cdist_result *r, int e, vec3 offset);
+/* The circles family's one framing and scaling rule (src/base/numeric.h): a moved to the origin
+ * and b with it (the translation is written to *offset), both scaled by the power of two 2^-e
+ * that brings L = max(radii, |b centre|) into [1, 2), and best initialised at that scale.
+ * Returns e. cdist__circles_result writes r from best (swap: the objects' roles exchanged) and
+ * undoes the scaling and the translation: exact, so tiny and huge inputs (1e-300, 1e150) get
+ * the answer of their unit-scale copy. */
+int cdist__circles_frame(cdist__circle *a, cdist__circle *b, vec3 *offset, cdist__best *best);
+void cdist__circles_result(const cdist__best *best, int swap, int e, vec3 offset, cdist_result *r);
 
 /* Circle c to disk d (c->c at the origin, d relative to it). */
 cdist_status cdist__circle_disk_core(cdist_query *q, cdist_method method, const cdist__circle *c, const cdist__circle *d,

@@ -116,17 +116,23 @@ cdist_status cdist__circle_circle_core(cdist_query *q, cdist_method method, cons
     return cc_core(q, method, c0, c1, b, iterations, &answered);
 }
 
-int cdist__circles_scale(cdist__circle *a, cdist__circle *b)
+int cdist__circles_frame(cdist__circle *a, cdist__circle *b, vec3 *offset, cdist__best *best)
 {
+    *offset = a->c;
+    a->c = v3(0, 0, 0);
+    b->c = v_sub(b->c, *offset);
     int e = cdist__scale_exponent(fmax(fmax(a->r, b->r), v_maxabs(b->c)));
     a->r = ldexp(a->r, -e);
     b->r = ldexp(b->r, -e);
     b->c = v3(ldexp(b->c.x, -e), ldexp(b->c.y, -e), ldexp(b->c.z, -e));
+    cdist__best_init(best, fmax(fmax(a->r, b->r), v_norm(b->c)));
     return e;
 }
 
-void cdist__circles_unscale_result(cdist_result *r, int e, vec3 offset)
+void cdist__circles_result(const cdist__best *best, int swap, int e, vec3 offset, cdist_result *r)
 {
+    cdist__best_to_result(best, v3(0, 0, 0), swap, r);
+    cdist__result_finish(r, r->num_pairs);
     r->distance = ldexp(r->distance, e);
     r->sqr_distance = ldexp(r->sqr_distance, 2 * e);
     for (int i = 0; i < r->num_pairs; i++)
@@ -139,20 +145,14 @@ void cdist__circles_unscale_result(cdist_result *r, int e, vec3 offset)
 /* The scaled problem (a at the origin): the core, then r written in full. */
 static cdist_status cc_query(cdist_query *q, cdist__circle a, cdist__circle b, cdist_result *r, cdist_method *answered)
 {
-    /* Work relative to the first centre. */
-    vec3 offset = a.c;
-    a.c = v3(0, 0, 0);
-    b.c = v_sub(b.c, offset);
-    int e = cdist__circles_scale(&a, &b);
+    vec3 offset;
     cdist__best best;
-    cdist__best_init(&best, fmax(fmax(a.r, b.r), v_norm(b.c)));
+    int e = cdist__circles_frame(&a, &b, &offset, &best);
     int iterations = 0;
     cdist_status st = cc_core(q, cdist__family_method(q, CD_FAM_CIRCLE_CIRCLE), &a, &b, &best, &iterations, answered);
     if (st) return st;
     if (best.n == 0) return cdist__fail(q, CDIST_ERR_INTERNAL, "circle-circle found no candidate");
-    cdist__best_to_result(&best, v3(0, 0, 0), 0, r);
-    cdist__result_finish(r, r->num_pairs);
-    cdist__circles_unscale_result(r, e, offset);
+    cdist__circles_result(&best, 0, e, offset, r);
     r->iterations = iterations;
     return CDIST_OK;
 }

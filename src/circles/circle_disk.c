@@ -518,18 +518,13 @@ cdist_status cdist__circle_disk_core(cdist_query *q, cdist_method method, const 
 /* The scaled problem (c at the origin): the core, then r written in full. */
 static cdist_status circle_disk_query(cdist_query *q, cdist__circle a, cdist__circle e, cdist_result *r, cdist_method *used)
 {
-    vec3 offset = a.c;
-    a.c = v3(0, 0, 0);
-    e.c = v_sub(e.c, offset);
-    int ex = cdist__circles_scale(&a, &e);
+    vec3 offset;
     cdist__best best;
-    cdist__best_init(&best, fmax(fmax(a.r, e.r), v_norm(e.c)));
+    int ex = cdist__circles_frame(&a, &e, &offset, &best);
     cdist_status st = cdist__circle_disk_core_ex(q, cdist__family_method(q, CD_FAM_CIRCLE_DISK), &a, &e, &best, used);
     if (st) return st;
     if (best.n == 0) return cdist__fail(q, CDIST_ERR_INTERNAL, "circle-disk found no candidate");
-    cdist__best_to_result(&best, v3(0, 0, 0), 0, r);
-    cdist__result_finish(r, r->num_pairs);
-    cdist__circles_unscale_result(r, ex, offset);
+    cdist__circles_result(&best, 0, ex, offset, r);
     return CDIST_OK;
 }
 

@@ -27,12 +27,9 @@ static cdist_status dd_query(cdist_query *q, cdist__circle a, cdist__circle e, i
         a = e;
         e = t;
     }
-    vec3 offset = a.c;
-    a.c = v3(0, 0, 0);
-    e.c = v_sub(e.c, offset);
-    int ex = cdist__circles_scale(&a, &e);
+    vec3 offset;
     cdist__best best;
-    cdist__best_init(&best, fmax(fmax(a.r, e.r), v_norm(e.c)));
+    int ex = cdist__circles_frame(&a, &e, &offset, &best);
     cdist_method m = cdist__family_method(q, CD_FAM_DISK_DISK), used0, used1;
     /* Rim of a to disk e, and rim of e to disk a (computed with e's centre as origin). */
     cdist__best b0, b1;
@@ -52,9 +49,7 @@ static cdist_status dd_query(cdist_query *q, cdist__circle a, cdist__circle e, i
     if (cdist__best_is_equidistant(&b0)) cdist__best_settle_equidistant(&best, d0sq);
     if (cdist__best_is_equidistant(&b1)) cdist__best_settle_equidistant(&best, d1sq);
     cdist__best_convex_contact(&best);
-    cdist__best_to_result(&best, v3(0, 0, 0), swap, r);
-    cdist__result_finish(r, r->num_pairs);
-    cdist__circles_unscale_result(r, ex, offset);
+    cdist__circles_result(&best, swap, ex, offset, r);
     *used = used0 == CDIST_METHOD_ROBUST || used1 == CDIST_METHOD_ROBUST ? CDIST_METHOD_ROBUST : m;
     return CDIST_OK;
 }
