@@ -97,6 +97,20 @@ typedef struct tpoly {
     double re[9], im[9];
 } tpoly;
 
+
+/* cos and sin of the next point of an even grid: exact (sincos) when `exact`, else the previous
+ * pair (*s, *c) rotated by the step (cos ch, sin sh). Rotation drifts by an ulp or so a step. */
+static inline void grid_sincos(double t, int exact, double ch, double sh, double *s, double *c)
+{
+    if (exact) {
+        sincos(t, s, c);
+    } else {
+        double cn = *c * ch - *s * sh;
+        *s = *s * ch + *c * sh;
+        *c = cn;
+    }
+}
+
 static void tp_zero(tpoly *p) { memset(p, 0, sizeof *p); }
 /* Add a cos(k t) + b sin(k t). */
 static void tp_term(tpoly *p, int k, double a, double b)
@@ -435,13 +449,7 @@ static void scan_dense(const cdist__cc_frame *f, cdist__cc_sink *k, double *Fmax
         } else {
             /* cos and sin by rotation, re-synchronised every 8 steps (drift of a few ulps) */
             double t = -M_PI + i * step;
-            if (i % 8 == 0) {
-                sincos(t, &s, &c);
-            } else {
-                double cn = c * ch - s * sh;
-                s = s * ch + c * sh;
-                c = cn;
-            }
+            grid_sincos(t, i % 8 == 0, ch, sh, &s, &c);
             cdist__cc_eval_lean(f, t, c, s, &cur);
             cc_track(k, &cur, Fmax);
         }
@@ -598,13 +606,7 @@ static void emit_sampled(const cdist__cc_frame *f, cdist__cc_sink *k, const cdis
     small_sincos(w / n, &sh, &ch);
     for (int j = 1; j < n; j++) {
         double t = a->t + w * j / n;
-        if (j % 8 == 0 || w / n > 0.1) {
-            sincos(t, &s, &c);
-        } else {
-            double cn = c * ch - s * sh;
-            s = s * ch + c * sh;
-            c = cn;
-        }
+        grid_sincos(t, j % 8 == 0 || w / n > 0.1, ch, sh, &s, &c);
         cdist__cc_eval_lean(f, t, c, s, &cur);
         cc_track(k, &cur, Fmax);
         if (cur.F < Fbest) Fbest = cur.F, tbest = cur.t;
