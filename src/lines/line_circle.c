@@ -518,6 +518,24 @@ static cdist_status run_scaled(cdist_query *q, vec3 origin, vec3 D, vec3 M, doub
     return st;
 }
 
+cdist_status cdist__check_line_ray(cdist_query *q, const void *obj, const cdist_vec3 *origin, const cdist_vec3 *dir,
+                                  int is_ray, vec3 *M, double *len)
+{
+    cdist_status st;
+    if ((st = cdist__check_ptr(q, obj, is_ray ? "ray" : "line")) ||
+        (st = cdist__check_point(q, origin, is_ray ? "ray origin" : "line origin")))
+        return st;
+    return cdist__check_direction(q, dir, is_ray ? "ray direction" : "line direction", 1, M, len);
+}
+
+cdist_status cdist__check_segment(cdist_query *q, const cdist_segment *s)
+{
+    cdist_status st;
+    if ((st = cdist__check_ptr(q, s, "segment")) || (st = cdist__check_point(q, &s->p0, "segment p0")))
+        return st;
+    return cdist__check_point(q, &s->p1, "segment p1");
+}
+
 static cdist_status linear_public(cdist_query *q, const cdist_vec3 *origin, const cdist_vec3 *dir, const void *obj,
                                   int is_ray, double tmin, double tmax, const cdist_circle *c, cdist_result *r)
 {
@@ -527,9 +545,7 @@ static cdist_status linear_public(cdist_query *q, const cdist_vec3 *origin, cons
     vec3 M;
     double len;
     cdist_method used = CDIST_METHOD_ROBUST;
-    if (!(st = cdist__check_ptr(q, obj, is_ray ? "ray" : "line")) &&
-        !(st = cdist__check_point(q, origin, is_ray ? "ray origin" : "line origin")) &&
-        !(st = cdist__check_direction(q, dir, is_ray ? "ray direction" : "line direction", 1, &M, &len)) &&
+    if (!(st = cdist__check_line_ray(q, obj, origin, dir, is_ray, &M, &len)) &&
         !(st = cdist__check_circle(q, c, "circle", &cc))) {
         /* t is reported for the direction as passed */
         st = run_scaled(q, *origin, *dir, M, len, tmin, tmax, cc, r, &used);
@@ -553,8 +569,7 @@ cdist_status cdist_segment_circle(cdist_query *q, const cdist_segment *s, const 
     if (st) return st;
     cdist__circle cc;
     cdist_method used = cdist__family_method(q, CD_FAM_SEGMENT_CIRCLE);
-    if ((st = cdist__check_ptr(q, s, "segment")) || (st = cdist__check_point(q, &s->p0, "segment p0")) ||
-        (st = cdist__check_point(q, &s->p1, "segment p1")) || (st = cdist__check_circle(q, c, "circle", &cc)))
+    if ((st = cdist__check_segment(q, s)) || (st = cdist__check_circle(q, c, "circle", &cc)))
         return cdist__leave(q, r, st, used);
     vec3 D = v_sub(s->p1, s->p0);
     if (D.x == 0.0 && D.y == 0.0 && D.z == 0.0) {

@@ -202,9 +202,7 @@ static cdist_status line_ray_disk(cdist_query *q, const void *obj, const cdist_v
     double len;
     cdist__circle dk;
     cdist_method used = CDIST_METHOD_ROBUST;
-    if (!(st = cdist__check_ptr(q, obj, is_ray ? "ray" : "line")) &&
-        !(st = cdist__check_point(q, origin, is_ray ? "ray origin" : "line origin")) &&
-        !(st = cdist__check_direction(q, dir, is_ray ? "ray direction" : "line direction", 1, &M, &len)) &&
+    if (!(st = cdist__check_line_ray(q, obj, origin, dir, is_ray, &M, &len)) &&
         !(st = cdist__check_circle(q, d, "disk", &dk))) {
         int e = cdist__lines_scale_exponent(*origin, NULL, &dk);
         double down = cdist__pow2(-e);
@@ -232,8 +230,7 @@ cdist_status cdist_segment_disk(cdist_query *q, const cdist_segment *s, const cd
     if (st) return st;
     cdist__circle dk;
     cdist_method used = cdist__family_method(q, CD_FAM_SEGMENT_DISK);
-    if ((st = cdist__check_ptr(q, s, "segment")) || (st = cdist__check_point(q, &s->p0, "segment p0")) ||
-        (st = cdist__check_point(q, &s->p1, "segment p1")) || (st = cdist__check_circle(q, d, "disk", &dk)))
+    if ((st = cdist__check_segment(q, s)) || (st = cdist__check_circle(q, d, "disk", &dk)))
         return cdist__leave(q, r, st, used);
     vec3 D = v_sub(s->p1, s->p0);
     if (D.x == 0.0 && D.y == 0.0 && D.z == 0.0) {

@@ -37,4 +37,11 @@ static inline int cdist__lines_scale_exponent(vec3 origin, const vec3 *p1, const
     return cdist__scale_exponent(L);
 }
 
+/* The checks of a line or ray (the object, its origin, its unit direction: M, and the length
+ * as passed: len) and of a segment (the object and both end points), shared by the circle and
+ * disk queries. */
+cdist_status cdist__check_line_ray(cdist_query *q, const void *obj, const cdist_vec3 *origin, const cdist_vec3 *dir,
+                                  int is_ray, vec3 *M, double *len);
+cdist_status cdist__check_segment(cdist_query *q, const cdist_segment *s);
+
 #endif
