@@ -63,6 +63,58 @@ CD_INLINE double cdist__root_newton(cdist__fdf_fn fdf, const void *ctx, double l
     return x;
 }
 
+/* cdist__root_newton for a root that may be multiple (a tangency, where f ~ (x - x*)^m and a
+ * Newton step only shrinks the error by (m - 1)/m, so the bracket test stops it only after
+ * ~50 steps): the same safeguards and stopping rule, and when two successive Newton steps
+ * shrank by a steady ratio q in [1/2, 1), the step is taken 1/(1 - q) = m times (exact for an
+ * m-fold root), if that stays inside the bracket. At a simple root q -> 0 and every step is
+ * cdist__root_newton's. Commutes with x -> -x for an odd f as cdist__root_newton does. */
+CD_INLINE double cdist__root_newton_multi(cdist__fdf_fn fdf, const void *ctx, double lo, double hi, int dir,
+                                          double rel, double abs, int max_iter)
+{
+    if (!(lo < hi)) return lo;
+    double x = 0.5 * (lo + hi), dxold = hi - lo, dx = dxold;
+    double prev = 0.0, qprev = 0.0; /* the last Newton step's length (0: none) and its shrink ratio */
+    for (int it = 0; it < max_iter; it++) {
+        double df, f = fdf(ctx, x, &df);
+        if (f != f) return NAN;
+        if (dir < 0) {
+            f = -f;
+            df = -df;
+        }
+        if (f == 0.0) return x;
+        if (f < 0.0) lo = x;
+        else hi = x;
+        double step = f / df, xn = x - step;
+        if (df > 0.0 && (fabs(step) <= rel * fabs(x) || fabs(step) <= abs)) return xn; /* converged */
+        if (!(df > 0.0) || !(xn > lo && xn < hi) || fabs(2.0 * f) > fabs(dxold * df)) {
+            dxold = dx;
+            xn = 0.5 * (lo + hi);
+            dx = fabs(xn - x);
+            prev = qprev = 0.0;
+        } else {
+            double q = fabs(step) / prev; /* inf or NaN when prev = 0: fails the test below */
+            double xm = x - step / (1.0 - q);
+            /* beyond the bracket (the m-fold point lies past its end, as at a tangency where F'
+             * has an inflection at the bracket end): 7/8 of the way to that end */
+            if (!(xm < hi)) xm = hi - 0.125 * (hi - x);
+            if (!(xm > lo)) xm = lo + 0.125 * (x - lo);
+            if (q >= 0.5 && q < 1.0 && fabs(q - qprev) <= 0.125 * q) {
+                xn = xm;
+                prev = qprev = 0.0; /* measure the ratio afresh after an extrapolated step */
+            } else {
+                prev = fabs(step);
+                qprev = q;
+            }
+            dxold = dx;
+            dx = fabs(xn - x);
+        }
+        x = xn;
+        if (dx <= rel * fabs(x) || !(hi - lo > abs)) break;
+    }
+    return x;
+}
+
 /* Newton on f from x (a root estimate, e.g. from a polynomial), a step kept only while |f|
  * decreases; stops when a step is below rel * |x| or abs (abs = 0, rel = 0: only the |f| test).
  * Returns the polished x (x itself when no step helped), NaN when the callback failed. */
