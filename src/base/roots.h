@@ -96,9 +96,9 @@ CD_INLINE double cdist__root_newton_multi(cdist__fdf_fn fdf, const void *ctx, do
             double q = fabs(step) / prev; /* inf or NaN when prev = 0: fails the test below */
             double xm = x - step / (1.0 - q);
             /* beyond the bracket (the m-fold point lies past its end, as at a tangency where F'
-             * has an inflection at the bracket end): 7/8 of the way to that end */
-            if (!(xm < hi)) xm = hi - 0.125 * (hi - x);
-            if (!(xm > lo)) xm = lo + 0.125 * (x - lo);
+             * has an inflection at the bracket end): 63/64 of the way to that end */
+            if (!(xm < hi)) xm = hi - 0x1p-6 * (hi - x);
+            if (!(xm > lo)) xm = lo + 0x1p-6 * (x - lo);
             if (q >= 0.5 && q < 1.0 && fabs(q - qprev) <= 0.125 * q) {
                 xn = xm;
                 prev = qprev = 0.0; /* measure the ratio afresh after an extrapolated step */
