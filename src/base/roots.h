@@ -63,13 +63,19 @@ CD_INLINE double cdist__root_newton(cdist__fdf_fn fdf, const void *ctx, double l
     return x;
 }
 
-/* cdist__root_newton for a root that may be multiple (a tangency, where f ~ (x - x*)^m and a
- * Newton step only shrinks the error by (m - 1)/m, so the bracket test stops it only after
- * ~50 steps): the same safeguards and stopping rule, and when two successive Newton steps
- * shrank by a steady ratio q in [1/2, 1), the step is taken 1/(1 - q) = m times (exact for an
- * m-fold root), if that stays inside the bracket. At a simple root q -> 0 and every step is
- * cdist__root_newton's. Commutes with x -> -x for an odd f as cdist__root_newton does. */
-CD_INLINE double cdist__root_newton_multi(cdist__fdf_fn fdf, const void *ctx, double lo, double hi, int dir,
+/* cdist__root_newton with two accelerations, for a hot family (line-circle):
+ * - a root that may be multiple (a tangency, where f ~ (x - x*)^m and a Newton step only shrinks
+ *   the error by (m - 1)/m, so the bracket test stops it only after ~50 steps): when two
+ *   successive Newton steps shrank by a steady ratio q in [1/2, 1), the step is taken
+ *   1/(1 - q) = m times (exact for an m-fold root), or, past the bracket's end, 63/64 of the
+ *   way there;
+ * - the last step of a quadratic convergence: with e' = C e^2, C estimated from the last two
+ *   Newton steps (C = |step| / |prev|^2), when the step after this one would be below the
+ *   tolerance with a margin of 4, the point after this step is returned without evaluating
+ *   there (it differs from cdist__root_newton's answer by less than the tolerance).
+ * Same safeguards otherwise. At a simple root q -> 0 and the steps are cdist__root_newton's.
+ * Commutes with x -> -x for an odd f as cdist__root_newton does. */
+CD_INLINE double cdist__root_newton_accel(cdist__fdf_fn fdf, const void *ctx, double lo, double hi, int dir,
                                           double rel, double abs, int max_iter)
 {
     if (!(lo < hi)) return lo;
@@ -93,10 +99,11 @@ CD_INLINE double cdist__root_newton_multi(cdist__fdf_fn fdf, const void *ctx, do
             dx = fabs(xn - x);
             prev = qprev = 0.0;
         } else {
-            double q = fabs(step) / prev; /* inf or NaN when prev = 0: fails the test below */
+            double q = fabs(step) / prev; /* inf or NaN when prev = 0: fails the tests below */
+            if (q <= 0.25 && 4.0 * (q * q) * fabs(step) <= cdist__fmax(rel * fabs(xn), abs)) return xn;
             double xm = x - step / (1.0 - q);
-            /* beyond the bracket (the m-fold point lies past its end, as at a tangency where F'
-             * has an inflection at the bracket end): 63/64 of the way to that end */
+            /* beyond the bracket: the m-fold point lies past its end (at a tangency F' has its
+             * inflection there) */
             if (!(xm < hi)) xm = hi - 0x1p-6 * (hi - x);
             if (!(xm > lo)) xm = lo + 0x1p-6 * (x - lo);
             if (q >= 0.5 && q < 1.0 && fabs(q - qprev) <= 0.125 * q) {

@@ -105,10 +105,10 @@ CD_INLINE double f_at(const lc_model *m, double s)
 
 /* Root of F' in [lo, hi] where F' increases: safeguarded Newton (base/roots.h), which
  * commutes with s -> -s when F' is odd, so mirrored brackets give mirrored roots; the
- * multiple-root variant, since near a tangent line F' is nearly cubic about its root. */
+ * accelerated variant (near a tangent line F' is nearly cubic about its root). */
 CD_INLINE double solve(const lc_model *m, double lo, double hi)
 {
-    return cdist__root_newton_multi(fdf_scaled, m, lo, hi, +1, CD_ROOT_REL_ULPS * EPS, CD_ROOT_ABS, CD_ROOT_MAX_ITER);
+    return cdist__root_newton_accel(fdf_scaled, m, lo, hi, +1, CD_ROOT_REL_ULPS * EPS, CD_ROOT_ABS, CD_ROOT_MAX_ITER);
 }
 
 /* Newton on F' from a polynomial root, kept only while |F'| decreases. */
