@@ -73,7 +73,7 @@ int main(void)
     /* the multiple-root variant: same answers on a simple root, far fewer steps on a triple
      * one (plain Newton shrinks the error by only 2/3 per step there) */
     evals = 0;
-    x = cdist__root_newton_accel(cube_fdf, NULL, 0.0, 5.0, +1, rel, CD_ROOT_ABS, CD_ROOT_MAX_ITER);
+    x = cdist__root_newton_accel(cube_fdf, NULL, 0.0, 5.0, NAN, +1, rel, CD_ROOT_ABS, CD_ROOT_MAX_ITER);
     CHECK(fabs(x - c) <= 4 * DBL_EPSILON && evals < 40, "newton_accel simple: %.17g vs %.17g (%d)", x, c, evals);
     int plain;
     evals = 0;
@@ -81,15 +81,15 @@ int main(void)
     plain = evals;
     CHECK(fabs(x - 0.3) <= 1e-9, "newton triple: %.17g", x);
     evals = 0;
-    x = cdist__root_newton_accel(triple_fdf, NULL, -0.9, 1.0, +1, rel, CD_ROOT_ABS, CD_ROOT_MAX_ITER);
+    x = cdist__root_newton_accel(triple_fdf, NULL, -0.9, 1.0, NAN, +1, rel, CD_ROOT_ABS, CD_ROOT_MAX_ITER);
     CHECK(fabs(x - 0.3) <= 1e-9, "newton_accel triple: %.17g", x);
     CHECK(2 * evals <= plain, "newton_accel took %d evaluations on a triple root, plain Newton %d", evals, plain);
-    x = cdist__root_newton_accel(triple_fdf, NULL, 0.2, 5.0, +1, rel, CD_ROOT_ABS, CD_ROOT_MAX_ITER);
+    x = cdist__root_newton_accel(triple_fdf, NULL, 0.2, 5.0, NAN, +1, rel, CD_ROOT_ABS, CD_ROOT_MAX_ITER);
     CHECK(fabs(x - 0.3) <= 1e-9, "newton_accel triple near the bracket end: %.17g", x);
-    double xl = cdist__root_newton_accel(odd_fdf, NULL, -0.7, 0.3, +1, rel, CD_ROOT_ABS, CD_ROOT_MAX_ITER);
-    double xr = cdist__root_newton_accel(odd_fdf, NULL, -0.3, 0.7, +1, rel, CD_ROOT_ABS, CD_ROOT_MAX_ITER);
+    double xl = cdist__root_newton_accel(odd_fdf, NULL, -0.7, 0.3, NAN, +1, rel, CD_ROOT_ABS, CD_ROOT_MAX_ITER);
+    double xr = cdist__root_newton_accel(odd_fdf, NULL, -0.3, 0.7, NAN, +1, rel, CD_ROOT_ABS, CD_ROOT_MAX_ITER);
     CHECK(xl == -xr && fabs(xl) <= 1e-12, "newton_accel mirrored brackets: %g %g", xl, xr);
-    x = cdist__root_newton_accel(fail_fdf, NULL, 0.0, 1.0, +1, rel, CD_ROOT_ABS, CD_ROOT_MAX_ITER);
+    x = cdist__root_newton_accel(fail_fdf, NULL, 0.0, 1.0, NAN, +1, rel, CD_ROOT_ABS, CD_ROOT_MAX_ITER);
     CHECK(isnan(x), "newton_accel: failing callback gives NaN (%g)", x);
 
     /* error-free transforms */

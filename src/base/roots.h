@@ -73,13 +73,14 @@ CD_INLINE double cdist__root_newton(cdist__fdf_fn fdf, const void *ctx, double l
  *   Newton steps (C = |step| / |prev|^2), when the step after this one would be below the
  *   tolerance with a margin of 4, the point after this step is returned without evaluating
  *   there (it differs from cdist__root_newton's answer by less than the tolerance).
+ * It starts at x0 (a caller's estimate; the midpoint when x0 is not inside (lo, hi), e.g. NaN).
  * Same safeguards otherwise. At a simple root q -> 0 and the steps are cdist__root_newton's.
  * Commutes with x -> -x for an odd f as cdist__root_newton does. */
-CD_INLINE double cdist__root_newton_accel(cdist__fdf_fn fdf, const void *ctx, double lo, double hi, int dir,
-                                          double rel, double abs, int max_iter)
+CD_INLINE double cdist__root_newton_accel(cdist__fdf_fn fdf, const void *ctx, double lo, double hi, double x0,
+                                          int dir, double rel, double abs, int max_iter)
 {
     if (!(lo < hi)) return lo;
-    double x = 0.5 * (lo + hi), dxold = hi - lo, dx = dxold;
+    double x = (x0 > lo && x0 < hi) ? x0 : 0.5 * (lo + hi), dxold = hi - lo, dx = dxold;
     double prev = 0.0, qprev = 0.0; /* the last Newton step's length (0: none) and its shrink ratio */
     for (int it = 0; it < max_iter; it++) {
         double df, f = fdf(ctx, x, &df);

@@ -106,9 +106,9 @@ CD_INLINE double f_at(const lc_model *m, double s)
 /* Root of F' in [lo, hi] where F' increases: safeguarded Newton (base/roots.h), which
  * commutes with s -> -s when F' is odd, so mirrored brackets give mirrored roots; the
  * accelerated variant (near a tangent line F' is nearly cubic about its root). */
-CD_INLINE double solve(const lc_model *m, double lo, double hi)
+CD_INLINE double solve(const lc_model *m, double lo, double hi, double x0)
 {
-    return cdist__root_newton_accel(fdf_scaled, m, lo, hi, +1, CD_ROOT_REL_ULPS * EPS, CD_ROOT_ABS, CD_ROOT_MAX_ITER);
+    return cdist__root_newton_accel(fdf_scaled, m, lo, hi, x0, +1, CD_ROOT_REL_ULPS * EPS, CD_ROOT_ABS, CD_ROOT_MAX_ITER);
 }
 
 /* Newton on F' from a polynomial root, kept only while |F'| decreases. */
@@ -236,10 +236,12 @@ CD_FMA_CLONES static void robust_roots(const lc_model *m, double smin, double sm
     double mu = fma(m->a, m->h, m->m0 * m->c2);
     double lo = -mu - m->r * m->m0, hi = -mu + m->r * m->m0;
     *nr = 0;
-    double br[2][2];
+    double br[2][2], x0 = NAN;
     int nb = 0;
     if (m->r * m->m0 * m->m0 <= m->ax1) {
-        /* G' <= 1 everywhere: F' increasing, one root. */
+        /* G' <= 1 everywhere: F' increasing, one root; the start is the root of F' with G
+         * linearised at x2 = 0 (slope g = r m0^2 / |x1| <= 1, exact near the centre). */
+        x0 = -mu / (1.0 - m->r * m->m0 * m->m0 / m->ax1);
         br[nb][0] = lo;
         br[nb][1] = hi;
         nb++;
@@ -272,7 +274,7 @@ CD_FMA_CLONES static void robust_roots(const lc_model *m, double smin, double sm
     for (int i = 0; i < nb; i++) {
         double a = cdist__fmax(br[i][0], smin), b = cdist__fmin(br[i][1], smax);
         if (a > b) continue;
-        roots[(*nr)++] = solve(m, a, b);
+        roots[(*nr)++] = solve(m, a, b, x0);
     }
 }
 
