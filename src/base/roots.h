@@ -81,7 +81,10 @@ CD_INLINE double cdist__root_newton_accel(cdist__fdf_fn fdf, const void *ctx, do
 {
     if (!(lo < hi)) return lo;
     double x = (x0 > lo && x0 < hi) ? x0 : 0.5 * (lo + hi), dxold = hi - lo, dx = dxold;
-    double prev = 0.0, qprev = 0.0; /* the last Newton step's length (0: none) and its shrink ratio */
+    /* the last two Newton steps' lengths (0: none since a bisection or an extrapolation); the
+     * ratios q = |step| / p1 and p1 / p2 are compared multiplied out, without a division in
+     * the loop's chain */
+    double p1 = 0.0, p2 = 0.0;
     for (int it = 0; it < max_iter; it++) {
         double df, f = fdf(ctx, x, &df);
         if (f != f) return NAN;
@@ -92,27 +95,28 @@ CD_INLINE double cdist__root_newton_accel(cdist__fdf_fn fdf, const void *ctx, do
         if (f == 0.0) return x;
         if (f < 0.0) lo = x;
         else hi = x;
-        double step = f / df, xn = x - step;
-        if (df > 0.0 && (fabs(step) <= rel * fabs(x) || fabs(step) <= abs)) return xn; /* converged */
+        double step = f / df, xn = x - step, as = fabs(step);
+        if (df > 0.0 && (as <= rel * fabs(x) || as <= abs)) return xn; /* converged */
         if (!(df > 0.0) || !(xn > lo && xn < hi) || fabs(2.0 * f) > fabs(dxold * df)) {
             dxold = dx;
             xn = 0.5 * (lo + hi);
             dx = fabs(xn - x);
-            prev = qprev = 0.0;
+            p1 = p2 = 0.0;
         } else {
-            double q = fabs(step) / prev; /* inf or NaN when prev = 0: fails the tests below */
-            if (q <= 0.25 && 4.0 * (q * q) * fabs(step) <= cdist__fmax(rel * fabs(xn), abs)) return xn;
-            double xm = x - step / (1.0 - q);
-            /* beyond the bracket: the m-fold point lies past its end (at a tangency F' has its
-             * inflection there) */
-            if (!(xm < hi)) xm = hi - 0x1p-6 * (hi - x);
-            if (!(xm > lo)) xm = lo + 0x1p-6 * (x - lo);
-            if (q >= 0.5 && q < 1.0 && fabs(q - qprev) <= 0.125 * q) {
+            /* quadratic: q <= 1/4 and the next step, 4 q^2 |step|, below the tolerance */
+            if (4.0 * as <= p1 && 4.0 * (as * as) * as <= cdist__fmax(rel * fabs(xn), abs) * (p1 * p1)) return xn;
+            /* linear with a steady q in [1/2, 1): |q - p1/p2| <= q/8 */
+            if (2.0 * as >= p1 && as < p1 && fabs(as * p2 - p1 * p1) <= 0.125 * (as * p2)) {
+                double xm = x - step * (p1 / (p1 - as)); /* the step times m = 1 / (1 - q) */
+                /* beyond the bracket: the m-fold point lies past its end (at a tangency F' has
+                 * its inflection there) */
+                if (!(xm < hi)) xm = hi - 0x1p-6 * (hi - x);
+                if (!(xm > lo)) xm = lo + 0x1p-6 * (x - lo);
                 xn = xm;
-                prev = qprev = 0.0; /* measure the ratio afresh after an extrapolated step */
+                p1 = p2 = 0.0; /* measure the ratio afresh after an extrapolated step */
             } else {
-                prev = fabs(step);
-                qprev = q;
+                p2 = p1;
+                p1 = as;
             }
             dxold = dx;
             dx = fabs(xn - x);
