@@ -38,6 +38,14 @@ static double odd_fdf(const void *ctx, double x, double *df)
     *df = 3 * x * x + 1e-9;
     return x * x * x + 1e-9 * x;
 }
+/* a root at the end of the bracket: f(x) = 2 (x + 0.75), as F' of a line through a circle's axis */
+static double lin_fdf(const void *ctx, double x, double *df)
+{
+    (void)ctx;
+    evals++;
+    *df = 2.0;
+    return 2.0 * (x + 0.75);
+}
 /* -cos(x - a): minimum at a */
 static double cosmin(const void *ctx, double x) { return -cos(x - *(const double *)ctx); }
 /* a failing callback */
@@ -89,6 +97,17 @@ int main(void)
     double xl = cdist__root_newton_accel(odd_fdf, NULL, -0.7, 0.3, NAN, +1, rel, CD_ROOT_ABS, CD_ROOT_MAX_ITER);
     double xr = cdist__root_newton_accel(odd_fdf, NULL, -0.3, 0.7, NAN, +1, rel, CD_ROOT_ABS, CD_ROOT_MAX_ITER);
     CHECK(xl == -xr && fabs(xl) <= 1e-12, "newton_accel mirrored brackets: %g %g", xl, xr);
+    /* a root at an end of the bracket: Newton lands on the end, which plain Newton rejects
+     * and then bisects towards for ~60 steps */
+    evals = 0;
+    x = cdist__root_newton(lin_fdf, NULL, -0.75, 0.5, +1, rel, CD_ROOT_ABS, CD_ROOT_MAX_ITER);
+    plain = evals;
+    evals = 0;
+    double xe = cdist__root_newton_accel(lin_fdf, NULL, -0.75, 0.5, NAN, +1, rel, CD_ROOT_ABS, CD_ROOT_MAX_ITER);
+    CHECK(fabs(x + 0.75) <= 1e-15 && fabs(xe + 0.75) <= 1e-15, "root at the bracket end: %.17g %.17g", x, xe);
+    CHECK(4 * evals <= plain, "newton_accel took %d evaluations for a root at the end, plain Newton %d", evals, plain);
+    x = cdist__root_newton_accel(lin_fdf, NULL, -2.0, -0.75, NAN, +1, rel, CD_ROOT_ABS, CD_ROOT_MAX_ITER);
+    CHECK(fabs(x + 0.75) <= 1e-15, "root at the upper end: %.17g", x);
     x = cdist__root_newton_accel(fail_fdf, NULL, 0.0, 1.0, NAN, +1, rel, CD_ROOT_ABS, CD_ROOT_MAX_ITER);
     CHECK(isnan(x), "newton_accel: failing callback gives NaN (%g)", x);
 

@@ -85,6 +85,7 @@ CD_INLINE double cdist__root_newton_accel(cdist__fdf_fn fdf, const void *ctx, do
      * ratios q = |step| / p1 and p1 / p2 are compared multiplied out, without a division in
      * the loop's chain */
     double p1 = 0.0, p2 = 0.0;
+    int jumped = 0; /* the last step went to near an end of the bracket */
     for (int it = 0; it < max_iter; it++) {
         double df, f = fdf(ctx, x, &df);
         if (f != f) return NAN;
@@ -97,12 +98,26 @@ CD_INLINE double cdist__root_newton_accel(cdist__fdf_fn fdf, const void *ctx, do
         else hi = x;
         double step = f / df, xn = x - step, as = fabs(step);
         if (df > 0.0 && (as <= rel * fabs(x) || as <= abs)) return xn; /* converged */
-        if (!(df > 0.0) || !(xn > lo && xn < hi) || fabs(2.0 * f) > fabs(dxold * df)) {
+        int past = df > 0.0 && !(xn > lo && xn < hi);
+        if (past && !jumped) {
+            /* Newton lands on or past an end: the root is at that end within rounding (F' of a
+             * line through the axis is linear up to it; near a tangency it flattens there), and
+             * bisection would take ~60 steps to reach it. A point 1023/1024 of the way to that
+             * end shrinks the bracket 1024 times when so, and costs one step otherwise (every
+             * other such step bisects, so the bracket at least halves every two steps). */
+            dxold = dx;
+            xn = (xn >= hi) ? hi - 0x1p-10 * (hi - x) : lo + 0x1p-10 * (x - lo);
+            dx = fabs(xn - x);
+            p1 = p2 = 0.0;
+            jumped = 1;
+        } else if (!(df > 0.0) || past || fabs(2.0 * f) > fabs(dxold * df)) {
             dxold = dx;
             xn = 0.5 * (lo + hi);
             dx = fabs(xn - x);
             p1 = p2 = 0.0;
+            jumped = 0;
         } else {
+            jumped = 0;
             /* quadratic: q <= 1/4 and the next step, 4 q^2 |step|, below the tolerance */
             if (4.0 * as <= p1 && 4.0 * (as * as) * as <= cdist__fmax(rel * fabs(xn), abs) * (p1 * p1)) return xn;
             /* linear with a steady q in [1/2, 1): |q - p1/p2| <= q/8 */
