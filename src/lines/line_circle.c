@@ -241,7 +241,7 @@ CD_FMA_CLONES static void robust_roots(const lc_model *m, double smin, double sm
     if (m->r * m->m0 * m->m0 <= m->ax1) {
         /* G' <= 1 everywhere: F' increasing, one root; the start is the root of F' with G
          * linearised at x2 = 0 (slope g = r m0^2 / |x1| <= 1, exact near the centre). */
-        x0 = -mu / (1.0 - m->r * m->m0 * m->m0 / m->ax1);
+        x0 = -mu * m->ax1 / (m->ax1 - m->r * m->m0 * m->m0); /* -mu / (1 - g), one division */
         br[nb][0] = lo;
         br[nb][1] = hi;
         nb++;
