@@ -11,9 +11,9 @@
  * library's defaults are CD_ROOT_REL_ULPS * eps and CD_ROOT_ABS (src/base/tolerances.h), for
  * problems scaled to L in [1, 2) (src/base/numeric.h).
  *
- * cdist__root_newton and cdist__root_polish are always inlined so that a hot family (line-circle) gets
- * them specialised for its callback (the call through the pointer is inlined away); the
- * Brent solvers are out of line (roots.c). */
+ * cdist__root_newton, cdist__root_newton_accel and cdist__root_polish are always inlined so that a
+ * hot family (line-circle) gets them specialised for its callback (the call through the pointer
+ * is inlined away); the Brent solvers are out of line (roots.c). */
 #ifndef CDIST_BASE_ROOTS_H
 #define CDIST_BASE_ROOTS_H
 
@@ -63,19 +63,21 @@ CD_INLINE double cdist__root_newton(cdist__fdf_fn fdf, const void *ctx, double l
     return x;
 }
 
-/* cdist__root_newton with two accelerations, for a hot family (line-circle):
- * - a root that may be multiple (a tangency, where f ~ (x - x*)^m and a Newton step only shrinks
- *   the error by (m - 1)/m, so the bracket test stops it only after ~50 steps): when two
- *   successive Newton steps shrank by a steady ratio q in [1/2, 1), the step is taken
- *   1/(1 - q) = m times (exact for an m-fold root), or, past the bracket's end, 63/64 of the
- *   way there;
+/* cdist__root_newton with accelerations, for a hot family (line-circle); same bracket
+ * safeguards, and it differs from cdist__root_newton's answer by less than the tolerance:
+ * - it starts at x0 (a caller's estimate; the midpoint when x0 is not inside (lo, hi), e.g. NaN);
  * - the last step of a quadratic convergence: with e' = C e^2, C estimated from the last two
  *   Newton steps (C = |step| / |prev|^2), when the step after this one would be below the
  *   tolerance with a margin of 4, the point after this step is returned without evaluating
- *   there (it differs from cdist__root_newton's answer by less than the tolerance).
- * It starts at x0 (a caller's estimate; the midpoint when x0 is not inside (lo, hi), e.g. NaN).
- * Same safeguards otherwise. At a simple root q -> 0 and the steps are cdist__root_newton's.
- * Commutes with x -> -x for an odd f as cdist__root_newton does. */
+ *   there;
+ * - a root that may be multiple (a tangency, where f ~ (x - x*)^m and a Newton step only shrinks
+ *   the error by (m - 1)/m): when two successive Newton steps shrank by a steady ratio q in
+ *   [1/2, 1), the step is taken 1/(1 - q) = m times (exact for an m-fold root), or, past the
+ *   bracket's end, 63/64 of the way there;
+ * - a root at an end of the bracket (a Newton step lands on or past it): 1023/1024 of the way
+ *   there instead of a bisection, every other time.
+ * At a simple root inside the bracket the steps are cdist__root_newton's. Commutes with
+ * x -> -x for an odd f (and mirrored x0) as cdist__root_newton does. */
 CD_INLINE double cdist__root_newton_accel(cdist__fdf_fn fdf, const void *ctx, double lo, double hi, double x0,
                                           int dir, double rel, double abs, int max_iter)
 {
