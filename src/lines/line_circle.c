@@ -359,7 +359,7 @@ CD_FMA_CLONES static cdist_status linear_circle(cdist_query *q, cdist_method met
     double m2x = v_dot(c->v, w), m2y = -v_dot(c->u, w);
     double b2x = v_dot(c->v, nb), b2y = -v_dot(c->u, nb);
     double a = v_dot(N, M), h0 = v_dot(N, B0s);
-    double m0 = sqrt(m2x * m2x + m2y * m2y); /* scaled: no overflow or harmful underflow */
+    double mm = m2x * m2x + m2y * m2y, m0 = sqrt(mm); /* scaled: no overflow or harmful underflow */
 
     if (tmin == tmax) {
         offer_end(&x, tmin);
@@ -394,7 +394,7 @@ CD_FMA_CLONES static cdist_status linear_circle(cdist_query *q, cdist_method met
     double c2 = fma(m.e2x, b2x, m.e2y * b2y);
     /* Frame origin: the canonical point x2 = 0 when it is near (|uO| <= 4 in scaled units);
      * otherwise (nearly perpendicular lines) B0 itself, to keep t free of cancellation. */
-    double us = -c2 / m0;
+    double us = -fma(m2x, b2x, m2y * b2y) / mm; /* -c2 / m0 with one division, off m0's root */
     if (fabs(us) <= 4.0) {
         x.uO = us;
         m.c2 = 0.0;
