@@ -342,6 +342,13 @@ CD_FMA_CLONES static cdist_status linear_circle(cdist_query *q, cdist_method met
         goto done;
     }
 
+    /* B0's in-plane coordinates and height before the scale is known, then scaled (by a power
+     * of two: exact), so that they do not wait for the square root of |B0|; B0 within 2^-400
+     * of the centre is scaled first (no subnormal products). */
+    const vec3 N = c->n;
+    int early = v_maxabs(B0) >= 0x1p-400;
+    vec3 nb = v_cross(N, B0);
+    double b2x = v_dot(c->v, nb), b2y = -v_dot(c->u, nb), h0 = v_dot(N, B0);
     double S = cdist__fmax(c->r, v_norm(B0));
     int e = cdist__scale_exponent(S);
     double sg = cdist__pow2(-e);
@@ -354,11 +361,19 @@ CD_FMA_CLONES static cdist_status linear_circle(cdist_query *q, cdist_method met
     umin *= sg;
     umax *= sg;
 
-    const vec3 N = c->n;
-    vec3 w = v_cross(N, M), nb = v_cross(N, B0s);
+    if (early) {
+        b2x *= sg;
+        b2y *= sg;
+        h0 *= sg;
+    } else {
+        nb = v_cross(N, B0s);
+        b2x = v_dot(c->v, nb);
+        b2y = -v_dot(c->u, nb);
+        h0 = v_dot(N, B0s);
+    }
+    vec3 w = v_cross(N, M);
     double m2x = v_dot(c->v, w), m2y = -v_dot(c->u, w);
-    double b2x = v_dot(c->v, nb), b2y = -v_dot(c->u, nb);
-    double a = v_dot(N, M), h0 = v_dot(N, B0s);
+    double a = v_dot(N, M);
     double mm = m2x * m2x + m2y * m2y, m0 = sqrt(mm); /* scaled: no overflow or harmful underflow */
 
     if (tmin == tmax) {
