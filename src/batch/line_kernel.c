@@ -1,0 +1,330 @@
+/* SPDX-License-Identifier: MIT */
+/* Distance kernels of line-, ray- and segment-circle for cdist_batch_distance: the scalar path's
+ * validation, framing and ROBUST core (see line_kernel_body.h) in 8 lanes (AVX-512), 4 lanes
+ * (AVX2) or 1 (elsewhere), chosen at run time. Every distance is bit-identical to the single
+ * query's; entries failing a check or needing a branch the kernel does not take are left to the
+ * scalar path, which produces their status and message (or their answer). */
+#include <float.h>
+#include <math.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <string.h>
+
+#include "batch-priv.h"
+
+#if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))
+#define CD_X86_KERNELS 1
+#include <immintrin.h>
+#endif
+
+_Static_assert(sizeof(cdist_line) == 48 && sizeof(cdist_ray) == 48 && sizeof(cdist_segment) == 48, "line layouts");
+_Static_assert(offsetof(cdist_circle, normal) == 24 && offsetof(cdist_circle, radius) == 48, "cdist_circle layout");
+
+enum { LK_LINE = 0, LK_RAY = 1, LK_SEGMENT = 2 };
+
+/* Newton iterations the lanes take together (a random line converges in about 6); a lane that
+ * needs more finishes alone. */
+#define LK_LANE_ITER 12
+
+/* CD_MADD of the scalar code: a hardware fma only when the whole build targets it. */
+#ifdef FP_FAST_FMA
+#define vmadd(a, b, c) vfma(a, b, c)
+#else
+#define vmadd(a, b, c) vadd(vmul(a, b), c)
+#endif
+
+/* ---- 1 lane ---- */
+
+#define W 1
+#define V double
+#define M int
+#define KN(name) name##_1
+static inline double vset(double x) { return x; }
+static inline double vld(const double *p) { return *p; }
+static inline void vst(double *p, double x) { *p = x; }
+#define vadd(a, b) ((a) + (b))
+#define vsub(a, b) ((a) - (b))
+#define vmul(a, b) ((a) * (b))
+#define vdiv(a, b) ((a) / (b))
+#define vneg(a) (-(a))
+#define vsqrt(a) sqrt(a)
+#define vfma(a, b, c) fma(a, b, c)
+#define vabs(a) fabs(a)
+#define vmax(a, b) ((a) > (b) ? (a) : (b))
+#define vmin(a, b) ((a) < (b) ? (a) : (b))
+static inline double vexpbits(double x)
+{
+    uint64_t u;
+    memcpy(&u, &x, sizeof u);
+    u &= 0x7ff0000000000000ull;
+    memcpy(&x, &u, sizeof u);
+    return x;
+}
+#define vlt(a, b) ((a) < (b))
+#define vle(a, b) ((a) <= (b))
+#define vgt(a, b) ((a) > (b))
+#define vge(a, b) ((a) >= (b))
+#define veq(a, b) ((a) == (b))
+#define vne(a, b) ((a) != (b))
+#define vsel(m, a, b) ((m) ? (a) : (b))
+#define mand(a, b) ((a) & (b))
+#define mor(a, b) ((a) | (b))
+#define mandn(a, b) ((!(a)) & (b))
+#define mnot(a) (!(a))
+#define mtrue() 1
+#define mfalse() 0
+#define many(m) (m)
+#define mbits(m) ((unsigned)(m))
+#include "line_kernel_body.h"
+#undef W
+#undef V
+#undef M
+#undef KN
+#undef vadd
+#undef vsub
+#undef vmul
+#undef vdiv
+#undef vneg
+#undef vsqrt
+#undef vfma
+#undef vabs
+#undef vmax
+#undef vmin
+#undef vlt
+#undef vle
+#undef vgt
+#undef vge
+#undef veq
+#undef vne
+#undef vsel
+#undef mand
+#undef mor
+#undef mandn
+#undef mnot
+#undef mtrue
+#undef mfalse
+#undef many
+#undef mbits
+
+#ifdef CD_X86_KERNELS
+
+/* ---- 8 lanes ---- */
+
+#pragma GCC push_options
+#pragma GCC target("avx512f,fma")
+#define W 8
+#define V __m512d
+#define M __mmask8
+#define KN(name) name##_8
+#define vset _mm512_set1_pd
+#define vld _mm512_loadu_pd
+#define vst _mm512_storeu_pd
+#define vadd _mm512_add_pd
+#define vsub _mm512_sub_pd
+#define vmul _mm512_mul_pd
+#define vdiv _mm512_div_pd
+#define vneg(a) _mm512_castsi512_pd(_mm512_xor_si512(_mm512_castpd_si512(a), _mm512_set1_epi64(INT64_MIN)))
+#define vsqrt _mm512_sqrt_pd
+#define vfma _mm512_fmadd_pd
+#define vabs _mm512_abs_pd
+#define vmax _mm512_max_pd
+#define vmin _mm512_min_pd
+#define vexpbits(x) \
+    _mm512_castsi512_pd(_mm512_and_si512(_mm512_castpd_si512(x), _mm512_set1_epi64(0x7ff0000000000000ll)))
+#define vlt(a, b) _mm512_cmp_pd_mask(a, b, _CMP_LT_OQ)
+#define vle(a, b) _mm512_cmp_pd_mask(a, b, _CMP_LE_OQ)
+#define vgt(a, b) _mm512_cmp_pd_mask(a, b, _CMP_GT_OQ)
+#define vge(a, b) _mm512_cmp_pd_mask(a, b, _CMP_GE_OQ)
+#define veq(a, b) _mm512_cmp_pd_mask(a, b, _CMP_EQ_OQ)
+#define vne(a, b) _mm512_cmp_pd_mask(a, b, _CMP_NEQ_UQ)
+#define vsel(m, a, b) _mm512_mask_blend_pd(m, b, a)
+#define mand(a, b) ((__mmask8)((a) & (b)))
+#define mor(a, b) ((__mmask8)((a) | (b)))
+#define mandn(a, b) ((__mmask8)(~(a) & (b)))
+#define mnot(a) ((__mmask8)~(a))
+#define mtrue() ((__mmask8)0xff)
+#define mfalse() ((__mmask8)0)
+#define many(m) ((m) != 0)
+#define mbits(m) ((unsigned)(m))
+#include "line_kernel_body.h"
+#undef W
+#undef V
+#undef M
+#undef KN
+#undef vset
+#undef vld
+#undef vst
+#undef vadd
+#undef vsub
+#undef vmul
+#undef vdiv
+#undef vneg
+#undef vsqrt
+#undef vfma
+#undef vabs
+#undef vmax
+#undef vmin
+#undef vexpbits
+#undef vlt
+#undef vle
+#undef vgt
+#undef vge
+#undef veq
+#undef vne
+#undef vsel
+#undef mand
+#undef mor
+#undef mandn
+#undef mnot
+#undef mtrue
+#undef mfalse
+#undef many
+#undef mbits
+#pragma GCC pop_options
+
+/* ---- 4 lanes ---- */
+
+#pragma GCC push_options
+#pragma GCC target("avx2,fma")
+#define W 4
+#define V __m256d
+#define M __m256d
+#define KN(name) name##_4
+#define vset _mm256_set1_pd
+#define vld _mm256_loadu_pd
+#define vst _mm256_storeu_pd
+#define vadd _mm256_add_pd
+#define vsub _mm256_sub_pd
+#define vmul _mm256_mul_pd
+#define vdiv _mm256_div_pd
+#define vneg(a) _mm256_xor_pd(a, _mm256_set1_pd(-0.0))
+#define vsqrt _mm256_sqrt_pd
+#define vfma _mm256_fmadd_pd
+#define vabs(a) _mm256_andnot_pd(_mm256_set1_pd(-0.0), a)
+#define vmax _mm256_max_pd
+#define vmin _mm256_min_pd
+#define vexpbits(x) _mm256_and_pd(x, _mm256_castsi256_pd(_mm256_set1_epi64x(0x7ff0000000000000ll)))
+#define vlt(a, b) _mm256_cmp_pd(a, b, _CMP_LT_OQ)
+#define vle(a, b) _mm256_cmp_pd(a, b, _CMP_LE_OQ)
+#define vgt(a, b) _mm256_cmp_pd(a, b, _CMP_GT_OQ)
+#define vge(a, b) _mm256_cmp_pd(a, b, _CMP_GE_OQ)
+#define veq(a, b) _mm256_cmp_pd(a, b, _CMP_EQ_OQ)
+#define vne(a, b) _mm256_cmp_pd(a, b, _CMP_NEQ_UQ)
+#define vsel(m, a, b) _mm256_blendv_pd(b, a, m)
+#define mand _mm256_and_pd
+#define mor _mm256_or_pd
+#define mandn _mm256_andnot_pd
+#define mtrue() _mm256_castsi256_pd(_mm256_set1_epi64x(-1))
+#define mnot(a) _mm256_xor_pd(a, mtrue())
+#define mfalse() _mm256_setzero_pd()
+#define many(m) (_mm256_movemask_pd(m) != 0)
+#define mbits(m) ((unsigned)_mm256_movemask_pd(m))
+#include "line_kernel_body.h"
+#undef W
+#undef V
+#undef M
+#undef KN
+#undef vset
+#undef vld
+#undef vst
+#undef vadd
+#undef vsub
+#undef vmul
+#undef vdiv
+#undef vneg
+#undef vsqrt
+#undef vfma
+#undef vabs
+#undef vmax
+#undef vmin
+#undef vexpbits
+#undef vlt
+#undef vle
+#undef vgt
+#undef vge
+#undef veq
+#undef vne
+#undef vsel
+#undef mand
+#undef mor
+#undef mandn
+#undef mnot
+#undef mtrue
+#undef mfalse
+#undef many
+#undef mbits
+#pragma GCC pop_options
+
+#endif
+
+/* ---- blocks of entries ---- */
+
+typedef unsigned (*lanes_fn)(double in[13][8], int shape, double tol, double out[8]);
+
+/* Entries [lo, lo + count), count <= 64, through `lanes` of width w: the fields of each group of
+ * w entries copied into columns (a short last group padded with its first entry). */
+static uint64_t run_lanes(const cdist__job *job, int shape, double tol, size_t lo, size_t count, int w, lanes_fn lanes)
+{
+    uint64_t left = 0;
+    double in[13][8], out[8];
+    for (size_t k = 0; k < count; k += (size_t)w) {
+        int n = count - k < (size_t)w ? (int)(count - k) : w;
+        for (int l = 0; l < w; l++) {
+            size_t i = lo + k + (size_t)(l < n ? l : 0);
+            const double *a = cdist__job_a(job, i), *b = cdist__job_b(job, i);
+            for (int f = 0; f < 6; f++) in[f][l] = a[f];
+            for (int f = 0; f < 7; f++) in[6 + f][l] = b[f];
+        }
+        unsigned l_left = lanes(in, shape, tol, out) & ((1u << n) - 1u);
+        for (int l = 0; l < n; l++)
+            if (!(l_left >> l & 1)) job->distances[lo + k + (size_t)l] = out[l];
+        left |= (uint64_t)l_left << k;
+    }
+    return left;
+}
+
+static uint64_t kernel_scalar(const cdist__job *job, int shape, double tol, size_t lo, size_t count)
+{
+    return run_lanes(job, shape, tol, lo, count, 1, lanes_1);
+}
+
+#ifdef CD_X86_KERNELS
+static uint64_t kernel_avx512(const cdist__job *job, int shape, double tol, size_t lo, size_t count)
+{
+    return run_lanes(job, shape, tol, lo, count, 8, lanes_8);
+}
+
+static uint64_t kernel_avx2(const cdist__job *job, int shape, double tol, size_t lo, size_t count)
+{
+    return run_lanes(job, shape, tol, lo, count, 4, lanes_4);
+}
+
+typedef uint64_t (*kernel_fn)(const cdist__job *, int, double, size_t, size_t);
+
+static kernel_fn pick(void)
+{
+    __builtin_cpu_init();
+    if (__builtin_cpu_supports("avx512f")) return kernel_avx512;
+    if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma")) return kernel_avx2;
+    return kernel_scalar;
+}
+
+uint64_t cdist__line_distance_kernel(const cdist__job *job, int shape, double unit_tol, size_t lo, size_t count)
+{
+    static kernel_fn chosen; /* a benign race: every thread computes the same value */
+    kernel_fn f = __atomic_load_n(&chosen, __ATOMIC_RELAXED);
+    if (!f) {
+        f = pick();
+        __atomic_store_n(&chosen, f, __ATOMIC_RELAXED);
+    }
+    return f(job, shape, unit_tol, lo, count);
+}
+
+#else
+
+uint64_t cdist__line_distance_kernel(const cdist__job *job, int shape, double unit_tol, size_t lo, size_t count)
+{
+    return kernel_scalar(job, shape, unit_tol, lo, count);
+}
+
+#endif

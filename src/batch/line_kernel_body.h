@@ -1,0 +1,390 @@
+/* SPDX-License-Identifier: MIT */
+/* Body of the line/ray/segment-circle distance kernel (src/batch/line_kernel.c), written once
+ * over a lane type and included once per instruction set. The includer defines:
+ *   W              lanes
+ *   V, M           a vector of W doubles and a lane mask
+ *   KN(name)       the name of this instantiation's function `name`
+ *   vset vld vst vadd vsub vmul vdiv vsqrt vfma vabs vmin_sel...: see line_kernel.c
+ * Every operation is the one of the scalar path (validation, src/api/validate.c; framing and
+ * scaling, run_scaled/run/cdist__line_near_centre; the ROBUST core, linear_circle and
+ * robust_roots with cdist__root_newton on fdf_scaled, src/lines/line_circle.c), lane by lane,
+ * in the same order and with the same roundings (fma where the scalar code calls fma, CD_MADD
+ * where it uses CD_MADD): the distance of a lane the kernel answers is bit-identical to the
+ * single query's. A lane whose inputs or intermediate values would take any other branch of the
+ * scalar path (a failed check, a tiny or subnormal vector, the perpendicular or zero-radius
+ * cases, a Newton iteration near the circle's axis, no convergence within the kernel's
+ * iteration cap) is left to the scalar path. */
+
+/* |a| <= CD_MAX_ABS for each component (false for NaN and infinities) */
+static inline M KN(in_range)(V x, V y, V z)
+{
+    V lim = vset(CD_MAX_ABS);
+    return mand(mand(vle(vabs(x), lim), vle(vabs(y), lim)), vle(vabs(z), lim));
+}
+
+static inline V KN(max3)(V x, V y, V z) { return vmax(vmax(vabs(x), vabs(y)), vabs(z)); }
+
+/* fma(a.x, b.x, fma(a.y, b.y, a.z * b.z)) as v_dot */
+static inline V KN(dot)(V ax, V ay, V az, V bx, V by, V bz) { return vfma(ax, bx, vfma(ay, by, vmul(az, bz))); }
+
+/* cdist__fmax / cdist__fmin: a > b ? a : (b == b ? b : a) */
+static inline V KN(fmax)(V a, V b) { return vsel(vgt(a, b), a, vsel(veq(b, b), b, a)); }
+static inline V KN(fmin)(V a, V b) { return vsel(vlt(a, b), a, vsel(veq(b, b), b, a)); }
+
+/* 2^e of a positive normal x (its exponent bits), clamped as cdist__scale_exponent clamps e. */
+static inline V KN(pow2_of)(V x)
+{
+    V p = vexpbits(x);
+    return vmax(vmin(p, vset(0x1p1000)), vset(0x1p-1000));
+}
+
+/* The model of linear_circle (lc_model) in lanes. */
+typedef struct KN(model) {
+    V r, a, m0, x1, ax1, c2, h;
+    V k, rr2, dfc; /* invariants of fdf_scaled: a^2 + m0^2, (|x1| - r)(|x1| + r), -(r m0 m0)(x1^2) */
+} KN(model);
+
+/* fdf_scaled of line_circle.c; *ok cleared where it would call fdf (rho^2 out of range). */
+static inline V KN(fdf_scaled)(const KN(model) *m, V s, V *df, M *ok)
+{
+    V h = vmadd(m->a, s, m->h), x2 = vmadd(m->m0, s, m->c2);
+    V rho2 = vmadd(m->x1, m->x1, vmul(x2, x2));
+    *ok = mand(vge(rho2, vset(0x1p-200)), vle(rho2, vset(0x1p200)));
+    V rho = vsqrt(rho2), rr = vadd(rho, m->r);
+    V num = vmadd(x2, x2, m->rr2);
+    V P = vmul(vmul(rho2, rho), rr);
+    *df = vmadd(m->k, P, vmul(m->dfc, rr));
+    return vmadd(vmul(m->a, h), P, vmul(vmul(m->m0, x2), vmul(num, rho2)));
+}
+
+/* The iterations of cdist__root_newton(fdf_scaled, m, lo, hi, +1, CD_ROOT_REL_ULPS * eps,
+ * CD_ROOT_ABS, ...) from the state (x, lo, hi, dx, dxold) in the lanes of *act, at most `iters`;
+ * a lane that stops writes its root to *res and leaves *act. Lanes meeting a branch the kernel
+ * does not take (fdf instead of fdf_scaled, NaN) are added to *fail. */
+static void KN(iterate)(const KN(model) *m, V *px, V *plo, V *phi, V *pdx, V *pdxold, M *pact, V *pres, M *fail,
+                        int iters)
+{
+    const V rel = vset(CD_ROOT_REL_ULPS * DBL_EPSILON), abs_ = vset(CD_ROOT_ABS), half = vset(0.5), zero = vset(0.0);
+    V x = *px, lo = *plo, hi = *phi, dx = *pdx, dxold = *pdxold, res = *pres;
+    M act = *pact;
+    for (int it = 0; it < iters && many(act); it++) {
+        V df;
+        M rok;
+        V f = KN(fdf_scaled)(m, x, &df, &rok);
+        M bad = mor(mnot(rok), vne(f, f));
+        *fail = mor(*fail, mand(act, bad));
+        act = mandn(bad, act);
+        M z = veq(f, zero);
+        res = vsel(mand(act, z), x, res);
+        act = mandn(z, act);
+        M neg = vlt(f, zero);
+        lo = vsel(mand(act, neg), x, lo);
+        hi = vsel(mandn(neg, act), x, hi);
+        V step = vdiv(f, df), xn = vsub(x, step);
+        M dfpos = vgt(df, zero);
+        V astep = vabs(step);
+        M conv = mand(dfpos, mor(vle(astep, vmul(rel, vabs(x))), vle(astep, abs_)));
+        res = vsel(mand(act, conv), xn, res);
+        act = mandn(conv, act);
+        M inside = mand(vgt(xn, lo), vlt(xn, hi));
+        M bis = mor(mor(mnot(dfpos), mnot(inside)), vgt(vabs(vmul(vset(2.0), f)), vabs(vmul(dxold, df))));
+        V xb = vsel(bis, vmul(half, vadd(lo, hi)), xn);
+        dxold = vsel(act, dx, dxold);
+        dx = vsel(act, vabs(vsub(xb, x)), dx);
+        x = vsel(act, xb, x);
+        M stop = mor(vle(dx, vmul(rel, vabs(x))), mnot(vgt(vsub(hi, lo), abs_)));
+        res = vsel(mand(act, stop), x, res);
+        act = mandn(stop, act);
+    }
+    *px = x, *plo = lo, *phi = hi, *pdx = dx, *pdxold = dxold, *pres = res, *pact = act;
+}
+
+/* cdist__root_newton as above in the lanes of act (the others get lo). The lanes iterate
+ * together for LK_LANE_ITER iterations; a lane still going on (a bracket bisected down to its
+ * end, as when the root lies beyond a ray's start) then finishes alone in the one-lane version,
+ * up to CD_ROOT_MAX_ITER iterations in all, where the scalar path returns its last x. */
+static V KN(newton)(const KN(model) *m, V lo, V hi, M act, M *fail)
+{
+    V res = lo;
+    act = mand(act, vlt(lo, hi));
+    V x = vmul(vset(0.5), vadd(lo, hi)), dxold = vsub(hi, lo), dx = dxold;
+#if W == 1
+    KN(iterate)(m, &x, &lo, &hi, &dx, &dxold, &act, &res, fail, CD_ROOT_MAX_ITER);
+    res = vsel(act, x, res);
+#else
+    KN(iterate)(m, &x, &lo, &hi, &dx, &dxold, &act, &res, fail, LK_LANE_ITER);
+    unsigned rest = mbits(mandn(*fail, act));
+    if (rest) {
+        double f[10][W], st[6][W];
+        const V *mf[10] = {&m->r, &m->a, &m->m0, &m->x1, &m->ax1, &m->c2, &m->h, &m->k, &m->rr2, &m->dfc};
+        for (int k = 0; k < 10; k++) vst(f[k], *mf[k]);
+        vst(st[0], x), vst(st[1], lo), vst(st[2], hi), vst(st[3], dx), vst(st[4], dxold), vst(st[5], res);
+        double flag[W];
+        for (int l = 0; l < W; l++) {
+            flag[l] = 0.0;
+            if (!(rest >> l & 1)) continue;
+            model_1 m1 = {f[0][l], f[1][l], f[2][l], f[3][l], f[4][l], f[5][l], f[6][l], f[7][l], f[8][l], f[9][l]};
+            int a1 = 1, fail1 = 0;
+            iterate_1(&m1, &st[0][l], &st[1][l], &st[2][l], &st[3][l], &st[4][l], &a1, &st[5][l], &fail1,
+                      CD_ROOT_MAX_ITER - LK_LANE_ITER);
+            if (a1) st[5][l] = st[0][l];
+            flag[l] = fail1 ? 1.0 : 0.0;
+        }
+        res = vld(st[5]);
+        *fail = mor(*fail, vgt(vld(flag), vset(0.0)));
+    }
+#endif
+    return res;
+}
+
+/* rho - r of the model (rho_minus_r) */
+static inline V KN(rho_minus_r)(const KN(model) *m, V x2, V rho) { return vdiv(vmadd(x2, x2, m->rr2), vadd(rho, m->r)); }
+
+/* fp_at of line_circle.c at height h and in-plane x2, side -1 or +1 on the axis. */
+static inline V KN(fp_at)(const KN(model) *m, V h, V x2, double side)
+{
+    V rho = vsqrt(vmadd(m->x1, m->x1, vmul(x2, x2)));
+    V on_axis = vsub(vmul(m->a, h), vmul(vmul(vset(side), m->r), m->m0));
+    V off = vmadd(m->a, h, vmul(vmul(m->m0, x2), vdiv(KN(rho_minus_r)(m, x2, rho), rho)));
+    return vsel(veq(rho, vset(0.0)), on_axis, off);
+}
+
+/* Squared distance of offer_model at s, times up twice. */
+static inline V KN(model_d2)(const KN(model) *m, V s, V up)
+{
+    V h = vmadd(m->a, s, m->h), x2 = vmadd(m->m0, s, m->c2);
+    V rho = vsqrt(vmadd(m->x1, m->x1, vmul(x2, x2)));
+    V dr = KN(rho_minus_r)(m, x2, rho);
+    return vmul(vmul(vmadd(h, h, vmul(dr, dr)), up), up);
+}
+
+/* offer_end's squared distance: the point B + t M against the circle (normal n, radius r). */
+static inline V KN(end_d2)(V Bx, V By, V Bz, V Mx, V My, V Mz, V t, V nx, V ny, V nz, V r)
+{
+    V Px = vfma(t, Mx, Bx), Py = vfma(t, My, By), Pz = vfma(t, Mz, Bz);
+    V qx = vsub(vmul(ny, Pz), vmul(nz, Py)), qy = vsub(vmul(nz, Px), vmul(nx, Pz)), qz = vsub(vmul(nx, Py), vmul(ny, Px));
+    V h = KN(dot)(nx, ny, nz, Px, Py, Pz);
+    V rho = vsqrt(KN(dot)(qx, qy, qz, qx, qy, qz));
+    V dr = vsub(rho, r);
+    return vfma(dr, dr, vmul(h, h));
+}
+
+/* W lanes (W <= 8): in[f][l] is field f of lane l (the first object's six numbers, then the circle's
+ * seven). shape: LK_LINE, LK_RAY or LK_SEGMENT. Writes out[l] and returns the mask (bit l) of
+ * the lanes left to the scalar path. */
+static unsigned KN(lanes)(double in[13][8], int shape, double tol, double out[8])
+{
+    const V zero = vset(0.0), one = vset(1.0);
+    V ax = vld(in[0]), ay = vld(in[1]), az = vld(in[2]), bx = vld(in[3]), by = vld(in[4]), bz = vld(in[5]);
+    V cx = vld(in[6]), cy = vld(in[7]), cz = vld(in[8]), ndx = vld(in[9]), ndy = vld(in[10]), ndz = vld(in[11]);
+    V r = vld(in[12]);
+
+    /* ---- validation: cdist__check_point / cdist__check_direction / circle_fast ---- */
+    M ok = mand(mand(KN(in_range)(ax, ay, az), KN(in_range)(bx, by, bz)), KN(in_range)(cx, cy, cz));
+    ok = mand(ok, mand(KN(in_range)(ndx, ndy, ndz), mand(vge(r, zero), vle(r, vset(CD_MAX_ABS)))));
+    V nm = KN(max3)(ndx, ndy, ndz);
+    ok = mand(ok, vge(nm, vset(0x1p-500)));
+    V inm = vdiv(one, nm);
+    V sdx = vmul(inm, ndx), sdy = vmul(inm, ndy), sdz = vmul(inm, ndz);
+    V nns = vsqrt(KN(dot)(sdx, sdy, sdz, sdx, sdy, sdz));
+    ok = mand(ok, vle(vabs(vsub(vmul(nm, nns), one)), vset(tol)));
+    V inns = vdiv(one, nns);
+    V nx = vmul(inns, sdx), ny = vmul(inns, sdy), nz = vmul(inns, sdz);
+    /* v_basis: e = the axis of the smallest |n_k| (first on ties), u = normalise(e - (e.n) n), v = n x u */
+    V anx = vabs(nx), any = vabs(ny), anz = vabs(nz);
+    M kx = mand(vle(anx, any), vle(anx, anz));
+    M ky = mandn(kx, vle(any, anz));
+    M kz = mandn(mor(kx, ky), mtrue());
+    V ex = vsel(kx, one, zero), ey = vsel(ky, one, zero), ez = vsel(kz, one, zero);
+    V edn = vneg(KN(dot)(ex, ey, ez, nx, ny, nz));
+    V wx = vfma(edn, nx, ex), wy = vfma(edn, ny, ey), wz = vfma(edn, nz, ez);
+    V iw = vdiv(one, vsqrt(KN(dot)(wx, wy, wz, wx, wy, wz)));
+    V ux = vmul(iw, wx), uy = vmul(iw, wy), uz = vmul(iw, wz);
+    V vx = vsub(vmul(ny, uz), vmul(nz, uy)), vy = vsub(vmul(nz, ux), vmul(nx, uz)), vz = vsub(vmul(nx, uy), vmul(ny, ux));
+
+    /* ---- the first object: origin O, direction D (as the caller's, then scaled), unit M ---- */
+    V Ox = ax, Oy = ay, Oz = az, Dx, Dy, Dz;
+    V L;
+    if (shape == LK_SEGMENT) {
+        Dx = vsub(bx, ax), Dy = vsub(by, ay), Dz = vsub(bz, az);
+        L = KN(fmax)(r, KN(max3)(vsub(ax, cx), vsub(ay, cy), vsub(az, cz)));
+        L = KN(fmax)(L, KN(max3)(vsub(bx, cx), vsub(by, cy), vsub(bz, cz)));
+    } else {
+        Dx = bx, Dy = by, Dz = bz;
+        L = KN(fmax)(r, KN(max3)(vsub(ax, cx), vsub(ay, cy), vsub(az, cz)));
+    }
+    /* run_scaled: scale exponent of L (normal L only) */
+    ok = mand(ok, vge(L, vset(0x1p-1022)));
+    V UP = KN(pow2_of)(L), down = vdiv(one, UP);
+    cx = vmul(down, cx), cy = vmul(down, cy), cz = vmul(down, cz);
+    r = vmul(r, down);
+    Ox = vmul(down, Ox), Oy = vmul(down, Oy), Oz = vmul(down, Oz);
+    V dm, len, Mx, My, Mz;
+    if (shape == LK_SEGMENT) {
+        /* scaled before the normalisation; any length */
+        Dx = vmul(down, Dx), Dy = vmul(down, Dy), Dz = vmul(down, Dz);
+        dm = KN(max3)(Dx, Dy, Dz);
+        ok = mand(ok, vge(dm, vset(0x1p-500)));
+        V idm = vdiv(one, dm);
+        V sx = vmul(idm, Dx), sy = vmul(idm, Dy), sz = vmul(idm, Dz);
+        V ns = vsqrt(KN(dot)(sx, sy, sz, sx, sy, sz));
+        len = vmul(ns, dm);
+        V ins = vdiv(one, ns);
+        Mx = vmul(ins, sx), My = vmul(ins, sy), Mz = vmul(ins, sz);
+    } else {
+        /* unit within tol, normalised before the scaling */
+        dm = KN(max3)(Dx, Dy, Dz);
+        ok = mand(ok, vge(dm, vset(0x1p-500)));
+        V idm = vdiv(one, dm);
+        V sx = vmul(idm, Dx), sy = vmul(idm, Dy), sz = vmul(idm, Dz);
+        V ns = vsqrt(KN(dot)(sx, sy, sz, sx, sy, sz));
+        len = vmul(ns, dm);
+        ok = mand(ok, vle(vabs(vsub(len, one)), vset(tol)));
+        V ins = vdiv(one, ns);
+        Mx = vmul(ins, sx), My = vmul(ins, sy), Mz = vmul(ins, sz);
+        Dx = vmul(down, Dx), Dy = vmul(down, Dy), Dz = vmul(down, Dz);
+        len = vmul(len, down);
+    }
+    V tmin = vset(shape == LK_LINE ? -INFINITY : 0.0), tmax = vset(shape == LK_SEGMENT ? 1.0 : INFINITY);
+
+    /* ---- cdist__line_near_centre: origin - C exactly (TwoSum), moved to the point nearest C ---- */
+    V hx = vsub(Ox, cx), hy = vsub(Oy, cy), hz = vsub(Oz, cz);
+    V lx, ly, lz;
+    {
+        V b, mcx = vneg(cx), mcy = vneg(cy), mcz = vneg(cz);
+        b = vsub(hx, Ox), lx = vadd(vsub(Ox, vsub(hx, b)), vsub(mcx, b));
+        b = vsub(hy, Oy), ly = vadd(vsub(Oy, vsub(hy, b)), vsub(mcy, b));
+        b = vsub(hz, Oz), lz = vadd(vsub(Oz, vsub(hz, b)), vsub(mcz, b));
+    }
+    V m = KN(max3)(Dx, Dy, Dz);
+    ok = mand(ok, mand(vge(m, vset(0x1p-1021)), vlt(m, vset(0x1p1022))));
+    V p = vdiv(one, vexpbits(m));
+    V Dsx = vmul(p, Dx), Dsy = vmul(p, Dy), Dsz = vmul(p, Dz);
+    V t = vmul(vneg(vdiv(KN(dot)(hx, hy, hz, Dsx, Dsy, Dsz), KN(dot)(Dsx, Dsy, Dsz, Dsx, Dsy, Dsz))), p);
+    t = vsel(vle(vabs(t), vset(DBL_MAX)), t, zero);
+    t = KN(fmin)(KN(fmax)(t, tmin), tmax);
+    V Bx = vadd(vfma(t, Dx, hx), lx), By = vadd(vfma(t, Dy, hy), ly), Bz = vadd(vfma(t, Dz, hz), lz);
+    /* run: the range in units of M */
+    V lo = vsel(veq(tmin, t), zero, vmul(vsub(tmin, t), len));
+    V hi = vsel(veq(tmax, t), zero, vmul(vsub(tmax, t), len));
+
+    /* ---- linear_circle (ROBUST) ---- */
+    ok = mand(ok, vlt(lo, hi));
+    ok = mand(ok, mand(KN(in_range)(Bx, By, Bz), vgt(r, zero))); /* finite B (|B| <= 4 here); r = 0: scalar */
+    V t0 = vneg(KN(dot)(Bx, By, Bz, Mx, My, Mz));
+    V B0x = vfma(t0, Mx, Bx), B0y = vfma(t0, My, By), B0z = vfma(t0, Mz, Bz);
+    V dt = vneg(KN(dot)(B0x, B0y, B0z, Mx, My, Mz));
+    M cor = vne(dt, zero);
+    t0 = vsel(cor, vadd(t0, dt), t0);
+    B0x = vsel(cor, vfma(t0, Mx, Bx), B0x), B0y = vsel(cor, vfma(t0, My, By), B0y), B0z = vsel(cor, vfma(t0, Mz, Bz), B0z);
+    V umin = vsub(lo, t0), umax = vsub(hi, t0);
+    V S = KN(fmax)(r, vsqrt(KN(dot)(B0x, B0y, B0z, B0x, B0y, B0z)));
+    ok = mand(ok, vge(S, vset(0x1p-1022)));
+    V up = KN(pow2_of)(S), sg = vdiv(one, up);
+    V Bsx = vmul(sg, B0x), Bsy = vmul(sg, B0y), Bsz = vmul(sg, B0z);
+    V rs = vmul(r, sg);
+    umin = vmul(umin, sg), umax = vmul(umax, sg);
+    V wwx = vsub(vmul(ny, Mz), vmul(nz, My)), wwy = vsub(vmul(nz, Mx), vmul(nx, Mz)), wwz = vsub(vmul(nx, My), vmul(ny, Mx));
+    V nbx = vsub(vmul(ny, Bsz), vmul(nz, Bsy)), nby = vsub(vmul(nz, Bsx), vmul(nx, Bsz)),
+      nbz = vsub(vmul(nx, Bsy), vmul(ny, Bsx));
+    V m2x = KN(dot)(vx, vy, vz, wwx, wwy, wwz), m2y = vneg(KN(dot)(ux, uy, uz, wwx, wwy, wwz));
+    V b2x = KN(dot)(vx, vy, vz, nbx, nby, nbz), b2y = vneg(KN(dot)(ux, uy, uz, nbx, nby, nbz));
+    V a = KN(dot)(nx, ny, nz, Mx, My, Mz), h0 = KN(dot)(nx, ny, nz, Bsx, Bsy, Bsz);
+    V m0 = vsqrt(vadd(vmul(m2x, m2x), vmul(m2y, m2y)));
+    ok = mand(ok, vgt(m0, vset(CD_LC_PERP_ULPS * DBL_EPSILON))); /* perpendicular to the plane: scalar */
+
+    KN(model) md;
+    md.r = rs;
+    md.a = a;
+    md.m0 = m0;
+    V e2x = vdiv(m2x, m0), e2y = vdiv(m2y, m0);
+    md.x1 = vsub(vmul(e2x, b2y), vmul(e2y, b2x));
+    md.ax1 = vabs(md.x1);
+    V c2 = vfma(e2x, b2x, vmul(e2y, b2y));
+    V us = vneg(vdiv(c2, m0));
+    M canon = vle(vabs(us), vset(4.0));
+    V uO = vsel(canon, us, zero);
+    md.c2 = vsel(canon, zero, c2);
+    md.h = vsel(canon, vfma(a, us, h0), h0);
+    V smin = vsub(umin, uO), smax = vsub(umax, uO);
+    md.k = vmadd(a, a, vmul(m0, m0));
+    md.rr2 = vmul(vsub(md.ax1, rs), vadd(md.ax1, rs));
+    md.dfc = vmul(vneg(vmul(vmul(rs, m0), m0)), vmul(md.ax1, md.ax1));
+
+    /* robust_roots: one bracket where F' increases everywhere, else up to one per branch */
+    V mu = vfma(a, md.h, vmul(m0, md.c2));
+    V rm0 = vmul(rs, m0);
+    V blo = vsub(vneg(mu), rm0), bhi = vadd(vneg(mu), rm0);
+    M single = vle(vmul(rm0, m0), md.ax1);
+    M two = mandn(single, ok);
+    V loA = blo, hiA = bhi, loB = blo, hiB = bhi;
+    M hasA = single, hasB = mfalse();
+    if (many(two)) {
+        /* the cube roots are the C library's, lane by lane, for bit-identical brackets */
+        double c1[W], c2v[W], o1[W], o2[W];
+        vst(c1, vmul(m0, md.ax1));
+        vst(c2v, rs);
+        unsigned tb = mbits(two);
+        for (int l = 0; l < W; l++) {
+            o1[l] = (tb >> l & 1) ? cbrt(c1[l]) : 0.0;
+            o2[l] = (tb >> l & 1) ? cbrt(c2v[l]) : 0.0;
+        }
+        V cm = vld(o1);
+        V rhohat = vmul(vmul(vld(o2), cm), cm);
+        V x2hat = vsqrt(KN(fmax)(zero, vmul(vsub(rhohat, md.ax1), vadd(rhohat, md.ax1))));
+        V sc = vneg(vdiv(md.c2, m0));
+        V xm = vdiv(x2hat, m0);
+        V sL = vsub(sc, xm), sR = vadd(sc, xm);
+        V fL = KN(fp_at)(&md, vfma(a, sL, md.h), vneg(x2hat), -1.0);
+        V fR = KN(fp_at)(&md, vfma(a, sR, md.h), x2hat, +1.0);
+        M left = vge(fL, zero), right = vle(fR, zero);
+        M neither = mnot(mor(left, right));
+        left = mor(left, neither), right = mor(right, neither);
+        M tA = mand(two, mand(left, vle(blo, sL)));
+        M tB = mand(two, mand(right, vle(sR, bhi)));
+        hiA = vsel(two, KN(fmin)(sL, bhi), hiA);
+        loB = KN(fmax)(sR, blo);
+        hasA = mor(mand(single, ok), tA);
+        hasB = tB;
+    }
+    hasA = mand(hasA, ok);
+    hasB = mand(hasB, ok);
+    /* clipped to the range; an empty bracket has no root */
+    loA = KN(fmax)(loA, smin), hiA = KN(fmin)(hiA, smax);
+    loB = KN(fmax)(loB, smin), hiB = KN(fmin)(hiB, smax);
+    hasA = mandn(vgt(loA, hiA), hasA);
+    hasB = mandn(vgt(loB, hiB), hasB);
+    M fail = mfalse();
+    V best = vset(INFINITY);
+    M any_cand = mfalse();
+    if (many(hasA)) {
+        V s = KN(newton)(&md, loA, hiA, hasA, &fail);
+        V d2 = KN(model_d2)(&md, s, up);
+        best = vsel(hasA, vmin(best, d2), best);
+        fail = mor(fail, mand(hasA, vne(d2, d2)));
+        any_cand = hasA;
+    }
+    if (many(hasB)) {
+        V s = KN(newton)(&md, loB, hiB, hasB, &fail);
+        V d2 = KN(model_d2)(&md, s, up);
+        best = vsel(hasB, vmin(best, d2), best);
+        fail = mor(fail, mand(hasB, vne(d2, d2)));
+        any_cand = mor(any_cand, hasB);
+    }
+    if (shape != LK_LINE) { /* the finite ends (offer_end), in the units of the core's range */
+        V d2 = KN(end_d2)(Bx, By, Bz, Mx, My, Mz, lo, nx, ny, nz, r);
+        best = vmin(best, d2);
+        fail = mor(fail, vne(d2, d2));
+        if (shape == LK_SEGMENT) {
+            d2 = KN(end_d2)(Bx, By, Bz, Mx, My, Mz, hi, nx, ny, nz, r);
+            best = vmin(best, d2);
+            fail = mor(fail, vne(d2, d2));
+        }
+        any_cand = mtrue();
+    }
+    ok = mand(mandn(fail, ok), any_cand);
+    V d = vmul(vsqrt(best), UP);
+    ok = mand(ok, vle(d, vset(DBL_MAX)));
+    vst(out, d);
+    return mbits(mnot(ok));
+}
