@@ -26,6 +26,17 @@ enum { LK_LINE = 0, LK_RAY = 1, LK_SEGMENT = 2 };
  * needs more finishes alone. */
 #define LK_LANE_ITER 12
 
+static inline int lk_lowest_bit(unsigned x)
+{
+#if defined(__GNUC__)
+    return __builtin_ctz(x);
+#else
+    int k = 0;
+    while (!(x >> k & 1)) k++;
+    return k;
+#endif
+}
+
 /* CD_MADD of the scalar code: a hardware fma only when the whole build targets it. */
 #ifdef FP_FAST_FMA
 #define vmadd(a, b, c) vfma(a, b, c)
@@ -57,6 +68,15 @@ static inline double vexpbits(double x)
     uint64_t u;
     memcpy(&u, &x, sizeof u);
     u &= 0x7ff0000000000000ull;
+    memcpy(&x, &u, sizeof u);
+    return x;
+}
+/* 1 / x of a power of two x in [2^-1021, 2^1022] (exact), from its exponent field */
+static inline double vrecip2(double x)
+{
+    uint64_t u;
+    memcpy(&u, &x, sizeof u);
+    u = 0x7fe0000000000000ull - u;
     memcpy(&x, &u, sizeof u);
     return x;
 }
@@ -131,6 +151,8 @@ static inline double vexpbits(double x)
 #define vmin _mm512_min_pd
 #define vexpbits(x) \
     _mm512_castsi512_pd(_mm512_and_si512(_mm512_castpd_si512(x), _mm512_set1_epi64(0x7ff0000000000000ll)))
+#define vrecip2(x) \
+    _mm512_castsi512_pd(_mm512_sub_epi64(_mm512_set1_epi64(0x7fe0000000000000ll), _mm512_castpd_si512(x)))
 #define vlt(a, b) _mm512_cmp_pd_mask(a, b, _CMP_LT_OQ)
 #define vle(a, b) _mm512_cmp_pd_mask(a, b, _CMP_LE_OQ)
 #define vgt(a, b) _mm512_cmp_pd_mask(a, b, _CMP_GT_OQ)
@@ -165,6 +187,7 @@ static inline double vexpbits(double x)
 #undef vmax
 #undef vmin
 #undef vexpbits
+#undef vrecip2
 #undef vlt
 #undef vle
 #undef vgt
@@ -204,6 +227,8 @@ static inline double vexpbits(double x)
 #define vmax _mm256_max_pd
 #define vmin _mm256_min_pd
 #define vexpbits(x) _mm256_and_pd(x, _mm256_castsi256_pd(_mm256_set1_epi64x(0x7ff0000000000000ll)))
+#define vrecip2(x) \
+    _mm256_castsi256_pd(_mm256_sub_epi64(_mm256_set1_epi64x(0x7fe0000000000000ll), _mm256_castpd_si256(x)))
 #define vlt(a, b) _mm256_cmp_pd(a, b, _CMP_LT_OQ)
 #define vle(a, b) _mm256_cmp_pd(a, b, _CMP_LE_OQ)
 #define vgt(a, b) _mm256_cmp_pd(a, b, _CMP_GT_OQ)
@@ -238,6 +263,7 @@ static inline double vexpbits(double x)
 #undef vmax
 #undef vmin
 #undef vexpbits
+#undef vrecip2
 #undef vlt
 #undef vle
 #undef vgt

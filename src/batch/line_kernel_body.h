@@ -16,23 +16,23 @@
  * iteration cap) is left to the scalar path. */
 
 /* |a| <= CD_MAX_ABS for each component (false for NaN and infinities) */
-static inline M KN(in_range)(V x, V y, V z)
+CD_INLINE M KN(in_range)(V x, V y, V z)
 {
     V lim = vset(CD_MAX_ABS);
     return mand(mand(vle(vabs(x), lim), vle(vabs(y), lim)), vle(vabs(z), lim));
 }
 
-static inline V KN(max3)(V x, V y, V z) { return vmax(vmax(vabs(x), vabs(y)), vabs(z)); }
+CD_INLINE V KN(max3)(V x, V y, V z) { return vmax(vmax(vabs(x), vabs(y)), vabs(z)); }
 
 /* fma(a.x, b.x, fma(a.y, b.y, a.z * b.z)) as v_dot */
-static inline V KN(dot)(V ax, V ay, V az, V bx, V by, V bz) { return vfma(ax, bx, vfma(ay, by, vmul(az, bz))); }
+CD_INLINE V KN(dot)(V ax, V ay, V az, V bx, V by, V bz) { return vfma(ax, bx, vfma(ay, by, vmul(az, bz))); }
 
 /* cdist__fmax / cdist__fmin: a > b ? a : (b == b ? b : a) */
-static inline V KN(fmax)(V a, V b) { return vsel(vgt(a, b), a, vsel(veq(b, b), b, a)); }
-static inline V KN(fmin)(V a, V b) { return vsel(vlt(a, b), a, vsel(veq(b, b), b, a)); }
+CD_INLINE V KN(fmax)(V a, V b) { return vsel(vgt(a, b), a, vsel(veq(b, b), b, a)); }
+CD_INLINE V KN(fmin)(V a, V b) { return vsel(vlt(a, b), a, vsel(veq(b, b), b, a)); }
 
 /* 2^e of a positive normal x (its exponent bits), clamped as cdist__scale_exponent clamps e. */
-static inline V KN(pow2_of)(V x)
+CD_INLINE V KN(pow2_of)(V x)
 {
     V p = vexpbits(x);
     return vmax(vmin(p, vset(0x1p1000)), vset(0x1p-1000));
@@ -45,7 +45,7 @@ typedef struct KN(model) {
 } KN(model);
 
 /* fdf_scaled of line_circle.c; *ok cleared where it would call fdf (rho^2 out of range). */
-static inline V KN(fdf_scaled)(const KN(model) *m, V s, V *df, M *ok)
+CD_INLINE V KN(fdf_scaled)(const KN(model) *m, V s, V *df, M *ok)
 {
     V h = vmadd(m->a, s, m->h), x2 = vmadd(m->m0, s, m->c2);
     V rho2 = vmadd(m->x1, m->x1, vmul(x2, x2));
@@ -57,91 +57,116 @@ static inline V KN(fdf_scaled)(const KN(model) *m, V s, V *df, M *ok)
     return vmadd(vmul(m->a, h), P, vmul(vmul(m->m0, x2), vmul(num, rho2)));
 }
 
-/* The iterations of cdist__root_newton(fdf_scaled, m, lo, hi, +1, CD_ROOT_REL_ULPS * eps,
- * CD_ROOT_ABS, ...) from the state (x, lo, hi, dx, dxold) in the lanes of *act, at most `iters`;
- * a lane that stops writes its root to *res and leaves *act. Lanes meeting a branch the kernel
- * does not take (fdf instead of fdf_scaled, NaN) are added to *fail. */
-static void KN(iterate)(const KN(model) *m, V *px, V *plo, V *phi, V *pdx, V *pdxold, M *pact, V *pres, M *fail,
-                        int iters)
+/* The state of cdist__root_newton(fdf_scaled, m, lo, hi, +1, CD_ROOT_REL_ULPS * eps, CD_ROOT_ABS,
+ * CD_ROOT_MAX_ITER) in each lane: act = still iterating, res = the root of a lane that stopped. */
+typedef struct KN(newton) {
+    V x, lo, hi, dx, dxold, res;
+    M act;
+} KN(newton);
+
+CD_INLINE KN(newton) KN(newton_start)(V lo, V hi, M act)
 {
-    const V rel = vset(CD_ROOT_REL_ULPS * DBL_EPSILON), abs_ = vset(CD_ROOT_ABS), half = vset(0.5), zero = vset(0.0);
-    V x = *px, lo = *plo, hi = *phi, dx = *pdx, dxold = *pdxold, res = *pres;
-    M act = *pact;
-    for (int it = 0; it < iters && many(act); it++) {
-        V df;
-        M rok;
-        V f = KN(fdf_scaled)(m, x, &df, &rok);
-        M bad = mor(mnot(rok), vne(f, f));
-        *fail = mor(*fail, mand(act, bad));
-        act = mandn(bad, act);
-        M z = veq(f, zero);
-        res = vsel(mand(act, z), x, res);
-        act = mandn(z, act);
-        M neg = vlt(f, zero);
-        lo = vsel(mand(act, neg), x, lo);
-        hi = vsel(mandn(neg, act), x, hi);
-        V step = vdiv(f, df), xn = vsub(x, step);
-        M dfpos = vgt(df, zero);
-        V astep = vabs(step);
-        M conv = mand(dfpos, mor(vle(astep, vmul(rel, vabs(x))), vle(astep, abs_)));
-        res = vsel(mand(act, conv), xn, res);
-        act = mandn(conv, act);
-        M inside = mand(vgt(xn, lo), vlt(xn, hi));
-        M bis = mor(mor(mnot(dfpos), mnot(inside)), vgt(vabs(vmul(vset(2.0), f)), vabs(vmul(dxold, df))));
-        V xb = vsel(bis, vmul(half, vadd(lo, hi)), xn);
-        dxold = vsel(act, dx, dxold);
-        dx = vsel(act, vabs(vsub(xb, x)), dx);
-        x = vsel(act, xb, x);
-        M stop = mor(vle(dx, vmul(rel, vabs(x))), mnot(vgt(vsub(hi, lo), abs_)));
-        res = vsel(mand(act, stop), x, res);
-        act = mandn(stop, act);
-    }
-    *px = x, *plo = lo, *phi = hi, *pdx = dx, *pdxold = dxold, *pres = res, *pact = act;
+    KN(newton) s;
+    s.res = lo; /* also the answer of an empty bracket */
+    s.act = mand(act, vlt(lo, hi));
+    s.x = vmul(vset(0.5), vadd(lo, hi));
+    s.lo = lo, s.hi = hi;
+    s.dxold = vsub(hi, lo), s.dx = s.dxold;
+    return s;
 }
 
-/* cdist__root_newton as above in the lanes of act (the others get lo). The lanes iterate
- * together for LK_LANE_ITER iterations; a lane still going on (a bracket bisected down to its
- * end, as when the root lies beyond a ray's start) then finishes alone in the one-lane version,
- * up to CD_ROOT_MAX_ITER iterations in all, where the scalar path returns its last x. */
-static V KN(newton)(const KN(model) *m, V lo, V hi, M act, M *fail)
+/* One iteration in the lanes of s->act; a lane that stops writes s->res and leaves s->act. Lanes
+ * meeting a branch the kernel does not take (fdf instead of fdf_scaled, NaN) are added to *fail. */
+CD_INLINE void KN(newton_step)(const KN(model) *m, KN(newton) *s, M *fail)
 {
-    V res = lo;
-    act = mand(act, vlt(lo, hi));
-    V x = vmul(vset(0.5), vadd(lo, hi)), dxold = vsub(hi, lo), dx = dxold;
-#if W == 1
-    KN(iterate)(m, &x, &lo, &hi, &dx, &dxold, &act, &res, fail, CD_ROOT_MAX_ITER);
-    res = vsel(act, x, res);
-#else
-    KN(iterate)(m, &x, &lo, &hi, &dx, &dxold, &act, &res, fail, LK_LANE_ITER);
-    unsigned rest = mbits(mandn(*fail, act));
-    if (rest) {
-        double f[10][W], st[6][W];
-        const V *mf[10] = {&m->r, &m->a, &m->m0, &m->x1, &m->ax1, &m->c2, &m->h, &m->k, &m->rr2, &m->dfc};
-        for (int k = 0; k < 10; k++) vst(f[k], *mf[k]);
-        vst(st[0], x), vst(st[1], lo), vst(st[2], hi), vst(st[3], dx), vst(st[4], dxold), vst(st[5], res);
-        double flag[W];
-        for (int l = 0; l < W; l++) {
-            flag[l] = 0.0;
-            if (!(rest >> l & 1)) continue;
-            model_1 m1 = {f[0][l], f[1][l], f[2][l], f[3][l], f[4][l], f[5][l], f[6][l], f[7][l], f[8][l], f[9][l]};
-            int a1 = 1, fail1 = 0;
-            iterate_1(&m1, &st[0][l], &st[1][l], &st[2][l], &st[3][l], &st[4][l], &a1, &st[5][l], &fail1,
-                      CD_ROOT_MAX_ITER - LK_LANE_ITER);
-            if (a1) st[5][l] = st[0][l];
-            flag[l] = fail1 ? 1.0 : 0.0;
-        }
-        res = vld(st[5]);
-        *fail = mor(*fail, vgt(vld(flag), vset(0.0)));
+    const V rel = vset(CD_ROOT_REL_ULPS * DBL_EPSILON), abs_ = vset(CD_ROOT_ABS), half = vset(0.5), zero = vset(0.0);
+    V x = s->x, lo = s->lo, hi = s->hi, res = s->res;
+    M act = s->act;
+    V df;
+    M rok;
+    V f = KN(fdf_scaled)(m, x, &df, &rok);
+    M bad = mor(mnot(rok), vne(f, f));
+    *fail = mor(*fail, mand(act, bad));
+    act = mandn(bad, act);
+    M z = veq(f, zero);
+    res = vsel(mand(act, z), x, res);
+    act = mandn(z, act);
+    M neg = vlt(f, zero);
+    lo = vsel(mand(act, neg), x, lo);
+    hi = vsel(mandn(neg, act), x, hi);
+    V step = vdiv(f, df), xn = vsub(x, step);
+    M dfpos = vgt(df, zero);
+    V astep = vabs(step);
+    M conv = mand(dfpos, mor(vle(astep, vmul(rel, vabs(x))), vle(astep, abs_)));
+    res = vsel(mand(act, conv), xn, res);
+    act = mandn(conv, act);
+    M inside = mand(vgt(xn, lo), vlt(xn, hi));
+    M bis = mor(mor(mnot(dfpos), mnot(inside)), vgt(vabs(vmul(vset(2.0), f)), vabs(vmul(s->dxold, df))));
+    V xb = vsel(bis, vmul(half, vadd(lo, hi)), xn);
+    s->dxold = vsel(act, s->dx, s->dxold);
+    V dx = vsel(act, vabs(vsub(xb, x)), s->dx);
+    x = vsel(act, xb, x);
+    M stop = mor(vle(dx, vmul(rel, vabs(x))), mnot(vgt(vsub(hi, lo), abs_)));
+    res = vsel(mand(act, stop), x, res);
+    act = mandn(stop, act);
+    s->x = x, s->lo = lo, s->hi = hi, s->dx = dx, s->res = res, s->act = act;
+}
+
+#if W > 1
+/* A lane still iterating after LK_LANE_ITER iterations (a bracket bisected down to its end, as
+ * when the root lies beyond a ray's start) finishes alone in the one-lane version, up to
+ * CD_ROOT_MAX_ITER iterations in all; the scalar path then returns its last x. */
+static void KN(newton_finish)(const KN(model) *m, KN(newton) *s, M *fail)
+{
+    unsigned rest = mbits(mandn(*fail, s->act));
+    if (!rest) return;
+    double f[10][W], st[6][W], flag[W];
+    const V *mf[10] = {&m->r, &m->a, &m->m0, &m->x1, &m->ax1, &m->c2, &m->h, &m->k, &m->rr2, &m->dfc};
+    for (int k = 0; k < 10; k++) vst(f[k], *mf[k]);
+    vst(st[0], s->x), vst(st[1], s->lo), vst(st[2], s->hi), vst(st[3], s->dx), vst(st[4], s->dxold);
+    vst(st[5], s->res);
+    for (int l = 0; l < W; l++) {
+        flag[l] = 0.0;
+        if (!(rest >> l & 1)) continue;
+        model_1 m1 = {f[0][l], f[1][l], f[2][l], f[3][l], f[4][l], f[5][l], f[6][l], f[7][l], f[8][l], f[9][l]};
+        newton_1 s1 = {st[0][l], st[1][l], st[2][l], st[3][l], st[4][l], st[5][l], 1};
+        int fail1 = 0;
+        for (int it = LK_LANE_ITER; it < CD_ROOT_MAX_ITER && s1.act; it++) newton_step_1(&m1, &s1, &fail1);
+        st[5][l] = s1.act ? s1.x : s1.res;
+        flag[l] = fail1 ? 1.0 : 0.0;
     }
+    s->res = vld(st[5]);
+    s->act = mfalse();
+    *fail = mor(*fail, vgt(vld(flag), vset(0.0)));
+}
 #endif
-    return res;
+
+/* The roots of the brackets [loA, hiA] in the lanes of actA and [loB, hiB] in those of actB,
+ * iterated together (two independent chains). */
+static void KN(newton_solve)(const KN(model) *m, KN(newton) *a, KN(newton) *b, M *fail)
+{
+#if W == 1
+    for (int it = 0; it < CD_ROOT_MAX_ITER && a->act; it++) KN(newton_step)(m, a, fail);
+    for (int it = 0; it < CD_ROOT_MAX_ITER && b->act; it++) KN(newton_step)(m, b, fail);
+    a->res = a->act ? a->x : a->res;
+    b->res = b->act ? b->x : b->res;
+#else
+    int it = 0;
+    for (; it < LK_LANE_ITER && many(b->act); it++) {
+        KN(newton_step)(m, a, fail);
+        KN(newton_step)(m, b, fail);
+    }
+    for (; it < LK_LANE_ITER && many(a->act); it++) KN(newton_step)(m, a, fail);
+    KN(newton_finish)(m, a, fail);
+    KN(newton_finish)(m, b, fail);
+#endif
 }
 
 /* rho - r of the model (rho_minus_r) */
-static inline V KN(rho_minus_r)(const KN(model) *m, V x2, V rho) { return vdiv(vmadd(x2, x2, m->rr2), vadd(rho, m->r)); }
+CD_INLINE V KN(rho_minus_r)(const KN(model) *m, V x2, V rho) { return vdiv(vmadd(x2, x2, m->rr2), vadd(rho, m->r)); }
 
 /* fp_at of line_circle.c at height h and in-plane x2, side -1 or +1 on the axis. */
-static inline V KN(fp_at)(const KN(model) *m, V h, V x2, double side)
+CD_INLINE V KN(fp_at)(const KN(model) *m, V h, V x2, double side)
 {
     V rho = vsqrt(vmadd(m->x1, m->x1, vmul(x2, x2)));
     V on_axis = vsub(vmul(m->a, h), vmul(vmul(vset(side), m->r), m->m0));
@@ -150,7 +175,7 @@ static inline V KN(fp_at)(const KN(model) *m, V h, V x2, double side)
 }
 
 /* Squared distance of offer_model at s, times up twice. */
-static inline V KN(model_d2)(const KN(model) *m, V s, V up)
+CD_INLINE V KN(model_d2)(const KN(model) *m, V s, V up)
 {
     V h = vmadd(m->a, s, m->h), x2 = vmadd(m->m0, s, m->c2);
     V rho = vsqrt(vmadd(m->x1, m->x1, vmul(x2, x2)));
@@ -159,7 +184,7 @@ static inline V KN(model_d2)(const KN(model) *m, V s, V up)
 }
 
 /* offer_end's squared distance: the point B + t M against the circle (normal n, radius r). */
-static inline V KN(end_d2)(V Bx, V By, V Bz, V Mx, V My, V Mz, V t, V nx, V ny, V nz, V r)
+CD_INLINE V KN(end_d2)(V Bx, V By, V Bz, V Mx, V My, V Mz, V t, V nx, V ny, V nz, V r)
 {
     V Px = vfma(t, Mx, Bx), Py = vfma(t, My, By), Pz = vfma(t, Mz, Bz);
     V qx = vsub(vmul(ny, Pz), vmul(nz, Py)), qy = vsub(vmul(nz, Px), vmul(nx, Pz)), qz = vsub(vmul(nx, Py), vmul(ny, Px));
@@ -215,7 +240,7 @@ static unsigned KN(lanes)(double in[13][8], int shape, double tol, double out[8]
     }
     /* run_scaled: scale exponent of L (normal L only) */
     ok = mand(ok, vge(L, vset(0x1p-1022)));
-    V UP = KN(pow2_of)(L), down = vdiv(one, UP);
+    V UP = KN(pow2_of)(L), down = vrecip2(UP);
     cx = vmul(down, cx), cy = vmul(down, cy), cz = vmul(down, cz);
     r = vmul(r, down);
     Ox = vmul(down, Ox), Oy = vmul(down, Oy), Oz = vmul(down, Oz);
@@ -258,7 +283,7 @@ static unsigned KN(lanes)(double in[13][8], int shape, double tol, double out[8]
     }
     V m = KN(max3)(Dx, Dy, Dz);
     ok = mand(ok, mand(vge(m, vset(0x1p-1021)), vlt(m, vset(0x1p1022))));
-    V p = vdiv(one, vexpbits(m));
+    V p = vrecip2(vexpbits(m));
     V Dsx = vmul(p, Dx), Dsy = vmul(p, Dy), Dsz = vmul(p, Dz);
     V t = vmul(vneg(vdiv(KN(dot)(hx, hy, hz, Dsx, Dsy, Dsz), KN(dot)(Dsx, Dsy, Dsz, Dsx, Dsy, Dsz))), p);
     t = vsel(vle(vabs(t), vset(DBL_MAX)), t, zero);
@@ -280,7 +305,7 @@ static unsigned KN(lanes)(double in[13][8], int shape, double tol, double out[8]
     V umin = vsub(lo, t0), umax = vsub(hi, t0);
     V S = KN(fmax)(r, vsqrt(KN(dot)(B0x, B0y, B0z, B0x, B0y, B0z)));
     ok = mand(ok, vge(S, vset(0x1p-1022)));
-    V up = KN(pow2_of)(S), sg = vdiv(one, up);
+    V up = KN(pow2_of)(S), sg = vrecip2(up);
     V Bsx = vmul(sg, B0x), Bsy = vmul(sg, B0y), Bsz = vmul(sg, B0z);
     V rs = vmul(r, sg);
     umin = vmul(umin, sg), umax = vmul(umax, sg);
@@ -324,10 +349,13 @@ static unsigned KN(lanes)(double in[13][8], int shape, double tol, double out[8]
         double c1[W], c2v[W], o1[W], o2[W];
         vst(c1, vmul(m0, md.ax1));
         vst(c2v, rs);
-        unsigned tb = mbits(two);
-        for (int l = 0; l < W; l++) {
-            o1[l] = (tb >> l & 1) ? cbrt(c1[l]) : 0.0;
-            o2[l] = (tb >> l & 1) ? cbrt(c2v[l]) : 0.0;
+        for (int l = 0; l < W; l++) o1[l] = o2[l] = 0.0;
+        /* only the lanes that need them (a loop over the set bits: the compiler may not turn a
+         * conditional call of this const function into an unconditional one) */
+        for (unsigned tb = mbits(two); tb; tb &= tb - 1) {
+            int l = lk_lowest_bit(tb);
+            o1[l] = cbrt(c1[l]);
+            o2[l] = cbrt(c2v[l]);
         }
         V cm = vld(o1);
         V rhohat = vmul(vmul(vld(o2), cm), cm);
@@ -356,21 +384,19 @@ static unsigned KN(lanes)(double in[13][8], int shape, double tol, double out[8]
     hasB = mandn(vgt(loB, hiB), hasB);
     M fail = mfalse();
     V best = vset(INFINITY);
-    M any_cand = mfalse();
+    KN(newton) nA = KN(newton_start)(loA, hiA, hasA), nB = KN(newton_start)(loB, hiB, hasB);
+    KN(newton_solve)(&md, &nA, &nB, &fail);
     if (many(hasA)) {
-        V s = KN(newton)(&md, loA, hiA, hasA, &fail);
-        V d2 = KN(model_d2)(&md, s, up);
+        V d2 = KN(model_d2)(&md, nA.res, up);
         best = vsel(hasA, vmin(best, d2), best);
         fail = mor(fail, mand(hasA, vne(d2, d2)));
-        any_cand = hasA;
     }
     if (many(hasB)) {
-        V s = KN(newton)(&md, loB, hiB, hasB, &fail);
-        V d2 = KN(model_d2)(&md, s, up);
+        V d2 = KN(model_d2)(&md, nB.res, up);
         best = vsel(hasB, vmin(best, d2), best);
         fail = mor(fail, mand(hasB, vne(d2, d2)));
-        any_cand = mor(any_cand, hasB);
     }
+    M any_cand = mor(hasA, hasB);
     if (shape != LK_LINE) { /* the finite ends (offer_end), in the units of the core's range */
         V d2 = KN(end_d2)(Bx, By, Bz, Mx, My, Mz, lo, nx, ny, nz, r);
         best = vmin(best, d2);
