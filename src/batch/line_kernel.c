@@ -25,6 +25,26 @@ enum { LK_LINE = 0, LK_RAY = 1, LK_SEGMENT = 2 };
 /* Newton iterations the lanes take together (a random line converges in about 6); a lane that
  * needs more finishes alone. */
 #define LK_LANE_ITER 12
+#ifndef LK_WIDE_CHAINS
+#define LK_WIDE_CHAINS 2
+#endif
+
+/* The per-entry state of a block of up to 64 entries between the kernel's stages, in columns:
+ * the model of linear_circle (r, a, m0, x1, |x1|, c2, h and three invariants of fdf_scaled), the
+ * core's and the outer scale factors, the brackets of robust_roots, the range, the smallest
+ * candidate so far; then the brackets of each entry and the list of brackets to solve. */
+enum {
+    LK_F_R, LK_F_A, LK_F_M0, LK_F_X1, LK_F_AX1, LK_F_C2, LK_F_H, LK_F_K, LK_F_RR2, LK_F_DFC,
+    LK_F_UP, LK_F_OUTER, LK_F_BLO, LK_F_BHI, LK_F_SMIN, LK_F_SMAX, LK_F_BEST, LK_NF
+};
+typedef struct lk_block {
+    double f[LK_NF][64];
+    double br[2][2][64]; /* [left/right branch][lo/hi][entry] */
+    unsigned char ok[64], two[64], has[2][64];
+    int item_entry[128];
+    double item_lo[128], item_hi[128], item_d2[128];
+    unsigned char item_fail[128];
+} lk_block;
 
 static inline int lk_lowest_bit(unsigned x)
 {
@@ -47,6 +67,7 @@ static inline int lk_lowest_bit(unsigned x)
 /* ---- 1 lane ---- */
 
 #define W 1
+#define LK_CHAINS 1
 #define V double
 #define M int
 #define KN(name) name##_1
@@ -97,6 +118,7 @@ static inline double vrecip2(double x)
 #define mbits(m) ((unsigned)(m))
 #include "line_kernel_body.h"
 #undef W
+#undef LK_CHAINS
 #undef V
 #undef M
 #undef KN
@@ -133,6 +155,7 @@ static inline double vrecip2(double x)
 #pragma GCC push_options
 #pragma GCC target("avx512f,fma")
 #define W 8
+#define LK_CHAINS LK_WIDE_CHAINS
 #define V __m512d
 #define M __mmask8
 #define KN(name) name##_8
@@ -170,6 +193,7 @@ static inline double vrecip2(double x)
 #define mbits(m) ((unsigned)(m))
 #include "line_kernel_body.h"
 #undef W
+#undef LK_CHAINS
 #undef V
 #undef M
 #undef KN
@@ -210,6 +234,7 @@ static inline double vrecip2(double x)
 #pragma GCC push_options
 #pragma GCC target("avx2,fma")
 #define W 4
+#define LK_CHAINS LK_WIDE_CHAINS
 #define V __m256d
 #define M __m256d
 #define KN(name) name##_4
@@ -246,6 +271,7 @@ static inline double vrecip2(double x)
 #define mbits(m) ((unsigned)_mm256_movemask_pd(m))
 #include "line_kernel_body.h"
 #undef W
+#undef LK_CHAINS
 #undef V
 #undef M
 #undef KN
@@ -283,48 +309,23 @@ static inline double vrecip2(double x)
 
 #endif
 
-/* ---- blocks of entries ---- */
-
-typedef unsigned (*lanes_fn)(double in[13][8], int shape, double tol, double out[8]);
-
-/* Entries [lo, lo + count), count <= 64, through `lanes` of width w: the fields of each group of
- * w entries copied into columns (a short last group padded with its first entry). */
-static uint64_t run_lanes(const cdist__job *job, int shape, double tol, size_t lo, size_t count, int w, lanes_fn lanes)
-{
-    uint64_t left = 0;
-    double in[13][8], out[8];
-    for (size_t k = 0; k < count; k += (size_t)w) {
-        int n = count - k < (size_t)w ? (int)(count - k) : w;
-        for (int l = 0; l < w; l++) {
-            size_t i = lo + k + (size_t)(l < n ? l : 0);
-            const double *a = cdist__job_a(job, i), *b = cdist__job_b(job, i);
-            for (int f = 0; f < 6; f++) in[f][l] = a[f];
-            for (int f = 0; f < 7; f++) in[6 + f][l] = b[f];
-        }
-        unsigned l_left = lanes(in, shape, tol, out) & ((1u << n) - 1u);
-        for (int l = 0; l < n; l++)
-            if (!(l_left >> l & 1)) job->distances[lo + k + (size_t)l] = out[l];
-        left |= (uint64_t)l_left << k;
-    }
-    return left;
-}
+/* ---- dispatch ---- */
 
 static uint64_t kernel_scalar(const cdist__job *job, int shape, double tol, size_t lo, size_t count)
 {
-    return run_lanes(job, shape, tol, lo, count, 1, lanes_1);
+    return block_1(job, shape, tol, lo, count);
 }
 
 #ifdef CD_X86_KERNELS
 static uint64_t kernel_avx512(const cdist__job *job, int shape, double tol, size_t lo, size_t count)
 {
-    return run_lanes(job, shape, tol, lo, count, 8, lanes_8);
+    return block_8(job, shape, tol, lo, count);
 }
 
 static uint64_t kernel_avx2(const cdist__job *job, int shape, double tol, size_t lo, size_t count)
 {
-    return run_lanes(job, shape, tol, lo, count, 4, lanes_4);
+    return block_4(job, shape, tol, lo, count);
 }
-
 typedef uint64_t (*kernel_fn)(const cdist__job *, int, double, size_t, size_t);
 
 static kernel_fn pick(void)

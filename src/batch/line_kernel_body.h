@@ -141,27 +141,6 @@ static void KN(newton_finish)(const KN(model) *m, KN(newton) *s, M *fail)
 }
 #endif
 
-/* The roots of the brackets [loA, hiA] in the lanes of actA and [loB, hiB] in those of actB,
- * iterated together (two independent chains). */
-static void KN(newton_solve)(const KN(model) *m, KN(newton) *a, KN(newton) *b, M *fail)
-{
-#if W == 1
-    for (int it = 0; it < CD_ROOT_MAX_ITER && a->act; it++) KN(newton_step)(m, a, fail);
-    for (int it = 0; it < CD_ROOT_MAX_ITER && b->act; it++) KN(newton_step)(m, b, fail);
-    a->res = a->act ? a->x : a->res;
-    b->res = b->act ? b->x : b->res;
-#else
-    int it = 0;
-    for (; it < LK_LANE_ITER && many(b->act); it++) {
-        KN(newton_step)(m, a, fail);
-        KN(newton_step)(m, b, fail);
-    }
-    for (; it < LK_LANE_ITER && many(a->act); it++) KN(newton_step)(m, a, fail);
-    KN(newton_finish)(m, a, fail);
-    KN(newton_finish)(m, b, fail);
-#endif
-}
-
 /* rho - r of the model (rho_minus_r) */
 CD_INLINE V KN(rho_minus_r)(const KN(model) *m, V x2, V rho) { return vdiv(vmadd(x2, x2, m->rr2), vadd(rho, m->r)); }
 
@@ -194,10 +173,11 @@ CD_INLINE V KN(end_d2)(V Bx, V By, V Bz, V Mx, V My, V Mz, V t, V nx, V ny, V nz
     return vfma(dr, dr, vmul(h, h));
 }
 
-/* W lanes (W <= 8): in[f][l] is field f of lane l (the first object's six numbers, then the circle's
- * seven). shape: LK_LINE, LK_RAY or LK_SEGMENT. Writes out[l] and returns the mask (bit l) of
- * the lanes left to the scalar path. */
-static unsigned KN(lanes)(double in[13][8], int shape, double tol, double out[8])
+/* Stage 1, entries base .. base + W - 1 of block b (n of them real): in[f][l] is field f of lane
+ * l (the first object's six numbers, then the circle's seven); shape: LK_LINE, LK_RAY or
+ * LK_SEGMENT. Validation, framing, scaling and the model of linear_circle; the brackets of
+ * robust_roots where F' increases everywhere ("single"), the finite ends' candidates. */
+static void KN(stage_frame)(double in[13][8], int shape, double tol, lk_block *b, int base, int n)
 {
     const V zero = vset(0.0), one = vset(1.0);
     V ax = vld(in[0]), ay = vld(in[1]), az = vld(in[2]), bx = vld(in[3]), by = vld(in[4]), bz = vld(in[5]);
@@ -336,67 +316,14 @@ static unsigned KN(lanes)(double in[13][8], int shape, double tol, double out[8]
     md.rr2 = vmul(vsub(md.ax1, rs), vadd(md.ax1, rs));
     md.dfc = vmul(vneg(vmul(vmul(rs, m0), m0)), vmul(md.ax1, md.ax1));
 
-    /* robust_roots: one bracket where F' increases everywhere, else up to one per branch */
+    /* robust_roots: one bracket where F' increases everywhere, else up to one per branch
+     * (stage_branches) */
     V mu = vfma(a, md.h, vmul(m0, md.c2));
     V rm0 = vmul(rs, m0);
     V blo = vsub(vneg(mu), rm0), bhi = vadd(vneg(mu), rm0);
     M single = vle(vmul(rm0, m0), md.ax1);
-    M two = mandn(single, ok);
-    V loA = blo, hiA = bhi, loB = blo, hiB = bhi;
-    M hasA = single, hasB = mfalse();
-    if (many(two)) {
-        /* the cube roots are the C library's, lane by lane, for bit-identical brackets */
-        double c1[W], c2v[W], o1[W], o2[W];
-        vst(c1, vmul(m0, md.ax1));
-        vst(c2v, rs);
-        for (int l = 0; l < W; l++) o1[l] = o2[l] = 0.0;
-        /* only the lanes that need them (a loop over the set bits: the compiler may not turn a
-         * conditional call of this const function into an unconditional one) */
-        for (unsigned tb = mbits(two); tb; tb &= tb - 1) {
-            int l = lk_lowest_bit(tb);
-            o1[l] = cbrt(c1[l]);
-            o2[l] = cbrt(c2v[l]);
-        }
-        V cm = vld(o1);
-        V rhohat = vmul(vmul(vld(o2), cm), cm);
-        V x2hat = vsqrt(KN(fmax)(zero, vmul(vsub(rhohat, md.ax1), vadd(rhohat, md.ax1))));
-        V sc = vneg(vdiv(md.c2, m0));
-        V xm = vdiv(x2hat, m0);
-        V sL = vsub(sc, xm), sR = vadd(sc, xm);
-        V fL = KN(fp_at)(&md, vfma(a, sL, md.h), vneg(x2hat), -1.0);
-        V fR = KN(fp_at)(&md, vfma(a, sR, md.h), x2hat, +1.0);
-        M left = vge(fL, zero), right = vle(fR, zero);
-        M neither = mnot(mor(left, right));
-        left = mor(left, neither), right = mor(right, neither);
-        M tA = mand(two, mand(left, vle(blo, sL)));
-        M tB = mand(two, mand(right, vle(sR, bhi)));
-        hiA = vsel(two, KN(fmin)(sL, bhi), hiA);
-        loB = KN(fmax)(sR, blo);
-        hasA = mor(mand(single, ok), tA);
-        hasB = tB;
-    }
-    hasA = mand(hasA, ok);
-    hasB = mand(hasB, ok);
-    /* clipped to the range; an empty bracket has no root */
-    loA = KN(fmax)(loA, smin), hiA = KN(fmin)(hiA, smax);
-    loB = KN(fmax)(loB, smin), hiB = KN(fmin)(hiB, smax);
-    hasA = mandn(vgt(loA, hiA), hasA);
-    hasB = mandn(vgt(loB, hiB), hasB);
-    M fail = mfalse();
     V best = vset(INFINITY);
-    KN(newton) nA = KN(newton_start)(loA, hiA, hasA), nB = KN(newton_start)(loB, hiB, hasB);
-    KN(newton_solve)(&md, &nA, &nB, &fail);
-    if (many(hasA)) {
-        V d2 = KN(model_d2)(&md, nA.res, up);
-        best = vsel(hasA, vmin(best, d2), best);
-        fail = mor(fail, mand(hasA, vne(d2, d2)));
-    }
-    if (many(hasB)) {
-        V d2 = KN(model_d2)(&md, nB.res, up);
-        best = vsel(hasB, vmin(best, d2), best);
-        fail = mor(fail, mand(hasB, vne(d2, d2)));
-    }
-    M any_cand = mor(hasA, hasB);
+    M fail = mfalse();
     if (shape != LK_LINE) { /* the finite ends (offer_end), in the units of the core's range */
         V d2 = KN(end_d2)(Bx, By, Bz, Mx, My, Mz, lo, nx, ny, nz, r);
         best = vmin(best, d2);
@@ -406,11 +333,205 @@ static unsigned KN(lanes)(double in[13][8], int shape, double tol, double out[8]
             best = vmin(best, d2);
             fail = mor(fail, vne(d2, d2));
         }
-        any_cand = mtrue();
     }
-    ok = mand(mandn(fail, ok), any_cand);
-    V d = vmul(vsqrt(best), UP);
-    ok = mand(ok, vle(d, vset(DBL_MAX)));
+    const V *cols[LK_NF] = {&md.r, &md.a, &md.m0, &md.x1, &md.ax1, &md.c2, &md.h, &md.k, &md.rr2, &md.dfc,
+                            &up, &UP, &blo, &bhi, &smin, &smax, &best};
+    for (int f = 0; f < LK_NF; f++) vst(&b->f[f][base], *cols[f]);
+    unsigned okb = mbits(ok), singleb = mbits(single), failb = mbits(fail);
+    for (int l = 0; l < W; l++) {
+        int real = l < n;
+        b->ok[base + l] = (unsigned char)(real && (okb >> l & 1) && !(failb >> l & 1));
+        b->two[base + l] = (unsigned char)(b->ok[base + l] && !(singleb >> l & 1));
+    }
+}
+
+/* The model of W entries e[0..W-1] of block b. */
+CD_INLINE void KN(load_model)(const lk_block *b, const int *e, KN(model) *m)
+{
+    double col[10][W];
+    for (int f = 0; f < 10; f++)
+        for (int l = 0; l < W; l++) col[f][l] = b->f[f][e[l]];
+    m->r = vld(col[0]), m->a = vld(col[1]), m->m0 = vld(col[2]), m->x1 = vld(col[3]), m->ax1 = vld(col[4]);
+    m->c2 = vld(col[5]), m->h = vld(col[6]), m->k = vld(col[7]), m->rr2 = vld(col[8]), m->dfc = vld(col[9]);
+}
+
+/* Field f of W entries e[0..W-1]. */
+CD_INLINE V KN(load_field)(const lk_block *b, int f, const int *e)
+{
+    double col[W];
+    for (int l = 0; l < W; l++) col[l] = b->f[f][e[l]];
+    return vld(col);
+}
+
+/* Stage 2, the entries e[0..n-1] (n <= W; the rest of e repeats e[0]) where F' is not monotone:
+ * the tangent points of slope 1 and the brackets of the branches that hold a local minimum,
+ * written to b->br (A: left, B: right) and b->has. */
+static void KN(stage_branches)(lk_block *b, const int *e, int n)
+{
+    const V zero = vset(0.0);
+    KN(model) md;
+    KN(load_model)(b, e, &md);
+    V blo = KN(load_field)(b, LK_F_BLO, e), bhi = KN(load_field)(b, LK_F_BHI, e);
+    /* the cube roots are the C library's, lane by lane, for bit-identical brackets */
+    double c1[W], c2v[W], o1[W], o2[W];
+    vst(c1, vmul(md.m0, md.ax1));
+    vst(c2v, md.r);
+    for (int l = 0; l < W; l++) {
+        o1[l] = l < n ? cbrt(c1[l]) : 1.0;
+        o2[l] = l < n ? cbrt(c2v[l]) : 1.0;
+    }
+    V cm = vld(o1);
+    V rhohat = vmul(vmul(vld(o2), cm), cm);
+    V x2hat = vsqrt(KN(fmax)(zero, vmul(vsub(rhohat, md.ax1), vadd(rhohat, md.ax1))));
+    V sc = vneg(vdiv(md.c2, md.m0));
+    V xm = vdiv(x2hat, md.m0);
+    V sL = vsub(sc, xm), sR = vadd(sc, xm);
+    V fL = KN(fp_at)(&md, vfma(md.a, sL, md.h), vneg(x2hat), -1.0);
+    V fR = KN(fp_at)(&md, vfma(md.a, sR, md.h), x2hat, +1.0);
+    M left = vge(fL, zero), right = vle(fR, zero);
+    M neither = mnot(mor(left, right));
+    left = mor(left, neither), right = mor(right, neither);
+    unsigned hasA = mbits(mand(left, vle(blo, sL))), hasB = mbits(mand(right, vle(sR, bhi)));
+    double hiA[W], loB[W];
+    vst(hiA, KN(fmin)(sL, bhi));
+    vst(loB, KN(fmax)(sR, blo));
+    for (int l = 0; l < n; l++) {
+        int i = e[l];
+        b->br[0][0][i] = b->f[LK_F_BLO][i], b->br[0][1][i] = hiA[l];
+        b->br[1][0][i] = loB[l], b->br[1][1][i] = b->f[LK_F_BHI][i];
+        b->has[0][i] = (unsigned char)(hasA >> l & 1), b->has[1][i] = (unsigned char)(hasB >> l & 1);
+    }
+}
+
+/* Stage 3, the brackets k[0..n-1] of the item list (n <= LK_CHAINS * W; the rest of k repeats
+ * k[0]): the root of each (cdist__root_newton) and the squared distance there (offer_model), to
+ * b->item_d2. The Newton iteration is a chain of dependent square roots and divisions:
+ * LK_CHAINS groups of W brackets iterate side by side to keep the units busy. */
+static void KN(stage_newton)(lk_block *b, const int *k, int n)
+{
+    KN(model) md[LK_CHAINS];
+    KN(newton) s[LK_CHAINS];
+    M fail[LK_CHAINS];
+    int e[LK_CHAINS][W];
+    for (int c = 0; c < LK_CHAINS; c++) {
+        double lo[W], hi[W], act[W];
+        for (int l = 0; l < W; l++) {
+            int j = k[c * W + l];
+            e[c][l] = b->item_entry[j], lo[l] = b->item_lo[j], hi[l] = b->item_hi[j];
+            act[l] = c * W + l < n ? 1.0 : 0.0;
+        }
+        KN(load_model)(b, e[c], &md[c]);
+        s[c] = KN(newton_start)(vld(lo), vld(hi), vgt(vld(act), vset(0.0)));
+        fail[c] = mfalse();
+    }
+#if W == 1
+    for (int it = 0; it < CD_ROOT_MAX_ITER && s[0].act; it++) KN(newton_step)(&md[0], &s[0], &fail[0]);
+    s[0].res = s[0].act ? s[0].x : s[0].res;
+#else
+    for (int it = 0; it < LK_LANE_ITER; it++) {
+        M act = s[0].act;
+        for (int c = 1; c < LK_CHAINS; c++) act = mor(act, s[c].act);
+        if (!many(act)) break;
+        for (int c = 0; c < LK_CHAINS; c++) KN(newton_step)(&md[c], &s[c], &fail[c]);
+    }
+    for (int c = 0; c < LK_CHAINS; c++) KN(newton_finish)(&md[c], &s[c], &fail[c]);
+#endif
+    for (int c = 0; c < LK_CHAINS; c++) {
+        V d2 = KN(model_d2)(&md[c], s[c].res, KN(load_field)(b, LK_F_UP, e[c]));
+        double out[W];
+        vst(out, d2);
+        unsigned fb = mbits(mor(fail[c], vne(d2, d2)));
+        for (int l = 0; l < W && c * W + l < n; l++) {
+            b->item_d2[k[c * W + l]] = out[l];
+            b->item_fail[k[c * W + l]] = (unsigned char)(fb >> l & 1);
+        }
+    }
+}
+
+/* Stage 4, entries base .. base + W - 1: the distance from the smallest candidate, unscaled;
+ * returns the mask of the entries left to the scalar path. */
+static unsigned KN(stage_final)(lk_block *b, int base, double *out)
+{
+    V d = vmul(vsqrt(vld(&b->f[LK_F_BEST][base])), vld(&b->f[LK_F_OUTER][base]));
     vst(out, d);
-    return mbits(mnot(ok));
+    unsigned fin = mbits(vle(d, vset(DBL_MAX))), left = 0;
+    for (int l = 0; l < W; l++) left |= (unsigned)(!(b->ok[base + l] && (fin >> l & 1))) << l;
+    return left;
+}
+
+/* Entries [lo, lo + count) of the job, count <= 64: the four stages over the block; returns the
+ * mask of the entries left to the scalar path. The stages after the first take the entries
+ * that need them, W at a time, so that the lanes stay busy (a quarter of random lines need
+ * stage 2, the Newton iterations of a bracket vary). */
+static uint64_t KN(block)(const cdist__job *job, int shape, double tol, size_t lo, size_t count)
+{
+    lk_block b;
+    double in[13][8];
+    int cnt = (int)count;
+    for (int base = 0; base < cnt; base += W) {
+        int n = cnt - base < W ? cnt - base : W;
+        for (int l = 0; l < W; l++) {
+            size_t i = lo + (size_t)base + (size_t)(l < n ? l : 0);
+            const double *pa = cdist__job_a(job, i), *pb = cdist__job_b(job, i);
+            for (int f = 0; f < 6; f++) in[f][l] = pa[f];
+            for (int f = 0; f < 7; f++) in[6 + f][l] = pb[f];
+        }
+        KN(stage_frame)(in, shape, tol, &b, base, n);
+    }
+    int e[W], ne = 0;
+    for (int i = 0; i < cnt; i++) {
+        if (!b.ok[i]) continue;
+        if (!b.two[i]) {
+            b.br[0][0][i] = b.f[LK_F_BLO][i], b.br[0][1][i] = b.f[LK_F_BHI][i];
+            b.has[0][i] = 1, b.has[1][i] = 0;
+            continue;
+        }
+        e[ne++] = i;
+        if (ne == W) {
+            KN(stage_branches)(&b, e, W);
+            ne = 0;
+        }
+    }
+    if (ne) {
+        for (int l = ne; l < W; l++) e[l] = e[0];
+        KN(stage_branches)(&b, e, ne);
+    }
+    /* the brackets clipped to the range; an empty one has no root */
+    int ni = 0;
+    for (int i = 0; i < cnt; i++) {
+        if (!b.ok[i]) continue;
+        for (int j = 0; j < 2; j++) {
+            if (!b.has[j][i]) continue;
+            double blo = cdist__fmax(b.br[j][0][i], b.f[LK_F_SMIN][i]), bhi = cdist__fmin(b.br[j][1][i], b.f[LK_F_SMAX][i]);
+            if (blo > bhi) continue;
+            b.item_entry[ni] = i, b.item_lo[ni] = blo, b.item_hi[ni] = bhi;
+            ni++;
+        }
+    }
+    int k[LK_CHAINS * W];
+    for (int s0 = 0; s0 < ni; s0 += LK_CHAINS * W) {
+        int n = ni - s0 < LK_CHAINS * W ? ni - s0 : LK_CHAINS * W;
+        for (int l = 0; l < LK_CHAINS * W; l++) k[l] = s0 + (l < n ? l : 0);
+        KN(stage_newton)(&b, k, n);
+    }
+    unsigned char cand[64];
+    memset(cand, shape != LK_LINE, sizeof cand); /* rays and segments: the ends */
+    for (int j = 0; j < ni; j++) {
+        int i = b.item_entry[j];
+        if (b.item_fail[j]) b.ok[i] = 0;
+        double d2 = b.item_d2[j], *best = &b.f[LK_F_BEST][i];
+        *best = *best < d2 ? *best : d2;
+        cand[i] = 1;
+    }
+    uint64_t left = 0;
+    double out[8];
+    for (int base = 0; base < cnt; base += W) {
+        int n = cnt - base < W ? cnt - base : W;
+        for (int l = 0; l < n; l++) b.ok[base + l] &= cand[base + l];
+        unsigned lb = KN(stage_final)(&b, base, out) & ((1u << n) - 1u);
+        for (int l = 0; l < n; l++)
+            if (!(lb >> l & 1)) job->distances[lo + (size_t)(base + l)] = out[l];
+        left |= (uint64_t)lb << base;
+    }
+    return left;
 }
