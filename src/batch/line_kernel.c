@@ -108,9 +108,9 @@ static inline double vrecip2(double x)
 #define veq(a, b) ((a) == (b))
 #define vne(a, b) ((a) != (b))
 #define vsel(m, a, b) ((m) ? (a) : (b))
-#define mand(a, b) ((a) & (b))
-#define mor(a, b) ((a) | (b))
-#define mandn(a, b) ((!(a)) & (b))
+#define mand(a, b) ((int)(a) & (int)(b))
+#define mor(a, b) ((int)(a) | (int)(b))
+#define mandn(a, b) ((int)!(a) & (int)(b))
 #define mnot(a) (!(a))
 #define mtrue() 1
 #define mfalse() 0
@@ -150,10 +150,20 @@ static inline double vrecip2(double x)
 
 #ifdef CD_X86_KERNELS
 
+/* Every function of an instantiation compiled for its instruction set. */
+#if defined(__clang__)
+#define LK_PRAGMA(x) _Pragma(#x)
+#define LK_TARGET_PUSH(isa) LK_PRAGMA(clang attribute push(__attribute__((target(isa))), apply_to = function))
+#define LK_TARGET_POP _Pragma("clang attribute pop")
+#else
+#define LK_PRAGMA(x) _Pragma(#x)
+#define LK_TARGET_PUSH(isa) _Pragma("GCC push_options") LK_PRAGMA(GCC target(isa))
+#define LK_TARGET_POP _Pragma("GCC pop_options")
+#endif
+
 /* ---- 8 lanes ---- */
 
-#pragma GCC push_options
-#pragma GCC target("avx512f,fma")
+LK_TARGET_PUSH("avx512f,fma")
 #define W 8
 #define LK_CHAINS LK_WIDE_CHAINS
 #define V __m512d
@@ -227,12 +237,11 @@ static inline double vrecip2(double x)
 #undef mfalse
 #undef many
 #undef mbits
-#pragma GCC pop_options
+LK_TARGET_POP
 
 /* ---- 4 lanes ---- */
 
-#pragma GCC push_options
-#pragma GCC target("avx2,fma")
+LK_TARGET_PUSH("avx2,fma")
 #define W 4
 #define LK_CHAINS LK_WIDE_CHAINS
 #define V __m256d
@@ -305,7 +314,7 @@ static inline double vrecip2(double x)
 #undef mfalse
 #undef many
 #undef mbits
-#pragma GCC pop_options
+LK_TARGET_POP
 
 #endif
 
