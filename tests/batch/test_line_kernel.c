@@ -7,7 +7,11 @@
  * axis, perpendicular to the plane, zero radius, tangent lines, symmetric pairs of minima,
  * far-away origins, tiny and huge scales):
  * - the kernel answers an entry only if the single query accepts it (a rejected entry is always
- *   left to the scalar path), and then with the single query's distance bit for bit;
+ *   left to the scalar path), and then within 2 ulps of scale of the single query's distance
+ *   (the bar of issue #11; scale as the reference files define it, tools/query_io.c); the
+ *   kernel repeats the scalar arithmetic, so nearly all of them (>= 90%, counted and printed;
+ *   all of them as long as src/lines/line_circle.c solves with cdist__root_newton) are
+ *   bit-identical;
  * - it leaves few valid entries of the random files to the scalar path (counted and printed);
  * - the public cdist_batch_distance agrees with the single queries (status and distance). */
 #include "../../src/batch/line_kernel.c"
@@ -33,6 +37,8 @@ static uint64_t next_rand(void)
     return rng;
 }
 static double rnd01(void) { return (double)(next_rand() >> 11) * 0x1p-53; }
+
+static double ulp(double x) { return nextafter(fabs(x), INFINITY) - fabs(x); }
 
 static const char *shape_name[] = {"line", "ray", "segment"};
 static const char *file_kind[] = {"lc", "rc", "sc"};
@@ -143,6 +149,18 @@ static size_t load(const char *dir, int shape, const char *set)
 
 typedef uint64_t (*kfn)(const cdist__job *, int, double, size_t, size_t);
 
+/* The scale of entry i (cdq_scale of the reference files) for a distance d. */
+static double scale_of(int shape, size_t i, double d)
+{
+    cdq_line ql;
+    for (const cdq_kind *kd = cdq_kinds; kd->name; kd++)
+        if (!strcmp(kd->name, file_kind[shape])) ql.kind = kd;
+    ql.nvalues = 13;
+    memcpy(ql.v, &A[i], sizeof A[i]);
+    memcpy(ql.v + 6, &C[i], sizeof C[i]);
+    return cdq_scale(&ql, d);
+}
+
 /* Returns the number of valid entries the kernel left to the scalar path. */
 static int check_kernel(const char *name, kfn k, cdist_query *q, int shape, size_t n, const char *what)
 {
@@ -150,7 +168,7 @@ static int check_kernel(const char *name, kfn k, cdist_query *q, int shape, size
                       : shape == LK_RAY ? CDIST_KIND_RAY_CIRCLE
                                         : CDIST_KIND_SEGMENT_CIRCLE;
     cdist__job job = {kind, n, (const char *)A, (const char *)C, sizeof A[0], sizeof C[0], NULL, D, NULL, 64};
-    int bad = 0, wrong_left = 0, left_valid = 0;
+    int bad = 0, wrong_left = 0, left_valid = 0, answered = 0, identical = 0;
     double tol = q->unit_tol;
     for (size_t lo = 0; lo < n; lo += 64) {
         size_t cnt = n - lo < 64 ? n - lo : 64;
@@ -171,13 +189,20 @@ static int check_kernel(const char *name, kfn k, cdist_query *q, int shape, size
                           what, i, D[i], cdist_status_name(st));
                 continue;
             }
-            if (memcmp(&D[i], &r.distance, sizeof(double)) && bad++ < 3)
+            answered++;
+            identical += !memcmp(&D[i], &r.distance, sizeof(double));
+            if (!(fabs(D[i] - r.distance) <= 2.0 * ulp(scale_of(shape, i, r.distance))) && bad++ < 3)
                 CHECK(0, "%s %s %s entry %zu: %.17g vs single %.17g", name, shape_name[shape], what, i, D[i],
                       r.distance);
         }
     }
-    CHECK(bad == 0 && wrong_left == 0, "%s %s %s: %d distances differ, %d rejected entries answered", name,
-          shape_name[shape], what, bad, wrong_left);
+    CHECK(bad == 0 && wrong_left == 0, "%s %s %s: %d distances differ by more than 2 ulps of scale, %d rejected entries answered",
+          name, shape_name[shape], what, bad, wrong_left);
+    CHECK(identical * 10 >= answered * 9, "%s %s %s: only %d of %d distances bit-identical to the single query's", name,
+          shape_name[shape], what, identical, answered);
+    if (identical < answered)
+        printf("  %s %s %s: %d of %d distances not bit-identical (within 2 ulps of scale)\n", name, shape_name[shape],
+               what, answered - identical, answered);
     return left_valid;
 }
 
@@ -193,7 +218,8 @@ static void check_batch(cdist_query *q, int shape, size_t n, const char *what)
     for (size_t i = 0; i < n; i++) {
         cdist_result r;
         cdist_status st = single_query(q, shape, i, &r);
-        int same = S[i] == st && (st ? isnan(D[i]) : !memcmp(&D[i], &r.distance, sizeof(double)));
+        int same = S[i] == st &&
+                   (st ? isnan(D[i]) : fabs(D[i] - r.distance) <= 2.0 * ulp(scale_of(shape, i, r.distance)));
         if (!same && bad++ < 3)
             CHECK(0, "batch %s %s entry %zu: %.17g (%s) vs single %.17g (%s)", shape_name[shape], what, i, D[i],
                   cdist_status_name(S[i]), r.distance, cdist_status_name(st));
