@@ -22,8 +22,8 @@ _Static_assert(offsetof(cdist_circle, normal) == 24 && offsetof(cdist_circle, ra
 
 enum { LK_LINE = 0, LK_RAY = 1, LK_SEGMENT = 2 };
 
-/* Newton iterations the lanes take together (a random line converges in about 6); a lane that
- * needs more finishes alone. */
+/* Newton iterations the lanes of a bracket group take together (a random line converges in
+ * about 6); the brackets that need more go on together in a second pass. */
 #define LK_LANE_ITER 12
 #ifndef LK_WIDE_CHAINS
 #define LK_WIDE_CHAINS 2
@@ -44,6 +44,8 @@ typedef struct lk_block {
     int item_entry[128];
     double item_lo[128], item_hi[128], item_d2[128];
     unsigned char item_fail[128];
+    int n_long, long_item[128];  /* brackets still iterating after LK_LANE_ITER iterations */
+    double long_st[5][128];      /* and their Newton state: x, lo, hi, dx, dxold */
 } lk_block;
 
 static inline int lk_lowest_bit(unsigned x)

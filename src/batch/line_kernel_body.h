@@ -112,34 +112,6 @@ CD_INLINE void KN(newton_step)(const KN(model) *m, KN(newton) *s, M *fail)
     s->x = x, s->lo = lo, s->hi = hi, s->dx = dx, s->res = res, s->act = act;
 }
 
-#if W > 1
-/* A lane still iterating after LK_LANE_ITER iterations (a bracket bisected down to its end, as
- * when the root lies beyond a ray's start) finishes alone in the one-lane version, up to
- * CD_ROOT_MAX_ITER iterations in all; the scalar path then returns its last x. */
-static void KN(newton_finish)(const KN(model) *m, KN(newton) *s, M *fail)
-{
-    unsigned rest = mbits(mandn(*fail, s->act));
-    if (!rest) return;
-    double f[10][W], st[6][W], flag[W];
-    const V *mf[10] = {&m->r, &m->a, &m->m0, &m->x1, &m->ax1, &m->c2, &m->h, &m->k, &m->rr2, &m->dfc};
-    for (int k = 0; k < 10; k++) vst(f[k], *mf[k]);
-    vst(st[0], s->x), vst(st[1], s->lo), vst(st[2], s->hi), vst(st[3], s->dx), vst(st[4], s->dxold);
-    vst(st[5], s->res);
-    for (int l = 0; l < W; l++) {
-        flag[l] = 0.0;
-        if (!(rest >> l & 1)) continue;
-        model_1 m1 = {f[0][l], f[1][l], f[2][l], f[3][l], f[4][l], f[5][l], f[6][l], f[7][l], f[8][l], f[9][l]};
-        newton_1 s1 = {st[0][l], st[1][l], st[2][l], st[3][l], st[4][l], st[5][l], 1};
-        int fail1 = 0;
-        for (int it = LK_LANE_ITER; it < CD_ROOT_MAX_ITER && s1.act; it++) newton_step_1(&m1, &s1, &fail1);
-        st[5][l] = s1.act ? s1.x : s1.res;
-        flag[l] = fail1 ? 1.0 : 0.0;
-    }
-    s->res = vld(st[5]);
-    s->act = mfalse();
-    *fail = mor(*fail, vgt(vld(flag), vset(0.0)));
-}
-#endif
 
 /* rho - r of the model (rho_minus_r) */
 CD_INLINE V KN(rho_minus_r)(const KN(model) *m, V x2, V rho) { return vdiv(vmadd(x2, x2, m->rr2), vadd(rho, m->r)); }
@@ -177,7 +149,7 @@ CD_INLINE V KN(end_d2)(V Bx, V By, V Bz, V Mx, V My, V Mz, V t, V nx, V ny, V nz
  * l (the first object's six numbers, then the circle's seven); shape: LK_LINE, LK_RAY or
  * LK_SEGMENT. Validation, framing, scaling and the model of linear_circle; the brackets of
  * robust_roots where F' increases everywhere ("single"), the finite ends' candidates. */
-static void KN(stage_frame)(double in[13][8], int shape, double tol, lk_block *b, int base, int n)
+static void KN(stage_frame)(double in[13][W], int shape, double tol, lk_block *b, int base, int n)
 {
     const V zero = vset(0.0), one = vset(1.0);
     V ax = vld(in[0]), ay = vld(in[1]), az = vld(in[2]), bx = vld(in[3]), by = vld(in[4]), bz = vld(in[5]);
@@ -434,7 +406,20 @@ static void KN(stage_newton)(lk_block *b, const int *k, int n)
         if (!many(act)) break;
         for (int c = 0; c < LK_CHAINS; c++) KN(newton_step)(&md[c], &s[c], &fail[c]);
     }
-    for (int c = 0; c < LK_CHAINS; c++) KN(newton_finish)(&md[c], &s[c], &fail[c]);
+    /* a lane still iterating (a bracket bisected down to its end, as when the root lies beyond
+     * a ray's start: ~50 iterations) goes on in stage_long, with the other such lanes */
+    for (int c = 0; c < LK_CHAINS; c++) {
+        unsigned rest = mbits(mandn(fail[c], s[c].act));
+        if (!rest) continue;
+        double st[5][W];
+        vst(st[0], s[c].x), vst(st[1], s[c].lo), vst(st[2], s[c].hi), vst(st[3], s[c].dx), vst(st[4], s[c].dxold);
+        for (int l = 0; l < W; l++) {
+            if (!(rest >> l & 1)) continue;
+            int j = b->n_long++;
+            b->long_item[j] = k[c * W + l];
+            for (int f = 0; f < 5; f++) b->long_st[f][j] = st[f][l];
+        }
+    }
 #endif
     for (int c = 0; c < LK_CHAINS; c++) {
         V d2 = KN(model_d2)(&md[c], s[c].res, KN(load_field)(b, LK_F_UP, e[c]));
@@ -447,6 +432,40 @@ static void KN(stage_newton)(lk_block *b, const int *k, int n)
         }
     }
 }
+
+#if W > 1
+/* Stage 3b, the long brackets j[0..n-1] (n <= W; the rest of j repeats j[0]) that stage_newton
+ * left: their iterations go on together up to CD_ROOT_MAX_ITER in all, where
+ * cdist__root_newton returns its last x. */
+static void KN(stage_long)(lk_block *b, const int *j, int n)
+{
+    int e[W];
+    double st[5][W], act[W];
+    for (int l = 0; l < W; l++) {
+        e[l] = b->item_entry[b->long_item[j[l]]];
+        for (int f = 0; f < 5; f++) st[f][l] = b->long_st[f][j[l]];
+        act[l] = l < n ? 1.0 : 0.0;
+    }
+    KN(model) md;
+    KN(load_model)(b, e, &md);
+    KN(newton) s;
+    s.x = vld(st[0]), s.lo = vld(st[1]), s.hi = vld(st[2]), s.dx = vld(st[3]), s.dxold = vld(st[4]);
+    s.res = s.x;
+    s.act = vgt(vld(act), vset(0.0));
+    M fail = mfalse();
+    for (int it = LK_LANE_ITER; it < CD_ROOT_MAX_ITER && many(s.act); it++) KN(newton_step)(&md, &s, &fail);
+    s.res = vsel(s.act, s.x, s.res);
+    V d2 = KN(model_d2)(&md, s.res, KN(load_field)(b, LK_F_UP, e));
+    double out[W];
+    vst(out, d2);
+    unsigned fb = mbits(mor(fail, vne(d2, d2)));
+    for (int l = 0; l < n; l++) {
+        int k = b->long_item[j[l]];
+        b->item_d2[k] = out[l];
+        b->item_fail[k] = (unsigned char)(fb >> l & 1);
+    }
+}
+#endif
 
 /* Stage 4, entries base .. base + W - 1: the distance from the smallest candidate, unscaled;
  * returns the mask of the entries left to the scalar path. */
@@ -466,7 +485,7 @@ static unsigned KN(stage_final)(lk_block *b, int base, double *out)
 static uint64_t KN(block)(const cdist__job *job, int shape, double tol, size_t lo, size_t count)
 {
     lk_block b;
-    double in[13][8];
+    double in[13][W];
     int cnt = (int)count;
     for (int base = 0; base < cnt; base += W) {
         int n = cnt - base < W ? cnt - base : W;
@@ -498,6 +517,7 @@ static uint64_t KN(block)(const cdist__job *job, int shape, double tol, size_t l
     }
     /* the brackets clipped to the range; an empty one has no root */
     int ni = 0;
+    b.n_long = 0;
     for (int i = 0; i < cnt; i++) {
         if (!b.ok[i]) continue;
         for (int j = 0; j < 2; j++) {
@@ -514,6 +534,13 @@ static uint64_t KN(block)(const cdist__job *job, int shape, double tol, size_t l
         for (int l = 0; l < LK_CHAINS * W; l++) k[l] = s0 + (l < n ? l : 0);
         KN(stage_newton)(&b, k, n);
     }
+#if W > 1
+    for (int s0 = 0; s0 < b.n_long; s0 += W) {
+        int n = b.n_long - s0 < W ? b.n_long - s0 : W, j[W];
+        for (int l = 0; l < W; l++) j[l] = s0 + (l < n ? l : 0);
+        KN(stage_long)(&b, j, n);
+    }
+#endif
     unsigned char cand[64];
     memset(cand, shape != LK_LINE, sizeof cand); /* rays and segments: the ends */
     for (int j = 0; j < ni; j++) {
@@ -524,7 +551,7 @@ static uint64_t KN(block)(const cdist__job *job, int shape, double tol, size_t l
         cand[i] = 1;
     }
     uint64_t left = 0;
-    double out[8];
+    double out[W];
     for (int base = 0; base < cnt; base += W) {
         int n = cnt - base < W ? cnt - base : W;
         for (int l = 0; l < n; l++) b.ok[base + l] &= cand[base + l];
