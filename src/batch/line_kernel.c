@@ -25,9 +25,9 @@ enum { LK_LINE = 0, LK_RAY = 1, LK_SEGMENT = 2 };
 /* Newton iterations the lanes of a bracket group take together (a random line converges in
  * about 6); the brackets that need more go on together in a second pass. */
 #define LK_LANE_ITER 12
-#ifndef LK_WIDE_CHAINS
+/* Groups of W brackets iterating side by side in the vector kernels (1, 2 and 4 measured: 2
+ * fastest). */
 #define LK_WIDE_CHAINS 2
-#endif
 
 /* The per-entry state of a block of up to 64 entries between the kernel's stages, in columns:
  * the model of linear_circle (r, a, m0, x1, |x1|, c2, h and three invariants of fdf_scaled), the
@@ -47,17 +47,6 @@ typedef struct lk_block {
     int n_long, long_item[128];  /* brackets still iterating after LK_LANE_ITER iterations */
     double long_st[5][128];      /* and their Newton state: x, lo, hi, dx, dxold */
 } lk_block;
-
-static inline int lk_lowest_bit(unsigned x)
-{
-#if defined(__GNUC__)
-    return __builtin_ctz(x);
-#else
-    int k = 0;
-    while (!(x >> k & 1)) k++;
-    return k;
-#endif
-}
 
 /* CD_MADD of the scalar code: a hardware fma only when the whole build targets it. */
 #ifdef FP_FAST_FMA

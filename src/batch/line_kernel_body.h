@@ -1,19 +1,20 @@
 /* SPDX-License-Identifier: MIT */
 /* Body of the line/ray/segment-circle distance kernel (src/batch/line_kernel.c), written once
- * over a lane type and included once per instruction set. The includer defines:
- *   W              lanes
- *   V, M           a vector of W doubles and a lane mask
- *   KN(name)       the name of this instantiation's function `name`
- *   vset vld vst vadd vsub vmul vdiv vsqrt vfma vabs vmin_sel...: see line_kernel.c
+ * over a lane type and included once per instruction set. The includer defines W (lanes), V (W
+ * doubles), M (a lane mask), KN(name) (this instantiation's name for `name`), LK_CHAINS and
+ * the operations (vadd, vsqrt, vfma, vsel, mand, ...; see line_kernel.c).
  * Every operation is the one of the scalar path (validation, src/api/validate.c; framing and
  * scaling, run_scaled/run/cdist__line_near_centre; the ROBUST core, linear_circle and
  * robust_roots with cdist__root_newton on fdf_scaled, src/lines/line_circle.c), lane by lane,
  * in the same order and with the same roundings (fma where the scalar code calls fma, CD_MADD
- * where it uses CD_MADD): the distance of a lane the kernel answers is bit-identical to the
- * single query's. A lane whose inputs or intermediate values would take any other branch of the
- * scalar path (a failed check, a tiny or subnormal vector, the perpendicular or zero-radius
- * cases, a Newton iteration near the circle's axis, no convergence within the kernel's
- * iteration cap) is left to the scalar path. */
+ * where it uses CD_MADD, the C library's cbrt): the distance of an entry the kernel answers is
+ * the single query's, bit for bit. An entry whose inputs or intermediate values would take any
+ * other branch of the scalar path (a failed check, a tiny or subnormal vector, the
+ * perpendicular or zero-radius cases, a Newton iterate near the circle's axis, a NaN) is left
+ * to the scalar path.
+ * Stages over a block of up to 64 entries: 1 (all entries, W at a time) validation, frame and
+ * model; 2 (the entries where F' is not monotone) the branch brackets; 3 (every bracket) Newton;
+ * 4 (all entries) the distance. */
 
 /* |a| <= CD_MAX_ABS for each component (false for NaN and infinities) */
 CD_INLINE M KN(in_range)(V x, V y, V z)
@@ -111,7 +112,6 @@ CD_INLINE void KN(newton_step)(const KN(model) *m, KN(newton) *s, M *fail)
     act = mandn(stop, act);
     s->x = x, s->lo = lo, s->hi = hi, s->dx = dx, s->res = res, s->act = act;
 }
-
 
 /* rho - r of the model (rho_minus_r) */
 CD_INLINE V KN(rho_minus_r)(const KN(model) *m, V x2, V rho) { return vdiv(vmadd(x2, x2, m->rr2), vadd(rho, m->r)); }
