@@ -227,6 +227,46 @@ static void check_batch(cdist_query *q, int shape, size_t n, const char *what)
     CHECK(bad == 0, "batch %s %s: %d entries differ from the single query", shape_name[shape], what, bad);
 }
 
+/* Strides through the public batch: lines in user structs, one circle for all (stride 0), and
+ * the arrays walked backwards; every distance as the single query's (the kernel's loads). */
+static void check_strides(cdist_query *q)
+{
+    enum { N = 150 };
+    static struct {
+        int tag;
+        cdist_line line;
+        char pad[5];
+    } items[N];
+    static double d[N];
+    static cdist_status st[N];
+    cdist_circle c = {{0.1, -0.2, 0.3}, {0.6, 0, 0.8}, 1.3};
+    for (int i = 0; i < N; i++) {
+        double t = 0.41 * i;
+        items[i].tag = i;
+        items[i].line = (cdist_line){{cos(t), sin(2 * t), 0.02 * i - 1}, {0, sin(t), cos(t)}};
+    }
+    CHECK(cdist_batch_distance(q, CDIST_KIND_LINE_CIRCLE, N, &items[0].line, sizeof items[0], &c, 0, d, st) ==
+              CDIST_OK,
+          "user structs, broadcast circle");
+    int bad = 0;
+    for (int i = 0; i < N; i++) {
+        cdist_result r;
+        cdist_line_circle(q, &items[i].line, &c, &r);
+        bad += memcmp(&d[i], &r.distance, sizeof(double)) != 0 || st[i] != CDIST_OK;
+    }
+    CHECK(bad == 0, "user structs, broadcast circle: %d entries differ", bad);
+    CHECK(cdist_batch_distance(q, CDIST_KIND_LINE_CIRCLE, N, &items[N - 1].line, -(ptrdiff_t)sizeof items[0], &c, 0,
+                               d, NULL) == CDIST_OK,
+          "negative stride");
+    bad = 0;
+    for (int i = 0; i < N; i++) {
+        cdist_result r;
+        cdist_line_circle(q, &items[N - 1 - i].line, &c, &r);
+        bad += memcmp(&d[i], &r.distance, sizeof(double)) != 0;
+    }
+    CHECK(bad == 0, "negative stride: %d entries differ", bad);
+}
+
 int main(int argc, char **argv)
 {
     if (argc < 2) {
@@ -273,6 +313,7 @@ int main(int argc, char **argv)
             cdist_query_set_threads(q, 1);
         }
     }
+    check_strides(q);
     /* the POLYNOMIAL method is not the kernel's: the batch then runs the single queries */
     cdist_query_set_method(q, CDIST_METHOD_POLYNOMIAL);
     size_t n = specials(load(argv[1], LK_LINE, "random"), LK_LINE);
