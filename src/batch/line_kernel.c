@@ -15,6 +15,8 @@
 #if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))
 #define CD_X86_KERNELS 1
 #include <immintrin.h>
+
+#include "load8.h"
 #endif
 
 _Static_assert(sizeof(cdist_line) == 48 && sizeof(cdist_ray) == 48 && sizeof(cdist_segment) == 48, "line layouts");
@@ -192,7 +194,9 @@ LK_TARGET_PUSH("avx512f,fma")
 #define mfalse() ((__mmask8)0)
 #define many(m) ((m) != 0)
 #define mbits(m) ((unsigned)(m))
+#define vload_objects batch_load8
 #include "line_kernel_body.h"
+#undef vload_objects
 #undef W
 #undef LK_CHAINS
 #undef V

@@ -489,6 +489,15 @@ static uint64_t KN(block)(const cdist__job *job, int shape, double tol, size_t l
     int cnt = (int)count;
     for (int base = 0; base < cnt; base += W) {
         int n = cnt - base < W ? cnt - base : W;
+#ifdef vload_objects /* a whole group of consecutive objects: loads and a transpose */
+        if (n == W) {
+            V cols[16];
+            vload_objects(cdist__job_a(job, lo + (size_t)base), job->a_stride, 6, cols);
+            vload_objects(cdist__job_b(job, lo + (size_t)base), job->b_stride, 7, cols + 8);
+            for (int f = 0; f < 6; f++) vst(in[f], cols[f]);
+            for (int f = 0; f < 7; f++) vst(in[6 + f], cols[8 + f]);
+        } else
+#endif
         for (int l = 0; l < W; l++) {
             size_t i = lo + (size_t)base + (size_t)(l < n ? l : 0);
             const double *pa = cdist__job_a(job, i), *pb = cdist__job_b(job, i);
