@@ -273,7 +273,9 @@ LK_TARGET_PUSH("avx2,fma")
 #define mfalse() _mm256_setzero_pd()
 #define many(m) (_mm256_movemask_pd(m) != 0)
 #define mbits(m) ((unsigned)_mm256_movemask_pd(m))
+#define vload_objects batch_load4
 #include "line_kernel_body.h"
+#undef vload_objects
 #undef W
 #undef LK_CHAINS
 #undef V

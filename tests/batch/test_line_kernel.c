@@ -265,6 +265,30 @@ static void check_strides(cdist_query *q)
         bad += memcmp(&d[i], &r.distance, sizeof(double)) != 0;
     }
     CHECK(bad == 0, "negative stride: %d entries differ", bad);
+    /* each kernel variant on its own: user structs walked backwards, the circle broadcast */
+    kfn ks[3] = {kernel_scalar, NULL, NULL};
+    const char *kn[3] = {"scalar", "avx2", "avx512"};
+#ifdef CD_X86_KERNELS
+    __builtin_cpu_init();
+    if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma")) ks[1] = kernel_avx2;
+    if (__builtin_cpu_supports("avx512f")) ks[2] = kernel_avx512;
+#endif
+    for (int v = 0; v < 3; v++) {
+        if (!ks[v]) continue;
+        cdist__job job = {CDIST_KIND_LINE_CIRCLE, N, (const char *)&items[N - 1].line, (const char *)&c,
+                          -(ptrdiff_t)sizeof items[0], 0, NULL, d, NULL, 64};
+        bad = 0;
+        for (size_t lo = 0; lo < N; lo += 64) {
+            size_t cnt = N - lo < 64 ? N - lo : 64;
+            uint64_t left = ks[v](&job, LK_LINE, q->unit_tol, lo, cnt);
+            for (size_t j = 0; j < cnt; j++) {
+                cdist_result r;
+                cdist_line_circle(q, &items[N - 1 - (lo + j)].line, &c, &r);
+                bad += (left >> j & 1) || memcmp(&d[lo + j], &r.distance, sizeof(double)) != 0;
+            }
+        }
+        CHECK(bad == 0, "%s kernel, negative stride and broadcast: %d entries differ or left", kn[v], bad);
+    }
 }
 
 int main(int argc, char **argv)
