@@ -50,7 +50,14 @@ static cdist_status k_curve_disk(cdist_query *q, const void *a, const void *b, c
 }
 
 /* The distance kernel of a kind, if any (zero, the default of a row: none). */
-enum { NO_KERNEL = 0, POINT_CIRCLE_KERNEL, POINT_DISK_KERNEL, LINE_CIRCLE_KERNEL, RAY_CIRCLE_KERNEL, SEGMENT_CIRCLE_KERNEL };
+enum {
+    NO_KERNEL = 0,
+    POINT_CIRCLE_KERNEL,
+    POINT_DISK_KERNEL,
+    LINE_CIRCLE_KERNEL, /* the line kernels in the order of their shapes: line, ray, segment */
+    RAY_CIRCLE_KERNEL,
+    SEGMENT_CIRCLE_KERNEL
+};
 
 /* A kind's name is its family's (cdist__family_table): the kind and family numbers agree. */
 static const struct {

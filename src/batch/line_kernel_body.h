@@ -28,6 +28,14 @@ CD_INLINE V KN(max3)(V x, V y, V z) { return vmax(vmax(vabs(x), vabs(y)), vabs(z
 /* fma(a.x, b.x, fma(a.y, b.y, a.z * b.z)) as v_dot */
 CD_INLINE V KN(dot)(V ax, V ay, V az, V bx, V by, V bz) { return vfma(ax, bx, vfma(ay, by, vmul(az, bz))); }
 
+/* v_cross: (a.y b.z - a.z b.y, a.z b.x - a.x b.z, a.x b.y - a.y b.x) */
+CD_INLINE void KN(cross)(V ax, V ay, V az, V bx, V by, V bz, V *x, V *y, V *z)
+{
+    *x = vsub(vmul(ay, bz), vmul(az, by));
+    *y = vsub(vmul(az, bx), vmul(ax, bz));
+    *z = vsub(vmul(ax, by), vmul(ay, bx));
+}
+
 /* cdist__fmax / cdist__fmin: a > b ? a : (b == b ? b : a) */
 CD_INLINE V KN(fmax)(V a, V b) { return vsel(vgt(a, b), a, vsel(veq(b, b), b, a)); }
 CD_INLINE V KN(fmin)(V a, V b) { return vsel(vlt(a, b), a, vsel(veq(b, b), b, a)); }
@@ -138,7 +146,8 @@ CD_INLINE V KN(model_d2)(const KN(model) *m, V s, V up)
 CD_INLINE V KN(end_d2)(V Bx, V By, V Bz, V Mx, V My, V Mz, V t, V nx, V ny, V nz, V r)
 {
     V Px = vfma(t, Mx, Bx), Py = vfma(t, My, By), Pz = vfma(t, Mz, Bz);
-    V qx = vsub(vmul(ny, Pz), vmul(nz, Py)), qy = vsub(vmul(nz, Px), vmul(nx, Pz)), qz = vsub(vmul(nx, Py), vmul(ny, Px));
+    V qx, qy, qz;
+    KN(cross)(nx, ny, nz, Px, Py, Pz, &qx, &qy, &qz);
     V h = KN(dot)(nx, ny, nz, Px, Py, Pz);
     V rho = vsqrt(KN(dot)(qx, qy, qz, qx, qy, qz));
     V dr = vsub(rho, r);
@@ -177,7 +186,8 @@ static void KN(stage_frame)(double in[13][W], int shape, double tol, lk_block *b
     V wx = vfma(edn, nx, ex), wy = vfma(edn, ny, ey), wz = vfma(edn, nz, ez);
     V iw = vdiv(one, vsqrt(KN(dot)(wx, wy, wz, wx, wy, wz)));
     V ux = vmul(iw, wx), uy = vmul(iw, wy), uz = vmul(iw, wz);
-    V vx = vsub(vmul(ny, uz), vmul(nz, uy)), vy = vsub(vmul(nz, ux), vmul(nx, uz)), vz = vsub(vmul(nx, uy), vmul(ny, ux));
+    V vx, vy, vz;
+    KN(cross)(nx, ny, nz, ux, uy, uz, &vx, &vy, &vz);
 
     /* ---- the first object: origin O, direction D (as the caller's, then scaled), unit M ---- */
     V Ox = ax, Oy = ay, Oz = az, Dx, Dy, Dz;
@@ -253,7 +263,9 @@ static void KN(stage_frame)(double in[13][W], int shape, double tol, lk_block *b
     V dt = vneg(KN(dot)(B0x, B0y, B0z, Mx, My, Mz));
     M cor = vne(dt, zero);
     t0 = vsel(cor, vadd(t0, dt), t0);
-    B0x = vsel(cor, vfma(t0, Mx, Bx), B0x), B0y = vsel(cor, vfma(t0, My, By), B0y), B0z = vsel(cor, vfma(t0, Mz, Bz), B0z);
+    B0x = vsel(cor, vfma(t0, Mx, Bx), B0x);
+    B0y = vsel(cor, vfma(t0, My, By), B0y);
+    B0z = vsel(cor, vfma(t0, Mz, Bz), B0z);
     V umin = vsub(lo, t0), umax = vsub(hi, t0);
     V S = KN(fmax)(r, vsqrt(KN(dot)(B0x, B0y, B0z, B0x, B0y, B0z)));
     ok = mand(ok, vge(S, vset(0x1p-1022)));
@@ -261,9 +273,9 @@ static void KN(stage_frame)(double in[13][W], int shape, double tol, lk_block *b
     V Bsx = vmul(sg, B0x), Bsy = vmul(sg, B0y), Bsz = vmul(sg, B0z);
     V rs = vmul(r, sg);
     umin = vmul(umin, sg), umax = vmul(umax, sg);
-    V wwx = vsub(vmul(ny, Mz), vmul(nz, My)), wwy = vsub(vmul(nz, Mx), vmul(nx, Mz)), wwz = vsub(vmul(nx, My), vmul(ny, Mx));
-    V nbx = vsub(vmul(ny, Bsz), vmul(nz, Bsy)), nby = vsub(vmul(nz, Bsx), vmul(nx, Bsz)),
-      nbz = vsub(vmul(nx, Bsy), vmul(ny, Bsx));
+    V wwx, wwy, wwz, nbx, nby, nbz;
+    KN(cross)(nx, ny, nz, Mx, My, Mz, &wwx, &wwy, &wwz);
+    KN(cross)(nx, ny, nz, Bsx, Bsy, Bsz, &nbx, &nby, &nbz);
     V m2x = KN(dot)(vx, vy, vz, wwx, wwy, wwz), m2y = vneg(KN(dot)(ux, uy, uz, wwx, wwy, wwz));
     V b2x = KN(dot)(vx, vy, vz, nbx, nby, nbz), b2y = vneg(KN(dot)(ux, uy, uz, nbx, nby, nbz));
     V a = KN(dot)(nx, ny, nz, Mx, My, Mz), h0 = KN(dot)(nx, ny, nz, Bsx, Bsy, Bsz);
@@ -531,7 +543,8 @@ static uint64_t KN(block)(const cdist__job *job, int shape, double tol, size_t l
         if (!b.ok[i]) continue;
         for (int j = 0; j < 2; j++) {
             if (!b.has[j][i]) continue;
-            double blo = cdist__fmax(b.br[j][0][i], b.f[LK_F_SMIN][i]), bhi = cdist__fmin(b.br[j][1][i], b.f[LK_F_SMAX][i]);
+            double blo = cdist__fmax(b.br[j][0][i], b.f[LK_F_SMIN][i]);
+            double bhi = cdist__fmin(b.br[j][1][i], b.f[LK_F_SMAX][i]);
             if (blo > bhi) continue;
             b.item_entry[ni] = i, b.item_lo[ni] = blo, b.item_hi[ni] = bhi;
             ni++;

@@ -196,8 +196,9 @@ static int check_kernel(const char *name, kfn k, cdist_query *q, int shape, size
                       r.distance);
         }
     }
-    CHECK(bad == 0 && wrong_left == 0, "%s %s %s: %d distances differ by more than 2 ulps of scale, %d rejected entries answered",
-          name, shape_name[shape], what, bad, wrong_left);
+    CHECK(bad == 0 && wrong_left == 0,
+          "%s %s %s: %d distances differ by more than 2 ulps of scale, %d rejected entries answered", name,
+          shape_name[shape], what, bad, wrong_left);
     CHECK(identical * 10 >= answered * 9, "%s %s %s: only %d of %d distances bit-identical to the single query's", name,
           shape_name[shape], what, identical, answered);
     if (identical < answered)
@@ -327,10 +328,12 @@ int main(int argc, char **argv)
                 best = "avx512";
             }
 #endif
-            printf("  %-8s %-6s %4zu entries (%4d valid): %4d valid entries left to the scalar path (%s and the others)\n",
+            printf("  %-8s %-6s %4zu entries (%4d valid): %4d valid entries left to the scalar path "
+                   "(%s and the others)\n",
                    shape_name[shape], sets[s], n, valid, left, best);
             /* the random file: the kernel answers nearly everything valid */
-            if (s == 0) CHECK(left * 50 <= valid, "%s random: %d of %d valid entries left", shape_name[shape], left, valid);
+            if (s == 0)
+                CHECK(left * 50 <= valid, "%s random: %d of %d valid entries left", shape_name[shape], left, valid);
             check_batch(q, shape, n, sets[s]);
             cdist_query_set_threads(q, 2);
             check_batch(q, shape, n, sets[s]);
