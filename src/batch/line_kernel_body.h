@@ -408,10 +408,6 @@ static void KN(stage_newton)(lk_block *b, const int *k, int n)
         s[c] = KN(newton_start)(vld(lo), vld(hi), vgt(vld(act), vset(0.0)));
         fail[c] = mfalse();
     }
-#if W == 1
-    for (int it = 0; it < CD_ROOT_MAX_ITER && s[0].act; it++) KN(newton_step)(&md[0], &s[0], &fail[0]);
-    s[0].res = s[0].act ? s[0].x : s[0].res;
-#else
     for (int it = 0; it < LK_LANE_ITER; it++) {
         M act = s[0].act;
         for (int c = 1; c < LK_CHAINS; c++) act = mor(act, s[c].act);
@@ -432,7 +428,6 @@ static void KN(stage_newton)(lk_block *b, const int *k, int n)
             for (int f = 0; f < 5; f++) b->long_st[f][j] = st[f][l];
         }
     }
-#endif
     for (int c = 0; c < LK_CHAINS; c++) {
         V d2 = KN(model_d2)(&md[c], s[c].res, KN(load_field)(b, LK_F_UP, e[c]));
         double out[W];
@@ -445,10 +440,14 @@ static void KN(stage_newton)(lk_block *b, const int *k, int n)
     }
 }
 
-#if W > 1
 /* Stage 3b, the long brackets j[0..n-1] (n <= W; the rest of j repeats j[0]) that stage_newton
  * left: their iterations go on together up to CD_ROOT_MAX_ITER in all, where
- * cdist__root_newton returns its last x. */
+ * cdist__root_newton returns its last x.
+ * The screen: a root that took that long and is not at an end of the range (a ray's start, a
+ * segment's end: the bracket bisected down to the end where F' does not vanish, the end
+ * candidate decides) is a nearly multiple root of F' (a tangent line), where the solvers stop
+ * at different points of a flat bottom: such an entry is left to the scalar path, so that its
+ * answer is the single query's whatever solver that uses. */
 static void KN(stage_long)(lk_block *b, const int *j, int n)
 {
     int e[W];
@@ -467,6 +466,12 @@ static void KN(stage_long)(lk_block *b, const int *j, int n)
     M fail = mfalse();
     for (int it = LK_LANE_ITER; it < CD_ROOT_MAX_ITER && many(s.act); it++) KN(newton_step)(&md, &s, &fail);
     s.res = vsel(s.act, s.x, s.res);
+    V smin = KN(load_field)(b, LK_F_SMIN, e), smax = KN(load_field)(b, LK_F_SMAX, e);
+    V tol = vset(8.0 * DBL_EPSILON), atol = vset(0x1p-60);
+    V big = vset(DBL_MAX); /* a finite end only (a line has none) */
+    M at_min = mand(vle(vabs(smin), big), vle(vabs(vsub(s.res, smin)), vadd(vmul(tol, vabs(smin)), atol)));
+    M at_max = mand(vle(vabs(smax), big), vle(vabs(vsub(s.res, smax)), vadd(vmul(tol, vabs(smax)), atol)));
+    fail = mor(fail, mnot(mor(at_min, at_max)));
     V d2 = KN(model_d2)(&md, s.res, KN(load_field)(b, LK_F_UP, e));
     double out[W];
     vst(out, d2);
@@ -477,7 +482,6 @@ static void KN(stage_long)(lk_block *b, const int *j, int n)
         b->item_fail[k] = (unsigned char)(fb >> l & 1);
     }
 }
-#endif
 
 /* Stage 4, entries base .. base + W - 1: the distance from the smallest candidate, unscaled;
  * returns the mask of the entries left to the scalar path. */
@@ -556,13 +560,11 @@ static uint64_t KN(block)(const cdist__job *job, int shape, double tol, size_t l
         for (int l = 0; l < LK_CHAINS * W; l++) k[l] = s0 + (l < n ? l : 0);
         KN(stage_newton)(&b, k, n);
     }
-#if W > 1
     for (int s0 = 0; s0 < b.n_long; s0 += W) {
         int n = b.n_long - s0 < W ? b.n_long - s0 : W, j[W];
         for (int l = 0; l < W; l++) j[l] = s0 + (l < n ? l : 0);
         KN(stage_long)(&b, j, n);
     }
-#endif
     unsigned char cand[64];
     memset(cand, shape != LK_LINE, sizeof cand); /* rays and segments: the ends */
     for (int j = 0; j < ni; j++) {
