@@ -50,6 +50,10 @@ typedef struct lk_block {
     double long_st[5][128];      /* and their Newton state: x, lo, hi, dx, dxold */
 } lk_block;
 
+/* 2^(k/3), k = -2..2, as the C library's cbrt has them (1.0 / SQR_CBRT2 etc.). */
+static const double lk_cbrt_factor[5] = {1.0 / 1.5874010519681994748, 1.0 / 1.2599210498948731648, 1.0,
+                                         1.2599210498948731648, 1.5874010519681994748};
+
 /* CD_MADD of the scalar code: a hardware fma only when the whole build targets it. */
 #ifdef FP_FAST_FMA
 #define vmadd(a, b, c) vfma(a, b, c)
@@ -195,8 +199,16 @@ LK_TARGET_PUSH("avx512f,fma")
 #define many(m) ((m) != 0)
 #define mbits(m) ((unsigned)(m))
 #define vload_objects batch_load8
+#define vfrexp_m(x) _mm512_getmant_pd(x, _MM_MANT_NORM_p5_1, _MM_MANT_SIGN_zero)
+#define vfrexp_e(x) _mm512_add_pd(_mm512_getexp_pd(x), _mm512_set1_pd(1.0))
+#define vtrunc(x) _mm512_roundscale_pd(x, _MM_FROUND_TO_ZERO | _MM_FROUND_NO_EXC)
+#define vscale2(y, q) _mm512_scalef_pd(y, q)
 #include "line_kernel_body.h"
 #undef vload_objects
+#undef vfrexp_m
+#undef vfrexp_e
+#undef vtrunc
+#undef vscale2
 #undef W
 #undef LK_CHAINS
 #undef V
@@ -274,8 +286,26 @@ LK_TARGET_PUSH("avx2,fma")
 #define many(m) (_mm256_movemask_pd(m) != 0)
 #define mbits(m) ((unsigned)_mm256_movemask_pd(m))
 #define vload_objects batch_load4
+#define vfrexp_m(x)                                                                                          \
+    _mm256_castsi256_pd(_mm256_or_si256(_mm256_and_si256(_mm256_castpd_si256(x), _mm256_set1_epi64x(0x000fffffffffffffll)), \
+                                        _mm256_set1_epi64x(0x3fe0000000000000ll)))
+#define vfrexp_e(x)                                                                                          \
+    _mm256_sub_pd(_mm256_castsi256_pd(_mm256_or_si256(_mm256_srli_epi64(_mm256_castpd_si256(x), 52),          \
+                                                      _mm256_set1_epi64x(0x4330000000000000ll))),              \
+                  _mm256_set1_pd(0x1p52 + 1022.0))
+#define vtrunc(x) _mm256_round_pd(x, _MM_FROUND_TO_ZERO | _MM_FROUND_NO_EXC)
+#define vscale2(y, q)                                                                                        \
+    _mm256_castsi256_pd(_mm256_add_epi64(                                                                     \
+        _mm256_castpd_si256(y),                                                                               \
+        _mm256_slli_epi64(_mm256_sub_epi64(_mm256_castpd_si256(_mm256_add_pd(q, _mm256_set1_pd(0x1.8p52))),   \
+                                           _mm256_set1_epi64x(0x4338000000000000ll)),                          \
+                          52)))
 #include "line_kernel_body.h"
 #undef vload_objects
+#undef vfrexp_m
+#undef vfrexp_e
+#undef vtrunc
+#undef vscale2
 #undef W
 #undef LK_CHAINS
 #undef V
@@ -319,18 +349,32 @@ LK_TARGET_POP
 
 static uint64_t kernel_scalar(const cdist__job *job, int shape, double tol, size_t lo, size_t count)
 {
-    return block_1(job, shape, tol, lo, count);
+    return block_1(job, shape, tol, lo, count, 0);
 }
 
 #ifdef CD_X86_KERNELS
+/* Whether an instantiation's cube root is the C library's (its cbrt_matches), checked once:
+ * 0 unknown, 1 yes, -1 no (a benign race: every thread finds the same). */
+static int cbrt_verified(int *known, int (*matches)(void))
+{
+    int v = __atomic_load_n(known, __ATOMIC_RELAXED);
+    if (!v) {
+        v = matches() ? 1 : -1;
+        __atomic_store_n(known, v, __ATOMIC_RELAXED);
+    }
+    return v > 0;
+}
+
+static int cbrt_known_8, cbrt_known_4;
+
 static uint64_t kernel_avx512(const cdist__job *job, int shape, double tol, size_t lo, size_t count)
 {
-    return block_8(job, shape, tol, lo, count);
+    return block_8(job, shape, tol, lo, count, cbrt_verified(&cbrt_known_8, cbrt_matches_8));
 }
 
 static uint64_t kernel_avx2(const cdist__job *job, int shape, double tol, size_t lo, size_t count)
 {
-    return block_4(job, shape, tol, lo, count);
+    return block_4(job, shape, tol, lo, count, cbrt_verified(&cbrt_known_4, cbrt_matches_4));
 }
 typedef uint64_t (*kernel_fn)(const cdist__job *, int, double, size_t, size_t);
 

@@ -347,25 +347,93 @@ CD_INLINE V KN(load_field)(const lk_block *b, int f, const int *e)
     return vld(col);
 }
 
+#ifdef vfrexp_m
+/* Lanes whose cube root KN(cbrt) takes: positive normal numbers. */
+CD_INLINE M KN(cbrt_domain)(V x) { return mand(vge(x, vset(0x1p-1022)), vle(x, vset(DBL_MAX))); }
+
+/* cbrt of the C library (glibc's sysdeps/ieee754/dbl-64/s_cbrt.c: a polynomial guess, one
+ * Halley step, the exponent split by 3) for positive normal x, operation by operation. Used
+ * only where lk_cbrt_verified found it equal to the library's cbrt (another C library gives
+ * other last bits, and the kernel then calls its cbrt). */
+CD_INLINE V KN(cbrt)(V x)
+{
+    V xm = vfrexp_m(x), xe = vfrexp_e(x); /* x = xm 2^xe, xm in [0.5, 1) */
+    V u = vsub(vset(0.784932344976639262), vmul(vset(0.145263899385486377), xm));
+    u = vadd(vset(-1.83469277483613086), vmul(u, xm));
+    u = vadd(vset(2.44693122563534430), vmul(u, xm));
+    u = vadd(vset(-2.11499494167371287), vmul(u, xm));
+    u = vadd(vset(1.50819193781584896), vmul(u, xm));
+    u = vadd(vset(0.354895765043919860), vmul(u, xm));
+    V t2 = vmul(vmul(u, u), u);
+    V q = vtrunc(vdiv(xe, vset(3.0))), r = vsub(xe, vmul(vset(3.0), q)); /* xe / 3 and xe % 3 of C */
+    V f = vsel(veq(r, vset(-2.0)), vset(lk_cbrt_factor[0]),
+               vsel(veq(r, vset(-1.0)), vset(lk_cbrt_factor[1]),
+                    vsel(veq(r, vset(1.0)), vset(lk_cbrt_factor[3]),
+                         vsel(veq(r, vset(2.0)), vset(lk_cbrt_factor[4]), vset(1.0)))));
+    V ym = vmul(vdiv(vmul(u, vadd(t2, vmul(vset(2.0), xm))), vadd(vmul(vset(2.0), t2), xm)), f);
+    return vscale2(ym, q);
+}
+
+/* y[i] = KN(cbrt)(x[i]), n a multiple of W (for the tests). */
+static inline void KN(cbrt_lanes)(const double *x, double *y, int n)
+{
+    for (int i = 0; i < n; i += W) vst(&y[i], KN(cbrt)(vld(&x[i])));
+}
+
+/* Whether KN(cbrt) gives the C library's cbrt bit for bit on numbers all over its domain (every
+ * binade, pseudo-random mantissas, exact cubes): 1 or 0. */
+static int KN(cbrt_matches)(void)
+{
+    uint64_t state = 0x9E3779B97F4A7C15ull;
+    for (int k = 0; k < 4096; k += W) {
+        double x[W], y[W];
+        for (int l = 0; l < W; l++) {
+            state = state * 6364136223846793005ull + 1442695040888963407ull;
+            uint64_t e = (uint64_t)((k + l) % 2046 + 1), bits = e << 52 | (state >> 12);
+            memcpy(&x[l], &bits, sizeof bits);
+            if ((k + l) % 97 == 0) x[l] = (double)((k + l) % 200 + 1) * (double)((k + l) % 200 + 1) * (double)((k + l) % 200 + 1);
+        }
+        vst(y, KN(cbrt)(vld(x)));
+        for (int l = 0; l < W; l++) {
+            double c = cbrt(x[l]);
+            if (memcmp(&c, &y[l], sizeof c)) return 0;
+        }
+    }
+    return 1;
+}
+#endif
+
 /* Stage 2, the entries e[0..n-1] (n <= W; the rest of e repeats e[0]) where F' is not monotone:
  * the tangent points of slope 1 and the brackets of the branches that hold a local minimum,
  * written to b->br (A: left, B: right) and b->has. */
-static void KN(stage_branches)(lk_block *b, const int *e, int n)
+static void KN(stage_branches)(lk_block *b, const int *e, int n, int vector_cbrt)
 {
     const V zero = vset(0.0);
     KN(model) md;
     KN(load_model)(b, e, &md);
     V blo = KN(load_field)(b, LK_F_BLO, e), bhi = KN(load_field)(b, LK_F_BHI, e);
-    /* the cube roots are the C library's, lane by lane, for bit-identical brackets */
-    double c1[W], c2v[W], o1[W], o2[W];
-    vst(c1, vmul(md.m0, md.ax1));
-    vst(c2v, md.r);
-    for (int l = 0; l < W; l++) {
-        o1[l] = l < n ? cbrt(c1[l]) : 1.0;
-        o2[l] = l < n ? cbrt(c2v[l]) : 1.0;
+    /* the cube roots are the C library's (for bit-identical brackets): its algorithm in lanes
+     * where that was verified (KN(cbrt)), else its function lane by lane */
+    V c1 = vmul(md.m0, md.ax1), cm, cr;
+    (void)vector_cbrt;
+#ifdef vfrexp_m
+    if (vector_cbrt && !many(mnot(mand(KN(cbrt_domain)(c1), KN(cbrt_domain)(md.r))))) {
+        cm = KN(cbrt)(c1);
+        cr = KN(cbrt)(md.r);
+    } else
+#endif
+    {
+        double a1[W], a2[W], o1[W], o2[W];
+        vst(a1, c1);
+        vst(a2, md.r);
+        for (int l = 0; l < W; l++) {
+            o1[l] = l < n ? cbrt(a1[l]) : 1.0;
+            o2[l] = l < n ? cbrt(a2[l]) : 1.0;
+        }
+        cm = vld(o1);
+        cr = vld(o2);
     }
-    V cm = vld(o1);
-    V rhohat = vmul(vmul(vld(o2), cm), cm);
+    V rhohat = vmul(vmul(cr, cm), cm);
     V x2hat = vsqrt(KN(fmax)(zero, vmul(vsub(rhohat, md.ax1), vadd(rhohat, md.ax1))));
     V sc = vneg(vdiv(md.c2, md.m0));
     V xm = vdiv(x2hat, md.m0);
@@ -498,7 +566,7 @@ static unsigned KN(stage_final)(lk_block *b, int base, double *out)
  * mask of the entries left to the scalar path. The stages after the first take the entries
  * that need them, W at a time, so that the lanes stay busy (a quarter of random lines need
  * stage 2, the Newton iterations of a bracket vary). */
-static uint64_t KN(block)(const cdist__job *job, int shape, double tol, size_t lo, size_t count)
+static uint64_t KN(block)(const cdist__job *job, int shape, double tol, size_t lo, size_t count, int vector_cbrt)
 {
     lk_block b;
     double in[13][W];
@@ -532,13 +600,13 @@ static uint64_t KN(block)(const cdist__job *job, int shape, double tol, size_t l
         }
         e[ne++] = i;
         if (ne == W) {
-            KN(stage_branches)(&b, e, W);
+            KN(stage_branches)(&b, e, W, vector_cbrt);
             ne = 0;
         }
     }
     if (ne) {
         for (int l = ne; l < W; l++) e[l] = e[0];
-        KN(stage_branches)(&b, e, ne);
+        KN(stage_branches)(&b, e, ne, vector_cbrt);
     }
     /* the brackets clipped to the range; an empty one has no root */
     int ni = 0;
