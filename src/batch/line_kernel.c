@@ -25,7 +25,8 @@ _Static_assert(offsetof(cdist_circle, normal) == 24 && offsetof(cdist_circle, ra
 enum { LK_LINE = 0, LK_RAY = 1, LK_SEGMENT = 2 };
 
 /* Newton iterations the lanes of a bracket group take together (a random line converges in
- * about 6); the brackets that need more go on together in a second pass. */
+ * about 6); the brackets that need more go on together in a second pass (stage_long, where the
+ * screen of nearly multiple roots applies). */
 #define LK_LANE_ITER 12
 /* Groups of W brackets iterating side by side in the vector kernels (1, 2 and 4 measured: 2
  * fastest). */
@@ -50,9 +51,11 @@ typedef struct lk_block {
     double long_st[5][128];      /* and their Newton state: x, lo, hi, dx, dxold */
 } lk_block;
 
+#ifdef CD_X86_KERNELS
 /* 2^(k/3), k = -2..2, as the C library's cbrt has them (1.0 / SQR_CBRT2 etc.). */
 static const double lk_cbrt_factor[5] = {1.0 / 1.5874010519681994748, 1.0 / 1.2599210498948731648, 1.0,
                                          1.2599210498948731648, 1.5874010519681994748};
+#endif
 
 /* CD_MADD of the scalar code: a hardware fma only when the whole build targets it. */
 #ifdef FP_FAST_FMA
