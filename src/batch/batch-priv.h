@@ -50,4 +50,10 @@ cdist_status cdist__workers_run(cdist_query *q, const cdist__job *job, cdist__sl
  * distances are bit-identical to the single query's. */
 uint64_t cdist__point_distance_kernel(const cdist__job *job, int disk, double unit_tol, size_t lo, size_t count);
 
+/* Distance kernel of line-circle (shape 0), ray-circle (1) and segment-circle (2) for entries
+ * [lo, lo + count), count <= 64, with the same contract: distances bit-identical to the single
+ * query's (ROBUST method of the line-circle family only: the caller checks), a mask of the
+ * entries left for the scalar path (src/batch/line_kernel.c). */
+uint64_t cdist__line_distance_kernel(const cdist__job *job, int shape, double unit_tol, size_t lo, size_t count);
+
 #endif

@@ -50,7 +50,14 @@ static cdist_status k_curve_disk(cdist_query *q, const void *a, const void *b, c
 }
 
 /* The distance kernel of a kind, if any (zero, the default of a row: none). */
-enum { NO_KERNEL = 0, POINT_CIRCLE_KERNEL, POINT_DISK_KERNEL };
+enum {
+    NO_KERNEL = 0,
+    POINT_CIRCLE_KERNEL,
+    POINT_DISK_KERNEL,
+    LINE_CIRCLE_KERNEL, /* the line kernels in the order of their shapes: line, ray, segment */
+    RAY_CIRCLE_KERNEL,
+    SEGMENT_CIRCLE_KERNEL
+};
 
 /* A kind's name is its family's (cdist__family_table): the kind and family numbers agree. */
 static const struct {
@@ -62,9 +69,10 @@ static const struct {
                                  .kernel = POINT_CIRCLE_KERNEL},
     [CDIST_KIND_POINT_DISK] = {sizeof(cdist_vec3), sizeof(cdist_circle), k_point_disk,
                                .kernel = POINT_DISK_KERNEL},
-    [CDIST_KIND_LINE_CIRCLE] = {sizeof(cdist_line), sizeof(cdist_circle), k_line_circle},
-    [CDIST_KIND_RAY_CIRCLE] = {sizeof(cdist_ray), sizeof(cdist_circle), k_ray_circle},
-    [CDIST_KIND_SEGMENT_CIRCLE] = {sizeof(cdist_segment), sizeof(cdist_circle), k_segment_circle},
+    [CDIST_KIND_LINE_CIRCLE] = {sizeof(cdist_line), sizeof(cdist_circle), k_line_circle, .kernel = LINE_CIRCLE_KERNEL},
+    [CDIST_KIND_RAY_CIRCLE] = {sizeof(cdist_ray), sizeof(cdist_circle), k_ray_circle, .kernel = RAY_CIRCLE_KERNEL},
+    [CDIST_KIND_SEGMENT_CIRCLE] = {sizeof(cdist_segment), sizeof(cdist_circle), k_segment_circle,
+                                   .kernel = SEGMENT_CIRCLE_KERNEL},
     [CDIST_KIND_CIRCLE_CIRCLE] = {sizeof(cdist_circle), sizeof(cdist_circle), k_circle_circle},
     [CDIST_KIND_LINE_DISK] = {sizeof(cdist_line), sizeof(cdist_circle), k_line_disk},
     [CDIST_KIND_RAY_DISK] = {sizeof(cdist_ray), sizeof(cdist_circle), k_ray_disk},
@@ -152,13 +160,25 @@ static inline size_t lowest_bit(uint64_t x)
 #endif
 }
 
+/* The kernel of a job, if it is to run: distance-only, and the line kernels only for the method
+ * they implement (the ROBUST core; all three kinds run the line-circle family's method). */
+static int job_kernel(const cdist_query *h, const cdist__job *job)
+{
+    int kernel = job->distances ? kinds[job->kind].kernel : NO_KERNEL;
+    if (kernel >= LINE_CIRCLE_KERNEL && cdist__family_method(h, CD_FAM_LINE_CIRCLE) == CDIST_METHOD_POLYNOMIAL)
+        return NO_KERNEL;
+    return kernel;
+}
+
 void cdist__batch_range(cdist_query *h, const cdist__job *job, size_t lo, size_t hi, cdist__slot *slot)
 {
-    int kernel = kinds[job->kind].kernel;
-    if (job->distances && kernel != NO_KERNEL) {
+    int kernel = job_kernel(h, job);
+    if (kernel != NO_KERNEL) {
         for (size_t i = lo; i < hi; i += 64) {
             size_t cnt = hi - i < 64 ? hi - i : 64;
-            uint64_t left = cdist__point_distance_kernel(job, kernel == POINT_DISK_KERNEL, h->unit_tol, i, cnt);
+            uint64_t left = kernel >= LINE_CIRCLE_KERNEL
+                                ? cdist__line_distance_kernel(job, kernel - LINE_CIRCLE_KERNEL, h->unit_tol, i, cnt)
+                                : cdist__point_distance_kernel(job, kernel == POINT_DISK_KERNEL, h->unit_tol, i, cnt);
             if (job->statuses)
                 for (size_t k = 0; k < cnt; k++) job->statuses[i + k] = CDIST_OK;
             for (; left; left &= left - 1) entry(h, job, i + lowest_bit(left), slot);

@@ -14,6 +14,8 @@
 #if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))
 #define CD_X86_KERNELS 1
 #include <immintrin.h>
+
+#include "load8.h"
 #endif
 
 /* The kernels load the fields by byte offset. */
@@ -88,38 +90,6 @@ AVX512 static inline __m512d dot8(__m512d ax, __m512d ay, __m512d az, __m512d bx
     return _mm512_fmadd_pd(ax, bx, _mm512_fmadd_pd(ay, by, _mm512_mul_pd(az, bz)));
 }
 
-/* The first `fields` doubles of 8 objects (at p + k * stride) as vectors col[0..fields-1], e.g.
- * a circle's centre, normal and radius: one masked load per object (never touching a byte after
- * it) and an 8x8 transpose, cheaper than a gather per field. */
-AVX512 static inline void load8(const char *p, ptrdiff_t stride, int fields, __m512d col[8])
-{
-    __m512d r[8];
-    __mmask8 m = (__mmask8)((1u << fields) - 1u);
-    for (int k = 0; k < 8; k++) r[k] = _mm512_maskz_loadu_pd(m, p + k * stride);
-    __m512d t[8];
-    for (int k = 0; k < 8; k += 2) {
-        t[k] = _mm512_unpacklo_pd(r[k], r[k + 1]);     /* r_k[0] r_k+1[0] r_k[2] r_k+1[2] ... */
-        t[k + 1] = _mm512_unpackhi_pd(r[k], r[k + 1]); /* r_k[1] r_k+1[1] r_k[3] r_k+1[3] ... */
-    }
-    const __m512i lo2 = _mm512_set_epi64(13, 12, 5, 4, 9, 8, 1, 0), hi2 = _mm512_set_epi64(15, 14, 7, 6, 11, 10, 3, 2);
-    __m512d u[8];
-    for (int h = 0; h < 8; h += 4) {
-        u[h + 0] = _mm512_permutex2var_pd(t[h], lo2, t[h + 2]);     /* fields 0 and 4, rows h..h+3 */
-        u[h + 1] = _mm512_permutex2var_pd(t[h], hi2, t[h + 2]);     /* fields 2 and 6 */
-        u[h + 2] = _mm512_permutex2var_pd(t[h + 1], lo2, t[h + 3]); /* fields 1 and 5 */
-        u[h + 3] = _mm512_permutex2var_pd(t[h + 1], hi2, t[h + 3]); /* fields 3 and 7 */
-    }
-    const __m512i lo4 = _mm512_set_epi64(11, 10, 9, 8, 3, 2, 1, 0), hi4 = _mm512_set_epi64(15, 14, 13, 12, 7, 6, 5, 4);
-    col[0] = _mm512_permutex2var_pd(u[0], lo4, u[4]);
-    col[4] = _mm512_permutex2var_pd(u[0], hi4, u[4]);
-    col[2] = _mm512_permutex2var_pd(u[1], lo4, u[5]);
-    col[6] = _mm512_permutex2var_pd(u[1], hi4, u[5]);
-    col[1] = _mm512_permutex2var_pd(u[2], lo4, u[6]);
-    col[5] = _mm512_permutex2var_pd(u[2], hi4, u[6]);
-    col[3] = _mm512_permutex2var_pd(u[3], lo4, u[7]);
-    col[7] = _mm512_setzero_pd();
-}
-
 AVX512 static uint64_t kernel_avx512(const cdist__job *job, int disk, double tol, size_t lo, size_t count)
 {
     uint64_t left = 0;
@@ -130,8 +100,8 @@ AVX512 static uint64_t kernel_avx512(const cdist__job *job, int disk, double tol
         size_t i = lo + k;
         const char *pa = cdist__job_a(job, i), *pb = cdist__job_b(job, i);
         __m512d col[8], pt[8];
-        load8(pb, job->b_stride, 7, col);
-        load8(pa, job->a_stride, 3, pt);
+        batch_load8(pb, job->b_stride, 7, col);
+        batch_load8(pa, job->a_stride, 3, pt);
         __m512d px = pt[0], py = pt[1], pz = pt[2];
         __m512d cx = col[0], cy = col[1], cz = col[2], dx = col[3], dy = col[4], dz = col[5], r = col[6];
         __m512d m = max3_8(dx, dy, dz);

@@ -1,0 +1,656 @@
+/* SPDX-License-Identifier: MIT */
+/* Body of the line/ray/segment-circle distance kernel (src/batch/line_kernel.c), written once
+ * over a lane type and included once per instruction set. The includer defines W (lanes), V (W
+ * doubles), M (a lane mask), KN(name) (this instantiation's name for `name`), LK_CHAINS and
+ * the operations (vadd, vsqrt, vfma, vsel, mand, ...; see line_kernel.c).
+ * Every operation is the one of the scalar path (validation, src/api/validate.c; framing and
+ * scaling, run_scaled/run/cdist__line_near_centre; the ROBUST core, linear_circle and
+ * robust_roots with cdist__root_newton on fdf_scaled, src/lines/line_circle.c), lane by lane,
+ * in the same order and with the same roundings (fma where the scalar code calls fma, CD_MADD
+ * where it uses CD_MADD, the C library's cbrt): the distance of an entry the kernel answers is
+ * the single query's, bit for bit. An entry whose inputs or intermediate values would take any
+ * other branch of the scalar path (a failed check, a tiny or subnormal vector, the
+ * perpendicular or zero-radius cases, a Newton iterate near the circle's axis, a NaN) is left
+ * to the scalar path.
+ * Stages over a block of up to 64 entries: 1 (all entries, W at a time) validation, frame and
+ * model; 2 (the entries where F' is not monotone) the branch brackets; 3 (every bracket) Newton;
+ * 4 (all entries) the distance. */
+
+/* |a| <= CD_MAX_ABS for each component (false for NaN and infinities) */
+CD_INLINE M KN(in_range)(V x, V y, V z)
+{
+    V lim = vset(CD_MAX_ABS);
+    return mand(mand(vle(vabs(x), lim), vle(vabs(y), lim)), vle(vabs(z), lim));
+}
+
+CD_INLINE V KN(max3)(V x, V y, V z) { return vmax(vmax(vabs(x), vabs(y)), vabs(z)); }
+
+/* fma(a.x, b.x, fma(a.y, b.y, a.z * b.z)) as v_dot */
+CD_INLINE V KN(dot)(V ax, V ay, V az, V bx, V by, V bz) { return vfma(ax, bx, vfma(ay, by, vmul(az, bz))); }
+
+/* v_cross: (a.y b.z - a.z b.y, a.z b.x - a.x b.z, a.x b.y - a.y b.x) */
+CD_INLINE void KN(cross)(V ax, V ay, V az, V bx, V by, V bz, V *x, V *y, V *z)
+{
+    *x = vsub(vmul(ay, bz), vmul(az, by));
+    *y = vsub(vmul(az, bx), vmul(ax, bz));
+    *z = vsub(vmul(ax, by), vmul(ay, bx));
+}
+
+/* cdist__fmax / cdist__fmin: a > b ? a : (b == b ? b : a) */
+CD_INLINE V KN(fmax)(V a, V b) { return vsel(vgt(a, b), a, vsel(veq(b, b), b, a)); }
+CD_INLINE V KN(fmin)(V a, V b) { return vsel(vlt(a, b), a, vsel(veq(b, b), b, a)); }
+
+/* 2^e of a positive normal x (its exponent bits), clamped as cdist__scale_exponent clamps e. */
+CD_INLINE V KN(pow2_of)(V x)
+{
+    V p = vexpbits(x);
+    return vmax(vmin(p, vset(0x1p1000)), vset(0x1p-1000));
+}
+
+/* The model of linear_circle (lc_model) in lanes. */
+typedef struct KN(model) {
+    V r, a, m0, x1, ax1, c2, h;
+    V k, rr2, dfc; /* invariants of fdf_scaled: a^2 + m0^2, (|x1| - r)(|x1| + r), -(r m0 m0)(x1^2) */
+} KN(model);
+
+/* fdf_scaled of line_circle.c; *ok cleared where it would call fdf (rho^2 out of range). */
+CD_INLINE V KN(fdf_scaled)(const KN(model) *m, V s, V *df, M *ok)
+{
+    V h = vmadd(m->a, s, m->h), x2 = vmadd(m->m0, s, m->c2);
+    V rho2 = vmadd(m->x1, m->x1, vmul(x2, x2));
+    *ok = mand(vge(rho2, vset(0x1p-200)), vle(rho2, vset(0x1p200)));
+    V rho = vsqrt(rho2), rr = vadd(rho, m->r);
+    V num = vmadd(x2, x2, m->rr2);
+    V P = vmul(vmul(rho2, rho), rr);
+    *df = vmadd(m->k, P, vmul(m->dfc, rr));
+    return vmadd(vmul(m->a, h), P, vmul(vmul(m->m0, x2), vmul(num, rho2)));
+}
+
+/* The state of cdist__root_newton(fdf_scaled, m, lo, hi, +1, CD_ROOT_REL_ULPS * eps, CD_ROOT_ABS,
+ * CD_ROOT_MAX_ITER) in each lane: act = still iterating, res = the root of a lane that stopped. */
+typedef struct KN(newton) {
+    V x, lo, hi, dx, dxold, res;
+    M act;
+} KN(newton);
+
+CD_INLINE KN(newton) KN(newton_start)(V lo, V hi, M act)
+{
+    KN(newton) s;
+    s.res = lo; /* also the answer of an empty bracket */
+    s.act = mand(act, vlt(lo, hi));
+    s.x = vmul(vset(0.5), vadd(lo, hi));
+    s.lo = lo, s.hi = hi;
+    s.dxold = vsub(hi, lo), s.dx = s.dxold;
+    return s;
+}
+
+/* One iteration in the lanes of s->act; a lane that stops writes s->res and leaves s->act. Lanes
+ * meeting a branch the kernel does not take (fdf instead of fdf_scaled, NaN) are added to *fail. */
+CD_INLINE void KN(newton_step)(const KN(model) *m, KN(newton) *s, M *fail)
+{
+    const V rel = vset(CD_ROOT_REL_ULPS * DBL_EPSILON), abs_ = vset(CD_ROOT_ABS), half = vset(0.5), zero = vset(0.0);
+    V x = s->x, lo = s->lo, hi = s->hi, res = s->res;
+    M act = s->act;
+    V df;
+    M rok;
+    V f = KN(fdf_scaled)(m, x, &df, &rok);
+    M bad = mor(mnot(rok), vne(f, f));
+    *fail = mor(*fail, mand(act, bad));
+    act = mandn(bad, act);
+    M z = veq(f, zero);
+    res = vsel(mand(act, z), x, res);
+    act = mandn(z, act);
+    M neg = vlt(f, zero);
+    lo = vsel(mand(act, neg), x, lo);
+    hi = vsel(mandn(neg, act), x, hi);
+    V step = vdiv(f, df), xn = vsub(x, step);
+    M dfpos = vgt(df, zero);
+    V astep = vabs(step);
+    M conv = mand(dfpos, mor(vle(astep, vmul(rel, vabs(x))), vle(astep, abs_)));
+    res = vsel(mand(act, conv), xn, res);
+    act = mandn(conv, act);
+    M inside = mand(vgt(xn, lo), vlt(xn, hi));
+    M bis = mor(mor(mnot(dfpos), mnot(inside)), vgt(vabs(vmul(vset(2.0), f)), vabs(vmul(s->dxold, df))));
+    V xb = vsel(bis, vmul(half, vadd(lo, hi)), xn);
+    s->dxold = vsel(act, s->dx, s->dxold);
+    V dx = vsel(act, vabs(vsub(xb, x)), s->dx);
+    x = vsel(act, xb, x);
+    M stop = mor(vle(dx, vmul(rel, vabs(x))), mnot(vgt(vsub(hi, lo), abs_)));
+    res = vsel(mand(act, stop), x, res);
+    act = mandn(stop, act);
+    s->x = x, s->lo = lo, s->hi = hi, s->dx = dx, s->res = res, s->act = act;
+}
+
+/* rho - r of the model (rho_minus_r) */
+CD_INLINE V KN(rho_minus_r)(const KN(model) *m, V x2, V rho) { return vdiv(vmadd(x2, x2, m->rr2), vadd(rho, m->r)); }
+
+/* fp_at of line_circle.c at height h and in-plane x2, side -1 or +1 on the axis. */
+CD_INLINE V KN(fp_at)(const KN(model) *m, V h, V x2, double side)
+{
+    V rho = vsqrt(vmadd(m->x1, m->x1, vmul(x2, x2)));
+    V on_axis = vsub(vmul(m->a, h), vmul(vmul(vset(side), m->r), m->m0));
+    V off = vmadd(m->a, h, vmul(vmul(m->m0, x2), vdiv(KN(rho_minus_r)(m, x2, rho), rho)));
+    return vsel(veq(rho, vset(0.0)), on_axis, off);
+}
+
+/* Squared distance of offer_model at s, times up twice. */
+CD_INLINE V KN(model_d2)(const KN(model) *m, V s, V up)
+{
+    V h = vmadd(m->a, s, m->h), x2 = vmadd(m->m0, s, m->c2);
+    V rho = vsqrt(vmadd(m->x1, m->x1, vmul(x2, x2)));
+    V dr = KN(rho_minus_r)(m, x2, rho);
+    return vmul(vmul(vmadd(h, h, vmul(dr, dr)), up), up);
+}
+
+/* offer_end's squared distance: the point B + t M against the circle (normal n, radius r). */
+CD_INLINE V KN(end_d2)(V Bx, V By, V Bz, V Mx, V My, V Mz, V t, V nx, V ny, V nz, V r)
+{
+    V Px = vfma(t, Mx, Bx), Py = vfma(t, My, By), Pz = vfma(t, Mz, Bz);
+    V qx, qy, qz;
+    KN(cross)(nx, ny, nz, Px, Py, Pz, &qx, &qy, &qz);
+    V h = KN(dot)(nx, ny, nz, Px, Py, Pz);
+    V rho = vsqrt(KN(dot)(qx, qy, qz, qx, qy, qz));
+    V dr = vsub(rho, r);
+    return vfma(dr, dr, vmul(h, h));
+}
+
+/* Stage 1, entries base .. base + W - 1 of block b (n of them real): in[f][l] is field f of lane
+ * l (the first object's six numbers, then the circle's seven); shape: LK_LINE, LK_RAY or
+ * LK_SEGMENT. Validation, framing, scaling and the model of linear_circle; the brackets of
+ * robust_roots where F' increases everywhere ("single"), the finite ends' candidates. */
+static void KN(stage_frame)(double in[13][W], int shape, double tol, lk_block *b, int base, int n)
+{
+    const V zero = vset(0.0), one = vset(1.0);
+    V ax = vld(in[0]), ay = vld(in[1]), az = vld(in[2]), bx = vld(in[3]), by = vld(in[4]), bz = vld(in[5]);
+    V cx = vld(in[6]), cy = vld(in[7]), cz = vld(in[8]), ndx = vld(in[9]), ndy = vld(in[10]), ndz = vld(in[11]);
+    V r = vld(in[12]);
+
+    /* ---- validation: cdist__check_point / cdist__check_direction / circle_fast ---- */
+    M ok = mand(mand(KN(in_range)(ax, ay, az), KN(in_range)(bx, by, bz)), KN(in_range)(cx, cy, cz));
+    ok = mand(ok, mand(KN(in_range)(ndx, ndy, ndz), mand(vge(r, zero), vle(r, vset(CD_MAX_ABS)))));
+    V nm = KN(max3)(ndx, ndy, ndz);
+    ok = mand(ok, vge(nm, vset(0x1p-500)));
+    V inm = vdiv(one, nm);
+    V sdx = vmul(inm, ndx), sdy = vmul(inm, ndy), sdz = vmul(inm, ndz);
+    V nns = vsqrt(KN(dot)(sdx, sdy, sdz, sdx, sdy, sdz));
+    ok = mand(ok, vle(vabs(vsub(vmul(nm, nns), one)), vset(tol)));
+    V inns = vdiv(one, nns);
+    V nx = vmul(inns, sdx), ny = vmul(inns, sdy), nz = vmul(inns, sdz);
+    /* v_basis: e = the axis of the smallest |n_k| (first on ties), u = normalise(e - (e.n) n), v = n x u */
+    V anx = vabs(nx), any = vabs(ny), anz = vabs(nz);
+    M kx = mand(vle(anx, any), vle(anx, anz));
+    M ky = mandn(kx, vle(any, anz));
+    M kz = mandn(mor(kx, ky), mtrue());
+    V ex = vsel(kx, one, zero), ey = vsel(ky, one, zero), ez = vsel(kz, one, zero);
+    V edn = vneg(KN(dot)(ex, ey, ez, nx, ny, nz));
+    V wx = vfma(edn, nx, ex), wy = vfma(edn, ny, ey), wz = vfma(edn, nz, ez);
+    V iw = vdiv(one, vsqrt(KN(dot)(wx, wy, wz, wx, wy, wz)));
+    V ux = vmul(iw, wx), uy = vmul(iw, wy), uz = vmul(iw, wz);
+    V vx, vy, vz;
+    KN(cross)(nx, ny, nz, ux, uy, uz, &vx, &vy, &vz);
+
+    /* ---- the first object: origin O, direction D (as the caller's, then scaled), unit M ---- */
+    V Ox = ax, Oy = ay, Oz = az, Dx, Dy, Dz;
+    V L;
+    if (shape == LK_SEGMENT) {
+        Dx = vsub(bx, ax), Dy = vsub(by, ay), Dz = vsub(bz, az);
+        L = KN(fmax)(r, KN(max3)(vsub(ax, cx), vsub(ay, cy), vsub(az, cz)));
+        L = KN(fmax)(L, KN(max3)(vsub(bx, cx), vsub(by, cy), vsub(bz, cz)));
+    } else {
+        Dx = bx, Dy = by, Dz = bz;
+        L = KN(fmax)(r, KN(max3)(vsub(ax, cx), vsub(ay, cy), vsub(az, cz)));
+    }
+    /* run_scaled: scale exponent of L (normal L only) */
+    ok = mand(ok, vge(L, vset(0x1p-1022)));
+    V UP = KN(pow2_of)(L), down = vrecip2(UP);
+    cx = vmul(down, cx), cy = vmul(down, cy), cz = vmul(down, cz);
+    r = vmul(r, down);
+    Ox = vmul(down, Ox), Oy = vmul(down, Oy), Oz = vmul(down, Oz);
+    V dm, len, Mx, My, Mz;
+    if (shape == LK_SEGMENT) {
+        /* scaled before the normalisation; any length */
+        Dx = vmul(down, Dx), Dy = vmul(down, Dy), Dz = vmul(down, Dz);
+        dm = KN(max3)(Dx, Dy, Dz);
+        ok = mand(ok, vge(dm, vset(0x1p-500)));
+        V idm = vdiv(one, dm);
+        V sx = vmul(idm, Dx), sy = vmul(idm, Dy), sz = vmul(idm, Dz);
+        V ns = vsqrt(KN(dot)(sx, sy, sz, sx, sy, sz));
+        len = vmul(ns, dm);
+        V ins = vdiv(one, ns);
+        Mx = vmul(ins, sx), My = vmul(ins, sy), Mz = vmul(ins, sz);
+    } else {
+        /* unit within tol, normalised before the scaling */
+        dm = KN(max3)(Dx, Dy, Dz);
+        ok = mand(ok, vge(dm, vset(0x1p-500)));
+        V idm = vdiv(one, dm);
+        V sx = vmul(idm, Dx), sy = vmul(idm, Dy), sz = vmul(idm, Dz);
+        V ns = vsqrt(KN(dot)(sx, sy, sz, sx, sy, sz));
+        len = vmul(ns, dm);
+        ok = mand(ok, vle(vabs(vsub(len, one)), vset(tol)));
+        V ins = vdiv(one, ns);
+        Mx = vmul(ins, sx), My = vmul(ins, sy), Mz = vmul(ins, sz);
+        Dx = vmul(down, Dx), Dy = vmul(down, Dy), Dz = vmul(down, Dz);
+        len = vmul(len, down);
+    }
+    V tmin = vset(shape == LK_LINE ? -INFINITY : 0.0), tmax = vset(shape == LK_SEGMENT ? 1.0 : INFINITY);
+
+    /* ---- cdist__line_near_centre: origin - C exactly (TwoSum), moved to the point nearest C ---- */
+    V hx = vsub(Ox, cx), hy = vsub(Oy, cy), hz = vsub(Oz, cz);
+    V lx, ly, lz;
+    {
+        V b, mcx = vneg(cx), mcy = vneg(cy), mcz = vneg(cz);
+        b = vsub(hx, Ox), lx = vadd(vsub(Ox, vsub(hx, b)), vsub(mcx, b));
+        b = vsub(hy, Oy), ly = vadd(vsub(Oy, vsub(hy, b)), vsub(mcy, b));
+        b = vsub(hz, Oz), lz = vadd(vsub(Oz, vsub(hz, b)), vsub(mcz, b));
+    }
+    V m = KN(max3)(Dx, Dy, Dz);
+    ok = mand(ok, mand(vge(m, vset(0x1p-1021)), vlt(m, vset(0x1p1022))));
+    V p = vrecip2(vexpbits(m));
+    V Dsx = vmul(p, Dx), Dsy = vmul(p, Dy), Dsz = vmul(p, Dz);
+    V t = vmul(vneg(vdiv(KN(dot)(hx, hy, hz, Dsx, Dsy, Dsz), KN(dot)(Dsx, Dsy, Dsz, Dsx, Dsy, Dsz))), p);
+    t = vsel(vle(vabs(t), vset(DBL_MAX)), t, zero);
+    t = KN(fmin)(KN(fmax)(t, tmin), tmax);
+    V Bx = vadd(vfma(t, Dx, hx), lx), By = vadd(vfma(t, Dy, hy), ly), Bz = vadd(vfma(t, Dz, hz), lz);
+    /* run: the range in units of M */
+    V lo = vsel(veq(tmin, t), zero, vmul(vsub(tmin, t), len));
+    V hi = vsel(veq(tmax, t), zero, vmul(vsub(tmax, t), len));
+
+    /* ---- linear_circle (ROBUST) ---- */
+    ok = mand(ok, vlt(lo, hi));
+    ok = mand(ok, mand(KN(in_range)(Bx, By, Bz), vgt(r, zero))); /* finite B (|B| <= 4 here); r = 0: scalar */
+    V t0 = vneg(KN(dot)(Bx, By, Bz, Mx, My, Mz));
+    V B0x = vfma(t0, Mx, Bx), B0y = vfma(t0, My, By), B0z = vfma(t0, Mz, Bz);
+    V dt = vneg(KN(dot)(B0x, B0y, B0z, Mx, My, Mz));
+    M cor = vne(dt, zero);
+    t0 = vsel(cor, vadd(t0, dt), t0);
+    B0x = vsel(cor, vfma(t0, Mx, Bx), B0x);
+    B0y = vsel(cor, vfma(t0, My, By), B0y);
+    B0z = vsel(cor, vfma(t0, Mz, Bz), B0z);
+    V umin = vsub(lo, t0), umax = vsub(hi, t0);
+    V S = KN(fmax)(r, vsqrt(KN(dot)(B0x, B0y, B0z, B0x, B0y, B0z)));
+    ok = mand(ok, vge(S, vset(0x1p-1022)));
+    V up = KN(pow2_of)(S), sg = vrecip2(up);
+    V Bsx = vmul(sg, B0x), Bsy = vmul(sg, B0y), Bsz = vmul(sg, B0z);
+    V rs = vmul(r, sg);
+    umin = vmul(umin, sg), umax = vmul(umax, sg);
+    V wwx, wwy, wwz, nbx, nby, nbz;
+    KN(cross)(nx, ny, nz, Mx, My, Mz, &wwx, &wwy, &wwz);
+    KN(cross)(nx, ny, nz, Bsx, Bsy, Bsz, &nbx, &nby, &nbz);
+    V m2x = KN(dot)(vx, vy, vz, wwx, wwy, wwz), m2y = vneg(KN(dot)(ux, uy, uz, wwx, wwy, wwz));
+    V b2x = KN(dot)(vx, vy, vz, nbx, nby, nbz), b2y = vneg(KN(dot)(ux, uy, uz, nbx, nby, nbz));
+    V a = KN(dot)(nx, ny, nz, Mx, My, Mz), h0 = KN(dot)(nx, ny, nz, Bsx, Bsy, Bsz);
+    V m0 = vsqrt(vadd(vmul(m2x, m2x), vmul(m2y, m2y)));
+    ok = mand(ok, vgt(m0, vset(CD_LC_PERP_ULPS * DBL_EPSILON))); /* perpendicular to the plane: scalar */
+
+    KN(model) md;
+    md.r = rs;
+    md.a = a;
+    md.m0 = m0;
+    V e2x = vdiv(m2x, m0), e2y = vdiv(m2y, m0);
+    md.x1 = vsub(vmul(e2x, b2y), vmul(e2y, b2x));
+    md.ax1 = vabs(md.x1);
+    V c2 = vfma(e2x, b2x, vmul(e2y, b2y));
+    V us = vneg(vdiv(c2, m0));
+    M canon = vle(vabs(us), vset(4.0));
+    V uO = vsel(canon, us, zero);
+    md.c2 = vsel(canon, zero, c2);
+    md.h = vsel(canon, vfma(a, us, h0), h0);
+    V smin = vsub(umin, uO), smax = vsub(umax, uO);
+    md.k = vmadd(a, a, vmul(m0, m0));
+    md.rr2 = vmul(vsub(md.ax1, rs), vadd(md.ax1, rs));
+    md.dfc = vmul(vneg(vmul(vmul(rs, m0), m0)), vmul(md.ax1, md.ax1));
+
+    /* robust_roots: one bracket where F' increases everywhere, else up to one per branch
+     * (stage_branches) */
+    V mu = vfma(a, md.h, vmul(m0, md.c2));
+    V rm0 = vmul(rs, m0);
+    V blo = vsub(vneg(mu), rm0), bhi = vadd(vneg(mu), rm0);
+    M single = vle(vmul(rm0, m0), md.ax1);
+    V best = vset(INFINITY);
+    M fail = mfalse();
+    if (shape != LK_LINE) { /* the finite ends (offer_end), in the units of the core's range */
+        V d2 = KN(end_d2)(Bx, By, Bz, Mx, My, Mz, lo, nx, ny, nz, r);
+        best = vmin(best, d2);
+        fail = mor(fail, vne(d2, d2));
+        if (shape == LK_SEGMENT) {
+            d2 = KN(end_d2)(Bx, By, Bz, Mx, My, Mz, hi, nx, ny, nz, r);
+            best = vmin(best, d2);
+            fail = mor(fail, vne(d2, d2));
+        }
+    }
+    const V *cols[LK_NF] = {&md.r, &md.a, &md.m0, &md.x1, &md.ax1, &md.c2, &md.h, &md.k, &md.rr2, &md.dfc,
+                            &up, &UP, &blo, &bhi, &smin, &smax, &best};
+    for (int f = 0; f < LK_NF; f++) vst(&b->f[f][base], *cols[f]);
+    unsigned okb = mbits(ok), singleb = mbits(single), failb = mbits(fail);
+    for (int l = 0; l < W; l++) {
+        int real = l < n;
+        b->ok[base + l] = (unsigned char)(real && (okb >> l & 1) && !(failb >> l & 1));
+        b->two[base + l] = (unsigned char)(b->ok[base + l] && !(singleb >> l & 1));
+    }
+}
+
+/* The model of W entries e[0..W-1] of block b. */
+CD_INLINE void KN(load_model)(const lk_block *b, const int *e, KN(model) *m)
+{
+    double col[10][W];
+    for (int f = 0; f < 10; f++)
+        for (int l = 0; l < W; l++) col[f][l] = b->f[f][e[l]];
+    m->r = vld(col[0]), m->a = vld(col[1]), m->m0 = vld(col[2]), m->x1 = vld(col[3]), m->ax1 = vld(col[4]);
+    m->c2 = vld(col[5]), m->h = vld(col[6]), m->k = vld(col[7]), m->rr2 = vld(col[8]), m->dfc = vld(col[9]);
+}
+
+/* Field f of W entries e[0..W-1]. */
+CD_INLINE V KN(load_field)(const lk_block *b, int f, const int *e)
+{
+    double col[W];
+    for (int l = 0; l < W; l++) col[l] = b->f[f][e[l]];
+    return vld(col);
+}
+
+#ifdef vfrexp_m
+/* Lanes whose cube root KN(cbrt) takes: positive normal numbers. */
+CD_INLINE M KN(cbrt_domain)(V x) { return mand(vge(x, vset(0x1p-1022)), vle(x, vset(DBL_MAX))); }
+
+/* cbrt of the C library (glibc's sysdeps/ieee754/dbl-64/s_cbrt.c: a polynomial guess, one
+ * Halley step, the exponent split by 3) for positive normal x, operation by operation. Used
+ * only where lk_cbrt_verified found it equal to the library's cbrt (another C library gives
+ * other last bits, and the kernel then calls its cbrt). */
+CD_INLINE V KN(cbrt)(V x)
+{
+    V xm = vfrexp_m(x), xe = vfrexp_e(x); /* x = xm 2^xe, xm in [0.5, 1) */
+    V u = vsub(vset(0.784932344976639262), vmul(vset(0.145263899385486377), xm));
+    u = vadd(vset(-1.83469277483613086), vmul(u, xm));
+    u = vadd(vset(2.44693122563534430), vmul(u, xm));
+    u = vadd(vset(-2.11499494167371287), vmul(u, xm));
+    u = vadd(vset(1.50819193781584896), vmul(u, xm));
+    u = vadd(vset(0.354895765043919860), vmul(u, xm));
+    V t2 = vmul(vmul(u, u), u);
+    V q = vtrunc(vdiv(xe, vset(3.0))), r = vsub(xe, vmul(vset(3.0), q)); /* xe / 3 and xe % 3 of C */
+    V f = vsel(veq(r, vset(-2.0)), vset(lk_cbrt_factor[0]),
+               vsel(veq(r, vset(-1.0)), vset(lk_cbrt_factor[1]),
+                    vsel(veq(r, vset(1.0)), vset(lk_cbrt_factor[3]),
+                         vsel(veq(r, vset(2.0)), vset(lk_cbrt_factor[4]), vset(1.0)))));
+    V ym = vmul(vdiv(vmul(u, vadd(t2, vmul(vset(2.0), xm))), vadd(vmul(vset(2.0), t2), xm)), f);
+    return vscale2(ym, q);
+}
+
+/* y[i] = KN(cbrt)(x[i]), n a multiple of W (for the tests). */
+static inline void KN(cbrt_lanes)(const double *x, double *y, int n)
+{
+    for (int i = 0; i < n; i += W) vst(&y[i], KN(cbrt)(vld(&x[i])));
+}
+
+/* Whether KN(cbrt) gives the C library's cbrt bit for bit on numbers all over its domain (every
+ * binade, pseudo-random mantissas, exact cubes): 1 or 0. */
+static int KN(cbrt_matches)(void)
+{
+    uint64_t state = 0x9E3779B97F4A7C15ull;
+    for (int k = 0; k < 4096; k += W) {
+        double x[W], y[W];
+        for (int l = 0; l < W; l++) {
+            state = state * 6364136223846793005ull + 1442695040888963407ull;
+            uint64_t e = (uint64_t)((k + l) % 2046 + 1), bits = e << 52 | (state >> 12);
+            memcpy(&x[l], &bits, sizeof bits);
+            if ((k + l) % 97 == 0) x[l] = (double)((k + l) % 200 + 1) * (double)((k + l) % 200 + 1) * (double)((k + l) % 200 + 1);
+        }
+        vst(y, KN(cbrt)(vld(x)));
+        for (int l = 0; l < W; l++) {
+            double c = cbrt(x[l]);
+            if (memcmp(&c, &y[l], sizeof c)) return 0;
+        }
+    }
+    return 1;
+}
+#endif
+
+/* Stage 2, the entries e[0..n-1] (n <= W; the rest of e repeats e[0]) where F' is not monotone:
+ * the tangent points of slope 1 and the brackets of the branches that hold a local minimum,
+ * written to b->br (A: left, B: right) and b->has. */
+static void KN(stage_branches)(lk_block *b, const int *e, int n, int vector_cbrt)
+{
+    const V zero = vset(0.0);
+    KN(model) md;
+    KN(load_model)(b, e, &md);
+    V blo = KN(load_field)(b, LK_F_BLO, e), bhi = KN(load_field)(b, LK_F_BHI, e);
+    /* the cube roots are the C library's (for bit-identical brackets): its algorithm in lanes
+     * where that was verified (KN(cbrt)), else its function lane by lane */
+    V c1 = vmul(md.m0, md.ax1), cm, cr;
+    (void)vector_cbrt;
+#ifdef vfrexp_m
+    if (vector_cbrt && !many(mnot(mand(KN(cbrt_domain)(c1), KN(cbrt_domain)(md.r))))) {
+        cm = KN(cbrt)(c1);
+        cr = KN(cbrt)(md.r);
+    } else
+#endif
+    {
+        double a1[W], a2[W], o1[W], o2[W];
+        vst(a1, c1);
+        vst(a2, md.r);
+        for (int l = 0; l < W; l++) {
+            o1[l] = l < n ? cbrt(a1[l]) : 1.0;
+            o2[l] = l < n ? cbrt(a2[l]) : 1.0;
+        }
+        cm = vld(o1);
+        cr = vld(o2);
+    }
+    V rhohat = vmul(vmul(cr, cm), cm);
+    V x2hat = vsqrt(KN(fmax)(zero, vmul(vsub(rhohat, md.ax1), vadd(rhohat, md.ax1))));
+    V sc = vneg(vdiv(md.c2, md.m0));
+    V xm = vdiv(x2hat, md.m0);
+    V sL = vsub(sc, xm), sR = vadd(sc, xm);
+    V fL = KN(fp_at)(&md, vfma(md.a, sL, md.h), vneg(x2hat), -1.0);
+    V fR = KN(fp_at)(&md, vfma(md.a, sR, md.h), x2hat, +1.0);
+    M left = vge(fL, zero), right = vle(fR, zero);
+    M neither = mnot(mor(left, right));
+    left = mor(left, neither), right = mor(right, neither);
+    unsigned hasA = mbits(mand(left, vle(blo, sL))), hasB = mbits(mand(right, vle(sR, bhi)));
+    double hiA[W], loB[W];
+    vst(hiA, KN(fmin)(sL, bhi));
+    vst(loB, KN(fmax)(sR, blo));
+    for (int l = 0; l < n; l++) {
+        int i = e[l];
+        b->br[0][0][i] = b->f[LK_F_BLO][i], b->br[0][1][i] = hiA[l];
+        b->br[1][0][i] = loB[l], b->br[1][1][i] = b->f[LK_F_BHI][i];
+        b->has[0][i] = (unsigned char)(hasA >> l & 1), b->has[1][i] = (unsigned char)(hasB >> l & 1);
+    }
+}
+
+/* Stage 3, the brackets k[0..n-1] of the item list (n <= LK_CHAINS * W; the rest of k repeats
+ * k[0]): the root of each (cdist__root_newton) and the squared distance there (offer_model), to
+ * b->item_d2. The Newton iteration is a chain of dependent square roots and divisions:
+ * LK_CHAINS groups of W brackets iterate side by side to keep the units busy. */
+static void KN(stage_newton)(lk_block *b, const int *k, int n)
+{
+    KN(model) md[LK_CHAINS];
+    KN(newton) s[LK_CHAINS];
+    M fail[LK_CHAINS];
+    int e[LK_CHAINS][W];
+    for (int c = 0; c < LK_CHAINS; c++) {
+        double lo[W], hi[W], act[W];
+        for (int l = 0; l < W; l++) {
+            int j = k[c * W + l];
+            e[c][l] = b->item_entry[j], lo[l] = b->item_lo[j], hi[l] = b->item_hi[j];
+            act[l] = c * W + l < n ? 1.0 : 0.0;
+        }
+        KN(load_model)(b, e[c], &md[c]);
+        s[c] = KN(newton_start)(vld(lo), vld(hi), vgt(vld(act), vset(0.0)));
+        fail[c] = mfalse();
+    }
+    for (int it = 0; it < LK_LANE_ITER; it++) {
+        M act = s[0].act;
+        for (int c = 1; c < LK_CHAINS; c++) act = mor(act, s[c].act);
+        if (!many(act)) break;
+        for (int c = 0; c < LK_CHAINS; c++) KN(newton_step)(&md[c], &s[c], &fail[c]);
+    }
+    /* a lane still iterating (a bracket bisected down to its end, as when the root lies beyond
+     * a ray's start: ~50 iterations) goes on in stage_long, with the other such lanes */
+    for (int c = 0; c < LK_CHAINS; c++) {
+        unsigned rest = mbits(mandn(fail[c], s[c].act));
+        if (!rest) continue;
+        double st[5][W];
+        vst(st[0], s[c].x), vst(st[1], s[c].lo), vst(st[2], s[c].hi), vst(st[3], s[c].dx), vst(st[4], s[c].dxold);
+        for (int l = 0; l < W; l++) {
+            if (!(rest >> l & 1)) continue;
+            int j = b->n_long++;
+            b->long_item[j] = k[c * W + l];
+            for (int f = 0; f < 5; f++) b->long_st[f][j] = st[f][l];
+        }
+    }
+    for (int c = 0; c < LK_CHAINS; c++) {
+        V d2 = KN(model_d2)(&md[c], s[c].res, KN(load_field)(b, LK_F_UP, e[c]));
+        double out[W];
+        vst(out, d2);
+        unsigned fb = mbits(mor(fail[c], vne(d2, d2)));
+        for (int l = 0; l < W && c * W + l < n; l++) {
+            b->item_d2[k[c * W + l]] = out[l];
+            b->item_fail[k[c * W + l]] = (unsigned char)(fb >> l & 1);
+        }
+    }
+}
+
+/* Stage 3b, the long brackets j[0..n-1] (n <= W; the rest of j repeats j[0]) that stage_newton
+ * left: their iterations go on together up to CD_ROOT_MAX_ITER in all, where
+ * cdist__root_newton returns its last x.
+ * The screen: a root that took that long and is not at an end of the range (a ray's start, a
+ * segment's end: the bracket bisected down to the end where F' does not vanish, the end
+ * candidate decides) is a nearly multiple root of F' (a tangent line), where the solvers stop
+ * at different points of a flat bottom: such an entry is left to the scalar path, so that its
+ * answer is the single query's whatever solver that uses. */
+static void KN(stage_long)(lk_block *b, const int *j, int n)
+{
+    int e[W];
+    double st[5][W], act[W];
+    for (int l = 0; l < W; l++) {
+        e[l] = b->item_entry[b->long_item[j[l]]];
+        for (int f = 0; f < 5; f++) st[f][l] = b->long_st[f][j[l]];
+        act[l] = l < n ? 1.0 : 0.0;
+    }
+    KN(model) md;
+    KN(load_model)(b, e, &md);
+    KN(newton) s;
+    s.x = vld(st[0]), s.lo = vld(st[1]), s.hi = vld(st[2]), s.dx = vld(st[3]), s.dxold = vld(st[4]);
+    s.res = s.x;
+    s.act = vgt(vld(act), vset(0.0));
+    M fail = mfalse();
+    for (int it = LK_LANE_ITER; it < CD_ROOT_MAX_ITER && many(s.act); it++) KN(newton_step)(&md, &s, &fail);
+    s.res = vsel(s.act, s.x, s.res);
+    V smin = KN(load_field)(b, LK_F_SMIN, e), smax = KN(load_field)(b, LK_F_SMAX, e);
+    V tol = vset(8.0 * DBL_EPSILON), atol = vset(0x1p-60);
+    V big = vset(DBL_MAX); /* a finite end only (a line has none) */
+    M at_min = mand(vle(vabs(smin), big), vle(vabs(vsub(s.res, smin)), vadd(vmul(tol, vabs(smin)), atol)));
+    M at_max = mand(vle(vabs(smax), big), vle(vabs(vsub(s.res, smax)), vadd(vmul(tol, vabs(smax)), atol)));
+    fail = mor(fail, mnot(mor(at_min, at_max)));
+    V d2 = KN(model_d2)(&md, s.res, KN(load_field)(b, LK_F_UP, e));
+    double out[W];
+    vst(out, d2);
+    unsigned fb = mbits(mor(fail, vne(d2, d2)));
+    for (int l = 0; l < n; l++) {
+        int k = b->long_item[j[l]];
+        b->item_d2[k] = out[l];
+        b->item_fail[k] = (unsigned char)(fb >> l & 1);
+    }
+}
+
+/* Stage 4, entries base .. base + W - 1: the distance from the smallest candidate, unscaled;
+ * returns the mask of the entries left to the scalar path. */
+static unsigned KN(stage_final)(lk_block *b, int base, double *out)
+{
+    V d = vmul(vsqrt(vld(&b->f[LK_F_BEST][base])), vld(&b->f[LK_F_OUTER][base]));
+    vst(out, d);
+    unsigned fin = mbits(vle(d, vset(DBL_MAX))), left = 0;
+    for (int l = 0; l < W; l++) left |= (unsigned)(!(b->ok[base + l] && (fin >> l & 1))) << l;
+    return left;
+}
+
+/* Entries [lo, lo + count) of the job, count <= 64: the four stages over the block; returns the
+ * mask of the entries left to the scalar path. The stages after the first take the entries
+ * that need them, W at a time, so that the lanes stay busy (a quarter of random lines need
+ * stage 2, the Newton iterations of a bracket vary). */
+static uint64_t KN(block)(const cdist__job *job, int shape, double tol, size_t lo, size_t count, int vector_cbrt)
+{
+    lk_block b;
+    double in[13][W];
+    int cnt = (int)count;
+    for (int base = 0; base < cnt; base += W) {
+        int n = cnt - base < W ? cnt - base : W;
+#ifdef vload_objects /* a whole group of consecutive objects: loads and a transpose */
+        if (n == W) {
+            V cols[16];
+            vload_objects(cdist__job_a(job, lo + (size_t)base), job->a_stride, 6, cols);
+            vload_objects(cdist__job_b(job, lo + (size_t)base), job->b_stride, 7, cols + 8);
+            for (int f = 0; f < 6; f++) vst(in[f], cols[f]);
+            for (int f = 0; f < 7; f++) vst(in[6 + f], cols[8 + f]);
+        } else
+#endif
+        for (int l = 0; l < W; l++) {
+            size_t i = lo + (size_t)base + (size_t)(l < n ? l : 0);
+            const double *pa = cdist__job_a(job, i), *pb = cdist__job_b(job, i);
+            for (int f = 0; f < 6; f++) in[f][l] = pa[f];
+            for (int f = 0; f < 7; f++) in[6 + f][l] = pb[f];
+        }
+        KN(stage_frame)(in, shape, tol, &b, base, n);
+    }
+    int e[W], ne = 0;
+    for (int i = 0; i < cnt; i++) {
+        if (!b.ok[i]) continue;
+        if (!b.two[i]) {
+            b.br[0][0][i] = b.f[LK_F_BLO][i], b.br[0][1][i] = b.f[LK_F_BHI][i];
+            b.has[0][i] = 1, b.has[1][i] = 0;
+            continue;
+        }
+        e[ne++] = i;
+        if (ne == W) {
+            KN(stage_branches)(&b, e, W, vector_cbrt);
+            ne = 0;
+        }
+    }
+    if (ne) {
+        for (int l = ne; l < W; l++) e[l] = e[0];
+        KN(stage_branches)(&b, e, ne, vector_cbrt);
+    }
+    /* the brackets clipped to the range; an empty one has no root */
+    int ni = 0;
+    b.n_long = 0;
+    for (int i = 0; i < cnt; i++) {
+        if (!b.ok[i]) continue;
+        for (int j = 0; j < 2; j++) {
+            if (!b.has[j][i]) continue;
+            double blo = cdist__fmax(b.br[j][0][i], b.f[LK_F_SMIN][i]);
+            double bhi = cdist__fmin(b.br[j][1][i], b.f[LK_F_SMAX][i]);
+            if (blo > bhi) continue;
+            b.item_entry[ni] = i, b.item_lo[ni] = blo, b.item_hi[ni] = bhi;
+            ni++;
+        }
+    }
+    int k[LK_CHAINS * W];
+    for (int s0 = 0; s0 < ni; s0 += LK_CHAINS * W) {
+        int n = ni - s0 < LK_CHAINS * W ? ni - s0 : LK_CHAINS * W;
+        for (int l = 0; l < LK_CHAINS * W; l++) k[l] = s0 + (l < n ? l : 0);
+        KN(stage_newton)(&b, k, n);
+    }
+    for (int s0 = 0; s0 < b.n_long; s0 += W) {
+        int n = b.n_long - s0 < W ? b.n_long - s0 : W, j[W];
+        for (int l = 0; l < W; l++) j[l] = s0 + (l < n ? l : 0);
+        KN(stage_long)(&b, j, n);
+    }
+    unsigned char cand[64];
+    memset(cand, shape != LK_LINE, sizeof cand); /* rays and segments: the ends */
+    for (int j = 0; j < ni; j++) {
+        int i = b.item_entry[j];
+        if (b.item_fail[j]) b.ok[i] = 0;
+        double d2 = b.item_d2[j], *best = &b.f[LK_F_BEST][i];
+        *best = *best < d2 ? *best : d2;
+        cand[i] = 1;
+    }
+    uint64_t left = 0;
+    double out[W];
+    for (int base = 0; base < cnt; base += W) {
+        int n = cnt - base < W ? cnt - base : W;
+        for (int l = 0; l < n; l++) b.ok[base + l] &= cand[base + l];
+        unsigned lb = KN(stage_final)(&b, base, out) & ((1u << n) - 1u);
+        for (int l = 0; l < n; l++)
+            if (!(lb >> l & 1)) job->distances[lo + (size_t)(base + l)] = out[l];
+        left |= (uint64_t)lb << base;
+    }
+    return left;
+}
