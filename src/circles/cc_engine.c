@@ -217,6 +217,8 @@ void cdist__cc_frame_init(cdist__cc_frame *f, const cdist__circle *A, vec3 C, co
     f->Lw = 2 * f->R + Lc;
     f->W1 = W1;
     f->nga = sqrt(gg);
+    f->Hh = fabs(f->rg.ha) + fabs(f->rg.hb);
+    f->Hc0 = fabs(f->rg.hc);
 }
 
 /* Everything at angle t with (c, s) = (cos t, sin t): F and F'/2 by the ring evaluator, H with
@@ -237,6 +239,14 @@ static void cc_eval(const cdist__cc_frame *f, double t, double c, double s, cdis
     p->H2 = 2 * g1 * sig * sig + 8 * g * sig * sig1 + 2 * Q * (sig1 * sig1 - sig * sig) - 2 * s2 * (g1 * g1 + g * g2);
     double rho = v.rho;
     p->F1 = v.F1;
+    p->rho = rho;
+    /* F'/2 = dr g / rho + h h': dr and h carry eps Lw absolutely, g eps Lw W1 (relative eps L
+     * / rho after the division), each product and sum eps relatively; doubled for margin. */
+    {
+        double Lw = f->Lw, ar = fabs(v.dr), rp = rho > 0 ? fabs(g) / rho : 0.0;
+        p->eF1 = 16 * DBL_EPSILON * (Lw * f->W1 * (1 + (rho > 0 ? ar / rho : INFINITY)) + ar * rp +
+                                     fabs(v.h) * fabs(v.h1) + Lw * (fabs(v.h1) + f->W1));
+    }
     p->F = v.F;
     p->d = sqrt(p->F);
     p->Q = Q;
@@ -367,6 +377,25 @@ static void emit(cdist__cc_sink *k, const cdist__cc_pt *a, const cdist__cc_pt *b
     }
 }
 
+/* No critical point of F on [a, b]: F' keeps one sign, certified by its values at the ends
+ * (less their rounding bounds) and a bound M >= |F''/2| on [a, b] (from each end F' cannot reach
+ * 0 within |F'|/M). With rho_lo <= rho <= rho_hi on [a, b] (rho is W1-Lipschitz) and
+ * F''/2 = rho'^2 + (rho - s) rho'' + h'^2 + h h'', |rho'| <= |w'| <= W1,
+ * |rho''| = |w.w'' + |w'|^2 - rho'^2| / rho <= (rho_hi W1 + 2 W1^2) / rho_lo. Needs rho_lo > 0:
+ * it answers where H's certificates cannot, at roots of H's spurious factor rho sigma + s w.w'
+ * (H = (rho sigma - s w.w')(rho sigma + s w.w') and F'/2 = sigma - s w.w' / rho). */
+static int monotone(const cdist__cc_frame *f, const cdist__cc_pt *a, const cdist__cc_pt *b)
+{
+    if (!((a->F1 > 0 && b->F1 > 0) || (a->F1 < 0 && b->F1 < 0))) return 0;
+    double A = fabs(a->F1) - a->eF1, B = fabs(b->F1) - b->eF1;
+    if (!(A > 0 && B > 0)) return 0;
+    double w = b->t - a->t, W1 = f->W1;
+    double rlo = 0.5 * (a->rho + b->rho - W1 * w), rhi = fmax(a->rho, b->rho) + 0.5 * W1 * w;
+    if (!(rlo > 0)) return 0;
+    double M = W1 * W1 + (rhi + f->s) * (rhi * W1 + 2 * W1 * W1) / rlo + f->Hh * (2 * f->Hh + f->Hc0);
+    return A + B > M * w * (1 + 1e-12);
+}
+
 #define POS(x) ((x) > 0 ? (x) : 0.0)
 /* Certificates on [a, b] (see the header comment). 1: resolved (<= 1 root of H). First order
  * with the global bounds M1, M2; second order with the endpoint values of H'' and M3 (from each
@@ -417,6 +446,57 @@ static const double half_sec[] = {
     0.50000000000000011, 0.50000000000000011, 0.5, 0.5,
     0.5, 0.5, 0.5, 0.5,
 };
+
+/* cos h and sin h for |h| <= 0.1 by their Taylor series (truncation below 1e-26 there): the kink
+ * grid's offsets, combined with cos t, sin t of the centre by the addition theorem, so the grid
+ * costs no transcendental call. */
+static inline void small_sincos(double h, double *sn, double *cs)
+{
+    double x = h * h;
+    *sn = h * (1 - x / 6 * (1 - x / 20 * (1 - x / 42 * (1 - x / 72 * (1 - x / 110 * (1 - x / 156))))));
+    *cs = 1 - x / 2 * (1 - x / 12 * (1 - x / 30 * (1 - x / 56 * (1 - x / 90 * (1 - x / 132 * (1 - x / 182))))));
+}
+
+/* A lower bound of F on the arc [a, b] of width 2 pi / CC_INIT_INTERVALS / 2^level. In the
+ * plane of z = (cos t, sin t), F extends to G(z) = |D|^2 + s^2 - 2 s |w| with |D|^2 replaced by
+ * its affine part (R^2 + |C|^2 - 2 R C.(u, v) z): affine minus a norm of an affine map, so G is
+ * concave, and on the unit circle G = F. The arc lies in the triangle of its ends and T, the
+ * intersection of the tangents there (T = (z_a + z_b) / (2 cos^2(w/2))), so on the arc
+ * F >= min(F(a), F(b), G(T)), and G(T) = (rho_T - s)^2 + h_T^2 - R^2 tan^2(w/2) (|D|^2 at T
+ * exceeds its affine part by R^2 (|T|^2 - 1)). The gap to min F shrinks as w^2, against w for
+ * the Lipschitz bound. Rounding: the absolute errors of rho_T - s and h_T (dw, a few eps of the
+ * magnitudes of w's terms) and of T itself (an eps-relative move of T moves G by eps |grad G|).
+ * Returns min(F(a), F(b), G(T)) minus that margin (may be negative). */
+static double arc_hull_bound(const cdist__cc_frame *f, double ca, double sa, double cb, double sb, double Fmin_ends, double hs)
+{
+    double k = 2 * hs * hs; /* 1 / (2 cos^2(w/2)) */
+    double cT = (ca + cb) * k, sT = (sa + sb) * k;
+    cdist__ring_val v;
+    cdist__ring_eval(&f->rg, f->s, cT, sT, 0, &v);
+    double tan2 = 4 * hs * hs - 1, R2 = f->R * f->R;
+    double GT = v.F - R2 * tan2;
+    double dw = 16 * DBL_EPSILON * f->Lw, dT = sqrt(v.F) + f->Lw;
+    double err = 4 * dT * dw + 16 * DBL_EPSILON * (v.F + R2 * tan2 + f->Lw * f->Lw);
+    return fmin(Fmin_ends, GT) - err;
+}
+
+/* The bound on an interval of the subdivision at `level`. */
+static double hull_bound(const cdist__cc_frame *f, const cdist__cc_pt *a, const cdist__cc_pt *b, int level)
+{
+    return arc_hull_bound(f, a->c, a->s, b->c, b->s, fmin(a->F, b->F), half_sec[level]);
+}
+
+/* The bound on the window [t - h, t + h] (h <= 0.1) around a near-crossing. */
+static double window_hull_bound(const cdist__cc_frame *f, double t, double h)
+{
+    double ct, st, ch, sh;
+    sincos(t, &st, &ct);
+    small_sincos(h, &sh, &ch);
+    cdist__cc_pt a, b;
+    cdist__cc_eval_lean(f, t - h, ct * ch + st * sh, st * ch - ct * sh, &a);
+    cdist__cc_eval_lean(f, t + h, ct * ch - st * sh, st * ch + ct * sh, &b);
+    return arc_hull_bound(f, a.c, a.s, b.c, b.s, fmin(a.F, b.F), 0.5 / ch);
+}
 
 static double cc_F_at(const void *ctx, double t)
 {
@@ -532,16 +612,6 @@ static void deferred_offer(const cdist__cc_frame *f, cdist__cc_sink *k, const cc
     double tie = CD_TIE_ULPS * DBL_EPSILON * f->L + 8 * DBL_EPSILON * (f->L + dbest);
     for (int i = 0; i < df->n; i++)
         if (df->d[i] - f->R * df->hw[i] <= dbest + tie) min_offer(f, k, df->t[i] - df->hw[i], df->t[i] + df->hw[i]);
-}
-
-/* cos h and sin h for |h| <= 0.1 by their Taylor series (truncation below 1e-26 there): the kink
- * grid's offsets, combined with cos t, sin t of the centre by the addition theorem, so the grid
- * costs no transcendental call. */
-static inline void small_sincos(double h, double *sn, double *cs)
-{
-    double x = h * h;
-    *sn = h * (1 - x / 6 * (1 - x / 20 * (1 - x / 42 * (1 - x / 72 * (1 - x / 110 * (1 - x / 156))))));
-    *cs = 1 - x / 2 * (1 - x / 12 * (1 - x / 30 * (1 - x / 56 * (1 - x / 90 * (1 - x / 132 * (1 - x / 182))))));
 }
 
 /* The geometric grid around a near-crossing t: t +- 0.1 * 2^(-j/2) down to 1e-17, and t. */
@@ -674,14 +744,18 @@ int cdist__cc_scan(const cdist__cc_frame *f, cdist__cc_sink *k, double *Fmax)
     double tk[2], core[2];
     cc_deferred deferred;
     deferred.n = 0;
-    int nk = near_kinks(f, init, tk);
-    for (int i = 0; i < nk; i++) {
-        core[i] = kink_core(f, tk[i]);
-        scan_kink(f, k, tk[i], core[i], Fmax, &deferred);
-    }
     double dbest = INFINITY; /* smallest sampled distance: the minimum is at most this */
     for (int i = 0; i < CC_INIT_INTERVALS; i++)
         if (init[i].d < dbest) dbest = init[i].d;
+    int nk = near_kinks(f, init, tk);
+    for (int i = 0; i < nk; i++) {
+        core[i] = kink_core(f, tk[i]);
+        /* Robust mode: a window (covering the grid) whose hull bound lies above the attained
+         * distance needs no grid (near-touching linked circles: the crossing is far above). */
+        double dth = dbest * (1 + 8 * DBL_EPSILON);
+        if (k->best && window_hull_bound(f, tk[i], 2 * core[i]) > dth * dth) continue;
+        scan_kink(f, k, tk[i], core[i], Fmax, &deferred);
+    }
     for (int i = 0; i < CC_INIT_INTERVALS; i++) {
         cdist__cc_pt a = init[i], b = init[i + 1];
         int level = 0, sp = 0;
@@ -696,7 +770,8 @@ int cdist__cc_scan(const cdist__cc_frame *f, cdist__cc_sink *k, double *Fmax)
             /* Robust mode prunes: the distance is R-Lipschitz in the angle, so on [a, b] it is at
              * least (d(a) + d(b) - R w) / 2; above an attained distance (a sample or a refined
              * minimum) the interval cannot hold the global minimum. */
-            if (k->best && 0.5 * (a.d + b.d - f->R * w) > fmin(dbest, k->dmin) * (1 + 8 * DBL_EPSILON)) {
+            double dth = fmin(dbest, k->dmin) * (1 + 8 * DBL_EPSILON);
+            if (k->best && (0.5 * (a.d + b.d - f->R * w) > dth || (level < 31 && hull_bound(f, &a, &b, level) > dth * dth))) {
                 if (sp == 0) break;
                 a = b;
                 b = st[--sp].b;
@@ -717,7 +792,7 @@ int cdist__cc_scan(const cdist__cc_frame *f, cdist__cc_sink *k, double *Fmax)
                 level = st[sp].level;
                 continue;
             }
-            int leaf = certified(f, &a, &b) || w <= CC_MIN_WIDTH || sp + 1 >= CC_STACK || level >= 31;
+            int leaf = certified(f, &a, &b) || monotone(f, &a, &b) || w <= CC_MIN_WIDTH || sp + 1 >= CC_STACK || level >= 31;
             if (leaf || evals >= CC_EVAL_BUDGET) {
                 /* Past the budget (multiple roots of H at rounding level: tangencies, A passing
                  * within rounding of B's axis) the rest is sampled, keeping the resolution

@@ -25,6 +25,7 @@ typedef struct cdist__cc_frame {
     double epsL;       /* eps * (R + |C|): absolute rounding of positions */
     double L;          /* problem scale max(R, s, |C|) */
     double Lw, W1, nga; /* magnitudes of the terms of w, of |w'|, |ga| (rounding bounds) */
+    double Hh, Hc0;    /* |ha| + |hb| (bounds |h'|, |h''|) and |hc| */
 } cdist__cc_frame;
 
 /* Values at one angle. */
@@ -32,7 +33,8 @@ typedef struct cdist__cc_pt {
     double t, c, s;
     double H, H1, H2; /* H, H', H'' */
     double eH, eH1, eH2; /* their rounding bounds at this point */
-    double F1;    /* F'/2 */
+    double F1, eF1; /* F'/2 and its rounding bound */
+    double rho;   /* distance to B's axis */
     double F;     /* F */
     double d;     /* sqrt(F) */
     double Q, g;  /* rho^2 and w.w' */
