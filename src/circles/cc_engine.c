@@ -247,6 +247,14 @@ static void cc_eval(const cdist__cc_frame *f, double t, double c, double s, cdis
         p->eF1 = 16 * DBL_EPSILON * (Lw * f->W1 * (1 + (rho > 0 ? ar / rho : INFINITY)) + ar * rp +
                                      fabs(v.h) * fabs(v.h1) + Lw * (fabs(v.h1) + f->W1));
     }
+    /* F''/2 = rho'^2 + dr rho'' + h'^2 + h h'', rho'' = (g1 - rho'^2) / rho: the absolute
+     * errors of dr, h (eps Lw), of g1 (eps Lw W1) and g / rho carried through, with margin. */
+    p->F2 = v.F2;
+    {
+        double Lw = f->Lw, W1 = f->W1, ar = fabs(v.dr);
+        p->eF2 = 64 * DBL_EPSILON * (W1 * W1 + (Lw + ar) * (fabs(v.g1) + W1 * W1 + Lw * W1) / (rho > 0 ? rho : 0.0) +
+                                     f->Hh * f->Hh + (fabs(v.h) + Lw) * f->Hh);
+    }
     p->F = v.F;
     p->d = sqrt(p->F);
     p->Q = Q;
@@ -394,6 +402,24 @@ static int monotone(const cdist__cc_frame *f, const cdist__cc_pt *a, const cdist
     if (!(rlo > 0)) return 0;
     double M = W1 * W1 + (rhi + f->s) * (rhi * W1 + 2 * W1 * W1) / rlo + f->Hh * (2 * f->Hh + f->Hc0);
     return A + B > M * w * (1 + 1e-12);
+}
+
+/* At most one critical point of F on [a, b], a minimum: F is convex there, certified by F''/2 at
+ * the ends (less rounding) and M3 >= |F'''/2| on [a, b]. With the bounds of monotone() and
+ * F'''/2 = 3 rho' rho'' + (rho - s) rho''' + 3 h' h'' + h h''',
+ * rho''' = (3 w'.w'' + w.w''' - 3 rho' rho'') / rho. Answers at a minimum where H has a root
+ * cluster (both of its factors vanish nearby) and its certificates fail. */
+static int convex(const cdist__cc_frame *f, const cdist__cc_pt *a, const cdist__cc_pt *b)
+{
+    double A = a->F2 - a->eF2, B = b->F2 - b->eF2;
+    if (!(A > 0 && B > 0)) return 0;
+    double w = b->t - a->t, W1 = f->W1;
+    double rlo = 0.5 * (a->rho + b->rho - W1 * w), rhi = fmax(a->rho, b->rho) + 0.5 * W1 * w;
+    if (!(rlo > 0)) return 0;
+    double B2 = (rhi * W1 + 2 * W1 * W1) / rlo;
+    double B3 = (3 * W1 * W1 + rhi * W1 + 3 * W1 * B2) / rlo;
+    double M3 = 3 * W1 * B2 + (rhi + f->s) * B3 + f->Hh * (4 * f->Hh + f->Hc0);
+    return fmin(A, B) > 0.5 * M3 * w * (1 + 1e-12);
 }
 
 #define POS(x) ((x) > 0 ? (x) : 0.0)
@@ -614,24 +640,26 @@ static void deferred_offer(const cdist__cc_frame *f, cdist__cc_sink *k, const cc
         if (df->d[i] - f->R * df->hw[i] <= dbest + tie) min_offer(f, k, df->t[i] - df->hw[i], df->t[i] + df->hw[i]);
 }
 
-/* The geometric grid around a near-crossing t: t +- 0.1 * 2^(-j/2) down to 1e-17, and t. */
+/* The geometric grid around a near-crossing t: t +- 0.1 * 2^-j down to the angular resolution
+ * at t (offsets below 2 ulps of t name no new angle), and t. */
 static void scan_kink(const cdist__cc_frame *f, cdist__cc_sink *k, double t, double core, double *Fmax, cc_deferred *df)
 {
-    enum { NG = 110 };
+    enum { NG = 64 }; /* 0.1 * 2^-63 is below any angular resolution */
     cdist__cc_pt prev, cur;
     double ct, st;
     sincos(t, &st, &ct);
     int first = 1;
     /* The grid starts at the first offset within twice the core: beyond the core the
      * subdivision covers F (overlapping it a little). */
-    int j0 = 0;
-    while (j0 < NG - 1 && ldexp(j0 % 2 ? 0.1 * M_SQRT1_2 : 0.1, -(j0 / 2)) > 2 * core) j0++;
+    int j0 = 0, j1 = NG;
+    while (j0 < NG - 1 && ldexp(0.1, -j0) > 2 * core) j0++;
+    double res = 4 * DBL_EPSILON * fmax(1.0, fabs(t));
+    while (j1 > j0 + 1 && ldexp(0.1, -(j1 - 1)) < res) j1--;
     for (int side = -1; side <= 1; side += 2)
-        for (int jj = 0; jj < NG; jj++) {
-            int j = side < 0 ? jj : NG - 1 - jj; /* increasing angle */
-            if (j < j0) continue;
-            double h = side * ldexp(j % 2 ? 0.1 * M_SQRT1_2 : 0.1, -(j / 2)), ch, sh;
-            if (side > 0 && jj == 0) {
+        for (int jj = j0; jj < j1; jj++) {
+            int j = side < 0 ? jj : j1 - 1 - (jj - j0); /* increasing angle */
+            double h = side * ldexp(0.1, -j), ch, sh;
+            if (side > 0 && jj == j0) {
                 cdist__cc_eval_lean(f, t, ct, st, &cur);
                 emit(k, &prev, &cur);
                 prev = cur;
@@ -792,7 +820,7 @@ int cdist__cc_scan(const cdist__cc_frame *f, cdist__cc_sink *k, double *Fmax)
                 level = st[sp].level;
                 continue;
             }
-            int leaf = certified(f, &a, &b) || monotone(f, &a, &b) || w <= CC_MIN_WIDTH || sp + 1 >= CC_STACK || level >= 31;
+            int leaf = certified(f, &a, &b) || monotone(f, &a, &b) || convex(f, &a, &b) || w <= CC_MIN_WIDTH || sp + 1 >= CC_STACK || level >= 31;
             if (leaf || evals >= CC_EVAL_BUDGET) {
                 /* Past the budget (multiple roots of H at rounding level: tangencies, A passing
                  * within rounding of B's axis) the rest is sampled, keeping the resolution

@@ -34,6 +34,7 @@ typedef struct cdist__cc_pt {
     double H, H1, H2; /* H, H', H'' */
     double eH, eH1, eH2; /* their rounding bounds at this point */
     double F1, eF1; /* F'/2 and its rounding bound */
+    double F2, eF2; /* F''/2 and its rounding bound (set by the subdivision's evaluation only) */
     double rho;   /* distance to B's axis */
     double F;     /* F */
     double d;     /* sqrt(F) */
