@@ -619,7 +619,21 @@ static double kink_core(const cdist__cc_frame *f, double t)
     cdist__ring_val v;
     cdist__ring_eval(&f->rg, f->s, c, s, 0, &v);
     double r = sqrt(v.rho / f->L);
-    return fmin(0.05, 1e3 * r + 1e-12);
+    double core = fmin(0.05, 1e3 * r + 1e-12);
+    /* A tangent to B's axis keeps rho tiny over a wider window (rho ~ rho0 + k x^2 / 2), where H
+     * stays below its rounding too: widen the core (doubling) while rho at both of its ends is
+     * still below the near-crossing threshold. */
+    double thr = CC_KINK_REL * f->L;
+    while (core < 0.05) {
+        double sh, ch;
+        small_sincos(core, &sh, &ch);
+        cdist__ring_val lo, hi;
+        cdist__ring_eval(&f->rg, f->s, c * ch + s * sh, s * ch - c * sh, 0, &lo);
+        cdist__ring_eval(&f->rg, f->s, c * ch - s * sh, s * ch + c * sh, 0, &hi);
+        if (fmax(lo.rho, hi.rho) > thr) break;
+        core = fmin(0.05, 2 * core);
+    }
+    return core;
 }
 
 /* The neighbourhoods of the lowest grid points of the sampled intervals, minimised only after the
@@ -675,14 +689,20 @@ static void scan_kink(const cdist__cc_frame *f, cdist__cc_sink *k, double t, dou
      * relative rounding eps L / rho of w.w' / rho and its sign is unreliable; F itself is
      * accurate (d to eps L). Polish the lowest grid neighbourhood by a minimisation of F. */
     if (!k->best) return;
-    if (df->n < CC_DEFER) {
-        cdist__cc_pt p;
-        cdist__cc_eval_lean(f, t, ct, st, &p);
-        df->t[df->n] = t;
-        df->hw[df->n] = 1e-3;
-        df->d[df->n++] = p.d;
-    } else {
-        min_offer(f, k, t - 1e-3, t + 1e-3);
+    /* Each side of the crossing separately (a minimum on either side: symmetric
+     * configurations), over the core at least. */
+    double hw = fmax(1e-3, 2 * core);
+    cdist__cc_pt p;
+    cdist__cc_eval_lean(f, t, ct, st, &p);
+    for (int side = -1; side <= 1; side += 2) {
+        double m = t + side * 0.5 * hw;
+        if (df->n < CC_DEFER) {
+            df->t[df->n] = m;
+            df->hw[df->n] = 0.5 * hw;
+            df->d[df->n++] = p.d;
+        } else {
+            min_offer(f, k, m - 0.5 * hw, m + 0.5 * hw);
+        }
     }
 }
 
@@ -811,7 +831,7 @@ int cdist__cc_scan(const cdist__cc_frame *f, cdist__cc_sink *k, double *Fmax)
                 double lo = a.t - tk[i], hi = b.t - tk[i];
                 lo = remainder(lo, 2 * M_PI);
                 hi = lo + w;
-                if (lo >= -core[i] && hi <= core[i]) inside = 1;
+                if (lo >= -2 * core[i] && hi <= 2 * core[i]) inside = 1; /* the grid spans twice the core */
             }
             if (inside) {
                 if (sp == 0) break;
