@@ -289,6 +289,7 @@ static double refine(const cdist__cc_frame *f, const cdist__cc_pt *a, const cdis
 {
     double lo = a->t, hi = b->t; /* dir * F'(lo) < 0 <= dir * F'(hi) */
     double fa = dir * a->F1, fb = dir * b->F1;
+    if (fb == 0.0) return hi; /* the bracket's end is the root (a partition point on a symmetry) */
     /* Start from the secant point of the bracket. */
     double x = (fb > fa) ? lo + (hi - lo) * (-fa / (fb - fa)) : 0.5 * (lo + hi);
     if (!(x > lo && x < hi)) x = 0.5 * (lo + hi);
