@@ -799,10 +799,10 @@ int cdist__cc_scan(const cdist__cc_frame *f, cdist__cc_sink *k, double *Fmax)
     int nk = near_kinks(f, init, tk);
     for (int i = 0; i < nk; i++) {
         core[i] = kink_core(f, tk[i]);
-        /* Robust mode: a window (covering the grid) whose hull bound lies above the attained
+        /* Pruning (robust and minima modes): a window (covering the grid) whose hull bound lies above the attained
          * distance needs no grid (near-touching linked circles: the crossing is far above). */
-        double dth = dbest * (1 + 8 * DBL_EPSILON);
-        if (k->best && window_hull_bound(f, tk[i], 2 * core[i]) > dth * dth) continue;
+        double dth = dbest * (1 + 8 * DBL_EPSILON) + CD_TIE_ULPS * DBL_EPSILON * f->L;
+        if (k->prune && window_hull_bound(f, tk[i], 2 * core[i]) > dth * dth) continue;
         scan_kink(f, k, tk[i], core[i], Fmax, &deferred);
     }
     for (int i = 0; i < CC_INIT_INTERVALS; i++) {
@@ -816,11 +816,12 @@ int cdist__cc_scan(const cdist__cc_frame *f, cdist__cc_sink *k, double *Fmax)
                 k->tmin = a.t;
             }
             double w = b.t - a.t;
-            /* Robust mode prunes: the distance is R-Lipschitz in the angle, so on [a, b] it is at
+            /* Pruning (robust and minima modes): the distance is R-Lipschitz in the angle, so on [a, b] it is at
              * least (d(a) + d(b) - R w) / 2; above an attained distance (a sample or a refined
              * minimum) the interval cannot hold the global minimum. */
-            double dth = fmin(dbest, k->dmin) * (1 + 8 * DBL_EPSILON);
-            if (k->best && (0.5 * (a.d + b.d - f->R * w) > dth || (level < 31 && hull_bound(f, &a, &b, level) > dth * dth))) {
+            /* above the attained distance by more than a tie: no closest pair, not even a tied one */
+            double dth = fmin(dbest, k->dmin) * (1 + 8 * DBL_EPSILON) + CD_TIE_ULPS * DBL_EPSILON * f->L;
+            if (k->prune && (0.5 * (a.d + b.d - f->R * w) > dth || (level < 31 && hull_bound(f, &a, &b, level) > dth * dth))) {
                 if (sp == 0) break;
                 a = b;
                 b = st[--sp].b;

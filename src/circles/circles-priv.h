@@ -45,6 +45,7 @@ typedef struct cdist__cc_pt {
 typedef struct cdist__cc_sink {
     const cdist__cc_frame *f;
     int want_max;   /* also report local maxima (critical-angle mode) */
+    int prune;      /* drop intervals whose lower bound of the distance exceeds the attained one (dmin) */
     double *out;    /* critical mode: angles */
     int cap, count; /* critical mode: room and number found (may exceed cap) */
     cdist__best *best;  /* robust mode */
@@ -87,10 +88,11 @@ int cdist__cc_parallel_critical(const cdist__cc_frame *f, double *t);
 /* The robust method (c0 at the origin). */
 cdist_status cdist__cc_robust(cdist_query *q, const cdist__circle *c0, const cdist__circle *c1, cdist__best *b);
 /* Circle c (centre at the origin) to disk d, solved into a fresh collector and merged into b
- * (an equidistant sub-result makes b equidistant only where it attains b's minimum); *used:
- * the method that answered. */
+ * (an equidistant sub-result makes b equidistant only where it attains b's minimum); dcap: a
+ * distance attained elsewhere (INFINITY: none), like b's best: minima of the rim distance above
+ * it cannot be the answer and are pruned. *used: the method that answered. */
 cdist_status cdist__circle_disk_core_ex(cdist_query *q, cdist_method method, const cdist__circle *c, const cdist__circle *d,
-                                    cdist__best *b, cdist_method *used);
+                                        double dcap, cdist__best *b, cdist_method *used);
 #define CD_DISK_METHODS (CD_HAS(CDIST_METHOD_POLYNOMIAL) | CD_HAS(CDIST_METHOD_ROBUST))
 #define CD_DISK_AUTO CDIST_METHOD_ROBUST
 
