@@ -31,10 +31,11 @@ typedef struct cdist__cc_frame {
 /* Values at one angle. */
 typedef struct cdist__cc_pt {
     double t, c, s;
+    int detail;   /* which certificates' values below are set (bits; cc_engine.c computes them on demand) */
     double H, H1, H2; /* H, H', H'' */
     double eH, eH1, eH2; /* their rounding bounds at this point */
     double F1, eF1; /* F'/2 and its rounding bound */
-    double F2, eF2; /* F''/2 and its rounding bound (set by the subdivision's evaluation only) */
+    double F2, eF2; /* F''/2 and its rounding bound */
     double rho;   /* distance to B's axis */
     double F;     /* F */
     double d;     /* sqrt(F) */
@@ -69,6 +70,8 @@ static inline void cdist__cc_eval_lean(const cdist__cc_frame *f, double t, doubl
     p->t = t;
     p->c = c;
     p->s = s;
+    p->detail = 0;
+    p->rho = v.rho;
     p->F1 = v.F1;
     p->F = v.F;
     p->d = sqrt(v.F);
