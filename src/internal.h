@@ -32,9 +32,13 @@ cdist_status cdist__circle_circle_core(cdist_query *q, cdist_method method, cons
 cdist_status cdist__cc_polynomial(cdist_query *q, const cdist__circle *c0, const cdist__circle *c1, cdist__best *b);
 cdist_status cdist__cc_iteration(cdist_query *q, const cdist__circle *c0, const cdist__circle *c1, cdist__best *b, int *iterations);
 
-/* Every critical angle on c0 (in c0's basis) of theta -> dist^2(c0(theta), c1); returns the
- * count (at most cap), or -1 when the function is constant (every angle critical). */
-int cdist__circle_circle_critical(cdist_query *q, const cdist__circle *c0, const cdist__circle *c1, double *theta0, int cap);
+/* Every critical angle on c0 (in c0's basis) of theta -> dist^2(c0(theta), c1) when dcap is
+ * infinite. Else (minima mode) the local minima with distance up to min(dcap, the global
+ * minimum) to the tie tolerance, the rest of the circle pruned by lower bounds (the closed form
+ * of parallel planes still returns all its critical angles). Returns the count (at most cap), or
+ * -1 when the function is constant (every angle critical). */
+int cdist__circle_circle_critical(cdist_query *q, const cdist__circle *c0, const cdist__circle *c1, double dcap, double *theta0,
+                                  int cap);
 
 /* The circles family's one framing and scaling rule (src/base/numeric.h): a moved to the origin
  * and b with it (the translation is written to *offset), both scaled by the power of two 2^-e
@@ -45,9 +49,6 @@ int cdist__circle_circle_critical(cdist_query *q, const cdist__circle *c0, const
 int cdist__circles_frame(cdist__circle *a, cdist__circle *b, vec3 *offset, cdist__best *best);
 void cdist__circles_result(const cdist__best *best, int swap, int e, vec3 offset, cdist_result *r);
 
-/* Circle c to disk d (c->c at the origin, d relative to it). */
-cdist_status cdist__circle_disk_core(cdist_query *q, cdist_method method, const cdist__circle *c, const cdist__circle *d,
-                                 cdist__best *b);
 
 /* ---- cc_methods block: helpers shared by cdist__cc_polynomial and cdist__cc_iteration (defined in
  * src/circles/cc_poly.c). c0 is at the origin, c1 at D. "side" s moves a point on circle s and measures

@@ -45,7 +45,8 @@ static int axis_crossings(const cdist__cc_frame *f, double *t)
     return n;
 }
 
-int cdist__circle_circle_critical(cdist_query *q, const cdist__circle *c0, const cdist__circle *c1, double *theta0, int cap)
+int cdist__circle_circle_critical(cdist_query *q, const cdist__circle *c0, const cdist__circle *c1, double dcap, double *theta0,
+                                  int cap)
 {
     (void)q;
     if (cap < 0) cap = 0;
@@ -65,8 +66,10 @@ int cdist__circle_circle_critical(cdist_query *q, const cdist__circle *c0, const
     C = b.c;
     cdist__cc_frame f;
     cdist__cc_frame_init(&f, c0, C, c1);
-    cdist__cc_sink k = {.f = &f, .want_max = 1, .out = theta0, .cap = cap, .A = c0, .B = c1,
-                 .Fmin = INFINITY, .dmin = INFINITY, .rho_min = INFINITY};
+    /* Minima mode: the scan prunes against dmin, seeded with the cap (in the scaled units). */
+    int minima = dcap < INFINITY;
+    cdist__cc_sink k = {.f = &f, .want_max = !minima, .prune = minima, .out = theta0, .cap = cap, .A = c0, .B = c1,
+                 .Fmin = INFINITY, .dmin = minima ? sc * dcap : INFINITY, .rho_min = INFINITY};
     double Fmax, tp[4];
     int np = cdist__cc_parallel_critical(&f, tp);
     if (np > 0) {
@@ -88,7 +91,12 @@ int cdist__circle_circle_critical(cdist_query *q, const cdist__circle *c0, const
     double L = fmax(fmax(c0->r, c1->r), v_norm(C));
     /* Constant F (also when F' never changes sign: a periodic F that is not constant has a
      * bracketed minimum and maximum). */
-    if (k.count == 0 || sqrt(Fmax) - k.dmin <= CC_EQUI_ULPS * DBL_EPSILON * L) return -1;
+    double tol = CC_EQUI_ULPS * DBL_EPSILON * L;
+    if (!minima) {
+        if (k.count == 0 || sqrt(Fmax) - k.dmin <= tol) return -1;
+    } else if (sqrt(Fmax) - sqrt(k.Fmin) <= tol && (k.count == 0 || sqrt(Fmax) - k.dmin <= tol)) {
+        return -1; /* else no count means no minimum up to the cap */
+    }
     double tk[2];
     int nk = c1->r > 0 ? axis_crossings(&f, tk) : 0;
     for (int i = 0; i < nk; i++) {

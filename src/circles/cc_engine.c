@@ -85,7 +85,8 @@
 
 #include "circles/circles-priv.h"
 
-#define CC_INIT_INTERVALS 8 /* half_sec[] below is tabulated for this value */
+#define CC_INIT_INTERVALS 16 /* a power of two >= 8 (half_sec[] below); the init table holds 16 angles */
+#define CC_LEVEL0 1 /* log2(CC_INIT_INTERVALS / 8): half_sec[] index of the initial intervals */
 #define CC_MIN_WIDTH (1.0 / 1073741824.0) /* 2^-30 rad */
 #define CC_EVAL_BUDGET 48 /* per initial interval */
 #define CC_DENSE_SAMPLES 512
@@ -217,34 +218,49 @@ void cdist__cc_frame_init(cdist__cc_frame *f, const cdist__circle *A, vec3 C, co
     f->Lw = 2 * f->R + Lc;
     f->W1 = W1;
     f->nga = sqrt(gg);
+    f->Hh = fabs(f->rg.ha) + fabs(f->rg.hb);
+    f->Hc0 = fabs(f->rg.hc);
 }
 
-/* Everything at angle t with (c, s) = (cos t, sin t): F and F'/2 by the ring evaluator, H with
- * its derivatives and rounding bounds from the same w', g, g1. */
+/* The values at angle t with (c, s) = (cos t, sin t) that pruning and the bracketing read: F,
+ * its root d, F'/2, rho, Q, g. The certificates' values come on demand (cc_detail_H, _F): most
+ * intervals are pruned first. */
 static void cc_eval(const cdist__cc_frame *f, double t, double c, double s, cdist__cc_pt *p)
 {
     cdist__ring_val v;
-    cdist__ring_eval(&f->rg, f->s, c, s, 2, &v);
-    double Q = v.Q, g = v.g, g1 = v.g1;
-    double sig = f->R * (f->Cu * s - f->Cv * c), sig1 = f->R * (f->Cu * c + f->Cv * s);
-    double s2 = f->s * f->s;
+    cdist__ring_eval(&f->rg, f->s, c, s, 1, &v);
     p->t = t;
     p->c = c;
     p->s = s;
+    p->detail = 0;
+    p->F1 = v.F1;
+    p->rho = v.rho;
+    p->F = v.F;
+    p->d = sqrt(v.F);
+    p->Q = v.Q;
+    p->g = v.g;
+}
+
+/* The H certificate's values at p: H, H', H'' (from the same w', g, g1 as the ring evaluator)
+ * and their rounding bounds. */
+static void cc_detail_H(const cdist__cc_frame *f, cdist__cc_pt *p)
+{
+    if (p->detail & 1) return;
+    p->detail |= 1;
+    double c = p->c, s = p->s;
+    cdist__ring_val v;
+    cdist__ring_eval(&f->rg, f->s, c, s, 2, &v);
+    double Q = v.Q, g = v.g, g1 = v.g1, rho = v.rho;
+    double sig = f->R * (f->Cu * s - f->Cv * c), sig1 = f->R * (f->Cu * c + f->Cv * s);
+    double s2 = f->s * f->s;
     p->H = Q * sig * sig - s2 * g * g;
     p->H1 = 2 * g * sig * sig + 2 * Q * sig * sig1 - 2 * s2 * g * g1;
     double g2 = 3 * (cdist__cc_dot3(v.w1, f->rg.ga) - g) - g; /* 3 w'.w'' + w.w''' with w''' = -w' */
     p->H2 = 2 * g1 * sig * sig + 8 * g * sig * sig1 + 2 * Q * (sig1 * sig1 - sig * sig) - 2 * s2 * (g1 * g1 + g * g2);
-    double rho = v.rho;
-    p->F1 = v.F1;
-    p->F = v.F;
-    p->d = sqrt(p->F);
-    p->Q = Q;
-    p->g = g;
-    /* Rounding bounds at this point, first order with margin: eps times the magnitudes Xb of
-     * the terms each quantity is summed from (w carries eps (2R + |C|) absolutely, w' eps 2R).
-     * Local bounds keep H certifiable near A's crossing of B's axis, where every term of H is
-     * tiny but accurate (relative error eps L / rho). */
+    /* Rounding bounds, first order with margin: eps times the magnitudes Xb of the terms each
+     * quantity is summed from (w carries eps (2R + |C|) absolutely, w' eps 2R). Local bounds
+     * keep H certifiable near A's crossing of B's axis, where every term of H is tiny but
+     * accurate (relative error eps L / rho). */
     double W1 = f->W1, Lw = f->Lw, ga = f->nga + f->Lw - 2 * f->R;
     double Qb = Q + 2 * rho * Lw, gb = fabs(g) + W1 * Lw + rho * 2 * f->R;
     double g1b = 2 * W1 * W1 + (rho + Lw) * ga + Qb, g2b = 3 * (W1 * ga + gb) + gb;
@@ -254,6 +270,25 @@ static void cc_eval(const cdist__cc_frame *f, double t, double c, double s, cdis
     p->eH1 = e8 * (2 * gb * sb2 + 4 * Qb * sb2 + 2 * s2 * (gb * (ag1 + g1b) + ag * g1b));
     p->eH2 = e8 * (4 * g1b * sb2 + 16 * gb * sb2 + 8 * Qb * sb2 +
                    2 * s2 * (3 * g1b * (ag1 + g1b) + gb * (fabs(g2) + g2b) + ag * g2b));
+}
+
+/* The F certificates' values at p: the rounding bound of F'/2, F''/2 and its bound. */
+static void cc_detail_F(const cdist__cc_frame *f, cdist__cc_pt *p)
+{
+    if (p->detail & 2) return;
+    p->detail |= 2;
+    cdist__ring_val v;
+    cdist__ring_eval(&f->rg, f->s, p->c, p->s, 2, &v);
+    double W1 = f->W1, Lw = f->Lw, ar = fabs(v.dr), rho = v.rho, irho = rho > 0 ? 1 / rho : INFINITY;
+    /* F'/2 = dr g / rho + h h': dr and h carry eps Lw absolutely, g eps Lw W1 (relative eps L
+     * / rho after the division), each product and sum eps relatively; doubled for margin. */
+    p->eF1 = 16 * DBL_EPSILON * (Lw * W1 * (1 + ar * irho) + ar * fabs(v.g) * (rho > 0 ? irho : 0.0) +
+                                 fabs(v.h) * fabs(v.h1) + Lw * (fabs(v.h1) + W1));
+    /* F''/2 = rho'^2 + dr rho'' + h'^2 + h h'', rho'' = (g1 - rho'^2) / rho: the absolute
+     * errors of dr, h (eps Lw), of g1 (eps Lw W1) and g / rho carried through, with margin. */
+    p->F2 = v.F2;
+    p->eF2 = 64 * DBL_EPSILON * (W1 * W1 + (Lw + ar) * (fabs(v.g1) + W1 * W1 + Lw * W1) * irho + f->Hh * f->Hh +
+                                 (fabs(v.h) + Lw) * f->Hh);
 }
 
 /* F'/2 and F''/2 only (for the refinement). */
@@ -271,6 +306,7 @@ static double refine(const cdist__cc_frame *f, const cdist__cc_pt *a, const cdis
 {
     double lo = a->t, hi = b->t; /* dir * F'(lo) < 0 <= dir * F'(hi) */
     double fa = dir * a->F1, fb = dir * b->F1;
+    if (fb == 0.0) return hi; /* the bracket's end is the root (a partition point on a symmetry) */
     /* Start from the secant point of the bracket. */
     double x = (fb > fa) ? lo + (hi - lo) * (-fa / (fb - fa)) : 0.5 * (lo + hi);
     if (!(x > lo && x < hi)) x = 0.5 * (lo + hi);
@@ -367,12 +403,55 @@ static void emit(cdist__cc_sink *k, const cdist__cc_pt *a, const cdist__cc_pt *b
     }
 }
 
+/* No critical point of F on [a, b]: F' keeps one sign, certified by its values at the ends
+ * (less their rounding bounds) and a bound M >= |F''/2| on [a, b] (from each end F' cannot reach
+ * 0 within |F'|/M). With rho_lo <= rho <= rho_hi on [a, b] (rho is W1-Lipschitz) and
+ * F''/2 = rho'^2 + (rho - s) rho'' + h'^2 + h h'', |rho'| <= |w'| <= W1,
+ * |rho''| = |w.w'' + |w'|^2 - rho'^2| / rho <= (rho_hi W1 + 2 W1^2) / rho_lo. Needs rho_lo > 0:
+ * it answers where H's certificates cannot, at roots of H's spurious factor rho sigma + s w.w'
+ * (H = (rho sigma - s w.w')(rho sigma + s w.w') and F'/2 = sigma - s w.w' / rho). */
+static int monotone(const cdist__cc_frame *f, cdist__cc_pt *a, cdist__cc_pt *b)
+{
+    if (!((a->F1 > 0 && b->F1 > 0) || (a->F1 < 0 && b->F1 < 0))) return 0;
+    cc_detail_F(f, a);
+    cc_detail_F(f, b);
+    double A = fabs(a->F1) - a->eF1, B = fabs(b->F1) - b->eF1;
+    if (!(A > 0 && B > 0)) return 0;
+    double w = b->t - a->t, W1 = f->W1;
+    double rlo = 0.5 * (a->rho + b->rho - W1 * w), rhi = fmax(a->rho, b->rho) + 0.5 * W1 * w;
+    if (!(rlo > 0)) return 0;
+    double M = W1 * W1 + (rhi + f->s) * (rhi * W1 + 2 * W1 * W1) / rlo + f->Hh * (2 * f->Hh + f->Hc0);
+    return A + B > M * w * (1 + 1e-12);
+}
+
+/* At most one critical point of F on [a, b], a minimum: F is convex there, certified by F''/2 at
+ * the ends (less rounding) and M3 >= |F'''/2| on [a, b]. With the bounds of monotone() and
+ * F'''/2 = 3 rho' rho'' + (rho - s) rho''' + 3 h' h'' + h h''',
+ * rho''' = (3 w'.w'' + w.w''' - 3 rho' rho'') / rho. Answers at a minimum where H has a root
+ * cluster (both of its factors vanish nearby) and its certificates fail. */
+static int convex(const cdist__cc_frame *f, cdist__cc_pt *a, cdist__cc_pt *b)
+{
+    cc_detail_F(f, a);
+    cc_detail_F(f, b);
+    double A = a->F2 - a->eF2, B = b->F2 - b->eF2;
+    if (!(A > 0 && B > 0)) return 0;
+    double w = b->t - a->t, W1 = f->W1;
+    double rlo = 0.5 * (a->rho + b->rho - W1 * w), rhi = fmax(a->rho, b->rho) + 0.5 * W1 * w;
+    if (!(rlo > 0)) return 0;
+    double B2 = (rhi * W1 + 2 * W1 * W1) / rlo;
+    double B3 = (3 * W1 * W1 + rhi * W1 + 3 * W1 * B2) / rlo;
+    double M3 = 3 * W1 * B2 + (rhi + f->s) * B3 + f->Hh * (4 * f->Hh + f->Hc0);
+    return fmin(A, B) > 0.5 * M3 * w * (1 + 1e-12);
+}
+
 #define POS(x) ((x) > 0 ? (x) : 0.0)
 /* Certificates on [a, b] (see the header comment). 1: resolved (<= 1 root of H). First order
  * with the global bounds M1, M2; second order with the endpoint values of H'' and M3 (from each
  * end over half the interval, the cubic lower bound taken at its worst, x = w/2). */
-static int certified(const cdist__cc_frame *f, const cdist__cc_pt *a, const cdist__cc_pt *b)
+static int certified(const cdist__cc_frame *f, cdist__cc_pt *a, cdist__cc_pt *b)
 {
+    cc_detail_H(f, a);
+    cc_detail_H(f, b);
     double w = b->t - a->t, x = 0.5 * w;
     if ((a->H > 0 && b->H > 0) || (a->H < 0 && b->H < 0)) {
         double sg = a->H > 0 ? 1.0 : -1.0;
@@ -417,6 +496,60 @@ static const double half_sec[] = {
     0.50000000000000011, 0.50000000000000011, 0.5, 0.5,
     0.5, 0.5, 0.5, 0.5,
 };
+
+/* cos h and sin h for |h| <= 0.1 by their Taylor series (truncation below 1e-26 there): the kink
+ * grid's offsets, combined with cos t, sin t of the centre by the addition theorem, so the grid
+ * costs no transcendental call. */
+static inline void small_sincos(double h, double *sn, double *cs)
+{
+    double x = h * h;
+    *sn = h * (1 - x / 6 * (1 - x / 20 * (1 - x / 42 * (1 - x / 72 * (1 - x / 110 * (1 - x / 156))))));
+    *cs = 1 - x / 2 * (1 - x / 12 * (1 - x / 30 * (1 - x / 56 * (1 - x / 90 * (1 - x / 132 * (1 - x / 182))))));
+}
+
+/* half_sec[] index of a subdivision level (clamped: the entries are 0.5 from 26 on). */
+static inline int hs_index(int level) { return level + CC_LEVEL0 < 31 ? level + CC_LEVEL0 : 31; }
+
+/* A lower bound of F on the arc [a, b] of width 2 pi / CC_INIT_INTERVALS / 2^level. In the
+ * plane of z = (cos t, sin t), F extends to G(z) = |D|^2 + s^2 - 2 s |w| with |D|^2 replaced by
+ * its affine part (R^2 + |C|^2 - 2 R C.(u, v) z): affine minus a norm of an affine map, so G is
+ * concave, and on the unit circle G = F. The arc lies in the triangle of its ends and T, the
+ * intersection of the tangents there (T = (z_a + z_b) / (2 cos^2(w/2))), so on the arc
+ * F >= min(F(a), F(b), G(T)), and G(T) = (rho_T - s)^2 + h_T^2 - R^2 tan^2(w/2) (|D|^2 at T
+ * exceeds its affine part by R^2 (|T|^2 - 1)). The gap to min F shrinks as w^2, against w for
+ * the Lipschitz bound. Rounding: the absolute errors of rho_T - s and h_T (dw, a few eps of the
+ * magnitudes of w's terms) and of T itself (an eps-relative move of T moves G by eps |grad G|).
+ * Returns min(F(a), F(b), G(T)) minus that margin (may be negative). */
+static double arc_hull_bound(const cdist__cc_frame *f, double ca, double sa, double cb, double sb, double Fmin_ends, double hs)
+{
+    double k = 2 * hs * hs; /* 1 / (2 cos^2(w/2)) */
+    double cT = (ca + cb) * k, sT = (sa + sb) * k;
+    cdist__ring_val v;
+    cdist__ring_eval(&f->rg, f->s, cT, sT, 0, &v);
+    double tan2 = 4 * hs * hs - 1, R2 = f->R * f->R;
+    double GT = v.F - R2 * tan2;
+    double dw = 16 * DBL_EPSILON * f->Lw, dT = sqrt(v.F) + f->Lw;
+    double err = 4 * dT * dw + 16 * DBL_EPSILON * (v.F + R2 * tan2 + f->Lw * f->Lw);
+    return fmin(Fmin_ends, GT) - err;
+}
+
+/* The bound on an interval of the subdivision at `level`. */
+static double hull_bound(const cdist__cc_frame *f, const cdist__cc_pt *a, const cdist__cc_pt *b, int level)
+{
+    return arc_hull_bound(f, a->c, a->s, b->c, b->s, fmin(a->F, b->F), half_sec[hs_index(level)]);
+}
+
+/* The bound on the window [t - h, t + h] (h <= 0.1) around a near-crossing. */
+static double window_hull_bound(const cdist__cc_frame *f, double t, double h)
+{
+    double ct, st, ch, sh;
+    sincos(t, &st, &ct);
+    small_sincos(h, &sh, &ch);
+    cdist__cc_pt a, b;
+    cdist__cc_eval_lean(f, t - h, ct * ch + st * sh, st * ch - ct * sh, &a);
+    cdist__cc_eval_lean(f, t + h, ct * ch - st * sh, st * ch + ct * sh, &b);
+    return arc_hull_bound(f, a.c, a.s, b.c, b.s, fmin(a.F, b.F), 0.5 / ch);
+}
 
 static double cc_F_at(const void *ctx, double t)
 {
@@ -485,8 +618,8 @@ static int near_kinks(const cdist__cc_frame *f, const cdist__cc_pt *init, double
         int miss = 0;
         for (int it = 0; it < 52; it++) {
             /* 1 / (2 cos(width / 2)); width = 2 pi / N * 2^(1 - it) */
-            double hc = it == 0 ? 0.70710678118654752 /* 0.5 / cos(pi / 4), N = 8 */
-                                : half_sec[it - 1 < 31 ? it - 1 : 31];
+            int hi_ = it + CC_LEVEL0 - 1; /* width / 2 = pi / 8 / 2^hi_ */
+            double hc = hi_ < 0 ? 0.70710678118654752 /* 0.5 / cos(pi / 4) */ : half_sec[hi_ < 31 ? hi_ : 31];
             double cm = (cl + ch) * hc, sm = (sl + sh) * hc;
             cdist__ring_val v;
             cdist__ring_eval(&f->rg, f->s, cm, sm, 1, &v);
@@ -513,7 +646,21 @@ static double kink_core(const cdist__cc_frame *f, double t)
     cdist__ring_val v;
     cdist__ring_eval(&f->rg, f->s, c, s, 0, &v);
     double r = sqrt(v.rho / f->L);
-    return fmin(0.05, 1e3 * r + 1e-12);
+    double core = fmin(0.05, 1e3 * r + 1e-12);
+    /* A tangent to B's axis keeps rho tiny over a wider window (rho ~ rho0 + k x^2 / 2), where H
+     * stays below its rounding too: widen the core (doubling) while rho at both of its ends is
+     * still below the near-crossing threshold. */
+    double thr = CC_KINK_REL * f->L;
+    while (core < 0.05) {
+        double sh, ch;
+        small_sincos(core, &sh, &ch);
+        cdist__ring_val lo, hi;
+        cdist__ring_eval(&f->rg, f->s, c * ch + s * sh, s * ch - c * sh, 0, &lo);
+        cdist__ring_eval(&f->rg, f->s, c * ch - s * sh, s * ch + c * sh, 0, &hi);
+        if (fmax(lo.rho, hi.rho) > thr) break;
+        core = fmin(0.05, 2 * core);
+    }
+    return core;
 }
 
 /* The neighbourhoods of the lowest grid points of the sampled intervals, minimised only after the
@@ -534,34 +681,26 @@ static void deferred_offer(const cdist__cc_frame *f, cdist__cc_sink *k, const cc
         if (df->d[i] - f->R * df->hw[i] <= dbest + tie) min_offer(f, k, df->t[i] - df->hw[i], df->t[i] + df->hw[i]);
 }
 
-/* cos h and sin h for |h| <= 0.1 by their Taylor series (truncation below 1e-26 there): the kink
- * grid's offsets, combined with cos t, sin t of the centre by the addition theorem, so the grid
- * costs no transcendental call. */
-static inline void small_sincos(double h, double *sn, double *cs)
-{
-    double x = h * h;
-    *sn = h * (1 - x / 6 * (1 - x / 20 * (1 - x / 42 * (1 - x / 72 * (1 - x / 110 * (1 - x / 156))))));
-    *cs = 1 - x / 2 * (1 - x / 12 * (1 - x / 30 * (1 - x / 56 * (1 - x / 90 * (1 - x / 132 * (1 - x / 182))))));
-}
-
-/* The geometric grid around a near-crossing t: t +- 0.1 * 2^(-j/2) down to 1e-17, and t. */
+/* The geometric grid around a near-crossing t: t +- 0.1 * 2^-j down to the angular resolution
+ * at t (offsets below 2 ulps of t name no new angle), and t. */
 static void scan_kink(const cdist__cc_frame *f, cdist__cc_sink *k, double t, double core, double *Fmax, cc_deferred *df)
 {
-    enum { NG = 110 };
+    enum { NG = 64 }; /* 0.1 * 2^-63 is below any angular resolution */
     cdist__cc_pt prev, cur;
     double ct, st;
     sincos(t, &st, &ct);
     int first = 1;
     /* The grid starts at the first offset within twice the core: beyond the core the
      * subdivision covers F (overlapping it a little). */
-    int j0 = 0;
-    while (j0 < NG - 1 && ldexp(j0 % 2 ? 0.1 * M_SQRT1_2 : 0.1, -(j0 / 2)) > 2 * core) j0++;
+    int j0 = 0, j1 = NG;
+    while (j0 < NG - 1 && ldexp(0.1, -j0) > 2 * core) j0++;
+    double res = 4 * DBL_EPSILON * fmax(1.0, fabs(t));
+    while (j1 > j0 + 1 && ldexp(0.1, -(j1 - 1)) < res) j1--;
     for (int side = -1; side <= 1; side += 2)
-        for (int jj = 0; jj < NG; jj++) {
-            int j = side < 0 ? jj : NG - 1 - jj; /* increasing angle */
-            if (j < j0) continue;
-            double h = side * ldexp(j % 2 ? 0.1 * M_SQRT1_2 : 0.1, -(j / 2)), ch, sh;
-            if (side > 0 && jj == 0) {
+        for (int jj = j0; jj < j1; jj++) {
+            int j = side < 0 ? jj : j1 - 1 - (jj - j0); /* increasing angle */
+            double h = side * ldexp(0.1, -j), ch, sh;
+            if (side > 0 && jj == j0) {
                 cdist__cc_eval_lean(f, t, ct, st, &cur);
                 emit(k, &prev, &cur);
                 prev = cur;
@@ -577,14 +716,20 @@ static void scan_kink(const cdist__cc_frame *f, cdist__cc_sink *k, double t, dou
      * relative rounding eps L / rho of w.w' / rho and its sign is unreliable; F itself is
      * accurate (d to eps L). Polish the lowest grid neighbourhood by a minimisation of F. */
     if (!k->best) return;
-    if (df->n < CC_DEFER) {
-        cdist__cc_pt p;
-        cdist__cc_eval_lean(f, t, ct, st, &p);
-        df->t[df->n] = t;
-        df->hw[df->n] = 1e-3;
-        df->d[df->n++] = p.d;
-    } else {
-        min_offer(f, k, t - 1e-3, t + 1e-3);
+    /* Each side of the crossing separately (a minimum on either side: symmetric
+     * configurations), over the core at least. */
+    double hw = fmax(1e-3, 2 * core);
+    cdist__cc_pt p;
+    cdist__cc_eval_lean(f, t, ct, st, &p);
+    for (int side = -1; side <= 1; side += 2) {
+        double m = t + side * 0.5 * hw;
+        if (df->n < CC_DEFER) {
+            df->t[df->n] = m;
+            df->hw[df->n] = 0.5 * hw;
+            df->d[df->n++] = p.d;
+        } else {
+            min_offer(f, k, m - 0.5 * hw, m + 0.5 * hw);
+        }
     }
 }
 
@@ -639,7 +784,7 @@ int cdist__cc_scan(const cdist__cc_frame *f, cdist__cc_sink *k, double *Fmax)
                                   -0.38268343236508978, -0.70710678118654757, -0.92387953251128674};
     for (int i = 0; i < CC_INIT_INTERVALS; i++) {
         double t = -M_PI + i * (2 * M_PI / CC_INIT_INTERVALS);
-        int j = i * (16 / CC_INIT_INTERVALS);
+        int j = i * 16 / CC_INIT_INTERVALS;
         cc_eval(f, t, ic[j], -ic[(j + 4) % 16], &init[i]);
     }
     init[CC_INIT_INTERVALS] = init[0];
@@ -663,83 +808,84 @@ int cdist__cc_scan(const cdist__cc_frame *f, cdist__cc_sink *k, double *Fmax)
         return 0;
     }
 
-    /* Depth-first, left to right, so consecutive leaves share their endpoints: the current
-     * interval is refined in place, right halves wait on the stack. */
-    typedef struct {
-        cdist__cc_pt b;
+    /* Depth-first, left to right, so consecutive leaves share their endpoints (one value per
+     * point: a sign read at rounding level still brackets every transition exactly once): the
+     * current interval is refined in place, right halves wait on the stack. Points are referred
+     * to, never copied: the initial ones in init[], the midpoints of the current initial
+     * interval in pool[] (at most the evaluation budget of them). */
+    struct {
+        cdist__cc_pt *b;
         int level;
-    } ival;
-    ival st[CC_STACK];
-    int evals = 0;
+    } st[CC_STACK];
+    cdist__cc_pt pool[CC_EVAL_BUDGET + 1];
     double tk[2], core[2];
     cc_deferred deferred;
     deferred.n = 0;
+    double dbest = INFINITY; /* smallest sampled distance: the minimum is at most this */
+    for (int i = 0; i < CC_INIT_INTERVALS; i++) {
+        if (init[i].d < dbest) dbest = init[i].d;
+        if (init[i].F > *Fmax) *Fmax = init[i].F;
+        if (init[i].F < k->Fmin) {
+            k->Fmin = init[i].F;
+            k->tmin = init[i].t;
+        }
+    }
     int nk = near_kinks(f, init, tk);
     for (int i = 0; i < nk; i++) {
         core[i] = kink_core(f, tk[i]);
+        /* Pruning (robust and minima modes): a window (covering the grid) whose hull bound lies
+         * above the attained distance needs no grid (near-touching linked circles: the crossing
+         * is far above). */
+        double dth = dbest * (1 + 8 * DBL_EPSILON) + CD_TIE_ULPS * DBL_EPSILON * f->L;
+        if (k->prune && window_hull_bound(f, tk[i], 2 * core[i]) > dth * dth) continue;
         scan_kink(f, k, tk[i], core[i], Fmax, &deferred);
     }
-    double dbest = INFINITY; /* smallest sampled distance: the minimum is at most this */
-    for (int i = 0; i < CC_INIT_INTERVALS; i++)
-        if (init[i].d < dbest) dbest = init[i].d;
     for (int i = 0; i < CC_INIT_INTERVALS; i++) {
-        cdist__cc_pt a = init[i], b = init[i + 1];
-        int level = 0, sp = 0;
-        evals = 0; /* a cluster of roots exhausts the budget of its own interval only */
+        cdist__cc_pt *a = &init[i], *b = &init[i + 1];
+        int level = 0, sp = 0, evals = 0; /* a cluster of roots exhausts the budget of its own interval only */
         for (;;) {
-            if (a.F > *Fmax) *Fmax = a.F;
-            if (a.F < k->Fmin) {
-                k->Fmin = a.F;
-                k->tmin = a.t;
+            double w = b->t - a->t;
+            /* Pruning (robust and minima modes): the distance is R-Lipschitz in the angle, so on
+             * [a, b] it is at least (d(a) + d(b) - R w) / 2, and F is at least the hull bound;
+             * above the attained distance (a sample or a refined minimum) by more than a tie,
+             * the interval holds no closest pair, not even a tied one. */
+            double dth = fmin(dbest, k->dmin) * (1 + 8 * DBL_EPSILON) + CD_TIE_ULPS * DBL_EPSILON * f->L;
+            int done = k->prune && (0.5 * (a->d + b->d - f->R * w) > dth || (level < 31 && hull_bound(f, a, b, level) > dth * dth));
+            for (int j = 0; j < nk && !done; j++) {
+                /* within twice a near-crossing's core: the geometric grid covers it */
+                double lo = remainder(a->t - tk[j], 2 * M_PI), hi = lo + w;
+                done = lo >= -2 * core[j] && hi <= 2 * core[j];
             }
-            double w = b.t - a.t;
-            /* Robust mode prunes: the distance is R-Lipschitz in the angle, so on [a, b] it is at
-             * least (d(a) + d(b) - R w) / 2; above an attained distance (a sample or a refined
-             * minimum) the interval cannot hold the global minimum. */
-            if (k->best && 0.5 * (a.d + b.d - f->R * w) > fmin(dbest, k->dmin) * (1 + 8 * DBL_EPSILON)) {
-                if (sp == 0) break;
-                a = b;
-                b = st[--sp].b;
-                level = st[sp].level;
-                continue;
+            if (!done) {
+                int leaf = certified(f, a, b) || monotone(f, a, b) || convex(f, a, b) || w <= CC_MIN_WIDTH || sp + 1 >= CC_STACK ||
+                           level >= 31;
+                if (leaf || evals >= CC_EVAL_BUDGET) {
+                    /* Past the budget (multiple roots of H at rounding level: tangencies, A
+                     * passing within rounding of B's axis) the rest is sampled, keeping the
+                     * resolution already reached around the trouble spot. */
+                    if (leaf) emit(k, a, b);
+                    else emit_sampled(f, k, a, b, Fmax, &deferred);
+                } else {
+                    /* Midpoint from the endpoint cosines/sines (no transcendental call). */
+                    double hc = half_sec[hs_index(level)];
+                    cdist__cc_pt *mid = &pool[evals++];
+                    cc_eval(f, 0.5 * (a->t + b->t), (a->c + b->c) * hc, (a->s + b->s) * hc, mid);
+                    if (mid->F > *Fmax) *Fmax = mid->F;
+                    if (mid->F < k->Fmin) {
+                        k->Fmin = mid->F;
+                        k->tmin = mid->t;
+                    }
+                    level++;
+                    st[sp].b = b;
+                    st[sp++].level = level;
+                    b = mid;
+                    continue;
+                }
             }
-            int inside = 0; /* within a near-crossing's core: the geometric grid covers it */
-            for (int i = 0; i < nk; i++) {
-                double lo = a.t - tk[i], hi = b.t - tk[i];
-                lo = remainder(lo, 2 * M_PI);
-                hi = lo + w;
-                if (lo >= -core[i] && hi <= core[i]) inside = 1;
-            }
-            if (inside) {
-                if (sp == 0) break;
-                a = b;
-                b = st[--sp].b;
-                level = st[sp].level;
-                continue;
-            }
-            int leaf = certified(f, &a, &b) || w <= CC_MIN_WIDTH || sp + 1 >= CC_STACK || level >= 31;
-            if (leaf || evals >= CC_EVAL_BUDGET) {
-                /* Past the budget (multiple roots of H at rounding level: tangencies, A passing
-                 * within rounding of B's axis) the rest is sampled, keeping the resolution
-                 * already reached around the trouble spot. */
-                if (leaf) emit(k, &a, &b);
-                else emit_sampled(f, k, &a, &b, Fmax, &deferred);
-                if (sp == 0) break;
-                a = b;
-                b = st[--sp].b;
-                level = st[sp].level;
-                continue;
-            }
-            /* Midpoint from the endpoint cosines/sines (no transcendental call). */
-            double hc = half_sec[level];
-            double cm = (a.c + b.c) * hc, sm = (a.s + b.s) * hc;
-            cdist__cc_pt mid;
-            cc_eval(f, 0.5 * (a.t + b.t), cm, sm, &mid);
-            evals++;
-            level++;
-            st[sp].b = b;
-            st[sp++].level = level;
-            b = mid;
+            if (sp == 0) break;
+            a = b;
+            b = st[--sp].b;
+            level = st[sp].level;
         }
     }
     deferred_offer(f, k, &deferred);

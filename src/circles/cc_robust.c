@@ -61,7 +61,7 @@ cdist_status cdist__cc_robust(cdist_query *q, const cdist__circle *c0, const cdi
     B = &Bs;
     cdist__cc_frame f;
     cdist__cc_frame_init(&f, A, CB, B);
-    cdist__cc_sink k = {.f = &f, .best = b, .unscale = unsc, .swapped = sw, .A = A, .B = B,  .Fmin = INFINITY,
+    cdist__cc_sink k = {.f = &f, .best = b, .prune = 1, .unscale = unsc, .swapped = sw, .A = A, .B = B,  .Fmin = INFINITY,
                  .dmin = INFINITY, .rho_min = INFINITY};
     double Fmax, tp[4];
     int np = cdist__cc_parallel_critical(&f, tp);

@@ -405,7 +405,7 @@ static int cdk_parallel(const cdk *k, cdist__best *b)
     return 1;
 }
 
-static cdist_status cdk_solve(cdist_query *q, cdist_method method, const cdk *k, cdist__best *b, cdist_method *used)
+static cdist_status cdk_solve(cdist_query *q, cdist_method method, const cdk *k, cdist__best *b, double dcap0, cdist_method *used)
 {
     *used = method;
     if (cdk_parallel(k, b)) return CDIST_OK;
@@ -444,10 +444,15 @@ static cdist_status cdk_solve(cdist_query *q, cdist_method method, const cdk *k,
          * method, Fourier bounds on the squared derivative, src/circles/cc_engine.c), the rim being a
          * circle; its own sampling as the fallback. */
         *used = CDIST_METHOD_ROBUST;
-        n = cdist__circle_circle_critical(q, k->c, k->d, ts, CDK_CAP);
+        /* Only the minima of F matter (the lemma), and only those below the best candidate so
+         * far (a z candidate, whose distance is the true one): the engine prunes the rest. */
+        double dcap = b->n > 0 ? fmin(dcap0, sqrt(b->c[0].d2)) : dcap0;
+        n = cdist__circle_circle_critical(q, k->c, k->d, dcap, ts, CDK_CAP);
         if (n == -1) {
             n = 0; /* F constant: the rim gives no isolated candidate; z candidates rule */
             ts[n++] = 0.0;
+        } else if (n == 0 && dcap < INFINITY) {
+            /* no minimum of F below the cap: the z candidates rule */
         } else if (n <= 0) {
             n = cdk_robust_critical(k, ts, CDK_CAP, scale);
         } else {
@@ -470,7 +475,7 @@ static cdist_status cdk_solve(cdist_query *q, cdist_method method, const cdk *k,
 
 /* Circle c (centre at the origin) to disk d (centre relative to c's). */
 static cdist_status circle_disk_solve(cdist_query *q, cdist_method method, const cdist__circle *c, const cdist__circle *d,
-                                      cdist__best *b, cdist_method *used)
+                                      double dcap, cdist__best *b, cdist_method *used)
 {
     *used = method;
     if (c->r == 0.0) {
@@ -490,29 +495,24 @@ static cdist_status circle_disk_solve(cdist_query *q, cdist_method method, const
     }
     cdk k;
     cdk_init(&k, c, d);
-    return cdk_solve(q, method, &k, b, used);
+    return cdk_solve(q, method, &k, b, dcap, used);
 }
 
 /* Solved into a fresh collector, then merged into b: b may already hold other candidates (a
  * caller combining several objects), and an equidistant set here only makes b equidistant when
  * it attains b's minimum. */
 cdist_status cdist__circle_disk_core_ex(cdist_query *q, cdist_method method, const cdist__circle *c, const cdist__circle *d,
-                                     cdist__best *b, cdist_method *used)
+                                     double dcap, cdist__best *b, cdist_method *used)
 {
     cdist__best t;
     cdist__best_init(&t, b->scale);
-    cdist_status st = circle_disk_solve(q, method, c, d, &t, used);
+    /* b's best so far is attained too: no minimum above it can be the answer */
+    if (b->n > 0) dcap = fmin(dcap, sqrt(b->c[0].d2));
+    cdist_status st = circle_disk_solve(q, method, c, d, dcap, &t, used);
     if (st) return st;
     double d2 = cdist__best_merge(b, &t, v3(0, 0, 0), 0);
     if (cdist__best_is_equidistant(&t)) cdist__best_settle_equidistant(b, d2);
     return CDIST_OK;
-}
-
-cdist_status cdist__circle_disk_core(cdist_query *q, cdist_method method, const cdist__circle *c, const cdist__circle *d,
-                                 cdist__best *b)
-{
-    cdist_method used;
-    return cdist__circle_disk_core_ex(q, method, c, d, b, &used);
 }
 
 /* The scaled problem (c at the origin): the core, then r written in full. */
@@ -521,7 +521,7 @@ static cdist_status circle_disk_query(cdist_query *q, cdist__circle a, cdist__ci
     vec3 offset;
     cdist__best best;
     int ex = cdist__circles_frame(&a, &e, &offset, &best);
-    cdist_status st = cdist__circle_disk_core_ex(q, cdist__family_method(q, CD_FAM_CIRCLE_DISK), &a, &e, &best, used);
+    cdist_status st = cdist__circle_disk_core_ex(q, cdist__family_method(q, CD_FAM_CIRCLE_DISK), &a, &e, INFINITY, &best, used);
     if (st) return st;
     if (best.n == 0) return cdist__fail(q, CDIST_ERR_INTERNAL, "circle-disk found no candidate");
     cdist__circles_result(&best, 0, ex, offset, r);

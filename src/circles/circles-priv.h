@@ -25,14 +25,18 @@ typedef struct cdist__cc_frame {
     double epsL;       /* eps * (R + |C|): absolute rounding of positions */
     double L;          /* problem scale max(R, s, |C|) */
     double Lw, W1, nga; /* magnitudes of the terms of w, of |w'|, |ga| (rounding bounds) */
+    double Hh, Hc0;    /* |ha| + |hb| (bounds |h'|, |h''|) and |hc| */
 } cdist__cc_frame;
 
 /* Values at one angle. */
 typedef struct cdist__cc_pt {
     double t, c, s;
+    int detail;   /* which certificates' values below are set (bits; cc_engine.c computes them on demand) */
     double H, H1, H2; /* H, H', H'' */
     double eH, eH1, eH2; /* their rounding bounds at this point */
-    double F1;    /* F'/2 */
+    double F1, eF1; /* F'/2 and its rounding bound */
+    double F2, eF2; /* F''/2 and its rounding bound */
+    double rho;   /* distance to B's axis */
     double F;     /* F */
     double d;     /* sqrt(F) */
     double Q, g;  /* rho^2 and w.w' */
@@ -42,6 +46,7 @@ typedef struct cdist__cc_pt {
 typedef struct cdist__cc_sink {
     const cdist__cc_frame *f;
     int want_max;   /* also report local maxima (critical-angle mode) */
+    int prune;      /* drop intervals whose lower bound of the distance exceeds the attained one (dmin) */
     double *out;    /* critical mode: angles */
     int cap, count; /* critical mode: room and number found (may exceed cap) */
     cdist__best *best;  /* robust mode */
@@ -65,6 +70,8 @@ static inline void cdist__cc_eval_lean(const cdist__cc_frame *f, double t, doubl
     p->t = t;
     p->c = c;
     p->s = s;
+    p->detail = 0;
+    p->rho = v.rho;
     p->F1 = v.F1;
     p->F = v.F;
     p->d = sqrt(v.F);
@@ -84,10 +91,11 @@ int cdist__cc_parallel_critical(const cdist__cc_frame *f, double *t);
 /* The robust method (c0 at the origin). */
 cdist_status cdist__cc_robust(cdist_query *q, const cdist__circle *c0, const cdist__circle *c1, cdist__best *b);
 /* Circle c (centre at the origin) to disk d, solved into a fresh collector and merged into b
- * (an equidistant sub-result makes b equidistant only where it attains b's minimum); *used:
- * the method that answered. */
+ * (an equidistant sub-result makes b equidistant only where it attains b's minimum); dcap: a
+ * distance attained elsewhere (INFINITY: none), like b's best: minima of the rim distance above
+ * it cannot be the answer and are pruned. *used: the method that answered. */
 cdist_status cdist__circle_disk_core_ex(cdist_query *q, cdist_method method, const cdist__circle *c, const cdist__circle *d,
-                                    cdist__best *b, cdist_method *used);
+                                        double dcap, cdist__best *b, cdist_method *used);
 #define CD_DISK_METHODS (CD_HAS(CDIST_METHOD_POLYNOMIAL) | CD_HAS(CDIST_METHOD_ROBUST))
 #define CD_DISK_AUTO CDIST_METHOD_ROBUST
 

@@ -35,11 +35,13 @@ static cdist_status dd_query(cdist_query *q, cdist__circle a, cdist__circle e, i
     cdist__best b0, b1;
     cdist__best_init(&b0, best.scale);
     cdist__best_init(&b1, best.scale);
-    if ((st = cdist__circle_disk_core_ex(q, m, &a, &e, &b0, &used0))) return st;
+    if ((st = cdist__circle_disk_core_ex(q, m, &a, &e, INFINITY, &b0, &used0))) return st;
     cdist__circle a1 = a, e1 = e;
     a1.c = v_neg(e.c);
     e1.c = v3(0, 0, 0);
-    if ((st = cdist__circle_disk_core_ex(q, m, &e1, &a1, &b1, &used1))) return st;
+    /* the first answer caps the second search (its minima above it cannot win) */
+    double cap0 = b0.n > 0 ? sqrt(b0.c[0].d2) : INFINITY;
+    if ((st = cdist__circle_disk_core_ex(q, m, &e1, &a1, cap0, &b1, &used1))) return st;
     double d0sq = cdist__best_merge(&best, &b0, v3(0, 0, 0), 0);
     double d1sq = cdist__best_merge(&best, &b1, e.c, 1);
     if (best.n == 0) return cdist__fail(q, CDIST_ERR_INTERNAL, "disk-disk found no candidate");

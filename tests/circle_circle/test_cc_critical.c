@@ -26,7 +26,39 @@ static int critical(const cdist_circle *c0, const cdist_circle *c1, double *t, i
 {
     cdist__circle a, b;
     if (cdist__check_circle(q, c0, "c0", &a) || cdist__check_circle(q, c1, "c1", &b)) return -2;
-    return cdist__circle_circle_critical(q, &a, &b, t, cap);
+    return cdist__circle_circle_critical(q, &a, &b, INFINITY, t, cap);
+}
+
+/* Minima mode (the minima up to the cap and up to the global minimum, to the tie tolerance): when
+ * the sampled global minimum lies below dcap (a little under, for the sampling), it is returned,
+ * and every returned angle is critical or an axis crossing. */
+static void minima_case(int i, const cdist_circle *c0, const cdist_circle *c1, const long double *Fs, int NS, double dcap)
+{
+    cdist__circle a, b;
+    if (cdist__check_circle(q, c0, "c0", &a) || cdist__check_circle(q, c1, "c1", &b)) return;
+    double t[64];
+    int n = cdist__circle_circle_critical(q, &a, &b, dcap, t, 64);
+    CHECK(n >= 0, "case %d: minima mode returned %d", i, n);
+    if (n < 0) return;
+    double L = fmax(fmax(c0->radius, c1->radius), tdist(c0->center, c1->center));
+    int jm = 0;
+    for (int j = 1; j < NS; j++)
+        if (Fs[j] < Fs[jm]) jm = j;
+    if (sqrtl(Fs[jm]) <= dcap - 1e-9 * L) {
+        double tj = -M_PI + jm * (2 * M_PI / NS), best = INFINITY;
+        for (int k = 0; k < n; k++) best = fmin(best, circ_dist(tj, t[k]));
+        CHECK(best <= 2.5 * (2 * M_PI / NS), "case %d: sampled minimum at %.6f (d %.6Lg, cap %.6g) not returned", i, tj,
+              sqrtl(Fs[jm]), dcap);
+    }
+    for (int k = 0; k < n; k++) {
+        double h = 1e-5;
+        long double d1 = (F_at(c0, c1, t[k] + h) - F_at(c0, c1, t[k] - h)) / (2 * h);
+        cdist_vec3 p;
+        cdist_circle_point(c0, t[k], &p);
+        cdist_vec3 D = tv(p.x - c1->center.x, p.y - c1->center.y, p.z - c1->center.z), m = c1->normal;
+        double rho = tdist(tv(m.y * D.z - m.z * D.y, m.z * D.x - m.x * D.z, m.x * D.y - m.y * D.x), tv(0, 0, 0));
+        CHECK(fabsl(d1) <= 1e-6 * L * L || rho <= 1e-6 * L, "case %d: minima-mode angle %.17g is not critical", i, t[k]);
+    }
 }
 
 static void random_case(int i, cdist_circle c0, cdist_circle c1)
@@ -48,6 +80,12 @@ static void random_case(int i, cdist_circle c0, cdist_circle c1)
         for (int k = 0; k < n; k++) best = fmin(best, circ_dist(tj, t[k]));
         CHECK(best <= 2.5 * (2 * M_PI / NS), "case %d: sampled extremum at %.6f (F %.6Lg) not returned (nearest %.3g)",
               i, tj, m, best);
+    }
+    /* minima mode with caps at, between and above the sampled minima */
+    {
+        long double lo = Fs[0], hi = Fs[0];
+        for (int j = 1; j < NS; j++) lo = fminl(lo, Fs[j]), hi = fmaxl(hi, Fs[j]);
+        for (int c = 0; c < 3; c++) minima_case(i, &c0, &c1, Fs, NS, (double)sqrtl(lo + (hi - lo) * (0.05 + 0.45 * c)));
     }
     /* each returned angle is critical: central difference small, or an axis crossing */
     double dmin = INFINITY;
