@@ -34,21 +34,24 @@ enum { LK_LINE = 0, LK_RAY = 1, LK_SEGMENT = 2 };
 
 /* The per-entry state of a block of up to 64 entries between the kernel's stages, in columns:
  * the model of linear_circle (r, a, m0, x1, |x1|, c2, h and three invariants of fdf_scaled), the
- * core's and the outer scale factors, the brackets of robust_roots, the range, the smallest
- * candidate so far; then the brackets of each entry and the list of brackets to solve. */
+ * core's and the outer scale factors, the brackets of robust_roots and the Newton start of a
+ * single one (NaN for two), the range, the smallest candidate so far; then the brackets of each
+ * entry and the list of brackets to solve. */
 enum {
     LK_F_R, LK_F_A, LK_F_M0, LK_F_X1, LK_F_AX1, LK_F_C2, LK_F_H, LK_F_K, LK_F_RR2, LK_F_DFC,
-    LK_F_UP, LK_F_OUTER, LK_F_BLO, LK_F_BHI, LK_F_SMIN, LK_F_SMAX, LK_F_BEST, LK_NF
+    LK_F_UP, LK_F_OUTER, LK_F_BLO, LK_F_BHI, LK_F_X0, LK_F_SMIN, LK_F_SMAX, LK_F_BEST, LK_NF
 };
+/* The Newton state of a long bracket between stage_newton and stage_long (KN(newton)). */
+enum { LK_S_X, LK_S_LO, LK_S_HI, LK_S_DX, LK_S_DXOLD, LK_S_P1, LK_S_P2, LK_S_JUMPED, LK_NS };
 typedef struct lk_block {
     double f[LK_NF][64];
     double br[2][2][64]; /* [left/right branch][lo/hi][entry] */
     unsigned char ok[64], two[64], has[2][64];
     int item_entry[128];
-    double item_lo[128], item_hi[128], item_d2[128];
+    double item_lo[128], item_hi[128], item_x0[128], item_d2[128];
     unsigned char item_fail[128];
     int n_long, long_item[128];  /* brackets still iterating after LK_LANE_ITER iterations */
-    double long_st[5][128];      /* and their Newton state: x, lo, hi, dx, dxold */
+    double long_st[LK_NS][128];  /* and their Newton state */
 } lk_block;
 
 #ifdef CD_X86_KERNELS

@@ -5,7 +5,7 @@
  * the operations (vadd, vsqrt, vfma, vsel, mand, ...; see line_kernel.c).
  * Every operation is the one of the scalar path (validation, src/api/validate.c; framing and
  * scaling, run_scaled/run/cdist__line_near_centre; the ROBUST core, linear_circle and
- * robust_roots with cdist__root_newton on fdf_scaled, src/lines/line_circle.c), lane by lane,
+ * robust_roots with cdist__root_newton_accel on fdf_scaled, src/lines/line_circle.c), lane by lane,
  * in the same order and with the same roundings (fma where the scalar code calls fma, CD_MADD
  * where it uses CD_MADD, the C library's cbrt): the distance of an entry the kernel answers is
  * the single query's, bit for bit. An entry whose inputs or intermediate values would take any
@@ -66,26 +66,31 @@ CD_INLINE V KN(fdf_scaled)(const KN(model) *m, V s, V *df, M *ok)
     return vmadd(vmul(m->a, h), P, vmul(vmul(m->m0, x2), vmul(num, rho2)));
 }
 
-/* The state of cdist__root_newton(fdf_scaled, m, lo, hi, +1, CD_ROOT_REL_ULPS * eps, CD_ROOT_ABS,
- * CD_ROOT_MAX_ITER) in each lane: act = still iterating, res = the root of a lane that stopped. */
+/* The state of cdist__root_newton_accel(fdf_scaled, m, lo, hi, x0, +1, CD_ROOT_REL_ULPS * eps,
+ * CD_ROOT_ABS, CD_ROOT_MAX_ITER) in each lane: act = still iterating, res = the root of a lane
+ * that stopped; p1, p2 the last two Newton steps' lengths, jumped = the last step went to near
+ * an end of the bracket. */
 typedef struct KN(newton) {
-    V x, lo, hi, dx, dxold, res;
-    M act;
+    V x, lo, hi, dx, dxold, p1, p2, res;
+    M jumped, act;
 } KN(newton);
 
-CD_INLINE KN(newton) KN(newton_start)(V lo, V hi, M act)
+CD_INLINE KN(newton) KN(newton_start)(V lo, V hi, V x0, M act)
 {
     KN(newton) s;
     s.res = lo; /* also the answer of an empty bracket */
     s.act = mand(act, vlt(lo, hi));
-    s.x = vmul(vset(0.5), vadd(lo, hi));
+    s.x = vsel(mand(vgt(x0, lo), vlt(x0, hi)), x0, vmul(vset(0.5), vadd(lo, hi)));
     s.lo = lo, s.hi = hi;
     s.dxold = vsub(hi, lo), s.dx = s.dxold;
+    s.p1 = s.p2 = vset(0.0);
+    s.jumped = mfalse();
     return s;
 }
 
-/* One iteration in the lanes of s->act; a lane that stops writes s->res and leaves s->act. Lanes
- * meeting a branch the kernel does not take (fdf instead of fdf_scaled, NaN) are added to *fail. */
+/* One iteration in the lanes of s->act, every branch of cdist__root_newton_accel as a select; a
+ * lane that stops writes s->res and leaves s->act. Lanes meeting a branch the kernel does not
+ * take (fdf instead of fdf_scaled, NaN) are added to *fail. */
 CD_INLINE void KN(newton_step)(const KN(model) *m, KN(newton) *s, M *fail)
 {
     const V rel = vset(CD_ROOT_REL_ULPS * DBL_EPSILON), abs_ = vset(CD_ROOT_ABS), half = vset(0.5), zero = vset(0.0);
@@ -105,13 +110,39 @@ CD_INLINE void KN(newton_step)(const KN(model) *m, KN(newton) *s, M *fail)
     hi = vsel(mandn(neg, act), x, hi);
     V step = vdiv(f, df), xn = vsub(x, step);
     M dfpos = vgt(df, zero);
-    V astep = vabs(step);
-    M conv = mand(dfpos, mor(vle(astep, vmul(rel, vabs(x))), vle(astep, abs_)));
+    V as = vabs(step);
+    M conv = mand(dfpos, mor(vle(as, vmul(rel, vabs(x))), vle(as, abs_)));
     res = vsel(mand(act, conv), xn, res);
     act = mandn(conv, act);
-    M inside = mand(vgt(xn, lo), vlt(xn, hi));
-    M bis = mor(mor(mnot(dfpos), mnot(inside)), vgt(vabs(vmul(vset(2.0), f)), vabs(vmul(s->dxold, df))));
-    V xb = vsel(bis, vmul(half, vadd(lo, hi)), xn);
+    M past = mandn(mand(vgt(xn, lo), vlt(xn, hi)), dfpos);
+    /* to near an end of the bracket (Newton lands on or past it, not twice in a row) */
+    M jump = mandn(s->jumped, past);
+    V xj = vsel(vge(xn, hi), vsub(hi, vmul(vset(0x1p-10), vsub(hi, x))), vadd(lo, vmul(vset(0x1p-10), vsub(x, lo))));
+    /* bisection */
+    M bis = mandn(jump, mor(mor(mnot(dfpos), past), vgt(vabs(vmul(vset(2.0), f)), vabs(vmul(s->dxold, df)))));
+    M newt = mandn(mor(jump, bis), act);
+    /* Newton: quadratic convergence ending below the tolerance returns the point after the step */
+    V p1 = s->p1, p2 = s->p2;
+    M quad = mand(newt, vle(vmul(vset(4.0), as), p1));
+    quad = mand(quad, vle(vmul(vmul(vset(4.0), vmul(as, as)), as), vmul(KN(fmax)(vmul(rel, vabs(xn)), abs_), vmul(p1, p1))));
+    res = vsel(quad, xn, res);
+    act = mandn(quad, act);
+    newt = mandn(quad, newt);
+    /* Newton: a steady linear shrink (a multiple root) extrapolated */
+    M lin = mand(newt, mand(vge(vmul(vset(2.0), as), p1), vlt(as, p1)));
+    V asp2 = vmul(as, p2);
+    lin = mand(lin, vle(vabs(vsub(asp2, vmul(p1, p1))), vmul(vset(0.125), asp2)));
+    if (many(lin)) {
+        V xm = vsub(x, vmul(step, vdiv(p1, vsub(p1, as))));
+        xm = vsel(vlt(xm, hi), xm, vsub(hi, vmul(vset(0x1p-6), vsub(hi, x))));
+        xm = vsel(vgt(xm, lo), xm, vadd(lo, vmul(vset(0x1p-6), vsub(x, lo))));
+        xn = vsel(lin, xm, xn);
+    }
+    M plain = mandn(lin, newt);
+    V xb = vsel(jump, xj, vsel(bis, vmul(half, vadd(lo, hi)), xn));
+    s->p2 = vsel(act, vsel(plain, p1, zero), p2);
+    s->p1 = vsel(act, vsel(plain, as, zero), p1);
+    s->jumped = mor(mand(act, jump), mandn(act, s->jumped));
     s->dxold = vsel(act, s->dx, s->dxold);
     V dx = vsel(act, vabs(vsub(xb, x)), s->dx);
     x = vsel(act, xb, x);
@@ -273,13 +304,23 @@ static void KN(stage_frame)(double in[13][W], int shape, double tol, lk_block *b
     V Bsx = vmul(sg, B0x), Bsy = vmul(sg, B0y), Bsz = vmul(sg, B0z);
     V rs = vmul(r, sg);
     umin = vmul(umin, sg), umax = vmul(umax, sg);
+    /* B0's in-plane coordinates and height taken on B0 and scaled after (exact), unless B0 is
+     * within 2^-400 of the centre: then on the scaled B0 */
     V wwx, wwy, wwz, nbx, nby, nbz;
+    KN(cross)(nx, ny, nz, B0x, B0y, B0z, &nbx, &nby, &nbz);
+    V b2x = vmul(KN(dot)(vx, vy, vz, nbx, nby, nbz), sg), b2y = vmul(vneg(KN(dot)(ux, uy, uz, nbx, nby, nbz)), sg);
+    V h0 = vmul(KN(dot)(nx, ny, nz, B0x, B0y, B0z), sg);
+    M late = mnot(vge(KN(max3)(B0x, B0y, B0z), vset(0x1p-400)));
+    if (many(mand(late, ok))) {
+        KN(cross)(nx, ny, nz, Bsx, Bsy, Bsz, &nbx, &nby, &nbz);
+        b2x = vsel(late, KN(dot)(vx, vy, vz, nbx, nby, nbz), b2x);
+        b2y = vsel(late, vneg(KN(dot)(ux, uy, uz, nbx, nby, nbz)), b2y);
+        h0 = vsel(late, KN(dot)(nx, ny, nz, Bsx, Bsy, Bsz), h0);
+    }
     KN(cross)(nx, ny, nz, Mx, My, Mz, &wwx, &wwy, &wwz);
-    KN(cross)(nx, ny, nz, Bsx, Bsy, Bsz, &nbx, &nby, &nbz);
     V m2x = KN(dot)(vx, vy, vz, wwx, wwy, wwz), m2y = vneg(KN(dot)(ux, uy, uz, wwx, wwy, wwz));
-    V b2x = KN(dot)(vx, vy, vz, nbx, nby, nbz), b2y = vneg(KN(dot)(ux, uy, uz, nbx, nby, nbz));
-    V a = KN(dot)(nx, ny, nz, Mx, My, Mz), h0 = KN(dot)(nx, ny, nz, Bsx, Bsy, Bsz);
-    V m0 = vsqrt(vadd(vmul(m2x, m2x), vmul(m2y, m2y)));
+    V a = KN(dot)(nx, ny, nz, Mx, My, Mz);
+    V mm = vadd(vmul(m2x, m2x), vmul(m2y, m2y)), m0 = vsqrt(mm);
     ok = mand(ok, vgt(m0, vset(CD_LC_PERP_ULPS * DBL_EPSILON))); /* perpendicular to the plane: scalar */
 
     KN(model) md;
@@ -290,7 +331,7 @@ static void KN(stage_frame)(double in[13][W], int shape, double tol, lk_block *b
     md.x1 = vsub(vmul(e2x, b2y), vmul(e2y, b2x));
     md.ax1 = vabs(md.x1);
     V c2 = vfma(e2x, b2x, vmul(e2y, b2y));
-    V us = vneg(vdiv(c2, m0));
+    V us = vdiv(vneg(vfma(m2x, b2x, vmul(m2y, b2y))), mm); /* -c2 / m0 with one division */
     M canon = vle(vabs(us), vset(4.0));
     V uO = vsel(canon, us, zero);
     md.c2 = vsel(canon, zero, c2);
@@ -305,7 +346,10 @@ static void KN(stage_frame)(double in[13][W], int shape, double tol, lk_block *b
     V mu = vfma(a, md.h, vmul(m0, md.c2));
     V rm0 = vmul(rs, m0);
     V blo = vsub(vneg(mu), rm0), bhi = vadd(vneg(mu), rm0);
-    M single = vle(vmul(rm0, m0), md.ax1);
+    V rm02 = vmul(rm0, m0);
+    M single = vle(rm02, md.ax1);
+    /* the Newton start of a single bracket: -mu / (1 - g), G linearised at x2 = 0 */
+    V x0 = vsel(single, vdiv(vmul(vneg(mu), md.ax1), vsub(md.ax1, rm02)), vset(NAN));
     V best = vset(INFINITY);
     M fail = mfalse();
     if (shape != LK_LINE) { /* the finite ends (offer_end), in the units of the core's range */
@@ -319,7 +363,7 @@ static void KN(stage_frame)(double in[13][W], int shape, double tol, lk_block *b
         }
     }
     const V *cols[LK_NF] = {&md.r, &md.a, &md.m0, &md.x1, &md.ax1, &md.c2, &md.h, &md.k, &md.rr2, &md.dfc,
-                            &up, &UP, &blo, &bhi, &smin, &smax, &best};
+                            &up, &UP, &blo, &bhi, &x0, &smin, &smax, &best};
     for (int f = 0; f < LK_NF; f++) vst(&b->f[f][base], *cols[f]);
     unsigned okb = mbits(ok), singleb = mbits(single), failb = mbits(fail);
     for (int l = 0; l < W; l++) {
@@ -456,7 +500,7 @@ static void KN(stage_branches)(lk_block *b, const int *e, int n, int vector_cbrt
 }
 
 /* Stage 3, the brackets k[0..n-1] of the item list (n <= LK_CHAINS * W; the rest of k repeats
- * k[0]): the root of each (cdist__root_newton) and the squared distance there (offer_model), to
+ * k[0]): the root of each (cdist__root_newton_accel) and the squared distance there (offer_model), to
  * b->item_d2. The Newton iteration is a chain of dependent square roots and divisions:
  * LK_CHAINS groups of W brackets iterate side by side to keep the units busy. */
 static void KN(stage_newton)(lk_block *b, const int *k, int n)
@@ -466,14 +510,14 @@ static void KN(stage_newton)(lk_block *b, const int *k, int n)
     M fail[LK_CHAINS];
     int e[LK_CHAINS][W];
     for (int c = 0; c < LK_CHAINS; c++) {
-        double lo[W], hi[W], act[W];
+        double lo[W], hi[W], x0[W], act[W];
         for (int l = 0; l < W; l++) {
             int j = k[c * W + l];
-            e[c][l] = b->item_entry[j], lo[l] = b->item_lo[j], hi[l] = b->item_hi[j];
+            e[c][l] = b->item_entry[j], lo[l] = b->item_lo[j], hi[l] = b->item_hi[j], x0[l] = b->item_x0[j];
             act[l] = c * W + l < n ? 1.0 : 0.0;
         }
         KN(load_model)(b, e[c], &md[c]);
-        s[c] = KN(newton_start)(vld(lo), vld(hi), vgt(vld(act), vset(0.0)));
+        s[c] = KN(newton_start)(vld(lo), vld(hi), vld(x0), vgt(vld(act), vset(0.0)));
         fail[c] = mfalse();
     }
     for (int it = 0; it < LK_LANE_ITER; it++) {
@@ -487,13 +531,16 @@ static void KN(stage_newton)(lk_block *b, const int *k, int n)
     for (int c = 0; c < LK_CHAINS; c++) {
         unsigned rest = mbits(mandn(fail[c], s[c].act));
         if (!rest) continue;
-        double st[5][W];
-        vst(st[0], s[c].x), vst(st[1], s[c].lo), vst(st[2], s[c].hi), vst(st[3], s[c].dx), vst(st[4], s[c].dxold);
+        double st[LK_NS][W];
+        vst(st[LK_S_X], s[c].x), vst(st[LK_S_LO], s[c].lo), vst(st[LK_S_HI], s[c].hi);
+        vst(st[LK_S_DX], s[c].dx), vst(st[LK_S_DXOLD], s[c].dxold);
+        vst(st[LK_S_P1], s[c].p1), vst(st[LK_S_P2], s[c].p2);
+        vst(st[LK_S_JUMPED], vsel(s[c].jumped, vset(1.0), vset(0.0)));
         for (int l = 0; l < W; l++) {
             if (!(rest >> l & 1)) continue;
             int j = b->n_long++;
             b->long_item[j] = k[c * W + l];
-            for (int f = 0; f < 5; f++) b->long_st[f][j] = st[f][l];
+            for (int f = 0; f < LK_NS; f++) b->long_st[f][j] = st[f][l];
         }
     }
     for (int c = 0; c < LK_CHAINS; c++) {
@@ -510,7 +557,7 @@ static void KN(stage_newton)(lk_block *b, const int *k, int n)
 
 /* Stage 3b, the long brackets j[0..n-1] (n <= W; the rest of j repeats j[0]) that stage_newton
  * left: their iterations go on together up to CD_ROOT_MAX_ITER in all, where
- * cdist__root_newton returns its last x.
+ * cdist__root_newton_accel returns its last x.
  * The screen: a root that took that long and is not at an end of the range (a ray's start, a
  * segment's end: the bracket bisected down to the end where F' does not vanish, the end
  * candidate decides) is a nearly multiple root of F' (a tangent line), where the solvers stop
@@ -519,16 +566,18 @@ static void KN(stage_newton)(lk_block *b, const int *k, int n)
 static void KN(stage_long)(lk_block *b, const int *j, int n)
 {
     int e[W];
-    double st[5][W], act[W];
+    double st[LK_NS][W], act[W];
     for (int l = 0; l < W; l++) {
         e[l] = b->item_entry[b->long_item[j[l]]];
-        for (int f = 0; f < 5; f++) st[f][l] = b->long_st[f][j[l]];
+        for (int f = 0; f < LK_NS; f++) st[f][l] = b->long_st[f][j[l]];
         act[l] = l < n ? 1.0 : 0.0;
     }
     KN(model) md;
     KN(load_model)(b, e, &md);
     KN(newton) s;
-    s.x = vld(st[0]), s.lo = vld(st[1]), s.hi = vld(st[2]), s.dx = vld(st[3]), s.dxold = vld(st[4]);
+    s.x = vld(st[LK_S_X]), s.lo = vld(st[LK_S_LO]), s.hi = vld(st[LK_S_HI]), s.dx = vld(st[LK_S_DX]);
+    s.dxold = vld(st[LK_S_DXOLD]), s.p1 = vld(st[LK_S_P1]), s.p2 = vld(st[LK_S_P2]);
+    s.jumped = vgt(vld(st[LK_S_JUMPED]), vset(0.0));
     s.res = s.x;
     s.act = vgt(vld(act), vset(0.0));
     M fail = mfalse();
@@ -618,7 +667,7 @@ static uint64_t KN(block)(const cdist__job *job, int shape, double tol, size_t l
             double blo = cdist__fmax(b.br[j][0][i], b.f[LK_F_SMIN][i]);
             double bhi = cdist__fmin(b.br[j][1][i], b.f[LK_F_SMAX][i]);
             if (blo > bhi) continue;
-            b.item_entry[ni] = i, b.item_lo[ni] = blo, b.item_hi[ni] = bhi;
+            b.item_entry[ni] = i, b.item_lo[ni] = blo, b.item_hi[ni] = bhi, b.item_x0[ni] = b.f[LK_F_X0][i];
             ni++;
         }
     }
