@@ -116,22 +116,24 @@ CD_INLINE void KN(newton_step)(const KN(model) *m, KN(newton) *s, M *fail)
     act = mandn(conv, act);
     M past = mandn(mand(vgt(xn, lo), vlt(xn, hi)), dfpos);
     /* to near an end of the bracket (Newton lands on or past it, not twice in a row) */
-    M jump = mandn(s->jumped, past);
-    V xj = vsel(vge(xn, hi), vsub(hi, vmul(vset(0x1p-10), vsub(hi, x))), vadd(lo, vmul(vset(0x1p-10), vsub(x, lo))));
+    M jump = mand(act, mandn(s->jumped, past));
     /* bisection */
     M bis = mandn(jump, mor(mor(mnot(dfpos), past), vgt(vabs(vmul(vset(2.0), f)), vabs(vmul(s->dxold, df)))));
     M newt = mandn(mor(jump, bis), act);
     /* Newton: quadratic convergence ending below the tolerance returns the point after the step */
     V p1 = s->p1, p2 = s->p2;
     M quad = mand(newt, vle(vmul(vset(4.0), as), p1));
-    quad = mand(quad, vle(vmul(vmul(vset(4.0), vmul(as, as)), as), vmul(KN(fmax)(vmul(rel, vabs(xn)), abs_), vmul(p1, p1))));
+    /* cdist__fmax(rel |xn|, abs) is vmax's a > b ? a : b, abs_ being a number */
+    quad = mand(quad, vle(vmul(vmul(vset(4.0), vmul(as, as)), as), vmul(vmax(vmul(rel, vabs(xn)), abs_), vmul(p1, p1))));
     res = vsel(quad, xn, res);
     act = mandn(quad, act);
     newt = mandn(quad, newt);
     /* Newton: a steady linear shrink (a multiple root) extrapolated */
     M lin = mand(newt, mand(vge(vmul(vset(2.0), as), p1), vlt(as, p1)));
-    V asp2 = vmul(as, p2);
-    lin = mand(lin, vle(vabs(vsub(asp2, vmul(p1, p1))), vmul(vset(0.125), asp2)));
+    if (many(lin)) {
+        V asp2 = vmul(as, p2);
+        lin = mand(lin, vle(vabs(vsub(asp2, vmul(p1, p1))), vmul(vset(0.125), asp2)));
+    }
     if (many(lin)) {
         V xm = vsub(x, vmul(step, vdiv(p1, vsub(p1, as))));
         xm = vsel(vlt(xm, hi), xm, vsub(hi, vmul(vset(0x1p-6), vsub(hi, x))));
@@ -139,7 +141,9 @@ CD_INLINE void KN(newton_step)(const KN(model) *m, KN(newton) *s, M *fail)
         xn = vsel(lin, xm, xn);
     }
     M plain = mandn(lin, newt);
-    V xb = vsel(jump, xj, vsel(bis, vmul(half, vadd(lo, hi)), xn));
+    V xb = vsel(bis, vmul(half, vadd(lo, hi)), xn);
+    if (many(jump))
+        xb = vsel(jump, vsel(vge(xn, hi), vsub(hi, vmul(vset(0x1p-10), vsub(hi, x))), vadd(lo, vmul(vset(0x1p-10), vsub(x, lo)))), xb);
     s->p2 = vsel(act, vsel(plain, p1, zero), p2);
     s->p1 = vsel(act, vsel(plain, as, zero), p1);
     s->jumped = mor(mand(act, jump), mandn(act, s->jumped));
