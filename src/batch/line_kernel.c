@@ -205,11 +205,13 @@ LK_TARGET_PUSH("avx512f,fma")
 #define many(m) ((m) != 0)
 #define mbits(m) ((unsigned)(m))
 #define vload_objects batch_load8
+#define vcmp_mask(m, a, b, p) _mm512_mask_cmp_pd_mask(m, a, b, p)
 #define vfrexp_m(x) _mm512_getmant_pd(x, _MM_MANT_NORM_p5_1, _MM_MANT_SIGN_zero)
 #define vfrexp_e(x) _mm512_add_pd(_mm512_getexp_pd(x), _mm512_set1_pd(1.0))
 #define vtrunc(x) _mm512_roundscale_pd(x, _MM_FROUND_TO_ZERO | _MM_FROUND_NO_EXC)
 #define vscale2(y, q) _mm512_scalef_pd(y, q)
 #include "line_kernel_body.h"
+#undef vcmp_mask
 #undef vload_objects
 #undef vfrexp_m
 #undef vfrexp_e

@@ -16,6 +16,23 @@
  * model; 2 (the entries where F' is not monotone) the branch brackets; 3 (every bracket) Newton;
  * 4 (all entries) the distance. */
 
+/* Comparisons under a mask: m and (a op b); vngt_m: m and !(a > b). */
+#ifdef vcmp_mask
+#define veq_m(m, a, b) vcmp_mask(m, a, b, _CMP_EQ_OQ)
+#define vlt_m(m, a, b) vcmp_mask(m, a, b, _CMP_LT_OQ)
+#define vgt_m(m, a, b) vcmp_mask(m, a, b, _CMP_GT_OQ)
+#define vle_m(m, a, b) vcmp_mask(m, a, b, _CMP_LE_OQ)
+#define vge_m(m, a, b) vcmp_mask(m, a, b, _CMP_GE_OQ)
+#define vngt_m(m, a, b) vcmp_mask(m, a, b, _CMP_NGT_UQ)
+#else
+#define veq_m(m, a, b) mand(m, veq(a, b))
+#define vlt_m(m, a, b) mand(m, vlt(a, b))
+#define vgt_m(m, a, b) mand(m, vgt(a, b))
+#define vle_m(m, a, b) mand(m, vle(a, b))
+#define vge_m(m, a, b) mand(m, vge(a, b))
+#define vngt_m(m, a, b) mandn(vgt(a, b), m)
+#endif
+
 /* |a| <= CD_MAX_ABS for each component (false for NaN and infinities) */
 CD_INLINE M KN(in_range)(V x, V y, V z)
 {
@@ -90,7 +107,9 @@ CD_INLINE KN(newton) KN(newton_start)(V lo, V hi, V x0, M act)
 
 /* One iteration in the lanes of s->act, every branch of cdist__root_newton_accel as a select; a
  * lane that stops writes s->res and leaves s->act. Lanes meeting a branch the kernel does not
- * take (fdf instead of fdf_scaled, NaN) are added to *fail. */
+ * take (fdf instead of fdf_scaled, NaN) are added to *fail. Conditions are taken under the
+ * mask of the lanes they concern (vlt_m etc.: one instruction on AVX-512, whose mask logic is a
+ * bottleneck here). */
 CD_INLINE void KN(newton_step)(const KN(model) *m, KN(newton) *s, M *fail)
 {
     const V rel = vset(CD_ROOT_REL_ULPS * DBL_EPSILON), abs_ = vset(CD_ROOT_ABS), half = vset(0.5), zero = vset(0.0);
@@ -99,40 +118,42 @@ CD_INLINE void KN(newton_step)(const KN(model) *m, KN(newton) *s, M *fail)
     V df;
     M rok;
     V f = KN(fdf_scaled)(m, x, &df, &rok);
-    M bad = mor(mnot(rok), vne(f, f));
-    *fail = mor(*fail, mand(act, bad));
-    act = mandn(bad, act);
-    M z = veq(f, zero);
-    res = vsel(mand(act, z), x, res);
+    M good = veq_m(rok, f, f); /* fdf_scaled's own branch, and f not NaN */
+    *fail = mor(*fail, mandn(good, act));
+    act = mand(act, good);
+    M z = veq_m(act, f, zero);
+    res = vsel(z, x, res);
     act = mandn(z, act);
-    M neg = vlt(f, zero);
-    lo = vsel(mand(act, neg), x, lo);
-    hi = vsel(mandn(neg, act), x, hi);
+    /* f is a number in the lanes of act: f >= 0 is !(f < 0) */
+    lo = vsel(vlt_m(act, f, zero), x, lo);
+    hi = vsel(vgt_m(act, f, zero), x, hi);
     V step = vdiv(f, df), xn = vsub(x, step);
     M dfpos = vgt(df, zero);
     V as = vabs(step);
-    M conv = mand(dfpos, mor(vle(as, vmul(rel, vabs(x))), vle(as, abs_)));
-    res = vsel(mand(act, conv), xn, res);
+    M conv = mor(vle_m(dfpos, as, vmul(rel, vabs(x))), vle_m(dfpos, as, abs_));
+    conv = mand(act, conv);
+    res = vsel(conv, xn, res);
     act = mandn(conv, act);
-    M past = mandn(mand(vgt(xn, lo), vlt(xn, hi)), dfpos);
+    M past = mandn(vlt_m(vgt(xn, lo), xn, hi), dfpos);
     /* to near an end of the bracket (Newton lands on or past it, not twice in a row) */
     M jump = mand(act, mandn(s->jumped, past));
-    /* bisection */
-    M bis = mandn(jump, mor(mor(mnot(dfpos), past), vgt(vabs(vmul(vset(2.0), f)), vabs(vmul(s->dxold, df)))));
-    M newt = mandn(mor(jump, bis), act);
+    /* bisection: !(df > 0), past, or |2 f| > |dxold df| (and no jump) */
+    M newt = vngt_m(mandn(past, mand(act, dfpos)), vabs(vmul(vset(2.0), f)), vabs(vmul(s->dxold, df)));
+    newt = mandn(jump, newt);
+    M bis = mandn(mor(jump, newt), act);
     /* Newton: quadratic convergence ending below the tolerance returns the point after the step */
     V p1 = s->p1, p2 = s->p2;
-    M quad = mand(newt, vle(vmul(vset(4.0), as), p1));
     /* cdist__fmax(rel |xn|, abs) is vmax's a > b ? a : b, abs_ being a number */
-    quad = mand(quad, vle(vmul(vmul(vset(4.0), vmul(as, as)), as), vmul(vmax(vmul(rel, vabs(xn)), abs_), vmul(p1, p1))));
+    M quad = vle_m(vle_m(newt, vmul(vset(4.0), as), p1), vmul(vmul(vset(4.0), vmul(as, as)), as),
+                    vmul(vmax(vmul(rel, vabs(xn)), abs_), vmul(p1, p1)));
     res = vsel(quad, xn, res);
     act = mandn(quad, act);
     newt = mandn(quad, newt);
     /* Newton: a steady linear shrink (a multiple root) extrapolated */
-    M lin = mand(newt, mand(vge(vmul(vset(2.0), as), p1), vlt(as, p1)));
+    M lin = vlt_m(vge_m(newt, vmul(vset(2.0), as), p1), as, p1);
     if (many(lin)) {
         V asp2 = vmul(as, p2);
-        lin = mand(lin, vle(vabs(vsub(asp2, vmul(p1, p1))), vmul(vset(0.125), asp2)));
+        lin = vle_m(lin, vabs(vsub(asp2, vmul(p1, p1))), vmul(vset(0.125), asp2));
     }
     if (many(lin)) {
         V xm = vsub(x, vmul(step, vdiv(p1, vsub(p1, as))));
@@ -140,18 +161,19 @@ CD_INLINE void KN(newton_step)(const KN(model) *m, KN(newton) *s, M *fail)
         xm = vsel(vgt(xm, lo), xm, vadd(lo, vmul(vset(0x1p-6), vsub(x, lo))));
         xn = vsel(lin, xm, xn);
     }
-    M plain = mandn(lin, newt);
     V xb = vsel(bis, vmul(half, vadd(lo, hi)), xn);
     if (many(jump))
         xb = vsel(jump, vsel(vge(xn, hi), vsub(hi, vmul(vset(0x1p-10), vsub(hi, x))), vadd(lo, vmul(vset(0x1p-10), vsub(x, lo)))), xb);
-    s->p2 = vsel(act, vsel(plain, p1, zero), p2);
-    s->p1 = vsel(act, vsel(plain, as, zero), p1);
-    s->jumped = mor(mand(act, jump), mandn(act, s->jumped));
+    /* the step lengths: kept after a plain Newton step, cleared after the others */
+    M plain = mandn(lin, newt);
+    s->p2 = vsel(plain, p1, vsel(act, zero, p2));
+    s->p1 = vsel(plain, as, vsel(act, zero, p1));
+    s->jumped = mor(jump, mandn(act, s->jumped));
     s->dxold = vsel(act, s->dx, s->dxold);
     V dx = vsel(act, vabs(vsub(xb, x)), s->dx);
     x = vsel(act, xb, x);
-    M stop = mor(vle(dx, vmul(rel, vabs(x))), mnot(vgt(vsub(hi, lo), abs_)));
-    res = vsel(mand(act, stop), x, res);
+    M stop = mor(vle_m(act, dx, vmul(rel, vabs(x))), vngt_m(act, vsub(hi, lo), abs_));
+    res = vsel(stop, x, res);
     act = mandn(stop, act);
     s->x = x, s->lo = lo, s->hi = hi, s->dx = dx, s->res = res, s->act = act;
 }
@@ -707,3 +729,10 @@ static uint64_t KN(block)(const cdist__job *job, int shape, double tol, size_t l
     }
     return left;
 }
+
+#undef veq_m
+#undef vlt_m
+#undef vgt_m
+#undef vle_m
+#undef vge_m
+#undef vngt_m
