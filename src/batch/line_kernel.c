@@ -24,9 +24,9 @@ _Static_assert(offsetof(cdist_circle, normal) == 24 && offsetof(cdist_circle, ra
 
 enum { LK_LINE = 0, LK_RAY = 1, LK_SEGMENT = 2 };
 
-/* Newton iterations the lanes of a bracket group take together (a random line converges in
- * about 6); the brackets that need more go on together in a second pass (stage_long, where the
- * screen of nearly multiple roots applies). */
+/* Newton iterations the lanes of a bracket group take together (a random line's bracket takes
+ * 2 to 6, a root at a ray's start about 10); the brackets that need more go on together in a
+ * second pass (stage_long, where the screen of nearly multiple roots applies). */
 #define LK_LANE_ITER 12
 /* Groups of W brackets iterating side by side in the vector kernels (1, 2 and 4 measured: 2
  * fastest). */
