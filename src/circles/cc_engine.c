@@ -551,12 +551,27 @@ static double window_hull_bound(const cdist__cc_frame *f, double t, double h)
     return arc_hull_bound(f, a.c, a.s, b.c, b.s, fmin(a.F, b.F), 0.5 / ch);
 }
 
+/* F on a window around tc, whose cosine and sine are known: cos and sin of t by the addition
+ * theorem with small_sincos of the offset (no transcendental call per step). */
+typedef struct cc_window {
+    const cdist__cc_frame *f;
+    double tc, cc, sc;
+} cc_window;
+
 static double cc_F_at(const void *ctx, double t)
 {
-    double c, s;
-    sincos(t, &s, &c);
+    const cc_window *wd = ctx;
+    double h = t - wd->tc, c, s;
+    if (fabs(h) <= 0.1) {
+        double ch, sh;
+        small_sincos(h, &sh, &ch);
+        c = wd->cc * ch - wd->sc * sh;
+        s = wd->sc * ch + wd->cc * sh;
+    } else {
+        sincos(t, &s, &c);
+    }
     cdist__cc_pt p;
-    cdist__cc_eval_lean(ctx, t, c, s, &p);
+    cdist__cc_eval_lean(wd->f, t, c, s, &p);
     return p.F;
 }
 
@@ -565,7 +580,9 @@ static double cc_F_at(const void *ctx, double t)
  * noise, and near a minimum it is smooth at the scale of the bracket (parabolic steps). */
 static void min_offer(const cdist__cc_frame *f, cdist__cc_sink *k, double lo, double hi)
 {
-    double t = cdist__min_brent(cc_F_at, f, lo, hi, CD_ROOT_REL_ULPS * DBL_EPSILON, CD_ROOT_ABS, CC_MIN_ITER, NULL);
+    cc_window wd = {f, 0.5 * (lo + hi), 0, 0};
+    sincos(wd.tc, &wd.sc, &wd.cc);
+    double t = cdist__min_brent(cc_F_at, &wd, lo, hi, CD_ROOT_REL_ULPS * DBL_EPSILON, CD_ROOT_ABS, CC_MIN_ITER, NULL);
     if (t == t) cdist__cc_pair_at(f, t, k);
 }
 
