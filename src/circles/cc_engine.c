@@ -19,12 +19,17 @@
  *
  * Root bounding (no polynomial is solved): H's Fourier coefficients c_k are formed by exact
  * products of the coefficient arrays of Q, sigma and w.w', which gives rigorous bounds
- * M_j = sum |k|^j |c_k| >= |H^(j)|. [-pi, pi) is split into 8 intervals and each interval is
+ * M_j = sum |k|^j |c_k| >= |H^(j)|. [-pi, pi) is split into 16 intervals and each interval is
  * bisected until it is certified to hold
  *   - no root of H: from each end over half the interval, the Taylor lower bound
  *     |H(a)| - |H'(a)| x - M2 x^2/2 (or, second order, with H''(a) and M3 x^3/6) stays positive,
  *     or |H(a)| + |H(b)| > M1 (b - a); or
- *   - at most one root: H' keeps its sign (the same tests one derivative up),
+ *   - at most one root: H' keeps its sign (the same tests one derivative up); or
+ *   - no critical point of F: F' keeps a sign certified by its end values and a bound of F''
+ *     (monotone()); or at most one, a minimum: F'' > 0 certified by its end values and a bound
+ *     of F''' (convex()). These two read the true F and answer where H has a root cluster that
+ *     is no minimum of F (H = (rho sigma - s w.w')(rho sigma + s w.w'): both factors vanishing
+ *     nearby, e.g. at near-touching linked circles),
  * with every value reduced by a first-order bound of its rounding error, or until it is
  * narrower than 2^-30 rad. Between two consecutive partition points F' then changes sign at most
  * once, so every local minimum of F is bracketed by a (-,+) sign pair of the true F' at
@@ -36,9 +41,13 @@
  * of F hidden inside one would lie within 2^-30 rad. A concave kink of F (A crossing B's axis
  * transversally: F = smooth - 2 s |linear|) is never a local minimum; when A is tangent to B's
  * axis, F is C^1 and the minimum there is bracketed like any other.
- * Pruning: the distance sqrt(F) is R-Lipschitz in t, so an interval whose lower bound
- * (d(a) + d(b) - R (b - a)) / 2 exceeds an attained distance (a sample, a refined minimum)
- * cannot hold the global minimum and is dropped (not in the critical-angle mode).
+ * Pruning (robust mode, and the minima mode of circle-disk): the distance sqrt(F) is R-Lipschitz
+ * in t, so an interval whose lower bound (d(a) + d(b) - R (b - a)) / 2 exceeds an attained
+ * distance (a sample, a refined minimum) by more than a tie cannot hold a closest pair and is
+ * dropped; so is one whose concave hull bound does (hull_bound(): F extends to a concave
+ * function of (cos t, sin t), so on an arc it is at least min(F(a), F(b), G(T)), T the
+ * tangents' intersection; the gap to min F shrinks as the square of the width). Not in the
+ * critical-angle mode, which reports every critical angle.
  * Where certification is impossible (it is NOT claimed there):
  *   - H vanishing to rounding (coaxial circles, constant F): when the samples show F constant,
  *     a sample is the answer; else F' is sampled on 512 points.
