@@ -77,6 +77,11 @@ static inline double cdist__wrap_angle(double t)
 CD_INLINE double cdist__fmax(double a, double b) { return a > b ? a : (b == b ? b : a); }
 CD_INLINE double cdist__fmin(double a, double b) { return a < b ? a : (b == b ? b : a); }
 
+/* sqrt(a^2 + b^2) without hypot's guards against overflow and underflow (hypot is a slow libm
+ * call): for the values of a problem scaled to L ~ 1, where a component below ~1e-154 (which
+ * squares to 0) is negligible against the tolerances it is compared with. */
+CD_INLINE double cdist__norm2(double a, double b) { return sqrt(a * a + b * b); }
+
 /* atan(y / x) for 0 <= y <= x, x > 0: fdlibm's s_atan.c (Sun Microsystems, 1993; "permission
  * to use, copy, modify, and distribute this software is freely granted, provided that this
  * notice is preserved") restricted to that range: reduction to |t| < 7/16 and an odd

@@ -34,7 +34,7 @@ static int axis_crossings(const cdist__cc_frame *f, double *t)
     double pa = ax * ex + ay * ey, pb = bx * ex + by * ey, pg = gx * ex + gy * ey;
     double amp = hypot(pa, pb);
     if (!(amp > 0) || fabs(pg) > amp * (1 + tol)) return 0;
-    double phi = atan2(pb, pa), dlt = acos(fmax(-1.0, fmin(1.0, pg / amp)));
+    double phi = atan2(pb, pa), dlt = acos(cdist__fmax(-1.0, cdist__fmin(1.0, pg / amp)));
     int n = 0;
     double cand[2] = {phi + dlt, phi - dlt};
     for (int i = 0; i < (dlt == 0 ? 1 : 2); i++) {
@@ -54,7 +54,7 @@ int cdist__circle_circle_critical(cdist_query *q, const cdist__circle *c0, const
     vec3 C = v_sub(c1->c, c0->c);
     /* Angles do not change under scaling: work at L ~ 1 (see cc_robust). */
     int ex;
-    frexp(fmax(fmax(c0->r, c1->r), v_norm(C)), &ex);
+    frexp(cdist__fmax(cdist__fmax(c0->r, c1->r), v_norm(C)), &ex);
     double sc = ldexp(1.0, -ex);
     cdist__circle a = *c0, b = *c1;
     a.c = v3(0, 0, 0);
@@ -79,8 +79,8 @@ int cdist__circle_circle_critical(cdist_query *q, const cdist__circle *c0, const
             double c, s;
             sincos(tp[i], &s, &c);
             cdist__cc_eval_lean(&f, tp[i], c, s, &p);
-            dlo = fmin(dlo, p.d);
-            dhi = fmax(dhi, p.d);
+            dlo = cdist__fmin(dlo, p.d);
+            dhi = cdist__fmax(dhi, p.d);
             if (i < cap) theta0[i] = tp[i];
         }
         if (dhi - dlo <= CC_EQUI_ULPS * DBL_EPSILON * f.L) return -1;
@@ -88,7 +88,7 @@ int cdist__circle_circle_critical(cdist_query *q, const cdist__circle *c0, const
     }
     cdist__cc_scan(&f, &k, &Fmax);
     int n = k.count < cap ? k.count : cap;
-    double L = fmax(fmax(c0->r, c1->r), v_norm(C));
+    double L = cdist__fmax(cdist__fmax(c0->r, c1->r), v_norm(C));
     /* Constant F (also when F' never changes sign: a periodic F that is not constant has a
      * bracketed minimum and maximum). */
     double tol = CC_EQUI_ULPS * DBL_EPSILON * L;

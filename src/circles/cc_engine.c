@@ -223,7 +223,7 @@ void cdist__cc_frame_init(cdist__cc_frame *f, const cdist__circle *A, vec3 C, co
     /* H'' has the terms of H' with one more derivative (factors <= 4 on each): */
     f->eH2 = 4 * (f->eH1 + f->eH);
     f->epsL = eps * (f->R + Lc);
-    f->L = fmax(fmax(f->R, f->s), Lc);
+    f->L = cdist__fmax(cdist__fmax(f->R, f->s), Lc);
     f->Lw = 2 * f->R + Lc;
     f->W1 = W1;
     f->nga = sqrt(gg);
@@ -331,7 +331,7 @@ static double refine(const cdist__cc_frame *f, const cdist__cc_pt *a, const cdis
         else hi = x;
         double step = F1 / F2;
         /* Converged: the Newton step is below the resolution of x. */
-        if (F2 > 0 && fabs(step) <= 2 * DBL_EPSILON * fmax(1.0, fabs(x))) return x;
+        if (F2 > 0 && fabs(step) <= 2 * DBL_EPSILON * cdist__fmax(1.0, fabs(x))) return x;
         double xn = x - step;
         int newton = 1;
         if (!(F2 > 0) || !(xn > lo && xn < hi) || fabs(2 * (x - xn)) > dxold) {
@@ -427,7 +427,7 @@ static int monotone(const cdist__cc_frame *f, cdist__cc_pt *a, cdist__cc_pt *b)
     double A = fabs(a->F1) - a->eF1, B = fabs(b->F1) - b->eF1;
     if (!(A > 0 && B > 0)) return 0;
     double w = b->t - a->t, W1 = f->W1;
-    double rlo = 0.5 * (a->rho + b->rho - W1 * w), rhi = fmax(a->rho, b->rho) + 0.5 * W1 * w;
+    double rlo = 0.5 * (a->rho + b->rho - W1 * w), rhi = cdist__fmax(a->rho, b->rho) + 0.5 * W1 * w;
     if (!(rlo > 0)) return 0;
     double M = W1 * W1 + (rhi + f->s) * (rhi * W1 + 2 * W1 * W1) / rlo + f->Hh * (2 * f->Hh + f->Hc0);
     return A + B > M * w * (1 + 1e-12);
@@ -445,12 +445,12 @@ static int convex(const cdist__cc_frame *f, cdist__cc_pt *a, cdist__cc_pt *b)
     double A = a->F2 - a->eF2, B = b->F2 - b->eF2;
     if (!(A > 0 && B > 0)) return 0;
     double w = b->t - a->t, W1 = f->W1;
-    double rlo = 0.5 * (a->rho + b->rho - W1 * w), rhi = fmax(a->rho, b->rho) + 0.5 * W1 * w;
+    double rlo = 0.5 * (a->rho + b->rho - W1 * w), rhi = cdist__fmax(a->rho, b->rho) + 0.5 * W1 * w;
     if (!(rlo > 0)) return 0;
     double B2 = (rhi * W1 + 2 * W1 * W1) / rlo;
     double B3 = (3 * W1 * W1 + rhi * W1 + 3 * W1 * B2) / rlo;
     double M3 = 3 * W1 * B2 + (rhi + f->s) * B3 + f->Hh * (4 * f->Hh + f->Hc0);
-    return fmin(A, B) > 0.5 * M3 * w * (1 + 1e-12);
+    return cdist__fmin(A, B) > 0.5 * M3 * w * (1 + 1e-12);
 }
 
 #define POS(x) ((x) > 0 ? (x) : 0.0)
@@ -539,13 +539,13 @@ static double arc_hull_bound(const cdist__cc_frame *f, double ca, double sa, dou
     double GT = v.F - R2 * tan2;
     double dw = 16 * DBL_EPSILON * f->Lw, dT = sqrt(v.F) + f->Lw;
     double err = 4 * dT * dw + 16 * DBL_EPSILON * (v.F + R2 * tan2 + f->Lw * f->Lw);
-    return fmin(Fmin_ends, GT) - err;
+    return cdist__fmin(Fmin_ends, GT) - err;
 }
 
 /* The bound on an interval of the subdivision at `level`. */
 static double hull_bound(const cdist__cc_frame *f, const cdist__cc_pt *a, const cdist__cc_pt *b, int level)
 {
-    return arc_hull_bound(f, a->c, a->s, b->c, b->s, fmin(a->F, b->F), half_sec[hs_index(level)]);
+    return arc_hull_bound(f, a->c, a->s, b->c, b->s, cdist__fmin(a->F, b->F), half_sec[hs_index(level)]);
 }
 
 /* The bound on the window [t - h, t + h] (h <= 0.1) around a near-crossing. */
@@ -557,7 +557,7 @@ static double window_hull_bound(const cdist__cc_frame *f, double t, double h)
     cdist__cc_pt a, b;
     cdist__cc_eval_lean(f, t - h, ct * ch + st * sh, st * ch - ct * sh, &a);
     cdist__cc_eval_lean(f, t + h, ct * ch - st * sh, st * ch + ct * sh, &b);
-    return arc_hull_bound(f, a.c, a.s, b.c, b.s, fmin(a.F, b.F), 0.5 / ch);
+    return arc_hull_bound(f, a.c, a.s, b.c, b.s, cdist__fmin(a.F, b.F), 0.5 / ch);
 }
 
 /* F on a window around tc, whose cosine and sine are known: cos and sin of t by the addition
@@ -672,7 +672,7 @@ static double kink_core(const cdist__cc_frame *f, double t)
     cdist__ring_val v;
     cdist__ring_eval(&f->rg, f->s, c, s, 0, &v);
     double r = sqrt(v.rho / f->L);
-    double core = fmin(0.05, 1e3 * r + 1e-12);
+    double core = cdist__fmin(0.05, 1e3 * r + 1e-12);
     /* A tangent to B's axis keeps rho tiny over a wider window (rho ~ rho0 + k x^2 / 2), where H
      * stays below its rounding too: widen the core (doubling) while rho at both of its ends is
      * still below the near-crossing threshold. */
@@ -683,8 +683,8 @@ static double kink_core(const cdist__cc_frame *f, double t)
         cdist__ring_val lo, hi;
         cdist__ring_eval(&f->rg, f->s, c * ch + s * sh, s * ch - c * sh, 0, &lo);
         cdist__ring_eval(&f->rg, f->s, c * ch - s * sh, s * ch + c * sh, 0, &hi);
-        if (fmax(lo.rho, hi.rho) > thr) break;
-        core = fmin(0.05, 2 * core);
+        if (cdist__fmax(lo.rho, hi.rho) > thr) break;
+        core = cdist__fmin(0.05, 2 * core);
     }
     return core;
 }
@@ -701,7 +701,7 @@ typedef struct cc_deferred {
 
 static void deferred_offer(const cdist__cc_frame *f, cdist__cc_sink *k, const cc_deferred *df)
 {
-    double dbest = fmin(sqrt(k->Fmin), k->dmin);
+    double dbest = cdist__fmin(sqrt(k->Fmin), k->dmin);
     double tie = CD_TIE_ULPS * DBL_EPSILON * f->L + 8 * DBL_EPSILON * (f->L + dbest);
     for (int i = 0; i < df->n; i++)
         if (df->d[i] - f->R * df->hw[i] <= dbest + tie) min_offer(f, k, df->t[i] - df->hw[i], df->t[i] + df->hw[i]);
@@ -720,7 +720,7 @@ static void scan_kink(const cdist__cc_frame *f, cdist__cc_sink *k, double t, dou
      * subdivision covers F (overlapping it a little). */
     int j0 = 0, j1 = NG;
     while (j0 < NG - 1 && ldexp(0.1, -j0) > 2 * core) j0++;
-    double res = 4 * DBL_EPSILON * fmax(1.0, fabs(t));
+    double res = 4 * DBL_EPSILON * cdist__fmax(1.0, fabs(t));
     while (j1 > j0 + 1 && ldexp(0.1, -(j1 - 1)) < res) j1--;
     for (int side = -1; side <= 1; side += 2)
         for (int jj = j0; jj < j1; jj++) {
@@ -744,7 +744,7 @@ static void scan_kink(const cdist__cc_frame *f, cdist__cc_sink *k, double t, dou
     if (!k->best) return;
     /* Each side of the crossing separately (a minimum on either side: symmetric
      * configurations), over the core at least. */
-    double hw = fmax(1e-3, 2 * core);
+    double hw = cdist__fmax(1e-3, 2 * core);
     cdist__cc_pt p;
     cdist__cc_eval_lean(f, t, ct, st, &p);
     for (int side = -1; side <= 1; side += 2) {
@@ -790,7 +790,7 @@ static void emit_sampled(const cdist__cc_frame *f, cdist__cc_sink *k, const cdis
     if (df->n < CC_DEFER) {
         df->t[df->n] = tbest;
         df->hw[df->n] = w / n;
-        df->d[df->n++] = sqrt(fmin(Fbest, b->F));
+        df->d[df->n++] = sqrt(cdist__fmin(Fbest, b->F));
     } else {
         min_offer(f, k, tbest - w / n, tbest + w / n);
     }
@@ -875,7 +875,7 @@ int cdist__cc_scan(const cdist__cc_frame *f, cdist__cc_sink *k, double *Fmax)
              * [a, b] it is at least (d(a) + d(b) - R w) / 2, and F is at least the hull bound;
              * above the attained distance (a sample or a refined minimum) by more than a tie,
              * the interval holds no closest pair, not even a tied one. */
-            double dth = fmin(dbest, k->dmin) * (1 + 8 * DBL_EPSILON) + CD_TIE_ULPS * DBL_EPSILON * f->L;
+            double dth = cdist__fmin(dbest, k->dmin) * (1 + 8 * DBL_EPSILON) + CD_TIE_ULPS * DBL_EPSILON * f->L;
             int done = k->prune && (0.5 * (a->d + b->d - f->R * w) > dth || (level < 31 && hull_bound(f, a, b, level) > dth * dth));
             for (int j = 0; j < nk && !done; j++) {
                 /* within twice a near-crossing's core: the geometric grid covers it */
@@ -928,8 +928,8 @@ int cdist__cc_scan(const cdist__cc_frame *f, cdist__cc_sink *k, double *Fmax)
  * 2 CD_CC_PARALLEL_ULPS eps L. */
 int cdist__cc_parallel_critical(const cdist__cc_frame *f, double *t)
 {
-    if (!(hypot(f->rg.ha, f->rg.hb) <= CD_CC_PARALLEL_ULPS * DBL_EPSILON * f->L)) return -1;
-    double e = hypot(f->Cu, f->Cv), R = f->R, s = f->s;
+    if (!(cdist__norm2(f->rg.ha, f->rg.hb) <= CD_CC_PARALLEL_ULPS * DBL_EPSILON * f->L)) return -1;
+    double e = cdist__norm2(f->Cu, f->Cv), R = f->R, s = f->s;
     double t0 = e > 0 ? atan2(f->Cv, f->Cu) : 0.0;
     int n = 0;
     t[n++] = t0;
@@ -937,7 +937,7 @@ int cdist__cc_parallel_critical(const cdist__cc_frame *f, double *t)
     if (e > 0 && fabs(R - e) < s && s < R + e) {
         /* rho = s: cos(t - t0) = (R^2 + e^2 - s^2) / (2 R e), formed without cancellation */
         double x = ((R - s) * (R + s) + e * e) / (2 * R * e);
-        double a = acos(fmax(-1.0, fmin(1.0, x)));
+        double a = acos(cdist__fmax(-1.0, cdist__fmin(1.0, x)));
         t[n++] = cdist__wrap_angle(t0 + a);
         t[n++] = cdist__wrap_angle(t0 - a);
     }

@@ -26,7 +26,7 @@ cdist_status cdist__cc_robust(cdist_query *q, const cdist__circle *c0, const cdi
     int sw = param_second(c0, c1, C);
     const cdist__circle *A = sw ? c1 : c0, *B = sw ? c0 : c1;
     vec3 CB = sw ? v_neg(C) : C; /* B's centre relative to A's */
-    double L = fmax(fmax(c0->r, c1->r), v_norm(C));
+    double L = cdist__fmax(cdist__fmax(c0->r, c1->r), v_norm(C));
     if (A->r == 0.0) {
         /* Both are points. */
         cdist__best_offer(b, v_sqr(C), c0->c, c1->c, NAN, NAN);
@@ -84,7 +84,7 @@ cdist_status cdist__cc_robust(cdist_query *q, const cdist__circle *c0, const cdi
     if (b->n == 0 || !isfinite(k.dmin)) return cdist__fail(q, CDIST_ERR_INTERNAL, "circle-circle: no minimum found");
     /* (a) F constant on A; (b) the closest point of A on B's axis. */
     if (sqrt(Fmax) - k.dmin <= CC_EQUI_ULPS * DBL_EPSILON * f.L) b->equidistant = 1;
-    if (k.rho_min <= 8 * f.epsL * fmin(1.0, f.s / f.L)) b->equidistant = 1;
+    if (k.rho_min <= 8 * f.epsL * cdist__fmin(1.0, f.s / f.L)) b->equidistant = 1;
     return CDIST_OK;
 }
 

@@ -176,7 +176,7 @@ static void pmul(const double *a, int da, const double *b, int db, double *out)
  * T = x x' + y y'. Returns the number of angles written, or -1 when F is constant, -2 on failure. */
 static int cdk_poly_critical(cdist_query *q, const cdk *k, double *ts)
 {
-    double s = fmax(fmax(k->rho, k->R), fmax(fabs(k->X[0]), fmax(fabs(k->Y[0]), fabs(k->Z[0]))));
+    double s = cdist__fmax(cdist__fmax(k->rho, k->R), cdist__fmax(fabs(k->X[0]), cdist__fmax(fabs(k->Y[0]), fabs(k->Z[0]))));
     if (!(s > 0.0)) return 0;
     s = 1.0 / s;
     double dX[3] = {0.0, k->X[2], -k->X[1]}, dY[3] = {0.0, k->Y[2], -k->Y[1]};
@@ -317,7 +317,7 @@ static int cdk_robust_critical(const cdk *k, double *ts, int cap, double scale)
     f1s[CDK_SAMPLES] = f1s[0];
     Fs[CDK_SAMPLES] = Fs[0];
     double Fmin = Fs[0];
-    for (int i = 1; i < CDK_SAMPLES; i++) Fmin = fmin(Fmin, Fs[i]);
+    for (int i = 1; i < CDK_SAMPLES; i++) Fmin = cdist__fmin(Fmin, Fs[i]);
     /* A cluster can only hold the global minimum where F is within this margin of the best. */
     double margin = Fmin + 0.01 * scale * scale;
     double flat = CDK_FLAT * k->rho * scale;
@@ -328,7 +328,7 @@ static int cdk_robust_critical(const cdk *k, double *ts, int cap, double scale)
         if (f1s[i] < 0.0 && f1s[i + 1] >= 0.0) {
             t1 = (f1s[i + 1] == 0.0) ? b : cdk_bracket_sg(k, a, b, 1.0, f1s[i], f1s[i + 1]);
             ts[n++] = t1;
-        } else if (f1s[i] > 0.0 && f1s[i + 1] <= 0.0 && fmin(Fs[i], Fs[i + 1]) <= margin) {
+        } else if (f1s[i] > 0.0 && f1s[i + 1] <= 0.0 && cdist__fmin(Fs[i], Fs[i + 1]) <= margin) {
             /* A maximum: minima may hide on both sides of it. */
             t1 = cdk_bracket_sg(k, a, b, -1.0, -f1s[i], -f1s[i + 1]);
         } else {
@@ -338,7 +338,7 @@ static int cdk_robust_critical(const cdk *k, double *ts, int cap, double scale)
          * |F''(t1)| ~ c w^2 for a cluster of width w below the grid step. */
         double f2;
         cdk_rim(k, t1, NULL, &f2);
-        if (fmin(Fs[i], Fs[i + 1]) <= margin && fabs(f2) <= flat) n += cdk_scan(k, t1, a, b, ts + n, cap - n);
+        if (cdist__fmin(Fs[i], Fs[i + 1]) <= margin && fabs(f2) <= flat) n += cdk_scan(k, t1, a, b, ts + n, cap - n);
     }
     /* Safety net: downhill from the smallest sample. */
     int im = 0;
@@ -371,7 +371,7 @@ static int cdk_poly_minima(cdist_query *q, const cdk *k, double *ts, int cap, do
         if (fabs(f1) > 1e-6 * k->rho * scale && !(f2 > 0.0 && fabs(f1) < 1e-3 * f2)) continue;
         ts[n] = cdk_descend(k, roots[i], 1e-9);
         Fv[n] = cdk_rim(k, ts[n], NULL, &f2v[n]);
-        Fbest = fmin(Fbest, Fv[n]);
+        Fbest = cdist__fmin(Fbest, Fv[n]);
         n++;
     }
     int n0 = n;
@@ -384,11 +384,11 @@ static int cdk_poly_minima(cdist_query *q, const cdk *k, double *ts, int cap, do
 /* Parallel planes (within rounding): closed forms (docs/disk.md). Returns 1 when handled. */
 static int cdk_parallel(const cdk *k, cdist__best *b)
 {
-    double sinang = hypot(k->Z[1], k->Z[2]);
+    double sinang = cdist__norm2(k->Z[1], k->Z[2]);
     if (!(sinang <= 8.0 * DBL_EPSILON * k->rho)) return 0;
-    double ex = k->X[0], ey = k->Y[0], e = hypot(ex, ey);
+    double ex = k->X[0], ey = k->Y[0], e = cdist__norm2(ex, ey);
     double rho = k->rho, R = k->R;
-    double tol = 8.0 * DBL_EPSILON * fmax(fmax(rho, R), e);
+    double tol = 8.0 * DBL_EPSILON * cdist__fmax(cdist__fmax(rho, R), e);
     /* Angle on the circle of the point whose projection is nearest the disk centre: direction
      * -E in the disk plane, expressed in the circle's basis. */
     vec3 Ein = v_axpy(v_scale(ex, k->u), ey, k->v); /* circle centre's projection relative to D */
@@ -410,7 +410,7 @@ static cdist_status cdk_solve(cdist_query *q, cdist_method method, const cdk *k,
     *used = method;
     if (cdk_parallel(k, b)) return CDIST_OK;
     /* Zeros and extremes of the height z(t) = Z0 + amp cos(t - phi). */
-    double amp = hypot(k->Z[1], k->Z[2]), phi = atan2(k->Z[2], k->Z[1]);
+    double amp = cdist__norm2(k->Z[1], k->Z[2]), phi = atan2(k->Z[2], k->Z[1]);
     cdk_offer(k, phi, b);
     cdk_offer(k, phi + M_PI, b);
     double cz = -k->Z[0] / amp;
@@ -433,7 +433,7 @@ static cdist_status cdk_solve(cdist_query *q, cdist_method method, const cdk *k,
     }
     /* Critical points of the rim distance. */
     double ts[CDK_CAP];
-    double scale = fmax(fmax(k->rho, k->R), hypot(k->X[0], hypot(k->Y[0], k->Z[0])));
+    double scale = cdist__fmax(cdist__fmax(k->rho, k->R), sqrt(k->X[0] * k->X[0] + k->Y[0] * k->Y[0] + k->Z[0] * k->Z[0]));
     int n = -2;
     if (method == CDIST_METHOD_POLYNOMIAL) {
         n = cdk_poly_minima(q, k, ts, CDK_CAP, scale);
@@ -446,7 +446,7 @@ static cdist_status cdk_solve(cdist_query *q, cdist_method method, const cdk *k,
         *used = CDIST_METHOD_ROBUST;
         /* Only the minima of F matter (the lemma), and only those below the best candidate so
          * far (a z candidate, whose distance is the true one): the engine prunes the rest. */
-        double dcap = b->n > 0 ? fmin(dcap0, sqrt(b->c[0].d2)) : dcap0;
+        double dcap = b->n > 0 ? cdist__fmin(dcap0, sqrt(b->c[0].d2)) : dcap0;
         n = cdist__circle_circle_critical(q, k->c, k->d, dcap, ts, CDK_CAP);
         if (n == -1) {
             n = 0; /* F constant: the rim gives no isolated candidate; z candidates rule */
@@ -461,7 +461,7 @@ static cdist_status cdk_solve(cdist_query *q, cdist_method method, const cdk *k,
             double Fv[CDK_CAP], f2v[CDK_CAP], Fbest = INFINITY, flat = CDK_FLAT * k->rho * scale;
             for (int i = 0; i < n; i++) {
                 Fv[i] = cdk_rim(k, ts[i], NULL, &f2v[i]);
-                Fbest = fmin(Fbest, Fv[i]);
+                Fbest = cdist__fmin(Fbest, Fv[i]);
             }
             int n0 = n;
             for (int i = 0; i < n0 && n < CDK_CAP; i++)
@@ -507,7 +507,7 @@ cdist_status cdist__circle_disk_core_ex(cdist_query *q, cdist_method method, con
     cdist__best t;
     cdist__best_init(&t, b->scale);
     /* b's best so far is attained too: no minimum above it can be the answer */
-    if (b->n > 0) dcap = fmin(dcap, sqrt(b->c[0].d2));
+    if (b->n > 0) dcap = cdist__fmin(dcap, sqrt(b->c[0].d2));
     cdist_status st = circle_disk_solve(q, method, c, d, dcap, &t, used);
     if (st) return st;
     double d2 = cdist__best_merge(b, &t, v3(0, 0, 0), 0);
