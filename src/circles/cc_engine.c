@@ -231,25 +231,6 @@ void cdist__cc_frame_init(cdist__cc_frame *f, const cdist__circle *A, vec3 C, co
     f->Hc0 = fabs(f->rg.hc);
 }
 
-/* The values at angle t with (c, s) = (cos t, sin t) that pruning and the bracketing read: F,
- * its root d, F'/2, rho, Q, g. The certificates' values come on demand (cc_detail_H, _F): most
- * intervals are pruned first. */
-static void cc_eval(const cdist__cc_frame *f, double t, double c, double s, cdist__cc_pt *p)
-{
-    cdist__ring_val v;
-    cdist__ring_eval(&f->rg, f->s, c, s, 1, &v);
-    p->t = t;
-    p->c = c;
-    p->s = s;
-    p->detail = 0;
-    p->F1 = v.F1;
-    p->rho = v.rho;
-    p->F = v.F;
-    p->d = sqrt(v.F);
-    p->Q = v.Q;
-    p->g = v.g;
-}
-
 /* The H certificate's values at p: H, H', H'' (from the same w', g, g1 as the ring evaluator)
  * and their rounding bounds. */
 static void cc_detail_H(const cdist__cc_frame *f, cdist__cc_pt *p)
@@ -404,7 +385,7 @@ static void emit(cdist__cc_sink *k, const cdist__cc_pt *a, const cdist__cc_pt *b
         cdist__cc_pt p;
         double c, s;
         sincos(t, &s, &c);
-        cc_eval(k->f, t, c, s, &p);
+        cdist__cc_eval_lean(k->f, t, c, s, &p);
         double d = sqrt(p.F);
         if (d < k->dmin) k->dmin = d;
     } else {
@@ -811,7 +792,7 @@ int cdist__cc_scan(const cdist__cc_frame *f, cdist__cc_sink *k, double *Fmax)
     for (int i = 0; i < CC_INIT_INTERVALS; i++) {
         double t = -M_PI + i * (2 * M_PI / CC_INIT_INTERVALS);
         int j = i * 16 / CC_INIT_INTERVALS;
-        cc_eval(f, t, ic[j], -ic[(j + 4) % 16], &init[i]);
+        cdist__cc_eval_lean(f, t, ic[j], -ic[(j + 4) % 16], &init[i]);
     }
     init[CC_INIT_INTERVALS] = init[0];
     init[CC_INIT_INTERVALS].t = M_PI;
@@ -895,7 +876,7 @@ int cdist__cc_scan(const cdist__cc_frame *f, cdist__cc_sink *k, double *Fmax)
                     /* Midpoint from the endpoint cosines/sines (no transcendental call). */
                     double hc = half_sec[hs_index(level)];
                     cdist__cc_pt *mid = &pool[evals++];
-                    cc_eval(f, 0.5 * (a->t + b->t), (a->c + b->c) * hc, (a->s + b->s) * hc, mid);
+                    cdist__cc_eval_lean(f, 0.5 * (a->t + b->t), (a->c + b->c) * hc, (a->s + b->s) * hc, mid);
                     if (mid->F > *Fmax) *Fmax = mid->F;
                     if (mid->F < k->Fmin) {
                         k->Fmin = mid->F;

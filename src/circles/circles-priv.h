@@ -60,9 +60,10 @@ typedef struct cdist__cc_sink {
 
 static inline double cdist__cc_dot3(vec3 a, vec3 b) { return cdist__ring_dot(a, b); }
 
-/* F and F'/2 only, at angle t with (c, s) = (cos t, sin t): the lean evaluation of the sampled
- * regions (dense scan, kink grid, budget fallback, minimum search), which read only the signs of
- * F' and the values of F and need none of H's rounding bounds. */
+/* The one evaluation of a point of the engine at angle t with (c, s) = (cos t, sin t): F, its
+ * root d, F'/2, rho, Q, g (what pruning, bracketing and the sampled regions read). The
+ * certificates' values (H's, F''s and the rounding bounds) come on demand, in cc_engine.c: most
+ * intervals are pruned first. */
 static inline void cdist__cc_eval_lean(const cdist__cc_frame *f, double t, double c, double s, cdist__cc_pt *p)
 {
     cdist__ring_val v;
