@@ -120,36 +120,7 @@ static inline double vrecip2(double x)
 #define many(m) (m)
 #define mbits(m) ((unsigned)(m))
 #include "line_kernel_body.h"
-#undef W
-#undef LK_CHAINS
-#undef V
-#undef M
-#undef KN
-#undef vadd
-#undef vsub
-#undef vmul
-#undef vdiv
-#undef vneg
-#undef vsqrt
-#undef vfma
-#undef vabs
-#undef vmax
-#undef vmin
-#undef vlt
-#undef vle
-#undef vgt
-#undef vge
-#undef veq
-#undef vne
-#undef vsel
-#undef mand
-#undef mor
-#undef mandn
-#undef mnot
-#undef mtrue
-#undef mfalse
-#undef many
-#undef mbits
+#include "line_kernel_undef.h"
 
 #ifdef CD_X86_KERNELS
 
@@ -211,47 +182,7 @@ LK_TARGET_PUSH("avx512f,fma")
 #define vtrunc(x) _mm512_roundscale_pd(x, _MM_FROUND_TO_ZERO | _MM_FROUND_NO_EXC)
 #define vscale2(y, q) _mm512_scalef_pd(y, q)
 #include "line_kernel_body.h"
-#undef vcmp_mask
-#undef vload_objects
-#undef vfrexp_m
-#undef vfrexp_e
-#undef vtrunc
-#undef vscale2
-#undef W
-#undef LK_CHAINS
-#undef V
-#undef M
-#undef KN
-#undef vset
-#undef vld
-#undef vst
-#undef vadd
-#undef vsub
-#undef vmul
-#undef vdiv
-#undef vneg
-#undef vsqrt
-#undef vfma
-#undef vabs
-#undef vmax
-#undef vmin
-#undef vexpbits
-#undef vrecip2
-#undef vlt
-#undef vle
-#undef vgt
-#undef vge
-#undef veq
-#undef vne
-#undef vsel
-#undef mand
-#undef mor
-#undef mandn
-#undef mnot
-#undef mtrue
-#undef mfalse
-#undef many
-#undef mbits
+#include "line_kernel_undef.h"
 LK_TARGET_POP
 
 /* ---- 4 lanes ---- */
@@ -309,46 +240,7 @@ LK_TARGET_PUSH("avx2,fma")
                                            _mm256_set1_epi64x(0x4338000000000000ll)),                          \
                           52)))
 #include "line_kernel_body.h"
-#undef vload_objects
-#undef vfrexp_m
-#undef vfrexp_e
-#undef vtrunc
-#undef vscale2
-#undef W
-#undef LK_CHAINS
-#undef V
-#undef M
-#undef KN
-#undef vset
-#undef vld
-#undef vst
-#undef vadd
-#undef vsub
-#undef vmul
-#undef vdiv
-#undef vneg
-#undef vsqrt
-#undef vfma
-#undef vabs
-#undef vmax
-#undef vmin
-#undef vexpbits
-#undef vrecip2
-#undef vlt
-#undef vle
-#undef vgt
-#undef vge
-#undef veq
-#undef vne
-#undef vsel
-#undef mand
-#undef mor
-#undef mandn
-#undef mnot
-#undef mtrue
-#undef mfalse
-#undef many
-#undef mbits
+#include "line_kernel_undef.h"
 LK_TARGET_POP
 
 #endif
