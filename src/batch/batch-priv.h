@@ -42,6 +42,14 @@ void cdist__batch_range(cdist_query *h, const cdist__job *job, size_t lo, size_t
  * copied to the workers. */
 cdist_status cdist__workers_run(cdist_query *q, const cdist__job *job, cdist__slot *first);
 
+/* A distance kernel variant: entries [lo, lo + count) of job, an int selecting the kind's shape,
+ * the unit tolerance; returns the mask of the entries left for the scalar path. */
+typedef uint64_t (*cdist__kernel_fn)(const cdist__job *job, int shape, double unit_tol, size_t lo, size_t count);
+/* The variant this CPU runs (AVX-512, else AVX2 + FMA, else scalar; a NULL variant is skipped),
+ * chosen once and cached in *chosen (src/batch/kernel_choice.c). */
+cdist__kernel_fn cdist__kernel_choose(cdist__kernel_fn *chosen, cdist__kernel_fn avx512, cdist__kernel_fn avx2,
+                                      cdist__kernel_fn scalar);
+
 /* Distance kernels of point-circle (disk = 0) and point-disk (disk = 1) for entries
  * [lo, lo + count), count <= 64: writes distances[i] of every entry whose inputs pass the fast
  * validation and returns a mask (bit k: entry lo + k) of the entries left for the scalar path

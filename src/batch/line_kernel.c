@@ -276,32 +276,15 @@ static uint64_t kernel_avx2(const cdist__job *job, int shape, double tol, size_t
 {
     return block_4(job, shape, tol, lo, count, cbrt_verified(&cbrt_known_4, cbrt_matches_4));
 }
-typedef uint64_t (*kernel_fn)(const cdist__job *, int, double, size_t, size_t);
-
-static kernel_fn pick(void)
-{
-    __builtin_cpu_init();
-    if (__builtin_cpu_supports("avx512f")) return kernel_avx512;
-    if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma")) return kernel_avx2;
-    return kernel_scalar;
-}
+#endif
 
 uint64_t cdist__line_distance_kernel(const cdist__job *job, int shape, double unit_tol, size_t lo, size_t count)
 {
-    static kernel_fn chosen; /* a benign race: every thread computes the same value */
-    kernel_fn f = __atomic_load_n(&chosen, __ATOMIC_RELAXED);
-    if (!f) {
-        f = pick();
-        __atomic_store_n(&chosen, f, __ATOMIC_RELAXED);
-    }
+    static cdist__kernel_fn chosen;
+#ifdef CD_X86_KERNELS
+    cdist__kernel_fn f = cdist__kernel_choose(&chosen, kernel_avx512, kernel_avx2, kernel_scalar);
+#else
+    cdist__kernel_fn f = cdist__kernel_choose(&chosen, NULL, NULL, kernel_scalar);
+#endif
     return f(job, shape, unit_tol, lo, count);
 }
-
-#else
-
-uint64_t cdist__line_distance_kernel(const cdist__job *job, int shape, double unit_tol, size_t lo, size_t count)
-{
-    return kernel_scalar(job, shape, unit_tol, lo, count);
-}
-
-#endif
