@@ -231,12 +231,13 @@ void cdist__cc_frame_init(cdist__cc_frame *f, const cdist__circle *A, vec3 C, co
     f->Hc0 = fabs(f->rg.hc);
 }
 
-/* The H certificate's values at p: H, H', H'' (from the same w', g, g1 as the ring evaluator)
- * and their rounding bounds. */
-static void cc_detail_H(const cdist__cc_frame *f, cdist__cc_pt *p)
+/* The certificates' values at p, from one evaluation of order 2: H, H', H'' (from the same w', g,
+ * g1 as the ring evaluator) with their rounding bounds, F''/2, and the rounding bounds of F'/2
+ * and F''/2. */
+static void cc_detail(const cdist__cc_frame *f, cdist__cc_pt *p)
 {
-    if (p->detail & 1) return;
-    p->detail |= 1;
+    if (p->detail) return;
+    p->detail = 1;
     double c = p->c, s = p->s;
     cdist__ring_val v;
     cdist__ring_eval(&f->rg, f->s, c, s, 2, &v);
@@ -251,7 +252,7 @@ static void cc_detail_H(const cdist__cc_frame *f, cdist__cc_pt *p)
      * quantity is summed from (w carries eps (2R + |C|) absolutely, w' eps 2R). Local bounds
      * keep H certifiable near A's crossing of B's axis, where every term of H is tiny but
      * accurate (relative error eps L / rho). */
-    double W1 = f->W1, Lw = f->Lw, ga = f->nga + f->Lw - 2 * f->R;
+    double W1 = f->W1, Lw = f->Lw, ga = f->nga + f->Lw - 2 * f->R, ar = fabs(v.dr), irho = rho > 0 ? 1 / rho : INFINITY;
     double Qb = Q + 2 * rho * Lw, gb = fabs(g) + W1 * Lw + rho * 2 * f->R;
     double g1b = 2 * W1 * W1 + (rho + Lw) * ga + Qb, g2b = 3 * (W1 * ga + gb) + gb;
     double sb = f->R * (fabs(f->Cu) + fabs(f->Cv)), sb2 = sb * sb;
@@ -260,16 +261,6 @@ static void cc_detail_H(const cdist__cc_frame *f, cdist__cc_pt *p)
     p->eH1 = e8 * (2 * gb * sb2 + 4 * Qb * sb2 + 2 * s2 * (gb * (ag1 + g1b) + ag * g1b));
     p->eH2 = e8 * (4 * g1b * sb2 + 16 * gb * sb2 + 8 * Qb * sb2 +
                    2 * s2 * (3 * g1b * (ag1 + g1b) + gb * (fabs(g2) + g2b) + ag * g2b));
-}
-
-/* The F certificates' values at p: the rounding bound of F'/2, F''/2 and its bound. */
-static void cc_detail_F(const cdist__cc_frame *f, cdist__cc_pt *p)
-{
-    if (p->detail & 2) return;
-    p->detail |= 2;
-    cdist__ring_val v;
-    cdist__ring_eval(&f->rg, f->s, p->c, p->s, 2, &v);
-    double W1 = f->W1, Lw = f->Lw, ar = fabs(v.dr), rho = v.rho, irho = rho > 0 ? 1 / rho : INFINITY;
     /* F'/2 = dr g / rho + h h': dr and h carry eps Lw absolutely, g eps Lw W1 (relative eps L
      * / rho after the division), each product and sum eps relatively; doubled for margin. */
     p->eF1 = 16 * DBL_EPSILON * (Lw * W1 * (1 + ar * irho) + ar * fabs(v.g) * (rho > 0 ? irho : 0.0) +
@@ -393,6 +384,16 @@ static void emit(cdist__cc_sink *k, const cdist__cc_pt *a, const cdist__cc_pt *b
     }
 }
 
+/* Bounds rho_lo <= rho <= rho_hi on [a, b] (rho is W1-Lipschitz in t); 0 when rho_lo <= 0 (the
+ * F certificates below divide by it). */
+static int rho_range(const cdist__cc_frame *f, const cdist__cc_pt *a, const cdist__cc_pt *b, double *rlo, double *rhi)
+{
+    double hw = 0.5 * f->W1 * (b->t - a->t);
+    *rlo = 0.5 * (a->rho + b->rho) - hw;
+    *rhi = cdist__fmax(a->rho, b->rho) + hw;
+    return *rlo > 0;
+}
+
 /* No critical point of F on [a, b]: F' keeps one sign, certified by its values at the ends
  * (less their rounding bounds) and a bound M >= |F''/2| on [a, b] (from each end F' cannot reach
  * 0 within |F'|/M). With rho_lo <= rho <= rho_hi on [a, b] (rho is W1-Lipschitz) and
@@ -403,13 +404,12 @@ static void emit(cdist__cc_sink *k, const cdist__cc_pt *a, const cdist__cc_pt *b
 static int monotone(const cdist__cc_frame *f, cdist__cc_pt *a, cdist__cc_pt *b)
 {
     if (!((a->F1 > 0 && b->F1 > 0) || (a->F1 < 0 && b->F1 < 0))) return 0;
-    cc_detail_F(f, a);
-    cc_detail_F(f, b);
+    cc_detail(f, a);
+    cc_detail(f, b);
     double A = fabs(a->F1) - a->eF1, B = fabs(b->F1) - b->eF1;
     if (!(A > 0 && B > 0)) return 0;
-    double w = b->t - a->t, W1 = f->W1;
-    double rlo = 0.5 * (a->rho + b->rho - W1 * w), rhi = cdist__fmax(a->rho, b->rho) + 0.5 * W1 * w;
-    if (!(rlo > 0)) return 0;
+    double w = b->t - a->t, W1 = f->W1, rlo, rhi;
+    if (!rho_range(f, a, b, &rlo, &rhi)) return 0;
     double M = W1 * W1 + (rhi + f->s) * (rhi * W1 + 2 * W1 * W1) / rlo + f->Hh * (2 * f->Hh + f->Hc0);
     return A + B > M * w * (1 + 1e-12);
 }
@@ -421,13 +421,12 @@ static int monotone(const cdist__cc_frame *f, cdist__cc_pt *a, cdist__cc_pt *b)
  * cluster (both of its factors vanish nearby) and its certificates fail. */
 static int convex(const cdist__cc_frame *f, cdist__cc_pt *a, cdist__cc_pt *b)
 {
-    cc_detail_F(f, a);
-    cc_detail_F(f, b);
+    cc_detail(f, a);
+    cc_detail(f, b);
     double A = a->F2 - a->eF2, B = b->F2 - b->eF2;
     if (!(A > 0 && B > 0)) return 0;
-    double w = b->t - a->t, W1 = f->W1;
-    double rlo = 0.5 * (a->rho + b->rho - W1 * w), rhi = cdist__fmax(a->rho, b->rho) + 0.5 * W1 * w;
-    if (!(rlo > 0)) return 0;
+    double w = b->t - a->t, W1 = f->W1, rlo, rhi;
+    if (!rho_range(f, a, b, &rlo, &rhi)) return 0;
     double B2 = (rhi * W1 + 2 * W1 * W1) / rlo;
     double B3 = (3 * W1 * W1 + rhi * W1 + 3 * W1 * B2) / rlo;
     double M3 = 3 * W1 * B2 + (rhi + f->s) * B3 + f->Hh * (4 * f->Hh + f->Hc0);
@@ -440,8 +439,8 @@ static int convex(const cdist__cc_frame *f, cdist__cc_pt *a, cdist__cc_pt *b)
  * end over half the interval, the cubic lower bound taken at its worst, x = w/2). */
 static int certified(const cdist__cc_frame *f, cdist__cc_pt *a, cdist__cc_pt *b)
 {
-    cc_detail_H(f, a);
-    cc_detail_H(f, b);
+    cc_detail(f, a);
+    cc_detail(f, b);
     double w = b->t - a->t, x = 0.5 * w;
     if ((a->H > 0 && b->H > 0) || (a->H < 0 && b->H < 0)) {
         double sg = a->H > 0 ? 1.0 : -1.0;

@@ -31,7 +31,7 @@ typedef struct cdist__cc_frame {
 /* Values at one angle. */
 typedef struct cdist__cc_pt {
     double t, c, s;
-    int detail;   /* which certificates' values below are set (bits; cc_engine.c computes them on demand) */
+    int detail;   /* the certificates' values below are set (cc_engine.c computes them on demand) */
     double H, H1, H2; /* H, H', H'' */
     double eH, eH1, eH2; /* their rounding bounds at this point */
     double F1, eF1; /* F'/2 and its rounding bound */
