@@ -1,9 +1,8 @@
 /* SPDX-License-Identifier: MIT */
-/* Undefines the lane macros a variant of line_kernel.c defines for line_kernel_body.h (every
- * name any variant uses: #undef of a name a variant left undefined is harmless). No include
- * guard: included once after each variant's body. */
+/* Undefines the lane macros of lanes_def.h (every name any variant defines: #undef of a name
+ * a variant left undefined is harmless). No include guard: included after each variant. */
+#undef CD_LANES
 #undef W
-#undef LK_CHAINS
 #undef V
 #undef M
 #undef KN

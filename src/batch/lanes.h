@@ -1,0 +1,26 @@
+/* SPDX-License-Identifier: MIT */
+/* The batch distance kernels' instruction sets (line_kernel.c, cc_kernel.c): whether the x86
+ * variants (AVX-512, AVX2 + FMA) are built, and the pragmas compiling a variant for its
+ * instruction set. The lane operations of a variant are in lanes_def.h. */
+#ifndef CDIST_BATCH_LANES_H
+#define CDIST_BATCH_LANES_H
+
+#if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))
+#define CD_X86_KERNELS 1
+#include <immintrin.h>
+
+#include "load8.h"
+
+/* Every function between PUSH and POP compiled for the instruction set isa. */
+#define CD_LANES_PRAGMA(x) _Pragma(#x)
+#if defined(__clang__)
+#define CD_LANES_TARGET_PUSH(isa) \
+    CD_LANES_PRAGMA(clang attribute push(__attribute__((target(isa))), apply_to = function))
+#define CD_LANES_TARGET_POP _Pragma("clang attribute pop")
+#else
+#define CD_LANES_TARGET_PUSH(isa) _Pragma("GCC push_options") CD_LANES_PRAGMA(GCC target(isa))
+#define CD_LANES_TARGET_POP _Pragma("GCC pop_options")
+#endif
+#endif
+
+#endif
