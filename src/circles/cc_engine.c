@@ -165,12 +165,7 @@ void cdist__cc_frame_init(cdist__cc_frame *f, const cdist__circle *A, vec3 C, co
     f->C = C;
     f->m = B->n;
     vec3 m = B->n;
-    f->rg.al = v_scale(f->R, v_cross(m, A->u));
-    f->rg.be = v_scale(f->R, v_cross(m, A->v));
-    f->rg.ga = v_neg(v_cross(m, C));
-    f->rg.ha = f->R * cdist__cc_dot3(m, A->u);
-    f->rg.hb = f->R * cdist__cc_dot3(m, A->v);
-    f->rg.hc = -cdist__cc_dot3(m, C);
+    cdist__ring_init(&f->rg, f->R, A->u, A->v, C, m);
     f->Cu = cdist__cc_dot3(C, A->u);
     f->Cv = cdist__cc_dot3(C, A->v);
 

@@ -19,46 +19,60 @@ static int param_second(const cdist__circle *c0, const cdist__circle *c1, vec3 C
     return 0;
 }
 
+int cdist__cc_prepare(const cdist__circle *c0, const cdist__circle *c1, cdist__cc_problem *p)
+{
+    vec3 C = v_sub(c1->c, c0->c); /* c0->c is the origin here; kept general */
+    p->C = C;
+    p->swapped = param_second(c0, c1, C);
+    const cdist__circle *A = p->swapped ? c1 : c0, *B = p->swapped ? c0 : c1;
+    if (A->r == 0.0 || B->r == 0.0) return 0;
+    /* Scale the problem by a power of two (exact) so that L is about 1: H has terms of order
+     * L^6, which would overflow or underflow for coordinates near the 1e150 limit. */
+    double L = cdist__fmax(cdist__fmax(c0->r, c1->r), v_norm(C));
+    int ex;
+    frexp(L, &ex);
+    double sc = ldexp(1.0, -ex);
+    p->unscale = ldexp(1.0, ex);
+    p->A = *A;
+    p->B = *B;
+    p->A.c = v_scale(sc, A->c);
+    p->A.r = sc * A->r;
+    p->B.c = v_scale(sc, B->c);
+    p->B.r = sc * B->r;
+    p->CB = v_scale(sc, p->swapped ? v_neg(C) : C);
+    return 1;
+}
+
 /* The robust method (see the header comment). */
 cdist_status cdist__cc_robust(cdist_query *q, const cdist__circle *c0, const cdist__circle *c1, cdist__best *b)
 {
-    vec3 C = v_sub(c1->c, c0->c); /* c0->c is the origin here; kept general */
-    int sw = param_second(c0, c1, C);
-    const cdist__circle *A = sw ? c1 : c0, *B = sw ? c0 : c1;
-    vec3 CB = sw ? v_neg(C) : C; /* B's centre relative to A's */
-    double L = cdist__fmax(cdist__fmax(c0->r, c1->r), v_norm(C));
-    if (A->r == 0.0) {
-        /* Both are points. */
-        cdist__best_offer(b, v_sqr(C), c0->c, c1->c, NAN, NAN);
-        return CDIST_OK;
-    }
-    if (B->r == 0.0) {
+    cdist__cc_problem pb;
+    if (!cdist__cc_prepare(c0, c1, &pb)) {
+        vec3 C = pb.C;
+        int sw = pb.swapped;
+        const cdist__circle *A = sw ? c1 : c0;
+        if (A->r == 0.0) {
+            /* Both are points. */
+            cdist__best_offer(b, v_sqr(C), c0->c, c1->c, NAN, NAN);
+            return CDIST_OK;
+        }
         /* B is a point: the point-circle core (equidistant when it is on A's axis). */
         if (!sw) {
             cdist__point_circle_core(C, c0, b, 1);
         } else {
             cdist__best t;
             cdist__best_init(&t, b->scale);
-            cdist__point_circle_core(CB, c1, &t, 0);
+            cdist__point_circle_core(v_neg(C), c1, &t, 0);
             for (int i = 0; i < t.n; i++)
                 cdist__best_offer_flag(b, t.c[i].equidistant, t.c[i].d2, v_add(t.c[i].p[0], C), v_add(t.c[i].p[1], C),
                                    t.c[i].param[0], t.c[i].param[1]);
         }
         return CDIST_OK;
     }
-    /* Scale the problem by a power of two (exact) so that L is about 1: H has terms of order
-     * L^6, which would overflow or underflow for coordinates near the 1e150 limit. */
-    int ex;
-    frexp(L, &ex);
-    double sc = ldexp(1.0, -ex), unsc = ldexp(1.0, ex);
-    cdist__circle As = *A, Bs = *B;
-    As.c = v_scale(sc, A->c);
-    As.r = sc * A->r;
-    Bs.c = v_scale(sc, B->c);
-    Bs.r = sc * B->r;
-    CB = v_scale(sc, CB);
-    A = &As;
-    B = &Bs;
+    int sw = pb.swapped;
+    double unsc = pb.unscale;
+    const cdist__circle *A = &pb.A, *B = &pb.B;
+    vec3 CB = pb.CB;
     cdist__cc_frame f;
     cdist__cc_frame_init(&f, A, CB, B);
     cdist__cc_sink k = {.f = &f, .best = b, .prune = 1, .unscale = unsc, .swapped = sw, .A = A, .B = B,  .Fmin = INFINITY,

@@ -89,6 +89,20 @@ int cdist__cc_scan(const cdist__cc_frame *f, cdist__cc_sink *k, double *Fmax);
 void cdist__cc_pair_at(const cdist__cc_frame *f, double t, cdist__cc_sink *k);
 /* Parallel planes: F's critical angles in closed form (up to 4), or -1 when not parallel. */
 int cdist__cc_parallel_critical(const cdist__cc_frame *f, double *t);
+/* The robust method's problem: A, the circle it parameterises (the larger; ties by a rule
+ * antisymmetric in the arguments), and B, both scaled by unscale^-1 (a power of two) so that
+ * L = max(r0, r1, |C|) is in [0.5, 1); CB: B's centre relative to A's, scaled; C: c1's centre
+ * relative to c0's, unscaled. */
+typedef struct cdist__cc_problem {
+    int swapped; /* A is c1 */
+    cdist__circle A, B;
+    vec3 CB, C;
+    double unscale;
+} cdist__cc_problem;
+/* Fills p from c0 (centre at the origin) and c1; returns 0 (only C and swapped set) when A or B
+ * has radius 0, which the robust method answers with the point-circle core. Shared by the robust
+ * method and the batch distance kernel (src/batch/cc_kernel.c). */
+int cdist__cc_prepare(const cdist__circle *c0, const cdist__circle *c1, cdist__cc_problem *p);
 /* The robust method (c0 at the origin). */
 cdist_status cdist__cc_robust(cdist_query *q, const cdist__circle *c0, const cdist__circle *c1, cdist__best *b);
 /* Circle c (centre at the origin) to disk d, solved into a fresh collector and merged into b
