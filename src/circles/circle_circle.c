@@ -122,9 +122,10 @@ int cdist__circles_frame(cdist__circle *a, cdist__circle *b, vec3 *offset, cdist
     a->c = v3(0, 0, 0);
     b->c = v_sub(b->c, *offset);
     int e = cdist__scale_exponent(fmax(fmax(a->r, b->r), v_maxabs(b->c)));
-    a->r = ldexp(a->r, -e);
-    b->r = ldexp(b->r, -e);
-    b->c = v3(ldexp(b->c.x, -e), ldexp(b->c.y, -e), ldexp(b->c.z, -e));
+    double down = cdist__pow2(-e); /* normal for |e| <= CD_SCALE_MAX_EXP: x * down is ldexp(x, -e) */
+    a->r *= down;
+    b->r *= down;
+    b->c = v_scale(down, b->c);
     cdist__best_init(best, fmax(fmax(a->r, b->r), v_norm(b->c)));
     return e;
 }
