@@ -78,7 +78,7 @@ CD_FMA_CLONES cdist_status cdist__check_direction(cdist_query *q, const cdist_ve
  * per number covers NaN, infinity and the range (|x| <= CD_MAX_ABS is false for all three);
  * the normal's squared length is taken directly when it is safely in range. Returns 0 on any
  * doubt; the slow path then finds and reports the problem, or accepts the circle. */
-CD_INLINE int circle_fast(const cdist_query *q, const cdist_circle *c, cdist__circle *out)
+CD_INLINE int circle_fast(double unit_tol, const cdist_circle *c, cdist__circle *out)
 {
     vec3 p = c->center, d = c->normal;
     double r = c->radius;
@@ -91,7 +91,7 @@ CD_INLINE int circle_fast(const cdist_query *q, const cdist_circle *c, cdist__ci
      * point kernel (src/batch/point_kernel.c) repeats it and must agree with single calls. */
     vec3 sd = v_scale(1.0 / m, d);
     double ns = v_norm(sd), len = m * ns;
-    if (!(fabs(len - 1.0) <= q->unit_tol)) return 0;
+    if (!(fabs(len - 1.0) <= unit_tol)) return 0;
     out->n = v_scale(1.0 / ns, sd);
     out->c = p;
     out->r = r;
@@ -119,9 +119,16 @@ static cdist_status circle_slow(cdist_query *q, const cdist_circle *c, const cha
 CD_FMA_CLONES cdist_status cdist__check_circle_nobasis(cdist_query *q, const cdist_circle *c, const char *what, cdist__circle *out)
 {
     if (!c) return cdist__fail(q, CDIST_ERR_NULL_ARGUMENT, "%s pointer is NULL", what);
-    if (q && circle_fast(q, c, out)) return CDIST_OK;
+    if (q && circle_fast(q->unit_tol, c, out)) return CDIST_OK;
     return circle_slow(q, c, what, out);
 }
+
+CD_FMA_CLONES int cdist__circle_fast(double unit_tol, const cdist_circle *c, cdist__circle *out)
+{
+    return circle_fast(unit_tol, c, out);
+}
+
+CD_FMA_CLONES void cdist__circle_basis(cdist__circle *c) { cdist__frame_basis(c); }
 
 CD_FMA_CLONES cdist_status cdist__check_circle(cdist_query *q, const cdist_circle *c, const char *what, cdist__circle *out)
 {

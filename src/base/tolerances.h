@@ -130,4 +130,18 @@
  * errs by at most twice that in the distance. */
 #define CD_CC_PARALLEL_ULPS 1.0
 
+/* The batch circle-circle distance kernel (src/batch/cc_kernel.c), in the robust method's
+ * scaled units (L in [0.5, 1), so F = squared distance <= 4):
+ *   - an interval is pruned when its lower bound of F exceeds the best sampled F by more than
+ *     CD_CCK_PRUNE_MARGIN: above the rounding of both (about 20 eps * 9 < 1e-13) 25 times over,
+ *     so a pruned interval cannot hold the minimum; a near-tie of two minima goes to the scalar
+ *     path instead;
+ *   - F''/2 at a basin's ends carries CD_CCK_F2_ULPS * eps times the magnitude of its terms
+ *     (the bound of the engine's convex(), cc_engine.c);
+ *   - Newton in the certified basin stops when every lane's step is below CD_CCK_NEWTON_STEP rad:
+ *     the next error, about (F''' / F'') step^2 < 1e-12 rad, moves F by about 1e-24. */
+#define CD_CCK_PRUNE_MARGIN 1e-12
+#define CD_CCK_F2_ULPS 64.0
+#define CD_CCK_NEWTON_STEP 1e-7
+
 #endif

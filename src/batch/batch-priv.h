@@ -64,4 +64,11 @@ uint64_t cdist__point_distance_kernel(const cdist__job *job, int disk, double un
  * entries left for the scalar path (src/batch/line_kernel.c). */
 uint64_t cdist__line_distance_kernel(const cdist__job *job, int shape, double unit_tol, size_t lo, size_t count);
 
+/* Distance kernel of circle-circle (ROBUST method) for entries [lo, lo + count), count <= 64:
+ * writes distances[i] of every entry it certifies and returns the mask of those left for the
+ * scalar path. Not bit-identical to the single query: the same certified minimum of the same F,
+ * found by another search; the distances agree to an ulp or two of the scale
+ * (src/batch/cc_kernel.c). */
+uint64_t cdist__cc_distance_kernel(const cdist__job *job, double unit_tol, size_t lo, size_t count);
+
 #endif

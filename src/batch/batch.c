@@ -56,7 +56,8 @@ enum {
     POINT_DISK_KERNEL,
     LINE_CIRCLE_KERNEL, /* the line kernels in the order of their shapes: line, ray, segment */
     RAY_CIRCLE_KERNEL,
-    SEGMENT_CIRCLE_KERNEL
+    SEGMENT_CIRCLE_KERNEL,
+    CIRCLE_CIRCLE_KERNEL
 };
 
 /* A kind's name is its family's (cdist__family_table): the kind and family numbers agree. */
@@ -73,7 +74,8 @@ static const struct {
     [CDIST_KIND_RAY_CIRCLE] = {sizeof(cdist_ray), sizeof(cdist_circle), k_ray_circle, .kernel = RAY_CIRCLE_KERNEL},
     [CDIST_KIND_SEGMENT_CIRCLE] = {sizeof(cdist_segment), sizeof(cdist_circle), k_segment_circle,
                                    .kernel = SEGMENT_CIRCLE_KERNEL},
-    [CDIST_KIND_CIRCLE_CIRCLE] = {sizeof(cdist_circle), sizeof(cdist_circle), k_circle_circle},
+    [CDIST_KIND_CIRCLE_CIRCLE] = {sizeof(cdist_circle), sizeof(cdist_circle), k_circle_circle,
+                                  .kernel = CIRCLE_CIRCLE_KERNEL},
     [CDIST_KIND_LINE_DISK] = {sizeof(cdist_line), sizeof(cdist_circle), k_line_disk},
     [CDIST_KIND_RAY_DISK] = {sizeof(cdist_ray), sizeof(cdist_circle), k_ray_disk},
     [CDIST_KIND_SEGMENT_DISK] = {sizeof(cdist_segment), sizeof(cdist_circle), k_segment_disk},
@@ -160,14 +162,27 @@ static inline size_t lowest_bit(uint64_t x)
 #endif
 }
 
-/* The kernel of a job, if it is to run: distance-only, and the line kernels only for the method
- * they implement (the ROBUST core; all three kinds run the line-circle family's method). */
+/* The kernel of a job, if it is to run: distance-only, and the line and circle kernels only for
+ * the method they implement (the ROBUST core; the three line kinds run the line-circle family's
+ * method). */
 static int job_kernel(const cdist_query *h, const cdist__job *job)
 {
     int kernel = job->distances ? kinds[job->kind].kernel : NO_KERNEL;
-    if (kernel >= LINE_CIRCLE_KERNEL && cdist__family_method(h, CD_FAM_LINE_CIRCLE) == CDIST_METHOD_POLYNOMIAL)
+    if (kernel >= LINE_CIRCLE_KERNEL && kernel <= SEGMENT_CIRCLE_KERNEL &&
+        cdist__family_method(h, CD_FAM_LINE_CIRCLE) == CDIST_METHOD_POLYNOMIAL)
+        return NO_KERNEL;
+    if (kernel == CIRCLE_CIRCLE_KERNEL && cdist__family_method(h, CD_FAM_CIRCLE_CIRCLE) != CDIST_METHOD_ROBUST)
         return NO_KERNEL;
     return kernel;
+}
+
+/* Entries [lo, lo + count) of the job through its kernel; the mask of those left. */
+static uint64_t run_kernel(int kernel, const cdist_query *h, const cdist__job *job, size_t lo, size_t count)
+{
+    if (kernel == CIRCLE_CIRCLE_KERNEL) return cdist__cc_distance_kernel(job, h->unit_tol, lo, count);
+    if (kernel >= LINE_CIRCLE_KERNEL)
+        return cdist__line_distance_kernel(job, kernel - LINE_CIRCLE_KERNEL, h->unit_tol, lo, count);
+    return cdist__point_distance_kernel(job, kernel == POINT_DISK_KERNEL, h->unit_tol, lo, count);
 }
 
 void cdist__batch_range(cdist_query *h, const cdist__job *job, size_t lo, size_t hi, cdist__slot *slot)
@@ -176,9 +191,7 @@ void cdist__batch_range(cdist_query *h, const cdist__job *job, size_t lo, size_t
     if (kernel != NO_KERNEL) {
         for (size_t i = lo; i < hi; i += 64) {
             size_t cnt = hi - i < 64 ? hi - i : 64;
-            uint64_t left = kernel >= LINE_CIRCLE_KERNEL
-                                ? cdist__line_distance_kernel(job, kernel - LINE_CIRCLE_KERNEL, h->unit_tol, i, cnt)
-                                : cdist__point_distance_kernel(job, kernel == POINT_DISK_KERNEL, h->unit_tol, i, cnt);
+            uint64_t left = run_kernel(kernel, h, job, i, cnt);
             if (job->statuses)
                 for (size_t k = 0; k < cnt; k++) job->statuses[i + k] = CDIST_OK;
             for (; left; left &= left - 1) entry(h, job, i + lowest_bit(left), slot);

@@ -1,0 +1,211 @@
+/* SPDX-License-Identifier: MIT */
+/* Distance kernel of circle-circle for cdist_batch_distance: a certified search of the robust
+ * method's F (src/circles/cc_engine.c) in 8 lanes (AVX-512), 4 lanes (AVX2) or 1, one entry per
+ * lane, and the distance recomputed at the angle found by the robust method's own formula.
+ *
+ * Per entry (scalar): the single query's validation (its fast path, cdist__circle_fast, and the
+ * basis of the parameterised circle),
+ * framing (cdist__circles_frame) and problem (cdist__cc_prepare: A the parameterised circle, B
+ * the other, scaled to L in [0.5, 1)); the ring coefficients of F(t), the squared distance from
+ * A's point at angle t to B (ring_eval.h).
+ * Per lane group (cc_kernel_body.h):
+ *   1. Grid: F at CK_GRID equally spaced angles. F extends to a concave function G of
+ *      (cos t, sin t) (cc_engine.c), so on an arc of width w, F >= min(F(a), F(b), G(T)) with T
+ *      the tangents' intersection, and G(T) = F_ext(T) - R^2 tan^2(w / 2) where F_ext is the
+ *      same formula at the point (cos, sin) / cos(w / 2). Every interval outside the basin (the
+ *      two intervals around the best grid angle) must have its bound above the best F plus a
+ *      margin: then the global minimum is in the basin.
+ *   2. Zoom: the basin [t - h, t + h] is certified convex (F''/2 at its ends against a bound of
+ *      F'''/2, the engine's convex()); else it is split in 8, the six subintervals away from
+ *      the best point are pruned by the same hull bound and the basin shrinks to the two around
+ *      it (h / 4), up to CK_LEVELS times.
+ *   3. Newton on F' in the convex basin (one minimum there), cos and sin by rotation from the
+ *      basin's centre with a Taylor series of the offset.
+ *   4. The distance (scalar): sqrt(F) at the angle found, by cdist__cc_point_d2 as the robust
+ *      method computes its answer, scaled back as the single query scales it.
+ * Whatever fails (a check of the fast validation, a zero radius, a near-tie of two minima, a
+ * basin on B's axis or not certified in CK_LEVELS levels, Newton not settled) goes to the scalar
+ * path. The angle differs from the single query's by rounding only (both are the certified
+ * unique minimum of the same F, settled by Newton); the distance, at a minimum, by at most an
+ * ulp or two of the scale. */
+#include <float.h>
+#include <math.h>
+#include <pthread.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <string.h>
+
+#include "batch-priv.h"
+#include "circles/circles-priv.h"
+#include "lanes.h"
+
+#define CK_GRID 32     /* grid angles (97% of random pairs prune every interval outside the basin) */
+#define CK_LEVELS 7    /* basin half-widths 2 pi / 32 * 4^-l, l < 7: down to 5e-5 rad */
+#define CK_NEWTON_MAX 8 /* from a certified basin Newton settles in 3 to 5 steps */
+#define CK_FIRST_CONVEX 2 /* the level of the first convexity check (measured: below it < 7% pass) */
+
+/* The columns of a block: the ring (al, be, ga, ha, hb, hc), B's radius s, R^2, and the bounds
+ * W1 = |al| + |be| >= |w'|, Hh = |ha| + |hb|, Hc0 = |hc|, Lw = 2 R + |C| of convex(). */
+enum { CK_C_ALX, CK_C_ALY, CK_C_ALZ, CK_C_BEX, CK_C_BEY, CK_C_BEZ, CK_C_GAX, CK_C_GAY, CK_C_GAZ, CK_C_HA, CK_C_HB,
+       CK_C_HC, CK_C_S, CK_C_R2, CK_C_W1, CK_C_HH, CK_C_HC0, CK_C_LW, CK_NC };
+typedef struct ck_block {
+    double col[CK_NC][64];
+    double t[64];
+    cdist__cc_problem pb[64];
+    int e[64];
+} ck_block;
+
+/* Angles of the search, computed once (ck_tables_init). */
+static struct {
+    double grid_c[CK_GRID], grid_s[CK_GRID]; /* cos, sin of 2 pi j / CK_GRID */
+    double hull_c[CK_GRID], hull_s[CK_GRID]; /* the hull point of [t_j, t_j+1]: cos, sin of its middle / cos(pi / CK_GRID) */
+    double grid_tan2;                        /* tan^2(pi / CK_GRID) */
+    double half[CK_LEVELS];                  /* basin half-width h_l */
+    double end_c[CK_LEVELS], end_s[CK_LEVELS]; /* cos, sin of h_l */
+    double sub_c[CK_LEVELS][4], sub_s[CK_LEVELS][4]; /* cos, sin of k h_l / 4, k = 1..3 */
+    double hull_sub_c[CK_LEVELS][4], hull_sub_s[CK_LEVELS][4]; /* of (2m + 1) h_l / 8, / cos(h_l / 8) */
+    double sub_tan2[CK_LEVELS];              /* tan^2(h_l / 8) */
+} ck_tab;
+static pthread_once_t ck_tab_once = PTHREAD_ONCE_INIT;
+
+static void ck_tables_init(void)
+{
+    double step = 2.0 * M_PI / CK_GRID, sec = 1.0 / cos(0.5 * step);
+    for (int j = 0; j < CK_GRID; j++) {
+        ck_tab.grid_c[j] = cos(j * step);
+        ck_tab.grid_s[j] = sin(j * step);
+        ck_tab.hull_c[j] = cos((j + 0.5) * step) * sec;
+        ck_tab.hull_s[j] = sin((j + 0.5) * step) * sec;
+    }
+    ck_tab.grid_tan2 = tan(0.5 * step) * tan(0.5 * step);
+    double h = step;
+    for (int l = 0; l < CK_LEVELS; l++, h *= 0.25) {
+        ck_tab.half[l] = h;
+        ck_tab.end_c[l] = cos(h);
+        ck_tab.end_s[l] = sin(h);
+        double q = 0.125 * h, qsec = 1.0 / cos(q);
+        for (int k = 0; k < 4; k++) {
+            ck_tab.sub_c[l][k] = cos(k * 0.25 * h);
+            ck_tab.sub_s[l][k] = sin(k * 0.25 * h);
+            ck_tab.hull_sub_c[l][k] = cos((2 * k + 1) * q) * qsec;
+            ck_tab.hull_sub_s[l][k] = sin((2 * k + 1) * q) * qsec;
+        }
+        ck_tab.sub_tan2[l] = tan(q) * tan(q);
+    }
+}
+
+#define CD_LANES 1
+#include "lanes_def.h"
+#include "cc_kernel_body.h"
+#include "lanes_undef.h"
+
+#ifdef CD_X86_KERNELS
+CD_LANES_TARGET_PUSH("avx512f,fma")
+#define CD_LANES 8
+#include "lanes_def.h"
+#include "cc_kernel_body.h"
+#include "lanes_undef.h"
+CD_LANES_TARGET_POP
+
+CD_LANES_TARGET_PUSH("avx2,fma")
+#define CD_LANES 4
+#include "lanes_def.h"
+#include "cc_kernel_body.h"
+#include "lanes_undef.h"
+CD_LANES_TARGET_POP
+#endif
+
+/* The single query's validation, framing and problem of entry i; 0 when the entry is left to
+ * the scalar path. The columns of a left entry hold zeros (harmless in the search). */
+static int ck_setup(const cdist__job *job, double unit_tol, size_t i, ck_block *b, int k)
+{
+    for (int c = 0; c < CK_NC; c++) b->col[c][k] = 0.0;
+    cdist__circle a, o;
+    if (!cdist__circle_fast(unit_tol, cdist__job_a(job, i), &a) || !cdist__circle_fast(unit_tol, cdist__job_b(job, i), &o))
+        return 0;
+    vec3 offset;
+    cdist__best best;
+    b->e[k] = cdist__circles_frame(&a, &o, &offset, &best);
+    cdist__cc_problem *p = &b->pb[k];
+    if (!cdist__cc_prepare(&a, &o, p)) return 0;
+    cdist__circle_basis(&p->A); /* only A's basis is read */
+    cdist__ring rg;
+    cdist__ring_init(&rg, p->A.r, p->A.u, p->A.v, p->CB, p->B.n);
+    const double v[CK_NC] = {rg.al.x, rg.al.y, rg.al.z, rg.be.x, rg.be.y, rg.be.z, rg.ga.x, rg.ga.y, rg.ga.z,
+                             rg.ha, rg.hb, rg.hc, p->B.r, p->A.r * p->A.r, v_norm(rg.al) + v_norm(rg.be),
+                             fabs(rg.ha) + fabs(rg.hb), fabs(rg.hc), 2 * p->A.r + v_norm(p->CB)};
+    for (int c = 0; c < CK_NC; c++) b->col[c][k] = v[c];
+    return 1;
+}
+
+/* The distance at the angle found, as the single query computes and scales it. */
+static double ck_distance(const ck_block *b, int k)
+{
+    const cdist__cc_problem *p = &b->pb[k];
+    double c, s, rho;
+    sincos(b->t[k], &s, &c);
+    vec3 P, w;
+    double d2 = cdist__cc_point_d2(p->A.r, p->A.u, p->A.v, p->CB, p->B.n, p->B.r, c, s, &P, &w, &rho);
+    double u = p->unscale;
+    return ldexp(sqrt(d2 * u * u), b->e[k]);
+}
+
+typedef unsigned (*ck_search_fn)(ck_block *b, int g);
+
+static uint64_t ck_run(ck_search_fn search, int lanes, const cdist__job *job, double unit_tol, size_t lo, size_t count)
+{
+    pthread_once(&ck_tab_once, ck_tables_init);
+    ck_block b;
+    uint64_t left = 0;
+    int n = (int)count, groups = (n + lanes - 1) / lanes * lanes;
+    for (int k = 0; k < groups; k++) {
+        if (k < n && ck_setup(job, unit_tol, lo + (size_t)k, &b, k)) continue;
+        if (k >= n)
+            for (int c = 0; c < CK_NC; c++) b.col[c][k] = 0.0;
+        left |= (uint64_t)1 << k;
+    }
+    for (int g = 0; g < groups; g += lanes) {
+        uint64_t lane_mask = ((uint64_t)1 << lanes) - 1;
+        if (((left >> g) & lane_mask) == lane_mask) continue;
+        left |= (uint64_t)search(&b, g) << g;
+    }
+    if (n < 64) left &= ((uint64_t)1 << n) - 1;
+    for (int k = 0; k < n; k++) {
+        if (left >> k & 1) continue;
+        double d = ck_distance(&b, k);
+        if (isfinite(d)) job->distances[lo + (size_t)k] = d;
+        else left |= (uint64_t)1 << k;
+    }
+    return left;
+}
+
+static uint64_t kernel_scalar(const cdist__job *job, int shape, double tol, size_t lo, size_t count)
+{
+    (void)shape;
+    return ck_run(ck_search_1, 1, job, tol, lo, count);
+}
+
+#ifdef CD_X86_KERNELS
+static uint64_t kernel_avx512(const cdist__job *job, int shape, double tol, size_t lo, size_t count)
+{
+    (void)shape;
+    return ck_run(ck_search_8, 8, job, tol, lo, count);
+}
+
+static uint64_t kernel_avx2(const cdist__job *job, int shape, double tol, size_t lo, size_t count)
+{
+    (void)shape;
+    return ck_run(ck_search_4, 4, job, tol, lo, count);
+}
+#endif
+
+uint64_t cdist__cc_distance_kernel(const cdist__job *job, double unit_tol, size_t lo, size_t count)
+{
+    static cdist__kernel_fn chosen;
+#ifdef CD_X86_KERNELS
+    cdist__kernel_fn f = cdist__kernel_choose(&chosen, kernel_avx512, kernel_avx2, kernel_scalar);
+#else
+    cdist__kernel_fn f = cdist__kernel_choose(&chosen, NULL, NULL, kernel_scalar);
+#endif
+    return f(job, 0, unit_tol, lo, count);
+}

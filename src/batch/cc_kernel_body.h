@@ -1,0 +1,238 @@
+/* SPDX-License-Identifier: MIT */
+/* Body of the circle-circle distance kernel (src/batch/cc_kernel.c): the certified search for
+ * the angle of the closest point, written once over a lane type (lanes_def.h) and included once
+ * per instruction set. Lanes are entries; the method is described in cc_kernel.c. */
+
+/* a b + c: the hardware fma where the variant has one, else a multiply and an add (the search
+ * needs no particular rounding: the final distance is recomputed in scalar code) */
+#if W == 1
+#define ck_madd(a, b, c) vadd(vmul(a, b), c)
+#else
+#define ck_madd(a, b, c) vfma(a, b, c)
+#endif
+
+/* The ring of one lane group (columns of the block, see CK_C_*). */
+typedef struct KN(ck_ring) {
+    V alx, aly, alz, bex, bey, bez, gax, gay, gaz, ha, hb, hc, s, R2, W1, Hh, Hc0, Lw;
+} KN(ck_ring);
+
+CD_INLINE void KN(ck_load)(const ck_block *b, int g, KN(ck_ring) *r)
+{
+    V *f = &r->alx;
+    for (int k = 0; k < CK_NC; k++) f[k] = vld(&b->col[k][g]);
+}
+
+/* F at (c, s): (|w| - s)^2 + h^2. At a hull point (c, s scaled by 1/cos) this is F_ext of the
+ * header comment. */
+CD_INLINE V KN(ck_f)(const KN(ck_ring) *r, V c, V s)
+{
+    V wx = ck_madd(r->alx, c, ck_madd(r->bex, s, r->gax));
+    V wy = ck_madd(r->aly, c, ck_madd(r->bey, s, r->gay));
+    V wz = ck_madd(r->alz, c, ck_madd(r->bez, s, r->gaz));
+    V dr = vsub(vsqrt(ck_madd(wx, wx, ck_madd(wy, wy, vmul(wz, wz)))), r->s);
+    V h = ck_madd(r->ha, c, ck_madd(r->hb, s, r->hc));
+    return ck_madd(dr, dr, vmul(h, h));
+}
+
+/* F'/2, F''/2 (ring_eval.h), rho, rho'' and the rounding bound e2 of F''/2 at (c, s). */
+CD_INLINE void KN(ck_f2)(const KN(ck_ring) *r, V c, V s, V *F1, V *F2, V *rho, V *rho2, V *e2)
+{
+    V wx = ck_madd(r->alx, c, ck_madd(r->bex, s, r->gax));
+    V wy = ck_madd(r->aly, c, ck_madd(r->bey, s, r->gay));
+    V wz = ck_madd(r->alz, c, ck_madd(r->bez, s, r->gaz));
+    V w1x = vsub(vmul(r->bex, c), vmul(r->alx, s));
+    V w1y = vsub(vmul(r->bey, c), vmul(r->aly, s));
+    V w1z = vsub(vmul(r->bez, c), vmul(r->alz, s));
+    V Q = ck_madd(wx, wx, ck_madd(wy, wy, vmul(wz, wz)));
+    V g = ck_madd(wx, w1x, ck_madd(wy, w1y, vmul(wz, w1z)));
+    V g1 = vsub(vadd(ck_madd(w1x, w1x, ck_madd(w1y, w1y, vmul(w1z, w1z))),
+                     ck_madd(wx, r->gax, ck_madd(wy, r->gay, vmul(wz, r->gaz)))),
+                Q);
+    V h = ck_madd(r->ha, c, ck_madd(r->hb, s, r->hc));
+    V h1 = vsub(vmul(r->hb, c), vmul(r->ha, s));
+    V h2 = vsub(r->hc, h);
+    V rh = vsqrt(Q), dr = vsub(rh, r->s);
+    V rp = vdiv(g, rh), rpp = vdiv(vsub(g1, vmul(rp, rp)), rh);
+    *F1 = ck_madd(dr, rp, vmul(h, h1));
+    *F2 = vadd(ck_madd(rp, rp, vmul(dr, rpp)), ck_madd(h1, h1, vmul(h, h2)));
+    *rho = rh;
+    *rho2 = rpp;
+    V W1 = r->W1, W12 = vmul(W1, W1), Lw = r->Lw;
+    V t = vdiv(vmul(vadd(Lw, vabs(dr)), vadd(vadd(vabs(g1), W12), vmul(Lw, W1))), rh);
+    *e2 = vmul(vset(CD_CCK_F2_ULPS * DBL_EPSILON),
+               vadd(vadd(W12, t), vadd(vmul(r->Hh, r->Hh), vmul(vadd(vabs(h), Lw), r->Hh))));
+}
+
+/* (c, s) rotated by the angle whose cosine and sine are (co, si). */
+CD_INLINE void KN(ck_rot)(V c, V s, double co, double si, V *cr, V *sr)
+{
+    *cr = vsub(vmul(c, vset(co)), vmul(s, vset(si)));
+    *sr = vadd(vmul(s, vset(co)), vmul(c, vset(si)));
+}
+
+/* F convex on [t - h, t + h]: F''/2 at both ends less its rounding exceeds M3 h, M3 >= |F'''/2|
+ * on the interval. The bounds are the engine's (convex(), cc_engine.c), with |rho''| bounded
+ * from its end values instead of globally: with rho_lo <= rho <= rho_hi there (rho is
+ * W1-Lipschitz), |w'|, |w''|, |w'''| <= W1 and X = max |rho''| on the interval,
+ *     |rho'''| <= B3(X) = (3 W1^2 + rho_hi W1 + 3 W1 X) / rho_lo,
+ * and every point is within h of an end, so X <= X0 + h B3(X), X0 the larger |rho''| at the
+ * ends: X <= (X0 + h (3 W1^2 + rho_hi W1) / rho_lo) / (1 - 3 W1 h / rho_lo) when the divisor is
+ * positive. Then |F'''/2| <= 3 W1 X + (rho_hi + s) B3(X) + Hh (4 Hh + Hc0). */
+CD_INLINE M KN(ck_convex)(const KN(ck_ring) *r, V c, V s, int l)
+{
+    V ca, sa, cb, sb, F1, F2a, F2b, ra, rb, xa, xb, ea, eb;
+    KN(ck_rot)(c, s, ck_tab.end_c[l], -ck_tab.end_s[l], &ca, &sa);
+    KN(ck_rot)(c, s, ck_tab.end_c[l], ck_tab.end_s[l], &cb, &sb);
+    KN(ck_f2)(r, ca, sa, &F1, &F2a, &ra, &xa, &ea);
+    KN(ck_f2)(r, cb, sb, &F1, &F2b, &rb, &xb, &eb);
+    V h = vset(ck_tab.half[l]), W1 = r->W1, hw = vmul(W1, h), three = vset(3.0);
+    V rlo = vsub(vmul(vset(0.5), vadd(ra, rb)), hw), rhi = vadd(vmax(ra, rb), hw);
+    V base = vdiv(vmul(W1, vadd(vmul(three, W1), rhi)), rlo); /* (3 W1^2 + rho_hi W1) / rho_lo */
+    V k = vsub(vset(1.0), vdiv(vmul(three, hw), rlo));
+    /* X0 with a margin for the rounding of rho'' (relative 1e-9, and 1e-9 of base) */
+    V X0 = vadd(vmul(vmax(vabs(xa), vabs(xb)), vset(1.0 + 1e-9)), vmul(base, vset(1e-9)));
+    V X = vdiv(ck_madd(h, base, X0), k);
+    V B3 = vadd(base, vdiv(vmul(vmul(three, W1), X), rlo));
+    V M3 = vadd(vadd(vmul(vmul(three, W1), X), vmul(vadd(rhi, r->s), B3)),
+                vmul(r->Hh, vadd(vmul(vset(4.0), r->Hh), r->Hc0)));
+    V lhs = vmin(vsub(F2a, ea), vsub(F2b, eb));
+    return mand(mand(vgt(rlo, vset(0.0)), vgt(k, vset(0.0))), vgt(lhs, vmul(vmul(M3, h), vset(1.0 + 1e-12))));
+}
+
+/* cos and sin of |d| <= 0.2 by their Taylor series (error below 1e-22). */
+CD_INLINE void KN(ck_sincos_small)(V d, V *c, V *s)
+{
+    /* coefficients of d^(2k), k = 7 .. 0 */
+    static const double fs[8] = {-1.0 / 1307674368000.0, 1.0 / 6227020800.0, -1.0 / 39916800.0, 1.0 / 362880.0,
+                                 -1.0 / 5040.0, 1.0 / 120.0, -1.0 / 6.0, 1.0};
+    static const double fc[8] = {-1.0 / 87178291200.0, 1.0 / 479001600.0, -1.0 / 3628800.0, 1.0 / 40320.0,
+                                 -1.0 / 720.0, 1.0 / 24.0, -1.0 / 2.0, 1.0};
+    V d2 = vmul(d, d), ps = vset(fs[0]), pc = vset(fc[0]);
+    for (int k = 1; k < 8; k++) {
+        ps = ck_madd(ps, d2, vset(fs[k]));
+        pc = ck_madd(pc, d2, vset(fc[k]));
+    }
+    *s = vmul(ps, d);
+    *c = pc;
+}
+
+/* The search for the W entries of the block from g: angles t[] of the closest points of the
+ * entries it certifies; returns the lane mask (bit k: entry g + k) of those it does not. */
+static unsigned KN(ck_search)(ck_block *b, int g)
+{
+    KN(ck_ring) r;
+    KN(ck_load)(b, g, &r);
+    V margin = vset(CD_CCK_PRUNE_MARGIN);
+
+    /* Grid: F at the CK_GRID angles, the best one. */
+    V Fg[CK_GRID], bestF = vset(INFINITY), bestJ = vset(0.0);
+    for (int j = 0; j < CK_GRID; j++) {
+        Fg[j] = KN(ck_f)(&r, vset(ck_tab.grid_c[j]), vset(ck_tab.grid_s[j]));
+        M lt = vlt(Fg[j], bestF);
+        bestF = vsel(lt, Fg[j], bestF);
+        bestJ = vsel(lt, vset((double)j), bestJ);
+    }
+    /* Every interval outside the basin (the two around the best angle) pruned by its concave
+     * hull bound; the basin's centre and the F at its ends. */
+    M fail = mfalse();
+    V thr = vadd(bestF, margin), R2T = vmul(r.R2, vset(ck_tab.grid_tan2));
+    V c = vset(0.0), s = vset(0.0), Fl = vset(0.0), Fr = vset(0.0);
+    for (int j = 0; j < CK_GRID; j++) {
+        int jn = (j + 1) % CK_GRID, jp = (j + CK_GRID - 1) % CK_GRID;
+        V lb = vmin(vmin(Fg[j], Fg[jn]),
+                    vsub(KN(ck_f)(&r, vset(ck_tab.hull_c[j]), vset(ck_tab.hull_s[j])), R2T));
+        M at = veq(vset((double)j), bestJ), before = veq(vset((double)jn), bestJ);
+        fail = mor(fail, mandn(mor(at, before), mnot(vgt(lb, thr))));
+        c = vsel(at, vset(ck_tab.grid_c[j]), c);
+        s = vsel(at, vset(ck_tab.grid_s[j]), s);
+        Fl = vsel(before, Fg[j], Fl);
+        Fr = vsel(veq(vset((double)jp), bestJ), Fg[j], Fr);
+    }
+    V t = vmul(bestJ, vset(2.0 * M_PI / CK_GRID));
+
+    /* Zoom: certify the basin [t - h, t + h] convex, else split it in 8, keep the two
+     * subintervals around the best point, prune the other six. */
+    M done = mfalse();
+    V hdone = vset(0.0);
+    for (int l = 0; l < CK_LEVELS; l++) {
+        M active = mnot(mor(done, fail));
+        if (!many(active)) break;
+        M conv = l < CK_FIRST_CONVEX ? mfalse() : mand(active, KN(ck_convex)(&r, c, s, l));
+        done = mor(done, conv);
+        hdone = vsel(conv, vset(ck_tab.half[l]), hdone);
+        active = mandn(conv, active);
+        if (!many(active) || l + 1 == CK_LEVELS) break;
+        V Fk[9], Ck[9], Sk[9];
+        Fk[0] = Fl;
+        Fk[4] = bestF;
+        Fk[8] = Fr;
+        Ck[4] = c;
+        Sk[4] = s;
+        Ck[0] = Ck[8] = Sk[0] = Sk[8] = vset(0.0);
+        for (int k = 1; k <= 3; k++) {
+            KN(ck_rot)(c, s, ck_tab.sub_c[l][k], ck_tab.sub_s[l][k], &Ck[4 + k], &Sk[4 + k]);
+            KN(ck_rot)(c, s, ck_tab.sub_c[l][k], -ck_tab.sub_s[l][k], &Ck[4 - k], &Sk[4 - k]);
+            Fk[4 + k] = KN(ck_f)(&r, Ck[4 + k], Sk[4 + k]);
+            Fk[4 - k] = KN(ck_f)(&r, Ck[4 - k], Sk[4 - k]);
+        }
+        V nF = Fk[4], kb = vset(4.0);
+        for (int k = 0; k < 9; k++) {
+            M lt = vlt(Fk[k], nF);
+            nF = vsel(lt, Fk[k], nF);
+            kb = vsel(lt, vset((double)k), kb);
+        }
+        M edge = mor(veq(kb, vset(0.0)), veq(kb, vset(8.0)));
+        V nthr = vadd(nF, margin), R2t = vmul(r.R2, vset(ck_tab.sub_tan2[l]));
+        M bad = edge;
+        for (int i = 0; i < 8; i++) {
+            int m = i < 4 ? 3 - i : i - 4; /* hull point of [i, i+1] at (2 (i - 4) + 1) h / 8 */
+            double sg = i < 4 ? -1.0 : 1.0;
+            V hc, hs;
+            KN(ck_rot)(c, s, ck_tab.hull_sub_c[l][m], sg * ck_tab.hull_sub_s[l][m], &hc, &hs);
+            V lb = vmin(vmin(Fk[i], Fk[i + 1]), vsub(KN(ck_f)(&r, hc, hs), R2t));
+            M keep = mor(veq(vset((double)i), kb), veq(vset((double)(i + 1)), kb));
+            bad = mor(bad, mandn(keep, mnot(vgt(lb, nthr))));
+        }
+        fail = mor(fail, mand(active, bad));
+        active = mandn(bad, active);
+        V nc = c, ns = s, nl = Fl, nr = Fr;
+        for (int k = 1; k < 8; k++) {
+            M at = veq(vset((double)k), kb);
+            nc = vsel(at, Ck[k], nc);
+            ns = vsel(at, Sk[k], ns);
+            nl = vsel(at, Fk[k - 1], nl);
+            nr = vsel(at, Fk[k + 1], nr);
+        }
+        c = vsel(active, nc, c);
+        s = vsel(active, ns, s);
+        Fl = vsel(active, nl, Fl);
+        Fr = vsel(active, nr, Fr);
+        bestF = vsel(active, nF, bestF);
+        t = vsel(active, vadd(t, vmul(vsub(kb, vset(4.0)), vset(0.25 * ck_tab.half[l]))), t);
+    }
+    fail = mor(fail, mnot(done));
+
+    /* Newton on F' in the certified basin (one minimum there, F'' > 0), kept in [-h, h]. A lane
+     * settles after its first step below CD_CCK_NEWTON_STEP (taken) and keeps its angle, so
+     * that its answer does not depend on the other lanes of its group. */
+    V d = vset(0.0), lo = vneg(hdone);
+    M settled = fail;
+    for (int it = 0; it < CK_NEWTON_MAX; it++) {
+        V cd, sd, cn, sn, F1, F2, rho, rho2, e2;
+        KN(ck_sincos_small)(d, &cd, &sd);
+        cn = vsub(vmul(c, cd), vmul(s, sd));
+        sn = vadd(vmul(s, cd), vmul(c, sd));
+        KN(ck_f2)(&r, cn, sn, &F1, &F2, &rho, &rho2, &e2);
+        V nd = vmin(vmax(vsub(d, vdiv(F1, F2)), lo), hdone);
+        M small = vle(vabs(vsub(nd, d)), vset(CD_CCK_NEWTON_STEP));
+        d = vsel(settled, d, nd);
+        settled = mor(settled, small);
+        M open = mnot(settled);
+        if (!many(open)) break;
+        if (it + 1 == CK_NEWTON_MAX) fail = mor(fail, open);
+    }
+    vst(&b->t[g], vadd(t, d));
+    return mbits(fail);
+}
+
+#undef ck_madd
