@@ -52,6 +52,7 @@ typedef struct ck_block {
     double col[CK_NC][64];
     double t[64];
     cdist__cc_problem pb[64];
+    cdist__ring ring[64];
     int e[64];
 } ck_block;
 
@@ -129,8 +130,8 @@ static int ck_setup(const cdist__job *job, double unit_tol, size_t i, ck_block *
     cdist__cc_problem *p = &b->pb[k];
     if (!cdist__cc_prepare(&a, &o, p)) return 0;
     cdist__circle_basis(&p->A); /* only A's basis is read */
-    cdist__ring rg;
-    cdist__ring_init(&rg, p->A.r, p->A.u, p->A.v, p->CB, p->B.n);
+    cdist__ring_init(&b->ring[k], p->A.r, p->A.u, p->A.v, p->CB, p->B.n);
+    const cdist__ring rg = b->ring[k];
     const double v[CK_NC] = {rg.al.x, rg.al.y, rg.al.z, rg.be.x, rg.be.y, rg.be.z, rg.ga.x, rg.ga.y, rg.ga.z,
                              rg.ha, rg.hb, rg.hc, p->B.r, p->A.r * p->A.r, v_norm(rg.al) + v_norm(rg.be),
                              fabs(rg.ha) + fabs(rg.hb), fabs(rg.hc), 2 * p->A.r + v_norm(p->CB)};
@@ -144,10 +145,10 @@ static double ck_distance(const ck_block *b, int k)
     const cdist__cc_problem *p = &b->pb[k];
     double c, s, rho;
     sincos(b->t[k], &s, &c);
-    vec3 P, w;
-    double d2 = cdist__cc_point_d2(p->A.r, p->A.u, p->A.v, p->CB, p->B.n, p->B.r, c, s, &P, &w, &rho);
+    vec3 w;
+    double d2 = cdist__cc_point_d2(&b->ring[k], p->B.r, c, s, &w, &rho);
     double u = p->unscale;
-    return ldexp(sqrt(d2 * u * u), b->e[k]);
+    return sqrt(d2 * u * u) * cdist__pow2(b->e[k]); /* = ldexp(., e): 2^e is normal (CD_SCALE_MAX_EXP) */
 }
 
 typedef unsigned (*ck_search_fn)(ck_block *b, int g);

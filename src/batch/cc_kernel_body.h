@@ -35,7 +35,7 @@ CD_INLINE V KN(ck_f)(const KN(ck_ring) *r, V c, V s)
 }
 
 /* F'/2, F''/2 (ring_eval.h), rho, rho'' and the rounding bound e2 of F''/2 at (c, s). */
-CD_INLINE void KN(ck_f2)(const KN(ck_ring) *r, V c, V s, V *F1, V *F2, V *rho, V *rho2, V *e2)
+CD_INLINE void KN(ck_f2)(const KN(ck_ring) *r, V c, V s, V *F0, V *F1, V *F2, V *rho, V *rho2, V *e2)
 {
     V wx = ck_madd(r->alx, c, ck_madd(r->bex, s, r->gax));
     V wy = ck_madd(r->aly, c, ck_madd(r->bey, s, r->gay));
@@ -53,6 +53,7 @@ CD_INLINE void KN(ck_f2)(const KN(ck_ring) *r, V c, V s, V *F1, V *F2, V *rho, V
     V h2 = vsub(r->hc, h);
     V rh = vsqrt(Q), dr = vsub(rh, r->s);
     V rp = vdiv(g, rh), rpp = vdiv(vsub(g1, vmul(rp, rp)), rh);
+    *F0 = ck_madd(dr, dr, vmul(h, h));
     *F1 = ck_madd(dr, rp, vmul(h, h1));
     *F2 = vadd(ck_madd(rp, rp, vmul(dr, rpp)), ck_madd(h1, h1, vmul(h, h2)));
     *rho = rh;
@@ -80,11 +81,11 @@ CD_INLINE void KN(ck_rot)(V c, V s, double co, double si, V *cr, V *sr)
  * positive. Then |F'''/2| <= 3 W1 X + (rho_hi + s) B3(X) + Hh (4 Hh + Hc0). */
 CD_INLINE M KN(ck_convex)(const KN(ck_ring) *r, V c, V s, int l)
 {
-    V ca, sa, cb, sb, F1, F2a, F2b, ra, rb, xa, xb, ea, eb;
+    V ca, sa, cb, sb, F0, F1, F2a, F2b, ra, rb, xa, xb, ea, eb;
     KN(ck_rot)(c, s, ck_tab.end_c[l], -ck_tab.end_s[l], &ca, &sa);
     KN(ck_rot)(c, s, ck_tab.end_c[l], ck_tab.end_s[l], &cb, &sb);
-    KN(ck_f2)(r, ca, sa, &F1, &F2a, &ra, &xa, &ea);
-    KN(ck_f2)(r, cb, sb, &F1, &F2b, &rb, &xb, &eb);
+    KN(ck_f2)(r, ca, sa, &F0, &F1, &F2a, &ra, &xa, &ea);
+    KN(ck_f2)(r, cb, sb, &F0, &F1, &F2b, &rb, &xb, &eb);
     V h = vset(ck_tab.half[l]), W1 = r->W1, hw = vmul(W1, h), three = vset(3.0);
     V rlo = vsub(vmul(vset(0.5), vadd(ra, rb)), hw), rhi = vadd(vmax(ra, rb), hw);
     V base = vdiv(vmul(W1, vadd(vmul(three, W1), rhi)), rlo); /* (3 W1^2 + rho_hi W1) / rho_lo */
@@ -132,17 +133,17 @@ static unsigned KN(ck_search)(ck_block *b, int g)
         bestF = vsel(lt, Fg[j], bestF);
         bestJ = vsel(lt, vset((double)j), bestJ);
     }
-    /* Every interval outside the basin (the two around the best angle) pruned by its concave
-     * hull bound; the basin's centre and the F at its ends. */
+    /* The concave hull bound of every interval outside the basin (the two around the best
+     * angle), the smallest kept in minlb; the basin's centre and the F at its ends. */
     M fail = mfalse();
-    V thr = vadd(bestF, margin), R2T = vmul(r.R2, vset(ck_tab.grid_tan2));
+    V minlb = vset(INFINITY), R2T = vmul(r.R2, vset(ck_tab.grid_tan2));
     V c = vset(0.0), s = vset(0.0), Fl = vset(0.0), Fr = vset(0.0);
     for (int j = 0; j < CK_GRID; j++) {
         int jn = (j + 1) % CK_GRID, jp = (j + CK_GRID - 1) % CK_GRID;
         V lb = vmin(vmin(Fg[j], Fg[jn]),
                     vsub(KN(ck_f)(&r, vset(ck_tab.hull_c[j]), vset(ck_tab.hull_s[j])), R2T));
         M at = veq(vset((double)j), bestJ), before = veq(vset((double)jn), bestJ);
-        fail = mor(fail, mandn(mor(at, before), mnot(vgt(lb, thr))));
+        minlb = vsel(mor(at, before), minlb, vmin(minlb, lb));
         c = vsel(at, vset(ck_tab.grid_c[j]), c);
         s = vsel(at, vset(ck_tab.grid_s[j]), s);
         Fl = vsel(before, Fg[j], Fl);
@@ -151,7 +152,7 @@ static unsigned KN(ck_search)(ck_block *b, int g)
     V t = vmul(bestJ, vset(2.0 * M_PI / CK_GRID));
 
     /* Zoom: certify the basin [t - h, t + h] convex, else split it in 8, keep the two
-     * subintervals around the best point, prune the other six. */
+     * subintervals around the best point and add the hull bounds of the other six to minlb. */
     M done = mfalse();
     V hdone = vset(0.0);
     for (int l = 0; l < CK_LEVELS; l++) {
@@ -182,8 +183,7 @@ static unsigned KN(ck_search)(ck_block *b, int g)
             kb = vsel(lt, vset((double)k), kb);
         }
         M edge = mor(veq(kb, vset(0.0)), veq(kb, vset(8.0)));
-        V nthr = vadd(nF, margin), R2t = vmul(r.R2, vset(ck_tab.sub_tan2[l]));
-        M bad = edge;
+        V R2t = vmul(r.R2, vset(ck_tab.sub_tan2[l]));
         for (int i = 0; i < 8; i++) {
             int m = i < 4 ? 3 - i : i - 4; /* hull point of [i, i+1] at (2 (i - 4) + 1) h / 8 */
             double sg = i < 4 ? -1.0 : 1.0;
@@ -191,10 +191,10 @@ static unsigned KN(ck_search)(ck_block *b, int g)
             KN(ck_rot)(c, s, ck_tab.hull_sub_c[l][m], sg * ck_tab.hull_sub_s[l][m], &hc, &hs);
             V lb = vmin(vmin(Fk[i], Fk[i + 1]), vsub(KN(ck_f)(&r, hc, hs), R2t));
             M keep = mor(veq(vset((double)i), kb), veq(vset((double)(i + 1)), kb));
-            bad = mor(bad, mandn(keep, mnot(vgt(lb, nthr))));
+            minlb = vsel(mandn(keep, active), vmin(minlb, lb), minlb);
         }
-        fail = mor(fail, mand(active, bad));
-        active = mandn(bad, active);
+        fail = mor(fail, mand(active, edge));
+        active = mandn(edge, active);
         V nc = c, ns = s, nl = Fl, nr = Fr;
         for (int k = 1; k < 8; k++) {
             M at = veq(vset((double)k), kb);
@@ -218,11 +218,11 @@ static unsigned KN(ck_search)(ck_block *b, int g)
     V d = vset(0.0), lo = vneg(hdone);
     M settled = fail;
     for (int it = 0; it < CK_NEWTON_MAX; it++) {
-        V cd, sd, cn, sn, F1, F2, rho, rho2, e2;
+        V cd, sd, cn, sn, F0, F1, F2, rho, rho2, e2;
         KN(ck_sincos_small)(d, &cd, &sd);
         cn = vsub(vmul(c, cd), vmul(s, sd));
         sn = vadd(vmul(s, cd), vmul(c, sd));
-        KN(ck_f2)(&r, cn, sn, &F1, &F2, &rho, &rho2, &e2);
+        KN(ck_f2)(&r, cn, sn, &F0, &F1, &F2, &rho, &rho2, &e2);
         V nd = vmin(vmax(vsub(d, vdiv(F1, F2)), lo), hdone);
         M small = vle(vabs(vsub(nd, d)), vset(CD_CCK_NEWTON_STEP));
         d = vsel(settled, d, nd);
@@ -231,6 +231,11 @@ static unsigned KN(ck_search)(ck_block *b, int g)
         if (!many(open)) break;
         if (it + 1 == CK_NEWTON_MAX) fail = mor(fail, open);
     }
+    /* Certified: every region outside the final basin has its lower bound above F there. */
+    V cd, sd;
+    KN(ck_sincos_small)(d, &cd, &sd);
+    V Fs = KN(ck_f)(&r, vsub(vmul(c, cd), vmul(s, sd)), vadd(vmul(s, cd), vmul(c, sd)));
+    fail = mor(fail, mnot(vgt(minlb, vadd(Fs, margin))));
     vst(&b->t[g], vadd(t, d));
     return mbits(fail);
 }

@@ -329,8 +329,8 @@ void cdist__cc_pair_at(const cdist__cc_frame *f, double t, cdist__cc_sink *k)
 {
     double c, s;
     sincos(t, &s, &c);
-    vec3 P, w;
-    double rho, d2 = cdist__cc_point_d2(f->R, f->u, f->v, f->C, f->m, f->s, c, s, &P, &w, &rho);
+    vec3 P = v_axpy(v_scale(f->R * c, f->u), f->R * s, f->v), w;
+    double rho, d2 = cdist__cc_point_d2(&f->rg, f->s, c, s, &w, &rho);
     vec3 dir;
     double tb;
     if (rho > 0) {
@@ -918,63 +918,48 @@ int cdist__cc_parallel_critical(const cdist__cc_frame *f, double *t)
 
 /* ---- the distance at an angle, in double-double (cdist__cc_point_d2) ---- */
 
-/* x = hi + lo, |lo| <= ulp(hi) / 2 */
+/* x = hi + lo with |lo| small against |hi| (not renormalised: every sum below is of a few
+ * terms whose low parts stay far below an ulp of the high part) */
 typedef struct cc_dd {
     double hi, lo;
 } cc_dd;
 
-CD_INLINE cc_dd dd_norm(double hi, double lo)
+/* a c + b sn + g: the products exact, the two sums error-free, their errors in lo */
+CD_INLINE cc_dd dd_trig(double a, double b, double g, double c, double sn)
 {
-    cc_dd r;
-    r.hi = hi + lo;
-    r.lo = lo - (r.hi - hi);
-    return r;
-}
-CD_INLINE cc_dd dd_add(cc_dd a, cc_dd b)
-{
-    double e, s = cdist__two_sum(a.hi, b.hi, &e);
-    return dd_norm(s, e + (a.lo + b.lo));
-}
-CD_INLINE cc_dd dd_neg(cc_dd a) { return (cc_dd){-a.hi, -a.lo}; }
-CD_INLINE cc_dd dd_mul_d(cc_dd a, double b)
-{
-    double e, p = cdist__two_prod(a.hi, b, &e);
-    return dd_norm(p, e + a.lo * b);
-}
-CD_INLINE cc_dd dd_sqr(cc_dd a)
-{
-    double e, p = cdist__two_prod(a.hi, a.hi, &e);
-    return dd_norm(p, e + 2.0 * a.hi * a.lo);
+    double e1, e2, e3, e4;
+    double p = cdist__two_prod(a, c, &e1), q = cdist__two_prod(b, sn, &e2);
+    double s1 = cdist__two_sum(p, q, &e3), s2 = cdist__two_sum(s1, g, &e4);
+    return (cc_dd){s2, (e1 + e2) + (e3 + e4)};
 }
 
-CD_FMA_CLONES double cdist__cc_point_d2(double R, vec3 u, vec3 v, vec3 C, vec3 m, double s, double c, double sn,
-                                        vec3 *P, vec3 *w, double *rho)
+/* x^2 + acc */
+CD_INLINE cc_dd dd_sqr_add(cc_dd x, cc_dd acc)
 {
-    cc_dd a, b;
-    a.hi = cdist__two_prod(R, c, &a.lo);
-    b.hi = cdist__two_prod(R, sn, &b.lo);
-    const double uu[3] = {u.x, u.y, u.z}, vv[3] = {v.x, v.y, v.z}, cc[3] = {C.x, C.y, C.z};
-    cc_dd p[3], d[3];
-    for (int i = 0; i < 3; i++) {
-        p[i] = dd_add(dd_mul_d(a, uu[i]), dd_mul_d(b, vv[i]));
-        d[i] = dd_add(p[i], (cc_dd){-cc[i], 0});
-    }
-    /* w = m x D, h = m . D */
-    cc_dd wx = dd_add(dd_mul_d(d[2], m.y), dd_neg(dd_mul_d(d[1], m.z)));
-    cc_dd wy = dd_add(dd_mul_d(d[0], m.z), dd_neg(dd_mul_d(d[2], m.x)));
-    cc_dd wz = dd_add(dd_mul_d(d[1], m.x), dd_neg(dd_mul_d(d[0], m.y)));
-    cc_dd h = dd_add(dd_add(dd_mul_d(d[0], m.x), dd_mul_d(d[1], m.y)), dd_mul_d(d[2], m.z));
-    cc_dd Q = dd_add(dd_add(dd_sqr(wx), dd_sqr(wy)), dd_sqr(wz));
-    /* rho = sqrt(Q): one Newton correction of the double root */
-    double r = sqrt(Q.hi), rl = 0.0;
+    double e1, e2, p = cdist__two_prod(x.hi, x.hi, &e1);
+    double s = cdist__two_sum(acc.hi, p, &e2);
+    return (cc_dd){s, acc.lo + e2 + e1 + 2.0 * x.hi * x.lo};
+}
+
+CD_FMA_CLONES double cdist__cc_point_d2(const cdist__ring *rg, double s, double c, double sn, vec3 *w, double *rho)
+{
+    cc_dd wx = dd_trig(rg->al.x, rg->be.x, rg->ga.x, c, sn);
+    cc_dd wy = dd_trig(rg->al.y, rg->be.y, rg->ga.y, c, sn);
+    cc_dd wz = dd_trig(rg->al.z, rg->be.z, rg->ga.z, c, sn);
+    cc_dd h = dd_trig(rg->ha, rg->hb, rg->hc, c, sn);
+    cc_dd Q = dd_sqr_add(wz, dd_sqr_add(wy, dd_sqr_add(wx, (cc_dd){0, 0})));
+    /* rho = sqrt(Q) with one Newton correction of the double root */
+    double q = Q.hi + Q.lo, ql = Q.lo - (q - Q.hi);
+    if (!(q > 0)) q = ql = 0.0; /* on B's axis: the low parts may tip Q below 0 */
+    double r = sqrt(q), rl = 0.0;
     if (r > 0) {
         double e, r2 = cdist__two_prod(r, r, &e);
-        rl = (((Q.hi - r2) - e) + Q.lo) / (2.0 * r);
+        rl = (((q - r2) - e) + ql) / (2.0 * r);
     }
-    cc_dd dr = dd_add(dd_norm(r, rl), (cc_dd){-s, 0});
-    cc_dd d2 = dd_add(dd_sqr(dr), dd_sqr(h));
-    *P = v3(p[0].hi + p[0].lo, p[1].hi + p[1].lo, p[2].hi + p[2].lo);
+    double e, dr = cdist__two_sum(r, -s, &e);
+    cc_dd d2 = dd_sqr_add(h, dd_sqr_add((cc_dd){dr, e + rl}, (cc_dd){0, 0}));
     *w = v3(wx.hi + wx.lo, wy.hi + wy.lo, wz.hi + wz.lo);
     *rho = r + rl;
-    return d2.hi + d2.lo;
+    /* >= 0: the dropped squares of the low parts can tip a zero distance below 0 */
+    return cdist__fmax(0.0, d2.hi + d2.lo);
 }

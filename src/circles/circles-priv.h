@@ -80,14 +80,13 @@ static inline void cdist__cc_eval_lean(const cdist__cc_frame *f, double t, doubl
     p->g = v.g;
 }
 
-/* The squared distance from A's point P at (c, sn) = (cos t, sin t) to B (centre C, unit
- * normal m, radius s) as the robust method reports it; w = m x (P - C), rho = |w| (cc_engine.c).
- * The one formula of cdist__cc_pair_at and of the batch kernel's final distance
- * (src/batch/cc_kernel.c). Evaluated in double-double: its rounding (well below an ulp of the
+/* The squared distance from A's point at (c, sn) = (cos t, sin t) to B (radius s) as the robust
+ * method reports it, from the ring rg of the pair (ring_eval.h); w = m x (P - C), rho = |w|
+ * (cc_engine.c). The one formula of cdist__cc_pair_at and of the batch kernel's final distance
+ * (src/batch/cc_kernel.c). Evaluated in double-double: its rounding (far below an ulp of the
  * scale) then leaves the answer depending on the angle only to second order at a minimum, so
- * two searches settling on the same minimum report the same distance to the last ulp or so. */
-double cdist__cc_point_d2(double R, vec3 u, vec3 v, vec3 C, vec3 m, double s, double c, double sn, vec3 *P, vec3 *w,
-                          double *rho);
+ * two searches settling on the same minimum report the same distance to an ulp. */
+double cdist__cc_point_d2(const cdist__ring *rg, double s, double c, double sn, vec3 *w, double *rho);
 
 /* The frame of A (parameterised, centre at the origin) and B (centre C relative to A's). */
 void cdist__cc_frame_init(cdist__cc_frame *f, const cdist__circle *A, vec3 C, const cdist__circle *B);
