@@ -3,12 +3,12 @@
  * method's F (src/circles/cc_engine.c) in 8 lanes (AVX-512), 4 lanes (AVX2) or 1, one entry per
  * lane, and the distance recomputed at the angle found by the robust method's own formula.
  *
- * Per entry (scalar): the single query's validation (its fast path, cdist__circle_fast, and the
- * basis of the parameterised circle),
- * framing (cdist__circles_frame) and problem (cdist__cc_prepare: A the parameterised circle, B
- * the other, scaled to L in [0.5, 1)); the ring coefficients of F(t), the squared distance from
- * A's point at angle t to B (ring_eval.h).
- * Per lane group (cc_kernel_body.h):
+ * Per lane group, the set-up: the single query's validation (the fast path of
+ * cdist__check_circle), framing (cdist__circles_frame), problem (cdist__cc_prepare: A the
+ * parameterised circle, B the other, scaled to L in [0.5, 1)) and ring coefficients of F(t), the
+ * squared distance from A's point at angle t to B (cdist__ring_init), operation by operation, so
+ * that F is the single query's F to the last bit.
+ * Then the search (cc_kernel_body.h):
  *   1. Grid: F at CK_GRID equally spaced angles. F extends to a concave function G of
  *      (cos t, sin t) (cc_engine.c), so on an arc of width w, F >= min(F(a), F(b), G(T)) with T
  *      the tangents' intersection, and G(T) = F_ext(T) - R^2 tan^2(w / 2) where F_ext is the
@@ -39,21 +39,19 @@
 #include "circles/circles-priv.h"
 #include "lanes.h"
 
-#define CK_GRID 32     /* grid angles (97% of random pairs prune every interval outside the basin) */
+#define CK_GRID 48     /* grid angles (97% of random pairs prune every interval outside the basin) */
 #define CK_LEVELS 7    /* basin half-widths 2 pi / 32 * 4^-l, l < 7: down to 5e-5 rad */
 #define CK_NEWTON_MAX 8 /* from a certified basin Newton settles in 3 to 5 steps */
 #define CK_FIRST_CONVEX 2 /* the level of the first convexity check (measured: below it < 7% pass) */
 
-/* The columns of a block: the ring (al, be, ga, ha, hb, hc), B's radius s, R^2, and the bounds
- * W1 = |al| + |be| >= |w'|, Hh = |ha| + |hb|, Hc0 = |hc|, Lw = 2 R + |C| of convex(). */
+/* The columns of a block: the ring (al, be, ga, ha, hb, hc), B's radius s, R^2, the bounds
+ * W1 = |al| + |be| >= |w'|, Hh = |ha| + |hb|, Hc0 = |hc|, Lw = 2 R + |C| of convex(), and the
+ * two factors scaling the distance back (cdist__cc_prepare's unscale, 2^e of the frame). */
 enum { CK_C_ALX, CK_C_ALY, CK_C_ALZ, CK_C_BEX, CK_C_BEY, CK_C_BEZ, CK_C_GAX, CK_C_GAY, CK_C_GAZ, CK_C_HA, CK_C_HB,
-       CK_C_HC, CK_C_S, CK_C_R2, CK_C_W1, CK_C_HH, CK_C_HC0, CK_C_LW, CK_NC };
+       CK_C_HC, CK_C_S, CK_C_R2, CK_C_W1, CK_C_HH, CK_C_HC0, CK_C_LW, CK_C_UNSC, CK_C_UP, CK_NC };
 typedef struct ck_block {
     double col[CK_NC][64];
     double t[64];
-    cdist__cc_problem pb[64];
-    cdist__ring ring[64];
-    int e[64];
 } ck_block;
 
 /* Angles of the search, computed once (ck_tables_init). */
@@ -97,6 +95,7 @@ static void ck_tables_init(void)
 
 #define CD_LANES 1
 #include "lanes_def.h"
+#include "lanes_vec.h"
 #include "cc_kernel_body.h"
 #include "lanes_undef.h"
 
@@ -104,6 +103,7 @@ static void ck_tables_init(void)
 CD_LANES_TARGET_PUSH("avx512f,fma")
 #define CD_LANES 8
 #include "lanes_def.h"
+#include "lanes_vec.h"
 #include "cc_kernel_body.h"
 #include "lanes_undef.h"
 CD_LANES_TARGET_POP
@@ -111,60 +111,39 @@ CD_LANES_TARGET_POP
 CD_LANES_TARGET_PUSH("avx2,fma")
 #define CD_LANES 4
 #include "lanes_def.h"
+#include "lanes_vec.h"
 #include "cc_kernel_body.h"
 #include "lanes_undef.h"
 CD_LANES_TARGET_POP
 #endif
 
-/* The single query's validation, framing and problem of entry i; 0 when the entry is left to
- * the scalar path. The columns of a left entry hold zeros (harmless in the search). */
-static int ck_setup(const cdist__job *job, double unit_tol, size_t i, ck_block *b, int k)
-{
-    for (int c = 0; c < CK_NC; c++) b->col[c][k] = 0.0;
-    cdist__circle a, o;
-    if (!cdist__circle_fast(unit_tol, cdist__job_a(job, i), &a) || !cdist__circle_fast(unit_tol, cdist__job_b(job, i), &o))
-        return 0;
-    vec3 offset;
-    cdist__best best;
-    b->e[k] = cdist__circles_frame(&a, &o, &offset, &best);
-    cdist__cc_problem *p = &b->pb[k];
-    if (!cdist__cc_prepare(&a, &o, p)) return 0;
-    cdist__circle_basis(&p->A); /* only A's basis is read */
-    cdist__ring_init(&b->ring[k], p->A.r, p->A.u, p->A.v, p->CB, p->B.n);
-    const cdist__ring rg = b->ring[k];
-    const double v[CK_NC] = {rg.al.x, rg.al.y, rg.al.z, rg.be.x, rg.be.y, rg.be.z, rg.ga.x, rg.ga.y, rg.ga.z,
-                             rg.ha, rg.hb, rg.hc, p->B.r, p->A.r * p->A.r, v_norm(rg.al) + v_norm(rg.be),
-                             fabs(rg.ha) + fabs(rg.hb), fabs(rg.hc), 2 * p->A.r + v_norm(p->CB)};
-    for (int c = 0; c < CK_NC; c++) b->col[c][k] = v[c];
-    return 1;
-}
-
 /* The distance at the angle found, as the single query computes and scales it. */
 static double ck_distance(const ck_block *b, int k)
 {
-    const cdist__cc_problem *p = &b->pb[k];
-    double c, s, rho;
+    const double(*col)[64] = b->col;
+    cdist__ring rg = {{col[CK_C_ALX][k], col[CK_C_ALY][k], col[CK_C_ALZ][k]},
+                      {col[CK_C_BEX][k], col[CK_C_BEY][k], col[CK_C_BEZ][k]},
+                      {col[CK_C_GAX][k], col[CK_C_GAY][k], col[CK_C_GAZ][k]},
+                      col[CK_C_HA][k], col[CK_C_HB][k], col[CK_C_HC][k]};
+    double c, s, rho, u = col[CK_C_UNSC][k];
     sincos(b->t[k], &s, &c);
     vec3 w;
-    double d2 = cdist__cc_point_d2(&b->ring[k], p->B.r, c, s, &w, &rho);
-    double u = p->unscale;
-    return sqrt(d2 * u * u) * cdist__pow2(b->e[k]); /* = ldexp(., e): 2^e is normal (CD_SCALE_MAX_EXP) */
+    double d2 = cdist__cc_point_d2(&rg, col[CK_C_S][k], c, s, &w, &rho);
+    return sqrt(d2 * u * u) * col[CK_C_UP][k]; /* = ldexp(., e): 2^e is normal (CD_SCALE_MAX_EXP) */
 }
 
+typedef unsigned (*ck_setup_fn)(const cdist__job *job, double unit_tol, size_t lo, int base, int n, ck_block *b);
 typedef unsigned (*ck_search_fn)(ck_block *b, int g);
 
-static uint64_t ck_run(ck_search_fn search, int lanes, const cdist__job *job, double unit_tol, size_t lo, size_t count)
+static uint64_t ck_run(ck_setup_fn setup, ck_search_fn search, int lanes, const cdist__job *job, double unit_tol,
+                       size_t lo, size_t count)
 {
     pthread_once(&ck_tab_once, ck_tables_init);
     ck_block b;
     uint64_t left = 0;
     int n = (int)count, groups = (n + lanes - 1) / lanes * lanes;
-    for (int k = 0; k < groups; k++) {
-        if (k < n && ck_setup(job, unit_tol, lo + (size_t)k, &b, k)) continue;
-        if (k >= n)
-            for (int c = 0; c < CK_NC; c++) b.col[c][k] = 0.0;
-        left |= (uint64_t)1 << k;
-    }
+    for (int g = 0; g < groups; g += lanes)
+        left |= (uint64_t)setup(job, unit_tol, lo, g, n - g < lanes ? n - g : lanes, &b) << g;
     for (int g = 0; g < groups; g += lanes) {
         uint64_t lane_mask = ((uint64_t)1 << lanes) - 1;
         if (((left >> g) & lane_mask) == lane_mask) continue;
@@ -183,20 +162,20 @@ static uint64_t ck_run(ck_search_fn search, int lanes, const cdist__job *job, do
 static uint64_t kernel_scalar(const cdist__job *job, int shape, double tol, size_t lo, size_t count)
 {
     (void)shape;
-    return ck_run(ck_search_1, 1, job, tol, lo, count);
+    return ck_run(ck_setup_1, ck_search_1, 1, job, tol, lo, count);
 }
 
 #ifdef CD_X86_KERNELS
 static uint64_t kernel_avx512(const cdist__job *job, int shape, double tol, size_t lo, size_t count)
 {
     (void)shape;
-    return ck_run(ck_search_8, 8, job, tol, lo, count);
+    return ck_run(ck_setup_8, ck_search_8, 8, job, tol, lo, count);
 }
 
 static uint64_t kernel_avx2(const cdist__job *job, int shape, double tol, size_t lo, size_t count)
 {
     (void)shape;
-    return ck_run(ck_search_4, 4, job, tol, lo, count);
+    return ck_run(ck_setup_4, ck_search_4, 4, job, tol, lo, count);
 }
 #endif
 

@@ -117,6 +117,133 @@ CD_INLINE void KN(ck_sincos_small)(V d, V *c, V *s)
     *c = pc;
 }
 
+/* ---- per-entry set-up in lanes ---- */
+
+/* cdist__circle_fast (src/api/validate.c) of the circles in columns p (centre x y z, normal x y
+ * z, radius): the mask of those it accepts and their unit normals n. */
+CD_INLINE M KN(ck_circle_fast)(const V *p, double unit_tol, V *n)
+{
+    V m = vabs(p[3]); /* v_maxabs, as written */
+    m = vsel(vgt(vabs(p[4]), m), vabs(p[4]), m);
+    m = vsel(vgt(vabs(p[5]), m), vabs(p[5]), m);
+    M ok = mand(KN(in_range)(p[0], p[1], p[2]), mand(vge(p[6], vset(0.0)), vle(p[6], vset(CD_MAX_ABS))));
+    ok = mand(ok, mand(vge(m, vset(0x1p-500)), vle(m, vset(CD_MAX_ABS))));
+    V im = vdiv(vset(1.0), m);
+    V sx = vmul(im, p[3]), sy = vmul(im, p[4]), sz = vmul(im, p[5]);
+    V ns = vsqrt(KN(dot)(sx, sy, sz, sx, sy, sz)), len = vmul(m, ns);
+    ok = mand(ok, vle(vabs(vsub(len, vset(1.0))), vset(unit_tol)));
+    V in = vdiv(vset(1.0), ns);
+    n[0] = vmul(in, sx);
+    n[1] = vmul(in, sy);
+    n[2] = vmul(in, sz);
+    return ok;
+}
+
+/* v_basis (src/base/vec.h) of unit normals n: u, v. */
+CD_INLINE void KN(ck_basis)(const V *n, V *u, V *v)
+{
+    V ax = vabs(n[0]), ay = vabs(n[1]), az = vabs(n[2]);
+    M ex = mand(vle(ax, ay), vle(ax, az)), ey = mandn(ex, vle(ay, az)), ez = mnot(mor(ex, ey));
+    V one = vset(1.0), zero = vset(0.0);
+    V e0 = vsel(ex, one, zero), e1 = vsel(ey, one, zero), e2 = vsel(ez, one, zero);
+    V k = vneg(KN(dot)(e0, e1, e2, n[0], n[1], n[2]));
+    V wx = vfma(k, n[0], e0), wy = vfma(k, n[1], e1), wz = vfma(k, n[2], e2);
+    V iw = vdiv(one, vsqrt(KN(dot)(wx, wy, wz, wx, wy, wz)));
+    u[0] = vmul(iw, wx);
+    u[1] = vmul(iw, wy);
+    u[2] = vmul(iw, wz);
+    KN(cross)(n[0], n[1], n[2], u[0], u[1], u[2], &v[0], &v[1], &v[2]);
+}
+
+/* a.x b.x + a.y b.y + a.z b.z as cdist__ring_dot, left to right */
+CD_INLINE V KN(ck_rdot)(V ax, V ay, V az, V bx, V by, V bz)
+{
+    return vadd(vadd(vmul(ax, bx), vmul(ay, by)), vmul(az, bz));
+}
+
+/* The single query's validation, framing (cdist__circles_frame), problem (cdist__cc_prepare)
+ * and ring (cdist__ring_init) of the entries [lo + base, lo + base + n), n <= W, operation by
+ * operation, into the block's columns from base; returns the lanes left to the scalar path
+ * (also the lanes >= n, and where the radii are equal: the tie rule of cdist__cc_prepare is not
+ * repeated here). */
+static unsigned KN(ck_setup)(const cdist__job *job, double unit_tol, size_t lo, int base, int n, ck_block *b)
+{
+    V ca[8], cb[8];
+#ifdef vload_objects
+    if (n == W) {
+        vload_objects(cdist__job_a(job, lo + (size_t)base), job->a_stride, 7, ca);
+        vload_objects(cdist__job_b(job, lo + (size_t)base), job->b_stride, 7, cb);
+    } else
+#endif
+    {
+        double in[14][W];
+        for (int l = 0; l < W; l++) {
+            size_t i = lo + (size_t)base + (size_t)(l < n ? l : 0);
+            const double *pa = cdist__job_a(job, i), *pb = cdist__job_b(job, i);
+            for (int f = 0; f < 7; f++) {
+                in[f][l] = pa[f];
+                in[7 + f][l] = pb[f];
+            }
+        }
+        for (int f = 0; f < 7; f++) {
+            ca[f] = vld(in[f]);
+            cb[f] = vld(in[7 + f]);
+        }
+    }
+    V na[3], nb[3];
+    M ok = mand(KN(ck_circle_fast)(ca, unit_tol, na), KN(ck_circle_fast)(cb, unit_tol, nb));
+    /* cdist__circles_frame: B's centre relative to A's, scaled by 2^-e */
+    V Cx = vsub(cb[0], ca[0]), Cy = vsub(cb[1], ca[1]), Cz = vsub(cb[2], ca[2]);
+    V mc = vabs(Cx);
+    mc = vsel(vgt(vabs(Cy), mc), vabs(Cy), mc);
+    mc = vsel(vgt(vabs(Cz), mc), vabs(Cz), mc);
+    V L = KN(fmax)(KN(fmax)(ca[6], cb[6]), mc);
+    ok = mand(ok, vge(L, vset(0x1p-1022))); /* a subnormal or zero scale: the scalar path */
+    V up = KN(pow2_of)(L), down = vrecip2(up);
+    V r0 = vmul(ca[6], down), r1 = vmul(cb[6], down);
+    Cx = vmul(down, Cx);
+    Cy = vmul(down, Cy);
+    Cz = vmul(down, Cz);
+    /* cdist__cc_prepare: A the larger circle (equal radii left), both scaled so that L is in
+     * [0.5, 1) */
+    M sw = vgt(r1, r0);
+    ok = mand(ok, mand(vne(r0, r1), mand(vgt(r0, vset(0.0)), vgt(r1, vset(0.0)))));
+    V L2 = KN(fmax)(KN(fmax)(r0, r1), vsqrt(KN(dot)(Cx, Cy, Cz, Cx, Cy, Cz)));
+    V p2 = KN(pow2_of)(L2), sc = vmul(vrecip2(p2), vset(0.5)), unsc = vmul(p2, vset(2.0));
+    V R = vmul(sc, vsel(sw, r1, r0)), s = vmul(sc, vsel(sw, r0, r1));
+    V CBx = vmul(sc, vsel(sw, vneg(Cx), Cx)), CBy = vmul(sc, vsel(sw, vneg(Cy), Cy)),
+      CBz = vmul(sc, vsel(sw, vneg(Cz), Cz));
+    V nA[3], m[3], u[3], v[3];
+    for (int k = 0; k < 3; k++) {
+        nA[k] = vsel(sw, nb[k], na[k]);
+        m[k] = vsel(sw, na[k], nb[k]);
+    }
+    KN(ck_basis)(nA, u, v);
+    /* cdist__ring_init */
+    V al[3], be[3], ga[3];
+    KN(cross)(m[0], m[1], m[2], u[0], u[1], u[2], &al[0], &al[1], &al[2]);
+    KN(cross)(m[0], m[1], m[2], v[0], v[1], v[2], &be[0], &be[1], &be[2]);
+    KN(cross)(m[0], m[1], m[2], CBx, CBy, CBz, &ga[0], &ga[1], &ga[2]);
+    for (int k = 0; k < 3; k++) {
+        al[k] = vmul(R, al[k]);
+        be[k] = vmul(R, be[k]);
+        ga[k] = vneg(ga[k]);
+    }
+    V ha = vmul(R, KN(ck_rdot)(m[0], m[1], m[2], u[0], u[1], u[2]));
+    V hb = vmul(R, KN(ck_rdot)(m[0], m[1], m[2], v[0], v[1], v[2]));
+    V hc = vneg(KN(ck_rdot)(m[0], m[1], m[2], CBx, CBy, CBz));
+    V W1 = vadd(vsqrt(KN(dot)(al[0], al[1], al[2], al[0], al[1], al[2])),
+                vsqrt(KN(dot)(be[0], be[1], be[2], be[0], be[1], be[2])));
+    V Lw = vadd(vmul(vset(2.0), R), vsqrt(KN(dot)(CBx, CBy, CBz, CBx, CBy, CBz)));
+    const V cols[CK_NC] = {al[0], al[1], al[2], be[0], be[1], be[2], ga[0], ga[1], ga[2], ha, hb, hc, s,
+                           vmul(R, R), W1, vadd(vabs(ha), vabs(hb)), vabs(hc), Lw, unsc, up};
+    V zero = vset(0.0);
+    for (int c = 0; c < CK_NC; c++) vst(&b->col[c][base], vsel(ok, cols[c], zero));
+    unsigned left = mbits(mnot(ok)) & ((1u << W) - 1u);
+    if (n < W) left |= ((1u << W) - 1u) & ~((1u << n) - 1u);
+    return left;
+}
+
 /* The search for the W entries of the block from g: angles t[] of the closest points of the
  * entries it certifies; returns the lane mask (bit k: entry g + k) of those it does not. */
 static unsigned KN(ck_search)(ck_block *b, int g)

@@ -64,6 +64,7 @@ static const double lk_cbrt_factor[5] = {1.0 / 1.5874010519681994748, 1.0 / 1.25
 #define CD_LANES 1
 #define LK_CHAINS 1
 #include "lanes_def.h"
+#include "lanes_vec.h"
 #include "line_kernel_body.h"
 #include "lanes_undef.h"
 #undef LK_CHAINS
@@ -76,6 +77,7 @@ CD_LANES_TARGET_PUSH("avx512f,fma")
 #define CD_LANES 8
 #define LK_CHAINS LK_WIDE_CHAINS
 #include "lanes_def.h"
+#include "lanes_vec.h"
 #include "line_kernel_body.h"
 #include "lanes_undef.h"
 #undef LK_CHAINS
@@ -87,6 +89,7 @@ CD_LANES_TARGET_PUSH("avx2,fma")
 #define CD_LANES 4
 #define LK_CHAINS LK_WIDE_CHAINS
 #include "lanes_def.h"
+#include "lanes_vec.h"
 #include "line_kernel_body.h"
 #include "lanes_undef.h"
 #undef LK_CHAINS

@@ -33,37 +33,6 @@
 #define vngt_m(m, a, b) mandn(vgt(a, b), m)
 #endif
 
-/* |a| <= CD_MAX_ABS for each component (false for NaN and infinities) */
-CD_INLINE M KN(in_range)(V x, V y, V z)
-{
-    V lim = vset(CD_MAX_ABS);
-    return mand(mand(vle(vabs(x), lim), vle(vabs(y), lim)), vle(vabs(z), lim));
-}
-
-CD_INLINE V KN(max3)(V x, V y, V z) { return vmax(vmax(vabs(x), vabs(y)), vabs(z)); }
-
-/* fma(a.x, b.x, fma(a.y, b.y, a.z * b.z)) as v_dot */
-CD_INLINE V KN(dot)(V ax, V ay, V az, V bx, V by, V bz) { return vfma(ax, bx, vfma(ay, by, vmul(az, bz))); }
-
-/* v_cross: (a.y b.z - a.z b.y, a.z b.x - a.x b.z, a.x b.y - a.y b.x) */
-CD_INLINE void KN(cross)(V ax, V ay, V az, V bx, V by, V bz, V *x, V *y, V *z)
-{
-    *x = vsub(vmul(ay, bz), vmul(az, by));
-    *y = vsub(vmul(az, bx), vmul(ax, bz));
-    *z = vsub(vmul(ax, by), vmul(ay, bx));
-}
-
-/* cdist__fmax / cdist__fmin: a > b ? a : (b == b ? b : a) */
-CD_INLINE V KN(fmax)(V a, V b) { return vsel(vgt(a, b), a, vsel(veq(b, b), b, a)); }
-CD_INLINE V KN(fmin)(V a, V b) { return vsel(vlt(a, b), a, vsel(veq(b, b), b, a)); }
-
-/* 2^e of a positive normal x (its exponent bits), clamped as cdist__scale_exponent clamps e. */
-CD_INLINE V KN(pow2_of)(V x)
-{
-    V p = vexpbits(x);
-    return vmax(vmin(p, vset(0x1p1000)), vset(0x1p-1000));
-}
-
 /* The model of linear_circle (lc_model) in lanes. */
 typedef struct KN(model) {
     V r, a, m0, x1, ax1, c2, h;

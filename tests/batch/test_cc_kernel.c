@@ -12,7 +12,8 @@
  *   computed in high precision by a separate method);
  * - it answers at least 95% of the valid entries of the random file (the rest is certified by
  *   the scalar path: near-ties of two minima, minima on an axis);
- * - every variant leaves the same entries, and the public cdist_batch_distance agrees with the
+ * - the set-up in lanes gives the scalar set-up's ring bit for bit;
+ * - every variant leaves nearly the same entries, and the public cdist_batch_distance agrees with the
  *   single queries (status, and distance to 2 ulps of scale) with 1 and 2 threads, and runs
  *   the single queries for a method that is not the kernel's (POLYNOMIAL). */
 #include "../../src/batch/cc_kernel.c"
@@ -207,6 +208,61 @@ static void check_batch(cdist_query *q, size_t n, const char *what)
     CHECK(bad == 0, "batch %s: %d entries differ from the single query", what, bad);
 }
 
+typedef unsigned (*sfn)(const cdist__job *, double, size_t, int, int, ck_block *);
+
+/* The set-up in lanes against the scalar functions it repeats (cdist__circle_fast,
+ * cdist__circles_frame, cdist__cc_prepare, cdist__circle_basis, cdist__ring_init): the same
+ * acceptance (apart from equal radii, left by design) and bit-identical ring columns. */
+static void check_setup(const char *name, sfn setup, int lanes, cdist_query *q, size_t n)
+{
+    cdist__job job = {CDIST_KIND_CIRCLE_CIRCLE, n, (const char *)A, (const char *)B, sizeof A[0], sizeof B[0],
+                      NULL, D, NULL, 64};
+    static ck_block blk;
+    int differ = 0, accept_bad = 0, checked = 0;
+    for (size_t lo = 0; lo < n; lo += 64) {
+        int cnt = n - lo < 64 ? (int)(n - lo) : 64;
+        for (int g = 0; g < cnt; g += lanes) {
+            unsigned left = setup(&job, q->unit_tol, lo, g, cnt - g < lanes ? cnt - g : lanes, &blk);
+            for (int l = 0; l < lanes && g + l < cnt; l++) {
+                int k = g + l;
+                size_t i = lo + (size_t)k;
+                cdist__circle a, o;
+                int ok = cdist__circle_fast(q->unit_tol, &A[i], &a) && cdist__circle_fast(q->unit_tol, &B[i], &o);
+                cdist__cc_problem p;
+                vec3 off;
+                cdist__best best;
+                int e = ok ? cdist__circles_frame(&a, &o, &off, &best) : 0;
+                ok = ok && cdist__cc_prepare(&a, &o, &p) && a.r != o.r;
+                if (!ok) {
+                    accept_bad += !(left >> l & 1);
+                    continue;
+                }
+                if (left >> l & 1) {
+                    accept_bad++;
+                    continue;
+                }
+                cdist__circle_basis(&p.A);
+                cdist__ring rg;
+                cdist__ring_init(&rg, p.A.r, p.A.u, p.A.v, p.CB, p.B.n);
+                const double want[] = {rg.al.x, rg.al.y, rg.al.z, rg.be.x, rg.be.y, rg.be.z, rg.ga.x, rg.ga.y,
+                                       rg.ga.z, rg.ha, rg.hb, rg.hc, p.B.r, p.unscale, ldexp(1.0, e)};
+                const int at[] = {CK_C_ALX, CK_C_ALY, CK_C_ALZ, CK_C_BEX, CK_C_BEY, CK_C_BEZ, CK_C_GAX, CK_C_GAY,
+                                  CK_C_GAZ, CK_C_HA, CK_C_HB, CK_C_HC, CK_C_S, CK_C_UNSC, CK_C_UP};
+                checked++;
+                for (int c = 0; c < (int)(sizeof at / sizeof at[0]); c++)
+                    if (memcmp(&want[c], &blk.col[at[c]][k], sizeof(double))) {
+                        if (differ++ < 3)
+                            CHECK(0, "%s set-up entry %zu column %d: %.17g vs scalar %.17g", name, i, at[c],
+                                  blk.col[at[c]][k], want[c]);
+                    }
+            }
+        }
+    }
+    CHECK(differ == 0 && accept_bad == 0 && checked > 0,
+          "%s set-up: %d columns differ from the scalar set-up, %d entries accepted or left wrongly (%d checked)",
+          name, differ, accept_bad, checked);
+}
+
 int main(int argc, char **argv)
 {
     if (argc < 2) {
@@ -230,16 +286,20 @@ int main(int argc, char **argv)
             valid_file += ok && i < nf;
         }
         int left_file, lf;
+        check_setup("scalar", ck_setup_1, 1, q, n);
         int left = check_kernel("scalar", kernel_scalar, q, n, sets[s], &left_file, left1);
         const char *best = "scalar";
 #ifdef CD_X86_KERNELS
         __builtin_cpu_init();
         kfn wide[2] = {NULL, NULL};
+        sfn wide_setup[2] = {ck_setup_4, ck_setup_8};
+        int wide_lanes[2] = {4, 8};
         const char *wname[2] = {"avx2", "avx512"};
         if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma")) wide[0] = kernel_avx2;
         if (__builtin_cpu_supports("avx512f")) wide[1] = kernel_avx512;
         for (int v = 0; v < 2; v++) {
             if (!wide[v]) continue;
+            check_setup(wname[v], wide_setup[v], wide_lanes[v], q, n);
             int lv = check_kernel(wname[v], wide[v], q, n, sets[s], &lf, leftv);
             int differ = 0;
             for (size_t i = 0; i < n; i++) differ += leftv[i] != left1[i];
