@@ -21,8 +21,9 @@
  *      it (h / 4), up to CK_LEVELS times.
  *   3. Newton on F' in the convex basin (one minimum there), cos and sin by rotation from the
  *      basin's centre with a Taylor series of the offset.
- *   4. The distance (scalar): sqrt(F) at the angle found, by cdist__cc_point_d2 as the robust
- *      method computes its answer, scaled back as the single query scales it.
+ *   4. The distance at the angle found: cdist__cc_point_d2, the robust method's formula
+ *      (double-double), in lanes operation by operation, scaled back as the single query scales
+ *      its answer.
  * Whatever fails (a check of the fast validation, a zero radius, a near-tie of two minima, a
  * basin on B's axis or not certified in CK_LEVELS levels, Newton not settled) goes to the scalar
  * path. The angle differs from the single query's by rounding only (both are the certified
@@ -51,7 +52,8 @@ enum { CK_C_ALX, CK_C_ALY, CK_C_ALZ, CK_C_BEX, CK_C_BEY, CK_C_BEZ, CK_C_GAX, CK_
        CK_C_HC, CK_C_S, CK_C_R2, CK_C_W1, CK_C_HH, CK_C_HC0, CK_C_LW, CK_C_UNSC, CK_C_UP, CK_NC };
 typedef struct ck_block {
     double col[CK_NC][64];
-    double t[64];
+    double t[64]; /* the angle found */
+    double d[64]; /* the distance there */
 } ck_block;
 
 /* Angles of the search, computed once (ck_tables_init). */
@@ -117,26 +119,12 @@ CD_LANES_TARGET_PUSH("avx2,fma")
 CD_LANES_TARGET_POP
 #endif
 
-/* The distance at the angle found, as the single query computes and scales it. */
-static double ck_distance(const ck_block *b, int k)
-{
-    const double(*col)[64] = b->col;
-    cdist__ring rg = {{col[CK_C_ALX][k], col[CK_C_ALY][k], col[CK_C_ALZ][k]},
-                      {col[CK_C_BEX][k], col[CK_C_BEY][k], col[CK_C_BEZ][k]},
-                      {col[CK_C_GAX][k], col[CK_C_GAY][k], col[CK_C_GAZ][k]},
-                      col[CK_C_HA][k], col[CK_C_HB][k], col[CK_C_HC][k]};
-    double c, s, rho, u = col[CK_C_UNSC][k];
-    sincos(b->t[k], &s, &c);
-    vec3 w;
-    double d2 = cdist__cc_point_d2(&rg, col[CK_C_S][k], c, s, &w, &rho);
-    return sqrt(d2 * u * u) * col[CK_C_UP][k]; /* = ldexp(., e): 2^e is normal (CD_SCALE_MAX_EXP) */
-}
-
 typedef unsigned (*ck_setup_fn)(const cdist__job *job, double unit_tol, size_t lo, int base, int n, ck_block *b);
 typedef unsigned (*ck_search_fn)(ck_block *b, int g);
+typedef void (*ck_final_fn)(ck_block *b, int g);
 
-static uint64_t ck_run(ck_setup_fn setup, ck_search_fn search, int lanes, const cdist__job *job, double unit_tol,
-                       size_t lo, size_t count)
+static uint64_t ck_run(ck_setup_fn setup, ck_search_fn search, ck_final_fn final, int lanes, const cdist__job *job,
+                       double unit_tol, size_t lo, size_t count)
 {
     pthread_once(&ck_tab_once, ck_tables_init);
     ck_block b;
@@ -148,12 +136,12 @@ static uint64_t ck_run(ck_setup_fn setup, ck_search_fn search, int lanes, const 
         uint64_t lane_mask = ((uint64_t)1 << lanes) - 1;
         if (((left >> g) & lane_mask) == lane_mask) continue;
         left |= (uint64_t)search(&b, g) << g;
+        if (((left >> g) & lane_mask) != lane_mask) final(&b, g);
     }
     if (n < 64) left &= ((uint64_t)1 << n) - 1;
     for (int k = 0; k < n; k++) {
         if (left >> k & 1) continue;
-        double d = ck_distance(&b, k);
-        if (isfinite(d)) job->distances[lo + (size_t)k] = d;
+        if (isfinite(b.d[k])) job->distances[lo + (size_t)k] = b.d[k];
         else left |= (uint64_t)1 << k;
     }
     return left;
@@ -162,20 +150,20 @@ static uint64_t ck_run(ck_setup_fn setup, ck_search_fn search, int lanes, const 
 static uint64_t kernel_scalar(const cdist__job *job, int shape, double tol, size_t lo, size_t count)
 {
     (void)shape;
-    return ck_run(ck_setup_1, ck_search_1, 1, job, tol, lo, count);
+    return ck_run(ck_setup_1, ck_search_1, ck_final_1, 1, job, tol, lo, count);
 }
 
 #ifdef CD_X86_KERNELS
 static uint64_t kernel_avx512(const cdist__job *job, int shape, double tol, size_t lo, size_t count)
 {
     (void)shape;
-    return ck_run(ck_setup_8, ck_search_8, 8, job, tol, lo, count);
+    return ck_run(ck_setup_8, ck_search_8, ck_final_8, 8, job, tol, lo, count);
 }
 
 static uint64_t kernel_avx2(const cdist__job *job, int shape, double tol, size_t lo, size_t count)
 {
     (void)shape;
-    return ck_run(ck_setup_4, ck_search_4, 4, job, tol, lo, count);
+    return ck_run(ck_setup_4, ck_search_4, ck_final_4, 4, job, tol, lo, count);
 }
 #endif
 

@@ -11,6 +11,35 @@
 #define ck_madd(a, b, c) vfma(a, b, c)
 #endif
 
+/* sqrt(x) and 1 / sqrt(x) for the search: with AVX-512, the 14-bit reciprocal square root and
+ * two Newton steps (relative error about 1e-16, no division: F then carries 1e-15 of error, far
+ * below CD_CCK_PRUNE_MARGIN), NaN at 0 (the lane is then left to the scalar path); elsewhere
+ * the square root and a division. */
+CD_INLINE V KN(ck_sqrt_inv)(V x, V *inv)
+{
+#if W == 8
+    V y = _mm512_rsqrt14_pd(x), h = vmul(vset(0.5), x);
+    y = vmul(y, vfma(vneg(h), vmul(y, y), vset(1.5)));
+    y = vmul(y, vfma(vneg(h), vmul(y, y), vset(1.5)));
+    *inv = y;
+    return vmul(x, y);
+#else
+    V r = vsqrt(x);
+    *inv = vdiv(vset(1.0), r);
+    return r;
+#endif
+}
+
+CD_INLINE V KN(ck_sqrt)(V x)
+{
+#if W == 8
+    V inv;
+    return KN(ck_sqrt_inv)(x, &inv);
+#else
+    return vsqrt(x);
+#endif
+}
+
 /* The ring of one lane group (columns of the block, see CK_C_*). */
 typedef struct KN(ck_ring) {
     V alx, aly, alz, bex, bey, bez, gax, gay, gaz, ha, hb, hc, s, R2, W1, Hh, Hc0, Lw;
@@ -29,7 +58,7 @@ CD_INLINE V KN(ck_f)(const KN(ck_ring) *r, V c, V s)
     V wx = ck_madd(r->alx, c, ck_madd(r->bex, s, r->gax));
     V wy = ck_madd(r->aly, c, ck_madd(r->bey, s, r->gay));
     V wz = ck_madd(r->alz, c, ck_madd(r->bez, s, r->gaz));
-    V dr = vsub(vsqrt(ck_madd(wx, wx, ck_madd(wy, wy, vmul(wz, wz)))), r->s);
+    V dr = vsub(KN(ck_sqrt)(ck_madd(wx, wx, ck_madd(wy, wy, vmul(wz, wz)))), r->s);
     V h = ck_madd(r->ha, c, ck_madd(r->hb, s, r->hc));
     return ck_madd(dr, dr, vmul(h, h));
 }
@@ -51,15 +80,15 @@ CD_INLINE void KN(ck_f2)(const KN(ck_ring) *r, V c, V s, V *F0, V *F1, V *F2, V 
     V h = ck_madd(r->ha, c, ck_madd(r->hb, s, r->hc));
     V h1 = vsub(vmul(r->hb, c), vmul(r->ha, s));
     V h2 = vsub(r->hc, h);
-    V rh = vsqrt(Q), dr = vsub(rh, r->s);
-    V rp = vdiv(g, rh), rpp = vdiv(vsub(g1, vmul(rp, rp)), rh);
+    V irh, rh = KN(ck_sqrt_inv)(Q, &irh), dr = vsub(rh, r->s);
+    V rp = vmul(g, irh), rpp = vmul(vsub(g1, vmul(rp, rp)), irh);
     *F0 = ck_madd(dr, dr, vmul(h, h));
     *F1 = ck_madd(dr, rp, vmul(h, h1));
     *F2 = vadd(ck_madd(rp, rp, vmul(dr, rpp)), ck_madd(h1, h1, vmul(h, h2)));
     *rho = rh;
     *rho2 = rpp;
     V W1 = r->W1, W12 = vmul(W1, W1), Lw = r->Lw;
-    V t = vdiv(vmul(vadd(Lw, vabs(dr)), vadd(vadd(vabs(g1), W12), vmul(Lw, W1))), rh);
+    V t = vmul(vmul(vadd(Lw, vabs(dr)), vadd(vadd(vabs(g1), W12), vmul(Lw, W1))), irh);
     *e2 = vmul(vset(CD_CCK_F2_ULPS * DBL_EPSILON),
                vadd(vadd(W12, t), vadd(vmul(r->Hh, r->Hh), vmul(vadd(vabs(h), Lw), r->Hh))));
 }
@@ -88,12 +117,13 @@ CD_INLINE M KN(ck_convex)(const KN(ck_ring) *r, V c, V s, int l)
     KN(ck_f2)(r, cb, sb, &F0, &F1, &F2b, &rb, &xb, &eb);
     V h = vset(ck_tab.half[l]), W1 = r->W1, hw = vmul(W1, h), three = vset(3.0);
     V rlo = vsub(vmul(vset(0.5), vadd(ra, rb)), hw), rhi = vadd(vmax(ra, rb), hw);
-    V base = vdiv(vmul(W1, vadd(vmul(three, W1), rhi)), rlo); /* (3 W1^2 + rho_hi W1) / rho_lo */
-    V k = vsub(vset(1.0), vdiv(vmul(three, hw), rlo));
+    V irlo = vdiv(vset(1.0), rlo);
+    V base = vmul(vmul(W1, vadd(vmul(three, W1), rhi)), irlo); /* (3 W1^2 + rho_hi W1) / rho_lo */
+    V k = vsub(vset(1.0), vmul(vmul(three, hw), irlo));
     /* X0 with a margin for the rounding of rho'' (relative 1e-9, and 1e-9 of base) */
     V X0 = vadd(vmul(vmax(vabs(xa), vabs(xb)), vset(1.0 + 1e-9)), vmul(base, vset(1e-9)));
     V X = vdiv(ck_madd(h, base, X0), k);
-    V B3 = vadd(base, vdiv(vmul(vmul(three, W1), X), rlo));
+    V B3 = vadd(base, vmul(vmul(vmul(three, W1), X), irlo));
     V M3 = vadd(vadd(vmul(vmul(three, W1), X), vmul(vadd(rhi, r->s), B3)),
                 vmul(r->Hh, vadd(vmul(vset(4.0), r->Hh), r->Hc0)));
     V lhs = vmin(vsub(F2a, ea), vsub(F2b, eb));
@@ -365,6 +395,71 @@ static unsigned KN(ck_search)(ck_block *b, int g)
     fail = mor(fail, mnot(vgt(minlb, vadd(Fs, margin))));
     vst(&b->t[g], vadd(t, d));
     return mbits(fail);
+}
+
+/* ---- the distance at the angle found, in lanes ---- */
+
+/* cdist__two_prod and cdist__two_sum (src/base/numeric.h) */
+CD_INLINE V KN(ck_two_prod)(V a, V b, V *lo)
+{
+    V p = vmul(a, b);
+    *lo = vfma(a, b, vneg(p));
+    return p;
+}
+CD_INLINE V KN(ck_two_sum)(V a, V b, V *lo)
+{
+    V s = vadd(a, b), bb = vsub(s, a);
+    *lo = vadd(vsub(a, vsub(s, bb)), vsub(b, bb));
+    return s;
+}
+/* dd_trig and dd_sqr_add of cc_engine.c */
+CD_INLINE V KN(ck_dd_trig)(V a, V b, V g, V c, V sn, V *lo)
+{
+    V e1, e2, e3, e4;
+    V p = KN(ck_two_prod)(a, c, &e1), q = KN(ck_two_prod)(b, sn, &e2);
+    V s1 = KN(ck_two_sum)(p, q, &e3), s2 = KN(ck_two_sum)(s1, g, &e4);
+    *lo = vadd(vadd(e1, e2), vadd(e3, e4));
+    return s2;
+}
+CD_INLINE V KN(ck_dd_sqr_add)(V xh, V xl, V ah, V al, V *lo)
+{
+    V e1, e2, p = KN(ck_two_prod)(xh, xh, &e1);
+    V s = KN(ck_two_sum)(ah, p, &e2);
+    *lo = vadd(vadd(vadd(al, e2), e1), vmul(vmul(vset(2.0), xh), xl));
+    return s;
+}
+
+/* The distances of the lanes of the group from g at their angles t (b->t): cdist__cc_point_d2
+ * (cc_engine.c) operation by operation, so bit for bit the single query's formula, with cos and
+ * sin from the C library; scaled back as the single query scales its answer. Into b->d. */
+static void KN(ck_final)(ck_block *b, int g)
+{
+    double cs[W], sn[W];
+    for (int l = 0; l < W; l++) sincos(b->t[g + l], &sn[l], &cs[l]);
+    V c = vld(cs), s = vld(sn);
+    const double(*col)[64] = b->col;
+#define CK_COL(k) vld(&col[k][g])
+    V wxl, wyl, wzl, hl;
+    V wx = KN(ck_dd_trig)(CK_COL(CK_C_ALX), CK_COL(CK_C_BEX), CK_COL(CK_C_GAX), c, s, &wxl);
+    V wy = KN(ck_dd_trig)(CK_COL(CK_C_ALY), CK_COL(CK_C_BEY), CK_COL(CK_C_GAY), c, s, &wyl);
+    V wz = KN(ck_dd_trig)(CK_COL(CK_C_ALZ), CK_COL(CK_C_BEZ), CK_COL(CK_C_GAZ), c, s, &wzl);
+    V h = KN(ck_dd_trig)(CK_COL(CK_C_HA), CK_COL(CK_C_HB), CK_COL(CK_C_HC), c, s, &hl);
+    V zero = vset(0.0), Ql, Qh = KN(ck_dd_sqr_add)(wx, wxl, zero, zero, &Ql);
+    Qh = KN(ck_dd_sqr_add)(wy, wyl, Qh, Ql, &Ql);
+    Qh = KN(ck_dd_sqr_add)(wz, wzl, Qh, Ql, &Ql);
+    V q = vadd(Qh, Ql), ql = vsub(Ql, vsub(q, Qh));
+    M pos = vgt(q, zero);
+    q = vsel(pos, q, zero);
+    ql = vsel(pos, ql, zero);
+    V r = vsqrt(q), e, r2 = KN(ck_two_prod)(r, r, &e);
+    V rl = vdiv(vadd(vsub(vsub(q, r2), e), ql), vmul(vset(2.0), r));
+    rl = vsel(vgt(r, zero), rl, zero);
+    V dr = KN(ck_two_sum)(r, vneg(CK_COL(CK_C_S)), &e);
+    V dl, d2h = KN(ck_dd_sqr_add)(dr, vadd(e, rl), zero, zero, &dl);
+    d2h = KN(ck_dd_sqr_add)(h, hl, d2h, dl, &dl);
+    V d2 = KN(fmax)(zero, vadd(d2h, dl)), u = CK_COL(CK_C_UNSC);
+    vst(&b->d[g], vmul(vsqrt(vmul(vmul(d2, u), u)), CK_COL(CK_C_UP)));
+#undef CK_COL
 }
 
 #undef ck_madd

@@ -12,7 +12,8 @@
  *   computed in high precision by a separate method);
  * - it answers at least 95% of the valid entries of the random file (the rest is certified by
  *   the scalar path: near-ties of two minima, minima on an axis);
- * - the set-up in lanes gives the scalar set-up's ring bit for bit;
+ * - the set-up in lanes gives the scalar set-up's ring bit for bit, and the final distance in
+ *   lanes the scalar formula's (cdist__cc_point_d2) at any angle;
  * - every variant leaves nearly the same entries, and the public cdist_batch_distance agrees with the
  *   single queries (status, and distance to 2 ulps of scale) with 1 and 2 threads, and runs
  *   the single queries for a method that is not the kernel's (POLYNOMIAL). */
@@ -209,20 +210,24 @@ static void check_batch(cdist_query *q, size_t n, const char *what)
 }
 
 typedef unsigned (*sfn)(const cdist__job *, double, size_t, int, int, ck_block *);
+typedef void (*ffn)(ck_block *, int);
 
 /* The set-up in lanes against the scalar functions it repeats (cdist__circle_fast,
  * cdist__circles_frame, cdist__cc_prepare, cdist__circle_basis, cdist__ring_init): the same
- * acceptance (apart from equal radii, left by design) and bit-identical ring columns. */
-static void check_setup(const char *name, sfn setup, int lanes, cdist_query *q, size_t n)
+ * acceptance (apart from equal radii, left by design) and bit-identical ring columns; and the
+ * final distance in lanes at random angles against cdist__cc_point_d2, bit for bit. */
+static void check_setup(const char *name, sfn setup, ffn final, int lanes, cdist_query *q, size_t n)
 {
     cdist__job job = {CDIST_KIND_CIRCLE_CIRCLE, n, (const char *)A, (const char *)B, sizeof A[0], sizeof B[0],
                       NULL, D, NULL, 64};
     static ck_block blk;
-    int differ = 0, accept_bad = 0, checked = 0;
+    int differ = 0, accept_bad = 0, checked = 0, dist_differ = 0;
     for (size_t lo = 0; lo < n; lo += 64) {
         int cnt = n - lo < 64 ? (int)(n - lo) : 64;
         for (int g = 0; g < cnt; g += lanes) {
             unsigned left = setup(&job, q->unit_tol, lo, g, cnt - g < lanes ? cnt - g : lanes, &blk);
+            for (int l = 0; l < lanes; l++) blk.t[g + l] = (2 * rnd01() - 1) * M_PI;
+            final(&blk, g);
             for (int l = 0; l < lanes && g + l < cnt; l++) {
                 int k = g + l;
                 size_t i = lo + (size_t)k;
@@ -249,6 +254,13 @@ static void check_setup(const char *name, sfn setup, int lanes, cdist_query *q, 
                 const int at[] = {CK_C_ALX, CK_C_ALY, CK_C_ALZ, CK_C_BEX, CK_C_BEY, CK_C_BEZ, CK_C_GAX, CK_C_GAY,
                                   CK_C_GAZ, CK_C_HA, CK_C_HB, CK_C_HC, CK_C_S, CK_C_UNSC, CK_C_UP};
                 checked++;
+                double c, sn, rho;
+                vec3 w;
+                sincos(blk.t[k], &sn, &c);
+                double d2 = cdist__cc_point_d2(&rg, p.B.r, c, sn, &w, &rho);
+                double d = sqrt(d2 * p.unscale * p.unscale) * ldexp(1.0, e);
+                if (memcmp(&d, &blk.d[k], sizeof d) && dist_differ++ < 3)
+                    CHECK(0, "%s final distance entry %zu at %.17g: %.17g vs scalar %.17g", name, i, blk.t[k], blk.d[k], d);
                 for (int c = 0; c < (int)(sizeof at / sizeof at[0]); c++)
                     if (memcmp(&want[c], &blk.col[at[c]][k], sizeof(double))) {
                         if (differ++ < 3)
@@ -258,9 +270,10 @@ static void check_setup(const char *name, sfn setup, int lanes, cdist_query *q, 
             }
         }
     }
-    CHECK(differ == 0 && accept_bad == 0 && checked > 0,
-          "%s set-up: %d columns differ from the scalar set-up, %d entries accepted or left wrongly (%d checked)",
-          name, differ, accept_bad, checked);
+    CHECK(differ == 0 && accept_bad == 0 && dist_differ == 0 && checked > 0,
+          "%s set-up: %d columns differ from the scalar set-up, %d entries accepted or left wrongly, %d final "
+          "distances differ (%d checked)",
+          name, differ, accept_bad, dist_differ, checked);
 }
 
 int main(int argc, char **argv)
@@ -286,20 +299,21 @@ int main(int argc, char **argv)
             valid_file += ok && i < nf;
         }
         int left_file, lf;
-        check_setup("scalar", ck_setup_1, 1, q, n);
+        check_setup("scalar", ck_setup_1, ck_final_1, 1, q, n);
         int left = check_kernel("scalar", kernel_scalar, q, n, sets[s], &left_file, left1);
         const char *best = "scalar";
 #ifdef CD_X86_KERNELS
         __builtin_cpu_init();
         kfn wide[2] = {NULL, NULL};
         sfn wide_setup[2] = {ck_setup_4, ck_setup_8};
+        ffn wide_final[2] = {ck_final_4, ck_final_8};
         int wide_lanes[2] = {4, 8};
         const char *wname[2] = {"avx2", "avx512"};
         if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma")) wide[0] = kernel_avx2;
         if (__builtin_cpu_supports("avx512f")) wide[1] = kernel_avx512;
         for (int v = 0; v < 2; v++) {
             if (!wide[v]) continue;
-            check_setup(wname[v], wide_setup[v], wide_lanes[v], q, n);
+            check_setup(wname[v], wide_setup[v], wide_final[v], wide_lanes[v], q, n);
             int lv = check_kernel(wname[v], wide[v], q, n, sets[s], &lf, leftv);
             int differ = 0;
             for (size_t i = 0; i < n; i++) differ += leftv[i] != left1[i];
