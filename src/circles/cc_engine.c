@@ -329,8 +329,14 @@ void cdist__cc_pair_at(const cdist__cc_frame *f, double t, cdist__cc_sink *k)
 {
     double c, s;
     sincos(t, &s, &c);
-    vec3 P = v_axpy(v_scale(f->R * c, f->u), f->R * s, f->v), w;
-    double rho, d2 = cdist__cc_point_d2(&f->rg, f->s, c, s, &w, &rho);
+    vec3 P = v_axpy(v_scale(f->R * c, f->u), f->R * s, f->v);
+    vec3 D = v_sub(P, f->C);
+    vec3 w = v_cross(f->m, D);
+    double h = v_dot(f->m, D), rho = v_norm(w);
+    double dr = rho - f->s;
+    /* plain: the kept candidates' distances are recomputed in double-double at the end
+     * (cdist__cc_settle_d2) */
+    double d2 = fma(dr, dr, h * h);
     vec3 dir;
     double tb;
     if (rho > 0) {
@@ -962,4 +968,22 @@ CD_FMA_CLONES double cdist__cc_point_d2(const cdist__ring *rg, double s, double 
     *rho = r + rl;
     /* >= 0: the dropped squares of the low parts can tip a zero distance below 0 */
     return cdist__fmax(0.0, d2.hi + d2.lo);
+}
+
+void cdist__cc_settle_d2(const cdist__cc_frame *f, const cdist__cc_sink *k)
+{
+    cdist__best *b = k->best;
+    double u = k->unscale;
+    for (int i = 0; i < b->n; i++) {
+        double t = b->c[i].param[k->swapped ? 1 : 0], c, s, rho;
+        vec3 w;
+        sincos(t, &s, &c);
+        b->c[i].d2 = cdist__cc_point_d2(&f->rg, f->s, c, s, &w, &rho) * u * u;
+    }
+    for (int i = 1; i < b->n; i++) /* ties may swap places */
+        for (int j = i; j > 0 && b->c[j].d2 < b->c[j - 1].d2; j--) {
+            cdist__cand x = b->c[j];
+            b->c[j] = b->c[j - 1];
+            b->c[j - 1] = x;
+        }
 }

@@ -96,6 +96,7 @@ cdist_status cdist__cc_robust(cdist_query *q, const cdist__circle *c0, const cdi
     /* F' never went from - to +: F is constant to rounding; any point is a closest one. */
     if (b->n == 0 && isfinite(k.Fmin)) cdist__cc_pair_at(&f, k.tmin, &k);
     if (b->n == 0 || !isfinite(k.dmin)) return cdist__fail(q, CDIST_ERR_INTERNAL, "circle-circle: no minimum found");
+    cdist__cc_settle_d2(&f, &k);
     /* (a) F constant on A; (b) the closest point of A on B's axis. */
     if (sqrt(Fmax) - k.dmin <= CC_EQUI_ULPS * DBL_EPSILON * f.L) b->equidistant = 1;
     if (k.rho_min <= 8 * f.epsL * cdist__fmin(1.0, f.s / f.L)) b->equidistant = 1;

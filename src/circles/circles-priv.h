@@ -82,10 +82,11 @@ static inline void cdist__cc_eval_lean(const cdist__cc_frame *f, double t, doubl
 
 /* The squared distance from A's point at (c, sn) = (cos t, sin t) to B (radius s) as the robust
  * method reports it, from the ring rg of the pair (ring_eval.h); w = m x (P - C), rho = |w|
- * (cc_engine.c). The one formula of cdist__cc_pair_at and of the batch kernel's final distance
- * (src/batch/cc_kernel.c). Evaluated in double-double: its rounding (far below an ulp of the
- * scale) then leaves the answer depending on the angle only to second order at a minimum, so
- * two searches settling on the same minimum report the same distance to an ulp. */
+ * (cc_engine.c). The one formula of the answer: of the robust method's (applied to the
+ * candidates it keeps, cdist__cc_settle_d2) and of the batch kernel's (src/batch/cc_kernel.c).
+ * Evaluated in double-double: its rounding (far below an ulp of the scale) then leaves the
+ * answer depending on the angle only to second order at a minimum, so two searches settling on
+ * the same minimum report the same distance to an ulp. */
 double cdist__cc_point_d2(const cdist__ring *rg, double s, double c, double sn, vec3 *w, double *rho);
 
 /* The frame of A (parameterised, centre at the origin) and B (centre C relative to A's). */
@@ -93,6 +94,9 @@ void cdist__cc_frame_init(cdist__cc_frame *f, const cdist__circle *A, vec3 C, co
 /* Walks [-pi, pi) and hands every critical bracket of F to the sink (see cc_engine.c). Fmax:
  * largest F seen at the partition points. */
 int cdist__cc_scan(const cdist__cc_frame *f, cdist__cc_sink *k, double *Fmax);
+/* The distances of the candidates kept by the sink's collector (robust mode), offered with the
+ * plain formula, recomputed by cdist__cc_point_d2 at their angles on A (and re-ordered). */
+void cdist__cc_settle_d2(const cdist__cc_frame *f, const cdist__cc_sink *k);
 /* Offer the pair at angle t of A to the sink's collector (robust mode). */
 void cdist__cc_pair_at(const cdist__cc_frame *f, double t, cdist__cc_sink *k);
 /* Parallel planes: F's critical angles in closed form (up to 4), or -1 when not parallel. */
