@@ -130,6 +130,11 @@
  * errs by at most twice that in the distance. */
 #define CD_CC_PARALLEL_ULPS 1.0
 
+/* Circle-circle: the robust method offers its candidates with the plain distance (rounding below
+ * 8 eps (2 R + |C|) <= 24 eps L) and recomputes in double-double those within the tie tolerance
+ * plus CD_CC_SETTLE_ULPS * eps * L of the best: every one that can be reported. */
+#define CD_CC_SETTLE_ULPS 64.0
+
 /* The batch circle-circle distance kernel (src/batch/cc_kernel.c), in the robust method's
  * scaled units (L in [0.5, 1), so F = squared distance <= 4):
  *   - an interval is pruned when its lower bound of F exceeds the best sampled F by more than

@@ -973,8 +973,8 @@ CD_FMA_CLONES double cdist__cc_point_d2(const cdist__ring *rg, double s, double 
 void cdist__cc_settle_d2(const cdist__cc_frame *f, const cdist__cc_sink *k)
 {
     cdist__best *b = k->best;
-    double u = k->unscale;
-    for (int i = 0; i < b->n; i++) {
+    double u = k->unscale, near = sqrt(b->c[0].d2) + (CD_TIE_ULPS + CD_CC_SETTLE_ULPS) * DBL_EPSILON * b->scale;
+    for (int i = 0; i < b->n && sqrt(b->c[i].d2) <= near; i++) {
         double t = b->c[i].param[k->swapped ? 1 : 0], c, s, rho;
         vec3 w;
         sincos(t, &s, &c);

@@ -94,8 +94,9 @@ void cdist__cc_frame_init(cdist__cc_frame *f, const cdist__circle *A, vec3 C, co
 /* Walks [-pi, pi) and hands every critical bracket of F to the sink (see cc_engine.c). Fmax:
  * largest F seen at the partition points. */
 int cdist__cc_scan(const cdist__cc_frame *f, cdist__cc_sink *k, double *Fmax);
-/* The distances of the candidates kept by the sink's collector (robust mode), offered with the
- * plain formula, recomputed by cdist__cc_point_d2 at their angles on A (and re-ordered). */
+/* The distances of the best candidate kept by the sink's collector (robust mode) and of those
+ * that may tie with it, offered with the plain formula, recomputed by cdist__cc_point_d2 at
+ * their angles on A (and re-ordered); the others are never reported. */
 void cdist__cc_settle_d2(const cdist__cc_frame *f, const cdist__cc_sink *k);
 /* Offer the pair at angle t of A to the sink's collector (robust mode). */
 void cdist__cc_pair_at(const cdist__cc_frame *f, double t, cdist__cc_sink *k);
