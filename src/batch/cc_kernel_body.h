@@ -47,8 +47,13 @@ typedef struct KN(ck_ring) {
 
 CD_INLINE void KN(ck_load)(const ck_block *b, int g, KN(ck_ring) *r)
 {
-    V *f = &r->alx;
-    for (int k = 0; k < CK_NC; k++) f[k] = vld(&b->col[k][g]);
+#define CK_LD(field, k) r->field = vld(&b->col[k][g])
+    CK_LD(alx, CK_C_ALX), CK_LD(aly, CK_C_ALY), CK_LD(alz, CK_C_ALZ);
+    CK_LD(bex, CK_C_BEX), CK_LD(bey, CK_C_BEY), CK_LD(bez, CK_C_BEZ);
+    CK_LD(gax, CK_C_GAX), CK_LD(gay, CK_C_GAY), CK_LD(gaz, CK_C_GAZ);
+    CK_LD(ha, CK_C_HA), CK_LD(hb, CK_C_HB), CK_LD(hc, CK_C_HC), CK_LD(s, CK_C_S), CK_LD(R2, CK_C_R2);
+    CK_LD(W1, CK_C_W1), CK_LD(Hh, CK_C_HH), CK_LD(Hc0, CK_C_HC0), CK_LD(Lw, CK_C_LW);
+#undef CK_LD
 }
 
 /* F at (c, s): (|w| - s)^2 + h^2. At a hull point (c, s scaled by 1/cos) this is F_ext of the
