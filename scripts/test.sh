@@ -2,7 +2,8 @@
 # SPDX-License-Identifier: MIT
 # The whole test suite: a release-style build and an ASan/UBSan build, every meson test in
 # both except the `slow` suite (long brute-force runs), which runs too when CIRCLEDIST_SLOW=1
-# (as .ci/run does), together with a static-only build. Prints a closing "N passed, N failed" line.
+# (as .ci/run does), together with a static-only build; and the threaded tests under
+# ThreadSanitizer. Prints a closing "N passed, N failed" line.
 # usage: [CIRCLEDIST_SLOW=1] scripts/test.sh
 set -u
 cd "$(dirname "$0")/.."
@@ -39,6 +40,21 @@ run_suite build || status=1
 # run about 3x faster than at -O0 and ASan still reports every bad access it can see.
 ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 \
   run_suite build-sanitize -Db_sanitize=address,undefined -Db_lundef=false -Dbuildtype=debugoptimized || status=1
+# ThreadSanitizer: the tests that run threads (the batch suite: threads 1, 2 and 7 bit-identical,
+# a second batch on a busy handle; the handle's in-use flag), halting on any report.
+run_tsan() { # DIR
+  if [ ! -d "$1" ]; then
+    meson setup "$1" -Db_sanitize=thread -Db_lundef=false -Dbuildtype=debugoptimized || return 1
+  fi
+  meson compile -C "$1" || return 1
+  rc=0
+  TSAN_OPTIONS=halt_on_error=1 meson test -C "$1" --print-errorlogs --num-processes 2 --suite batch || rc=1
+  count "$1"
+  TSAN_OPTIONS=halt_on_error=1 meson test -C "$1" --print-errorlogs handle || rc=1
+  count "$1"
+  return $rc
+}
+run_tsan build-tsan || status=1
 # With CIRCLEDIST_SLOW=1 (CI): also a static-only build (-Ddefault_library=static), whose tests
 # skip only what needs a shared library (ctypes, exported-symbol checks).
 if [ "${CIRCLEDIST_SLOW:-0}" = 1 ]; then

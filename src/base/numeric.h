@@ -23,9 +23,10 @@
  * at load time (ifunc), so the x86-64 baseline build still runs everywhere; in the FMA clone
  * fma() is one instruction instead of a library call. Helpers they call must be inlined into
  * them (CD_INLINE) to run in the clone. Empty for other compilers and targets, and under
- * AddressSanitizer. */
+ * AddressSanitizer and ThreadSanitizer (an instrumented ifunc resolver runs before the
+ * sanitizer's runtime is initialised). */
 #if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__ELF__) && \
-    !defined(CD_NO_FMA_CLONES) && !defined(__SANITIZE_ADDRESS__)
+    !defined(CD_NO_FMA_CLONES) && !defined(__SANITIZE_ADDRESS__) && !defined(__SANITIZE_THREAD__)
 #define CD_FMA_CLONES __attribute__((target_clones("fma", "default")))
 #else
 #define CD_FMA_CLONES
