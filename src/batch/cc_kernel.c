@@ -170,10 +170,6 @@ static uint64_t kernel_avx2(const cdist__job *job, int shape, double tol, size_t
 uint64_t cdist__cc_distance_kernel(const cdist__job *job, double unit_tol, size_t lo, size_t count)
 {
     static cdist__kernel_fn chosen;
-#ifdef CD_X86_KERNELS
-    cdist__kernel_fn f = cdist__kernel_choose(&chosen, kernel_avx512, kernel_avx2, kernel_scalar);
-#else
-    cdist__kernel_fn f = cdist__kernel_choose(&chosen, NULL, NULL, kernel_scalar);
-#endif
+    cdist__kernel_fn f = cdist__kernel_choose(&chosen, CD_X86_VARIANTS(kernel_avx512, kernel_avx2), kernel_scalar);
     return f(job, 0, unit_tol, lo, count);
 }

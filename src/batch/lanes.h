@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
-/* The batch distance kernels' instruction sets (line_kernel.c, cc_kernel.c): whether the x86
- * variants (AVX-512, AVX2 + FMA) are built, and the pragmas compiling a variant for its
- * instruction set. The lane operations of a variant are in lanes_def.h. */
+/* The batch distance kernels' instruction sets (point_kernel.c, line_kernel.c, cc_kernel.c):
+ * whether the x86 variants (AVX-512, AVX2 + FMA) are built, and the pragmas compiling a variant
+ * for its instruction set. The lane operations of a variant are in lanes_def.h. */
 #ifndef CDIST_BATCH_LANES_H
 #define CDIST_BATCH_LANES_H
 
@@ -21,6 +21,14 @@
 #define CD_LANES_TARGET_PUSH(isa) _Pragma("GCC push_options") CD_LANES_PRAGMA(GCC target(isa))
 #define CD_LANES_TARGET_POP _Pragma("GCC pop_options")
 #endif
+#endif
+
+/* The AVX-512 and AVX2 variants of a kernel for cdist__kernel_choose(), NULL where they are not
+ * built. */
+#ifdef CD_X86_KERNELS
+#define CD_X86_VARIANTS(avx512, avx2) avx512, avx2
+#else
+#define CD_X86_VARIANTS(avx512, avx2) NULL, NULL
 #endif
 
 #endif

@@ -10,13 +10,7 @@
 #include <stdint.h>
 
 #include "batch-priv.h"
-
-#if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))
-#define CD_X86_KERNELS 1
-#include <immintrin.h>
-
-#include "load8.h"
-#endif
+#include "lanes.h"
 
 /* The kernels load the fields by byte offset. */
 _Static_assert(offsetof(cdist_vec3, y) == 8 && offsetof(cdist_vec3, z) == 16, "cdist_vec3 layout");
@@ -208,10 +202,6 @@ AVX2 static uint64_t kernel_avx2(const cdist__job *job, int disk, double tol, si
 uint64_t cdist__point_distance_kernel(const cdist__job *job, int disk, double unit_tol, size_t lo, size_t count)
 {
     static cdist__kernel_fn chosen;
-#ifdef CD_X86_KERNELS
-    cdist__kernel_fn f = cdist__kernel_choose(&chosen, kernel_avx512, kernel_avx2, kernel_scalar);
-#else
-    cdist__kernel_fn f = cdist__kernel_choose(&chosen, NULL, NULL, kernel_scalar);
-#endif
+    cdist__kernel_fn f = cdist__kernel_choose(&chosen, CD_X86_VARIANTS(kernel_avx512, kernel_avx2), kernel_scalar);
     return f(job, disk, unit_tol, lo, count);
 }

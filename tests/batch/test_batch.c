@@ -18,6 +18,7 @@
 #include <string.h>
 
 #include "check.h"
+#include "test_rand.h"
 #include "circle_curve.h"
 #include "circledist.h"
 #include "query_io.h"
@@ -30,16 +31,6 @@ static const struct {
     cdist_kind kind;
 } curve_files[] = {{"cc", CDIST_KIND_CURVE_CIRCLE}, {"cd", CDIST_KIND_CURVE_DISK}};
 
-static uint64_t rng = 88172645463325252ull;
-static uint64_t next_rand(void)
-{
-    rng ^= rng << 13;
-    rng ^= rng >> 7;
-    rng ^= rng << 17;
-    return rng;
-}
-
-static double ulp(double x) { return nextafter(fabs(x), INFINITY) - fabs(x); }
 
 static FILE *open_in(int ndirs, char **dirs, const char *name, char *path, size_t len)
 {
@@ -422,6 +413,7 @@ static void conventions(cdist_query *q)
 
 int main(int argc, char **argv)
 {
+    test_rng = 88172645463325252ull;
     if (argc < 2) {
         fprintf(stderr, "usage: test_batch DIR...\n");
         return 2;

@@ -20,6 +20,7 @@
 #include <stdlib.h>
 
 #include "check.h"
+#include "test_rand.h"
 #include "query_io.h"
 
 enum { MAXN = 4200 };
@@ -28,17 +29,6 @@ static cdist_circle C[MAXN];
 static double D[MAXN];
 static size_t n_file;
 
-static uint64_t rng = 0x2545F4914F6CDD1Dull;
-static uint64_t next_rand(void)
-{
-    rng ^= rng << 13;
-    rng ^= rng >> 7;
-    rng ^= rng << 17;
-    return rng;
-}
-static double rnd01(void) { return (double)(next_rand() >> 11) * 0x1p-53; }
-
-static double ulp(double x) { return nextafter(fabs(x), INFINITY) - fabs(x); }
 
 static const char *shape_name[] = {"line", "ray", "segment"};
 static const char *file_kind[] = {"lc", "rc", "sc"};

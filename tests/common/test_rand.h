@@ -1,0 +1,25 @@
+/* SPDX-License-Identifier: MIT */
+/* The tests' reproducible pseudo-random numbers (xorshift64; a test may reseed test_rng first)
+ * and the ulp of a double. */
+#ifndef CDIST_TEST_RAND_H
+#define CDIST_TEST_RAND_H
+
+#include <math.h>
+#include <stdint.h>
+
+static uint64_t test_rng = 0x2545F4914F6CDD1Dull;
+
+static inline uint64_t next_rand(void)
+{
+    test_rng ^= test_rng << 13;
+    test_rng ^= test_rng >> 7;
+    test_rng ^= test_rng << 17;
+    return test_rng;
+}
+
+/* uniform in [0, 1) */
+static inline double rnd01(void) { return (double)(next_rand() >> 11) * 0x1p-53; }
+
+static inline double ulp(double x) { return nextafter(fabs(x), INFINITY) - fabs(x); }
+
+#endif
