@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* Distance kernels of point-circle and point-disk for cdist_batch_distance: the closed forms of
- * src/point/point.c with the validation of cdist__check_point/cdist__check_circle, operation by operation
+ * src/point/point.c with the validation of cdist__check_point/cdist__check_circle and the frame
+ * and scale of cdist__point_result, operation by operation
  * (same roundings, fma where the scalar code calls fma), so every distance is bit-identical to
  * the single query's. AVX-512 (8 lanes) and AVX2 (4 lanes) versions are chosen at run time;
  * the scalar version serves the tails and other machines. Entries failing any check are left
@@ -38,14 +39,19 @@ static int point_one(const cdist_vec3 *P, const cdist_circle *C, int disk, doubl
     double ns = v_norm(sd);
     if (!(fabs(m * ns - 1.0) <= tol)) return 1;
     vec3 n = v_scale(1.0 / ns, sd);
+    /* the frame and scale of cdist__point_result */
     vec3 rel = v_sub(p, c);
+    int e = cdist__scale_exponent(cdist__fmax(r, v_maxabs(rel)));
+    double down = cdist__pow2(-e), up = cdist__pow2(e);
+    rel = v_scale(down, rel);
+    r *= down;
     vec3 np = v_cross(n, rel);
     double h = v_dot(n, rel), rho = v_norm(np);
     if (disk && !(rho > r)) {
-        *d = sqrt(h * h);
+        *d = sqrt(h * h) * up;
     } else {
         double dr = rho - r;
-        *d = sqrt(fma(dr, dr, h * h));
+        *d = sqrt(fma(dr, dr, h * h)) * up;
     }
     return 0;
 }
@@ -111,6 +117,19 @@ AVX512 static uint64_t kernel_avx512(const cdist__job *job, int disk, double tol
         __m512d ins = _mm512_div_pd(one, ns);
         __m512d nx = _mm512_mul_pd(ins, sx), ny = _mm512_mul_pd(ins, sy), nz = _mm512_mul_pd(ins, sz);
         __m512d rx = _mm512_sub_pd(px, cx), ry = _mm512_sub_pd(py, cy), rz = _mm512_sub_pd(pz, cz);
+        /* the scale of cdist__point_result: 2^e of L = max(r, |rel|), clamped; a subnormal or
+         * zero L is left to the scalar path */
+        __m512d L = _mm512_max_pd(r, max3_8(rx, ry, rz));
+        ok &= _mm512_cmp_pd_mask(L, _mm512_set1_pd(0x1p-1022), _CMP_GE_OQ);
+        __m512d up = _mm512_max_pd(_mm512_min_pd(_mm512_castsi512_pd(_mm512_and_si512(_mm512_castpd_si512(L),
+                                                                                     _mm512_set1_epi64(0x7ff0000000000000ll))),
+                                                 _mm512_set1_pd(0x1p1000)),
+                                   _mm512_set1_pd(0x1p-1000));
+        __m512d down = _mm512_castsi512_pd(_mm512_sub_epi64(_mm512_set1_epi64(0x7fe0000000000000ll), _mm512_castpd_si512(up)));
+        rx = _mm512_mul_pd(down, rx);
+        ry = _mm512_mul_pd(down, ry);
+        rz = _mm512_mul_pd(down, rz);
+        r = _mm512_mul_pd(r, down);
         /* n x rel, each component a product difference without fma (as v_cross) */
         __m512d qx = _mm512_sub_pd(_mm512_mul_pd(ny, rz), _mm512_mul_pd(nz, ry));
         __m512d qy = _mm512_sub_pd(_mm512_mul_pd(nz, rx), _mm512_mul_pd(nx, rz));
@@ -121,7 +140,7 @@ AVX512 static uint64_t kernel_avx512(const cdist__job *job, int disk, double tol
         __m512d hh = _mm512_mul_pd(h, h);
         __m512d d2 = _mm512_fmadd_pd(dr, dr, hh);
         if (disk) d2 = _mm512_mask_blend_pd(_mm512_cmp_pd_mask(rho, r, _CMP_GT_OQ), hh, d2);
-        __m512d d = _mm512_sqrt_pd(d2);
+        __m512d d = _mm512_mul_pd(_mm512_sqrt_pd(d2), up);
         _mm512_mask_storeu_pd(&job->distances[i], ok, d);
         left |= (uint64_t)(uint8_t)~ok << k;
     }
@@ -177,6 +196,17 @@ AVX2 static uint64_t kernel_avx2(const cdist__job *job, int disk, double tol, si
         __m256d ins = _mm256_div_pd(one, ns);
         __m256d nx = _mm256_mul_pd(ins, sx), ny = _mm256_mul_pd(ins, sy), nz = _mm256_mul_pd(ins, sz);
         __m256d rx = _mm256_sub_pd(px, cx), ry = _mm256_sub_pd(py, cy), rz = _mm256_sub_pd(pz, cz);
+        /* the scale of cdist__point_result (see the 8 lanes) */
+        __m256d L = _mm256_max_pd(r, max3_4(rx, ry, rz));
+        ok &= le4(_mm256_set1_pd(0x1p-1022), L);
+        __m256d up = _mm256_max_pd(_mm256_min_pd(_mm256_and_pd(L, _mm256_castsi256_pd(_mm256_set1_epi64x(0x7ff0000000000000ll))),
+                                                 _mm256_set1_pd(0x1p1000)),
+                                   _mm256_set1_pd(0x1p-1000));
+        __m256d down = _mm256_castsi256_pd(_mm256_sub_epi64(_mm256_set1_epi64x(0x7fe0000000000000ll), _mm256_castpd_si256(up)));
+        rx = _mm256_mul_pd(down, rx);
+        ry = _mm256_mul_pd(down, ry);
+        rz = _mm256_mul_pd(down, rz);
+        r = _mm256_mul_pd(r, down);
         __m256d qx = _mm256_sub_pd(_mm256_mul_pd(ny, rz), _mm256_mul_pd(nz, ry));
         __m256d qy = _mm256_sub_pd(_mm256_mul_pd(nz, rx), _mm256_mul_pd(nx, rz));
         __m256d qz = _mm256_sub_pd(_mm256_mul_pd(nx, ry), _mm256_mul_pd(ny, rx));
@@ -186,7 +216,7 @@ AVX2 static uint64_t kernel_avx2(const cdist__job *job, int disk, double tol, si
         __m256d hh = _mm256_mul_pd(h, h);
         __m256d d2 = _mm256_fmadd_pd(dr, dr, hh);
         if (disk) d2 = _mm256_blendv_pd(hh, d2, _mm256_cmp_pd(rho, r, _CMP_GT_OQ));
-        __m256d d = _mm256_sqrt_pd(d2);
+        __m256d d = _mm256_mul_pd(_mm256_sqrt_pd(d2), up);
         double out[4];
         _mm256_storeu_pd(out, d);
         for (int l = 0; l < 4; l++)

@@ -253,6 +253,26 @@ static double magnitude(const cdq_line *ql)
     return m;
 }
 
+/* The distance-only batch of the same query as one entry (its SIMD kernels for points, lines,
+ * rays and segments against circles, and circle-circle): the single query's status, and its
+ * distance to 2 ulps of the problem scale (NaN for a bad entry). */
+static void check_batch_distance(const cdq_line *ql, cdist_status st, const cdist_result *r)
+{
+    if (!ql->kind->objects || ql->kind->batch_kind < 0) return;
+    double a[32], b[32], d; /* room for the largest object (a helix, a Bezier curve) */
+    cdist_status bs;
+    ql->kind->objects(ql->v, a, b);
+    cdist_batch_distance(q, (cdist_kind)ql->kind->batch_kind, 1, a, 0, b, 0, &d, &bs);
+    /* (the scale can overflow for a tiny non-unit direction: equal distances need no scale) */
+    double L = st == CDIST_OK ? cdq_scale(ql, r->distance) : 0.0;
+    int same = bs == st && (st != CDIST_OK ? isnan(d)
+                                           : d == r->distance || fabs(d - r->distance) <= 2.0 * (nextafter(L, INFINITY) - L));
+    if (!same) {
+        fprintf(stderr, "fuzz: distance-only batch: %s %.17g\n", cdist_status_name(bs), d);
+        violation(ql->kind->name, "the distance-only batch differs from the single query", r);
+    }
+}
+
 static void run_checked(const cdq_line *ql)
 {
     cdist_result r;
@@ -260,6 +280,7 @@ static void run_checked(const cdq_line *ql)
     cur_n = ql->nvalues;
     cdist_status st = cdq_run(q, ql, &r);
     check_result(ql->kind->name, st, &r);
+    check_batch_distance(ql, st, &r);
     if (st != CDIST_OK || signed_kind(ql->kind->name)) return; /* swept: tests/swept checks witnesses */
     obj o0, o1;
     objects_of(ql, &o0, &o1);
