@@ -162,6 +162,14 @@ CD_INLINE vec3 circle_pt(const cdist__circle *c, double X, double Y, double *ang
         return v_scale(c->r, c->u);
     }
     *ang = cdist__polar_angle(X, Y);
+    if (n < 0x1p-500) {
+        /* (X, Y) within 1e-150 of the scale from the axis: r / n may overflow (then 0 * inf is
+         * NaN); the direction scaled to its largest component first (exact) */
+        double m = cdist__fmax(fabs(X), fabs(Y));
+        X /= m;
+        Y /= m;
+        n = sqrt(MADD(X, X, Y * Y));
+    }
     double k = c->r / n;
     return v_add(v_scale(k * X, c->u), v_scale(k * Y, c->v));
 }

@@ -495,6 +495,17 @@ static void extremes(void)
         cdist_circle tiny = circ(tv(0, 0, 0), tv(0, 0, 1), 1e-300);
         CHECK(ray_q(mi, tv(1, 1, 1), tv(0, 0, 1), tiny, &r) == CDIST_OK, "tiny circle status");
         CHECK_NEAR(r.distance, sqrt(3.0), 4e-16, "tiny circle");
+        /* a tiny segment along the axis, 1e-302 off it (found by the fuzzer): the circle point of
+         * a direction with subnormal squares was NaN (r / |(X, Y)| overflowed) */
+        cdist_circle off = circ(tv(-4.1858709320789469e-302, 0, 0), tv(1, -2.8393226951346075e-22, 0), 3.1396500615433622e-07);
+        CHECK(seg_q(mi, tv(9.332636185032189e-151, 0, 0), tv(6.3931240613300022e-213, 0, 0), off, &r) == CDIST_OK,
+              "segment on the axis status");
+        CHECK_NEAR(r.distance, 3.1396500615433622e-07, 4e-16 * 3.14e-7, "segment on the axis");
+        CHECK(r.num_pairs >= 1 && isfinite(r.pairs[0].point[1].x) && isfinite(r.pairs[0].point[1].y) &&
+                  isfinite(r.pairs[0].point[1].z) &&
+                  fabs(hypot(r.pairs[0].point[1].y, r.pairs[0].point[1].z) - 3.1396500615433622e-07) <= 1e-21,
+              "segment on the axis: the circle point (%g %g %g) is on the circle", r.pairs[0].point[1].x,
+              r.pairs[0].point[1].y, r.pairs[0].point[1].z);
     }
 }
 
