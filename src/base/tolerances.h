@@ -137,16 +137,22 @@
 
 /* The batch circle-circle distance kernel (src/batch/cc_kernel.c), in the robust method's
  * scaled units (L in [0.5, 1), so F = squared distance <= 4):
- *   - an interval is pruned when its lower bound of F exceeds the best sampled F by more than
- *     CD_CCK_PRUNE_MARGIN: above the rounding of both (about 20 eps * 9 < 1e-13) 25 times over,
- *     so a pruned interval cannot hold the minimum; a near-tie of two minima goes to the scalar
- *     path instead;
+ *   - the answer F* is certified when the lower bound of F on every region outside the final
+ *     basin exceeds it by CD_CCK_CERT_MARGIN: above the rounding of both (about 20 eps * 9 <
+ *     1e-13) 25 times over, so no region can hold a smaller F; a near-tie of two minima goes
+ *     to the scalar path instead;
  *   - F''/2 at a basin's ends carries CD_CCK_F2_ULPS * eps times the magnitude of its terms
- *     (the bound of the engine's convex(), cc_engine.c);
- *   - Newton in the certified basin stops when every lane's step is below CD_CCK_NEWTON_STEP rad:
- *     the next error, about (F''' / F'') step^2 < 1e-12 rad, moves F by about 1e-24. */
-#define CD_CCK_PRUNE_MARGIN 1e-12
+ *     (as the bound of the engine's convex(), cc_engine.c);
+ *   - Newton in the certified basin settles a lane after its first step below
+ *     CD_CCK_NEWTON_STEP rad: its angle is then within about (F''' / F'') step^2 < 1e-19 rad
+ *     of the minimum, and the angle's own rounding (1e-15 rad) dominates;
+ *   - an answer below sqrt(CD_CCK_MIN_F) (1e-12, circles that touch or cross) goes to the
+ *     scalar path: at a minimum d* the distance moves by about (R dt)^2 / (2 d*) for an angle
+ *     error dt, an ulp of the scale only while d* >= 1e-12 (dt = 1e-15); below it the two
+ *     searches' roundings of the angle would show. */
+#define CD_CCK_CERT_MARGIN 1e-12
 #define CD_CCK_F2_ULPS 64.0
-#define CD_CCK_NEWTON_STEP 1e-7
+#define CD_CCK_NEWTON_STEP 1e-10
+#define CD_CCK_MIN_F 1e-24
 
 #endif

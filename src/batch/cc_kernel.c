@@ -12,23 +12,25 @@
  *   1. Grid: F at CK_GRID equally spaced angles. F extends to a concave function G of
  *      (cos t, sin t) (cc_engine.c), so on an arc of width w, F >= min(F(a), F(b), G(T)) with T
  *      the tangents' intersection, and G(T) = F_ext(T) - R^2 tan^2(w / 2) where F_ext is the
- *      same formula at the point (cos, sin) / cos(w / 2). Every interval outside the basin (the
- *      two intervals around the best grid angle) must have its bound above the best F plus a
- *      margin: then the global minimum is in the basin.
+ *      same formula at the point (cos, sin) / cos(w / 2). The bound of every interval outside
+ *      the basin (the two intervals around the best grid angle) is kept: the smallest, minlb.
  *   2. Zoom: the basin [t - h, t + h] is certified convex (F''/2 at its ends against a bound of
- *      F'''/2, the engine's convex()); else it is split in 8, the six subintervals away from
- *      the best point are pruned by the same hull bound and the basin shrinks to the two around
- *      it (h / 4), up to CK_LEVELS times.
+ *      F'''/2, as the engine's convex()); else it is split in 8, the hull bounds of the six
+ *      subintervals away from the best point join minlb and the basin shrinks to the two
+ *      around it (h / 4), up to CK_LEVELS times.
  *   3. Newton on F' in the convex basin (one minimum there), cos and sin by rotation from the
  *      basin's centre with a Taylor series of the offset.
- *   4. The distance at the angle found: cdist__cc_point_d2, the robust method's formula
+ *   4. The certificate: minlb exceeds F at the angle found by CD_CCK_CERT_MARGIN, so no point
+ *      outside the final basin is closer, and F there is at least CD_CCK_MIN_F.
+ *   5. The distance at the angle found: cdist__cc_point_d2, the robust method's formula
  *      (double-double), in lanes operation by operation, scaled back as the single query scales
  *      its answer.
- * Whatever fails (a check of the fast validation, a zero radius, a near-tie of two minima, a
- * basin on B's axis or not certified in CK_LEVELS levels, Newton not settled) goes to the scalar
- * path. The angle differs from the single query's by rounding only (both are the certified
- * unique minimum of the same F, settled by Newton); the distance, at a minimum, by at most an
- * ulp or two of the scale. */
+ * Whatever fails (a check of the fast validation, a zero radius, equal radii, a near-tie of two
+ * minima, a basin on B's axis or not certified in CK_LEVELS levels, Newton not settled, circles
+ * that touch or cross) goes to the scalar path. The angle differs from the single query's by
+ * rounding only (both are the certified unique minimum of the same F, settled by Newton); at a
+ * minimum d* >= 1e-12 of the scale the distance depends on it to second order (tolerances.h),
+ * and the two agree to an ulp of the scale. */
 #include <float.h>
 #include <math.h>
 #include <pthread.h>
@@ -40,8 +42,8 @@
 #include "circles/circles-priv.h"
 #include "lanes.h"
 
-#define CK_GRID 48     /* grid angles (97% of random pairs prune every interval outside the basin) */
-#define CK_LEVELS 7    /* basin half-widths 2 pi / 32 * 4^-l, l < 7: down to 5e-5 rad */
+#define CK_GRID 32     /* grid angles (97% of random pairs prune every interval outside the basin) */
+#define CK_LEVELS 7    /* basin half-widths 2 pi / CK_GRID * 4^-l, l < 7: down to 5e-5 rad */
 #define CK_NEWTON_MAX 8 /* from a certified basin Newton settles in 3 to 5 steps */
 #define CK_FIRST_CONVEX 2 /* the level of the first convexity check (measured: below it < 7% pass) */
 

@@ -11,18 +11,21 @@
 #define ck_madd(a, b, c) vfma(a, b, c)
 #endif
 
-/* sqrt(x) and 1 / sqrt(x) for the search: with AVX-512, the 14-bit reciprocal square root and
- * two Newton steps (relative error about 1e-16, no division: F then carries 1e-15 of error, far
- * below CD_CCK_PRUNE_MARGIN), NaN at 0 (the lane is then left to the scalar path); elsewhere
- * the square root and a division. */
+/* sqrt(x) and 1 / sqrt(x) of x >= 0 for the search: with AVX-512, the 14-bit reciprocal square
+ * root and two Newton steps (relative error about 1e-16, no division: F then carries 1e-15 of
+ * error, far below CD_CCK_CERT_MARGIN); below 2^-1000 (where the steps would give NaN) the root
+ * is taken as 0 and its reciprocal as infinity, as the division gives at 0 (F moves by less than
+ * 2^-498 s). Elsewhere the square root and a division. */
 CD_INLINE V KN(ck_sqrt_inv)(V x, V *inv)
 {
 #if W == 8
-    V y = _mm512_rsqrt14_pd(x), h = vmul(vset(0.5), x);
+    M big = vge(x, vset(0x1p-1000));
+    V xs = vsel(big, x, vset(1.0));
+    V y = _mm512_rsqrt14_pd(xs), h = vmul(vset(0.5), xs);
     y = vmul(y, vfma(vneg(h), vmul(y, y), vset(1.5)));
     y = vmul(y, vfma(vneg(h), vmul(y, y), vset(1.5)));
-    *inv = y;
-    return vmul(x, y);
+    *inv = vsel(big, y, vset(INFINITY));
+    return vsel(big, vmul(xs, y), vset(0.0));
 #else
     V r = vsqrt(x);
     *inv = vdiv(vset(1.0), r);
@@ -93,7 +96,9 @@ CD_INLINE void KN(ck_f2)(const KN(ck_ring) *r, V c, V s, V *F0, V *F1, V *F2, V 
     *rho = rh;
     *rho2 = rpp;
     V W1 = r->W1, W12 = vmul(W1, W1), Lw = r->Lw;
-    V t = vmul(vmul(vadd(Lw, vabs(dr)), vadd(vadd(vabs(g1), W12), vmul(Lw, W1))), irh);
+    /* g1 = w'.w' + w.ga - Q carries eps (W1^2 + (rho + Lw) |ga| + Q), |ga| <= |C| <= Lw */
+    V g1e = vadd(vadd(vabs(g1), W12), vadd(vmul(Lw, W1), vadd(vmul(vadd(rh, Lw), Lw), Q)));
+    V t = vmul(vmul(vadd(Lw, vabs(dr)), g1e), irh);
     *e2 = vmul(vset(CD_CCK_F2_ULPS * DBL_EPSILON),
                vadd(vadd(W12, t), vadd(vmul(r->Hh, r->Hh), vmul(vadd(vabs(h), Lw), r->Hh))));
 }
@@ -285,7 +290,7 @@ static unsigned KN(ck_search)(ck_block *b, int g)
 {
     KN(ck_ring) r;
     KN(ck_load)(b, g, &r);
-    V margin = vset(CD_CCK_PRUNE_MARGIN);
+    V margin = vset(CD_CCK_CERT_MARGIN);
 
     /* Grid: F at the CK_GRID angles, the best one. */
     V Fg[CK_GRID], bestF = vset(INFINITY), bestJ = vset(0.0);
@@ -298,14 +303,16 @@ static unsigned KN(ck_search)(ck_block *b, int g)
     /* The concave hull bound of every interval outside the basin (the two around the best
      * angle), the smallest kept in minlb; the basin's centre and the F at its ends. */
     M fail = mfalse();
-    V minlb = vset(INFINITY), R2T = vmul(r.R2, vset(ck_tab.grid_tan2));
+    V minlb = vset(INFINITY), R2tan = vmul(r.R2, vset(ck_tab.grid_tan2));
+    M nan = mfalse(); /* a NaN bound would drop out of minlb (min keeps the other operand) */
     V c = vset(0.0), s = vset(0.0), Fl = vset(0.0), Fr = vset(0.0);
     for (int j = 0; j < CK_GRID; j++) {
         int jn = (j + 1) % CK_GRID, jp = (j + CK_GRID - 1) % CK_GRID;
         V lb = vmin(vmin(Fg[j], Fg[jn]),
-                    vsub(KN(ck_f)(&r, vset(ck_tab.hull_c[j]), vset(ck_tab.hull_s[j])), R2T));
+                    vsub(KN(ck_f)(&r, vset(ck_tab.hull_c[j]), vset(ck_tab.hull_s[j])), R2tan));
         M at = veq(vset((double)j), bestJ), before = veq(vset((double)jn), bestJ);
         minlb = vsel(mor(at, before), minlb, vmin(minlb, lb));
+        nan = mor(nan, vne(lb, lb));
         c = vsel(at, vset(ck_tab.grid_c[j]), c);
         s = vsel(at, vset(ck_tab.grid_s[j]), s);
         Fl = vsel(before, Fg[j], Fl);
@@ -345,15 +352,16 @@ static unsigned KN(ck_search)(ck_block *b, int g)
             kb = vsel(lt, vset((double)k), kb);
         }
         M edge = mor(veq(kb, vset(0.0)), veq(kb, vset(8.0)));
-        V R2t = vmul(r.R2, vset(ck_tab.sub_tan2[l]));
+        V R2tan_sub = vmul(r.R2, vset(ck_tab.sub_tan2[l]));
         for (int i = 0; i < 8; i++) {
             int m = i < 4 ? 3 - i : i - 4; /* hull point of [i, i+1] at (2 (i - 4) + 1) h / 8 */
             double sg = i < 4 ? -1.0 : 1.0;
             V hc, hs;
             KN(ck_rot)(c, s, ck_tab.hull_sub_c[l][m], sg * ck_tab.hull_sub_s[l][m], &hc, &hs);
-            V lb = vmin(vmin(Fk[i], Fk[i + 1]), vsub(KN(ck_f)(&r, hc, hs), R2t));
+            V lb = vmin(vmin(Fk[i], Fk[i + 1]), vsub(KN(ck_f)(&r, hc, hs), R2tan_sub));
             M keep = mor(veq(vset((double)i), kb), veq(vset((double)(i + 1)), kb));
             minlb = vsel(mandn(keep, active), vmin(minlb, lb), minlb);
+            nan = mor(nan, mand(active, vne(lb, lb)));
         }
         fail = mor(fail, mand(active, edge));
         active = mandn(edge, active);
@@ -393,11 +401,12 @@ static unsigned KN(ck_search)(ck_block *b, int g)
         if (!many(open)) break;
         if (it + 1 == CK_NEWTON_MAX) fail = mor(fail, open);
     }
-    /* Certified: every region outside the final basin has its lower bound above F there. */
+    /* Certified: every region outside the final basin has its lower bound above F there; and
+     * F there is not below CD_CCK_MIN_F (touching or crossing circles: the scalar path). */
     V cd, sd;
     KN(ck_sincos_small)(d, &cd, &sd);
     V Fs = KN(ck_f)(&r, vsub(vmul(c, cd), vmul(s, sd)), vadd(vmul(s, cd), vmul(c, sd)));
-    fail = mor(fail, mnot(vgt(minlb, vadd(Fs, margin))));
+    fail = mor(mor(fail, nan), mnot(mand(vgt(minlb, vadd(Fs, margin)), vge(Fs, vset(CD_CCK_MIN_F)))));
     vst(&b->t[g], vadd(t, d));
     return mbits(fail);
 }

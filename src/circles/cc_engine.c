@@ -261,10 +261,11 @@ static void cc_detail(const cdist__cc_frame *f, cdist__cc_pt *p)
     p->eF1 = 16 * DBL_EPSILON * (Lw * W1 * (1 + ar * irho) + ar * fabs(v.g) * (rho > 0 ? irho : 0.0) +
                                  fabs(v.h) * fabs(v.h1) + Lw * (fabs(v.h1) + W1));
     /* F''/2 = rho'^2 + dr rho'' + h'^2 + h h'', rho'' = (g1 - rho'^2) / rho: the absolute
-     * errors of dr, h (eps Lw), of g1 (eps Lw W1) and g / rho carried through, with margin. */
+     * errors of dr, h (eps Lw), of g1 = w'.w' + w.ga - Q (eps (Lw W1 + (rho + Lw) |ga| + Q)) and
+     * g / rho carried through, with margin. */
     p->F2 = v.F2;
-    p->eF2 = 64 * DBL_EPSILON * (W1 * W1 + (Lw + ar) * (fabs(v.g1) + W1 * W1 + Lw * W1) * irho + f->Hh * f->Hh +
-                                 (fabs(v.h) + Lw) * f->Hh);
+    double g1e = fabs(v.g1) + W1 * W1 + Lw * W1 + (rho + Lw) * f->nga + Q;
+    p->eF2 = 64 * DBL_EPSILON * (W1 * W1 + (Lw + ar) * g1e * irho + f->Hh * f->Hh + (fabs(v.h) + Lw) * f->Hh);
 }
 
 /* F'/2 and F''/2 only (for the refinement). */

@@ -5,7 +5,8 @@
  * on the reference files with bad entries mixed in (NaN, infinity, zero and non-unit normals,
  * negative radius, out of range) and constructed special cases (coaxial, concentric, parallel
  * planes, linked and touching, a circle through the other's axis, symmetric pairs of minima,
- * zero radius, tiny, huge and far-away circles):
+ * zero radius, tiny, huge, far-away and subnormal-scale circles; random pairs that cross, touch
+ * or nearly touch, and random pairs near an axis):
  * - the kernel answers an entry only if the single query accepts it, and then within 2 ulps of
  *   scale of the single query's distance (issue #11; scale as the reference files define it)
  *   and within 4e-15 of scale of the independent reference distance (the .expected files,
@@ -26,7 +27,7 @@
 #include "test_rand.h"
 #include "query_io.h"
 
-enum { MAXN = 2600 };
+enum { MAXN = 2900 };
 static cdist_circle A[MAXN], B[MAXN];
 static double D[MAXN], REF[MAXN]; /* REF: NaN where there is no reference distance */
 static size_t n_file;
@@ -54,6 +55,25 @@ static cdist_circle circ(double cx, double cy, double cz, double nx, double ny, 
     return (cdist_circle){{cx, cy, cz}, {nx / l, ny / l, nz / l}, r};
 }
 
+static cdist_vec3 add3(cdist_vec3 a, cdist_vec3 b) { return (cdist_vec3){a.x + b.x, a.y + b.y, a.z + b.z}; }
+static cdist_vec3 scale3(double k, cdist_vec3 a) { return (cdist_vec3){k * a.x, k * a.y, k * a.z}; }
+/* a random unit vector */
+static cdist_vec3 runit(void)
+{
+    for (;;) {
+        double x = 2 * rnd01() - 1, y = 2 * rnd01() - 1, z = 2 * rnd01() - 1, l = sqrt(x * x + y * y + z * z);
+        if (l > 0.1 && l < 1) return (cdist_vec3){x / l, y / l, z / l};
+    }
+}
+/* an orthonormal basis u, v of the plane normal to the unit vector n */
+static void basis_of(cdist_vec3 n, cdist_vec3 *u, cdist_vec3 *v)
+{
+    cdist_vec3 e = fabs(n.x) < 0.9 ? (cdist_vec3){1, 0, 0} : (cdist_vec3){0, 1, 0};
+    cdist_vec3 w = {n.y * e.z - n.z * e.y, n.z * e.x - n.x * e.z, n.x * e.y - n.y * e.x};
+    *u = scale3(1.0 / sqrt(w.x * w.x + w.y * w.y + w.z * w.z), w);
+    *v = (cdist_vec3){n.y * u->z - n.z * u->y, n.z * u->x - n.x * u->z, n.x * u->y - n.y * u->x};
+}
+
 /* Valid special configurations appended after the file's entries. */
 static size_t specials(size_t n)
 {
@@ -76,19 +96,33 @@ static size_t specials(size_t n)
         B[n] = s[k][1];
         REF[n] = NAN;
     }
-    /* random linked, touching and near-axis pairs around random circles */
-    for (int k = 0; k < 200 && n < MAXN; k++, n++) {
-        double r = 0.2 + 2 * rnd01(), th = 2 * M_PI * rnd01();
+    /* random pairs that cross, touch or nearly touch (distance about delta, 0 to 1e-4) and
+     * random pairs near the other circle's axis, none of them symmetric */
+    static const double delta[] = {0.0, 1e-13, 1e-10, 1e-7, 1e-4};
+    for (int k = 0; k < 500 && n < MAXN; k++, n++) {
+        double r = 0.3 + rnd01(), rb = 0.3 + rnd01(), th = 2 * M_PI * rnd01();
         A[n] = circ(rnd01(), rnd01(), rnd01(), rnd01() - 0.5, rnd01() - 0.5, rnd01() - 0.5, r);
-        /* a point of A, and B through it (k even) or near A's axis (k odd) */
-        cdist_vec3 nn = A[n].normal, e = fabs(nn.x) < 0.9 ? (cdist_vec3){1, 0, 0} : (cdist_vec3){0, 1, 0};
-        cdist_vec3 u = {nn.y * e.z - nn.z * e.y, nn.z * e.x - nn.x * e.z, nn.x * e.y - nn.y * e.x};
-        double lu = sqrt(u.x * u.x + u.y * u.y + u.z * u.z);
-        u.x /= lu, u.y /= lu, u.z /= lu;
-        double rb = 0.2 + 2 * rnd01(), off = (k % 2) ? 1e-7 * rnd01() : r * cos(th) + 1e-9 * (rnd01() - 0.5);
-        B[n] = circ(A[n].center.x + off * u.x + rb * nn.x, A[n].center.y + off * u.y + rb * nn.y,
-                    A[n].center.z + off * u.z + rb * nn.z, u.x, u.y, u.z, rb);
+        cdist_vec3 u, v, nb = runit(), ub;
+        basis_of(A[n].normal, &u, &v);
+        if (k % 6 == 5) { /* B's axis within 1e-7 of A's centre: B centred near A's centre on a line */
+            cdist_vec3 o = scale3(1e-7 * rnd01(), runit()), axis = runit();
+            double off = 2 * rnd01() - 1;
+            B[n] = circ(A[n].center.x + o.x + off * axis.x, A[n].center.y + o.y + off * axis.y,
+                        A[n].center.z + o.z + off * axis.z, axis.x, axis.y, axis.z, rb);
+        } else { /* a point P of A, B through P, then B moved by delta */
+            cdist_vec3 P = add3(A[n].center, add3(scale3(r * cos(th), u), scale3(r * sin(th), v)));
+            cdist_vec3 tmp;
+            basis_of(nb, &ub, &tmp);
+            cdist_vec3 Cb = add3(add3(P, scale3(rb, ub)), scale3(delta[k % 6 % 5], runit()));
+            B[n] = circ(Cb.x, Cb.y, Cb.z, nb.x, nb.y, nb.z, rb);
+        }
         REF[n] = NAN;
+    }
+    /* a pair at a subnormal scale (left to the scalar path by the kernel) */
+    if (n < MAXN) {
+        A[n] = circ(1e-310, 0, 0, 0.3, 0.4, 0.5, 2e-310);
+        B[n] = circ(0, 3e-310, 1e-310, 0.5, -0.4, 0.3, 1e-310);
+        REF[n++] = NAN;
     }
     return n;
 }
@@ -102,7 +136,7 @@ static size_t load(const char *dir, const char *set)
     FILE *e = fopen(path, "r");
     CHECK(f != NULL && e != NULL, "cannot read the cc_%s files", set);
     size_t n = 0;
-    while (f && e && n < MAXN - 300 && fgets(buf, sizeof buf, f)) {
+    while (f && e && n < MAXN - 600 && fgets(buf, sizeof buf, f)) {
         cdq_line ql;
         if (cdq_parse(buf, &ql, err, sizeof err) <= 0) continue;
         memcpy(&A[n], ql.v, sizeof A[n]);
@@ -227,8 +261,12 @@ static void check_setup(const char *name, sfn setup, ffn final, int lanes, cdist
                 cdist__cc_problem p;
                 vec3 off;
                 cdist__best best;
+                /* the kernel also leaves a subnormal frame scale and equal radii */
+                double Lf = ok ? fmax(fmax(a.r, o.r), fmax(fmax(fabs(o.c.x - a.c.x), fabs(o.c.y - a.c.y)),
+                                                          fabs(o.c.z - a.c.z)))
+                               : 0.0;
                 int e = ok ? cdist__circles_frame(&a, &o, &off, &best) : 0;
-                ok = ok && cdist__cc_prepare(&a, &o, &p) && a.r != o.r;
+                ok = ok && Lf >= 0x1p-1022 && cdist__cc_prepare(&a, &o, &p) && a.r != o.r;
                 if (!ok) {
                     accept_bad += !(left >> l & 1);
                     continue;
