@@ -1,10 +1,11 @@
 /* SPDX-License-Identifier: MIT */
 /* Distance kernels of point-circle and point-disk for cdist_batch_distance: the closed forms of
- * src/point/point.c with the validation of cdist__check_point/cdist__check_circle and the frame
- * and scale of cdist__point_result, operation by operation
- * (same roundings, fma where the scalar code calls fma), so every distance is bit-identical to
- * the single query's. AVX-512 (8 lanes) and AVX2 (4 lanes) versions are chosen at run time;
- * the scalar version serves the tails and other machines. Entries failing any check are left
+ * src/point/point.c with the validation of cdist__check_point/cdist__check_circle, operation by
+ * operation (same roundings, fma where the scalar code calls fma), without the single query's
+ * power-of-two scaling (CD_KERNEL_MIN_SCALE below): every distance is bit-identical to the
+ * single query's unless an intermediate underflows, and within an ulp of the scale always.
+ * AVX-512 (8 lanes) and AVX2 (4 lanes) versions are chosen at run time; the scalar version
+ * serves the tails and other machines. Entries failing any check are left
  * to the scalar path, which produces their status and message. */
 #include <math.h>
 #include <stddef.h>
@@ -20,6 +21,13 @@ _Static_assert(offsetof(cdist_circle, normal) == 24 && offsetof(cdist_circle, ra
 /* The smallest largest normal component the fast path takes (circle_fast in src/api/validate.c):
  * below it 1 / m overflows, and the single query rescales by a power of two instead. */
 #define CD_KERNEL_MIN_NORMAL 0x1p-500
+/* The single query scales the point and circle by 2^-e (cdist__point_result) so that their scale
+ * L = max(r, |p - c|) is about 1; the kernels do not. Power-of-two scaling changes no rounding,
+ * so the two agree bit for bit unless an intermediate underflows (squares of lengths below
+ * 2^-511; nothing overflows below 1e150). Such a term is below 2^-511 in length, below 2^-61 L
+ * for L >= CD_KERNEL_MIN_SCALE, so the distance stays within an ulp of the scale; entries of a
+ * smaller scale (where a distance of 1e-170 came out 0) go to the scalar path. */
+#define CD_KERNEL_MIN_SCALE 0x1p-450
 
 /* Finite and within 1e150 (NaN fails every comparison). */
 static inline int in_range(vec3 a)
@@ -39,19 +47,16 @@ static int point_one(const cdist_vec3 *P, const cdist_circle *C, int disk, doubl
     double ns = v_norm(sd);
     if (!(fabs(m * ns - 1.0) <= tol)) return 1;
     vec3 n = v_scale(1.0 / ns, sd);
-    /* the frame and scale of cdist__point_result */
     vec3 rel = v_sub(p, c);
-    int e = cdist__scale_exponent(cdist__fmax(r, v_maxabs(rel)));
-    double down = cdist__pow2(-e), up = cdist__pow2(e);
-    rel = v_scale(down, rel);
-    r *= down;
     vec3 np = v_cross(n, rel);
-    double h = v_dot(n, rel), rho = v_norm(np);
+    double h = v_dot(n, rel), q2 = v_sqr(np), rho = sqrt(q2);
+    /* the scale guard: |rel|^2 = |n x rel|^2 + h^2, or r^2, at least CD_KERNEL_MIN_SCALE^2 */
+    if (!(cdist__fmax(q2 + h * h, r * r) >= CD_KERNEL_MIN_SCALE * CD_KERNEL_MIN_SCALE)) return 1;
     if (disk && !(rho > r)) {
-        *d = sqrt(h * h) * up;
+        *d = sqrt(h * h);
     } else {
         double dr = rho - r;
-        *d = sqrt(fma(dr, dr, h * h)) * up;
+        *d = sqrt(fma(dr, dr, h * h));
     }
     return 0;
 }
@@ -117,30 +122,20 @@ AVX512 static uint64_t kernel_avx512(const cdist__job *job, int disk, double tol
         __m512d ins = _mm512_div_pd(one, ns);
         __m512d nx = _mm512_mul_pd(ins, sx), ny = _mm512_mul_pd(ins, sy), nz = _mm512_mul_pd(ins, sz);
         __m512d rx = _mm512_sub_pd(px, cx), ry = _mm512_sub_pd(py, cy), rz = _mm512_sub_pd(pz, cz);
-        /* the scale of cdist__point_result: 2^e of L = max(r, |rel|), clamped; a subnormal or
-         * zero L is left to the scalar path */
-        __m512d L = _mm512_max_pd(r, max3_8(rx, ry, rz));
-        ok &= _mm512_cmp_pd_mask(L, _mm512_set1_pd(0x1p-1022), _CMP_GE_OQ);
-        __m512d up = _mm512_max_pd(_mm512_min_pd(_mm512_castsi512_pd(_mm512_and_si512(_mm512_castpd_si512(L),
-                                                                                     _mm512_set1_epi64(0x7ff0000000000000ll))),
-                                                 _mm512_set1_pd(0x1p1000)),
-                                   _mm512_set1_pd(0x1p-1000));
-        __m512d down = _mm512_castsi512_pd(_mm512_sub_epi64(_mm512_set1_epi64(0x7fe0000000000000ll), _mm512_castpd_si512(up)));
-        rx = _mm512_mul_pd(down, rx);
-        ry = _mm512_mul_pd(down, ry);
-        rz = _mm512_mul_pd(down, rz);
-        r = _mm512_mul_pd(r, down);
         /* n x rel, each component a product difference without fma (as v_cross) */
         __m512d qx = _mm512_sub_pd(_mm512_mul_pd(ny, rz), _mm512_mul_pd(nz, ry));
         __m512d qy = _mm512_sub_pd(_mm512_mul_pd(nz, rx), _mm512_mul_pd(nx, rz));
         __m512d qz = _mm512_sub_pd(_mm512_mul_pd(nx, ry), _mm512_mul_pd(ny, rx));
         __m512d h = dot8(nx, ny, nz, rx, ry, rz);
-        __m512d rho = _mm512_sqrt_pd(dot8(qx, qy, qz, qx, qy, qz));
+        __m512d q2 = dot8(qx, qy, qz, qx, qy, qz), rho = _mm512_sqrt_pd(q2);
         __m512d dr = _mm512_sub_pd(rho, r);
         __m512d hh = _mm512_mul_pd(h, h);
+        /* the scale guard (see point_one) */
+        ok &= _mm512_cmp_pd_mask(_mm512_max_pd(_mm512_add_pd(q2, hh), _mm512_mul_pd(r, r)),
+                                 _mm512_set1_pd(CD_KERNEL_MIN_SCALE * CD_KERNEL_MIN_SCALE), _CMP_GE_OQ);
         __m512d d2 = _mm512_fmadd_pd(dr, dr, hh);
         if (disk) d2 = _mm512_mask_blend_pd(_mm512_cmp_pd_mask(rho, r, _CMP_GT_OQ), hh, d2);
-        __m512d d = _mm512_mul_pd(_mm512_sqrt_pd(d2), up);
+        __m512d d = _mm512_sqrt_pd(d2);
         _mm512_mask_storeu_pd(&job->distances[i], ok, d);
         left |= (uint64_t)(uint8_t)~ok << k;
     }
@@ -196,27 +191,18 @@ AVX2 static uint64_t kernel_avx2(const cdist__job *job, int disk, double tol, si
         __m256d ins = _mm256_div_pd(one, ns);
         __m256d nx = _mm256_mul_pd(ins, sx), ny = _mm256_mul_pd(ins, sy), nz = _mm256_mul_pd(ins, sz);
         __m256d rx = _mm256_sub_pd(px, cx), ry = _mm256_sub_pd(py, cy), rz = _mm256_sub_pd(pz, cz);
-        /* the scale of cdist__point_result (see the 8 lanes) */
-        __m256d L = _mm256_max_pd(r, max3_4(rx, ry, rz));
-        ok &= le4(_mm256_set1_pd(0x1p-1022), L);
-        __m256d up = _mm256_max_pd(_mm256_min_pd(_mm256_and_pd(L, _mm256_castsi256_pd(_mm256_set1_epi64x(0x7ff0000000000000ll))),
-                                                 _mm256_set1_pd(0x1p1000)),
-                                   _mm256_set1_pd(0x1p-1000));
-        __m256d down = _mm256_castsi256_pd(_mm256_sub_epi64(_mm256_set1_epi64x(0x7fe0000000000000ll), _mm256_castpd_si256(up)));
-        rx = _mm256_mul_pd(down, rx);
-        ry = _mm256_mul_pd(down, ry);
-        rz = _mm256_mul_pd(down, rz);
-        r = _mm256_mul_pd(r, down);
         __m256d qx = _mm256_sub_pd(_mm256_mul_pd(ny, rz), _mm256_mul_pd(nz, ry));
         __m256d qy = _mm256_sub_pd(_mm256_mul_pd(nz, rx), _mm256_mul_pd(nx, rz));
         __m256d qz = _mm256_sub_pd(_mm256_mul_pd(nx, ry), _mm256_mul_pd(ny, rx));
         __m256d h = dot4(nx, ny, nz, rx, ry, rz);
-        __m256d rho = _mm256_sqrt_pd(dot4(qx, qy, qz, qx, qy, qz));
+        __m256d q2 = dot4(qx, qy, qz, qx, qy, qz), rho = _mm256_sqrt_pd(q2);
         __m256d dr = _mm256_sub_pd(rho, r);
         __m256d hh = _mm256_mul_pd(h, h);
+        ok &= le4(_mm256_set1_pd(CD_KERNEL_MIN_SCALE * CD_KERNEL_MIN_SCALE),
+                  _mm256_max_pd(_mm256_add_pd(q2, hh), _mm256_mul_pd(r, r))); /* the scale guard (see point_one) */
         __m256d d2 = _mm256_fmadd_pd(dr, dr, hh);
         if (disk) d2 = _mm256_blendv_pd(hh, d2, _mm256_cmp_pd(rho, r, _CMP_GT_OQ));
-        __m256d d = _mm256_mul_pd(_mm256_sqrt_pd(d2), up);
+        __m256d d = _mm256_sqrt_pd(d2);
         double out[4];
         _mm256_storeu_pd(out, d);
         for (int l = 0; l < 4; l++)
