@@ -699,7 +699,9 @@ static cdist_status helix_query(cdist_query *q, const cdist_helix *h, const cdis
     double down = cdist__pow2(-e);
     hx.c = v_scale(down, hx.c);
     hx.r *= down;
-    hx.rise *= down;
+    /* scaled before the division (exact for a normal pitch either way): a subnormal pitch keeps
+     * its bits, which pitch / (2 pi) would lose */
+    hx.rise = (h->pitch * down) / (2.0 * M_PI);
     cc.r *= down;
     /* Pieces of at most one turn, each sampled with the handle's sample count. */
     double len = t1 - t0;

@@ -431,6 +431,14 @@ static void scale_invariance(void)
             }
         }
     }
+    /* a subnormal pitch at a huge angle (found by the fuzzer): pitch / (2 pi) lost the pitch's
+     * few bits before the scaling; the helix point (radius 0, one angle) at pitch t / (2 pi) */
+    cdist_helix h = {tv(0, 0, 0), tv(0, 0, 1), tv(1, 0, 0), 0.0, 7.3269935278256863e-320, 1e151, 1e151};
+    cdist_circle c = {tv(1e-167, 0, 0), tv(0, 0, 1), 1e-170};
+    cdist_result r;
+    long double z = (long double)h.pitch * 1e151L / (2 * 3.14159265358979323846264338327950288L);
+    CHECK(cdist_helix_circle(q, &h, &c, &r) == CDIST_OK && fabsl(r.pairs[0].point[0].z - z) <= 1e-14L * z,
+          "subnormal pitch: helix point z %.17g, want %.17Lg", r.pairs[0].point[0].z, z);
 }
 
 int main(int argc, char **argv)
