@@ -342,7 +342,8 @@ void cdist__cc_pair_at(const cdist__cc_frame *f, double t, cdist__cc_sink *k)
     double tb;
     if (rho > 0) {
         dir = v_cross(w, f->m);
-        dir = v_scale(f->s / v_norm(dir), dir);
+        /* within 1e-150 of B's axis |dir|^2 is subnormal: normalised from its largest component */
+        dir = rho < 0x1p-500 ? v_scale(f->s, v_unit_or_zero(dir)) : v_scale(f->s / v_norm(dir), dir);
         tb = cdist__circle_angle(k->B, dir);
     } else {
         dir = v_scale(f->s, k->B->u);

@@ -413,6 +413,31 @@ static void extreme_scales(void)
                   i);
         }
     }
+    /* a circle of subnormal radius on the axis of one of radius 1.5e-159, normals of subnormal
+     * components (found by the fuzzer): the polynomial and iteration methods reported a closest
+     * point 0.12% off the second circle (its direction normalised through a subnormal square) */
+    cdist_circle a = {tv(2.2613384610153854e-320, 2.9594532185890668e-320, 7.1871729500526135e-320),
+                      tv(-1.0807686002777268e-319, 0, -5.0508330974350634e-320), 3.041962181444555e-320};
+    cdist_circle b = {tv(-0.0, 1.4772562810653272e-321, 8.0932893445254596e-320),
+                      tv(-1.4582841602650233e-319, 1.3784431518970779e-320, 5.9045785334487374e-320),
+                      1.5478445530020227e-159};
+    cdist_query_set_unit_tolerance(q, INFINITY);
+    for (int m = 0; m < 4; m++) {
+        cdist_result r;
+        cdist_query_set_method(q, (cdist_method)m);
+        CHECK(cdist_circle_circle(q, &a, &b, &r) == CDIST_OK, "subnormal radius on the axis, method %d", m);
+        /* in long double: the squares of 1e-159 are subnormal doubles */
+        long double dx = (long double)r.pairs[0].point[0].x - r.pairs[0].point[1].x,
+                    dy = (long double)r.pairs[0].point[0].y - r.pairs[0].point[1].y,
+                    dz = (long double)r.pairs[0].point[0].z - r.pairs[0].point[1].z;
+        long double dp = sqrtl(dx * dx + dy * dy + dz * dz), tol = 1e-14L * b.radius;
+        CHECK(r.num_pairs == 1 && ref_point_circle(r.pairs[0].point[0], a) <= tol &&
+                  ref_point_circle(r.pairs[0].point[1], b) <= tol && fabsl(dp - r.distance) <= tol,
+              "subnormal radius on the axis, method %d: the pair is off the circles or %.17Lg from the distance %.17g",
+              m, dp, r.distance);
+    }
+    cdist_query_set_method(q, CDIST_METHOD_AUTO);
+    cdist_query_set_unit_tolerance(q, 1e-6);
 }
 
 static void batch(void)
