@@ -495,6 +495,21 @@ static void extremes(void)
         cdist_circle tiny = circ(tv(0, 0, 0), tv(0, 0, 1), 1e-300);
         CHECK(ray_q(mi, tv(1, 1, 1), tv(0, 0, 1), tiny, &r) == CDIST_OK, "tiny circle status");
         CHECK_NEAR(r.distance, sqrt(3.0), 4e-16, "tiny circle");
+        /* a ray of direction 1e-319 (subnormal, any length accepted) against a circle of radius
+         * 8e-171 (found by the fuzzer): its length's few bits made the range conversion 1e-5 off,
+         * so the distance was 7e-6 too small; the same ray with its direction scaled by 2^600 is
+         * the reference */
+        cdist_query_set_unit_tolerance(q, INFINITY);
+        cdist_circle sub = circ(tv(-4.7484649221802205e-320, 1.3343230897234545e-319, 0),
+                                tv(3.8764390572704204e-320, 1.2918828507456915e-319, -5.933728406553371e-320),
+                                8.0947715414629838e-171);
+        cdist_vec3 o = tv(8.0947715414629838e-171, -7.0611862103630956e-320, 0),
+                   dsub = tv(-8.3279705263000517e-320, 0, -1.4995386416927674e-319);
+        cdist_result rr;
+        CHECK(ray_q(mi, o, dsub, sub, &r) == CDIST_OK && ray_q(mi, o, scl(0x1p600, dsub), sub, &rr) == CDIST_OK &&
+                  fabs(r.distance - rr.distance) <= 4e-16 * 8.1e-171,
+              "subnormal ray direction: %.17g vs %.17g with the direction scaled", r.distance, rr.distance);
+        cdist_query_set_unit_tolerance(q, 1e-6);
         /* a tiny segment along the axis, 1e-302 off it (found by the fuzzer): the circle point of
          * a direction with subnormal squares was NaN (r / |(X, Y)| overflowed) */
         cdist_circle off = circ(tv(-4.1858709320789469e-302, 0, 0), tv(1, -2.8393226951346075e-22, 0), 3.1396500615433622e-07);
