@@ -540,11 +540,8 @@ static cdist_status run_scaled(cdist_query *q, vec3 origin, vec3 D, vec3 M, doub
     double down = cdist__pow2(-e);
     cdist__circle_scale(&cc, down);
     vec3 Ds = v_scale(down, D);
-    /* a subnormal length carries few bits (the range conversion t -> arc length was off by
-     * 1e-5 for a direction of 1e-319): taken from the scaled direction then, exact when it is
-     * normal */
-    double lens = (len < 0x1p-1022 && v_maxabs(Ds) >= 0x1p-500) ? v_norm(Ds) : len * down;
-    cdist_status st = run(q, v_scale(down, origin), Ds, M, lens, tmin, tmax, &cc, r, used);
+    cdist_status st = run(q, v_scale(down, origin), Ds, M, cdist__lines_scaled_length(len, Ds, down), tmin, tmax, &cc,
+                          r, used);
     if (st == CDIST_OK) cdist__result_unscale(r, cdist__pow2(e));
     return st;
 }

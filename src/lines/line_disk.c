@@ -207,7 +207,8 @@ static cdist_status line_ray_disk(cdist_query *q, const void *obj, const cdist_v
         int e = cdist__lines_scale_exponent(*origin, NULL, &dk);
         double down = cdist__pow2(-e);
         cdist__circle_scale(&dk, down);
-        st = linear_disk_query(q, v_scale(down, *origin), v_scale(down, *dir), len * down, M,
+        vec3 Ds = v_scale(down, *dir);
+        st = linear_disk_query(q, v_scale(down, *origin), Ds, cdist__lines_scaled_length(len, Ds, down), M,
                                is_ray ? 0.0 : -INFINITY, INFINITY, NULL, &dk, r, &used);
         if (st == CDIST_OK) cdist__result_unscale(r, cdist__pow2(e));
     }

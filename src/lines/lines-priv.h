@@ -37,6 +37,15 @@ static inline int cdist__lines_scale_exponent(vec3 origin, const vec3 *p1, const
     return cdist__scale_exponent(L);
 }
 
+/* The length of the direction Ds = 2^-e D of a scaled query, given len = |D|: len 2^-e, except
+ * for a subnormal len, whose few significant bits would make the conversion of the range to arc
+ * length inexact (off by 1e-5 for a direction of 1e-319): then |Ds|, exact enough when Ds is
+ * normal. */
+static inline double cdist__lines_scaled_length(double len, vec3 Ds, double down)
+{
+    return (len < 0x1p-1022 && v_maxabs(Ds) >= 0x1p-500) ? v_norm(Ds) : len * down;
+}
+
 /* The checks of a line or ray (the object, its origin, its unit direction: M, and the length
  * as passed: len) and of a segment (the object and both end points), shared by the circle and
  * disk queries. */

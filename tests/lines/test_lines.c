@@ -509,6 +509,10 @@ static void extremes(void)
         CHECK(ray_q(mi, o, dsub, sub, &r) == CDIST_OK && ray_q(mi, o, scl(0x1p600, dsub), sub, &rr) == CDIST_OK &&
                   fabs(r.distance - rr.distance) <= 4e-16 * 8.1e-171,
               "subnormal ray direction: %.17g vs %.17g with the direction scaled", r.distance, rr.distance);
+        cdist_ray ray = {o, dsub}, rays = {o, scl(0x1p600, dsub)};
+        CHECK(cdist_ray_disk(q, &ray, &sub, &r) == CDIST_OK && cdist_ray_disk(q, &rays, &sub, &rr) == CDIST_OK &&
+                  fabs(r.distance - rr.distance) <= 4e-16 * 8.1e-171,
+              "subnormal ray direction, disk: %.17g vs %.17g with the direction scaled", r.distance, rr.distance);
         cdist_query_set_unit_tolerance(q, 1e-6);
         /* a tiny segment along the axis, 1e-302 off it (found by the fuzzer): the circle point of
          * a direction with subnormal squares was NaN (r / |(X, Y)| overflowed) */
