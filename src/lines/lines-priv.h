@@ -39,11 +39,14 @@ static inline int cdist__lines_scale_exponent(vec3 origin, const vec3 *p1, const
 
 /* The length of the direction Ds = 2^-e D of a scaled query, given len = |D|: len 2^-e, except
  * for a subnormal len, whose few significant bits would make the conversion of the range to arc
- * length inexact (off by 1e-5 for a direction of 1e-319): then |Ds|, exact enough when Ds is
- * normal. */
+ * length inexact (off by 1e-5 for a direction of 1e-319): then |Ds|, from Ds scaled exactly to
+ * its largest component (its squares may be subnormal too). */
 static inline double cdist__lines_scaled_length(double len, vec3 Ds, double down)
 {
-    return (len < 0x1p-1022 && v_maxabs(Ds) >= 0x1p-500) ? v_norm(Ds) : len * down;
+    double m = v_maxabs(Ds);
+    if (len >= 0x1p-1022 || !(m > 0.0)) return len * down;
+    int k = cdist__scale_exponent(m);
+    return v_norm(v_scale(cdist__pow2(-k), Ds)) * cdist__pow2(k);
 }
 
 /* The checks of a line or ray (the object, its origin, its unit direction: M, and the length
