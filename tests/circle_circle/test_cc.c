@@ -426,15 +426,21 @@ static void extreme_scales(void)
         cdist_result r;
         cdist_query_set_method(q, (cdist_method)m);
         CHECK(cdist_circle_circle(q, &a, &b, &r) == CDIST_OK, "subnormal radius on the axis, method %d", m);
-        /* in long double: the squares of 1e-159 are subnormal doubles */
-        long double dx = (long double)r.pairs[0].point[0].x - r.pairs[0].point[1].x,
-                    dy = (long double)r.pairs[0].point[0].y - r.pairs[0].point[1].y,
-                    dz = (long double)r.pairs[0].point[0].z - r.pairs[0].point[1].z;
-        long double dp = sqrtl(dx * dx + dy * dy + dz * dz), tol = 1e-14L * b.radius;
-        CHECK(r.num_pairs == 1 && ref_point_circle(r.pairs[0].point[0], a) <= tol &&
-                  ref_point_circle(r.pairs[0].point[1], b) <= tol && fabsl(dp - r.distance) <= tol,
-              "subnormal radius on the axis, method %d: the pair is off the circles or %.17Lg from the distance %.17g",
-              m, dp, r.distance);
+        /* checked scaled by 2^520 (exact): the squares of 1e-159 are subnormal doubles (and long
+         * double is double under valgrind) */
+        const double k = 0x1p520;
+        const double kn = 0x1p1000; /* the normals too: the same directions, normal components */
+        cdist_circle as = {tv(k * a.center.x, k * a.center.y, k * a.center.z),
+                           tv(kn * a.normal.x, kn * a.normal.y, kn * a.normal.z), k * a.radius};
+        cdist_circle bs = {tv(k * b.center.x, k * b.center.y, k * b.center.z),
+                           tv(kn * b.normal.x, kn * b.normal.y, kn * b.normal.z), k * b.radius};
+        cdist_vec3 p0 = tv(k * r.pairs[0].point[0].x, k * r.pairs[0].point[0].y, k * r.pairs[0].point[0].z);
+        cdist_vec3 p1 = tv(k * r.pairs[0].point[1].x, k * r.pairs[0].point[1].y, k * r.pairs[0].point[1].z);
+        double dp = tdist(p0, p1), tol = 1e-14 * bs.radius;
+        CHECK(r.num_pairs == 1 && ref_point_circle(p0, as) <= tol && ref_point_circle(p1, bs) <= tol &&
+                  fabs(dp - k * r.distance) <= tol,
+              "subnormal radius on the axis, method %d: the pair is off the circles or %.17g from the distance %.17g",
+              m, dp / k, r.distance);
     }
     cdist_query_set_method(q, CDIST_METHOD_AUTO);
     cdist_query_set_unit_tolerance(q, 1e-6);
