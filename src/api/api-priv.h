@@ -129,10 +129,8 @@ static inline void cdist__circle_scale(cdist__circle *c, double s)
 
 /* The fast path of cdist__check_circle_nobasis alone, with its arithmetic (same FMA clone): 1
  * and *out (no basis) when it accepts c, 0 when the full check must decide (the batch kernels
- * then leave the entry to the scalar path). cdist__circle_basis: the basis as
- * cdist__check_circle builds it (same FMA clone). */
+ * then leave the entry to the scalar path; the cc kernel's test decides acceptance with it). */
 int cdist__circle_fast(double unit_tol, const cdist_circle *c, cdist__circle *out);
-void cdist__circle_basis(cdist__circle *c);
 /* A circle or disk checked without building its basis (c, n, r only; u, v left unset), for
  * families that do not need it; cdist__frame_basis completes it. */
 cdist_status cdist__check_circle_nobasis(cdist_query *q, const cdist_circle *c, const char *what, cdist__circle *out);

@@ -949,7 +949,7 @@ CD_INLINE cc_dd dd_sqr_add(cc_dd x, cc_dd acc)
     return (cc_dd){s, acc.lo + e2 + e1 + 2.0 * x.hi * x.lo};
 }
 
-CD_FMA_CLONES double cdist__cc_point_d2(const cdist__ring *rg, double s, double c, double sn, vec3 *w, double *rho)
+CD_FMA_CLONES double cdist__cc_point_d2(const cdist__ring *rg, double s, double c, double sn)
 {
     cc_dd wx = dd_trig(rg->al.x, rg->be.x, rg->ga.x, c, sn);
     cc_dd wy = dd_trig(rg->al.y, rg->be.y, rg->ga.y, c, sn);
@@ -966,8 +966,6 @@ CD_FMA_CLONES double cdist__cc_point_d2(const cdist__ring *rg, double s, double 
     }
     double e, dr = cdist__two_sum(r, -s, &e);
     cc_dd d2 = dd_sqr_add(h, dd_sqr_add((cc_dd){dr, e + rl}, (cc_dd){0, 0}));
-    *w = v3(wx.hi + wx.lo, wy.hi + wy.lo, wz.hi + wz.lo);
-    *rho = r + rl;
     /* >= 0: the dropped squares of the low parts can tip a zero distance below 0 */
     return cdist__fmax(0.0, d2.hi + d2.lo);
 }
@@ -977,10 +975,9 @@ void cdist__cc_settle_d2(const cdist__cc_frame *f, const cdist__cc_sink *k)
     cdist__best *b = k->best;
     double u = k->unscale, near = sqrt(b->c[0].d2) + (CD_TIE_ULPS + CD_CC_SETTLE_ULPS) * DBL_EPSILON * b->scale;
     for (int i = 0; i < b->n && sqrt(b->c[i].d2) <= near; i++) {
-        double t = b->c[i].param[k->swapped ? 1 : 0], c, s, rho;
-        vec3 w;
+        double t = b->c[i].param[k->swapped ? 1 : 0], c, s;
         sincos(t, &s, &c);
-        b->c[i].d2 = cdist__cc_point_d2(&f->rg, f->s, c, s, &w, &rho) * u * u;
+        b->c[i].d2 = cdist__cc_point_d2(&f->rg, f->s, c, s) * u * u;
     }
     for (int i = 1; i < b->n; i++) /* ties may swap places */
         for (int j = i; j > 0 && b->c[j].d2 < b->c[j - 1].d2; j--) {

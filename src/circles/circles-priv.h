@@ -81,15 +81,14 @@ static inline void cdist__cc_eval_lean(const cdist__cc_frame *f, double t, doubl
 }
 
 /* The squared distance from A's point at (c, sn) = (cos t, sin t) to B (radius s) as the robust
- * method reports it, from the ring rg of the pair (ring_eval.h); w = m x (P - C), rho = |w|
- * (cc_engine.c). The one formula of the answer: of the robust method's (applied to the
+ * method reports it, from the ring rg of the pair (ring_eval.h; cc_engine.c). The one formula of the answer: of the robust method's (applied to the
  * candidates it keeps, cdist__cc_settle_d2) and of the batch kernel's (src/batch/cc_kernel.c).
  * Evaluated in double-double: its rounding (far below an ulp of the scale) then leaves the
  * answer depending on the angle only to second order at a minimum d* > 0 (by about
  * (R dt)^2 / (2 d*) for an angle error dt), so two searches settling on the same minimum report
  * the same distance to an ulp while d* is not tiny (the kernel leaves d* < 1e-12 of the scale,
  * touching or crossing circles, to the single query). */
-double cdist__cc_point_d2(const cdist__ring *rg, double s, double c, double sn, vec3 *w, double *rho);
+double cdist__cc_point_d2(const cdist__ring *rg, double s, double c, double sn);
 
 /* The frame of A (parameterised, centre at the origin) and B (centre C relative to A's). */
 void cdist__cc_frame_init(cdist__cc_frame *f, const cdist__circle *A, vec3 C, const cdist__circle *B);

@@ -238,7 +238,7 @@ typedef unsigned (*sfn)(const cdist__job *, double, size_t, int, int, ck_block *
 typedef void (*ffn)(ck_block *, int);
 
 /* The set-up in lanes against the scalar functions it repeats (cdist__circle_fast,
- * cdist__circles_frame, cdist__cc_prepare, cdist__circle_basis, cdist__ring_init): the same
+ * cdist__circles_frame, cdist__cc_prepare, cdist__check_circle's basis, cdist__ring_init): the same
  * acceptance (apart from equal radii, left by design) and bit-identical ring columns; and the
  * final distance in lanes at random angles against cdist__cc_point_d2, bit for bit. */
 static void check_setup(const char *name, sfn setup, ffn final, int lanes, cdist_query *q, size_t n)
@@ -256,8 +256,11 @@ static void check_setup(const char *name, sfn setup, ffn final, int lanes, cdist
             for (int l = 0; l < lanes && g + l < cnt; l++) {
                 int k = g + l;
                 size_t i = lo + (size_t)k;
+                /* accepted by the fast path (as the kernel), with the values (and basis) of the check */
                 cdist__circle a, o;
-                int ok = cdist__circle_fast(q->unit_tol, &A[i], &a) && cdist__circle_fast(q->unit_tol, &B[i], &o);
+                int ok = cdist__circle_fast(q->unit_tol, &A[i], &a) && cdist__circle_fast(q->unit_tol, &B[i], &o) &&
+                         cdist__check_circle(q, &A[i], "first", &a) == CDIST_OK &&
+                         cdist__check_circle(q, &B[i], "second", &o) == CDIST_OK;
                 cdist__cc_problem p;
                 vec3 off;
                 cdist__best best;
@@ -275,7 +278,6 @@ static void check_setup(const char *name, sfn setup, ffn final, int lanes, cdist
                     accept_bad++;
                     continue;
                 }
-                cdist__circle_basis(&p.A);
                 cdist__ring rg;
                 cdist__ring_init(&rg, p.A.r, p.A.u, p.A.v, p.CB, p.B.n);
                 const double want[] = {rg.al.x, rg.al.y, rg.al.z, rg.be.x, rg.be.y, rg.be.z, rg.ga.x, rg.ga.y,
@@ -283,10 +285,9 @@ static void check_setup(const char *name, sfn setup, ffn final, int lanes, cdist
                 const int at[] = {CK_C_ALX, CK_C_ALY, CK_C_ALZ, CK_C_BEX, CK_C_BEY, CK_C_BEZ, CK_C_GAX, CK_C_GAY,
                                   CK_C_GAZ, CK_C_HA, CK_C_HB, CK_C_HC, CK_C_S, CK_C_UNSC, CK_C_UP};
                 checked++;
-                double c, sn, rho;
-                vec3 w;
+                double c, sn;
                 sincos(blk.t[k], &sn, &c);
-                double d2 = cdist__cc_point_d2(&rg, p.B.r, c, sn, &w, &rho);
+                double d2 = cdist__cc_point_d2(&rg, p.B.r, c, sn);
                 double d = sqrt(d2 * p.unscale * p.unscale) * ldexp(1.0, e);
                 if (memcmp(&d, &blk.d[k], sizeof d) && dist_differ++ < 3)
                     CHECK(0, "%s final distance entry %zu at %.17g: %.17g vs scalar %.17g", name, i, blk.t[k], blk.d[k], d);
