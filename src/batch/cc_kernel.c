@@ -68,6 +68,10 @@ static struct {
     double sub_c[CK_LEVELS][4], sub_s[CK_LEVELS][4]; /* cos, sin of k h_l / 4, k = 1..3 */
     double hull_sub_c[CK_LEVELS][4], hull_sub_s[CK_LEVELS][4]; /* of (2m + 1) h_l / 8, / cos(h_l / 8) */
     double sub_tan2[CK_LEVELS];              /* tan^2(h_l / 8) */
+    /* the single query's zoom (cdist__cc_quick), lane k: cos, sin of (k - 4) h_l / 4 and of the
+     * hull point of [(k - 4) h_l / 4, (k - 3) h_l / 4], (2 k - 7) h_l / 8, / cos(h_l / 8) */
+    double zoom_c[CK_LEVELS][8], zoom_s[CK_LEVELS][8];
+    double zoom_hull_c[CK_LEVELS][8], zoom_hull_s[CK_LEVELS][8];
 } ck_tab;
 static pthread_once_t ck_tab_once = PTHREAD_ONCE_INIT;
 
@@ -94,6 +98,12 @@ static void ck_tables_init(void)
             ck_tab.hull_sub_s[l][k] = sin((2 * k + 1) * q) * qsec;
         }
         ck_tab.sub_tan2[l] = tan(q) * tan(q);
+        for (int k = 0; k < 8; k++) {
+            ck_tab.zoom_c[l][k] = cos((k - 4) * 0.25 * h);
+            ck_tab.zoom_s[l][k] = sin((k - 4) * 0.25 * h);
+            ck_tab.zoom_hull_c[l][k] = cos((2 * k - 7) * q) * qsec;
+            ck_tab.zoom_hull_s[l][k] = sin((2 * k - 7) * q) * qsec;
+        }
     }
 }
 
@@ -168,6 +178,17 @@ static uint64_t kernel_avx2(const cdist__job *job, int shape, double tol, size_t
     return ck_run(ck_setup_4, ck_search_4, ck_final_4, 4, job, tol, lo, count);
 }
 #endif
+
+int cdist__cc_quick(const cdist__cc_frame *f, double *t)
+{
+    pthread_once(&ck_tab_once, ck_tables_init);
+#ifdef CD_X86_KERNELS
+    int isa = cdist__lanes_isa();
+    if (isa == CD_ISA_AVX512) return ck_quick_8(f, t);
+    if (isa == CD_ISA_AVX2) return ck_quick_4(f, t);
+#endif
+    return ck_quick_1(f, t);
+}
 
 uint64_t cdist__cc_distance_kernel(const cdist__job *job, double unit_tol, size_t lo, size_t count)
 {

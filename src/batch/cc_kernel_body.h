@@ -476,4 +476,125 @@ static void KN(ck_final)(ck_block *b, int g)
 #undef CK_COL
 }
 
+/* ---- one entry, lanes = angles: the single query's search (cdist__cc_quick) ---- */
+
+/* Lane 0 of x. */
+CD_INLINE double KN(ck_lane0)(V x)
+{
+    double a[W];
+    vst(a, x);
+    return a[0];
+}
+
+/* (c, s) rotated by the angles whose cosines and sines are the lanes of (co, si). */
+CD_INLINE void KN(ck_rot_lanes)(double c, double s, V co, V si, V *cr, V *sr)
+{
+    *cr = vsub(vmul(vset(c), co), vmul(vset(s), si));
+    *sr = vadd(vmul(vset(s), co), vmul(vset(c), si));
+}
+
+/* The search of ck_search for the one pair of frame f, its angles spread over the lanes: the
+ * grid and the hull points of its intervals W at a time, each zoom level's 8 points and 8 hull
+ * points W at a time; the convexity test and Newton on the basin evaluate the same point in
+ * every lane (their latency is that of scalar code). Returns 1 and the angle *t of the closest
+ * point on A when the same certificate as ck_search holds, else 0. */
+static int KN(ck_quick)(const cdist__cc_frame *f, double *t_out)
+{
+    KN(ck_ring) r = {
+        vset(f->rg.al.x), vset(f->rg.al.y), vset(f->rg.al.z), vset(f->rg.be.x), vset(f->rg.be.y),
+        vset(f->rg.be.z), vset(f->rg.ga.x), vset(f->rg.ga.y), vset(f->rg.ga.z), vset(f->rg.ha),
+        vset(f->rg.hb), vset(f->rg.hc), vset(f->s), vset(f->R * f->R), vset(f->W1),
+        vset(f->Hh), vset(f->Hc0), vset(f->Lw)};
+    const double R2 = f->R * f->R;
+
+    /* Grid: F at the CK_GRID angles, the interval bounds, the best angle. */
+    double Fg[CK_GRID + 1], lb[CK_GRID];
+    for (int j = 0; j < CK_GRID; j += W) vst(&Fg[j], KN(ck_f)(&r, vld(&ck_tab.grid_c[j]), vld(&ck_tab.grid_s[j])));
+    Fg[CK_GRID] = Fg[0];
+    V R2tan = vset(R2 * ck_tab.grid_tan2);
+    for (int j = 0; j < CK_GRID; j += W) {
+        V hull = vsub(KN(ck_f)(&r, vld(&ck_tab.hull_c[j]), vld(&ck_tab.hull_s[j])), R2tan);
+        vst(&lb[j], vmin(vmin(vld(&Fg[j]), vld(&Fg[j + 1])), hull));
+    }
+    int jb = 0;
+    for (int j = 1; j < CK_GRID; j++)
+        if (Fg[j] < Fg[jb]) jb = j;
+    int jp = (jb + CK_GRID - 1) % CK_GRID;
+    double minlb = INFINITY;
+    for (int j = 0; j < CK_GRID; j++) {
+        if (j == jb || j == jp) continue;
+        if (lb[j] != lb[j]) return 0; /* a NaN bound would drop out of minlb */
+        minlb = lb[j] < minlb ? lb[j] : minlb;
+    }
+    double c = ck_tab.grid_c[jb], s = ck_tab.grid_s[jb], bestF = Fg[jb], Fl = Fg[jp], Fr = Fg[jb + 1];
+    double t = jb * (2.0 * M_PI / CK_GRID), hdone = 0.0;
+
+    /* Zoom, as ck_search. */
+    int done = 0;
+    for (int l = 0; l < CK_LEVELS && !done; l++) {
+        if (l >= CK_FIRST_CONVEX && (mbits(KN(ck_convex)(&r, vset(c), vset(s), l)) & 1u)) {
+            done = 1;
+            hdone = ck_tab.half[l];
+            break;
+        }
+        if (l + 1 == CK_LEVELS) break;
+        double Fk[9], Ck[8], Sk[8], hb[8];
+        V R2tan_sub = vset(R2 * ck_tab.sub_tan2[l]);
+        for (int k = 0; k < 8; k += W) {
+            V ck, sk, hc, hs;
+            KN(ck_rot_lanes)(c, s, vld(&ck_tab.zoom_c[l][k]), vld(&ck_tab.zoom_s[l][k]), &ck, &sk);
+            vst(&Fk[k], KN(ck_f)(&r, ck, sk));
+            vst(&Ck[k], ck);
+            vst(&Sk[k], sk);
+            KN(ck_rot_lanes)(c, s, vld(&ck_tab.zoom_hull_c[l][k]), vld(&ck_tab.zoom_hull_s[l][k]), &hc, &hs);
+            vst(&hb[k], vsub(KN(ck_f)(&r, hc, hs), R2tan_sub));
+        }
+        Fk[0] = Fl; /* the ends and the centre as they were found */
+        Fk[4] = bestF;
+        Fk[8] = Fr;
+        int kb = 4;
+        for (int k = 0; k < 9; k++)
+            if (Fk[k] < Fk[kb]) kb = k;
+        if (kb == 0 || kb == 8) return 0;
+        for (int i = 0; i < 8; i++) {
+            if (i == kb - 1 || i == kb) continue;
+            double a = Fk[i] < Fk[i + 1] ? Fk[i] : Fk[i + 1], v = a < hb[i] ? a : hb[i];
+            if (v != v) return 0;
+            minlb = v < minlb ? v : minlb;
+        }
+        c = Ck[kb];
+        s = Sk[kb];
+        Fl = Fk[kb - 1];
+        Fr = Fk[kb + 1];
+        bestF = Fk[kb];
+        t += (kb - 4) * (0.25 * ck_tab.half[l]);
+    }
+    if (!done) return 0;
+
+    /* Newton, as ck_search. */
+    double d = 0.0;
+    int settled = 0;
+    for (int it = 0; it < CK_NEWTON_MAX && !settled; it++) {
+        V cd, sd, F0, F1, F2, rho, rho2, e2;
+        KN(ck_sincos_small)(vset(d), &cd, &sd);
+        V cn = vsub(vmul(vset(c), cd), vmul(vset(s), sd)), sn = vadd(vmul(vset(s), cd), vmul(vset(c), sd));
+        KN(ck_f2)(&r, cn, sn, &F0, &F1, &F2, &rho, &rho2, &e2);
+        double nd = d - KN(ck_lane0)(F1) / KN(ck_lane0)(F2);
+        nd = nd > -hdone ? nd : -hdone;
+        nd = nd < hdone ? nd : hdone;
+        settled = fabs(nd - d) <= CD_CCK_NEWTON_STEP;
+        d = nd;
+    }
+    if (!settled) return 0;
+
+    /* The certificate of ck_search. */
+    V cd, sd;
+    KN(ck_sincos_small)(vset(d), &cd, &sd);
+    double Fs = KN(ck_lane0)(KN(ck_f)(&r, vsub(vmul(vset(c), cd), vmul(vset(s), sd)),
+                                      vadd(vmul(vset(s), cd), vmul(vset(c), sd))));
+    if (!(minlb > Fs + CD_CCK_CERT_MARGIN && Fs >= CD_CCK_MIN_F)) return 0;
+    *t_out = t + d;
+    return 1;
+}
+
 #undef ck_madd

@@ -1,23 +1,33 @@
 /* SPDX-License-Identifier: MIT */
-/* The one run-time choice of a distance kernel's variant (AVX-512, AVX2 + FMA, scalar), shared
- * by the point and line kernels. */
+/* The one run-time choice of the lane instruction set (AVX-512, AVX2 + FMA, scalar), shared by
+ * the distance kernels and the single circle-circle query's search in lanes. */
 #include "batch-priv.h"
+
+int cdist__lanes_isa(void)
+{
+    /* a benign race: every thread computes the same value */
+    static int isa = -1;
+    int v = __atomic_load_n(&isa, __ATOMIC_RELAXED);
+    if (v >= 0) return v;
+    v = CD_ISA_SCALAR;
+#if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))
+    __builtin_cpu_init();
+    if (__builtin_cpu_supports("avx512f")) v = CD_ISA_AVX512;
+    else if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma")) v = CD_ISA_AVX2;
+#endif
+    __atomic_store_n(&isa, v, __ATOMIC_RELAXED);
+    return v;
+}
 
 cdist__kernel_fn cdist__kernel_choose(cdist__kernel_fn *chosen, cdist__kernel_fn avx512, cdist__kernel_fn avx2,
                                       cdist__kernel_fn scalar)
 {
-    /* a benign race: every thread computes the same value */
     cdist__kernel_fn f = __atomic_load_n(chosen, __ATOMIC_RELAXED);
     if (f) return f;
+    int isa = cdist__lanes_isa();
     f = scalar;
-#if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))
-    __builtin_cpu_init();
-    if (avx512 && __builtin_cpu_supports("avx512f")) f = avx512;
-    else if (avx2 && __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma")) f = avx2;
-#else
-    (void)avx512;
-    (void)avx2;
-#endif
+    if (avx512 && isa == CD_ISA_AVX512) f = avx512;
+    else if (avx2 && isa >= CD_ISA_AVX2) f = avx2;
     __atomic_store_n(chosen, f, __ATOMIC_RELAXED);
     return f;
 }

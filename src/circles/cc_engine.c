@@ -156,7 +156,7 @@ static void tp_mul(const tpoly *x, int dx, const tpoly *y, int dy, tpoly *z)
     *z = r;
 }
 
-void cdist__cc_frame_init(cdist__cc_frame *f, const cdist__circle *A, vec3 C, const cdist__circle *B)
+void cdist__cc_frame_ring(cdist__cc_frame *f, const cdist__circle *A, vec3 C, const cdist__circle *B)
 {
     f->R = A->r;
     f->s = B->r;
@@ -168,7 +168,20 @@ void cdist__cc_frame_init(cdist__cc_frame *f, const cdist__circle *A, vec3 C, co
     cdist__ring_init(&f->rg, f->R, A->u, A->v, C, m);
     f->Cu = cdist__cc_dot3(C, A->u);
     f->Cv = cdist__cc_dot3(C, A->v);
+    double aa = cdist__cc_dot3(f->rg.al, f->rg.al), bb = cdist__cc_dot3(f->rg.be, f->rg.be);
+    double gg = cdist__cc_dot3(f->rg.ga, f->rg.ga), Lc = v_norm(C);
+    f->epsL = DBL_EPSILON * (f->R + Lc);
+    f->L = cdist__fmax(cdist__fmax(f->R, f->s), Lc);
+    f->Lw = 2 * f->R + Lc;
+    f->W1 = sqrt(aa) + sqrt(bb);
+    f->nga = sqrt(gg);
+    f->Hh = fabs(f->rg.ha) + fabs(f->rg.hb);
+    f->Hc0 = fabs(f->rg.hc);
+}
 
+void cdist__cc_frame_bounds(cdist__cc_frame *f)
+{
+    vec3 C = f->C;
     /* Fourier coefficients of Q, sigma, g = w.w' and H = Q sigma^2 - s^2 g^2. */
     double aa = cdist__cc_dot3(f->rg.al, f->rg.al), bb = cdist__cc_dot3(f->rg.be, f->rg.be), ab = cdist__cc_dot3(f->rg.al, f->rg.be);
     double ag = cdist__cc_dot3(f->rg.al, f->rg.ga), bg = cdist__cc_dot3(f->rg.be, f->rg.ga), gg = cdist__cc_dot3(f->rg.ga, f->rg.ga);
@@ -205,7 +218,7 @@ void cdist__cc_frame_init(cdist__cc_frame *f, const cdist__circle *A, vec3 C, co
 
     /* First-order rounding bounds of H and H' as evaluated in cc_eval (all terms). */
     double Lc = v_norm(C);
-    double Wn = sqrt(aa) + sqrt(bb) + sqrt(gg), W1 = sqrt(aa) + sqrt(bb);
+    double W1 = f->W1, Wn = W1 + f->nga;
     double ew = 4 * eps * (2 * f->R + Lc), ew1 = 8 * eps * f->R;
     double sm = f->R * (fabs(f->Cu) + fabs(f->Cv)), dsm = 4 * eps * (sm + f->R * Lc);
     double Qm = Wn * Wn, gm = Wn * W1, g1m = W1 * W1 + Wn * W1;
@@ -217,13 +230,12 @@ void cdist__cc_frame_init(cdist__cc_frame *f, const cdist__circle *A, vec3 C, co
                   2 * s2 * (dg * g1m + gm * dg1) + 10 * eps * (gm * sm * sm + Qm * sm * sm + s2 * gm * g1m));
     /* H'' has the terms of H' with one more derivative (factors <= 4 on each): */
     f->eH2 = 4 * (f->eH1 + f->eH);
-    f->epsL = eps * (f->R + Lc);
-    f->L = cdist__fmax(cdist__fmax(f->R, f->s), Lc);
-    f->Lw = 2 * f->R + Lc;
-    f->W1 = W1;
-    f->nga = sqrt(gg);
-    f->Hh = fabs(f->rg.ha) + fabs(f->rg.hb);
-    f->Hc0 = fabs(f->rg.hc);
+}
+
+void cdist__cc_frame_init(cdist__cc_frame *f, const cdist__circle *A, vec3 C, const cdist__circle *B)
+{
+    cdist__cc_frame_ring(f, A, C, B);
+    cdist__cc_frame_bounds(f);
 }
 
 /* The certificates' values at p, from one evaluation of order 2: H, H', H'' (from the same w', g,

@@ -74,11 +74,24 @@ cdist_status cdist__cc_robust(cdist_query *q, const cdist__circle *c0, const cdi
     const cdist__circle *A = &pb.A, *B = &pb.B;
     vec3 CB = pb.CB;
     cdist__cc_frame f;
-    cdist__cc_frame_init(&f, A, CB, B);
+    cdist__cc_frame_ring(&f, A, CB, B);
     cdist__cc_sink k = {.f = &f, .best = b, .prune = 1, .unscale = unsc, .swapped = sw, .A = A, .B = B,  .Fmin = INFINITY,
                  .dmin = INFINITY, .rho_min = INFINITY};
-    double Fmax, tp[4];
+    double Fmax, tp[4], tq;
     int np = cdist__cc_parallel_critical(&f, tp);
+    if (np < 0 && cdist__cc_quick(&f, &tq)) {
+        /* One certified minimum, not tiny: its pair, unless its point on A is so close to B's
+         * axis that the answer is an equidistant set (the scan's equidistance test (b) below),
+         * which the scan reports. */
+        cdist__cc_pair_at(&f, tq, &k);
+        if (k.rho_min > CC_AXIS_EPS_ULPS * f.epsL * cdist__fmin(1.0, f.s / f.L)) {
+            cdist__cc_settle_d2(&f, &k);
+            return CDIST_OK;
+        }
+        cdist__best_init(b, b->scale);
+        k.dmin = k.rho_min = INFINITY;
+    }
+    if (np < 0) cdist__cc_frame_bounds(&f);
     if (np > 0) {
         /* Closed form; F's extremes are at rho's extremes (the first two angles). */
         Fmax = 0;
@@ -99,7 +112,7 @@ cdist_status cdist__cc_robust(cdist_query *q, const cdist__circle *c0, const cdi
     cdist__cc_settle_d2(&f, &k);
     /* (a) F constant on A; (b) the closest point of A on B's axis. */
     if (sqrt(Fmax) - k.dmin <= CC_EQUI_ULPS * DBL_EPSILON * f.L) b->equidistant = 1;
-    if (k.rho_min <= 8 * f.epsL * cdist__fmin(1.0, f.s / f.L)) b->equidistant = 1;
+    if (k.rho_min <= CC_AXIS_EPS_ULPS * f.epsL * cdist__fmin(1.0, f.s / f.L)) b->equidistant = 1;
     return CDIST_OK;
 }
 

@@ -33,7 +33,7 @@ static void cc_equidistant_post(const cdist__circle *c0, const cdist__circle *c1
         if (other->r > 0 && me->r >= 0) {
             double rho;
             pc_dist(b->c[0].p[side], other, &rho);
-            if (rho <= 8 * DBL_EPSILON * (me->r + other->r + Cn) * fmin(1.0, other->r / L)) {
+            if (rho <= CC_AXIS_EPS_ULPS * DBL_EPSILON * (me->r + other->r + Cn) * fmin(1.0, other->r / L)) {
                 b->equidistant = 1;
                 return;
             }

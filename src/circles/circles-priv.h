@@ -11,6 +11,10 @@
 
 /* F constant on a circle (equidistant configuration (a)): variation below CC_EQUI_ULPS eps L. */
 #define CC_EQUI_ULPS 32.0
+/* A closest point on the other circle's axis (equidistant configuration (b)): its axis distance
+ * within CC_AXIS_EPS_ULPS rounding units of the positions (eps (R + |C|)), times min(1, s / L)
+ * (the other circle's closest point direction is lost to rounding there). */
+#define CC_AXIS_EPS_ULPS 8.0
 
 /* The parameterised circle A at the origin and the other circle B. */
 typedef struct cdist__cc_frame {
@@ -90,8 +94,18 @@ static inline void cdist__cc_eval_lean(const cdist__cc_frame *f, double t, doubl
  * touching or crossing circles, to the single query). */
 double cdist__cc_point_d2(const cdist__ring *rg, double s, double c, double sn);
 
-/* The frame of A (parameterised, centre at the origin) and B (centre C relative to A's). */
+/* The frame of A (parameterised, centre at the origin) and B (centre C relative to A's):
+ * cdist__cc_frame_ring sets everything but the bounds of H (M1..M3, eH..eH2, Hc), which
+ * cdist__cc_frame_bounds adds for cdist__cc_scan; cdist__cc_frame_init does both. */
 void cdist__cc_frame_init(cdist__cc_frame *f, const cdist__circle *A, vec3 C, const cdist__circle *B);
+void cdist__cc_frame_ring(cdist__cc_frame *f, const cdist__circle *A, vec3 C, const cdist__circle *B);
+void cdist__cc_frame_bounds(cdist__cc_frame *f);
+/* The batch kernel's certified search (src/batch/cc_kernel.c) for the one pair of frame f (only
+ * its ring part is read), with the angles in lanes: 1 and the angle *t of the closest point on
+ * A when the closest point is certified unique (every other region of A at least
+ * CD_CCK_CERT_MARGIN farther in F) and the distance is not tiny (>= sqrt(CD_CCK_MIN_F)); else
+ * 0 (then cdist__cc_scan decides). */
+int cdist__cc_quick(const cdist__cc_frame *f, double *t);
 /* Walks [-pi, pi) and hands every critical bracket of F to the sink (see cc_engine.c). Fmax:
  * largest F seen at the partition points. */
 int cdist__cc_scan(const cdist__cc_frame *f, cdist__cc_sink *k, double *Fmax);
