@@ -72,6 +72,7 @@ static struct {
      * hull point of [(k - 4) h_l / 4, (k - 3) h_l / 4], (2 k - 7) h_l / 8, / cos(h_l / 8) */
     double zoom_c[CK_LEVELS][8], zoom_s[CK_LEVELS][8];
     double zoom_hull_c[CK_LEVELS][8], zoom_hull_s[CK_LEVELS][8];
+    double lane_index[CK_GRID]; /* j at index j */
 } ck_tab;
 static pthread_once_t ck_tab_once = PTHREAD_ONCE_INIT;
 
@@ -83,6 +84,7 @@ static void ck_tables_init(void)
         ck_tab.grid_s[j] = sin(j * step);
         ck_tab.hull_c[j] = cos((j + 0.5) * step) * sec;
         ck_tab.hull_s[j] = sin((j + 0.5) * step) * sec;
+        ck_tab.lane_index[j] = j;
     }
     ck_tab.grid_tan2 = tan(0.5 * step) * tan(0.5 * step);
     double h = step;

@@ -284,6 +284,16 @@ static unsigned KN(ck_setup)(const cdist__job *job, double unit_tol, size_t lo, 
     return left;
 }
 
+/* Newton's start in a certified basin [-h, h] (offsets from its centre): the vertex of the
+ * parabola through F at -h, 0, h (Fl, F0, Fr; F0 is the smallest, so the vertex is within
+ * [-h/2, h/2]), 0 where they are level. From there Newton settles a step sooner. */
+CD_INLINE V KN(ck_vertex)(V Fl, V F0, V Fr, V h)
+{
+    V den = vmul(vset(2.0), vadd(vsub(Fl, F0), vsub(Fr, F0)));
+    V x = vdiv(vmul(h, vsub(Fl, Fr)), den);
+    return vsel(vgt(den, vset(0.0)), vmin(vmax(x, vneg(h)), h), vset(0.0));
+}
+
 /* The search for the W entries of the block from g: angles t[] of the closest points of the
  * entries it certifies; returns the lane mask (bit k: entry g + k) of those it does not. */
 static unsigned KN(ck_search)(ck_block *b, int g)
@@ -385,7 +395,7 @@ static unsigned KN(ck_search)(ck_block *b, int g)
     /* Newton on F' in the certified basin (one minimum there, F'' > 0), kept in [-h, h]. A lane
      * settles after its first step below CD_CCK_NEWTON_STEP (taken) and keeps its angle, so
      * that its answer does not depend on the other lanes of its group. */
-    V d = vset(0.0), lo = vneg(hdone);
+    V d = KN(ck_vertex)(Fl, bestF, Fr, hdone), lo = vneg(hdone), Fs = vset(0.0);
     M settled = fail;
     for (int it = 0; it < CK_NEWTON_MAX; it++) {
         V cd, sd, cn, sn, F0, F1, F2, rho, rho2, e2;
@@ -393,8 +403,9 @@ static unsigned KN(ck_search)(ck_block *b, int g)
         cn = vsub(vmul(c, cd), vmul(s, sd));
         sn = vadd(vmul(s, cd), vmul(c, sd));
         KN(ck_f2)(&r, cn, sn, &F0, &F1, &F2, &rho, &rho2, &e2);
-        V nd = vmin(vmax(vsub(d, vdiv(F1, F2)), lo), hdone);
+        V q = vdiv(F1, F2), nd = vmin(vmax(vsub(d, q), lo), hdone);
         M small = vle(vabs(vsub(nd, d)), vset(CD_CCK_NEWTON_STEP));
+        Fs = vsel(settled, Fs, vsub(F0, vmul(F1, q)));
         d = vsel(settled, d, nd);
         settled = mor(settled, small);
         M open = mnot(settled);
@@ -402,10 +413,10 @@ static unsigned KN(ck_search)(ck_block *b, int g)
         if (it + 1 == CK_NEWTON_MAX) fail = mor(fail, open);
     }
     /* Certified: every region outside the final basin has its lower bound above F there; and
-     * F there is not below CD_CCK_MIN_F (touching or crossing circles: the scalar path). */
-    V cd, sd;
-    KN(ck_sincos_small)(d, &cd, &sd);
-    V Fs = KN(ck_f)(&r, vsub(vmul(c, cd), vmul(s, sd)), vadd(vmul(s, cd), vmul(c, sd)));
+     * F there is not below CD_CCK_MIN_F (touching or crossing circles: the scalar path). F at
+     * the angle found is Fs = F - F1^2 / F2 (F1, F2 = F'/2, F''/2) from the last Newton step's
+     * values (the minimum of F's Taylor parabola there, the value after the step to O(step^3) with a step below
+     * CD_CCK_NEWTON_STEP), which saves an evaluation. */
     fail = mor(mor(fail, nan), mnot(mand(vgt(minlb, vadd(Fs, margin)), vge(Fs, vset(CD_CCK_MIN_F)))));
     vst(&b->t[g], vadd(t, d));
     return mbits(fail);
@@ -449,7 +460,7 @@ CD_INLINE V KN(ck_dd_sqr_add)(V xh, V xl, V ah, V al, V *lo)
 static void KN(ck_final)(ck_block *b, int g)
 {
     double cs[W], sn[W];
-    for (int l = 0; l < W; l++) sincos(b->t[g + l], &sn[l], &cs[l]);
+    for (int l = 0; l < W; l++) sincos(cdist__cc_param(b->t[g + l]), &sn[l], &cs[l]);
     V c = vld(cs), s = vld(sn);
     const double(*col)[64] = b->col;
 #define CK_COL(k) vld(&col[k][g])
@@ -493,6 +504,56 @@ CD_INLINE void KN(ck_rot_lanes)(double c, double s, V co, V si, V *cr, V *sr)
     *sr = vadd(vmul(vset(s), co), vmul(vset(c), si));
 }
 
+/* The smallest lane of x (x free of NaN). */
+CD_INLINE double KN(ck_hmin)(V x)
+{
+#if W == 8
+    return _mm512_reduce_min_pd(x);
+#elif W == 4
+    __m128d m = _mm_min_pd(_mm256_castpd256_pd128(x), _mm256_extractf128_pd(x, 1));
+    return _mm_cvtsd_f64(_mm_min_sd(m, _mm_unpackhi_pd(m, m)));
+#else
+    return x;
+#endif
+}
+
+/* The index of the smallest of x[0 .. n) (n a multiple of W): pref when x[pref] is the smallest
+ * (pref < 0: none), else the first; -1 when one is NaN. In lanes: a scalar scan would chain
+ * every comparison through a load of the best so far. */
+CD_INLINE int KN(ck_argmin)(const double *x, int n, int pref)
+{
+    V m = vld(x);
+    M nan = vne(m, m);
+    for (int j = W; j < n; j += W) {
+        V v = vld(x + j);
+        m = vmin(m, v);
+        nan = mor(nan, vne(v, v));
+    }
+    if (many(nan)) return -1;
+    double b = KN(ck_hmin)(m);
+    if (pref >= 0 && x[pref] == b) return pref;
+    for (int j = 0; j < n; j += W) {
+        unsigned bits = mbits(veq(vld(x + j), vset(b)));
+        if (bits) return j + __builtin_ctz(bits);
+    }
+    return -1;
+}
+
+/* The smallest of x[0 .. n) but x[a] and x[b] (n a multiple of W); NaN when one is NaN. */
+CD_INLINE double KN(ck_min_but)(const double *x, int n, int a, int b)
+{
+    V m = vset(INFINITY);
+    M nan = mfalse();
+    for (int j = 0; j < n; j += W) {
+        V idx = vld(&ck_tab.lane_index[j]);
+        M skip = mor(veq(idx, vset((double)a)), veq(idx, vset((double)b)));
+        V v = vsel(skip, vset(INFINITY), vld(x + j));
+        nan = mor(nan, vne(v, v));
+        m = vmin(m, v);
+    }
+    return many(nan) ? NAN : KN(ck_hmin)(m);
+}
+
 /* The search of ck_search for the one pair of frame f, its angles spread over the lanes: the
  * grid and the hull points of its intervals W at a time, each zoom level's 8 points and 8 hull
  * points W at a time; the convexity test and Newton on the basin evaluate the same point in
@@ -516,16 +577,11 @@ static int KN(ck_quick)(const cdist__cc_frame *f, double *t_out)
         V hull = vsub(KN(ck_f)(&r, vld(&ck_tab.hull_c[j]), vld(&ck_tab.hull_s[j])), R2tan);
         vst(&lb[j], vmin(vmin(vld(&Fg[j]), vld(&Fg[j + 1])), hull));
     }
-    int jb = 0;
-    for (int j = 1; j < CK_GRID; j++)
-        if (Fg[j] < Fg[jb]) jb = j;
+    int jb = KN(ck_argmin)(Fg, CK_GRID, -1);
+    if (jb < 0) return 0;
     int jp = (jb + CK_GRID - 1) % CK_GRID;
-    double minlb = INFINITY;
-    for (int j = 0; j < CK_GRID; j++) {
-        if (j == jb || j == jp) continue;
-        if (lb[j] != lb[j]) return 0; /* a NaN bound would drop out of minlb */
-        minlb = lb[j] < minlb ? lb[j] : minlb;
-    }
+    double minlb = KN(ck_min_but)(lb, CK_GRID, jb, jp);
+    if (minlb != minlb) return 0;
     double c = ck_tab.grid_c[jb], s = ck_tab.grid_s[jb], bestF = Fg[jb], Fl = Fg[jp], Fr = Fg[jb + 1];
     double t = jb * (2.0 * M_PI / CK_GRID), hdone = 0.0;
 
@@ -552,16 +608,14 @@ static int KN(ck_quick)(const cdist__cc_frame *f, double *t_out)
         Fk[0] = Fl; /* the ends and the centre as they were found */
         Fk[4] = bestF;
         Fk[8] = Fr;
-        int kb = 4;
-        for (int k = 0; k < 9; k++)
-            if (Fk[k] < Fk[kb]) kb = k;
-        if (kb == 0 || kb == 8) return 0;
-        for (int i = 0; i < 8; i++) {
-            if (i == kb - 1 || i == kb) continue;
-            double a = Fk[i] < Fk[i + 1] ? Fk[i] : Fk[i + 1], v = a < hb[i] ? a : hb[i];
-            if (v != v) return 0;
-            minlb = v < minlb ? v : minlb;
-        }
+        int kb = KN(ck_argmin)(Fk, 8, 4);
+        if (kb >= 0 && Fk[8] < Fk[kb]) kb = 8;
+        if (kb <= 0 || kb == 8) return 0; /* NaN, or the best point at the basin's end */
+        for (int i = 0; i < 8; i += W)
+            vst(&hb[i], vmin(vmin(vld(&Fk[i]), vld(&Fk[i + 1])), vld(&hb[i])));
+        double v = KN(ck_min_but)(hb, 8, kb - 1, kb);
+        if (v != v) return 0;
+        minlb = v < minlb ? v : minlb;
         c = Ck[kb];
         s = Sk[kb];
         Fl = Fk[kb - 1];
@@ -572,26 +626,23 @@ static int KN(ck_quick)(const cdist__cc_frame *f, double *t_out)
     if (!done) return 0;
 
     /* Newton, as ck_search. */
-    double d = 0.0;
+    double d = KN(ck_lane0)(KN(ck_vertex)(vset(Fl), vset(bestF), vset(Fr), vset(hdone))), Fs = 0.0;
     int settled = 0;
     for (int it = 0; it < CK_NEWTON_MAX && !settled; it++) {
         V cd, sd, F0, F1, F2, rho, rho2, e2;
         KN(ck_sincos_small)(vset(d), &cd, &sd);
         V cn = vsub(vmul(vset(c), cd), vmul(vset(s), sd)), sn = vadd(vmul(vset(s), cd), vmul(vset(c), sd));
         KN(ck_f2)(&r, cn, sn, &F0, &F1, &F2, &rho, &rho2, &e2);
-        double nd = d - KN(ck_lane0)(F1) / KN(ck_lane0)(F2);
+        double f1 = KN(ck_lane0)(F1), q = f1 / KN(ck_lane0)(F2), nd = d - q;
         nd = nd > -hdone ? nd : -hdone;
         nd = nd < hdone ? nd : hdone;
         settled = fabs(nd - d) <= CD_CCK_NEWTON_STEP;
         d = nd;
+        Fs = KN(ck_lane0)(F0) - f1 * q;
     }
     if (!settled) return 0;
 
     /* The certificate of ck_search. */
-    V cd, sd;
-    KN(ck_sincos_small)(vset(d), &cd, &sd);
-    double Fs = KN(ck_lane0)(KN(ck_f)(&r, vsub(vmul(vset(c), cd), vmul(vset(s), sd)),
-                                      vadd(vmul(vset(s), cd), vmul(vset(c), sd))));
     if (!(minlb > Fs + CD_CCK_CERT_MARGIN && Fs >= CD_CCK_MIN_F)) return 0;
     *t_out = t + d;
     return 1;

@@ -362,7 +362,7 @@ void cdist__cc_pair_at(const cdist__cc_frame *f, double t, cdist__cc_sink *k)
         tb = 0.0;
     }
     vec3 K = v_add(f->C, dir);
-    double ta = (t <= -M_PI) ? t + 2 * M_PI : (t > M_PI ? t - 2 * M_PI : t);
+    double ta = cdist__cc_param(t);
     if (k->B->r == 0.0) tb = NAN;
     double u = k->unscale, d = sqrt(d2);
     if (!k->swapped) cdist__best_offer(k->best, d2 * u * u, v_scale(u, P), v_scale(u, K), ta, tb);
@@ -381,7 +381,7 @@ static void emit(cdist__cc_sink *k, const cdist__cc_pt *a, const cdist__cc_pt *b
     if (!dir) return;
     double t = refine(k->f, a, b, dir);
     if (!k->best) {
-        double ta = (t <= -M_PI) ? t + 2 * M_PI : (t > M_PI ? t - 2 * M_PI : t);
+        double ta = cdist__cc_param(t);
         if (k->count < k->cap) k->out[k->count] = ta;
         k->count++;
         cdist__cc_pt p;

@@ -94,6 +94,13 @@ static inline void cdist__cc_eval_lean(const cdist__cc_frame *f, double t, doubl
  * touching or crossing circles, to the single query). */
 double cdist__cc_point_d2(const cdist__ring *rg, double s, double c, double sn);
 
+/* The reported parameter of an angle t on A in (-3 pi, 3 pi): t wrapped to (-pi, pi] (the
+ * distance is recomputed at this value, cdist__cc_settle_d2, so the batch kernel uses it too). */
+static inline double cdist__cc_param(double t)
+{
+    return (t <= -M_PI) ? t + 2 * M_PI : (t > M_PI ? t - 2 * M_PI : t);
+}
+
 /* The frame of A (parameterised, centre at the origin) and B (centre C relative to A's):
  * cdist__cc_frame_ring sets everything but the bounds of H (M1..M3, eH..eH2, Hc), which
  * cdist__cc_frame_bounds adds for cdist__cc_scan; cdist__cc_frame_init does both. */
