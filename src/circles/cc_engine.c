@@ -156,7 +156,7 @@ static void tp_mul(const tpoly *x, int dx, const tpoly *y, int dy, tpoly *z)
     *z = r;
 }
 
-void cdist__cc_frame_ring(cdist__cc_frame *f, const cdist__circle *A, vec3 C, const cdist__circle *B)
+CD_FMA_CLONES void cdist__cc_frame_ring(cdist__cc_frame *f, const cdist__circle *A, vec3 C, const cdist__circle *B)
 {
     f->R = A->r;
     f->s = B->r;
@@ -338,18 +338,16 @@ static inline void cc_track(cdist__cc_sink *k, const cdist__cc_pt *cur, double *
     }
 }
 
-void cdist__cc_pair_at(const cdist__cc_frame *f, double t, cdist__cc_sink *k)
+/* The pair at angle t of A ((c, s) = (cos t, sin t)) with its squared distance: plain, or
+ * (final) the double-double formula of the answer (cdist__cc_point_d2). */
+CD_INLINE void cc_pair(const cdist__cc_frame *f, double t, double c, double s, int final, cdist__cc_sink *k)
 {
-    double c, s;
-    sincos(t, &s, &c);
     vec3 P = v_axpy(v_scale(f->R * c, f->u), f->R * s, f->v);
     vec3 D = v_sub(P, f->C);
     vec3 w = v_cross(f->m, D);
     double h = v_dot(f->m, D), rho = v_norm(w);
     double dr = rho - f->s;
-    /* plain: the kept candidates' distances are recomputed in double-double at the end
-     * (cdist__cc_settle_d2) */
-    double d2 = fma(dr, dr, h * h);
+    double d2 = final ? cdist__cc_point_d2(&f->rg, f->s, c, s) : fma(dr, dr, h * h);
     vec3 dir;
     double tb;
     if (rho > 0) {
@@ -371,6 +369,22 @@ void cdist__cc_pair_at(const cdist__cc_frame *f, double t, cdist__cc_sink *k)
         k->dmin = d;
         k->rho_min = rho;
     }
+}
+
+CD_FMA_CLONES void cdist__cc_pair_at(const cdist__cc_frame *f, double t, cdist__cc_sink *k)
+{
+    double c, s;
+    sincos(t, &s, &c);
+    /* plain: the kept candidates' distances are recomputed in double-double at the end
+     * (cdist__cc_settle_d2) */
+    cc_pair(f, t, c, s, 0, k);
+}
+
+CD_FMA_CLONES void cdist__cc_pair_final(const cdist__cc_frame *f, double t, cdist__cc_sink *k)
+{
+    double c, s, ta = cdist__cc_param(t);
+    sincos(ta, &s, &c);
+    cc_pair(f, ta, c, s, 1, k);
 }
 
 static void emit(cdist__cc_sink *k, const cdist__cc_pt *a, const cdist__cc_pt *b)

@@ -19,7 +19,7 @@ static int param_second(const cdist__circle *c0, const cdist__circle *c1, vec3 C
     return 0;
 }
 
-int cdist__cc_prepare(const cdist__circle *c0, const cdist__circle *c1, cdist__cc_problem *p)
+CD_FMA_CLONES int cdist__cc_prepare(const cdist__circle *c0, const cdist__circle *c1, cdist__cc_problem *p)
 {
     vec3 C = v_sub(c1->c, c0->c); /* c0->c is the origin here; kept general */
     p->C = C;
@@ -29,10 +29,10 @@ int cdist__cc_prepare(const cdist__circle *c0, const cdist__circle *c1, cdist__c
     /* Scale the problem by a power of two (exact) so that L is about 1: H has terms of order
      * L^6, which would overflow or underflow for coordinates near the 1e150 limit. */
     double L = cdist__fmax(cdist__fmax(c0->r, c1->r), v_norm(C));
-    int ex;
-    frexp(L, &ex);
-    double sc = ldexp(1.0, -ex);
-    p->unscale = ldexp(1.0, ex);
+    /* L in [0.5, 1): the exponent of frexp(L), without the library calls (L > 0 is finite) */
+    int ex = cdist__scale_exponent(L) + 1;
+    double sc = cdist__pow2(-ex);
+    p->unscale = cdist__pow2(ex);
     p->A = *A;
     p->B = *B;
     p->A.c = v_scale(sc, A->c);
@@ -83,11 +83,8 @@ cdist_status cdist__cc_robust(cdist_query *q, const cdist__circle *c0, const cdi
         /* One certified minimum, not tiny: its pair, unless its point on A is so close to B's
          * axis that the answer is an equidistant set (the scan's equidistance test (b) below),
          * which the scan reports. */
-        cdist__cc_pair_at(&f, tq, &k);
-        if (k.rho_min > CC_AXIS_EPS_ULPS * f.epsL * cdist__fmin(1.0, f.s / f.L)) {
-            cdist__cc_settle_d2(&f, &k);
-            return CDIST_OK;
-        }
+        cdist__cc_pair_final(&f, tq, &k);
+        if (k.rho_min > CC_AXIS_EPS_ULPS * f.epsL * cdist__fmin(1.0, f.s / f.L)) return CDIST_OK;
         cdist__best_init(b, b->scale);
         k.dmin = k.rho_min = INFINITY;
     }

@@ -116,17 +116,17 @@ cdist_status cdist__circle_circle_core(cdist_query *q, cdist_method method, cons
     return cc_core(q, method, c0, c1, b, iterations, &answered);
 }
 
-int cdist__circles_frame(cdist__circle *a, cdist__circle *b, vec3 *offset, cdist__best *best)
+CD_FMA_CLONES int cdist__circles_frame(cdist__circle *a, cdist__circle *b, vec3 *offset, cdist__best *best)
 {
     *offset = a->c;
     a->c = v3(0, 0, 0);
     b->c = v_sub(b->c, *offset);
-    int e = cdist__scale_exponent(fmax(fmax(a->r, b->r), v_maxabs(b->c)));
+    int e = cdist__scale_exponent(cdist__fmax(cdist__fmax(a->r, b->r), v_maxabs(b->c)));
     double down = cdist__pow2(-e); /* normal for |e| <= CD_SCALE_MAX_EXP: x * down is ldexp(x, -e) */
     a->r *= down;
     b->r *= down;
     b->c = v_scale(down, b->c);
-    cdist__best_init(best, fmax(fmax(a->r, b->r), v_norm(b->c)));
+    cdist__best_init(best, cdist__fmax(cdist__fmax(a->r, b->r), v_norm(b->c)));
     return e;
 }
 
@@ -134,13 +134,13 @@ void cdist__circles_result(const cdist__best *best, int swap, int e, vec3 offset
 {
     cdist__best_to_result(best, v3(0, 0, 0), swap, r);
     cdist__result_finish(r, r->num_pairs);
-    r->distance = ldexp(r->distance, e);
+    /* x * 2^e is ldexp(x, e) (one rounding; 2^e is normal for |e| <= CD_SCALE_MAX_EXP) without
+     * a library call per coordinate; 2 e may be out of that range */
+    double up = cdist__pow2(e);
+    r->distance *= up;
     r->sqr_distance = ldexp(r->sqr_distance, 2 * e);
     for (int i = 0; i < r->num_pairs; i++)
-        for (int j = 0; j < 2; j++) {
-            vec3 p = r->pairs[i].point[j];
-            r->pairs[i].point[j] = v_add(v3(ldexp(p.x, e), ldexp(p.y, e), ldexp(p.z, e)), offset);
-        }
+        for (int j = 0; j < 2; j++) r->pairs[i].point[j] = v_add(v_scale(up, r->pairs[i].point[j]), offset);
 }
 
 /* The scaled problem (a at the origin): the core, then r written in full. */

@@ -120,8 +120,11 @@ int cdist__cc_scan(const cdist__cc_frame *f, cdist__cc_sink *k, double *Fmax);
  * that may tie with it, offered with the plain formula, recomputed by cdist__cc_point_d2 at
  * their angles on A (and re-ordered); the others are never reported. */
 void cdist__cc_settle_d2(const cdist__cc_frame *f, const cdist__cc_sink *k);
-/* Offer the pair at angle t of A to the sink's collector (robust mode). */
+/* Offer the pair at angle t of A to the sink's collector (robust mode), its distance by the
+ * plain formula (cdist__cc_settle_d2 settles it); cdist__cc_pair_final offers it at the
+ * reported parameter cdist__cc_param(t) with its final distance (cdist__cc_point_d2). */
 void cdist__cc_pair_at(const cdist__cc_frame *f, double t, cdist__cc_sink *k);
+void cdist__cc_pair_final(const cdist__cc_frame *f, double t, cdist__cc_sink *k);
 /* Parallel planes: F's critical angles in closed form (up to 4), or -1 when not parallel. */
 int cdist__cc_parallel_critical(const cdist__cc_frame *f, double *t);
 /* The robust method's problem: A, the circle it parameterises (the larger; ties by a rule
