@@ -155,4 +155,11 @@
 #define CD_CCK_NEWTON_STEP 1e-10
 #define CD_CCK_MIN_F 1e-24
 
+/* Circle-circle, the single query: the certified search of the kernel (cdist__cc_quick) runs
+ * first unless B's centre lies within CD_CC_QUICK_CENTRE_REL * s of A. There A crosses B's
+ * axis at B's centre, F's kink (never certified convex) sits at or next to the minimum, and
+ * the search would only add its cost to the scan's (the cc_linked_touch family). A routing
+ * threshold, not an accuracy one: either path answers every configuration. */
+#define CD_CC_QUICK_CENTRE_REL 1e-4
+
 #endif

@@ -46,6 +46,10 @@
 #define CK_LEVELS 7    /* basin half-widths 2 pi / CK_GRID * 4^-l, l < 7: down to 5e-5 rad */
 #define CK_NEWTON_MAX 8 /* from a certified basin Newton settles in 3 to 5 steps */
 #define CK_FIRST_CONVEX 2 /* the level of the first convexity check (measured: below it < 7% pass) */
+/* The single query's search gives up after this many levels (the scan then answers): 99.3% of
+ * cc_random certify by level 3, the rest by 4; basins that are not convex by then are mostly
+ * near-touching circles, which the scan handles. */
+#define CK_QUICK_LEVELS 5
 
 /* The columns of a block: the ring (al, be, ga, ha, hb, hc), B's radius s, R^2, the bounds
  * W1 = |al| + |be| >= |w'|, Hh = |ha| + |hb|, Hc0 = |hc|, Lw = 2 R + |C| of convex(), and the

@@ -118,7 +118,7 @@ CD_INLINE void KN(ck_rot)(V c, V s, double co, double si, V *cr, V *sr)
  * and every point is within h of an end, so X <= X0 + h B3(X), X0 the larger |rho''| at the
  * ends: X <= (X0 + h (3 W1^2 + rho_hi W1) / rho_lo) / (1 - 3 W1 h / rho_lo) when the divisor is
  * positive. Then |F'''/2| <= 3 W1 X + (rho_hi + s) B3(X) + Hh (4 Hh + Hc0). */
-CD_INLINE M KN(ck_convex)(const KN(ck_ring) *r, V c, V s, int l)
+CD_INLINE M KN(ck_convex)(const KN(ck_ring) *r, V c, V s, int l, M *near_axis)
 {
     V ca, sa, cb, sb, F0, F1, F2a, F2b, ra, rb, xa, xb, ea, eb;
     KN(ck_rot)(c, s, ck_tab.end_c[l], -ck_tab.end_s[l], &ca, &sa);
@@ -127,6 +127,7 @@ CD_INLINE M KN(ck_convex)(const KN(ck_ring) *r, V c, V s, int l)
     KN(ck_f2)(r, cb, sb, &F0, &F1, &F2b, &rb, &xb, &eb);
     V h = vset(ck_tab.half[l]), W1 = r->W1, hw = vmul(W1, h), three = vset(3.0);
     V rlo = vsub(vmul(vset(0.5), vadd(ra, rb)), hw), rhi = vadd(vmax(ra, rb), hw);
+    *near_axis = mnot(vgt(rlo, vset(0.0)));
     /* The bounds above multiplied through by rho_lo > 0, for one division in the chain:
      * base = b / rho_lo, 1 - 3 W1 h / rho_lo = k / rho_lo, B3 rho_lo = b + 3 W1 X, and the
      * test F''/2 > M3 h becomes (F''/2) rho_lo > (M3 rho_lo) h. X0 carries a margin for the
@@ -337,7 +338,8 @@ static unsigned KN(ck_search)(ck_block *b, int g)
     for (int l = 0; l < CK_LEVELS; l++) {
         M active = mnot(mor(done, fail));
         if (!many(active)) break;
-        M conv = l < CK_FIRST_CONVEX ? mfalse() : mand(active, KN(ck_convex)(&r, c, s, l));
+        M near_axis;
+        M conv = l < CK_FIRST_CONVEX ? mfalse() : mand(active, KN(ck_convex)(&r, c, s, l, &near_axis));
         done = mor(done, conv);
         hdone = vsel(conv, vset(ck_tab.half[l]), hdone);
         active = mandn(conv, active);
@@ -582,18 +584,31 @@ static int KN(ck_quick)(const cdist__cc_frame *f, double *t_out)
     int jp = (jb + CK_GRID - 1) % CK_GRID;
     double minlb = KN(ck_min_but)(lb, CK_GRID, jb, jp);
     if (minlb != minlb) return 0;
+    /* The basin's own bounds are below F at any point of it, so the certificate cannot hold
+     * once minlb is within the margin of them (a near-tie): leave early. */
+    const double margin = CD_CCK_CERT_MARGIN;
+    if (!(minlb > cdist__fmin(lb[jb], lb[jp]) + margin)) return 0;
     double c = ck_tab.grid_c[jb], s = ck_tab.grid_s[jb], bestF = Fg[jb], Fl = Fg[jp], Fr = Fg[jb + 1];
     double t = jb * (2.0 * M_PI / CK_GRID), hdone = 0.0;
 
     /* Zoom, as ck_search. */
     int done = 0;
-    for (int l = 0; l < CK_LEVELS && !done; l++) {
-        if (l >= CK_FIRST_CONVEX && (mbits(KN(ck_convex)(&r, vset(c), vset(s), l)) & 1u)) {
-            done = 1;
-            hdone = ck_tab.half[l];
-            break;
+    for (int l = 0; l < CK_QUICK_LEVELS && !done; l++) {
+        /* F at the answer would be below bestF: touching or crossing circles (the scan) */
+        if (!(bestF >= CD_CCK_MIN_F)) return 0;
+        if (l >= CK_FIRST_CONVEX) {
+            M near_axis;
+            if (mbits(KN(ck_convex)(&r, vset(c), vset(s), l, &near_axis)) & 1u) {
+                done = 1;
+                hdone = ck_tab.half[l];
+                break;
+            }
+            /* B's axis within W1 h of the basin: F's kink there (A crossing the axis) keeps
+             * the basin from being certified convex at any level we try; the scan's kink
+             * windows answer it */
+            if (mbits(near_axis) & 1u) return 0;
         }
-        if (l + 1 == CK_LEVELS) break;
+        if (l + 1 == CK_QUICK_LEVELS) break;
         double Fk[9], Ck[8], Sk[8], hb[8];
         V R2tan_sub = vset(R2 * ck_tab.sub_tan2[l]);
         for (int k = 0; k < 8; k += W) {
@@ -616,6 +631,7 @@ static int KN(ck_quick)(const cdist__cc_frame *f, double *t_out)
         double v = KN(ck_min_but)(hb, 8, kb - 1, kb);
         if (v != v) return 0;
         minlb = v < minlb ? v : minlb;
+        if (!(minlb > cdist__fmin(hb[kb - 1], hb[kb]) + margin)) return 0;
         c = Ck[kb];
         s = Sk[kb];
         Fl = Fk[kb - 1];
@@ -643,7 +659,7 @@ static int KN(ck_quick)(const cdist__cc_frame *f, double *t_out)
     if (!settled) return 0;
 
     /* The certificate of ck_search. */
-    if (!(minlb > Fs + CD_CCK_CERT_MARGIN && Fs >= CD_CCK_MIN_F)) return 0;
+    if (!(minlb > Fs + margin && Fs >= CD_CCK_MIN_F)) return 0;
     *t_out = t + d;
     return 1;
 }

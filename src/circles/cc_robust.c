@@ -43,6 +43,14 @@ CD_FMA_CLONES int cdist__cc_prepare(const cdist__circle *c0, const cdist__circle
     return 1;
 }
 
+/* B's centre within CD_CC_QUICK_CENTRE_REL * s of A (tolerances.h): with e = |C| in A's plane,
+ * the squared distance from C to A is (e - R)^2 + (|C|^2 - e^2). */
+static int centre_on_A(const cdist__cc_frame *f)
+{
+    double e2 = f->Cu * f->Cu + f->Cv * f->Cv, dr = sqrt(e2) - f->R, lim = CD_CC_QUICK_CENTRE_REL * f->s;
+    return dr * dr + (cdist__cc_dot3(f->C, f->C) - e2) <= lim * lim;
+}
+
 /* The robust method (see the header comment). */
 cdist_status cdist__cc_robust(cdist_query *q, const cdist__circle *c0, const cdist__circle *c1, cdist__best *b)
 {
@@ -79,7 +87,7 @@ cdist_status cdist__cc_robust(cdist_query *q, const cdist__circle *c0, const cdi
                  .dmin = INFINITY, .rho_min = INFINITY};
     double Fmax, tp[4], tq;
     int np = cdist__cc_parallel_critical(&f, tp);
-    if (np < 0 && cdist__cc_quick(&f, &tq)) {
+    if (np < 0 && !centre_on_A(&f) && cdist__cc_quick(&f, &tq)) {
         /* One certified minimum, not tiny: its pair, unless its point on A is so close to B's
          * axis that the answer is an equidistant set (the scan's equidistance test (b) below),
          * which the scan reports. */
