@@ -59,6 +59,7 @@ enum { CK_C_ALX, CK_C_ALY, CK_C_ALZ, CK_C_BEX, CK_C_BEY, CK_C_BEZ, CK_C_GAX, CK_
 typedef struct ck_block {
     double col[CK_NC][64];
     double t[64]; /* the angle found */
+    double ct[64], st[64]; /* its cosine and sine, by rotation from the basin's centre */
     double d[64]; /* the distance there */
 } ck_block;
 
@@ -185,15 +186,15 @@ static uint64_t kernel_avx2(const cdist__job *job, int shape, double tol, size_t
 }
 #endif
 
-int cdist__cc_quick(const cdist__cc_frame *f, double *t)
+int cdist__cc_quick(const cdist__cc_frame *f, double *t, double *c, double *s)
 {
     pthread_once(&ck_tab_once, ck_tables_init);
 #ifdef CD_X86_KERNELS
     int isa = cdist__lanes_isa();
-    if (isa == CD_ISA_AVX512) return ck_quick_8(f, t);
-    if (isa == CD_ISA_AVX2) return ck_quick_4(f, t);
+    if (isa == CD_ISA_AVX512) return ck_quick_8(f, t, c, s);
+    if (isa == CD_ISA_AVX2) return ck_quick_4(f, t, c, s);
 #endif
-    return ck_quick_1(f, t);
+    return ck_quick_1(f, t, c, s);
 }
 
 uint64_t cdist__cc_distance_kernel(const cdist__job *job, double unit_tol, size_t lo, size_t count)

@@ -295,6 +295,20 @@ CD_INLINE V KN(ck_vertex)(V Fl, V F0, V Fr, V h)
     return vsel(vgt(den, vset(0.0)), vmin(vmax(x, vneg(h)), h), vset(0.0));
 }
 
+/* The cosine and sine of the answer, the basin's centre (c, s) rotated by Newton's offset d,
+ * without a sincos call: the rotations from the grid leave |(c, s)| - 1 at a few ulps, which
+ * would move the point off A by as many ulps of R; one step x (3 - |x|^2) / 2 of Newton's
+ * iteration for the norm brings it back to about an ulp. */
+CD_INLINE void KN(ck_answer_cs)(V c, V s, V d, V *cf, V *sf)
+{
+    V cd, sd;
+    KN(ck_sincos_small)(d, &cd, &sd);
+    V x = vsub(vmul(c, cd), vmul(s, sd)), y = vadd(vmul(s, cd), vmul(c, sd));
+    V k = vmul(vset(0.5), vsub(vset(3.0), vadd(vmul(x, x), vmul(y, y))));
+    *cf = vmul(x, k);
+    *sf = vmul(y, k);
+}
+
 /* The search for the W entries of the block from g: angles t[] of the closest points of the
  * entries it certifies; returns the lane mask (bit k: entry g + k) of those it does not. */
 static unsigned KN(ck_search)(ck_block *b, int g)
@@ -421,6 +435,10 @@ static unsigned KN(ck_search)(ck_block *b, int g)
      * CD_CCK_NEWTON_STEP), which saves an evaluation. */
     fail = mor(mor(fail, nan), mnot(mand(vgt(minlb, vadd(Fs, margin)), vge(Fs, vset(CD_CCK_MIN_F)))));
     vst(&b->t[g], vadd(t, d));
+    V cf, sf;
+    KN(ck_answer_cs)(c, s, d, &cf, &sf);
+    vst(&b->ct[g], cf);
+    vst(&b->st[g], sf);
     return mbits(fail);
 }
 
@@ -456,14 +474,12 @@ CD_INLINE V KN(ck_dd_sqr_add)(V xh, V xl, V ah, V al, V *lo)
     return s;
 }
 
-/* The distances of the lanes of the group from g at their angles t (b->t): cdist__cc_point_d2
- * (cc_engine.c) operation by operation, so bit for bit the single query's formula, with cos and
- * sin from the C library; scaled back as the single query scales its answer. Into b->d. */
+/* The distances of the lanes of the group from g at their angles (b->ct, b->st: cosine and
+ * sine): cdist__cc_point_d2 (cc_engine.c) operation by operation, so bit for bit the single
+ * query's formula; scaled back as the single query scales its answer. Into b->d. */
 static void KN(ck_final)(ck_block *b, int g)
 {
-    double cs[W], sn[W];
-    for (int l = 0; l < W; l++) sincos(cdist__cc_param(b->t[g + l]), &sn[l], &cs[l]);
-    V c = vld(cs), s = vld(sn);
+    V c = vld(&b->ct[g]), s = vld(&b->st[g]);
     const double(*col)[64] = b->col;
 #define CK_COL(k) vld(&col[k][g])
     V wxl, wyl, wzl, hl;
@@ -559,9 +575,10 @@ CD_INLINE double KN(ck_min_but)(const double *x, int n, int a, int b)
 /* The search of ck_search for the one pair of frame f, its angles spread over the lanes: the
  * grid and the hull points of its intervals W at a time, each zoom level's 8 points and 8 hull
  * points W at a time; the convexity test and Newton on the basin evaluate the same point in
- * every lane (their latency is that of scalar code). Returns 1 and the angle *t of the closest
- * point on A when the same certificate as ck_search holds, else 0. */
-static int KN(ck_quick)(const cdist__cc_frame *f, double *t_out)
+ * every lane (their latency is that of scalar code). Returns 1, the angle *t of the closest
+ * point on A and its cosine and sine (by rotation) when the same certificate as ck_search
+ * holds, else 0. */
+static int KN(ck_quick)(const cdist__cc_frame *f, double *t_out, double *c_out, double *s_out)
 {
     KN(ck_ring) r = {
         vset(f->rg.al.x), vset(f->rg.al.y), vset(f->rg.al.z), vset(f->rg.be.x), vset(f->rg.be.y),
@@ -660,6 +677,10 @@ static int KN(ck_quick)(const cdist__cc_frame *f, double *t_out)
 
     /* The certificate of ck_search. */
     if (!(minlb > Fs + margin && Fs >= CD_CCK_MIN_F)) return 0;
+    V cf, sf;
+    KN(ck_answer_cs)(vset(c), vset(s), vset(d), &cf, &sf);
+    *c_out = KN(ck_lane0)(cf);
+    *s_out = KN(ck_lane0)(sf);
     *t_out = t + d;
     return 1;
 }

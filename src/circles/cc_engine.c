@@ -380,11 +380,9 @@ CD_FMA_CLONES void cdist__cc_pair_at(const cdist__cc_frame *f, double t, cdist__
     cc_pair(f, t, c, s, 0, k);
 }
 
-CD_FMA_CLONES void cdist__cc_pair_final(const cdist__cc_frame *f, double t, cdist__cc_sink *k)
+CD_FMA_CLONES void cdist__cc_pair_final(const cdist__cc_frame *f, double t, double c, double s, cdist__cc_sink *k)
 {
-    double c, s, ta = cdist__cc_param(t);
-    sincos(ta, &s, &c);
-    cc_pair(f, ta, c, s, 1, k);
+    cc_pair(f, cdist__cc_param(t), c, s, 1, k);
 }
 
 static void emit(cdist__cc_sink *k, const cdist__cc_pt *a, const cdist__cc_pt *b)

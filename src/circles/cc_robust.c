@@ -85,13 +85,13 @@ cdist_status cdist__cc_robust(cdist_query *q, const cdist__circle *c0, const cdi
     cdist__cc_frame_ring(&f, A, CB, B);
     cdist__cc_sink k = {.f = &f, .best = b, .prune = 1, .unscale = unsc, .swapped = sw, .A = A, .B = B,  .Fmin = INFINITY,
                  .dmin = INFINITY, .rho_min = INFINITY};
-    double Fmax, tp[4], tq;
+    double Fmax, tp[4], tq, cq, sq;
     int np = cdist__cc_parallel_critical(&f, tp);
-    if (np < 0 && !centre_on_A(&f) && cdist__cc_quick(&f, &tq)) {
+    if (np < 0 && !centre_on_A(&f) && cdist__cc_quick(&f, &tq, &cq, &sq)) {
         /* One certified minimum, not tiny: its pair, unless its point on A is so close to B's
          * axis that the answer is an equidistant set (the scan's equidistance test (b) below),
          * which the scan reports. */
-        cdist__cc_pair_final(&f, tq, &k);
+        cdist__cc_pair_final(&f, tq, cq, sq, &k);
         if (k.rho_min > CC_AXIS_EPS_ULPS * f.epsL * cdist__fmin(1.0, f.s / f.L)) return CDIST_OK;
         cdist__best_init(b, b->scale);
         k.dmin = k.rho_min = INFINITY;

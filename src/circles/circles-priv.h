@@ -108,11 +108,11 @@ void cdist__cc_frame_init(cdist__cc_frame *f, const cdist__circle *A, vec3 C, co
 void cdist__cc_frame_ring(cdist__cc_frame *f, const cdist__circle *A, vec3 C, const cdist__circle *B);
 void cdist__cc_frame_bounds(cdist__cc_frame *f);
 /* The batch kernel's certified search (src/batch/cc_kernel.c) for the one pair of frame f (only
- * its ring part is read), with the angles in lanes: 1 and the angle *t of the closest point on
- * A when the closest point is certified unique (every other region of A at least
+ * its ring part is read), with the angles in lanes: 1, the angle *t of the closest point on A
+ * and its cosine *c and sine *s when the closest point is certified unique (every other region of A at least
  * CD_CCK_CERT_MARGIN farther in F) and the distance is not tiny (>= sqrt(CD_CCK_MIN_F)); else
  * 0 (then cdist__cc_scan decides). */
-int cdist__cc_quick(const cdist__cc_frame *f, double *t);
+int cdist__cc_quick(const cdist__cc_frame *f, double *t, double *c, double *s);
 /* Walks [-pi, pi) and hands every critical bracket of F to the sink (see cc_engine.c). Fmax:
  * largest F seen at the partition points. */
 int cdist__cc_scan(const cdist__cc_frame *f, cdist__cc_sink *k, double *Fmax);
@@ -121,10 +121,11 @@ int cdist__cc_scan(const cdist__cc_frame *f, cdist__cc_sink *k, double *Fmax);
  * their angles on A (and re-ordered); the others are never reported. */
 void cdist__cc_settle_d2(const cdist__cc_frame *f, const cdist__cc_sink *k);
 /* Offer the pair at angle t of A to the sink's collector (robust mode), its distance by the
- * plain formula (cdist__cc_settle_d2 settles it); cdist__cc_pair_final offers it at the
- * reported parameter cdist__cc_param(t) with its final distance (cdist__cc_point_d2). */
+ * plain formula (cdist__cc_settle_d2 settles it); cdist__cc_pair_final offers the pair at the
+ * point (c, s) = (cos t, sin t) (as cdist__cc_quick found them) with the parameter
+ * cdist__cc_param(t) and the final distance there (cdist__cc_point_d2). */
 void cdist__cc_pair_at(const cdist__cc_frame *f, double t, cdist__cc_sink *k);
-void cdist__cc_pair_final(const cdist__cc_frame *f, double t, cdist__cc_sink *k);
+void cdist__cc_pair_final(const cdist__cc_frame *f, double t, double c, double s, cdist__cc_sink *k);
 /* Parallel planes: F's critical angles in closed form (up to 4), or -1 when not parallel. */
 int cdist__cc_parallel_critical(const cdist__cc_frame *f, double *t);
 /* The robust method's problem: A, the circle it parameterises (the larger; ties by a rule

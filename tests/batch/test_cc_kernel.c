@@ -251,7 +251,10 @@ static void check_setup(const char *name, sfn setup, ffn final, int lanes, cdist
         int cnt = n - lo < 64 ? (int)(n - lo) : 64;
         for (int g = 0; g < cnt; g += lanes) {
             unsigned left = setup(&job, q->unit_tol, lo, g, cnt - g < lanes ? cnt - g : lanes, &blk);
-            for (int l = 0; l < lanes; l++) blk.t[g + l] = (2 * rnd01() - 1) * M_PI;
+            for (int l = 0; l < lanes; l++) {
+                blk.t[g + l] = (2 * rnd01() - 1) * M_PI;
+                sincos(blk.t[g + l], &blk.st[g + l], &blk.ct[g + l]);
+            }
             final(&blk, g);
             for (int l = 0; l < lanes && g + l < cnt; l++) {
                 int k = g + l;
