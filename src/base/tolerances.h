@@ -161,5 +161,9 @@
  * the search would only add its cost to the scan's (the cc_linked_touch family). A routing
  * threshold, not an accuracy one: either path answers every configuration. */
 #define CD_CC_QUICK_CENTRE_REL 1e-4
+/* Nor when either centre lies within CD_CC_QUICK_AXIS_REL * L of the other circle's axis: F is
+ * then a function of cos(t - phi), mirror-symmetric, and its minima come in tied pairs that the
+ * search leaves to the scan anyway (the cc_center_on_axis family). Routing only. */
+#define CD_CC_QUICK_AXIS_REL 1e-9
 
 #endif
