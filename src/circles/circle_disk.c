@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* Circle to disk (point-curve-circle-to-disk §2-§4; derivations in docs/disk.md). Disk to disk
- * (disk_disk.c) runs this twice, rim of each against the other disk.
+ * (disk_disk.c) runs this twice, rim of each against the other disk (the second time without
+ * the rim-to-rim minima, which the first has found).
  *
  * The one lemma everything here rests on. Let G(X) be the distance from X to the disk, F(X)
  * the distance to its rim circle and h(X) the signed height over the disk's plane. Then
@@ -405,10 +406,13 @@ static int cdk_parallel(const cdk *k, cdist__best *b)
     return 1;
 }
 
-static cdist_status cdk_solve(cdist_query *q, cdist_method method, const cdk *k, cdist__best *b, double dcap0, cdist_method *used)
+static cdist_status cdk_solve(cdist_query *q, cdist_method method, const cdk *k, cdist__best *b, double dcap0, int rim,
+                              cdist_method *used, int *rim_certified)
 {
     *used = method;
+    *rim_certified = 1; /* the parallel closed forms */
     if (cdk_parallel(k, b)) return CDIST_OK;
+    *rim_certified = 0;
     /* Zeros and extremes of the height z(t) = Z0 + amp cos(t - phi). */
     double amp = cdist__norm2(k->Z[1], k->Z[2]), phi = atan2(k->Z[2], k->Z[1]);
     cdk_offer(k, phi, b);
@@ -431,7 +435,9 @@ static cdist_status cdk_solve(cdist_query *q, cdist_method method, const cdk *k,
             cdk_offer(k, t, b);
         }
     }
-    /* Critical points of the rim distance. */
+    /* Critical points of the rim distance (not asked for: the caller has them, see
+     * cdist__circle_disk_core_ex). */
+    if (!rim) return CDIST_OK;
     double ts[CDK_CAP];
     double scale = cdist__fmax(cdist__fmax(k->rho, k->R), sqrt(k->X[0] * k->X[0] + k->Y[0] * k->Y[0] + k->Z[0] * k->Z[0]));
     int n = -2;
@@ -448,12 +454,14 @@ static cdist_status cdk_solve(cdist_query *q, cdist_method method, const cdk *k,
          * far (a z candidate, whose distance is the true one): the engine prunes the rest. */
         double dcap = b->n > 0 ? cdist__fmin(dcap0, sqrt(b->c[0].d2)) : dcap0;
         n = cdist__circle_circle_critical(q, k->c, k->d, dcap, ts, CDK_CAP);
+        *rim_certified = n >= 0 || n == -1;
         if (n == -1) {
             n = 0; /* F constant: the rim gives no isolated candidate; z candidates rule */
             ts[n++] = 0.0;
         } else if (n == 0 && dcap < INFINITY) {
             /* no minimum of F below the cap: the z candidates rule */
         } else if (n <= 0) {
+            *rim_certified = 0; /* the sampling fallback */
             n = cdk_robust_critical(k, ts, CDK_CAP, scale);
         } else {
             /* Flat minima near the best: a neighbour of a cluster below the certification width
@@ -475,9 +483,10 @@ static cdist_status cdk_solve(cdist_query *q, cdist_method method, const cdk *k,
 
 /* Circle c (centre at the origin) to disk d (centre relative to c's). */
 static cdist_status circle_disk_solve(cdist_query *q, cdist_method method, const cdist__circle *c, const cdist__circle *d,
-                                      double dcap, cdist__best *b, cdist_method *used)
+                                      double dcap, int rim, cdist__best *b, cdist_method *used, int *rim_certified)
 {
     *used = method;
+    *rim_certified = 1; /* the closed forms below */
     if (c->r == 0.0) {
         /* The circle is its centre (the origin): point to disk, points relative to d's centre. */
         cdist__best t;
@@ -495,20 +504,22 @@ static cdist_status circle_disk_solve(cdist_query *q, cdist_method method, const
     }
     cdk k;
     cdk_init(&k, c, d);
-    return cdk_solve(q, method, &k, b, dcap, used);
+    return cdk_solve(q, method, &k, b, dcap, rim, used, rim_certified);
 }
 
 /* Solved into a fresh collector, then merged into b: b may already hold other candidates (a
  * caller combining several objects), and an equidistant set here only makes b equidistant when
  * it attains b's minimum. */
 cdist_status cdist__circle_disk_core_ex(cdist_query *q, cdist_method method, const cdist__circle *c, const cdist__circle *d,
-                                     double dcap, cdist__best *b, cdist_method *used)
+                                     double dcap, int rim, cdist__best *b, cdist_method *used, int *rim_certified)
 {
+    int cert_dummy;
+    if (!rim_certified) rim_certified = &cert_dummy;
     cdist__best t;
     cdist__best_init(&t, b->scale);
     /* b's best so far is attained too: no minimum above it can be the answer */
     if (b->n > 0) dcap = cdist__fmin(dcap, sqrt(b->c[0].d2));
-    cdist_status st = circle_disk_solve(q, method, c, d, dcap, &t, used);
+    cdist_status st = circle_disk_solve(q, method, c, d, dcap, rim, &t, used, rim_certified);
     if (st) return st;
     double d2 = cdist__best_merge(b, &t, v3(0, 0, 0), 0);
     if (cdist__best_is_equidistant(&t)) cdist__best_settle_equidistant(b, d2);
@@ -521,7 +532,7 @@ static cdist_status circle_disk_query(cdist_query *q, cdist__circle a, cdist__ci
     vec3 offset;
     cdist__best best;
     int ex = cdist__circles_frame(&a, &e, &offset, &best);
-    cdist_status st = cdist__circle_disk_core_ex(q, cdist__family_method(q, CD_FAM_CIRCLE_DISK), &a, &e, INFINITY, &best, used);
+    cdist_status st = cdist__circle_disk_core_ex(q, cdist__family_method(q, CD_FAM_CIRCLE_DISK), &a, &e, INFINITY, 1, &best, used, NULL);
     if (st) return st;
     if (best.n == 0) return cdist__fail(q, CDIST_ERR_INTERNAL, "circle-disk found no candidate");
     cdist__circles_result(&best, 0, ex, offset, r);
