@@ -134,13 +134,13 @@ void cdist__circles_result(const cdist__best *best, int swap, int e, vec3 offset
 {
     cdist__best_to_result(best, v3(0, 0, 0), swap, r);
     cdist__result_finish(r, r->num_pairs);
-    r->distance = ldexp(r->distance, e);
-    r->sqr_distance = ldexp(r->sqr_distance, 2 * e);
+    /* x * 2^e is x scaled by 2^e correctly rounded, like ldexp, when 2^e is a double (e is
+     * within CD_SCALE_MAX_EXP); 2e may not be */
+    double up = cdist__pow2(e);
+    r->distance *= up;
+    r->sqr_distance = 2 * e >= -1022 && 2 * e <= 1023 ? r->sqr_distance * cdist__pow2(2 * e) : ldexp(r->sqr_distance, 2 * e);
     for (int i = 0; i < r->num_pairs; i++)
-        for (int j = 0; j < 2; j++) {
-            vec3 p = r->pairs[i].point[j];
-            r->pairs[i].point[j] = v_add(v3(ldexp(p.x, e), ldexp(p.y, e), ldexp(p.z, e)), offset);
-        }
+        for (int j = 0; j < 2; j++) r->pairs[i].point[j] = v_add(v_scale(up, r->pairs[i].point[j]), offset);
 }
 
 /* The scaled problem (a at the origin): the core, then r written in full. */
