@@ -37,7 +37,7 @@ typedef struct cdk {
     const cdist__circle *c, *d; /* the circle (centre at the origin) and the disk */
 } cdk;
 
-static void cdk_init(cdk *k, const cdist__circle *c, const cdist__circle *d)
+CD_INLINE void cdk_init(cdk *k, const cdist__circle *c, const cdist__circle *d)
 {
     vec3 D = d->c;
     k->c = c;
@@ -68,8 +68,8 @@ static void cdk_init(cdk *k, const cdist__circle *c, const cdist__circle *d)
     k->S[0] = 0.0; k->S[1] = -r * v_dot(D, c->v); k->S[2] = r * v_dot(D, c->u);
 }
 
-static inline double trig1(const double *a, double cs, double sn) { return fma(a[1], cs, fma(a[2], sn, a[0])); }
-static inline double trig1d(const double *a, double cs, double sn) { return fma(a[2], cs, -a[1] * sn); }
+CD_INLINE double trig1(const double *a, double cs, double sn) { return fma(a[1], cs, fma(a[2], sn, a[0])); }
+CD_INLINE double trig1d(const double *a, double cs, double sn) { return fma(a[2], cs, -a[1] * sn); }
 
 /* Half squared rim distance F = ((rho - R)^2 + z^2) / 2 along the circle: value, F', F''
  * (the ring evaluator; on the disk's axis F has a cusp, a maximum, where F'' is set to 1). */
@@ -97,33 +97,46 @@ static double cdk_rim(const cdk *k, double t, double *f1, double *f2)
  *     x^2 + y^2 - R^2 = E0 + 2 (X0 a + Y0 b) + a^2 + b^2    (a = x - X0, b = y - Y0),
  * the error is eps (R r + r^2) instead. For a circle at least as large as the disk the direct
  * form is the more accurate one (its x, y are small where it matters). */
-static inline double rim_excess(const cdk *k, double x, double y, double cs, double sn)
+CD_INLINE double rim_excess(const cdk *k, double x, double y, double cs, double sn)
 {
     if (!k->small_circle) return fma(x, x, fma(y, y, -k->R * k->R));
     double a = k->X[1] * cs + k->X[2] * sn, b = k->Y[1] * cs + k->Y[2] * sn;
     return k->E0 + (2.0 * (k->X[0] * a + k->Y[0] * b) + (a * a + b * b));
 }
 
-/* Offer the circle point at angle t with its closest disk point (the true point-disk distance). */
-static void cdk_offer(const cdk *k, double t, cdist__best *b)
+/* Offer the circle point at angle t, (cs, sn) = (cos t, sin t), with its closest disk point (the
+ * true point-disk distance); nothing when its distance is far above b's best (CD_CD_FAR_REL). */
+CD_INLINE void cdk_offer_cs(const cdk *k, double t, double cs, double sn, cdist__best *b)
+{
+    double far = b->n > 0 ? sqrt(b->c[0].d2) + CD_CD_FAR_REL * b->scale : INFINITY, far2 = far * far;
+    double x = trig1(k->X, cs, sn), y = trig1(k->Y, cs, sn), z = trig1(k->Z, cs, sn), zz = z * z;
+    if (zz > far2) return; /* the distance is at least |z| */
+    double ex = rim_excess(k, x, y, cs, sn);
+    double d2, rho = 0.0;
+    if (ex <= 0.0) {
+        d2 = zz;
+    } else {
+        rho = hypot(x, y);
+        double dr = k->small_circle ? ex / (rho + k->R) : rho - k->R;
+        d2 = fma(dr, dr, zz);
+    }
+    if (d2 > far2) return;
+    vec3 P = v_axpy(v_scale(k->rho * cs, k->A), k->rho * sn, k->B);
+    vec3 K;
+    if (ex <= 0.0) {
+        K = v_axpy(P, -z, k->n); /* the projection onto the plane */
+    } else {
+        double s = k->R / rho;
+        K = v_axpy(v_axpy(k->D, s * x, k->u), s * y, k->v);
+    }
+    cdist__best_offer(b, d2, P, K, k->rho > 0.0 ? cdist__wrap_angle(t) : NAN, cdist__polar_angle(x, y));
+}
+
+CD_INLINE void cdk_offer(const cdk *k, double t, cdist__best *b)
 {
     double sn, cs;
     sincos(t, &sn, &cs);
-    double x = trig1(k->X, cs, sn), y = trig1(k->Y, cs, sn), z = trig1(k->Z, cs, sn);
-    vec3 P = v_axpy(v_scale(k->rho * cs, k->A), k->rho * sn, k->B);
-    double ex = rim_excess(k, x, y, cs, sn);
-    vec3 K;
-    double d2;
-    if (ex <= 0.0) {
-        K = v_axpy(P, -z, k->n); /* the projection onto the plane */
-        d2 = z * z;
-    } else {
-        double rho = hypot(x, y), s = k->R / rho;
-        K = v_axpy(v_axpy(k->D, s * x, k->u), s * y, k->v);
-        double dr = k->small_circle ? ex / (rho + k->R) : rho - k->R;
-        d2 = fma(dr, dr, z * z);
-    }
-    cdist__best_offer(b, d2, P, K, k->rho > 0.0 ? cdist__wrap_angle(t) : NAN, cdist__polar_angle(x, y));
+    cdk_offer_cs(k, t, cs, sn, b);
 }
 
 /* Bracketed root of F' in [a, b] with sg F'(a) < 0 < sg F'(b) (sg = 1: a minimum of F, -1: a
@@ -406,8 +419,8 @@ static int cdk_parallel(const cdk *k, cdist__best *b)
     return 1;
 }
 
-static cdist_status cdk_solve(cdist_query *q, cdist_method method, const cdk *k, cdist__best *b, double dcap0, int rim,
-                              cdist_method *used, int *rim_certified)
+CD_INLINE cdist_status cdk_solve(cdist_query *q, cdist_method method, const cdk *k, cdist__best *b, double dcap0, int rim,
+                                 cdist_method *used, int *rim_certified)
 {
     *used = method;
     *rim_certified = 1; /* the parallel closed forms */
@@ -438,7 +451,8 @@ static cdist_status cdk_solve(cdist_query *q, cdist_method method, const cdk *k,
     /* Critical points of the rim distance (not asked for: the caller has them, see
      * cdist__circle_disk_core_ex). */
     if (!rim) return CDIST_OK;
-    double ts[CDK_CAP];
+    double ts[CDK_CAP], tc[CDK_CAP], tsn[CDK_CAP]; /* angles, and cos, sin of the first nc of them */
+    int nc = 0;
     double scale = cdist__fmax(cdist__fmax(k->rho, k->R), sqrt(k->X[0] * k->X[0] + k->Y[0] * k->Y[0] + k->Z[0] * k->Z[0]));
     int n = -2;
     if (method == CDIST_METHOD_POLYNOMIAL) {
@@ -468,21 +482,27 @@ static cdist_status cdk_solve(cdist_query *q, cdist_method method, const cdk *k,
              * (multiple roots) is looked for by the dyadic scan. */
             double Fv[CDK_CAP], f2v[CDK_CAP], Fbest = INFINITY, flat = CDK_FLAT * k->rho * scale;
             for (int i = 0; i < n; i++) {
-                Fv[i] = cdk_rim(k, ts[i], NULL, &f2v[i]);
+                sincos(ts[i], &tsn[i], &tc[i]);
+                Fv[i] = cdk_rim_cs(k, tc[i], tsn[i], NULL, &f2v[i]);
                 Fbest = cdist__fmin(Fbest, Fv[i]);
             }
+            nc = n;
             int n0 = n;
             for (int i = 0; i < n0 && n < CDK_CAP; i++)
                 if (Fv[i] <= Fbest + 0.01 * scale * scale && fabs(f2v[i]) <= flat)
                     n += cdk_scan(k, ts[i], ts[i] - 0.15, ts[i] + 0.15, ts + n, CDK_CAP - n);
         }
     }
-    for (int i = 0; i < n; i++) cdk_offer(k, ts[i], b);
+    for (int i = 0; i < n; i++) {
+        if (i < nc) cdk_offer_cs(k, ts[i], tc[i], tsn[i], b);
+        else cdk_offer(k, ts[i], b);
+    }
     return CDIST_OK;
 }
 
-/* Circle c (centre at the origin) to disk d (centre relative to c's). */
-static cdist_status circle_disk_solve(cdist_query *q, cdist_method method, const cdist__circle *c, const cdist__circle *d,
+/* Circle c (centre at the origin) to disk d (centre relative to c's). An FMA clone: the fma()
+ * of the frame, the offers and the dot products are instructions there. */
+CD_FMA_CLONES static cdist_status circle_disk_solve(cdist_query *q, cdist_method method, const cdist__circle *c, const cdist__circle *d,
                                       double dcap, int rim, cdist__best *b, cdist_method *used, int *rim_certified)
 {
     *used = method;
