@@ -250,14 +250,14 @@ static int cdk_scan(const cdk *k, double t1, double a, double b, double *out, in
     double p[2 * 36 + 3], f[2 * 36 + 3];
     int m = 0, jl = 0, jr = 0;
     p[m++] = a;
-    while (jl < 34 && 1e-9 * ldexp(1.0, jl + 1) < t1 - a) jl++;
+    while (jl < 34 && 1e-9 * cdist__pow2(jl + 1) < t1 - a) jl++;
     for (int j = jl; j >= 0; j--)
-        if (t1 - 1e-9 * ldexp(1.0, j) > a) p[m++] = t1 - 1e-9 * ldexp(1.0, j);
+        if (t1 - 1e-9 * cdist__pow2(j) > a) p[m++] = t1 - 1e-9 * cdist__pow2(j);
     int i1 = m;
     p[m++] = t1;
-    while (jr < 34 && 1e-9 * ldexp(1.0, jr + 1) < b - t1) jr++;
+    while (jr < 34 && 1e-9 * cdist__pow2(jr + 1) < b - t1) jr++;
     for (int j = 0; j <= jr; j++)
-        if (t1 + 1e-9 * ldexp(1.0, j) < b) p[m++] = t1 + 1e-9 * ldexp(1.0, j);
+        if (t1 + 1e-9 * cdist__pow2(j) < b) p[m++] = t1 + 1e-9 * cdist__pow2(j);
     p[m++] = b;
     for (int i = 0; i < m; i++) cdk_rim(k, p[i], &f[i], NULL);
     int n = 0;
