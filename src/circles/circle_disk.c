@@ -139,6 +139,25 @@ CD_INLINE void cdk_offer(const cdk *k, double t, cdist__best *b)
     cdk_offer_cs(k, t, cs, sn, b);
 }
 
+/* The plane crossings are refined by Newton steps on z of at most CDK_Z_STEP each (two). */
+#define CDK_Z_STEP 1e-3
+
+/* Whether the plane crossing first estimated at (cs, sn), with height z there, is certainly far
+ * above b's best (CD_CD_FAR_REL) wherever its two Newton steps take it: they move the circle
+ * point by at most 2 CDK_Z_STEP rho (the distance to the disk is 1-Lipschitz), and twice the
+ * far margin covers the plain square root used here for hypot. Its offer would then be dropped
+ * anyway, so the steps and the offer are skipped. */
+CD_INLINE int cdk_crossing_far(const cdk *k, double cs, double sn, double z, const cdist__best *b)
+{
+    if (b->n == 0) return 0;
+    double x = trig1(k->X, cs, sn), y = trig1(k->Y, cs, sn), ex = rim_excess(k, x, y, cs, sn), g = fabs(z);
+    if (ex > 0.0) {
+        double rho = sqrt(x * x + y * y), dr = k->small_circle ? ex / (rho + k->R) : rho - k->R;
+        g = sqrt(dr * dr + z * z);
+    }
+    return g - 2.0 * CDK_Z_STEP * k->rho > sqrt(b->c[0].d2) + 2.0 * CD_CD_FAR_REL * b->scale;
+}
+
 /* Bracketed root of F' in [a, b] with sg F'(a) < 0 < sg F'(b) (sg = 1: a minimum of F, -1: a
  * maximum): Newton steps kept inside the bracket, bisection otherwise. */
 static double cdk_bracket_sg(const cdk *k, double a, double b, double sg, double fa, double fb)
@@ -435,17 +454,28 @@ CD_INLINE cdist_status cdk_solve(cdist_query *q, cdist_method method, const cdk 
         double w = acos(cz);
         for (int s = -1; s <= 1; s += 2) {
             double t = phi + s * w;
-            /* Newton on z itself (two steps) to land on the plane. */
+            /* Newton on z itself (two steps of at most CDK_Z_STEP) to land on the plane. A step
+             * below half an ulp of t leaves t as it was: its cos and sin are reused. */
+            double tl = NAN, sn = 0.0, cs = 0.0; /* the angle of the last sincos */
+            int skip = 0;
             for (int it = 0; it < 2; it++) {
-                double sn, cs;
-                sincos(t, &sn, &cs);
+                if (!(t == tl)) {
+                    sincos(t, &sn, &cs);
+                    tl = t;
+                }
                 double z = trig1(k->Z, cs, sn), zp = trig1d(k->Z, cs, sn);
+                if (it == 0 && cdk_crossing_far(k, cs, sn, z, b)) {
+                    skip = 1;
+                    break;
+                }
                 if (zp == 0.0 || z == 0.0) break;
                 double st = z / zp;
-                if (fabs(st) > 1e-3) break;
+                if (fabs(st) > CDK_Z_STEP) break;
                 t -= st;
             }
-            cdk_offer(k, t, b);
+            if (skip) continue;
+            if (t == tl) cdk_offer_cs(k, t, cs, sn, b);
+            else cdk_offer(k, t, b);
         }
     }
     /* Critical points of the rim distance (not asked for: the caller has them, see
