@@ -438,6 +438,21 @@ static int cdk_parallel(const cdk *k, cdist__best *b)
     return 1;
 }
 
+/* Whether the whole circle is certainly further from the rim than the cap plus CD_CD_FAR_REL * L
+ * (then no minimum of F can be the answer, nor tie with it): the rim distance is at least
+ * sqrt((rho - R)^2 + z^2) with the axis distance rho within e +- m of the centre's (m >= the
+ * circle's largest in-plane radius, the Frobenius norm of its projection) and the height z
+ * within |Z0| -+ amp; the margin covers the rounding of these bounds. */
+CD_INLINE int cdk_rim_far(const cdk *k, double dcap, double scale)
+{
+    if (!(dcap < INFINITY)) return 0;
+    double e = cdist__norm2(k->X[0], k->Y[0]);
+    double m = sqrt(k->X[1] * k->X[1] + k->X[2] * k->X[2] + k->Y[1] * k->Y[1] + k->Y[2] * k->Y[2]);
+    double lr = cdist__fmax(cdist__fmax(e - m - k->R, k->R - e - m), 0.0);
+    double lz = cdist__fmax(fabs(k->Z[0]) - cdist__norm2(k->Z[1], k->Z[2]), 0.0);
+    return sqrt(lr * lr + lz * lz) > dcap + CD_CD_FAR_REL * scale;
+}
+
 CD_INLINE cdist_status cdk_solve(cdist_query *q, cdist_method method, const cdk *k, cdist__best *b, double dcap0, int rim,
                                  cdist_method *used, int *rim_certified)
 {
@@ -497,8 +512,13 @@ CD_INLINE cdist_status cdk_solve(cdist_query *q, cdist_method method, const cdk 
         /* Only the minima of F matter (the lemma), and only those below the best candidate so
          * far (a z candidate, whose distance is the true one): the engine prunes the rest. */
         double dcap = b->n > 0 ? cdist__fmin(dcap0, sqrt(b->c[0].d2)) : dcap0;
-        n = cdist__circle_circle_critical(q, k->c, k->d, dcap, ts, CDK_CAP);
-        *rim_certified = n >= 0 || n == -1;
+        if (cdk_rim_far(k, dcap, scale)) {
+            n = 0;
+            *rim_certified = 1;
+        } else {
+            n = cdist__circle_circle_critical(q, k->c, k->d, dcap, ts, CDK_CAP);
+            *rim_certified = n >= 0 || n == -1;
+        }
         if (n == -1) {
             n = 0; /* F constant: the rim gives no isolated candidate; z candidates rule */
             ts[n++] = 0.0;
