@@ -462,8 +462,11 @@ CD_INLINE cdist_status cdk_solve(cdist_query *q, cdist_method method, const cdk 
     *rim_certified = 0;
     /* Zeros and extremes of the height z(t) = Z0 + amp cos(t - phi). */
     double amp = cdist__norm2(k->Z[1], k->Z[2]), phi = atan2(k->Z[2], k->Z[1]);
-    cdk_offer(k, phi, b);
-    cdk_offer(k, phi + M_PI, b);
+    /* The extremes' cos and sin are (Z1, Z2) / amp and their negatives, as accurate as sincos of
+     * the rounded phi and without it (the angles reported are still phi, phi + pi). */
+    double ce = k->Z[1] / amp, se = k->Z[2] / amp;
+    cdk_offer_cs(k, phi, ce, se, b);
+    cdk_offer_cs(k, phi + M_PI, -ce, -se, b);
     double cz = -k->Z[0] / amp;
     if (fabs(cz) <= 1.0) {
         double w = acos(cz);
