@@ -65,10 +65,11 @@ static inline double cdist__two_prod(double a, double b, double *lo)
 
 #define CD_TWO_PI 6.283185307179586476925286766559
 
-/* Angle t wrapped to (-pi, pi]. */
+/* Angle t wrapped to (-pi, pi]. For |t| <= pi (M_PI is half the double CD_TWO_PI exactly)
+ * remainder returns t itself, so the libm call is only made for the others (the same results). */
 static inline double cdist__wrap_angle(double t)
 {
-    double a = remainder(t, CD_TWO_PI);
+    double a = fabs(t) <= M_PI ? t : remainder(t, CD_TWO_PI);
     return (a <= -M_PI) ? a + CD_TWO_PI : a;
 }
 

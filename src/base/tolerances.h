@@ -130,6 +130,14 @@
  * errs by at most twice that in the distance. */
 #define CD_CC_PARALLEL_ULPS 1.0
 
+/* Circle-disk, scaled units: a candidate whose distance exceeds the best one already collected
+ * by more than CD_CD_FAR_REL * L is not offered (nor are its points and angles formed). It can
+ * never become the best or tie with it, nor merge with a pair that does: pairs merge only within
+ * CD_DISTINCT_REL * L, where their distances differ by at most that much (the distance is
+ * 1-Lipschitz in each point), and ties are within CD_TIE_ULPS * eps * L; four times the
+ * distinctness radius covers both with a wide margin for the rounding of the comparison. */
+#define CD_CD_FAR_REL (4 * CD_DISTINCT_REL)
+
 /* Circle-circle: the robust method offers its candidates with the plain distance (rounding below
  * 8 eps (2 R + |C|) <= 24 eps L) and recomputes in double-double those within the tie tolerance
  * plus CD_CC_SETTLE_ULPS * eps * L of the best: every one that can be reported. */

@@ -6,7 +6,7 @@
 #include "circles/circles-priv.h"
 
 /* Angles where A crosses B's axis (w(t) = 0), the non-smooth points of F. */
-static int axis_crossings(const cdist__cc_frame *f, double *t)
+CD_INLINE int axis_crossings(const cdist__cc_frame *f, double *t)
 {
     /* 2D coordinates in the plane orthogonal to m. */
     vec3 e1, e2;
@@ -45,7 +45,7 @@ static int axis_crossings(const cdist__cc_frame *f, double *t)
     return n;
 }
 
-int cdist__circle_circle_critical(cdist_query *q, const cdist__circle *c0, const cdist__circle *c1, double dcap, double *theta0,
+CD_FMA_CLONES int cdist__circle_circle_critical(cdist_query *q, const cdist__circle *c0, const cdist__circle *c1, double dcap, double *theta0,
                                   int cap)
 {
     (void)q;
@@ -53,9 +53,14 @@ int cdist__circle_circle_critical(cdist_query *q, const cdist__circle *c0, const
     if (c0->r == 0.0) return -1; /* a point: every angle gives the same point */
     vec3 C = v_sub(c1->c, c0->c);
     /* Angles do not change under scaling: work at L ~ 1 (see cc_robust). */
-    int ex;
-    frexp(cdist__fmax(cdist__fmax(c0->r, c1->r), v_norm(C)), &ex);
-    double sc = ldexp(1.0, -ex);
+    double L0 = cdist__fmax(cdist__fmax(c0->r, c1->r), v_norm(C)), sc;
+    if (L0 >= 0x1p-1000 && L0 < 0x1p1000) {
+        sc = cdist__pow2(-(cdist__scale_exponent(L0) + 1)); /* frexp's exponent, without libm */
+    } else {
+        int ex;
+        frexp(L0, &ex);
+        sc = ldexp(1.0, -ex);
+    }
     cdist__circle a = *c0, b = *c1;
     a.c = v3(0, 0, 0);
     a.r *= sc;
@@ -97,8 +102,11 @@ int cdist__circle_circle_critical(cdist_query *q, const cdist__circle *c0, const
     } else if (sqrt(Fmax) - sqrt(k.Fmin) <= tol && (k.count == 0 || sqrt(Fmax) - k.dmin <= tol)) {
         return -1; /* else no count means no minimum up to the cap */
     }
+    /* The axis crossings, in the critical-angle mode only: transversal, F = smooth - 2 s rho has
+     * a concave kink there (its left derivative exceeds its right one), never a minimum; tangent,
+     * F is C^1 and the scan brackets its minima like any other. */
     double tk[2];
-    int nk = c1->r > 0 ? axis_crossings(&f, tk) : 0;
+    int nk = c1->r > 0 && !minima ? axis_crossings(&f, tk) : 0;
     for (int i = 0; i < nk; i++) {
         if (n < cap) theta0[n] = tk[i];
         n++;

@@ -134,11 +134,11 @@ void cdist__circles_result(const cdist__best *best, int swap, int e, vec3 offset
 {
     cdist__best_to_result(best, v3(0, 0, 0), swap, r);
     cdist__result_finish(r, r->num_pairs);
-    /* x * 2^e is ldexp(x, e) (one rounding; 2^e is normal for |e| <= CD_SCALE_MAX_EXP) without
-     * a library call per coordinate; 2 e may be out of that range */
+    /* x * 2^e is x scaled by 2^e correctly rounded, like ldexp, when 2^e is a double (e is
+     * within CD_SCALE_MAX_EXP); 2e may not be */
     double up = cdist__pow2(e);
     r->distance *= up;
-    r->sqr_distance = ldexp(r->sqr_distance, 2 * e);
+    r->sqr_distance = 2 * e >= -1022 && 2 * e <= 1023 ? r->sqr_distance * cdist__pow2(2 * e) : ldexp(r->sqr_distance, 2 * e);
     for (int i = 0; i < r->num_pairs; i++)
         for (int j = 0; j < 2; j++) r->pairs[i].point[j] = v_add(v_scale(up, r->pairs[i].point[j]), offset);
 }

@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* Circle to disk (point-curve-circle-to-disk §2-§4; derivations in docs/disk.md). Disk to disk
- * (disk_disk.c) runs this twice, rim of each against the other disk.
+ * (disk_disk.c) runs this twice, rim of each against the other disk (the second time without
+ * the rim-to-rim minima, which the first has found).
  *
  * The one lemma everything here rests on. Let G(X) be the distance from X to the disk, F(X)
  * the distance to its rim circle and h(X) the signed height over the disk's plane. Then
@@ -36,7 +37,7 @@ typedef struct cdk {
     const cdist__circle *c, *d; /* the circle (centre at the origin) and the disk */
 } cdk;
 
-static void cdk_init(cdk *k, const cdist__circle *c, const cdist__circle *d)
+CD_INLINE void cdk_init(cdk *k, const cdist__circle *c, const cdist__circle *d)
 {
     vec3 D = d->c;
     k->c = c;
@@ -67,8 +68,8 @@ static void cdk_init(cdk *k, const cdist__circle *c, const cdist__circle *d)
     k->S[0] = 0.0; k->S[1] = -r * v_dot(D, c->v); k->S[2] = r * v_dot(D, c->u);
 }
 
-static inline double trig1(const double *a, double cs, double sn) { return fma(a[1], cs, fma(a[2], sn, a[0])); }
-static inline double trig1d(const double *a, double cs, double sn) { return fma(a[2], cs, -a[1] * sn); }
+CD_INLINE double trig1(const double *a, double cs, double sn) { return fma(a[1], cs, fma(a[2], sn, a[0])); }
+CD_INLINE double trig1d(const double *a, double cs, double sn) { return fma(a[2], cs, -a[1] * sn); }
 
 /* Half squared rim distance F = ((rho - R)^2 + z^2) / 2 along the circle: value, F', F''
  * (the ring evaluator; on the disk's axis F has a cusp, a maximum, where F'' is set to 1). */
@@ -96,33 +97,65 @@ static double cdk_rim(const cdk *k, double t, double *f1, double *f2)
  *     x^2 + y^2 - R^2 = E0 + 2 (X0 a + Y0 b) + a^2 + b^2    (a = x - X0, b = y - Y0),
  * the error is eps (R r + r^2) instead. For a circle at least as large as the disk the direct
  * form is the more accurate one (its x, y are small where it matters). */
-static inline double rim_excess(const cdk *k, double x, double y, double cs, double sn)
+CD_INLINE double rim_excess(const cdk *k, double x, double y, double cs, double sn)
 {
     if (!k->small_circle) return fma(x, x, fma(y, y, -k->R * k->R));
     double a = k->X[1] * cs + k->X[2] * sn, b = k->Y[1] * cs + k->Y[2] * sn;
     return k->E0 + (2.0 * (k->X[0] * a + k->Y[0] * b) + (a * a + b * b));
 }
 
-/* Offer the circle point at angle t with its closest disk point (the true point-disk distance). */
-static void cdk_offer(const cdk *k, double t, cdist__best *b)
+/* Offer the circle point at angle t, (cs, sn) = (cos t, sin t), with its closest disk point (the
+ * true point-disk distance); nothing when its distance is far above b's best (CD_CD_FAR_REL). */
+CD_INLINE void cdk_offer_cs(const cdk *k, double t, double cs, double sn, cdist__best *b)
+{
+    double far = b->n > 0 ? sqrt(b->c[0].d2) + CD_CD_FAR_REL * b->scale : INFINITY, far2 = far * far;
+    double x = trig1(k->X, cs, sn), y = trig1(k->Y, cs, sn), z = trig1(k->Z, cs, sn), zz = z * z;
+    if (zz > far2) return; /* the distance is at least |z| */
+    double ex = rim_excess(k, x, y, cs, sn);
+    double d2, rho = 0.0;
+    if (ex <= 0.0) {
+        d2 = zz;
+    } else {
+        rho = hypot(x, y);
+        double dr = k->small_circle ? ex / (rho + k->R) : rho - k->R;
+        d2 = fma(dr, dr, zz);
+    }
+    if (d2 > far2) return;
+    vec3 P = v_axpy(v_scale(k->rho * cs, k->A), k->rho * sn, k->B);
+    vec3 K;
+    if (ex <= 0.0) {
+        K = v_axpy(P, -z, k->n); /* the projection onto the plane */
+    } else {
+        double s = k->R / rho;
+        K = v_axpy(v_axpy(k->D, s * x, k->u), s * y, k->v);
+    }
+    cdist__best_offer(b, d2, P, K, k->rho > 0.0 ? cdist__wrap_angle(t) : NAN, cdist__polar_angle(x, y));
+}
+
+CD_INLINE void cdk_offer(const cdk *k, double t, cdist__best *b)
 {
     double sn, cs;
     sincos(t, &sn, &cs);
-    double x = trig1(k->X, cs, sn), y = trig1(k->Y, cs, sn), z = trig1(k->Z, cs, sn);
-    vec3 P = v_axpy(v_scale(k->rho * cs, k->A), k->rho * sn, k->B);
-    double ex = rim_excess(k, x, y, cs, sn);
-    vec3 K;
-    double d2;
-    if (ex <= 0.0) {
-        K = v_axpy(P, -z, k->n); /* the projection onto the plane */
-        d2 = z * z;
-    } else {
-        double rho = hypot(x, y), s = k->R / rho;
-        K = v_axpy(v_axpy(k->D, s * x, k->u), s * y, k->v);
-        double dr = k->small_circle ? ex / (rho + k->R) : rho - k->R;
-        d2 = fma(dr, dr, z * z);
+    cdk_offer_cs(k, t, cs, sn, b);
+}
+
+/* The plane crossings are refined by Newton steps on z of at most CDK_Z_STEP each (two). */
+#define CDK_Z_STEP 1e-3
+
+/* Whether the plane crossing first estimated at (cs, sn), with height z there, is certainly far
+ * above b's best (CD_CD_FAR_REL) wherever its two Newton steps take it: they move the circle
+ * point by at most 2 CDK_Z_STEP rho (the distance to the disk is 1-Lipschitz), and twice the
+ * far margin covers the plain square root used here for hypot. Its offer would then be dropped
+ * anyway, so the steps and the offer are skipped. */
+CD_INLINE int cdk_crossing_far(const cdk *k, double cs, double sn, double z, const cdist__best *b)
+{
+    if (b->n == 0) return 0;
+    double x = trig1(k->X, cs, sn), y = trig1(k->Y, cs, sn), ex = rim_excess(k, x, y, cs, sn), g = fabs(z);
+    if (ex > 0.0) {
+        double rho = sqrt(x * x + y * y), dr = k->small_circle ? ex / (rho + k->R) : rho - k->R;
+        g = sqrt(dr * dr + z * z);
     }
-    cdist__best_offer(b, d2, P, K, k->rho > 0.0 ? cdist__wrap_angle(t) : NAN, cdist__polar_angle(x, y));
+    return g - 2.0 * CDK_Z_STEP * k->rho > sqrt(b->c[0].d2) + 2.0 * CD_CD_FAR_REL * b->scale;
 }
 
 /* Bracketed root of F' in [a, b] with sg F'(a) < 0 < sg F'(b) (sg = 1: a minimum of F, -1: a
@@ -236,14 +269,14 @@ static int cdk_scan(const cdk *k, double t1, double a, double b, double *out, in
     double p[2 * 36 + 3], f[2 * 36 + 3];
     int m = 0, jl = 0, jr = 0;
     p[m++] = a;
-    while (jl < 34 && 1e-9 * ldexp(1.0, jl + 1) < t1 - a) jl++;
+    while (jl < 34 && 1e-9 * cdist__pow2(jl + 1) < t1 - a) jl++;
     for (int j = jl; j >= 0; j--)
-        if (t1 - 1e-9 * ldexp(1.0, j) > a) p[m++] = t1 - 1e-9 * ldexp(1.0, j);
+        if (t1 - 1e-9 * cdist__pow2(j) > a) p[m++] = t1 - 1e-9 * cdist__pow2(j);
     int i1 = m;
     p[m++] = t1;
-    while (jr < 34 && 1e-9 * ldexp(1.0, jr + 1) < b - t1) jr++;
+    while (jr < 34 && 1e-9 * cdist__pow2(jr + 1) < b - t1) jr++;
     for (int j = 0; j <= jr; j++)
-        if (t1 + 1e-9 * ldexp(1.0, j) < b) p[m++] = t1 + 1e-9 * ldexp(1.0, j);
+        if (t1 + 1e-9 * cdist__pow2(j) < b) p[m++] = t1 + 1e-9 * cdist__pow2(j);
     p[m++] = b;
     for (int i = 0; i < m; i++) cdk_rim(k, p[i], &f[i], NULL);
     int n = 0;
@@ -405,34 +438,69 @@ static int cdk_parallel(const cdk *k, cdist__best *b)
     return 1;
 }
 
-static cdist_status cdk_solve(cdist_query *q, cdist_method method, const cdk *k, cdist__best *b, double dcap0, cdist_method *used)
+/* Whether the whole circle is certainly further from the rim than the cap plus CD_CD_FAR_REL * L
+ * (then no minimum of F can be the answer, nor tie with it): the rim distance is at least
+ * sqrt((rho - R)^2 + z^2) with the axis distance rho within e +- m of the centre's (m >= the
+ * circle's largest in-plane radius, the Frobenius norm of its projection) and the height z
+ * within |Z0| -+ amp; the margin covers the rounding of these bounds. */
+CD_INLINE int cdk_rim_far(const cdk *k, double dcap, double scale)
+{
+    if (!(dcap < INFINITY)) return 0;
+    double e = cdist__norm2(k->X[0], k->Y[0]);
+    double m = sqrt(k->X[1] * k->X[1] + k->X[2] * k->X[2] + k->Y[1] * k->Y[1] + k->Y[2] * k->Y[2]);
+    double lr = cdist__fmax(cdist__fmax(e - m - k->R, k->R - e - m), 0.0);
+    double lz = cdist__fmax(fabs(k->Z[0]) - cdist__norm2(k->Z[1], k->Z[2]), 0.0);
+    return sqrt(lr * lr + lz * lz) > dcap + CD_CD_FAR_REL * scale;
+}
+
+CD_INLINE cdist_status cdk_solve(cdist_query *q, cdist_method method, const cdk *k, cdist__best *b, double dcap0, int rim,
+                                 cdist_method *used, int *rim_certified)
 {
     *used = method;
+    *rim_certified = 1; /* the parallel closed forms */
     if (cdk_parallel(k, b)) return CDIST_OK;
+    *rim_certified = 0;
     /* Zeros and extremes of the height z(t) = Z0 + amp cos(t - phi). */
     double amp = cdist__norm2(k->Z[1], k->Z[2]), phi = atan2(k->Z[2], k->Z[1]);
-    cdk_offer(k, phi, b);
-    cdk_offer(k, phi + M_PI, b);
+    /* The extremes' cos and sin are (Z1, Z2) / amp and their negatives, as accurate as sincos of
+     * the rounded phi and without it (the angles reported are still phi, phi + pi). */
+    double ce = k->Z[1] / amp, se = k->Z[2] / amp;
+    cdk_offer_cs(k, phi, ce, se, b);
+    cdk_offer_cs(k, phi + M_PI, -ce, -se, b);
     double cz = -k->Z[0] / amp;
     if (fabs(cz) <= 1.0) {
         double w = acos(cz);
         for (int s = -1; s <= 1; s += 2) {
             double t = phi + s * w;
-            /* Newton on z itself (two steps) to land on the plane. */
+            /* Newton on z itself (two steps of at most CDK_Z_STEP) to land on the plane. A step
+             * below half an ulp of t leaves t as it was: its cos and sin are reused. */
+            double tl = NAN, sn = 0.0, cs = 0.0; /* the angle of the last sincos */
+            int skip = 0;
             for (int it = 0; it < 2; it++) {
-                double sn, cs;
-                sincos(t, &sn, &cs);
+                if (!(t == tl)) {
+                    sincos(t, &sn, &cs);
+                    tl = t;
+                }
                 double z = trig1(k->Z, cs, sn), zp = trig1d(k->Z, cs, sn);
+                if (it == 0 && cdk_crossing_far(k, cs, sn, z, b)) {
+                    skip = 1;
+                    break;
+                }
                 if (zp == 0.0 || z == 0.0) break;
                 double st = z / zp;
-                if (fabs(st) > 1e-3) break;
+                if (fabs(st) > CDK_Z_STEP) break;
                 t -= st;
             }
-            cdk_offer(k, t, b);
+            if (skip) continue;
+            if (t == tl) cdk_offer_cs(k, t, cs, sn, b);
+            else cdk_offer(k, t, b);
         }
     }
-    /* Critical points of the rim distance. */
-    double ts[CDK_CAP];
+    /* Critical points of the rim distance (not asked for: the caller has them, see
+     * cdist__circle_disk_core_ex). */
+    if (!rim) return CDIST_OK;
+    double ts[CDK_CAP], tc[CDK_CAP], tsn[CDK_CAP]; /* angles, and cos, sin of the first nc of them */
+    int nc = 0;
     double scale = cdist__fmax(cdist__fmax(k->rho, k->R), sqrt(k->X[0] * k->X[0] + k->Y[0] * k->Y[0] + k->Z[0] * k->Z[0]));
     int n = -2;
     if (method == CDIST_METHOD_POLYNOMIAL) {
@@ -447,37 +515,51 @@ static cdist_status cdk_solve(cdist_query *q, cdist_method method, const cdk *k,
         /* Only the minima of F matter (the lemma), and only those below the best candidate so
          * far (a z candidate, whose distance is the true one): the engine prunes the rest. */
         double dcap = b->n > 0 ? cdist__fmin(dcap0, sqrt(b->c[0].d2)) : dcap0;
-        n = cdist__circle_circle_critical(q, k->c, k->d, dcap, ts, CDK_CAP);
+        if (cdk_rim_far(k, dcap, scale)) {
+            n = 0;
+            *rim_certified = 1;
+        } else {
+            n = cdist__circle_circle_critical(q, k->c, k->d, dcap, ts, CDK_CAP);
+            *rim_certified = n >= 0 || n == -1;
+        }
         if (n == -1) {
             n = 0; /* F constant: the rim gives no isolated candidate; z candidates rule */
             ts[n++] = 0.0;
         } else if (n == 0 && dcap < INFINITY) {
             /* no minimum of F below the cap: the z candidates rule */
         } else if (n <= 0) {
+            *rim_certified = 0; /* the sampling fallback */
             n = cdk_robust_critical(k, ts, CDK_CAP, scale);
         } else {
             /* Flat minima near the best: a neighbour of a cluster below the certification width
              * (multiple roots) is looked for by the dyadic scan. */
             double Fv[CDK_CAP], f2v[CDK_CAP], Fbest = INFINITY, flat = CDK_FLAT * k->rho * scale;
             for (int i = 0; i < n; i++) {
-                Fv[i] = cdk_rim(k, ts[i], NULL, &f2v[i]);
+                sincos(ts[i], &tsn[i], &tc[i]);
+                Fv[i] = cdk_rim_cs(k, tc[i], tsn[i], NULL, &f2v[i]);
                 Fbest = cdist__fmin(Fbest, Fv[i]);
             }
+            nc = n;
             int n0 = n;
             for (int i = 0; i < n0 && n < CDK_CAP; i++)
                 if (Fv[i] <= Fbest + 0.01 * scale * scale && fabs(f2v[i]) <= flat)
                     n += cdk_scan(k, ts[i], ts[i] - 0.15, ts[i] + 0.15, ts + n, CDK_CAP - n);
         }
     }
-    for (int i = 0; i < n; i++) cdk_offer(k, ts[i], b);
+    for (int i = 0; i < n; i++) {
+        if (i < nc) cdk_offer_cs(k, ts[i], tc[i], tsn[i], b);
+        else cdk_offer(k, ts[i], b);
+    }
     return CDIST_OK;
 }
 
-/* Circle c (centre at the origin) to disk d (centre relative to c's). */
-static cdist_status circle_disk_solve(cdist_query *q, cdist_method method, const cdist__circle *c, const cdist__circle *d,
-                                      double dcap, cdist__best *b, cdist_method *used)
+/* Circle c (centre at the origin) to disk d (centre relative to c's). An FMA clone: the fma()
+ * of the frame, the offers and the dot products are instructions there. */
+CD_FMA_CLONES static cdist_status circle_disk_solve(cdist_query *q, cdist_method method, const cdist__circle *c, const cdist__circle *d,
+                                      double dcap, int rim, cdist__best *b, cdist_method *used, int *rim_certified)
 {
     *used = method;
+    *rim_certified = 1; /* the closed forms below */
     if (c->r == 0.0) {
         /* The circle is its centre (the origin): point to disk, points relative to d's centre. */
         cdist__best t;
@@ -495,20 +577,22 @@ static cdist_status circle_disk_solve(cdist_query *q, cdist_method method, const
     }
     cdk k;
     cdk_init(&k, c, d);
-    return cdk_solve(q, method, &k, b, dcap, used);
+    return cdk_solve(q, method, &k, b, dcap, rim, used, rim_certified);
 }
 
 /* Solved into a fresh collector, then merged into b: b may already hold other candidates (a
  * caller combining several objects), and an equidistant set here only makes b equidistant when
  * it attains b's minimum. */
 cdist_status cdist__circle_disk_core_ex(cdist_query *q, cdist_method method, const cdist__circle *c, const cdist__circle *d,
-                                     double dcap, cdist__best *b, cdist_method *used)
+                                     double dcap, int rim, cdist__best *b, cdist_method *used, int *rim_certified)
 {
+    int cert_dummy;
+    if (!rim_certified) rim_certified = &cert_dummy;
     cdist__best t;
     cdist__best_init(&t, b->scale);
     /* b's best so far is attained too: no minimum above it can be the answer */
     if (b->n > 0) dcap = cdist__fmin(dcap, sqrt(b->c[0].d2));
-    cdist_status st = circle_disk_solve(q, method, c, d, dcap, &t, used);
+    cdist_status st = circle_disk_solve(q, method, c, d, dcap, rim, &t, used, rim_certified);
     if (st) return st;
     double d2 = cdist__best_merge(b, &t, v3(0, 0, 0), 0);
     if (cdist__best_is_equidistant(&t)) cdist__best_settle_equidistant(b, d2);
@@ -521,7 +605,7 @@ static cdist_status circle_disk_query(cdist_query *q, cdist__circle a, cdist__ci
     vec3 offset;
     cdist__best best;
     int ex = cdist__circles_frame(&a, &e, &offset, &best);
-    cdist_status st = cdist__circle_disk_core_ex(q, cdist__family_method(q, CD_FAM_CIRCLE_DISK), &a, &e, INFINITY, &best, used);
+    cdist_status st = cdist__circle_disk_core_ex(q, cdist__family_method(q, CD_FAM_CIRCLE_DISK), &a, &e, INFINITY, 1, &best, used, NULL);
     if (st) return st;
     if (best.n == 0) return cdist__fail(q, CDIST_ERR_INTERNAL, "circle-disk found no candidate");
     cdist__circles_result(&best, 0, ex, offset, r);

@@ -147,9 +147,13 @@ cdist_status cdist__cc_robust(cdist_query *q, const cdist__circle *c0, const cdi
 /* Circle c (centre at the origin) to disk d, solved into a fresh collector and merged into b
  * (an equidistant sub-result makes b equidistant only where it attains b's minimum); dcap: a
  * distance attained elsewhere (INFINITY: none), like b's best: minima of the rim distance above
- * it cannot be the answer and are pruned. *used: the method that answered. */
+ * it cannot be the answer and are pruned. rim = 0 leaves out the minima of the distance from c
+ * to d's rim (the candidates over d's face and the parallel closed forms remain): disk-disk,
+ * whose other half has found them already. *used: the method that answered; *rim_certified
+ * (may be NULL): the rim minima were found by a certified search or a closed form (not the
+ * sampling fallback). */
 cdist_status cdist__circle_disk_core_ex(cdist_query *q, cdist_method method, const cdist__circle *c, const cdist__circle *d,
-                                        double dcap, cdist__best *b, cdist_method *used);
+                                        double dcap, int rim, cdist__best *b, cdist_method *used, int *rim_certified);
 #define CD_DISK_METHODS (CD_HAS(CDIST_METHOD_POLYNOMIAL) | CD_HAS(CDIST_METHOD_ROBUST))
 #define CD_DISK_AUTO CDIST_METHOD_ROBUST
 

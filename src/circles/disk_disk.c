@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 /* Disk to disk: the rim of each disk against the other disk (circle_disk.c); by the lemma of
  * circle_disk.c the closest pair has a rim point on at least one side, or the faces are
- * parallel and over each other (flagged equidistant). */
+ * parallel and over each other (flagged equidistant). The rim-to-rim minima are searched once,
+ * in the first half (see dd_query). */
 #include <math.h>
 
 #include "circles/circles-priv.h"
@@ -35,13 +36,21 @@ static cdist_status dd_query(cdist_query *q, cdist__circle a, cdist__circle e, i
     cdist__best b0, b1;
     cdist__best_init(&b0, best.scale);
     cdist__best_init(&b1, best.scale);
-    if ((st = cdist__circle_disk_core_ex(q, m, &a, &e, INFINITY, &b0, &used0))) return st;
+    int rim_certified;
+    if ((st = cdist__circle_disk_core_ex(q, m, &a, &e, INFINITY, 1, &b0, &used0, &rim_certified))) return st;
     cdist__circle a1 = a, e1 = e;
     a1.c = v_neg(e.c);
     e1.c = v3(0, 0, 0);
     /* the first answer caps the second search (its minima above it cannot win) */
     double cap0 = b0.n > 0 ? sqrt(b0.c[0].d2) : INFINITY;
-    if ((st = cdist__circle_disk_core_ex(q, m, &e1, &a1, cap0, &b1, &used1))) return st;
+    /* The second half needs no minima of the distance from e's rim to a's rim: they are at least
+     * the rim-to-rim distance, the minimum of the first half's rim function, which is at least
+     * the first answer. A pair of rims at the global minimum d is also a global minimum of the
+     * first half (a's rim point is then d from e's disk, and its closest point there, unique on
+     * a convex set, is that rim point of e), so the first half reports it, ties included, when
+     * its rim minima are certified (not the sampling fallback). Only e's rim over a's face and
+     * the parallel closed forms are left. */
+    if ((st = cdist__circle_disk_core_ex(q, m, &e1, &a1, cap0, !rim_certified, &b1, &used1, NULL))) return st;
     double d0sq = cdist__best_merge(&best, &b0, v3(0, 0, 0), 0);
     double d1sq = cdist__best_merge(&best, &b1, e.c, 1);
     if (best.n == 0) return cdist__fail(q, CDIST_ERR_INTERNAL, "disk-disk found no candidate");
