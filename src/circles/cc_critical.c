@@ -45,14 +45,11 @@ CD_INLINE int axis_crossings(const cdist__cc_frame *f, double *t)
     return n;
 }
 
-CD_FMA_CLONES int cdist__circle_circle_critical(cdist_query *q, const cdist__circle *c0, const cdist__circle *c1, double dcap, double *theta0,
-                                  int cap)
+/* c0 at the origin and c1 relative to it, scaled by a power of two (returned) to L in
+ * [0.5, 1): angles do not change under scaling (see cc_robust). */
+CD_INLINE double scaled_pair(const cdist__circle *c0, const cdist__circle *c1, cdist__circle *a, cdist__circle *b)
 {
-    (void)q;
-    if (cap < 0) cap = 0;
-    if (c0->r == 0.0) return -1; /* a point: every angle gives the same point */
     vec3 C = v_sub(c1->c, c0->c);
-    /* Angles do not change under scaling: work at L ~ 1 (see cc_robust). */
     double L0 = cdist__fmax(cdist__fmax(c0->r, c1->r), v_norm(C)), sc;
     if (L0 >= 0x1p-1000 && L0 < 0x1p1000) {
         sc = cdist__pow2(-(cdist__scale_exponent(L0) + 1)); /* frexp's exponent, without libm */
@@ -61,14 +58,41 @@ CD_FMA_CLONES int cdist__circle_circle_critical(cdist_query *q, const cdist__cir
         frexp(L0, &ex);
         sc = ldexp(1.0, -ex);
     }
-    cdist__circle a = *c0, b = *c1;
-    a.c = v3(0, 0, 0);
-    a.r *= sc;
-    b.c = v_scale(sc, C);
-    b.r *= sc;
+    *a = *c0;
+    *b = *c1;
+    a->c = v3(0, 0, 0);
+    a->r *= sc;
+    b->c = v_scale(sc, C);
+    b->r *= sc;
+    return sc;
+}
+
+CD_FMA_CLONES int cdist__cc_quick_minimum(const cdist__circle *c0, const cdist__circle *c1, double *t, double *c, double *s,
+                                          double *d)
+{
+    if (c0->r == 0.0 || c1->r == 0.0) return 0;
+    cdist__circle a, b;
+    double sc = scaled_pair(c0, c1, &a, &b), tp[4];
+    cdist__cc_frame f;
+    cdist__cc_frame_ring(&f, &a, b.c, &b);
+    if (cdist__cc_parallel_critical(&f, tp) >= 0 || !cdist__cc_quick_worth(&f) || !cdist__cc_quick(&f, t, c, s))
+        return 0;
+    *t = cdist__cc_param(*t);
+    *d = sqrt(cdist__cc_point_d2(&f.rg, f.s, *c, *s)) / sc;
+    return 1;
+}
+
+CD_FMA_CLONES int cdist__circle_circle_critical(cdist_query *q, const cdist__circle *c0, const cdist__circle *c1, double dcap, double *theta0,
+                                  int cap)
+{
+    (void)q;
+    if (cap < 0) cap = 0;
+    if (c0->r == 0.0) return -1; /* a point: every angle gives the same point */
+    cdist__circle a, b;
+    double sc = scaled_pair(c0, c1, &a, &b);
     c0 = &a;
     c1 = &b;
-    C = b.c;
+    vec3 C = b.c;
     cdist__cc_frame f;
     cdist__cc_frame_init(&f, c0, C, c1);
     /* Minima mode: the scan prunes against dmin, seeded with the cap (in the scaled units). */

@@ -43,17 +43,6 @@ CD_FMA_CLONES int cdist__cc_prepare(const cdist__circle *c0, const cdist__circle
     return 1;
 }
 
-/* Whether the certified search (cdist__cc_quick) is worth trying (tolerances.h): not when B's
- * centre lies within CD_CC_QUICK_CENTRE_REL * s of A (with e = |C| in A's plane the squared
- * distance from C to A is (e - R)^2 + (|C|^2 - e^2)), nor when a centre lies on the other
- * circle's axis (e = |C x n_A| or |ga| = |m x C| within CD_CC_QUICK_AXIS_REL * L). */
-static int quick_worth_trying(const cdist__cc_frame *f)
-{
-    double e2 = f->Cu * f->Cu + f->Cv * f->Cv, dr = sqrt(e2) - f->R, lim = CD_CC_QUICK_CENTRE_REL * f->s;
-    double axis = CD_CC_QUICK_AXIS_REL * f->L;
-    if (dr * dr + (cdist__cc_dot3(f->C, f->C) - e2) <= lim * lim) return 0;
-    return e2 > axis * axis && f->nga > axis;
-}
 
 /* The robust method (see the header comment). */
 cdist_status cdist__cc_robust(cdist_query *q, const cdist__circle *c0, const cdist__circle *c1, cdist__best *b)
@@ -91,7 +80,7 @@ cdist_status cdist__cc_robust(cdist_query *q, const cdist__circle *c0, const cdi
                  .dmin = INFINITY, .rho_min = INFINITY};
     double Fmax, tp[4], tq, cq, sq;
     int np = cdist__cc_parallel_critical(&f, tp);
-    if (np < 0 && quick_worth_trying(&f) && cdist__cc_quick(&f, &tq, &cq, &sq)) {
+    if (np < 0 && cdist__cc_quick_worth(&f) && cdist__cc_quick(&f, &tq, &cq, &sq)) {
         /* One certified minimum, not tiny: its pair, unless its point on A is so close to B's
          * axis that the answer is an equidistant set (the scan's equidistance test (b) below),
          * which the scan reports. */

@@ -17,6 +17,7 @@
  * G is a minimum of F). Every candidate is evaluated with the TRUE point-disk distance G, so a
  * spurious candidate can never make the answer too small. */
 #include <math.h>
+#include <pthread.h>
 #include <string.h>
 
 #include "circles/circles-priv.h"
@@ -264,21 +265,44 @@ static double cdk_descend(const cdk *k, double t, double h0)
  * narrower than the sampling): F' at t1 -+ 1e-9 2^j covers every dyadic shell around t1, so the
  * sign change of a neighbour at distance >= 2e-9 is seen (closer ones differ from F(t1) by
  * ~1e-36 of scale^2). Every - to + change away from t1 is bracketed and solved. */
+/* cos and sin of the shells' offsets 1e-9 2^j, j < 36 (cdk_scan), computed once */
+static struct {
+    double c[36], s[36];
+} cdk_shell;
+static pthread_once_t cdk_shell_once = PTHREAD_ONCE_INIT;
+static void cdk_shell_init(void)
+{
+    for (int j = 0; j < 36; j++) sincos(1e-9 * cdist__pow2(j), &cdk_shell.s[j], &cdk_shell.c[j]);
+}
+
 static int cdk_scan(const cdk *k, double t1, double a, double b, double *out, int cap)
 {
     double p[2 * 36 + 3], f[2 * 36 + 3];
     int m = 0, jl = 0, jr = 0;
+    pthread_once(&cdk_shell_once, cdk_shell_init);
+    /* F' at the shells from cos and sin of t1 by rotation (exact to rounding, one sincos
+     * instead of one per point: this scan was most of a flat query's time) */
+    double c1, s1;
+    sincos(t1, &s1, &c1);
     p[m++] = a;
+    cdk_rim(k, a, &f[0], NULL);
     while (jl < 34 && 1e-9 * cdist__pow2(jl + 1) < t1 - a) jl++;
     for (int j = jl; j >= 0; j--)
-        if (t1 - 1e-9 * cdist__pow2(j) > a) p[m++] = t1 - 1e-9 * cdist__pow2(j);
+        if (t1 - 1e-9 * cdist__pow2(j) > a) {
+            cdk_rim_cs(k, c1 * cdk_shell.c[j] + s1 * cdk_shell.s[j], s1 * cdk_shell.c[j] - c1 * cdk_shell.s[j], &f[m], NULL);
+            p[m++] = t1 - 1e-9 * cdist__pow2(j);
+        }
     int i1 = m;
+    cdk_rim_cs(k, c1, s1, &f[m], NULL);
     p[m++] = t1;
     while (jr < 34 && 1e-9 * cdist__pow2(jr + 1) < b - t1) jr++;
     for (int j = 0; j <= jr; j++)
-        if (t1 + 1e-9 * cdist__pow2(j) < b) p[m++] = t1 + 1e-9 * cdist__pow2(j);
+        if (t1 + 1e-9 * cdist__pow2(j) < b) {
+            cdk_rim_cs(k, c1 * cdk_shell.c[j] - s1 * cdk_shell.s[j], s1 * cdk_shell.c[j] + c1 * cdk_shell.s[j], &f[m], NULL);
+            p[m++] = t1 + 1e-9 * cdist__pow2(j);
+        }
+    cdk_rim(k, b, &f[m], NULL);
     p[m++] = b;
-    for (int i = 0; i < m; i++) cdk_rim(k, p[i], &f[i], NULL);
     int n = 0;
     for (int i = 0; i + 1 < m && n < cap; i++) {
         if (i == i1 - 1 || i == i1) continue; /* the brackets touching t1 hold t1 itself */
@@ -514,10 +538,22 @@ CD_INLINE cdist_status cdk_solve(cdist_query *q, cdist_method method, const cdk 
         *used = CDIST_METHOD_ROBUST;
         /* Only the minima of F matter (the lemma), and only those below the best candidate so
          * far (a z candidate, whose distance is the true one): the engine prunes the rest. */
-        double dcap = b->n > 0 ? cdist__fmin(dcap0, sqrt(b->c[0].d2)) : dcap0;
+        double dcap = b->n > 0 ? cdist__fmin(dcap0, sqrt(b->c[0].d2)) : dcap0, tq, cq, sq, dq;
         if (cdk_rim_far(k, dcap, scale)) {
             n = 0;
             *rim_certified = 1;
+        } else if (cdist__cc_quick_minimum(k->c, k->d, &tq, &cq, &sq, &dq)) {
+            /* F's global minimum, certified unique: the one minimum of F that can hold G's (a
+             * minimum of G on the rim side is a global minimum of F, by the lemma, since
+             * G <= F); the others lie above it by the certificate's margin */
+            *rim_certified = 1;
+            n = 0;
+            if (dq <= dcap) {
+                ts[0] = tq;
+                tc[0] = cq;
+                tsn[0] = sq;
+                n = nc = 1;
+            }
         } else {
             n = cdist__circle_circle_critical(q, k->c, k->d, dcap, ts, CDK_CAP);
             *rim_certified = n >= 0 || n == -1;

@@ -113,6 +113,23 @@ void cdist__cc_frame_bounds(cdist__cc_frame *f);
  * CD_CCK_CERT_MARGIN farther in F) and the distance is not tiny (>= sqrt(CD_CCK_MIN_F)); else
  * 0 (then cdist__cc_scan decides). */
 int cdist__cc_quick(const cdist__cc_frame *f, double *t, double *c, double *s);
+/* Whether the certified search (cdist__cc_quick) is worth trying (tolerances.h): not when B's
+ * centre lies within CD_CC_QUICK_CENTRE_REL * s of A (with e = |C| in A's plane the squared
+ * distance from C to A is (e - R)^2 + (|C|^2 - e^2)), nor when a centre lies on the other
+ * circle's axis (e = |C x n_A| or |ga| = |m x C| within CD_CC_QUICK_AXIS_REL * L). */
+static inline int cdist__cc_quick_worth(const cdist__cc_frame *f)
+{
+    double e2 = f->Cu * f->Cu + f->Cv * f->Cv, dr = sqrt(e2) - f->R, lim = CD_CC_QUICK_CENTRE_REL * f->s;
+    double axis = CD_CC_QUICK_AXIS_REL * f->L;
+    if (dr * dr + (cdist__cc_dot3(f->C, f->C) - e2) <= lim * lim) return 0;
+    return e2 > axis * axis && f->nga > axis;
+}
+
+/* The same search for circles c0 (parameterised) and c1 as given (no choice of the larger, any
+ * centres): 1, the angle *t on c0 (in (-pi, pi]) of the certified unique closest point to c1,
+ * its cosine *c and sine *s and the distance *d there; 0 when not certified (or a radius is 0,
+ * or the planes are parallel). For circle-disk, whose rim needs only F's global minimum. */
+int cdist__cc_quick_minimum(const cdist__circle *c0, const cdist__circle *c1, double *t, double *c, double *s, double *d);
 /* Walks [-pi, pi) and hands every critical bracket of F to the sink (see cc_engine.c). Fmax:
  * largest F seen at the partition points. */
 int cdist__cc_scan(const cdist__cc_frame *f, cdist__cc_sink *k, double *Fmax);
