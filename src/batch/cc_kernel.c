@@ -2,6 +2,10 @@
 /* Distance kernel of circle-circle for cdist_batch_distance: a certified search of the robust
  * method's F (src/circles/cc_engine.c) in 8 lanes (AVX-512), 4 lanes (AVX2) or 1, one entry per
  * lane, and the distance recomputed at the angle found by the robust method's own formula.
+ * The same search answers the single query first (cdist__cc_quick, ck_quick in
+ * cc_kernel_body.h): one entry, its grid, zoom points and hull points spread over the lanes,
+ * with the same steps and certificate (and so, on the AVX-512 variant, the same angle and
+ * distance as the kernel, bit for bit, on cc_random).
  *
  * Per lane group, the set-up: the single query's validation (the fast path of
  * cdist__check_circle), framing (cdist__circles_frame), problem (cdist__cc_prepare: A the
