@@ -193,7 +193,8 @@ CD_FMA_CLONES static cdist_status linear_disk_query(cdist_query *q, vec3 origin,
 }
 
 /* Line or ray: validate, frame and scale (as in line_circle.c's run_scaled), core, result. */
-static cdist_status line_ray_disk(cdist_query *q, const void *obj, const cdist_vec3 *origin, const cdist_vec3 *dir,
+/* FMA clone: as line_circle.c's linear_public (the inlined basis is a chain of fma() calls). */
+CD_FMA_CLONES static cdist_status line_ray_disk(cdist_query *q, const void *obj, const cdist_vec3 *origin, const cdist_vec3 *dir,
                                   int is_ray, const cdist_circle *d, cdist_result *r)
 {
     cdist_status st = cdist__enter(q, r);
