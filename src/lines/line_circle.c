@@ -533,7 +533,7 @@ CD_FMA_CLONES static cdist_status run(cdist_query *q, vec3 origin, vec3 D, vec3 
 /* Frame and scale: the whole query scaled by 2^-e (exact) so that max(r, |origin - C|) is in
  * [1, 2); the parameter t is unchanged (D is scaled with the origin), the
  * distances and points are scaled back exactly. Inputs already validated. */
-static cdist_status run_scaled(cdist_query *q, vec3 origin, vec3 D, vec3 M, double len, double tmin, double tmax,
+CD_INLINE cdist_status run_scaled(cdist_query *q, vec3 origin, vec3 D, vec3 M, double len, double tmin, double tmax,
                                cdist__circle cc, cdist_result *r, cdist_method *used)
 {
     int e = cdist__lines_scale_exponent(origin, NULL, &cc);
@@ -564,7 +564,9 @@ cdist_status cdist__check_segment(cdist_query *q, const cdist_segment *s)
     return cdist__check_point(q, &s->p1, "segment p1");
 }
 
-static cdist_status linear_public(cdist_query *q, const cdist_vec3 *origin, const cdist_vec3 *dir, const void *obj,
+/* FMA clone: the circle's basis (v_basis) inlined here is a chain of fma() calls, which outside
+ * a clone are calls to the C library's fma (same results, slower). */
+CD_FMA_CLONES static cdist_status linear_public(cdist_query *q, const cdist_vec3 *origin, const cdist_vec3 *dir, const void *obj,
                                   int is_ray, double tmin, double tmax, const cdist_circle *c, cdist_result *r)
 {
     cdist_status st = cdist__enter(q, r);
@@ -573,8 +575,13 @@ static cdist_status linear_public(cdist_query *q, const cdist_vec3 *origin, cons
     vec3 M;
     double len;
     cdist_method used = CDIST_METHOD_ROBUST;
+    /* The circle's normal and basis (two divisions and a square root each) are the longest
+     * chain before the core: started first. The fast check has no side effects; a circle it
+     * does not accept is checked, and reported, after the line as before. */
+    int fast = c && cdist__circle_fast(q->unit_tol, c, &cc);
+    if (fast) cdist__frame_basis(&cc);
     if (!(st = cdist__check_line_ray(q, obj, origin, dir, is_ray, &M, &len)) &&
-        !(st = cdist__check_circle(q, c, "circle", &cc))) {
+        (fast || !(st = cdist__check_circle(q, c, "circle", &cc)))) {
         /* t is reported for the direction as passed */
         st = run_scaled(q, *origin, *dir, M, len, tmin, tmax, cc, r, &used);
     }

@@ -193,7 +193,8 @@ CD_FMA_CLONES static cdist_status linear_disk_query(cdist_query *q, vec3 origin,
 }
 
 /* Line or ray: validate, frame and scale (as in line_circle.c's run_scaled), core, result. */
-static cdist_status line_ray_disk(cdist_query *q, const void *obj, const cdist_vec3 *origin, const cdist_vec3 *dir,
+/* FMA clone: as line_circle.c's linear_public (the inlined basis is a chain of fma() calls). */
+CD_FMA_CLONES static cdist_status line_ray_disk(cdist_query *q, const void *obj, const cdist_vec3 *origin, const cdist_vec3 *dir,
                                   int is_ray, const cdist_circle *d, cdist_result *r)
 {
     cdist_status st = cdist__enter(q, r);
@@ -202,8 +203,11 @@ static cdist_status line_ray_disk(cdist_query *q, const void *obj, const cdist_v
     double len;
     cdist__circle dk;
     cdist_method used = CDIST_METHOD_ROBUST;
+    /* the disk's normal and basis first, as in line_circle.c's linear_public */
+    int fast = d && cdist__circle_fast(q->unit_tol, d, &dk);
+    if (fast) cdist__frame_basis(&dk);
     if (!(st = cdist__check_line_ray(q, obj, origin, dir, is_ray, &M, &len)) &&
-        !(st = cdist__check_circle(q, d, "disk", &dk))) {
+        (fast || !(st = cdist__check_circle(q, d, "disk", &dk)))) {
         int e = cdist__lines_scale_exponent(*origin, NULL, &dk);
         double down = cdist__pow2(-e);
         cdist__circle_scale(&dk, down);
