@@ -57,14 +57,6 @@ static cdist_circle circ(double cx, double cy, double cz, double nx, double ny, 
 
 static cdist_vec3 add3(cdist_vec3 a, cdist_vec3 b) { return (cdist_vec3){a.x + b.x, a.y + b.y, a.z + b.z}; }
 static cdist_vec3 scale3(double k, cdist_vec3 a) { return (cdist_vec3){k * a.x, k * a.y, k * a.z}; }
-/* a random unit vector */
-static cdist_vec3 runit(void)
-{
-    for (;;) {
-        double x = 2 * rnd01() - 1, y = 2 * rnd01() - 1, z = 2 * rnd01() - 1, l = sqrt(x * x + y * y + z * z);
-        if (l > 0.1 && l < 1) return (cdist_vec3){x / l, y / l, z / l};
-    }
-}
 /* an orthonormal basis u, v of the plane normal to the unit vector n */
 static void basis_of(cdist_vec3 n, cdist_vec3 *u, cdist_vec3 *v)
 {
@@ -102,10 +94,10 @@ static size_t specials(size_t n)
     for (int k = 0; k < 500 && n < MAXN; k++, n++) {
         double r = 0.3 + rnd01(), rb = 0.3 + rnd01(), th = 2 * M_PI * rnd01();
         A[n] = circ(rnd01(), rnd01(), rnd01(), rnd01() - 0.5, rnd01() - 0.5, rnd01() - 0.5, r);
-        cdist_vec3 u, v, nb = runit(), ub;
+        cdist_vec3 u, v, nb = rnd_unit_vec(), ub;
         basis_of(A[n].normal, &u, &v);
         if (k % 6 == 5) { /* B's axis within 1e-7 of A's centre: B centred near A's centre on a line */
-            cdist_vec3 o = scale3(1e-7 * rnd01(), runit()), axis = runit();
+            cdist_vec3 o = scale3(1e-7 * rnd01(), rnd_unit_vec()), axis = rnd_unit_vec();
             double off = 2 * rnd01() - 1;
             B[n] = circ(A[n].center.x + o.x + off * axis.x, A[n].center.y + o.y + off * axis.y,
                         A[n].center.z + o.z + off * axis.z, axis.x, axis.y, axis.z, rb);
@@ -113,7 +105,7 @@ static size_t specials(size_t n)
             cdist_vec3 P = add3(A[n].center, add3(scale3(r * cos(th), u), scale3(r * sin(th), v)));
             cdist_vec3 tmp;
             basis_of(nb, &ub, &tmp);
-            cdist_vec3 Cb = add3(add3(P, scale3(rb, ub)), scale3(delta[k % 6 % 5], runit()));
+            cdist_vec3 Cb = add3(add3(P, scale3(rb, ub)), scale3(delta[k % 6 % 5], rnd_unit_vec()));
             B[n] = circ(Cb.x, Cb.y, Cb.z, nb.x, nb.y, nb.z, rb);
         }
         REF[n] = NAN;

@@ -33,13 +33,6 @@ static cdist_circle circ(cdist_vec3 c, cdist_vec3 n, double r)
 }
 static cdist_vec3 add3(cdist_vec3 a, cdist_vec3 b) { return (cdist_vec3){a.x + b.x, a.y + b.y, a.z + b.z}; }
 static cdist_vec3 scale3(double k, cdist_vec3 a) { return (cdist_vec3){k * a.x, k * a.y, k * a.z}; }
-static cdist_vec3 runit(void)
-{
-    for (;;) {
-        double x = 2 * rnd01() - 1, y = 2 * rnd01() - 1, z = 2 * rnd01() - 1, l = sqrt(x * x + y * y + z * z);
-        if (l > 0.1 && l < 1) return (cdist_vec3){x / l, y / l, z / l};
-    }
-}
 static cdist_vec3 rpoint(void) { return (cdist_vec3){2 * rnd01() - 1, 2 * rnd01() - 1, 2 * rnd01() - 1}; }
 /* a unit vector orthogonal to the unit vector n */
 static cdist_vec3 ortho(cdist_vec3 n)
@@ -71,14 +64,14 @@ static size_t constructed(size_t n)
 {
     static const double moved[] = {0.0, 1e-15, 1e-13, 1e-11, 1e-9, 1e-7, 1e-6};
     for (int k = 0; k < 2000 && n < MAXN; k++, n++) {
-        cdist_vec3 na = runit(), ca = rpoint();
+        cdist_vec3 na = rnd_unit_vec(), ca = rpoint();
         double ra = 0.3 + rnd01(), rb = 0.2 + rnd01();
         A[n] = circ(ca, na, ra);
         switch (k % 4) {
         case 0: { /* B's centre on A's axis (or A's on B's), then moved */
             cdist_vec3 cb = add3(ca, scale3(2 * rnd01() - 1, na));
-            cb = add3(cb, scale3(moved[k / 4 % 7], runit()));
-            B[n] = circ(cb, runit(), rb);
+            cb = add3(cb, scale3(moved[k / 4 % 7], rnd_unit_vec()));
+            B[n] = circ(cb, rnd_unit_vec(), rb);
             if (k / 4 % 2) {
                 cdist_circle t = A[n];
                 A[n] = B[n];
@@ -87,18 +80,18 @@ static size_t constructed(size_t n)
             break;
         }
         case 1: { /* B through a point of A, moved by 0 .. 1e-6: crossing, touching */
-            cdist_vec3 u = ortho(na), P = add3(ca, scale3(ra, u)), nb = runit();
-            cdist_vec3 cb = add3(add3(P, scale3(rb, ortho(nb))), scale3(moved[k / 4 % 7], runit()));
+            cdist_vec3 u = ortho(na), P = add3(ca, scale3(ra, u)), nb = rnd_unit_vec();
+            cdist_vec3 cb = add3(add3(P, scale3(rb, ortho(nb))), scale3(moved[k / 4 % 7], rnd_unit_vec()));
             B[n] = circ(cb, nb, rb);
             break;
         }
         case 2: { /* B's centre on A, moved: A crosses B's axis at or near B's centre */
             cdist_vec3 P = add3(ca, scale3(ra, ortho(na)));
-            B[n] = circ(add3(P, scale3(moved[k / 4 % 7] * ra, runit())), runit(), rb);
+            B[n] = circ(add3(P, scale3(moved[k / 4 % 7] * ra, rnd_unit_vec())), rnd_unit_vec(), rb);
             break;
         }
         default: /* random */
-            B[n] = circ(add3(ca, rpoint()), runit(), rb);
+            B[n] = circ(add3(ca, rpoint()), rnd_unit_vec(), rb);
         }
     }
     return n;
