@@ -49,11 +49,10 @@ CD_INLINE int v_isfinite(vec3 a) { return isfinite(a.x) && isfinite(a.y) && isfi
 CD_INLINE void v_basis(vec3 n, vec3 *u, vec3 *v)
 {
     double ax = fabs(n.x), ay = fabs(n.y), az = fabs(n.z);
-    /* e chosen without a branch (the smallest component of a random normal is unpredictable);
-     * e's components are exactly 0 and 1, so the arithmetic below is that of each case */
-    cdist__mask kx = cdist__mask_and(cdist__mask_le(ax, ay), cdist__mask_le(ax, az));
-    cdist__mask ky = cdist__mask_andnot(kx, cdist__mask_le(ay, az));
-    vec3 e = v3(cdist__blend(kx, 1.0, 0.0), cdist__blend(ky, 1.0, 0.0), cdist__blend(cdist__mask_or(kx, ky), 0.0, 1.0));
+    vec3 e;
+    if (ax <= ay && ax <= az) e = v3(1, 0, 0);
+    else if (ay <= az) e = v3(0, 1, 0);
+    else e = v3(0, 0, 1);
     vec3 w = v_axpy(e, -v_dot(e, n), n);
     vec3 uu = v_scale(1.0 / v_norm(w), w);
     *u = uu;
