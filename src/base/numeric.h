@@ -84,49 +84,11 @@ CD_INLINE double cdist__fmin(double a, double b) { return a < b ? a : (b == b ? 
  * squares to 0) is negligible against the tolerances it is compared with. */
 CD_INLINE double cdist__norm2(double a, double b) { return sqrt(a * a + b * b); }
 
-/* Branch-free choices between doubles, for data-dependent choices that a branch would
- * mispredict about every other time on random input (gcc turns a plain ?: between doubles into
- * a branch when several values hang on one condition). A mask is the outcome of a comparison;
- * cdist__blend(m, a, b) is exactly a where m holds and b elsewhere. With SSE2 (every x86-64)
- * the masks stay in vector registers (a compare and three bit operations per choice). */
-#if defined(__SSE2__)
-#include <emmintrin.h>
-typedef __m128d cdist__mask;
-CD_INLINE cdist__mask cdist__mask_lt(double a, double b) { return _mm_cmplt_sd(_mm_set_sd(a), _mm_set_sd(b)); }
-CD_INLINE cdist__mask cdist__mask_le(double a, double b) { return _mm_cmple_sd(_mm_set_sd(a), _mm_set_sd(b)); }
-CD_INLINE cdist__mask cdist__mask_ne(double a, double b) { return _mm_cmpneq_sd(_mm_set_sd(a), _mm_set_sd(b)); }
-CD_INLINE cdist__mask cdist__mask_not(cdist__mask m) { return _mm_xor_pd(m, _mm_castsi128_pd(_mm_set1_epi32(-1))); }
-CD_INLINE cdist__mask cdist__mask_and(cdist__mask m, cdist__mask n) { return _mm_and_pd(m, n); }
-CD_INLINE cdist__mask cdist__mask_or(cdist__mask m, cdist__mask n) { return _mm_or_pd(m, n); }
-CD_INLINE cdist__mask cdist__mask_andnot(cdist__mask m, cdist__mask n) { return _mm_andnot_pd(m, n); } /* !m && n */
-CD_INLINE cdist__mask cdist__mask_xor(cdist__mask m, cdist__mask n) { return _mm_xor_pd(m, n); }
-CD_INLINE double cdist__blend(cdist__mask m, double a, double b)
-{
-    return _mm_cvtsd_f64(_mm_or_pd(_mm_and_pd(m, _mm_set_sd(a)), _mm_andnot_pd(m, _mm_set_sd(b))));
-}
-#else
-typedef int cdist__mask;
-CD_INLINE cdist__mask cdist__mask_lt(double a, double b) { return a < b; }
-CD_INLINE cdist__mask cdist__mask_le(double a, double b) { return a <= b; }
-CD_INLINE cdist__mask cdist__mask_ne(double a, double b) { return a != b; }
-CD_INLINE cdist__mask cdist__mask_not(cdist__mask m) { return !m; }
-CD_INLINE cdist__mask cdist__mask_and(cdist__mask m, cdist__mask n) { return m & n; }
-CD_INLINE cdist__mask cdist__mask_or(cdist__mask m, cdist__mask n) { return m | n; }
-CD_INLINE cdist__mask cdist__mask_andnot(cdist__mask m, cdist__mask n) { return !m & n; }
-CD_INLINE cdist__mask cdist__mask_xor(cdist__mask m, cdist__mask n) { return m ^ n; }
-CD_INLINE double cdist__blend(cdist__mask m, double a, double b) { return m ? a : b; }
-#endif
-
 /* atan(y / x) for 0 <= y <= x, x > 0: fdlibm's s_atan.c (Sun Microsystems, 1993; "permission
  * to use, copy, modify, and distribute this software is freely granted, provided that this
  * notice is preserved") restricted to that range: reduction to |t| < 7/16 and an odd
  * polynomial of degree 23. The reduced argument is formed from y and x directly, with one
- * division ((2y - x) and (y - x) are exact by Sterbenz's lemma in their ranges).
- * Branch-free: the three reduction intervals pick their numerator, denominator and constants
- * by selects (on random arguments the interval is unpredictable: a branch there was a
- * misprediction every other call). With hi = lo = 0 the common form hi - ((t s - lo) - t) is
- * t - t s bit for bit (rounding to nearest is symmetric, and 0 - (+0) = +0), so the result is
- * that of the three-way branch. */
+ * division ((2y - x) and (y - x) are exact by Sterbenz's lemma in their ranges). */
 CD_INLINE double cdist__atan_ratio(double y, double x)
 {
     static const double aT[] = {
@@ -135,41 +97,46 @@ CD_INLINE double cdist__atan_ratio(double y, double x)
         6.66107313738753120669e-02,  -5.83357013379057348645e-02, 4.97687799461593236017e-02,
         -3.65315727442169155270e-02, 1.62858201153657823623e-02,
     };
-    cdist__mask c0 = cdist__mask_lt(y, 0.4375 * x), c1 = cdist__mask_lt(y, 0.6875 * x);
-    double n1 = cdist__blend(c1, 2.0 * y - x, y - x), d1 = cdist__blend(c1, 2.0 * x + y, y + x);
-    double hi1 = cdist__blend(c1, 4.63647609000806093515e-01, 7.85398163397448278999e-01);
-    double lo1 = cdist__blend(c1, 2.26987774529616870924e-17, 3.06161699786838301793e-17);
-    double num = cdist__blend(c0, y, n1), den = cdist__blend(c0, x, d1);
-    double hi = cdist__blend(c0, 0.0, hi1), lo = cdist__blend(c0, 0.0, lo1);
-    double t = num / den;
+    double hi = 0.0, lo = 0.0, t;
+    int id = -1;
+    if (y < 0.4375 * x) {
+        t = y / x;
+    } else if (y < 0.6875 * x) {
+        id = 0;
+        hi = 4.63647609000806093515e-01;
+        lo = 2.26987774529616870924e-17;
+        t = (2.0 * y - x) / (2.0 * x + y);
+    } else {
+        id = 1;
+        hi = 7.85398163397448278999e-01;
+        lo = 3.06161699786838301793e-17;
+        t = (y - x) / (y + x);
+    }
     double z = t * t, w = z * z;
     double s1 = z * (aT[0] + w * (aT[2] + w * (aT[4] + w * (aT[6] + w * (aT[8] + w * aT[10])))));
     double s2 = w * (aT[1] + w * (aT[3] + w * (aT[5] + w * (aT[7] + w * aT[9]))));
+    if (id < 0) return t - t * (s1 + s2);
     return hi - ((t * (s1 + s2) - lo) - t);
 }
 
 /* Polar angle of (x, y) in (-pi, pi]; NaN for (0, 0). Within 2 ulps of atan2 (measured on 2e7
  * random and near-axis arguments: 1 ulp) and about twice as fast, with one division: the point
- * queries spent a third of their time in atan2. Branch-free but for the NaN cases: the octant
- * is assembled as k - (b' - l) from selected constants, which reproduces each octant's own
- * formula bit for bit (b, pi_hi - (b - pi_lo), pio2_hi - (b - pio2_lo) and
- * pio2_hi + (b + pio2_lo) = pio2_hi - (-b - pio2_lo), negation being exact). */
+ * queries spent a third of their time in atan2. */
 CD_INLINE double cdist__polar_angle(double x, double y)
 {
     const double pio2_hi = 1.57079632679489655800e+00, pio2_lo = 6.12323399573676603587e-17;
     const double pi_hi = 3.1415926535897931160e+00, pi_lo = 1.2246467991473531772e-16;
     if (x == 0.0 && y == 0.0) return NAN;
     if (x != x || y != y) return NAN;
-    double ax = fabs(x), ay = fabs(y);
-    cdist__mask sw = cdist__mask_lt(ax, ay), neg = cdist__mask_lt(x, 0.0); /* ay > ax: no NaN here */
-    double b = cdist__atan_ratio(cdist__blend(sw, ax, ay), cdist__blend(sw, ay, ax));
-    /* (sw, neg) = (0, 0): 0 - (-b - 0); (0, 1): pi_hi - (b - pi_lo);
-     * (1, 0): pio2_hi - (b - pio2_lo); (1, 1): pio2_hi - (-b - pio2_lo) */
-    double k = cdist__blend(sw, pio2_hi, cdist__blend(neg, pi_hi, 0.0));
-    double l = cdist__blend(sw, pio2_lo, cdist__blend(neg, pi_lo, 0.0));
-    double bb = cdist__blend(cdist__mask_xor(sw, neg), b, -b);
-    double a = k - (bb - l);
-    return cdist__blend(cdist__mask_and(cdist__mask_lt(y, 0.0), cdist__mask_ne(a, pi_hi)), -a, a); /* -pi is reported as pi */
+    double ax = fabs(x), ay = fabs(y), a;
+    if (ay <= ax) {
+        a = cdist__atan_ratio(ay, ax);
+        if (x < 0.0) a = pi_hi - (a - pi_lo);
+    } else {
+        double b = cdist__atan_ratio(ax, ay);
+        a = (x < 0.0) ? pio2_hi + (b + pio2_lo) : pio2_hi - (b - pio2_lo);
+    }
+    return (y < 0.0 && a != pi_hi) ? -a : a; /* -pi is reported as pi */
 }
 
 /* ---- power-of-two scaling (exact) ----
