@@ -421,6 +421,9 @@ static unsigned KN(ck_search)(ck_block *b, int g)
         KN(ck_f2)(&r, cn, sn, &F0, &F1, &F2, &rho, &rho2, &e2);
         V q = vdiv(F1, F2), nd = vmin(vmax(vsub(d, q), lo), hdone);
         M small = vle(vabs(vsub(nd, d)), vset(CD_CCK_NEWTON_STEP));
+        /* a step cut at the basin's end would leave Fs (the parabola's vertex) below F there */
+        M clamped = vne(nd, vsub(d, q));
+        fail = mor(fail, mandn(settled, mand(small, clamped)));
         Fs = vsel(settled, Fs, vsub(F0, vmul(F1, q)));
         d = vsel(settled, d, nd);
         settled = mor(settled, small);
@@ -670,6 +673,7 @@ static int KN(ck_quick)(const cdist__cc_frame *f, double *t_out, double *c_out, 
         nd = nd > -hdone ? nd : -hdone;
         nd = nd < hdone ? nd : hdone;
         settled = fabs(nd - d) <= CD_CCK_NEWTON_STEP;
+        if (settled && nd != d - q) return 0; /* cut at the basin's end: Fs below F there */
         d = nd;
         Fs = KN(ck_lane0)(F0) - f1 * q;
     }

@@ -550,6 +550,25 @@ static void brute_one_dd(cdist_circle a, cdist_circle b, const char *what)
     CHECK(r.distance <= c0.distance + 4 * EPS * L && r.distance <= c1.distance + 4 * EPS * L, "%s dd > cd", what);
 }
 
+/* Regression (review of the certified rim search): a disk 4.7e-9 across beside a unit rim that
+ * passes 1.3e-11 from it. The first half's rim minimum came from the engine, off by 5e-12 rad,
+ * and the second half had skipped its (well conditioned) rim search: 1.39e-11 instead of
+ * 1.33e-11. Disk-disk can never exceed the distance between the rims (the same two circles'
+ * cdist_circle_circle), nor circle-disk either way. */
+static void tiny_disk_by_rim(void)
+{
+    cdist_circle a = {{0, 0, 0}, {0x1.c3dd683edeffep-2, -0x1.49e4076bc3d2ep-1, 0x1.3fcc3cdbea7a2p-1}, 0x1.45a879d797bdep-28};
+    cdist_circle b = {{-0x1.58fc3a203e73cp-1, 0x1.cad582c230317p-2, -0x1.2cd3c33a393c9p-1},
+                      {0x1.7a18c95161117p-1, 0x1.be5f3f4945666p-2, -0x1.076414e9ad486p-1}, 1};
+    cdist_result r, s, c;
+    CHECK(cdist_circle_circle(q, &a, &b, &c) == CDIST_OK, "tiny disk by rim: cc status");
+    CHECK(cdist_disk_disk(q, &a, &b, &r) == CDIST_OK && cdist_disk_disk(q, &b, &a, &s) == CDIST_OK,
+          "tiny disk by rim: dd status");
+    CHECK(r.distance <= c.distance + 4 * EPS && s.distance == r.distance,
+          "tiny disk by rim: dd %.17g, swapped %.17g, above the rims' distance %.17g", r.distance, s.distance, c.distance);
+    brute_one_dd(a, b, "tiny disk by rim");
+}
+
 static void brute_one_lin(int kind, cdist_vec3 B, cdist_vec3 M, cdist_circle d, const char *what)
 {
     /* kind 0 line, 1 ray, 2 segment (M = p1). */
@@ -698,6 +717,7 @@ int main(void)
     q = cdist_query_new();
     exact_circle_disk();
     exact_disk_disk();
+    tiny_disk_by_rim();
     exact_linear_disk();
     errors();
     invariance();
