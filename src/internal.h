@@ -36,9 +36,11 @@ cdist_status cdist__cc_iteration(cdist_query *q, const cdist__circle *c0, const 
  * infinite. Else (minima mode) the local minima with distance up to min(dcap, the global
  * minimum) to the tie tolerance, the rest of the circle pruned by lower bounds (the closed form
  * of parallel planes still returns all its critical angles). Returns the count (at most cap), or
- * -1 when the function is constant (every angle critical). */
+ * -1 when the function is constant (every angle critical). *sampled (when not NULL): 1 when some
+ * of the circle was only sampled (a near-crossing of the other's axis, an exhausted budget,
+ * H vanishing to rounding), so that an angle may be off by more than rounding. */
 int cdist__circle_circle_critical(cdist_query *q, const cdist__circle *c0, const cdist__circle *c1, double dcap, double *theta0,
-                                  int cap);
+                                  int cap, int *sampled);
 
 /* The circles family's one framing and scaling rule (src/base/numeric.h): a moved to the origin
  * and b with it (the translation is written to *offset), both scaled by the power of two 2^-e

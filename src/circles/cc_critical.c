@@ -83,9 +83,10 @@ CD_FMA_CLONES int cdist__cc_quick_minimum(const cdist__circle *c0, const cdist__
 }
 
 CD_FMA_CLONES int cdist__circle_circle_critical(cdist_query *q, const cdist__circle *c0, const cdist__circle *c1, double dcap, double *theta0,
-                                  int cap)
+                                  int cap, int *sampled)
 {
     (void)q;
+    if (sampled) *sampled = 0;
     if (cap < 0) cap = 0;
     if (c0->r == 0.0) return -1; /* a point: every angle gives the same point */
     cdist__circle a, b;
@@ -116,6 +117,7 @@ CD_FMA_CLONES int cdist__circle_circle_critical(cdist_query *q, const cdist__cir
         return np < cap ? np : cap;
     }
     cdist__cc_scan(&f, &k, &Fmax);
+    if (sampled) *sampled = k.sampled;
     int n = k.count < cap ? k.count : cap;
     double L = cdist__fmax(cdist__fmax(c0->r, c1->r), v_norm(C));
     /* Constant F (also when F' never changes sign: a periodic F that is not constant has a

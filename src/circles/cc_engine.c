@@ -601,6 +601,7 @@ static void min_offer(const cdist__cc_frame *f, cdist__cc_sink *k, double lo, do
 /* Dense sampling fallback: F' signs on CC_DENSE_SAMPLES points. */
 static void scan_dense(const cdist__cc_frame *f, cdist__cc_sink *k, double *Fmax)
 {
+    k->sampled = 1;
     cdist__cc_pt first = {0}, prev = {0}, cur;
     double step = 2 * M_PI / CC_DENSE_SAMPLES, ch, sh, c = 0, s = 0;
     sincos(step, &sh, &ch);
@@ -714,6 +715,7 @@ static void deferred_offer(const cdist__cc_frame *f, cdist__cc_sink *k, const cc
  * at t (offsets below 2 ulps of t name no new angle), and t. */
 static void scan_kink(const cdist__cc_frame *f, cdist__cc_sink *k, double t, double core, double *Fmax, cc_deferred *df)
 {
+    k->sampled = 1;
     enum { NG = 64 }; /* 0.1 * 2^-63 is below any angular resolution */
     cdist__cc_pt prev, cur;
     double ct, st;
@@ -769,6 +771,7 @@ static void scan_kink(const cdist__cc_frame *f, cdist__cc_sink *k, double t, dou
 static void emit_sampled(const cdist__cc_frame *f, cdist__cc_sink *k, const cdist__cc_pt *a, const cdist__cc_pt *b, double *Fmax,
                          cc_deferred *df)
 {
+    k->sampled = 1;
     double w = b->t - a->t;
     int n = (int)ceil(w / (2 * M_PI / CC_DENSE_SAMPLES));
     if (n < 64) n = 64;

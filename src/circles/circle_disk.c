@@ -556,12 +556,13 @@ CD_INLINE cdist_status cdk_solve(cdist_query *q, cdist_method method, const cdk 
                 n = nc = 1;
             }
         } else {
-            n = cdist__circle_circle_critical(q, k->c, k->d, dcap, ts, CDK_CAP);
-            /* Not certified for disk-disk's second half: the engine's minima may come from its
-             * sampled regions (an exhausted budget, the windows of a near-axis crossing), off by
-             * up to 5e-12 rad where the other rim, searched from the other side, is well
-             * conditioned (a tiny disk near a big rim: 6.4e-13 of scale, found in review). */
-            *rim_certified = 0;
+            int sampled;
+            n = cdist__circle_circle_critical(q, k->c, k->d, dcap, ts, CDK_CAP, &sampled);
+            /* Certified for disk-disk's second half only where no region was merely sampled: a
+             * minimum from the windows of a near-axis crossing was off by 5e-12 rad where the
+             * other rim, searched from the other side, is well conditioned (a tiny disk near a
+             * big rim: 6.4e-13 of scale, found in review). */
+            *rim_certified = (n >= 0 || n == -1) && !sampled;
         }
         if (n == -1) {
             n = 0; /* F constant: the rim gives no isolated candidate; z candidates rule */

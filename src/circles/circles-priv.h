@@ -60,6 +60,7 @@ typedef struct cdist__cc_sink {
     double tmin, Fmin; /* partition point with the smallest F */
     double dmin;  /* smallest refined distance */
     double rho_min; /* axis distance of the point giving dmin */
+    int sampled;    /* some region was only sampled (emit_sampled, scan_kink, scan_dense) */
 } cdist__cc_sink;
 
 static inline double cdist__cc_dot3(vec3 a, vec3 b) { return cdist__ring_dot(a, b); }

@@ -193,7 +193,7 @@ static cdist_status arc_minima(cdist__cs_scan *s, const arcx *X, const cdist__ci
         cdist__circle c0 = X->c, c1 = *Y;
         c1.c = v_sub(Y->c, X->c.c);
         c0.c = v3(0, 0, 0);
-        n = cdist__circle_circle_critical(q, &c0, &c1, INFINITY, th, CRIT_CAP);
+        n = cdist__circle_circle_critical(q, &c0, &c1, INFINITY, th, CRIT_CAP, NULL);
         double A = 0.0, B = 0.0, hc = 0.0, R = 0.0;
         if (s->disk) {
             A = X->c.r * v_dot(Y->n, X->U);

@@ -26,7 +26,7 @@ static int critical(const cdist_circle *c0, const cdist_circle *c1, double *t, i
 {
     cdist__circle a, b;
     if (cdist__check_circle(q, c0, "c0", &a) || cdist__check_circle(q, c1, "c1", &b)) return -2;
-    return cdist__circle_circle_critical(q, &a, &b, INFINITY, t, cap);
+    return cdist__circle_circle_critical(q, &a, &b, INFINITY, t, cap, NULL);
 }
 
 /* Minima mode (the minima up to the cap and up to the global minimum, to the tie tolerance): when
@@ -37,7 +37,7 @@ static void minima_case(int i, const cdist_circle *c0, const cdist_circle *c1, c
     cdist__circle a, b;
     if (cdist__check_circle(q, c0, "c0", &a) || cdist__check_circle(q, c1, "c1", &b)) return;
     double t[64];
-    int n = cdist__circle_circle_critical(q, &a, &b, dcap, t, 64);
+    int n = cdist__circle_circle_critical(q, &a, &b, dcap, t, 64, NULL);
     CHECK(n >= 0, "case %d: minima mode returned %d", i, n);
     if (n < 0) return;
     double L = fmax(fmax(c0->radius, c1->radius), tdist(c0->center, c1->center));
