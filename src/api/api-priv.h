@@ -131,6 +131,10 @@ static inline void cdist__circle_scale(cdist__circle *c, double s)
  * and *out (no basis) when it accepts c, 0 when the full check must decide (the batch kernels
  * then leave the entry to the scalar path; the cc kernel's test decides acceptance with it). */
 int cdist__circle_fast(double unit_tol, const cdist_circle *c, cdist__circle *out);
+/* The same with the basis (NULL c: 0), as cdist__check_circle builds it: for a query that starts
+ * the circle's normal and basis, its longest chain, before its other checks (the lines), and
+ * runs cdist__check_circle afterwards only where this returns 0 (to report the problem). */
+int cdist__circle_fast_basis(double unit_tol, const cdist_circle *c, cdist__circle *out);
 /* A circle or disk checked without building its basis (c, n, r only; u, v left unset), for
  * families that do not need it; cdist__frame_basis completes it. */
 cdist_status cdist__check_circle_nobasis(cdist_query *q, const cdist_circle *c, const char *what, cdist__circle *out);

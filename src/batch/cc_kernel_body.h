@@ -103,11 +103,11 @@ CD_INLINE void KN(ck_f2)(const KN(ck_ring) *r, V c, V s, V *F0, V *F1, V *F2, V 
                vadd(vadd(W12, t), vadd(vmul(r->Hh, r->Hh), vmul(vadd(vabs(h), Lw), r->Hh))));
 }
 
-/* (c, s) rotated by the angle whose cosine and sine are (co, si). */
-CD_INLINE void KN(ck_rot)(V c, V s, double co, double si, V *cr, V *sr)
+/* (c, s) rotated by the angles whose cosines and sines are (co, si), lane by lane. */
+CD_INLINE void KN(ck_rot)(V c, V s, V co, V si, V *cr, V *sr)
 {
-    *cr = vsub(vmul(c, vset(co)), vmul(s, vset(si)));
-    *sr = vadd(vmul(s, vset(co)), vmul(c, vset(si)));
+    *cr = vsub(vmul(c, co), vmul(s, si));
+    *sr = vadd(vmul(s, co), vmul(c, si));
 }
 
 /* F convex on [t - h, t + h]: F''/2 at both ends less its rounding exceeds M3 h, M3 >= |F'''/2|
@@ -121,8 +121,8 @@ CD_INLINE void KN(ck_rot)(V c, V s, double co, double si, V *cr, V *sr)
 CD_INLINE M KN(ck_convex)(const KN(ck_ring) *r, V c, V s, int l, M *near_axis)
 {
     V ca, sa, cb, sb, F0, F1, F2a, F2b, ra, rb, xa, xb, ea, eb;
-    KN(ck_rot)(c, s, ck_tab.end_c[l], -ck_tab.end_s[l], &ca, &sa);
-    KN(ck_rot)(c, s, ck_tab.end_c[l], ck_tab.end_s[l], &cb, &sb);
+    KN(ck_rot)(c, s, vset(ck_tab.end_c[l]), vset(-ck_tab.end_s[l]), &ca, &sa);
+    KN(ck_rot)(c, s, vset(ck_tab.end_c[l]), vset(ck_tab.end_s[l]), &cb, &sb);
     KN(ck_f2)(r, ca, sa, &F0, &F1, &F2a, &ra, &xa, &ea);
     KN(ck_f2)(r, cb, sb, &F0, &F1, &F2b, &rb, &xb, &eb);
     V h = vset(ck_tab.half[l]), W1 = r->W1, hw = vmul(W1, h), three = vset(3.0);
@@ -303,7 +303,8 @@ CD_INLINE void KN(ck_answer_cs)(V c, V s, V d, V *cf, V *sf)
 {
     V cd, sd;
     KN(ck_sincos_small)(d, &cd, &sd);
-    V x = vsub(vmul(c, cd), vmul(s, sd)), y = vadd(vmul(s, cd), vmul(c, sd));
+    V x, y;
+    KN(ck_rot)(c, s, cd, sd, &x, &y);
     V k = vmul(vset(0.5), vsub(vset(3.0), vadd(vmul(x, x), vmul(y, y))));
     *cf = vmul(x, k);
     *sf = vmul(y, k);
@@ -366,8 +367,8 @@ static unsigned KN(ck_search)(ck_block *b, int g)
         Sk[4] = s;
         Ck[0] = Ck[8] = Sk[0] = Sk[8] = vset(0.0);
         for (int k = 1; k <= 3; k++) {
-            KN(ck_rot)(c, s, ck_tab.sub_c[l][k], ck_tab.sub_s[l][k], &Ck[4 + k], &Sk[4 + k]);
-            KN(ck_rot)(c, s, ck_tab.sub_c[l][k], -ck_tab.sub_s[l][k], &Ck[4 - k], &Sk[4 - k]);
+            KN(ck_rot)(c, s, vset(ck_tab.sub_c[l][k]), vset(ck_tab.sub_s[l][k]), &Ck[4 + k], &Sk[4 + k]);
+            KN(ck_rot)(c, s, vset(ck_tab.sub_c[l][k]), vset(-ck_tab.sub_s[l][k]), &Ck[4 - k], &Sk[4 - k]);
             Fk[4 + k] = KN(ck_f)(&r, Ck[4 + k], Sk[4 + k]);
             Fk[4 - k] = KN(ck_f)(&r, Ck[4 - k], Sk[4 - k]);
         }
@@ -383,7 +384,7 @@ static unsigned KN(ck_search)(ck_block *b, int g)
             int m = i < 4 ? 3 - i : i - 4; /* hull point of [i, i+1] at (2 (i - 4) + 1) h / 8 */
             double sg = i < 4 ? -1.0 : 1.0;
             V hc, hs;
-            KN(ck_rot)(c, s, ck_tab.hull_sub_c[l][m], sg * ck_tab.hull_sub_s[l][m], &hc, &hs);
+            KN(ck_rot)(c, s, vset(ck_tab.hull_sub_c[l][m]), vset(sg * ck_tab.hull_sub_s[l][m]), &hc, &hs);
             V lb = vmin(vmin(Fk[i], Fk[i + 1]), vsub(KN(ck_f)(&r, hc, hs), R2tan_sub));
             M keep = mor(veq(vset((double)i), kb), veq(vset((double)(i + 1)), kb));
             minlb = vsel(mandn(keep, active), vmin(minlb, lb), minlb);
@@ -416,8 +417,7 @@ static unsigned KN(ck_search)(ck_block *b, int g)
     for (int it = 0; it < CK_NEWTON_MAX; it++) {
         V cd, sd, cn, sn, F0, F1, F2, rho, rho2, e2;
         KN(ck_sincos_small)(d, &cd, &sd);
-        cn = vsub(vmul(c, cd), vmul(s, sd));
-        sn = vadd(vmul(s, cd), vmul(c, sd));
+        KN(ck_rot)(c, s, cd, sd, &cn, &sn);
         KN(ck_f2)(&r, cn, sn, &F0, &F1, &F2, &rho, &rho2, &e2);
         V q = vdiv(F1, F2), nd = vmin(vmax(vsub(d, q), lo), hdone);
         M small = vle(vabs(vsub(nd, d)), vset(CD_CCK_NEWTON_STEP));
@@ -434,8 +434,9 @@ static unsigned KN(ck_search)(ck_block *b, int g)
     /* Certified: every region outside the final basin has its lower bound above F there; and
      * F there is not below CD_CCK_MIN_F (touching or crossing circles: the scalar path). F at
      * the angle found is Fs = F - F1^2 / F2 (F1, F2 = F'/2, F''/2) from the last Newton step's
-     * values (the minimum of F's Taylor parabola there, the value after the step to O(step^3) with a step below
-     * CD_CCK_NEWTON_STEP), which saves an evaluation. */
+     * values (the minimum of F's Taylor parabola there: the value after the step to
+     * O(step^3), the step being below CD_CCK_NEWTON_STEP and not cut), which saves an
+     * evaluation. */
     fail = mor(mor(fail, nan), mnot(mand(vgt(minlb, vadd(Fs, margin)), vge(Fs, vset(CD_CCK_MIN_F)))));
     vst(&b->t[g], vadd(t, d));
     V cf, sf;
@@ -516,13 +517,6 @@ CD_INLINE double KN(ck_lane0)(V x)
     double a[W];
     vst(a, x);
     return a[0];
-}
-
-/* (c, s) rotated by the angles whose cosines and sines are the lanes of (co, si). */
-CD_INLINE void KN(ck_rot_lanes)(double c, double s, V co, V si, V *cr, V *sr)
-{
-    *cr = vsub(vmul(vset(c), co), vmul(vset(s), si));
-    *sr = vadd(vmul(vset(s), co), vmul(vset(c), si));
 }
 
 /* The smallest lane of x (x free of NaN). */
@@ -633,11 +627,11 @@ static int KN(ck_quick)(const cdist__cc_frame *f, double *t_out, double *c_out, 
         V R2tan_sub = vset(R2 * ck_tab.sub_tan2[l]);
         for (int k = 0; k < 8; k += W) {
             V ck, sk, hc, hs;
-            KN(ck_rot_lanes)(c, s, vld(&ck_tab.zoom_c[l][k]), vld(&ck_tab.zoom_s[l][k]), &ck, &sk);
+            KN(ck_rot)(vset(c), vset(s), vld(&ck_tab.zoom_c[l][k]), vld(&ck_tab.zoom_s[l][k]), &ck, &sk);
             vst(&Fk[k], KN(ck_f)(&r, ck, sk));
             vst(&Ck[k], ck);
             vst(&Sk[k], sk);
-            KN(ck_rot_lanes)(c, s, vld(&ck_tab.zoom_hull_c[l][k]), vld(&ck_tab.zoom_hull_s[l][k]), &hc, &hs);
+            KN(ck_rot)(vset(c), vset(s), vld(&ck_tab.zoom_hull_c[l][k]), vld(&ck_tab.zoom_hull_s[l][k]), &hc, &hs);
             vst(&hb[k], vsub(KN(ck_f)(&r, hc, hs), R2tan_sub));
         }
         Fk[0] = Fl; /* the ends and the centre as they were found */
@@ -667,7 +661,8 @@ static int KN(ck_quick)(const cdist__cc_frame *f, double *t_out, double *c_out, 
     for (int it = 0; it < CK_NEWTON_MAX && !settled; it++) {
         V cd, sd, F0, F1, F2, rho, rho2, e2;
         KN(ck_sincos_small)(vset(d), &cd, &sd);
-        V cn = vsub(vmul(vset(c), cd), vmul(vset(s), sd)), sn = vadd(vmul(vset(s), cd), vmul(vset(c), sd));
+        V cn, sn;
+        KN(ck_rot)(vset(c), vset(s), cd, sd, &cn, &sn);
         KN(ck_f2)(&r, cn, sn, &F0, &F1, &F2, &rho, &rho2, &e2);
         double f1 = KN(ck_lane0)(F1), q = f1 / KN(ck_lane0)(F2), nd = d - q;
         nd = nd > -hdone ? nd : -hdone;

@@ -50,14 +50,7 @@ CD_INLINE int axis_crossings(const cdist__cc_frame *f, double *t)
 CD_INLINE double scaled_pair(const cdist__circle *c0, const cdist__circle *c1, cdist__circle *a, cdist__circle *b)
 {
     vec3 C = v_sub(c1->c, c0->c);
-    double L0 = cdist__fmax(cdist__fmax(c0->r, c1->r), v_norm(C)), sc;
-    if (L0 >= 0x1p-1000 && L0 < 0x1p1000) {
-        sc = cdist__pow2(-(cdist__scale_exponent(L0) + 1)); /* frexp's exponent, without libm */
-    } else {
-        int ex;
-        frexp(L0, &ex);
-        sc = ldexp(1.0, -ex);
-    }
+    double up, sc = cdist__cc_scale_to_half(cdist__fmax(cdist__fmax(c0->r, c1->r), v_norm(C)), &up);
     *a = *c0;
     *b = *c1;
     a->c = v3(0, 0, 0);

@@ -33,11 +33,7 @@ CD_FMA_CLONES int cdist__cc_prepare(const cdist__circle *c0, const cdist__circle
     if (A->r == 0.0 || B->r == 0.0) return 0;
     /* Scale the problem by a power of two (exact) so that L is about 1: H has terms of order
      * L^6, which would overflow or underflow for coordinates near the 1e150 limit. */
-    double L = cdist__fmax(cdist__fmax(c0->r, c1->r), v_norm(C));
-    /* L in [0.5, 1): the exponent of frexp(L), without the library calls (L > 0 is finite) */
-    int ex = cdist__scale_exponent(L) + 1;
-    double sc = cdist__pow2(-ex);
-    p->unscale = cdist__pow2(ex);
+    double sc = cdist__cc_scale_to_half(cdist__fmax(cdist__fmax(c0->r, c1->r), v_norm(C)), &p->unscale);
     p->A = *A;
     p->B = *B;
     p->A.c = v_scale(sc, A->c);
@@ -47,7 +43,6 @@ CD_FMA_CLONES int cdist__cc_prepare(const cdist__circle *c0, const cdist__circle
     p->CB = v_scale(sc, p->swapped ? v_neg(C) : C);
     return 1;
 }
-
 
 /* The robust method (see the header comment). */
 cdist_status cdist__cc_robust(cdist_query *q, const cdist__circle *c0, const cdist__circle *c1, cdist__best *b)
@@ -86,13 +81,11 @@ cdist_status cdist__cc_robust(cdist_query *q, const cdist__circle *c0, const cdi
     double Fmax, tp[4], tq, cq, sq;
     int np = cdist__cc_parallel_critical(&f, tp);
     if (np < 0 && cdist__cc_quick_worth(&f) && cdist__cc_quick(&f, &tq, &cq, &sq)) {
-        /* One certified minimum, not tiny: its pair, unless its point on A is so close to B's
-         * axis that the answer is an equidistant set (the scan's equidistance test (b) below),
-         * which the scan reports. */
+        /* One certified minimum, not tiny: its pair. Neither equidistance test below can hold:
+         * (a) F rises by the certificate's margin elsewhere, and (b) the convex basin keeps
+         * B's axis more than 3 W1 h >= 2e-3 R away (ck_convex), far above its threshold. */
         cdist__cc_pair_final(&f, tq, cq, sq, &k);
-        if (k.rho_min > CC_AXIS_EPS_ULPS * f.epsL * cdist__fmin(1.0, f.s / f.L)) return CDIST_OK;
-        cdist__best_init(b, b->scale);
-        k.dmin = k.rho_min = INFINITY;
+        return CDIST_OK;
     }
     if (np < 0) cdist__cc_frame_bounds(&f);
     if (np > 0) {

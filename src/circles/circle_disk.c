@@ -261,10 +261,6 @@ static double cdk_descend(const cdk *k, double t, double h0)
     return prev;
 }
 
-/* Minima of F hidden in [a, b] next to the critical point t1 (a minimum-maximum-minimum cluster
- * narrower than the sampling): F' at t1 -+ 1e-9 2^j covers every dyadic shell around t1, so the
- * sign change of a neighbour at distance >= 2e-9 is seen (closer ones differ from F(t1) by
- * ~1e-36 of scale^2). Every - to + change away from t1 is bracketed and solved. */
 /* cos and sin of the shells' offsets 1e-9 2^j, j < 36 (cdk_scan), computed once */
 static struct {
     double c[36], s[36];
@@ -275,6 +271,10 @@ static void cdk_shell_init(void)
     for (int j = 0; j < 36; j++) sincos(1e-9 * cdist__pow2(j), &cdk_shell.s[j], &cdk_shell.c[j]);
 }
 
+/* Minima of F hidden in [a, b] next to the critical point t1 (a minimum-maximum-minimum cluster
+ * narrower than the sampling): F' at t1 -+ 1e-9 2^j covers every dyadic shell around t1, so the
+ * sign change of a neighbour at distance >= 2e-9 is seen (closer ones differ from F(t1) by
+ * ~1e-36 of scale^2). Every - to + change away from t1 is bracketed and solved. */
 static int cdk_scan(const cdk *k, double t1, double a, double b, double *out, int cap)
 {
     double p[2 * 36 + 3], f[2 * 36 + 3];

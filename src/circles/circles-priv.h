@@ -86,14 +86,31 @@ static inline void cdist__cc_eval_lean(const cdist__cc_frame *f, double t, doubl
 }
 
 /* The squared distance from A's point at (c, sn) = (cos t, sin t) to B (radius s) as the robust
- * method reports it, from the ring rg of the pair (ring_eval.h; cc_engine.c). The one formula of the answer: of the robust method's (applied to the
- * candidates it keeps, cdist__cc_settle_d2) and of the batch kernel's (src/batch/cc_kernel.c).
+ * method reports it, from the ring rg of the pair (ring_eval.h; cc_engine.c). The one formula
+ * of the answer: of the robust method's (applied to the candidates it keeps,
+ * cdist__cc_settle_d2) and of the batch kernel's (src/batch/cc_kernel.c).
  * Evaluated in double-double: its rounding (far below an ulp of the scale) then leaves the
  * answer depending on the angle only to second order at a minimum d* > 0 (by about
  * (R dt)^2 / (2 d*) for an angle error dt), so two searches settling on the same minimum report
  * the same distance to an ulp while d* is not tiny (the kernel leaves d* < 1e-12 of the scale,
  * touching or crossing circles, to the single query). */
 double cdist__cc_point_d2(const cdist__ring *rg, double s, double c, double sn);
+
+/* The power of two sc scaling a length L > 0 (finite) into [0.5, 1), frexp's, and *up = 1 / sc:
+ * the robust method's problem scale (H has terms of order L^6). By exponent bits where both are
+ * doubles, else by the library. */
+static inline double cdist__cc_scale_to_half(double L, double *up)
+{
+    if (L >= 0x1p-1000 && L < 0x1p1000) {
+        int ex = cdist__scale_exponent(L) + 1;
+        *up = cdist__pow2(ex);
+        return cdist__pow2(-ex);
+    }
+    int ex;
+    frexp(L, &ex);
+    *up = ldexp(1.0, ex);
+    return ldexp(1.0, -ex);
+}
 
 /* The reported parameter of an angle t on A in (-3 pi, 3 pi): t wrapped to (-pi, pi] (the
  * distance is recomputed at this value, cdist__cc_settle_d2, so the batch kernel uses it too). */
@@ -110,9 +127,9 @@ void cdist__cc_frame_ring(cdist__cc_frame *f, const cdist__circle *A, vec3 C, co
 void cdist__cc_frame_bounds(cdist__cc_frame *f);
 /* The batch kernel's certified search (src/batch/cc_kernel.c) for the one pair of frame f (only
  * its ring part is read), with the angles in lanes: 1, the angle *t of the closest point on A
- * and its cosine *c and sine *s when the closest point is certified unique (every other region of A at least
- * CD_CCK_CERT_MARGIN farther in F) and the distance is not tiny (>= sqrt(CD_CCK_MIN_F)); else
- * 0 (then cdist__cc_scan decides). */
+ * and its cosine *c and sine *s when the closest point is certified unique (every other region
+ * of A at least CD_CCK_CERT_MARGIN farther in F) and the distance is not tiny
+ * (>= sqrt(CD_CCK_MIN_F)); else 0 (then cdist__cc_scan decides). */
 int cdist__cc_quick(const cdist__cc_frame *f, double *t, double *c, double *s);
 /* Whether the certified search (cdist__cc_quick) is worth trying (tolerances.h): not when B's
  * centre lies within CD_CC_QUICK_CENTRE_REL * s of A (with e = |C| in A's plane the squared
@@ -168,8 +185,8 @@ cdist_status cdist__cc_robust(cdist_query *q, const cdist__circle *c0, const cdi
  * it cannot be the answer and are pruned. rim = 0 leaves out the minima of the distance from c
  * to d's rim (the candidates over d's face and the parallel closed forms remain): disk-disk,
  * whose other half has found them already. *used: the method that answered; *rim_certified
- * (may be NULL): the rim minima were found by a certified search or a closed form (not the
- * sampling fallback). */
+ * (may be NULL): the rim minima were found by the certified search, the engine without a
+ * sampled region, a bound or a closed form (not the sampling fallback). */
 cdist_status cdist__circle_disk_core_ex(cdist_query *q, cdist_method method, const cdist__circle *c, const cdist__circle *d,
                                         double dcap, int rim, cdist__best *b, cdist_method *used, int *rim_certified);
 #define CD_DISK_METHODS (CD_HAS(CDIST_METHOD_POLYNOMIAL) | CD_HAS(CDIST_METHOD_ROBUST))

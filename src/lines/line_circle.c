@@ -578,8 +578,7 @@ CD_FMA_CLONES static cdist_status linear_public(cdist_query *q, const cdist_vec3
     /* The circle's normal and basis (two divisions and a square root each) are the longest
      * chain before the core: started first. The fast check has no side effects; a circle it
      * does not accept is checked, and reported, after the line as before. */
-    int fast = c && cdist__circle_fast(q->unit_tol, c, &cc);
-    if (fast) cdist__frame_basis(&cc);
+    int fast = cdist__circle_fast_basis(q->unit_tol, c, &cc);
     if (!(st = cdist__check_line_ray(q, obj, origin, dir, is_ray, &M, &len)) &&
         (fast || !(st = cdist__check_circle(q, c, "circle", &cc)))) {
         /* t is reported for the direction as passed */

@@ -204,8 +204,7 @@ CD_FMA_CLONES static cdist_status line_ray_disk(cdist_query *q, const void *obj,
     cdist__circle dk;
     cdist_method used = CDIST_METHOD_ROBUST;
     /* the disk's normal and basis first, as in line_circle.c's linear_public */
-    int fast = d && cdist__circle_fast(q->unit_tol, d, &dk);
-    if (fast) cdist__frame_basis(&dk);
+    int fast = cdist__circle_fast_basis(q->unit_tol, d, &dk);
     if (!(st = cdist__check_line_ray(q, obj, origin, dir, is_ray, &M, &len)) &&
         (fast || !(st = cdist__check_circle(q, d, "disk", &dk)))) {
         int e = cdist__lines_scale_exponent(*origin, NULL, &dk);
