@@ -115,8 +115,18 @@ void cdist__leave_setter(cdist_query *q);
 /* The error state of a result: NaN distances, points and parameters, no pairs. */
 void cdist__result_set_error(cdist_result *r);
 /* The unused fields of a successful result: pairs from index n on NaN, iterations and reserved
- * zero. */
-void cdist__result_finish(cdist_result *r, int n);
+ * zero. Inline: a handful of stores, a fifth of a point query's instructions as a call. */
+static inline void cdist__result_finish(cdist_result *r, int n)
+{
+    for (int i = n; i < 2; i++) {
+        for (int k = 0; k < 2; k++) {
+            r->pairs[i].point[k] = v3(NAN, NAN, NAN);
+            r->pairs[i].param[k] = NAN;
+        }
+    }
+    r->iterations = 0;
+    for (int i = 0; i < 8; i++) r->reserved[i] = 0.0;
+}
 
 /* Scale a validated result back: distances and points times `up` (a power of two). */
 void cdist__result_unscale(cdist_result *r, double up);
@@ -125,6 +135,32 @@ static inline void cdist__circle_scale(cdist__circle *c, double s)
 {
     c->c = v_scale(s, c->c);
     c->r *= s;
+}
+
+/* Validation without message formatting: a valid circle formats no strings. One comparison
+ * per number covers NaN, infinity and the range (|x| <= CD_MAX_ABS is false for all three);
+ * the normal's squared length is taken directly when it is safely in range. Returns 0 on any
+ * doubt; the slow path then finds and reports the problem, or accepts the circle. Inline here
+ * for the paths that fuse it with their core (the point queries); cdist__circle_fast is the same. */
+CD_INLINE int cdist__circle_fast_body(double unit_tol, const cdist_circle *c, cdist__circle *out)
+{
+    vec3 p = c->center, d = c->normal;
+    double r = c->radius;
+    if (!(fabs(p.x) <= CD_MAX_ABS && fabs(p.y) <= CD_MAX_ABS && fabs(p.z) <= CD_MAX_ABS && r >= 0.0 &&
+          r <= CD_MAX_ABS))
+        return 0;
+    double m = v_maxabs(d);
+    if (!(m >= CD_MIN_NORMAL_FAST && m <= CD_MAX_ABS)) return 0; /* also NaN or infinite components */
+    /* |d| from d itself: for m in that range |d|^2 is finite and normal, and a component whose
+     * square underflows errs by under 2^-22 ulp of m^2; so no prescaling by 1 / m, whose
+     * division headed every query's longest chain. The batch kernels (src/batch) repeat this
+     * arithmetic and must agree with single calls. */
+    double len = v_norm(d);
+    if (!(fabs(len - 1.0) <= unit_tol)) return 0;
+    out->n = v_scale(1.0 / len, d);
+    out->c = p;
+    out->r = r;
+    return 1;
 }
 
 /* The fast path of cdist__check_circle_nobasis alone, with its arithmetic (same FMA clone): 1

@@ -18,18 +18,6 @@ void cdist__result_set_error(cdist_result *r)
     }
 }
 
-void cdist__result_finish(cdist_result *r, int n)
-{
-    for (int i = n; i < 2; i++) {
-        for (int k = 0; k < 2; k++) {
-            r->pairs[i].point[k] = v3(NAN, NAN, NAN);
-            r->pairs[i].param[k] = NAN;
-        }
-    }
-    r->iterations = 0;
-    for (int i = 0; i < 8; i++) r->reserved[i] = 0.0;
-}
-
 cdist_status cdist__enter_slow(cdist_query *q, cdist_result *r)
 {
     if (r) cdist__result_set_error(r);

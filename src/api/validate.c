@@ -40,15 +40,11 @@ cdist_status cdist__check_point_slow(cdist_query *q, const cdist_vec3 *p, const 
     return CDIST_OK;
 }
 
-/* A non-zero vector d (finite, |components| <= CD_MAX_ABS) scaled exactly by a power of two so
- * that its largest component is about 1: its squared length neither overflows nor underflows,
- * also for subnormal components (1 / max|d_i| would overflow there). */
+/* A non-zero vector d (finite, |components| <= CD_MAX_ABS) whose squared length might
+ * underflow (largest component m below CD_MIN_NORMAL_FAST), scaled exactly by a power of two so
+ * that m is about 1 (1 / m would overflow for subnormal components). */
 CD_INLINE vec3 scaled_direction(vec3 d, double m, double *down)
 {
-    if (m >= 0x1p-500) {
-        *down = m; /* 1 / m is finite: the original arithmetic, kept bit for bit */
-        return v_scale(1.0 / m, d);
-    }
     int e = cdist__scale_exponent(m);
     *down = cdist__pow2(e);
     return v_scale(cdist__pow2(-e), d);
@@ -61,8 +57,10 @@ CD_FMA_CLONES cdist_status cdist__check_direction(cdist_query *q, const cdist_ve
     if (st) return st;
     double m = v_maxabs(*d);
     if (m == 0.0) return cdist__fail(q, CDIST_ERR_ZERO_VECTOR, "%s has zero length", what);
-    double down;
-    vec3 s = scaled_direction(*d, m, &down);
+    /* The one length rule of a direction or normal (cdist__circle_fast_body is its fast part): from
+     * d itself when m >= CD_MIN_NORMAL_FAST (|d|^2 finite and normal), else from a rescaled copy. */
+    double down = 1.0;
+    vec3 s = m >= CD_MIN_NORMAL_FAST ? *d : scaled_direction(*d, m, &down);
     double ns = v_norm(s);
     double len = ns * down; /* may underflow for a subnormal vector: only reported, never divided by */
     if (unit_required && q && !(fabs(len - 1.0) <= q->unit_tol))
@@ -72,30 +70,6 @@ CD_FMA_CLONES cdist_status cdist__check_direction(cdist_query *q, const cdist_ve
     if (unit) *unit = v_scale(1.0 / ns, s);
     if (length) *length = len;
     return CDIST_OK;
-}
-
-/* Validation without message formatting: a valid circle formats no strings. One comparison
- * per number covers NaN, infinity and the range (|x| <= CD_MAX_ABS is false for all three);
- * the normal's squared length is taken directly when it is safely in range. Returns 0 on any
- * doubt; the slow path then finds and reports the problem, or accepts the circle. */
-CD_INLINE int circle_fast(double unit_tol, const cdist_circle *c, cdist__circle *out)
-{
-    vec3 p = c->center, d = c->normal;
-    double r = c->radius;
-    if (!(fabs(p.x) <= CD_MAX_ABS && fabs(p.y) <= CD_MAX_ABS && fabs(p.z) <= CD_MAX_ABS && r >= 0.0 &&
-          r <= CD_MAX_ABS))
-        return 0;
-    double m = v_maxabs(d);
-    if (!(m >= 0x1p-500 && m <= CD_MAX_ABS)) return 0; /* also NaN or infinite components */
-    /* The arithmetic of cdist__check_direction before its scaling fix, bit for bit: the batch
-     * point kernel (src/batch/point_kernel.c) repeats it and must agree with single calls. */
-    vec3 sd = v_scale(1.0 / m, d);
-    double ns = v_norm(sd), len = m * ns;
-    if (!(fabs(len - 1.0) <= unit_tol)) return 0;
-    out->n = v_scale(1.0 / ns, sd);
-    out->c = p;
-    out->r = r;
-    return 1;
 }
 
 static cdist_status circle_slow(cdist_query *q, const cdist_circle *c, const char *what, cdist__circle *out)
@@ -119,18 +93,18 @@ static cdist_status circle_slow(cdist_query *q, const cdist_circle *c, const cha
 CD_FMA_CLONES cdist_status cdist__check_circle_nobasis(cdist_query *q, const cdist_circle *c, const char *what, cdist__circle *out)
 {
     if (!c) return cdist__fail(q, CDIST_ERR_NULL_ARGUMENT, "%s pointer is NULL", what);
-    if (q && circle_fast(q->unit_tol, c, out)) return CDIST_OK;
+    if (q && cdist__circle_fast_body(q->unit_tol, c, out)) return CDIST_OK;
     return circle_slow(q, c, what, out);
 }
 
 CD_FMA_CLONES int cdist__circle_fast(double unit_tol, const cdist_circle *c, cdist__circle *out)
 {
-    return circle_fast(unit_tol, c, out);
+    return cdist__circle_fast_body(unit_tol, c, out);
 }
 
 CD_FMA_CLONES int cdist__circle_fast_basis(double unit_tol, const cdist_circle *c, cdist__circle *out)
 {
-    if (!c || !circle_fast(unit_tol, c, out)) return 0;
+    if (!c || !cdist__circle_fast_body(unit_tol, c, out)) return 0;
     cdist__frame_basis(out);
     return 1;
 }

@@ -16,6 +16,9 @@
 /* Largest accepted |coordinate| or radius (length units): squares of differences stay finite
  * (1e150^2 * 12 < DBL_MAX) even before a family rescales. */
 #define CD_MAX_ABS 1e150
+/* The fast validation takes a normal whose largest component is at least this (length units):
+ * below it 1 / max|n_i| overflows, and the full check rescales by a power of two instead. */
+#define CD_MIN_NORMAL_FAST 0x1p-500
 
 /* ---- candidate collector (src/base/best.c) ---- */
 
@@ -53,10 +56,16 @@
 /* A point is on the circle's axis when its axis distance |n x p| is below the rounding noise
  * of the cross product: CD_ON_AXIS_ULPS * eps * |p|. Then every circle point is closest. */
 #define CD_ON_AXIS_ULPS 2.0
-/* Point queries work at a scale in [1, 2); below this (units of that scale) the in-plane part w
- * of a point near the axis has subnormal squares, and is rescaled before it is normalised
- * (not a tolerance of the answer: only where exact rescaling is needed). */
+/* Below this largest component (length units) the in-plane part w of a point near the axis has
+ * subnormal squares, and is rescaled before it is normalised (not a tolerance of the answer:
+ * only where exact rescaling is needed). */
 #define CD_POINT_TINY_W 0x1p-500
+/* The point queries' fast path and the batch point kernel work unscaled when the problem scale
+ * L = max(r, |p - c|) is at least this (length units): power-of-two scaling changes no rounding
+ * unless a square underflows, and a term whose square underflows (below 2^-511) is then below
+ * 2^-61 L, so the distance stays within an ulp of the scale; smaller problems are scaled to
+ * [1, 2) first (a distance of 1e-170 came out 0 unscaled). */
+#define CD_POINT_MIN_SCALE 0x1p-450
 
 /* ---- lines family (src/lines) ---- */
 

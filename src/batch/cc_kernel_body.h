@@ -168,15 +168,13 @@ CD_INLINE M KN(ck_circle_fast)(const V *p, double unit_tol, V *n)
     m = vsel(vgt(vabs(p[4]), m), vabs(p[4]), m);
     m = vsel(vgt(vabs(p[5]), m), vabs(p[5]), m);
     M ok = mand(KN(in_range)(p[0], p[1], p[2]), mand(vge(p[6], vset(0.0)), vle(p[6], vset(CD_MAX_ABS))));
-    ok = mand(ok, mand(vge(m, vset(0x1p-500)), vle(m, vset(CD_MAX_ABS))));
-    V im = vdiv(vset(1.0), m);
-    V sx = vmul(im, p[3]), sy = vmul(im, p[4]), sz = vmul(im, p[5]);
-    V ns = vsqrt(KN(dot)(sx, sy, sz, sx, sy, sz)), len = vmul(m, ns);
+    ok = mand(ok, mand(vge(m, vset(CD_MIN_NORMAL_FAST)), vle(m, vset(CD_MAX_ABS))));
+    V len = vsqrt(KN(dot)(p[3], p[4], p[5], p[3], p[4], p[5]));
     ok = mand(ok, vle(vabs(vsub(len, vset(1.0))), vset(unit_tol)));
-    V in = vdiv(vset(1.0), ns);
-    n[0] = vmul(in, sx);
-    n[1] = vmul(in, sy);
-    n[2] = vmul(in, sz);
+    V in = vdiv(vset(1.0), len);
+    n[0] = vmul(in, p[3]);
+    n[1] = vmul(in, p[4]);
+    n[2] = vmul(in, p[5]);
     return ok;
 }
 

@@ -195,13 +195,11 @@ static void KN(stage_frame)(double in[13][W], int shape, double tol, lk_block *b
     M ok = mand(mand(KN(in_range)(ax, ay, az), KN(in_range)(bx, by, bz)), KN(in_range)(cx, cy, cz));
     ok = mand(ok, mand(KN(in_range)(ndx, ndy, ndz), mand(vge(r, zero), vle(r, vset(CD_MAX_ABS)))));
     V nm = KN(max3)(ndx, ndy, ndz);
-    ok = mand(ok, vge(nm, vset(0x1p-500)));
-    V inm = vdiv(one, nm);
-    V sdx = vmul(inm, ndx), sdy = vmul(inm, ndy), sdz = vmul(inm, ndz);
-    V nns = vsqrt(KN(dot)(sdx, sdy, sdz, sdx, sdy, sdz));
-    ok = mand(ok, vle(vabs(vsub(vmul(nm, nns), one)), vset(tol)));
-    V inns = vdiv(one, nns);
-    V nx = vmul(inns, sdx), ny = vmul(inns, sdy), nz = vmul(inns, sdz);
+    ok = mand(ok, vge(nm, vset(CD_MIN_NORMAL_FAST)));
+    V nlen = vsqrt(KN(dot)(ndx, ndy, ndz, ndx, ndy, ndz));
+    ok = mand(ok, vle(vabs(vsub(nlen, one)), vset(tol)));
+    V inl = vdiv(one, nlen);
+    V nx = vmul(inl, ndx), ny = vmul(inl, ndy), nz = vmul(inl, ndz);
     /* v_basis: e = the axis of the smallest |n_k| (first on ties), u = normalise(e - (e.n) n), v = n x u */
     V anx = vabs(nx), any = vabs(ny), anz = vabs(nz);
     M kx = mand(vle(anx, any), vle(anx, anz));
@@ -237,24 +235,18 @@ static void KN(stage_frame)(double in[13][W], int shape, double tol, lk_block *b
         /* scaled before the normalisation; any length */
         Dx = vmul(down, Dx), Dy = vmul(down, Dy), Dz = vmul(down, Dz);
         dm = KN(max3)(Dx, Dy, Dz);
-        ok = mand(ok, vge(dm, vset(0x1p-500)));
-        V idm = vdiv(one, dm);
-        V sx = vmul(idm, Dx), sy = vmul(idm, Dy), sz = vmul(idm, Dz);
-        V ns = vsqrt(KN(dot)(sx, sy, sz, sx, sy, sz));
-        len = vmul(ns, dm);
-        V ins = vdiv(one, ns);
-        Mx = vmul(ins, sx), My = vmul(ins, sy), Mz = vmul(ins, sz);
+        ok = mand(ok, vge(dm, vset(CD_MIN_NORMAL_FAST)));
+        len = vsqrt(KN(dot)(Dx, Dy, Dz, Dx, Dy, Dz));
+        V il = vdiv(one, len);
+        Mx = vmul(il, Dx), My = vmul(il, Dy), Mz = vmul(il, Dz);
     } else {
         /* unit within tol, normalised before the scaling */
         dm = KN(max3)(Dx, Dy, Dz);
-        ok = mand(ok, vge(dm, vset(0x1p-500)));
-        V idm = vdiv(one, dm);
-        V sx = vmul(idm, Dx), sy = vmul(idm, Dy), sz = vmul(idm, Dz);
-        V ns = vsqrt(KN(dot)(sx, sy, sz, sx, sy, sz));
-        len = vmul(ns, dm);
+        ok = mand(ok, vge(dm, vset(CD_MIN_NORMAL_FAST)));
+        len = vsqrt(KN(dot)(Dx, Dy, Dz, Dx, Dy, Dz));
         ok = mand(ok, vle(vabs(vsub(len, one)), vset(tol)));
-        V ins = vdiv(one, ns);
-        Mx = vmul(ins, sx), My = vmul(ins, sy), Mz = vmul(ins, sz);
+        V il = vdiv(one, len);
+        Mx = vmul(il, Dx), My = vmul(il, Dy), Mz = vmul(il, Dz);
         Dx = vmul(down, Dx), Dy = vmul(down, Dy), Dz = vmul(down, Dz);
         len = vmul(len, down);
     }

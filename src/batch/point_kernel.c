@@ -1,9 +1,9 @@
 /* SPDX-License-Identifier: MIT */
-/* Distance kernels of point-circle and point-disk for cdist_batch_distance: the closed forms of
- * src/point/point.c with the validation of cdist__check_point/cdist__check_circle, operation by
- * operation (same roundings, fma where the scalar code calls fma), without the single query's
- * power-of-two scaling (CD_KERNEL_MIN_SCALE below): every distance is bit-identical to the
- * single query's unless an intermediate underflows, and within an ulp of the scale always.
+/* Distance kernels of point-circle and point-disk for cdist_batch_distance: the single query's
+ * fast path (point_fast in src/point/point.c, its checks and its distance) operation by
+ * operation (same roundings, fma where the scalar code calls fma), unscaled like it: every
+ * distance is bit-identical to the single query's, and the entries the fast path would doubt
+ * (scale below CD_POINT_MIN_SCALE included) are left to the scalar path.
  * AVX-512 (8 lanes) and AVX2 (4 lanes) versions are chosen at run time; the scalar version
  * serves the tails and other machines. Entries failing any check are left
  * to the scalar path, which produces their status and message. */
@@ -18,17 +18,6 @@
 _Static_assert(offsetof(cdist_vec3, y) == 8 && offsetof(cdist_vec3, z) == 16, "cdist_vec3 layout");
 _Static_assert(offsetof(cdist_circle, normal) == 24 && offsetof(cdist_circle, radius) == 48, "cdist_circle layout");
 
-/* The smallest largest normal component the fast path takes (circle_fast in src/api/validate.c):
- * below it 1 / m overflows, and the single query rescales by a power of two instead. */
-#define CD_KERNEL_MIN_NORMAL 0x1p-500
-/* The single query scales the point and circle by 2^-e (cdist__point_result) so that their scale
- * L = max(r, |p - c|) is about 1; the kernels do not. Power-of-two scaling changes no rounding,
- * so the two agree bit for bit unless an intermediate underflows (squares of lengths below
- * 2^-511; nothing overflows below 1e150). Such a term is below 2^-511 in length, below 2^-61 L
- * for L >= CD_KERNEL_MIN_SCALE, so the distance stays within an ulp of the scale; entries of a
- * smaller scale (where a distance of 1e-170 came out 0) go to the scalar path. */
-#define CD_KERNEL_MIN_SCALE 0x1p-450
-
 /* Finite and within 1e150 (NaN fails every comparison). */
 static inline int in_range(vec3 a)
 {
@@ -42,16 +31,15 @@ static int point_one(const cdist_vec3 *P, const cdist_circle *C, int disk, doubl
     double r = C->radius;
     if (!in_range(p) || !in_range(c) || !in_range(nd) || !(r >= 0.0 && r <= CD_MAX_ABS)) return 1;
     double m = v_maxabs(nd);
-    if (!(m >= CD_KERNEL_MIN_NORMAL)) return 1;
-    vec3 sd = v_scale(1.0 / m, nd);
-    double ns = v_norm(sd);
-    if (!(fabs(m * ns - 1.0) <= tol)) return 1;
-    vec3 n = v_scale(1.0 / ns, sd);
+    if (!(m >= CD_MIN_NORMAL_FAST)) return 1;
+    double len = v_norm(nd);
+    if (!(fabs(len - 1.0) <= tol)) return 1;
+    vec3 n = v_scale(1.0 / len, nd);
     vec3 rel = v_sub(p, c);
     vec3 np = v_cross(n, rel);
     double h = v_dot(n, rel), q2 = v_sqr(np), rho = sqrt(q2);
-    /* the scale guard: |rel|^2 = |n x rel|^2 + h^2, or r^2, at least CD_KERNEL_MIN_SCALE^2 */
-    if (!(cdist__fmax(q2 + h * h, r * r) >= CD_KERNEL_MIN_SCALE * CD_KERNEL_MIN_SCALE)) return 1;
+    /* the scale guard: |rel|^2 = |n x rel|^2 + h^2, or r^2, at least CD_POINT_MIN_SCALE^2 */
+    if (!(cdist__fmax(q2 + h * h, r * r) >= CD_POINT_MIN_SCALE * CD_POINT_MIN_SCALE)) return 1;
     if (disk && !(rho > r)) {
         *d = sqrt(h * h);
     } else {
@@ -113,14 +101,11 @@ AVX512 static uint64_t kernel_avx512(const cdist__job *job, int disk, double tol
         __mmask8 ok = in8(px, py, pz, lim) & in8(cx, cy, cz, lim) & in8(dx, dy, dz, lim) &
                       _mm512_cmp_pd_mask(r, zero, _CMP_GE_OQ) &
                       _mm512_cmp_pd_mask(r, lim, _CMP_LE_OQ) &
-                      _mm512_cmp_pd_mask(m, _mm512_set1_pd(CD_KERNEL_MIN_NORMAL), _CMP_GE_OQ);
-        __m512d im = _mm512_div_pd(one, m);
-        __m512d sx = _mm512_mul_pd(im, dx), sy = _mm512_mul_pd(im, dy), sz = _mm512_mul_pd(im, dz);
-        __m512d ns = _mm512_sqrt_pd(dot8(sx, sy, sz, sx, sy, sz));
-        __m512d dev = abs8(_mm512_sub_pd(_mm512_mul_pd(m, ns), one));
-        ok &= _mm512_cmp_pd_mask(dev, vtol, _CMP_LE_OQ);
-        __m512d ins = _mm512_div_pd(one, ns);
-        __m512d nx = _mm512_mul_pd(ins, sx), ny = _mm512_mul_pd(ins, sy), nz = _mm512_mul_pd(ins, sz);
+                      _mm512_cmp_pd_mask(m, _mm512_set1_pd(CD_MIN_NORMAL_FAST), _CMP_GE_OQ);
+        __m512d len = _mm512_sqrt_pd(dot8(dx, dy, dz, dx, dy, dz));
+        ok &= _mm512_cmp_pd_mask(abs8(_mm512_sub_pd(len, one)), vtol, _CMP_LE_OQ);
+        __m512d il = _mm512_div_pd(one, len);
+        __m512d nx = _mm512_mul_pd(il, dx), ny = _mm512_mul_pd(il, dy), nz = _mm512_mul_pd(il, dz);
         __m512d rx = _mm512_sub_pd(px, cx), ry = _mm512_sub_pd(py, cy), rz = _mm512_sub_pd(pz, cz);
         /* n x rel, each component a product difference without fma (as v_cross) */
         __m512d qx = _mm512_sub_pd(_mm512_mul_pd(ny, rz), _mm512_mul_pd(nz, ry));
@@ -132,7 +117,7 @@ AVX512 static uint64_t kernel_avx512(const cdist__job *job, int disk, double tol
         __m512d hh = _mm512_mul_pd(h, h);
         /* the scale guard (see point_one) */
         ok &= _mm512_cmp_pd_mask(_mm512_max_pd(_mm512_add_pd(q2, hh), _mm512_mul_pd(r, r)),
-                                 _mm512_set1_pd(CD_KERNEL_MIN_SCALE * CD_KERNEL_MIN_SCALE), _CMP_GE_OQ);
+                                 _mm512_set1_pd(CD_POINT_MIN_SCALE * CD_POINT_MIN_SCALE), _CMP_GE_OQ);
         __m512d d2 = _mm512_fmadd_pd(dr, dr, hh);
         if (disk) d2 = _mm512_mask_blend_pd(_mm512_cmp_pd_mask(rho, r, _CMP_GT_OQ), hh, d2);
         __m512d d = _mm512_sqrt_pd(d2);
@@ -183,13 +168,11 @@ AVX2 static uint64_t kernel_avx2(const cdist__job *job, int disk, double tol, si
         __m256d r = _mm256_i64gather_pd((const double *)(pb + 48), ib, 1);
         __m256d m = max3_4(dx, dy, dz);
         int ok = in4(px, py, pz, lim) & in4(cx, cy, cz, lim) & in4(dx, dy, dz, lim) & le4(zero, r) &
-                 le4(r, lim) & le4(_mm256_set1_pd(CD_KERNEL_MIN_NORMAL), m);
-        __m256d im = _mm256_div_pd(one, m);
-        __m256d sx = _mm256_mul_pd(im, dx), sy = _mm256_mul_pd(im, dy), sz = _mm256_mul_pd(im, dz);
-        __m256d ns = _mm256_sqrt_pd(dot4(sx, sy, sz, sx, sy, sz));
-        ok &= le4(abs4(_mm256_sub_pd(_mm256_mul_pd(m, ns), one)), vtol);
-        __m256d ins = _mm256_div_pd(one, ns);
-        __m256d nx = _mm256_mul_pd(ins, sx), ny = _mm256_mul_pd(ins, sy), nz = _mm256_mul_pd(ins, sz);
+                 le4(r, lim) & le4(_mm256_set1_pd(CD_MIN_NORMAL_FAST), m);
+        __m256d len = _mm256_sqrt_pd(dot4(dx, dy, dz, dx, dy, dz));
+        ok &= le4(abs4(_mm256_sub_pd(len, one)), vtol);
+        __m256d il = _mm256_div_pd(one, len);
+        __m256d nx = _mm256_mul_pd(il, dx), ny = _mm256_mul_pd(il, dy), nz = _mm256_mul_pd(il, dz);
         __m256d rx = _mm256_sub_pd(px, cx), ry = _mm256_sub_pd(py, cy), rz = _mm256_sub_pd(pz, cz);
         __m256d qx = _mm256_sub_pd(_mm256_mul_pd(ny, rz), _mm256_mul_pd(nz, ry));
         __m256d qy = _mm256_sub_pd(_mm256_mul_pd(nz, rx), _mm256_mul_pd(nx, rz));
@@ -198,7 +181,7 @@ AVX2 static uint64_t kernel_avx2(const cdist__job *job, int disk, double tol, si
         __m256d q2 = dot4(qx, qy, qz, qx, qy, qz), rho = _mm256_sqrt_pd(q2);
         __m256d dr = _mm256_sub_pd(rho, r);
         __m256d hh = _mm256_mul_pd(h, h);
-        ok &= le4(_mm256_set1_pd(CD_KERNEL_MIN_SCALE * CD_KERNEL_MIN_SCALE),
+        ok &= le4(_mm256_set1_pd(CD_POINT_MIN_SCALE * CD_POINT_MIN_SCALE),
                   _mm256_max_pd(_mm256_add_pd(q2, hh), _mm256_mul_pd(r, r))); /* the scale guard (see point_one) */
         __m256d d2 = _mm256_fmadd_pd(dr, dr, hh);
         if (disk) d2 = _mm256_blendv_pd(hh, d2, _mm256_cmp_pd(rho, r, _CMP_GT_OQ));

@@ -9,13 +9,14 @@
 /* Circle angle of the in-plane direction w without the basis: with k the basis index of
  * v_basis (smallest |n_k|), u = (e_k - n_k n)/s and v = n x u for s = |e_k - n_k n| > 0, so
  * u . w = w_k / s and v . w = u . (w x n) = (p x n)_k / s = -(n x p)_k / s for w = (n x p) x n;
- * s cancels in atan2. */
+ * s cancels in atan2. k is an index, not a branch: a random normal's k is unpredictable. */
 CD_INLINE double plane_angle(vec3 n, vec3 w, vec3 np)
 {
     double ax = fabs(n.x), ay = fabs(n.y), az = fabs(n.z);
-    if (ax <= ay && ax <= az) return cdist__polar_angle(w.x, -np.x);
-    if (ay <= az) return cdist__polar_angle(w.y, -np.y);
-    return cdist__polar_angle(w.z, -np.z);
+    int x_least = (ax <= ay) & (ax <= az);
+    int k = x_least ? 0 : 1 + (ay > az);
+    const double wk[3] = {w.x, w.y, w.z}, npk[3] = {np.x, np.y, np.z};
+    return cdist__polar_angle(wk[k], -npk[k]);
 }
 
 /* The representative circle point (angle 0) for a point on the axis: r u. */
@@ -82,12 +83,9 @@ CD_INLINE cdist__point_pair circle_pair_at(vec3 p, const cdist__circle *c)
     return circle_pair(p, c, h, w, np, rho);
 }
 
-CD_INLINE cdist__point_pair disk_pair_at(vec3 p, const cdist__circle *c)
+/* The disk point of p (relative to the centre) over the disk (rho <= r): its projection. */
+CD_INLINE cdist__point_pair disk_inside(const cdist__circle *c, double h, vec3 w, vec3 np, double rho, vec3 p)
 {
-    double h, rho;
-    vec3 w, np;
-    split(p, c->n, &h, &w, &np, &rho);
-    if (rho > c->r) return circle_pair(p, c, h, w, np, rho);
     cdist__point_pair q;
     int axis = on_axis(p, rho);
     q.angle = axis ? NAN : plane_angle(c->n, w, np);
@@ -95,6 +93,15 @@ CD_INLINE cdist__point_pair disk_pair_at(vec3 p, const cdist__circle *c)
     q.d2 = h * h;
     q.equidistant = 0;
     return q;
+}
+
+CD_INLINE cdist__point_pair disk_pair_at(vec3 p, const cdist__circle *c)
+{
+    double h, rho;
+    vec3 w, np;
+    split(p, c->n, &h, &w, &np, &rho);
+    if (rho > c->r) return circle_pair(p, c, h, w, np, rho);
+    return disk_inside(c, h, w, np, rho, p);
 }
 
 CD_FMA_CLONES cdist__point_pair cdist__point_circle_pair(vec3 p, const cdist__circle *c) { return circle_pair_at(p, c); }
@@ -114,6 +121,21 @@ void cdist__point_disk_core(vec3 p, const cdist__circle *c, cdist__best *b, int 
     else cdist__best_offer_flag(b, q.equidistant, q.d2, p, q.k, NAN, q.angle);
 }
 
+/* The result of a pair k (relative to the centre c, of a problem scaled by 2^-e: up = 2^e) of p.
+ * The unused fields are written here with the rest: one pass over the result. */
+CD_INLINE void write_result(vec3 p, vec3 c, double up, const cdist__point_pair *k, cdist_result *r)
+{
+    r->distance = sqrt(k->d2) * up;
+    r->sqr_distance = (k->d2 * up) * up;
+    r->num_pairs = 1;
+    r->equidistant = k->equidistant;
+    r->pairs[0].point[0] = p; /* exactly the caller's point */
+    r->pairs[0].point[1] = v_axpy(c, up, k->k);
+    r->pairs[0].param[0] = NAN;
+    r->pairs[0].param[1] = k->angle;
+    cdist__result_finish(r, 1);
+}
+
 /* Frame (translate to the centre) and scale (by 2^-e, exact, so that the scale is in [1, 2):
  * no underflow or overflow in squares for any accepted input), core, result. */
 CD_FMA_CLONES void cdist__point_result(vec3 p, const cdist__circle *c, int disk, cdist_result *r)
@@ -125,15 +147,43 @@ CD_FMA_CLONES void cdist__point_result(vec3 p, const cdist__circle *c, int disk,
     cdist__circle sc = *c;
     sc.r = c->r * down;
     cdist__point_pair k = disk ? disk_pair_at(ps, &sc) : circle_pair_at(ps, &sc);
-    r->distance = sqrt(k.d2) * up;
-    r->sqr_distance = (k.d2 * up) * up;
-    r->num_pairs = 1;
-    r->equidistant = k.equidistant;
-    r->pairs[0].point[0] = p; /* exactly the caller's point */
-    r->pairs[0].point[1] = v_axpy(c->c, up, k.k);
-    r->pairs[0].param[0] = NAN;
-    r->pairs[0].param[1] = k.angle;
-    cdist__result_finish(r, 1);
+    write_result(p, c->c, up, &k, r);
+}
+
+/* The whole query for inputs of the usual kind, fused in one FMA clone: the fast validation
+ * (cdist__circle_fast_body), the core unscaled (scale at least CD_POINT_MIN_SCALE: the same
+ * roundings as scaled) and the result, with no call, no copy of the circle and no pre-filled
+ * result. 0 when any check is in doubt: the checked and scaled path then answers or reports.
+ * The distance's arithmetic and the checks are the batch point kernel's
+ * (src/batch/point_kernel.c), operation by operation: the kernel takes exactly these entries
+ * and its distances are bit-identical. */
+CD_FMA_CLONES CD_NO_SLP static int point_fast(double unit_tol, const cdist_vec3 *P, const cdist_circle *C, int disk,
+                                              cdist_result *r)
+{
+    vec3 p = *P;
+    cdist__circle c;
+    if (!((fabs(p.x) <= CD_MAX_ABS) & (fabs(p.y) <= CD_MAX_ABS) & (fabs(p.z) <= CD_MAX_ABS)) ||
+        !cdist__circle_fast_body(unit_tol, C, &c))
+        return 0;
+    double h, rho;
+    vec3 w, np, rel = v_sub(p, c.c);
+    split(rel, c.n, &h, &w, &np, &rho);
+    /* the batch kernel's scale guard: |rel|^2 = |n x rel|^2 + h^2, or r^2 */
+    if (!(cdist__fmax(v_sqr(np) + h * h, c.r * c.r) >= CD_POINT_MIN_SCALE * CD_POINT_MIN_SCALE)) return 0;
+    cdist__point_pair k = (disk && !(rho > c.r)) ? disk_inside(&c, h, w, np, rho, rel) : circle_pair(rel, &c, h, w, np, rho);
+    write_result(p, c.c, 1.0, &k, r);
+    return 1;
+}
+
+/* The checked and scaled path: every input the fast path doubts (reports or answers it). */
+static __attribute__((noinline)) cdist_status point_checked(cdist_query *q, const cdist_vec3 *p, const cdist_circle *c,
+                                                            cdist_result *r, int disk)
+{
+    cdist__circle cc;
+    cdist_status st = cdist__check_point(q, p, "point");
+    if (!st) st = cdist__check_circle_nobasis(q, c, disk ? "disk" : "circle", &cc);
+    if (!st) cdist__point_result(*p, &cc, disk, r);
+    return st;
 }
 
 static inline cdist_status point_query(cdist_query *q, const cdist_vec3 *p, const cdist_circle *c, cdist_result *r,
@@ -141,10 +191,7 @@ static inline cdist_status point_query(cdist_query *q, const cdist_vec3 *p, cons
 {
     cdist_status st = cdist__enter(q, r);
     if (st) return st;
-    cdist__circle cc;
-    if (!(st = cdist__check_point(q, p, "point")) &&
-        !(st = cdist__check_circle_nobasis(q, c, disk ? "disk" : "circle", &cc)))
-        cdist__point_result(*p, &cc, disk, r);
+    if (!p || !c || !point_fast(q->unit_tol, p, c, disk, r)) st = point_checked(q, p, c, r, disk);
     return cdist__leave(q, r, st, CDIST_METHOD_AUTO);
 }
 
