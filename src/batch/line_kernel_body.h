@@ -43,13 +43,13 @@ typedef struct KN(model) {
 CD_INLINE V KN(fdf_scaled)(const KN(model) *m, V s, V *df, M *ok)
 {
     V h = vmadd(m->a, s, m->h), x2 = vmadd(m->m0, s, m->c2);
-    V rho2 = vmadd(m->x1, m->x1, vmul(x2, x2));
+    V rho2 = vmadd(x2, x2, vmul(m->x1, m->x1));
     *ok = mand(vge(rho2, vset(0x1p-200)), vle(rho2, vset(0x1p200)));
-    V rho = vsqrt(rho2), rr = vadd(rho, m->r);
+    V rho = vsqrt(rho2);
     V num = vmadd(x2, x2, m->rr2);
-    V P = vmul(vmul(rho2, rho), rr);
-    *df = vmadd(m->k, P, vmul(m->dfc, rr));
-    return vmadd(vmul(m->a, h), P, vmul(vmul(m->m0, x2), vmul(num, rho2)));
+    V ah = vmul(m->a, h), r2 = vmul(m->r, rho2), q2 = vmul(rho2, rho2);
+    *df = vmadd(vmadd(m->k, r2, m->dfc), rho, vmadd(m->k, q2, vmul(m->dfc, m->r)));
+    return vmadd(vmul(ah, r2), rho, vmadd(ah, q2, vmul(vmul(m->m0, x2), vmul(num, rho2))));
 }
 
 /* The state of cdist__root_newton_accel(fdf_scaled, m, lo, hi, x0, +1, CD_ROOT_REL_ULPS * eps,

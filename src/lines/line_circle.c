@@ -38,6 +38,7 @@ typedef struct lc_model {
     double c2;        /* x2 at s = 0 */
     double h;         /* height at s = 0 */
     double e2x, e2y;  /* e2 in the circle basis (U, V) */
+    double x1sq, k, rr2, dfc; /* fdf_scaled's invariants: x1^2, a^2 + m0^2, (|x1| - r)(|x1| + r), -(r m0^2) x1^2 */
 } lc_model;
 
 /* rho - r without cancellation, given x2 and rho. */
@@ -77,21 +78,22 @@ CD_INLINE double fdf(const void *ctx, double s, double *df)
 /* fdf times P = rho^3 (rho + r) > 0, for the bracketed solver, which uses only the sign of f and
  * the ratio f / f': the same Newton steps to rounding, with one division per step (the step)
  * instead of two (w and the step): f P = a h P + m0 x2 num rho^2, f' P = k P - r m0^2 x1^2 (rho + r).
- * Where P could underflow or overflow (rho far from 1; never in a scaled problem's bracket
- * except near the axis) it is fdf itself. Not for cdist__root_polish, which compares |f| at two
- * points. */
+ * With P = rho2^2 + (r rho2) rho, both are one multiply-add in rho after the square root (the
+ * rest is computed beside it): the chain of a Newton step is x2, rho2, sqrt, one multiply-add,
+ * the division. Where P could underflow or overflow (rho far from 1; never in a scaled
+ * problem's bracket except near the axis) it is fdf itself. Not for cdist__root_polish, which
+ * compares |f| at two points. */
 CD_INLINE double fdf_scaled(const void *ctx, double s, double *df)
 {
     const lc_model *m = ctx;
     double h = MADD(m->a, s, m->h), x2 = MADD(m->m0, s, m->c2);
-    double rho2 = MADD(m->x1, m->x1, x2 * x2);
+    double rho2 = MADD(x2, x2, m->x1sq);
     if (!(rho2 >= 0x1p-200 && rho2 <= 0x1p200)) return fdf(ctx, s, df);
-    double rho = sqrt(rho2), rr = rho + m->r;
-    double k = MADD(m->a, m->a, m->m0 * m->m0);
-    double num = MADD(x2, x2, (m->ax1 - m->r) * (m->ax1 + m->r));
-    double P = (rho2 * rho) * rr;
-    *df = MADD(k, P, -(m->r * m->m0 * m->m0) * (m->ax1 * m->ax1) * rr);
-    return MADD(m->a * h, P, m->m0 * x2 * (num * rho2));
+    double rho = sqrt(rho2);
+    double num = MADD(x2, x2, m->rr2);
+    double ah = m->a * h, r2 = m->r * rho2, q2 = rho2 * rho2;
+    *df = MADD(MADD(m->k, r2, m->dfc), rho, MADD(m->k, q2, m->dfc * m->r));
+    return MADD(ah * r2, rho, MADD(ah, q2, m->m0 * x2 * (num * rho2)));
 }
 
 /* Squared distance (scaled) at s. */
@@ -428,6 +430,10 @@ CD_FMA_CLONES static cdist_status linear_circle(cdist_query *q, cdist_method met
         m.h = h0;
     }
     double smin = umin - x.uO, smax = umax - x.uO;
+    m.x1sq = m.x1 * m.x1;
+    m.k = MADD(a, a, m0 * m0);
+    m.rr2 = (m.ax1 - rs) * (m.ax1 + rs);
+    m.dfc = -(rs * m0 * m0) * (m.ax1 * m.ax1);
 
     double roots[4];
     int nr = -1;
