@@ -945,9 +945,9 @@ int cdist__cc_parallel_critical(const cdist__cc_frame *f, double *t)
     t[n++] = t0;
     t[n++] = cdist__wrap_angle(t0 + M_PI);
     if (e > 0 && fabs(R - e) < s && s < R + e) {
-        /* rho = s: cos(t - t0) = (R^2 + e^2 - s^2) / (2 R e), formed without cancellation */
-        double x = ((R - s) * (R + s) + e * e) / (2 * R * e);
-        double a = acos(cdist__fmax(-1.0, cdist__fmin(1.0, x)));
+        /* rho = s: cos(t - t0) = (R^2 + e^2 - s^2) / (2 R e), by the half angle (acos lost
+         * the crossing of a tiny B across A's rim, the cosine rounding to 1) */
+        double a = cdist__crossing_angle(R, e, s);
         t[n++] = cdist__wrap_angle(t0 + a);
         t[n++] = cdist__wrap_angle(t0 - a);
     }
