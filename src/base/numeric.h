@@ -93,6 +93,18 @@ CD_INLINE double cdist__fmin(double a, double b) { return a < b ? a : (b == b ? 
  * squares to 0) is negligible against the tolerances it is compared with. */
 CD_INLINE double cdist__norm2(double a, double b) { return sqrt(a * a + b * b); }
 
+/* The angle a in [0, pi] at the centre of a circle of radius R between the direction to a point
+ * at distance e > 0 in its plane and the circle's crossings with the circle of radius s around
+ * that point (|R - e| <= s <= R + e): cos a = (R^2 + e^2 - s^2) / (2 R e), taken by the half
+ * angle, tan^2(a/2) = (s^2 - (R - e)^2) / ((R + e)^2 - s^2), from factors free of cancellation
+ * (R - e is exact where e is near R). Not acos of the cosine, nor a chord from it: a tiny circle
+ * (s = 1e-9 R) across the big one puts the cosine within eps of 1, where both lost the crossing. */
+CD_INLINE double cdist__crossing_angle(double R, double e, double s)
+{
+    double dm = R - e, dp = R + e;
+    return 2.0 * atan2(sqrt(cdist__fmax(0.0, (s - dm) * (s + dm))), sqrt(cdist__fmax(0.0, (dp - s) * (dp + s))));
+}
+
 /* atan(y / x) for 0 <= y <= x, x > 0: fdlibm's s_atan.c (Sun Microsystems, 1993; "permission
  * to use, copy, modify, and distribute this software is freely granted, provided that this
  * notice is preserved") restricted to that range: reduction to |t| < 7/16 and an odd

@@ -172,6 +172,15 @@
 #define CD_CCK_NEWTON_STEP 1e-10
 #define CD_CCK_MIN_F 1e-24
 
+/* Circle-circle engine (cc_engine.c refine): the bracketed Newton on F' stops after a step dx
+ * (rad) once its quadratic-convergence error, about dx^2 / l for F's features of width
+ * l = min(1, rho / W1) rad (rho: the axis distance of B, W1 >= |w'|; every derivative of
+ * rho = |w| brings a factor W1 / rho), is below CD_CC_REFINE_QUAD rad: far below the angle's
+ * own rounding (1e-16 rad), so the root is the true F''s to rounding. Where rho >= W1 this is
+ * the former fixed cut dx <= 1e-9; beside a tiny B (radius 4.7e-9 of A's) the minimum sits at
+ * rho ~ s, where that cut left it 5e-12 rad off (6.4e-13 of scale in circle-disk). */
+#define CD_CC_REFINE_QUAD 1e-18
+
 /* Circle-circle, the single query: the certified search of the kernel (cdist__cc_quick) runs
  * first unless B's centre lies within CD_CC_QUICK_CENTRE_REL * s of A. There A crosses B's
  * axis at B's centre, F's kink (never certified convex) sits at or next to the minimum, and

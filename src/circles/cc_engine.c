@@ -280,13 +280,14 @@ static void cc_detail(const cdist__cc_frame *f, cdist__cc_pt *p)
     p->eF2 = 64 * DBL_EPSILON * (W1 * W1 + (Lw + ar) * g1e * irho + f->Hh * f->Hh + (fabs(v.h) + Lw) * f->Hh);
 }
 
-/* F'/2 and F''/2 only (for the refinement). */
-static void cc_deriv(const cdist__cc_frame *f, double c, double s, double *F1, double *F2)
+/* F'/2, F''/2 and rho only (for the refinement). */
+static void cc_deriv(const cdist__cc_frame *f, double c, double s, double *F1, double *F2, double *rho)
 {
     cdist__ring_val v;
     cdist__ring_eval(&f->rg, f->s, c, s, 2, &v);
     *F1 = v.F1;
     *F2 = v.F2;
+    *rho = v.rho;
 }
 
 /* A root of F' in [a, b] where F'(a) and F'(b) have opposite signs (dir = +1 for (-,+), -1 for
@@ -301,9 +302,9 @@ static double refine(const cdist__cc_frame *f, const cdist__cc_pt *a, const cdis
     if (!(x > lo && x < hi)) x = 0.5 * (lo + hi);
     double dxold = hi - lo;
     for (int it = 0; it < 100; it++) {
-        double c, s, F1, F2;
+        double c, s, F1, F2, rho;
         sincos(x, &s, &c);
-        cc_deriv(f, c, s, &F1, &F2);
+        cc_deriv(f, c, s, &F1, &F2, &rho);
         F1 *= dir;
         F2 *= dir;
         if (F1 == 0.0) return x;
@@ -319,8 +320,11 @@ static double refine(const cdist__cc_frame *f, const cdist__cc_pt *a, const cdis
             newton = 0;
         }
         double dx = fabs(xn - x);
-        /* Quadratic convergence: after a Newton step this small the error is below rounding. */
-        if (newton && dx <= 1e-9) return xn;
+        /* Quadratic convergence: after a Newton step dx the error is about dx^2 / l, l the width
+         * of F's features, min(1, rho / W1) rad (each derivative of rho = |w| brings W1 / rho):
+         * below rounding by CD_CC_REFINE_QUAD. Not a fixed cut of dx: beside a tiny B the
+         * minimum sits at rho ~ s, and dx <= 1e-9 left it 5e-12 rad off (tolerances.h). */
+        if (newton && dx * dx * cdist__fmax(1.0, f->W1 / rho) <= CD_CC_REFINE_QUAD) return xn;
         dxold = dx;
         if (dx <= 4 * DBL_EPSILON || hi - lo <= 4 * DBL_EPSILON) return xn;
         x = xn;
@@ -941,9 +945,9 @@ int cdist__cc_parallel_critical(const cdist__cc_frame *f, double *t)
     t[n++] = t0;
     t[n++] = cdist__wrap_angle(t0 + M_PI);
     if (e > 0 && fabs(R - e) < s && s < R + e) {
-        /* rho = s: cos(t - t0) = (R^2 + e^2 - s^2) / (2 R e), formed without cancellation */
-        double x = ((R - s) * (R + s) + e * e) / (2 * R * e);
-        double a = acos(cdist__fmax(-1.0, cdist__fmin(1.0, x)));
+        /* rho = s: cos(t - t0) = (R^2 + e^2 - s^2) / (2 R e), by the half angle (acos lost
+         * the crossing of a tiny B across A's rim, the cosine rounding to 1) */
+        double a = cdist__crossing_angle(R, e, s);
         t[n++] = cdist__wrap_angle(t0 + a);
         t[n++] = cdist__wrap_angle(t0 - a);
     }

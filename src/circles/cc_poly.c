@@ -296,10 +296,10 @@ int cdist__cc_parallel_candidates(const cdist__cc *g, double *t0)
     } else if (din + r0 <= r1) {
         t0[k++] = angle_of(c0, v_neg(W)); /* c0 inside c1 */
     } else {
-        /* overlapping projections: the two crossings x W +- y T, x = (d^2 + r0^2 - r1^2) / 2d */
-        double x = 0.5 * (din + (r0 - r1) * (r0 + r1) / din);
-        double y2 = (r0 - x) * (r0 + x);
-        double y = y2 > 0.0 ? sqrt(y2) : 0.0;
+        /* overlapping projections: the two crossings cos a W +- sin a T, by the half angle (a
+         * chord y from x = (d^2 + r0^2 - r1^2) / 2d lost the crossings of a tiny c1 across c0's
+         * rim, x rounding to r0) */
+        double a = cdist__crossing_angle(r0, din, r1), x = cos(a), y = sin(a);
         t0[k++] = angle_of(c0, v_axpy(v_scale(x, W), y, T));
         t0[k++] = angle_of(c0, v_axpy(v_scale(x, W), -y, T));
     }

@@ -558,10 +558,10 @@ CD_INLINE cdist_status cdk_solve(cdist_query *q, cdist_method method, const cdk 
         } else {
             int sampled;
             n = cdist__circle_circle_critical(q, k->c, k->d, dcap, ts, CDK_CAP, &sampled);
-            /* Certified for disk-disk's second half only where no region was merely sampled: a
-             * minimum from the windows of a near-axis crossing was off by 5e-12 rad where the
-             * other rim, searched from the other side, is well conditioned (a tiny disk near a
-             * big rim: 6.4e-13 of scale, found in review). */
+            /* Certified for disk-disk's second half only where no region was merely sampled:
+             * there (windows of a near-axis crossing, exhausted budgets) F' may be rounding
+             * noise and the minima mode polishes nothing on F itself, while the other rim,
+             * searched from the other side, may be well conditioned. */
             *rim_certified = (n >= 0 || n == -1) && !sampled;
         }
         if (n == -1) {

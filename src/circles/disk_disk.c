@@ -49,8 +49,8 @@ static cdist_status dd_query(cdist_query *q, cdist__circle a, cdist__circle e, i
      * first half (a's rim point is then d from e's disk, and its closest point there, unique on
      * a convex set, is that rim point of e), so the first half reports it, ties included, when
      * its rim minima are certified (rim_certified: not from a region the engine only sampled,
-     * whose minima can be off by 5e-12 rad, nor from the sampling fallback). Only e's rim over
-     * a's face and the parallel closed forms are left. */
+     * where F' may be noise and nothing polishes on F, nor from the sampling fallback). Only
+     * e's rim over a's face and the parallel closed forms are left. */
     if ((st = cdist__circle_disk_core_ex(q, m, &e1, &a1, cap0, !rim_certified, &b1, &used1, NULL))) return st;
     double d0sq = cdist__best_merge(&best, &b0, v3(0, 0, 0), 0);
     double d1sq = cdist__best_merge(&best, &b1, e.c, 1);

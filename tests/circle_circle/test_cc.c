@@ -202,6 +202,12 @@ static void exact_families(void)
     expect("coplanar internal tangent", circ(0, 0, 0, 0, 0, 1, 3), circ(2, 0, 0, 0, 0, 1, 1), 0, 1, 0);
     expect("coplanar overlapping", circ(0, 0, 0, 0, 0, 1, 2), circ(2, 0, 0, 0, 0, 1, 2), 0, 2, 0);
     expect("coplanar contained", circ(0, 0, 0, 0, 0, 1, 5), circ(1, 0, 0, 0, 0, 1, 1), 3, 1, 0);
+    /* a tiny circle across the rim of a unit one, coplanar: the crossings (rho = s, 2^-30 from
+     * the closest angle) came out of the parallel closed form as acos of a cosine within eps of
+     * 1, i.e. no crossing at all (7.9e-10 reported for 0) */
+    expect("coplanar tiny across the rim", circ(0, 0, 0, 0, 0, 1, 1), circ(1 + 0x1p-33, 0, 0, 0, 0, 1, 0x1p-30), 0, 1, 0);
+    expect("parallel tiny over the rim", circ(0, 0, 0, 0, 0, 1, 1), circ(1 - 0x1p-33, 0, 0x1p-40, 0, 0, -1, 0x1p-30), 0x1p-40,
+           1, 0);
     /* parallel planes */
     expect("parallel coaxial", circ(0, 0, 0, 0, 0, 1, 1), circ(0, 0, 4, 0, 0, 1, 3), sqrt(20.0), 1, 1);
     expect("parallel offset overlapping", circ(0, 0, 0, 0, 0, 1, 2), circ(2, 0, 1, 0, 0, -1, 2), 1, 2, 0);

@@ -554,7 +554,10 @@ static void brute_one_dd(cdist_circle a, cdist_circle b, const char *what)
  * passes 1.3e-11 from it. The first half's rim minimum came from the engine, off by 5e-12 rad,
  * and the second half had skipped its (well conditioned) rim search: 1.39e-11 instead of
  * 1.33e-11. Disk-disk can never exceed the distance between the rims (the same two circles'
- * cdist_circle_circle), nor circle-disk either way. */
+ * cdist_circle_circle), nor circle-disk either way. The 5e-12 rad were the engine's Newton
+ * stopping after a step of 1.7e-10 rad as if F's features were a radian wide (they are the
+ * tiny rim's 4.7e-9): circle-disk of the big circle and the tiny disk, whose rim minimum comes
+ * from that engine alone, gave 1.39e-11 too (6.4e-13 of scale). */
 static void tiny_disk_by_rim(void)
 {
     cdist_circle a = {{0, 0, 0}, {0x1.c3dd683edeffep-2, -0x1.49e4076bc3d2ep-1, 0x1.3fcc3cdbea7a2p-1}, 0x1.45a879d797bdep-28};
@@ -567,6 +570,23 @@ static void tiny_disk_by_rim(void)
     CHECK(r.distance <= c.distance + 4 * EPS && s.distance == r.distance,
           "tiny disk by rim: dd %.17g, swapped %.17g, above the rims' distance %.17g", r.distance, s.distance, c.distance);
     brute_one_dd(a, b, "tiny disk by rim");
+    /* Circle-disk both ways, every method: the rims' distance and the brute force to a few ulps
+     * (brute_one_cd's 1e-12 of scale would let the 6.4e-13 through). */
+    ld ref_big = ref_circle_disk(b, a), ref_tiny = ref_circle_disk(a, b);
+    for (int m = 0; m <= 2; m++) {
+        cdist_query_set_method(q, (cdist_method)m);
+        CHECK(cdist_circle_disk(q, &b, &a, &r) == CDIST_OK && cdist_circle_disk(q, &a, &b, &s) == CDIST_OK,
+              "tiny disk by rim: cd status");
+        CHECK(r.distance <= c.distance + 4 * EPS && s.distance <= c.distance + 4 * EPS,
+              "tiny disk by rim, method %d: cd %.17g (tiny circle: %.17g) above the rims' distance %.17g", m, r.distance,
+              s.distance, c.distance);
+        CHECK(fabsl(r.distance - ref_big) <= 8 * EPS && fabsl(s.distance - ref_tiny) <= 8 * EPS,
+              "tiny disk by rim, method %d: cd %.17g vs brute force %.17Lg, tiny circle %.17g vs %.17Lg", m, r.distance,
+              ref_big, s.distance, ref_tiny);
+    }
+    cdist_query_set_method(q, CDIST_METHOD_AUTO);
+    brute_one_cd(b, a, "tiny disk by rim");
+    brute_one_cd(a, b, "tiny circle by a big disk's rim");
 }
 
 static void brute_one_lin(int kind, cdist_vec3 B, cdist_vec3 M, cdist_circle d, const char *what)
