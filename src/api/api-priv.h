@@ -129,12 +129,24 @@ static inline void cdist__result_finish(cdist_result *r, int n)
 }
 
 /* Scale a validated result back: distances and points times `up` (a power of two). */
-void cdist__result_unscale(cdist_result *r, double up);
+static inline void cdist__result_unscale(cdist_result *r, double up)
+{
+    r->distance *= up;
+    r->sqr_distance = (r->sqr_distance * up) * up;
+    for (int i = 0; i < r->num_pairs; i++)
+        for (int k = 0; k < 2; k++) r->pairs[i].point[k] = v_scale(up, r->pairs[i].point[k]);
+}
 /* A circle scaled by a power of two about the origin (centre and radius; n, u, v unchanged). */
 static inline void cdist__circle_scale(cdist__circle *c, double s)
 {
     c->c = v_scale(s, c->c);
     c->r *= s;
+}
+
+/* Finite and |components| <= CD_MAX_ABS (NaN fails every comparison). */
+CD_INLINE int cdist__in_range(vec3 a)
+{
+    return (fabs(a.x) <= CD_MAX_ABS) & (fabs(a.y) <= CD_MAX_ABS) & (fabs(a.z) <= CD_MAX_ABS);
 }
 
 /* Validation without message formatting: a valid circle formats no strings. One comparison
@@ -146,9 +158,7 @@ CD_INLINE int cdist__circle_fast_body(double unit_tol, const cdist_circle *c, cd
 {
     vec3 p = c->center, d = c->normal;
     double r = c->radius;
-    if (!(fabs(p.x) <= CD_MAX_ABS && fabs(p.y) <= CD_MAX_ABS && fabs(p.z) <= CD_MAX_ABS && r >= 0.0 &&
-          r <= CD_MAX_ABS))
-        return 0;
+    if (!(cdist__in_range(p) && r >= 0.0 && r <= CD_MAX_ABS)) return 0;
     double m = v_maxabs(d);
     if (!(m >= CD_MIN_NORMAL_FAST && m <= CD_MAX_ABS)) return 0; /* also NaN or infinite components */
     /* |d| from d itself: for m in that range |d|^2 is finite and normal, and a component whose
@@ -160,6 +170,22 @@ CD_INLINE int cdist__circle_fast_body(double unit_tol, const cdist_circle *c, cd
     out->n = v_scale(1.0 / len, d);
     out->c = p;
     out->r = r;
+    return 1;
+}
+
+/* The accepting part of cdist__check_direction(q, d, ..., 1, unit, length) with its arithmetic,
+ * inline for fused fast paths: 1 with *unit and *length when d is finite, in range, of largest
+ * component at least CD_MIN_NORMAL_FAST and unit within unit_tol; 0 when the full check must
+ * decide (and report). */
+CD_INLINE int cdist__direction_fast_body(double unit_tol, const cdist_vec3 *d, vec3 *unit, double *length)
+{
+    vec3 v = *d;
+    if (!cdist__in_range(v)) return 0;
+    if (!(v_maxabs(v) >= CD_MIN_NORMAL_FAST)) return 0;
+    double len = v_norm(v);
+    if (!(fabs(len - 1.0) <= unit_tol)) return 0;
+    *unit = v_scale(1.0 / len, v);
+    *length = len;
     return 1;
 }
 

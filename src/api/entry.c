@@ -50,11 +50,3 @@ cdist_status cdist__enter_setter(cdist_query *q)
 }
 
 void cdist__leave_setter(cdist_query *q) { atomic_store_explicit(&q->busy, 0, memory_order_release); }
-
-void cdist__result_unscale(cdist_result *r, double up)
-{
-    r->distance *= up;
-    r->sqr_distance = (r->sqr_distance * up) * up;
-    for (int i = 0; i < r->num_pairs; i++)
-        for (int k = 0; k < 2; k++) r->pairs[i].point[k] = v_scale(up, r->pairs[i].point[k]);
-}

@@ -486,7 +486,7 @@ CD_INLINE double range_scale(vec3 B, vec3 M, double tmin, double tmax, double r)
  * eps * |origin - C| in the translation and eps * |t| in the normalisation of D. The move is done
  * on origin - C kept exactly as two doubles, so nothing is rounded to the grid of the absolute
  * coordinates either (objects far from the coordinate origin). */
-CD_FMA_CLONES vec3 cdist__line_near_centre(vec3 origin, vec3 D, vec3 C, double tmin, double tmax, double *t0)
+CD_INLINE vec3 near_centre(vec3 origin, vec3 D, vec3 C, double tmin, double tmax, double *t0)
 {
     /* origin - C = hi + lo exactly; B = hi + t0 D + lo, rounded once at the scale of B */
     vec3 lo3, hi3;
@@ -512,13 +512,19 @@ CD_FMA_CLONES vec3 cdist__line_near_centre(vec3 origin, vec3 D, vec3 C, double t
     return v_add(v_axpy(hi3, t, D), lo3);
 }
 
+CD_FMA_CLONES vec3 cdist__line_near_centre(vec3 origin, vec3 D, vec3 C, double tmin, double tmax, double *t0)
+{
+    return near_centre(origin, D, C, tmin, tmax, t0);
+}
+
 /* The core for origin + t D, t in [tmin, tmax] (M = D/|D|, len = |D|), circle cc; writes r
- * (without its method) and the method that answered. */
-CD_FMA_CLONES static cdist_status run(cdist_query *q, vec3 origin, vec3 D, vec3 M, double len, double tmin, double tmax,
+ * (without its method) and the method that answered. Inlined into the public entries' clones
+ * with the validation and framing before it: one function from the inputs to the solver. */
+CD_INLINE cdist_status run(cdist_query *q, vec3 origin, vec3 D, vec3 M, double len, double tmin, double tmax,
                         const cdist__circle *cc, cdist_result *r, cdist_method *used)
 {
     double t0;
-    vec3 B = cdist__line_near_centre(origin, D, cc->c, tmin, tmax, &t0);
+    vec3 B = near_centre(origin, D, cc->c, tmin, tmax, &t0);
     double lo = (tmin - t0) * len, hi = (tmax - t0) * len;
     if (tmin == t0) lo = 0.0;
     if (tmax == t0) hi = 0.0;
@@ -584,8 +590,11 @@ CD_FMA_CLONES static cdist_status linear_public(cdist_query *q, const cdist_vec3
     /* The circle's normal and basis (two divisions and a square root each) are the longest
      * chain before the core: started first. The fast check has no side effects; a circle it
      * does not accept is checked, and reported, after the line as before. */
-    int fast = cdist__circle_fast_basis(q->unit_tol, c, &cc);
-    if (!(st = cdist__check_line_ray(q, obj, origin, dir, is_ray, &M, &len)) &&
+    int fast = c && cdist__circle_fast_body(q->unit_tol, c, &cc);
+    if (fast) cdist__frame_basis(&cc);
+    /* the line's fast checks inline too; anything in doubt goes through the reporting checks */
+    int line_fast = obj && cdist__in_range(*origin) && cdist__direction_fast_body(q->unit_tol, dir, &M, &len);
+    if ((line_fast || !(st = cdist__check_line_ray(q, obj, origin, dir, is_ray, &M, &len))) &&
         (fast || !(st = cdist__check_circle(q, c, "circle", &cc)))) {
         /* t is reported for the direction as passed */
         st = run_scaled(q, *origin, *dir, M, len, tmin, tmax, cc, r, &used);

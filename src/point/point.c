@@ -162,8 +162,7 @@ CD_FMA_CLONES CD_NO_SLP static int point_fast(double unit_tol, const cdist_vec3 
 {
     vec3 p = *P;
     cdist__circle c;
-    if (!((fabs(p.x) <= CD_MAX_ABS) & (fabs(p.y) <= CD_MAX_ABS) & (fabs(p.z) <= CD_MAX_ABS)) ||
-        !cdist__circle_fast_body(unit_tol, C, &c))
+    if (!cdist__in_range(p) || !cdist__circle_fast_body(unit_tol, C, &c))
         return 0;
     double h, rho;
     vec3 w, np, rel = v_sub(p, c.c);
