@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "check.h"
+#include "test_ld.h"
 
 static cdist_query *q;
 static const double EPS = 2.220446049250313e-16;
@@ -19,16 +20,6 @@ static int near_pt(cdist_vec3 a, cdist_vec3 b, double tol) { return tdist(a, b) 
 
 /* ---- long double reference (independent of the library) ---- */
 
-typedef long double ld;
-typedef struct { ld x, y, z; } lv;
-static lv lvv(ld x, ld y, ld z) { lv r = {x, y, z}; return r; }
-static lv lfrom(cdist_vec3 a) { return lvv(a.x, a.y, a.z); }
-static lv ladd(lv a, lv b) { return lvv(a.x + b.x, a.y + b.y, a.z + b.z); }
-static lv lsub(lv a, lv b) { return lvv(a.x - b.x, a.y - b.y, a.z - b.z); }
-static lv lsc(ld s, lv a) { return lvv(s * a.x, s * a.y, s * a.z); }
-static ld ldot(lv a, lv b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-static lv lcross(lv a, lv b) { return lvv(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x); }
-static ld lnorm(lv a) { return sqrtl(ldot(a, a)); }
 
 typedef struct { lv c, n, u, v; ld r; } ldisk;
 /* Objects are taken relative to an origin O (a double point near them): the difference of two
@@ -37,13 +28,7 @@ static cdist_vec3 O;
 static ldisk lmake(cdist_circle c)
 {
     ldisk d;
-    d.c = lsub(lfrom(c.center), lfrom(O));
-    d.n = lfrom(c.normal);
-    d.n = lsc(1 / lnorm(d.n), d.n);
-    lv e = fabsl(d.n.x) < 0.5L ? lvv(1, 0, 0) : lvv(0, 1, 0);
-    d.u = lsub(e, lsc(ldot(e, d.n), d.n));
-    d.u = lsc(1 / lnorm(d.u), d.u);
-    d.v = lcross(d.n, d.u);
+    lframe(c, O, &d.c, &d.n, &d.u, &d.v);
     d.r = c.radius;
     return d;
 }

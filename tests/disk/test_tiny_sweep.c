@@ -11,29 +11,15 @@
 #include <string.h>
 
 #include "check.h"
+#include "test_ld.h"
 
-typedef long double ld;
-typedef struct { ld x, y, z; } lv;
-static lv lvv(ld x, ld y, ld z) { lv r = {x, y, z}; return r; }
-static lv lsub(lv a, lv b) { return lvv(a.x - b.x, a.y - b.y, a.z - b.z); }
-static lv ladd(lv a, lv b) { return lvv(a.x + b.x, a.y + b.y, a.z + b.z); }
-static lv lsc(ld s, lv a) { return lvv(s * a.x, s * a.y, s * a.z); }
-static ld ldot(lv a, lv b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-static lv lcross(lv a, lv b) { return lvv(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x); }
-static ld lnorm(lv a) { return sqrtl(ldot(a, a)); }
 
 typedef struct { lv c, n, u, v; ld r; int disk; } obj;
 static cdist_vec3 O;
 static obj mk(cdist_circle c, int disk)
 {
     obj d;
-    d.c = lvv((ld)c.center.x - O.x, (ld)c.center.y - O.y, (ld)c.center.z - O.z);
-    d.n = lvv(c.normal.x, c.normal.y, c.normal.z);
-    d.n = lsc(1 / lnorm(d.n), d.n);
-    lv e = fabsl(d.n.x) < 0.5L ? lvv(1, 0, 0) : lvv(0, 1, 0);
-    d.u = lsub(e, lsc(ldot(e, d.n), d.n));
-    d.u = lsc(1 / lnorm(d.u), d.u);
-    d.v = lcross(d.n, d.u);
+    lframe(c, O, &d.c, &d.n, &d.u, &d.v);
     d.r = c.radius;
     d.disk = disk;
     return d;
