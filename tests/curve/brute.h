@@ -9,21 +9,7 @@
 #include <math.h>
 
 #include "check.h"
-
-typedef long double ld;
-typedef struct lv {
-    ld x, y, z;
-} lv;
-
-static inline lv lv3(ld x, ld y, ld z) { lv r = {x, y, z}; return r; }
-static inline lv lv_of(cdist_vec3 a) { return lv3(a.x, a.y, a.z); }
-static inline lv lv_add(lv a, lv b) { return lv3(a.x + b.x, a.y + b.y, a.z + b.z); }
-static inline lv lv_sub(lv a, lv b) { return lv3(a.x - b.x, a.y - b.y, a.z - b.z); }
-static inline lv lv_scale(ld s, lv a) { return lv3(s * a.x, s * a.y, s * a.z); }
-static inline ld lv_dot(lv a, lv b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-static inline lv lv_cross(lv a, lv b) { return lv3(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x); }
-static inline ld lv_norm(lv a) { return sqrtl(lv_dot(a, a)); }
-static inline lv lv_unit(lv a) { return lv_scale(1.0L / lv_norm(a), a); }
+#include "test_ld.h"
 
 typedef struct bf_circle {
     lv c, n;

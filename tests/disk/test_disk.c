@@ -28,18 +28,18 @@ static cdist_vec3 O;
 static ldisk lmake(cdist_circle c)
 {
     ldisk d;
-    lframe(c, O, &d.c, &d.n, &d.u, &d.v);
+    lv_frame(c, O, &d.c, &d.n, &d.u, &d.v);
     d.r = c.radius;
     return d;
 }
 static ld ldisk_dist(const ldisk *d, lv p)
 {
-    lv D = lsub(p, d->c);
-    ld h = ldot(d->n, D), rho = lnorm(lcross(d->n, D));
+    lv D = lv_sub(p, d->c);
+    ld h = lv_dot(d->n, D), rho = lv_norm(lv_cross(d->n, D));
     if (rho <= d->r) return fabsl(h);
     return sqrtl((rho - d->r) * (rho - d->r) + h * h);
 }
-static lv lcircle_pt(const ldisk *d, ld t, ld s) { return ladd(d->c, ladd(lsc(s * cosl(t), d->u), lsc(s * sinl(t), d->v))); }
+static lv lcircle_pt(const ldisk *d, ld t, ld s) { return lv_add(d->c, lv_add(lv_scale(s * cosl(t), d->u), lv_scale(s * sinl(t), d->v))); }
 
 typedef ld (*lfun)(const void *ctx, ld t);
 static ld golden(lfun f, const void *ctx, ld a, ld b, ld tol)
@@ -62,16 +62,16 @@ typedef struct { lv B, M; const ldisk *d; } lin_ctx;
 static ld lin_f(const void *ctx, ld t)
 {
     const lin_ctx *c = ctx;
-    return ldisk_dist(c->d, ladd(c->B, lsc(t, c->M)));
+    return ldisk_dist(c->d, lv_add(c->B, lv_scale(t, c->M)));
 }
 /* Convex in t: golden section over a window that contains the minimum. */
 static ld ref_linear(cdist_vec3 B, cdist_vec3 M, ld tmin, ld tmax, cdist_circle dk)
 {
     O = dk.center;
     ldisk d = lmake(dk);
-    lin_ctx c = {lsub(lfrom(B), lfrom(O)), lfrom(M), &d};
-    ld mm = ldot(c.M, c.M), tc = ldot(lsub(d.c, c.B), c.M) / mm;
-    ld d0 = lnorm(lsub(ladd(c.B, lsc(tc, c.M)), d.c));
+    lin_ctx c = {lv_sub(lv_of(B), lv_of(O)), lv_of(M), &d};
+    ld mm = lv_dot(c.M, c.M), tc = lv_dot(lv_sub(d.c, c.B), c.M) / mm;
+    ld d0 = lv_norm(lv_sub(lv_add(c.B, lv_scale(tc, c.M)), d.c));
     ld w = (d0 + 2 * d.r) / sqrtl(mm) + 1;
     ld lo = fmaxl(tmin, tc - w), hi = fminl(tmax, tc + w);
     if (lo > hi) return lin_f(&c, tc < tmin ? tmin : tmax);
@@ -125,7 +125,7 @@ typedef struct { const ldisk *a, *b; ld x, w; } dd_ctx;
 static ld dd_in(const void *ctx, ld y)
 {
     const dd_ctx *c = ctx;
-    return ldisk_dist(c->b, ladd(c->a->c, ladd(lsc(c->x, c->a->u), lsc(y, c->a->v))));
+    return ldisk_dist(c->b, lv_add(c->a->c, lv_add(lv_scale(c->x, c->a->u), lv_scale(y, c->a->v))));
 }
 static ld dd_out(const void *ctx, ld x)
 {
@@ -501,8 +501,8 @@ static void brute_one_cd(cdist_circle c, cdist_circle d, const char *what)
         O = d.center;
         ldisk lc = lmake(c), ldk = lmake(d);
         for (int i = 0; i < 256; i++) {
-            lv p = lsub(lcircle_pt(&lc, i * 3.14159265358979323846L / 128, lc.r), ldk.c);
-            ld h = ldot(ldk.n, p), rho = lnorm(lcross(ldk.n, p));
+            lv p = lv_sub(lcircle_pt(&lc, i * 3.14159265358979323846L / 128, lc.r), ldk.c);
+            ld h = lv_dot(ldk.n, p), rho = lv_norm(lv_cross(ldk.n, p));
             rim = fminl(rim, sqrtl((rho - ldk.r) * (rho - ldk.r) + h * h));
         }
         CHECK(r.distance <= rim + 1e-13 * L, "%s: disk distance %.17g > sampled rim distance %.17Lg", what, r.distance, rim);

@@ -19,19 +19,19 @@ static cdist_vec3 O;
 static obj mk(cdist_circle c, int disk)
 {
     obj d;
-    lframe(c, O, &d.c, &d.n, &d.u, &d.v);
+    lv_frame(c, O, &d.c, &d.n, &d.u, &d.v);
     d.r = c.radius;
     d.disk = disk;
     return d;
 }
 static ld pdist(const obj *d, lv p)
 {
-    lv D = lsub(p, d->c);
-    ld h = ldot(d->n, D), rho = lnorm(lcross(d->n, D));
+    lv D = lv_sub(p, d->c);
+    ld h = lv_dot(d->n, D), rho = lv_norm(lv_cross(d->n, D));
     if (d->disk && rho <= d->r) return fabsl(h);
     return sqrtl((rho - d->r) * (rho - d->r) + h * h);
 }
-static lv rimpt(const obj *d, ld t) { return ladd(d->c, ladd(lsc(d->r * cosl(t), d->u), lsc(d->r * sinl(t), d->v))); }
+static lv rimpt(const obj *d, ld t) { return lv_add(d->c, lv_add(lv_scale(d->r * cosl(t), d->u), lv_scale(d->r * sinl(t), d->v))); }
 
 typedef struct { const obj *x, *y; } rctx; /* x's rim parameterised, distance to y */
 static ld rim_f(const rctx *c, ld t) { return pdist(c->y, rimpt(c->x, t)); }
@@ -98,7 +98,7 @@ static ld rim_min(const obj *x, const obj *y)
 /* Disk x's face (2D nested golden, x a disk) to y: the point-y distance; convex when y is a
  * disk, nearly so for a tiny x beside a big circle y. */
 typedef struct { const obj *x, *y; ld xx; } fctx;
-static ld face_in(const fctx *c, ld yy) { return pdist(c->y, ladd(c->x->c, ladd(lsc(c->xx, c->x->u), lsc(yy, c->x->v)))); }
+static ld face_in(const fctx *c, ld yy) { return pdist(c->y, lv_add(c->x->c, lv_add(lv_scale(c->xx, c->x->u), lv_scale(yy, c->x->v)))); }
 static ld gold1(const fctx *c, ld a, ld b)
 {
     const ld g = 0.6180339887498948482045868L;
