@@ -153,7 +153,8 @@ CD_INLINE int cdist__in_range(vec3 a)
  * per number covers NaN, infinity and the range (|x| <= CD_MAX_ABS is false for all three);
  * the normal's squared length is taken directly when it is safely in range. Returns 0 on any
  * doubt; the slow path then finds and reports the problem, or accepts the circle. Inline here
- * for the paths that fuse it with their core (the point queries); cdist__circle_fast is the same. */
+ * for the paths that fuse it with their core (the point and line queries); cdist__circle_fast is
+ * the same. */
 CD_INLINE int cdist__circle_fast_body(double unit_tol, const cdist_circle *c, cdist__circle *out)
 {
     vec3 p = c->center, d = c->normal;

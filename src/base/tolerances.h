@@ -16,8 +16,9 @@
 /* Largest accepted |coordinate| or radius (length units): squares of differences stay finite
  * (1e150^2 * 12 < DBL_MAX) even before a family rescales. */
 #define CD_MAX_ABS 1e150
-/* The fast validation takes a normal whose largest component is at least this (length units):
- * below it 1 / max|n_i| overflows, and the full check rescales by a power of two instead. */
+/* The length rule takes |d| from d itself when its largest component is at least this (length
+ * units): |d|^2 is then normal; below it |d|^2 may underflow, and the full check rescales d by
+ * a power of two first. */
 #define CD_MIN_NORMAL_FAST 0x1p-500
 
 /* ---- candidate collector (src/base/best.c) ---- */

@@ -28,7 +28,9 @@ CD_INLINE vec3 axis_representative(const cdist__circle *c)
 }
 
 /* The point is on the axis when its axis distance is below the rounding noise of |N x D|
- * (compared squared: no square root; p is scaled, so nothing underflows). */
+ * (compared squared: no square root). Scaled, nothing underflows; unscaled (the fast path) a
+ * point within about 2^-537 of the centre underflows to "on the axis" (known; the distance is
+ * unaffected). */
 CD_INLINE int on_axis(vec3 p, double rho)
 {
     const double k = CD_ON_AXIS_ULPS * DBL_EPSILON;
