@@ -149,31 +149,6 @@ CD_INLINE int cdist__in_range(vec3 a)
     return (fabs(a.x) <= CD_MAX_ABS) & (fabs(a.y) <= CD_MAX_ABS) & (fabs(a.z) <= CD_MAX_ABS);
 }
 
-/* Validation without message formatting: a valid circle formats no strings. One comparison
- * per number covers NaN, infinity and the range (|x| <= CD_MAX_ABS is false for all three);
- * the normal's squared length is taken directly when it is safely in range. Returns 0 on any
- * doubt; the slow path then finds and reports the problem, or accepts the circle. Inline here
- * for the paths that fuse it with their core (the point and line queries); cdist__circle_fast is
- * the same. */
-CD_INLINE int cdist__circle_fast_body(double unit_tol, const cdist_circle *c, cdist__circle *out)
-{
-    vec3 p = c->center, d = c->normal;
-    double r = c->radius;
-    if (!(cdist__in_range(p) && r >= 0.0 && r <= CD_MAX_ABS)) return 0;
-    double m = v_maxabs(d);
-    if (!(m >= CD_MIN_NORMAL_FAST && m <= CD_MAX_ABS)) return 0; /* also NaN or infinite components */
-    /* |d| from d itself: for m in that range |d|^2 is finite and normal, and a component whose
-     * square underflows errs by under 2^-22 ulp of m^2; so no prescaling by 1 / m, whose
-     * division headed every query's longest chain. The batch kernels (src/batch) repeat this
-     * arithmetic and must agree with single calls. */
-    double len = v_norm(d);
-    if (!(fabs(len - 1.0) <= unit_tol)) return 0;
-    out->n = v_scale(1.0 / len, d);
-    out->c = p;
-    out->r = r;
-    return 1;
-}
-
 /* The accepting part of cdist__check_direction(q, d, ..., 1, unit, length) with its arithmetic,
  * inline for fused fast paths: 1 with *unit and *length when d is finite, in range, of largest
  * component at least CD_MIN_NORMAL_FAST and unit within unit_tol; 0 when the full check must
@@ -183,6 +158,10 @@ CD_INLINE int cdist__direction_fast_body(double unit_tol, const cdist_vec3 *d, v
     vec3 v = *d;
     if (!cdist__in_range(v)) return 0;
     if (!(v_maxabs(v) >= CD_MIN_NORMAL_FAST)) return 0;
+    /* |d| from d itself: for max|d_i| in [CD_MIN_NORMAL_FAST, CD_MAX_ABS] |d|^2 is finite and
+     * normal, and a component whose square underflows errs by under 2^-22 ulp of it; so no
+     * prescaling by 1 / max|d_i|, whose division headed every query's longest chain. The batch
+     * kernels (src/batch) repeat this arithmetic and must agree with single calls. */
     double len = v_norm(v);
     if (!(fabs(len - 1.0) <= unit_tol)) return 0;
     *unit = v_scale(1.0 / len, v);
@@ -190,18 +169,41 @@ CD_INLINE int cdist__direction_fast_body(double unit_tol, const cdist_vec3 *d, v
     return 1;
 }
 
+/* Validation without message formatting: a valid circle formats no strings. One comparison
+ * per number covers NaN, infinity and the range (|x| <= CD_MAX_ABS is false for all three);
+ * the normal's squared length is taken directly when it is safely in range. Returns 0 on any
+ * doubt; the slow path then finds and reports the problem, or accepts the circle. Inline here
+ * for the paths that fuse it with their core (the point and line queries); cdist__circle_fast is
+ * the same. */
+CD_INLINE int cdist__circle_fast_body(double unit_tol, const cdist_circle *c, cdist__circle *out)
+{
+    vec3 p = c->center;
+    double r = c->radius, len;
+    if (!(cdist__in_range(p) && r >= 0.0 && r <= CD_MAX_ABS)) return 0;
+    if (!cdist__direction_fast_body(unit_tol, &c->normal, &out->n, &len)) return 0;
+    out->c = p;
+    out->r = r;
+    return 1;
+}
+
 /* The fast path of cdist__check_circle_nobasis alone, with its arithmetic (same FMA clone): 1
  * and *out (no basis) when it accepts c, 0 when the full check must decide (the batch kernels
  * then leave the entry to the scalar path; the cc kernel's test decides acceptance with it). */
 int cdist__circle_fast(double unit_tol, const cdist_circle *c, cdist__circle *out);
-/* The same with the basis (NULL c: 0), as cdist__check_circle builds it: for a query that starts
- * the circle's normal and basis, its longest chain, before its other checks (the lines), and
- * runs cdist__check_circle afterwards only where this returns 0 (to report the problem). */
-int cdist__circle_fast_basis(double unit_tol, const cdist_circle *c, cdist__circle *out);
+/* The same with the basis (NULL c: 0), as cdist__check_circle builds it, inline for the caller's
+ * FMA clone: for a query that starts the circle's normal and basis, its longest chain, before
+ * its other checks (the lines), and runs cdist__check_circle afterwards only where this returns
+ * 0 (to report the problem). */
+static inline void cdist__frame_basis(cdist__circle *c) { v_basis(c->n, &c->u, &c->v); }
+CD_INLINE int cdist__circle_fast_basis(double unit_tol, const cdist_circle *c, cdist__circle *out)
+{
+    if (!c || !cdist__circle_fast_body(unit_tol, c, out)) return 0;
+    cdist__frame_basis(out);
+    return 1;
+}
 /* A circle or disk checked without building its basis (c, n, r only; u, v left unset), for
  * families that do not need it; cdist__frame_basis completes it. */
 cdist_status cdist__check_circle_nobasis(cdist_query *q, const cdist_circle *c, const char *what, cdist__circle *out);
-static inline void cdist__frame_basis(cdist__circle *c) { v_basis(c->n, &c->u, &c->v); }
 
 /* ---- the family table (src/api/family.c) ----
  * One row per query family, indexed like the public cdist_kind numbers of the batch API: the

@@ -102,13 +102,6 @@ CD_FMA_CLONES int cdist__circle_fast(double unit_tol, const cdist_circle *c, cdi
     return cdist__circle_fast_body(unit_tol, c, out);
 }
 
-CD_FMA_CLONES int cdist__circle_fast_basis(double unit_tol, const cdist_circle *c, cdist__circle *out)
-{
-    if (!c || !cdist__circle_fast_body(unit_tol, c, out)) return 0;
-    cdist__frame_basis(out);
-    return 1;
-}
-
 CD_FMA_CLONES cdist_status cdist__check_circle(cdist_query *q, const cdist_circle *c, const char *what, cdist__circle *out)
 {
     cdist_status st = cdist__check_circle_nobasis(q, c, what, out);

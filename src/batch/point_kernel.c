@@ -18,18 +18,12 @@
 _Static_assert(offsetof(cdist_vec3, y) == 8 && offsetof(cdist_vec3, z) == 16, "cdist_vec3 layout");
 _Static_assert(offsetof(cdist_circle, normal) == 24 && offsetof(cdist_circle, radius) == 48, "cdist_circle layout");
 
-/* Finite and within 1e150 (NaN fails every comparison). */
-static inline int in_range(vec3 a)
-{
-    return fabs(a.x) <= CD_MAX_ABS && fabs(a.y) <= CD_MAX_ABS && fabs(a.z) <= CD_MAX_ABS;
-}
-
 /* One entry: returns 0 (and writes *d) when every fast check passes. */
 static int point_one(const cdist_vec3 *P, const cdist_circle *C, int disk, double tol, double *d)
 {
     vec3 p = *P, c = C->center, nd = C->normal;
     double r = C->radius;
-    if (!in_range(p) || !in_range(c) || !in_range(nd) || !(r >= 0.0 && r <= CD_MAX_ABS)) return 1;
+    if (!cdist__in_range(p) || !cdist__in_range(c) || !cdist__in_range(nd) || !(r >= 0.0 && r <= CD_MAX_ABS)) return 1;
     double m = v_maxabs(nd);
     if (!(m >= CD_MIN_NORMAL_FAST)) return 1;
     double len = v_norm(nd);

@@ -558,8 +558,8 @@ CD_INLINE cdist_status run_scaled(cdist_query *q, vec3 origin, vec3 D, vec3 M, d
     return st;
 }
 
-cdist_status cdist__check_line_ray(cdist_query *q, const void *obj, const cdist_vec3 *origin, const cdist_vec3 *dir,
-                                  int is_ray, vec3 *M, double *len)
+cdist_status cdist__check_line_ray_slow(cdist_query *q, const void *obj, const cdist_vec3 *origin, const cdist_vec3 *dir,
+                                       int is_ray, vec3 *M, double *len)
 {
     cdist_status st;
     if ((st = cdist__check_ptr(q, obj, is_ray ? "ray" : "line")) ||
@@ -590,11 +590,8 @@ CD_FMA_CLONES static cdist_status linear_public(cdist_query *q, const cdist_vec3
     /* The circle's normal and basis (two divisions and a square root each) are the longest
      * chain before the core: started first. The fast check has no side effects; a circle it
      * does not accept is checked, and reported, after the line as before. */
-    int fast = c && cdist__circle_fast_body(q->unit_tol, c, &cc);
-    if (fast) cdist__frame_basis(&cc);
-    /* the line's fast checks inline too; anything in doubt goes through the reporting checks */
-    int line_fast = obj && cdist__in_range(*origin) && cdist__direction_fast_body(q->unit_tol, dir, &M, &len);
-    if ((line_fast || !(st = cdist__check_line_ray(q, obj, origin, dir, is_ray, &M, &len))) &&
+    int fast = cdist__circle_fast_basis(q->unit_tol, c, &cc);
+    if (!(st = cdist__check_line_ray(q, obj, origin, dir, is_ray, &M, &len)) &&
         (fast || !(st = cdist__check_circle(q, c, "circle", &cc)))) {
         /* t is reported for the direction as passed */
         st = run_scaled(q, *origin, *dir, M, len, tmin, tmax, cc, r, &used);
