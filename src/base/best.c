@@ -5,13 +5,6 @@
 #include <float.h>
 #include <math.h>
 
-void cdist__best_init(cdist__best *b, double scale)
-{
-    b->scale = (scale > 0.0 && isfinite(scale)) ? scale : 1.0;
-    b->n = 0;
-    b->equidistant = 0;
-}
-
 static int cand_distinct(const cdist__best *b, const cdist__cand *x, const cdist__cand *y)
 {
     vec3 d0 = v_sub(x->p[0], y->p[0]), d1 = v_sub(x->p[1], y->p[1]);
@@ -21,7 +14,7 @@ static int cand_distinct(const cdist__best *b, const cdist__cand *x, const cdist
     return v_norm(d0) + v_norm(d1) > tol;
 }
 
-void cdist__best_offer_flag(cdist__best *b, int equi, double d2, vec3 p0, vec3 p1, double param0, double param1)
+void cdist__best_offer_into(cdist__best *b, int equi, double d2, vec3 p0, vec3 p1, double param0, double param1)
 {
     if (!(d2 >= 0.0)) return; /* NaN candidates are ignored */
     cdist__cand c = {equi, d2, {p0, p1}, {param0, param1}};

@@ -4,7 +4,10 @@
 #ifndef CDIST_BASE_BEST_H
 #define CDIST_BASE_BEST_H
 
+#include <math.h>
+
 #include "circledist.h"
+#include "base/numeric.h"
 #include "base/tolerances.h"
 #include "base/vec.h"
 
@@ -29,7 +32,12 @@ typedef struct cdist__best {
 /* Two distances within CD_TIE_ULPS * eps * scale are a tie (both pairs are reported) when
  * their pairs are distinct: further apart than CD_DISTINCT_REL * scale (tolerances.h). */
 
-void cdist__best_init(cdist__best *b, double scale);
+CD_INLINE void cdist__best_init(cdist__best *b, double scale)
+{
+    b->scale = (scale > 0.0 && isfinite(scale)) ? scale : 1.0;
+    b->n = 0;
+    b->equidistant = 0;
+}
 /* Whether the result would be flagged equidistant (the whole configuration, or the best
  * candidate stands for infinitely many pairs). */
 static inline int cdist__best_is_equidistant(const cdist__best *b)
@@ -43,7 +51,25 @@ void cdist__best_offer(cdist__best *b, double d2, vec3 p0, vec3 p1, double param
  * close pairs (e.g. a point on a circle's axis); the result is flagged equidistant only if that
  * candidate is the best. For moving candidates from one collector to another, pass the source
  * candidate's .equidistant. */
-void cdist__best_offer_flag(cdist__best *b, int equidistant, double d2, vec3 p0, vec3 p1, double param0, double param1);
+void cdist__best_offer_into(cdist__best *b, int equidistant, double d2, vec3 p0, vec3 p1, double param0, double param1);
+/* Inline: the first candidate into an empty collector is kept as it is (most queries offer one
+ * or two); the others go through the merging and sorting of cdist__best_offer_into. */
+CD_INLINE void cdist__best_offer_flag(cdist__best *b, int equidistant, double d2, vec3 p0, vec3 p1, double param0,
+                                      double param1)
+{
+    if (b->n == 0 && d2 >= 0.0) {
+        cdist__cand *c = &b->c[0];
+        c->equidistant = equidistant;
+        c->d2 = d2;
+        c->p[0] = p0;
+        c->p[1] = p1;
+        c->param[0] = param0;
+        c->param[1] = param1;
+        b->n = 1;
+        return;
+    }
+    cdist__best_offer_into(b, equidistant, d2, p0, p1, param0, param1);
+}
 /* Write the result: the best pair and, on a tie, the second; points moved by `offset`
  * (the translation the family removed). swap exchanges the objects' roles (f(b,a) from f(a,b)). */
 void cdist__best_to_result(const cdist__best *b, vec3 offset, int swap, cdist_result *r);

@@ -3,6 +3,7 @@
 #ifndef CDIST_BASE_NUMERIC_H
 #define CDIST_BASE_NUMERIC_H
 
+#include <float.h>
 #include <math.h>
 
 /* ---- FMA policy ----
@@ -186,6 +187,36 @@ static inline double cdist__pow2(int e)
 {
     union { unsigned long long u; double d; } b = {(unsigned long long)(e + 1023) << 52};
     return b.d;
+}
+
+/* ---- cube root ---- */
+
+/* 2^(k/3), k = -2..2 (the factors of cdist__cbrt; 1.0 / SQR_CBRT2 etc. of the C library's). */
+static const double cdist__cbrt_factor[5] = {1.0 / 1.5874010519681994748, 1.0 / 1.2599210498948731648, 1.0,
+                                              1.2599210498948731648, 1.5874010519681994748};
+
+/* Cube root of a positive normal x, inline: the algorithm of glibc's cbrt
+ * (sysdeps/ieee754/dbl-64/s_cbrt.c: x = xm 2^xe with xm in [0.5, 1), a polynomial guess of
+ * xm^(1/3), one Halley step, the exponent split by 3), operation by operation, with the exponent
+ * taken and put back by bit operations instead of frexp and ldexp calls; within ~1 ulp. The line
+ * kernel repeats it in lanes (src/batch/line_kernel_body.h), so both give the same bits on every
+ * C library. Other x (0, subnormal, infinite, NaN, negative): the C library's cbrt. */
+CD_INLINE double cdist__cbrt(double x)
+{
+    if (!(x >= 0x1p-1022 && x <= DBL_MAX)) return cbrt(x);
+    union { double d; unsigned long long u; } b = {x};
+    int xe = (int)(b.u >> 52) - 1022;
+    b.u = (b.u & 0x000fffffffffffffull) | 0x3fe0000000000000ull;
+    double xm = b.d;
+    double u = 0.784932344976639262 - 0.145263899385486377 * xm;
+    u = -1.83469277483613086 + u * xm;
+    u = 2.44693122563534430 + u * xm;
+    u = -2.11499494167371287 + u * xm;
+    u = 1.50819193781584896 + u * xm;
+    u = 0.354895765043919860 + u * xm;
+    double t2 = u * u * u;
+    double ym = u * (t2 + 2.0 * xm) / (2.0 * t2 + xm) * cdist__cbrt_factor[2 + xe % 3];
+    return ym * cdist__pow2(xe / 3); /* exact: |xe / 3| <= 341 */
 }
 
 #endif

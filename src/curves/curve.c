@@ -486,7 +486,7 @@ static cdist_status curve_query(cdist_query *q, cdist_curve_fn f, void *user, do
      * farther between these positions, and of underflow for tiny curves. */
     double L = cc.r;
     for (int i = 0; i <= CD_CURVE_SCALE_PROBES; i++) {
-        vec3 P, D;
+        vec3 P = v3(0, 0, 0), D; /* set by user_eval on success (gcc 12 cannot see it) */
         double t = i == CD_CURVE_SCALE_PROBES ? t1 : t0 + (t1 - t0) * ((double)i / CD_CURVE_SCALE_PROBES);
         if ((st = user_eval(q, &u, t, &P, &D))) return st;
         L = fmax(L, v_maxabs(P));
