@@ -3,6 +3,7 @@
  * against closed forms: built against the internal library. */
 #include <float.h>
 #include <math.h>
+#include <stdio.h>
 
 #include "check.h"
 #include "internal.h"
@@ -22,6 +23,12 @@ static double cube_f(const void *ctx, double x)
     double d;
     return cube_fdf(ctx, x, &d);
 }
+/* the same with f'' = 6 x, for the Halley solver */
+static double cube_fd2f(const void *ctx, double x, double *df, double *d2f)
+{
+    *d2f = 6 * x;
+    return cube_fdf(ctx, x, df);
+}
 /* a triple root: f(x) = (x - 0.3)^3 + 1e-12 (x - 0.3) (root 0.3, as F' near a tangent line) */
 static double triple_fdf(const void *ctx, double x, double *df)
 {
@@ -30,6 +37,22 @@ static double triple_fdf(const void *ctx, double x, double *df)
     double u = x - 0.3;
     *df = 3 * u * u + 1e-12;
     return u * u * u + 1e-12 * u;
+}
+static double triple_fd2f(const void *ctx, double x, double *df, double *d2f)
+{
+    *d2f = 6 * (x - 0.3);
+    return triple_fdf(ctx, x, df);
+}
+/* a nearly double root: f = (x - 0.4) |x - 0.4| + 1e-12 (x - 0.4) (Halley's steps shrink the error
+ * by only 1/3 there) */
+static double double_fd2f(const void *ctx, double x, double *df, double *d2f)
+{
+    (void)ctx;
+    evals++;
+    double u = x - 0.4;
+    *df = 2 * fabs(u) + 1e-12;
+    *d2f = u >= 0 ? 2 : -2;
+    return u * fabs(u) + 1e-12 * u;
 }
 /* an odd triple root (x^3), for the mirror symmetry */
 static double odd_fdf(const void *ctx, double x, double *df)
@@ -46,6 +69,11 @@ static double lin_fdf(const void *ctx, double x, double *df)
     *df = 2.0;
     return 2.0 * (x + 0.75);
 }
+static double lin_fd2f(const void *ctx, double x, double *df, double *d2f)
+{
+    *d2f = 0.0;
+    return lin_fdf(ctx, x, df);
+}
 /* -cos(x - a): minimum at a */
 static double cosmin(const void *ctx, double x) { return -cos(x - *(const double *)ctx); }
 /* a failing callback */
@@ -54,6 +82,16 @@ static double fail_fdf(const void *ctx, double x, double *df)
     (void)ctx;
     *df = 1;
     return x > 0.5 ? NAN : x - 0.7;
+}
+static double fail_fd2f(const void *ctx, double x, double *df, double *d2f)
+{
+    *d2f = 0.0;
+    return fail_fdf(ctx, x, df);
+}
+static double odd_fd2f(const void *ctx, double x, double *df, double *d2f)
+{
+    *d2f = 6 * x;
+    return odd_fdf(ctx, x, df);
 }
 
 int main(void)
@@ -78,38 +116,57 @@ int main(void)
     CHECK(fabs(x - a) <= 2e-8 && fabs(fm + 1) <= 1e-15, "golden min: %.17g vs %.17g", x, a);
     x = cdist__root_newton(fail_fdf, NULL, 0.0, 1.0, +1, rel, CD_ROOT_ABS, CD_ROOT_MAX_ITER);
     CHECK(isnan(x), "failing callback gives NaN (%g)", x);
-    /* the multiple-root variant: same answers on a simple root, far fewer steps on a triple
-     * one (plain Newton shrinks the error by only 2/3 per step there) */
-    evals = 0;
-    x = cdist__root_newton_accel(cube_fdf, NULL, 0.0, 5.0, NAN, +1, rel, CD_ROOT_ABS, CD_ROOT_MAX_ITER);
-    CHECK(fabs(x - c) <= 4 * DBL_EPSILON && evals < 40, "newton_accel simple: %.17g vs %.17g (%d)", x, c, evals);
+    /* the Halley variant: same answers on a simple root in fewer steps than Newton, and far
+     * fewer steps on multiple roots (plain Newton shrinks the error by only 2/3 per step on a
+     * triple one) */
     int plain;
+    evals = 0;
+    x = cdist__root_halley_accel(cube_fd2f, NULL, 0.0, 5.0, NAN, +1, rel, CD_ROOT_ABS, CD_ROOT_MAX_ITER);
+    CHECK(fabs(x - c) <= 4 * DBL_EPSILON && evals < 40, "halley_accel simple: %.17g vs %.17g (%d)", x, c, evals);
+    evals = 0;
+    x = cdist__root_newton(cube_fdf, NULL, 1.0, 1.5, +1, rel, CD_ROOT_ABS, CD_ROOT_MAX_ITER);
+    plain = evals;
+    evals = 0;
+    x = cdist__root_halley_accel(cube_fd2f, NULL, 1.0, 1.5, NAN, +1, rel, CD_ROOT_ABS, CD_ROOT_MAX_ITER);
+    CHECK(fabs(x - c) <= 4 * DBL_EPSILON && evals < plain, "halley_accel from the midpoint: %.17g (%d evaluations, Newton %d)",
+          x, evals, plain);
+    /* a start within 1e-4 of the root: two evaluations (the second step is predicted below the tolerance) */
+    evals = 0;
+    x = cdist__root_halley_accel(cube_fd2f, NULL, 1.0, 1.5, c + 1e-4, +1, rel, CD_ROOT_ABS, CD_ROOT_MAX_ITER);
+    CHECK(fabs(x - c) <= 4 * DBL_EPSILON && evals == 2, "halley_accel from a close start: %.17g (%d evaluations)", x,
+          evals);
     evals = 0;
     x = cdist__root_newton(triple_fdf, NULL, -0.9, 1.0, +1, rel, CD_ROOT_ABS, CD_ROOT_MAX_ITER);
     plain = evals;
     CHECK(fabs(x - 0.3) <= 1e-9, "newton triple: %.17g", x);
     evals = 0;
-    x = cdist__root_newton_accel(triple_fdf, NULL, -0.9, 1.0, NAN, +1, rel, CD_ROOT_ABS, CD_ROOT_MAX_ITER);
-    CHECK(fabs(x - 0.3) <= 1e-9, "newton_accel triple: %.17g", x);
-    CHECK(2 * evals <= plain, "newton_accel took %d evaluations on a triple root, plain Newton %d", evals, plain);
-    x = cdist__root_newton_accel(triple_fdf, NULL, 0.2, 5.0, NAN, +1, rel, CD_ROOT_ABS, CD_ROOT_MAX_ITER);
-    CHECK(fabs(x - 0.3) <= 1e-9, "newton_accel triple near the bracket end: %.17g", x);
-    double xl = cdist__root_newton_accel(odd_fdf, NULL, -0.7, 0.3, NAN, +1, rel, CD_ROOT_ABS, CD_ROOT_MAX_ITER);
-    double xr = cdist__root_newton_accel(odd_fdf, NULL, -0.3, 0.7, NAN, +1, rel, CD_ROOT_ABS, CD_ROOT_MAX_ITER);
-    CHECK(xl == -xr && fabs(xl) <= 1e-12, "newton_accel mirrored brackets: %g %g", xl, xr);
+    x = cdist__root_halley_accel(triple_fd2f, NULL, -0.9, 1.0, NAN, +1, rel, CD_ROOT_ABS, CD_ROOT_MAX_ITER);
+    CHECK(fabs(x - 0.3) <= 1e-9, "halley_accel triple: %.17g", x);
+    CHECK(2 * evals <= plain, "halley_accel took %d evaluations on a triple root, plain Newton %d", evals, plain);
+    x = cdist__root_halley_accel(triple_fd2f, NULL, 0.2, 5.0, NAN, +1, rel, CD_ROOT_ABS, CD_ROOT_MAX_ITER);
+    CHECK(fabs(x - 0.3) <= 1e-9, "halley_accel triple near the bracket end: %.17g", x);
+    evals = 0;
+    x = cdist__root_halley_accel(double_fd2f, NULL, -0.7, 1.0, NAN, +1, rel, CD_ROOT_ABS, CD_ROOT_MAX_ITER);
+    CHECK(fabs(x - 0.4) <= 1e-9 && evals <= 30, "halley_accel double root: %.17g (%d evaluations)", x, evals);
+    double xl = cdist__root_halley_accel(odd_fd2f, NULL, -0.7, 0.3, NAN, +1, rel, CD_ROOT_ABS, CD_ROOT_MAX_ITER);
+    double xr = cdist__root_halley_accel(odd_fd2f, NULL, -0.3, 0.7, NAN, +1, rel, CD_ROOT_ABS, CD_ROOT_MAX_ITER);
+    CHECK(xl == -xr && fabs(xl) <= 1e-12, "halley_accel mirrored brackets: %g %g", xl, xr);
+    xl = cdist__root_halley_accel(odd_fd2f, NULL, -0.7, 0.3, -0.01, +1, rel, CD_ROOT_ABS, CD_ROOT_MAX_ITER);
+    xr = cdist__root_halley_accel(odd_fd2f, NULL, -0.3, 0.7, 0.01, +1, rel, CD_ROOT_ABS, CD_ROOT_MAX_ITER);
+    CHECK(xl == -xr && fabs(xl) <= 1e-12, "halley_accel mirrored brackets and starts: %g %g", xl, xr);
     /* a root at an end of the bracket: Newton lands on the end, which plain Newton rejects
      * and then bisects towards for ~60 steps */
     evals = 0;
     x = cdist__root_newton(lin_fdf, NULL, -0.75, 0.5, +1, rel, CD_ROOT_ABS, CD_ROOT_MAX_ITER);
     plain = evals;
     evals = 0;
-    double xe = cdist__root_newton_accel(lin_fdf, NULL, -0.75, 0.5, NAN, +1, rel, CD_ROOT_ABS, CD_ROOT_MAX_ITER);
+    double xe = cdist__root_halley_accel(lin_fd2f, NULL, -0.75, 0.5, NAN, +1, rel, CD_ROOT_ABS, CD_ROOT_MAX_ITER);
     CHECK(fabs(x + 0.75) <= 1e-15 && fabs(xe + 0.75) <= 1e-15, "root at the bracket end: %.17g %.17g", x, xe);
-    CHECK(4 * evals <= plain, "newton_accel took %d evaluations for a root at the end, plain Newton %d", evals, plain);
-    x = cdist__root_newton_accel(lin_fdf, NULL, -2.0, -0.75, NAN, +1, rel, CD_ROOT_ABS, CD_ROOT_MAX_ITER);
+    CHECK(4 * evals <= plain, "halley_accel took %d evaluations for a root at the end, plain Newton %d", evals, plain);
+    x = cdist__root_halley_accel(lin_fd2f, NULL, -2.0, -0.75, NAN, +1, rel, CD_ROOT_ABS, CD_ROOT_MAX_ITER);
     CHECK(fabs(x + 0.75) <= 1e-15, "root at the upper end: %.17g", x);
-    x = cdist__root_newton_accel(fail_fdf, NULL, 0.0, 1.0, NAN, +1, rel, CD_ROOT_ABS, CD_ROOT_MAX_ITER);
-    CHECK(isnan(x), "newton_accel: failing callback gives NaN (%g)", x);
+    x = cdist__root_halley_accel(fail_fd2f, NULL, 0.0, 1.0, NAN, +1, rel, CD_ROOT_ABS, CD_ROOT_MAX_ITER);
+    CHECK(isnan(x), "halley_accel: failing callback gives NaN (%g)", x);
 
     /* error-free transforms */
     double lo, s = cdist__two_sum(1.0, 1e-30, &lo);
@@ -131,6 +188,17 @@ int main(void)
         if (ulps > worst) worst = (int)ceil(ulps);
     }
     CHECK(worst <= 2, "polar angle off atan2 by %d ulps", worst);
+    /* the inline cube root: the C library's algorithm (glibc's bit for bit), within 1 ulp of cbrt */
+    int cbrt_far = 0, cbrt_same = 0;
+    for (int i = 0; i < 200000; i++) {
+        double u = ldexp(0.5 + 0.5 * rand() / (double)RAND_MAX, rand() % 2040 - 1018);
+        double want = cbrt(u), got = cdist__cbrt(u);
+        cbrt_same += got == want;
+        cbrt_far += !(fabs(got - want) <= nextafter(want, INFINITY) - want);
+    }
+    CHECK(cbrt_far == 0 && fabs(cdist__cbrt(27.0) - 3.0) <= 4 * DBL_EPSILON && cdist__cbrt(0.0) == 0.0 && cdist__cbrt(0x1p-1060) == cbrt(0x1p-1060),
+          "cdist__cbrt: %d of 200000 more than 1 ulp from cbrt", cbrt_far);
+    printf("  cdist__cbrt equal to the C library's cbrt on %d of 200000\n", cbrt_same);
     /* scaling */
     CHECK(cdist__scale_exponent(1.0) == 0 && cdist__scale_exponent(3.0) == 1 && cdist__scale_exponent(0.75) == -1, "exponent");
     CHECK(cdist__scale_exponent(1e-310) == -CD_SCALE_MAX_EXP && cdist__scale_exponent(0.0) == 0, "exponent clamp");

@@ -3,6 +3,7 @@
  *
  * A family describes its function by a callback and a context pointer:
  *     cdist__fdf_fn: f(x) returned, f'(x) written to *df   (for the Newton-based solvers)
+ *     cdist__fd2f_fn: the same, and f''(x) written to *d2f   (Halley's steps)
  *     cdist__f_fn:   f(x) returned                         (derivative-free Brent solvers)
  * A callback that fails (e.g. a user curve returning an error) returns NaN and records the
  * reason in its context; every solver then stops and returns NaN.
@@ -11,7 +12,7 @@
  * library's defaults are CD_ROOT_REL_ULPS * eps and CD_ROOT_ABS (src/base/tolerances.h), for
  * problems scaled to L in [1, 2) (src/base/numeric.h).
  *
- * cdist__root_newton, cdist__root_newton_accel and cdist__root_polish are always inlined so that a
+ * cdist__root_newton, cdist__root_halley_accel and cdist__root_polish are always inlined so that a
  * hot family (line-circle) gets them specialised for its callback (the call through the pointer
  * is inlined away); the Brent solvers are out of line (roots.c). */
 #ifndef CDIST_BASE_ROOTS_H
@@ -24,6 +25,7 @@
 
 typedef double (*cdist__fdf_fn)(const void *ctx, double x, double *df);
 typedef double (*cdist__f_fn)(const void *ctx, double x);
+typedef double (*cdist__fd2f_fn)(const void *ctx, double x, double *df, double *d2f);
 
 /* Root of f in [lo, hi] where f increases through zero (dir = +1: f(lo) <= 0 <= f(hi)) or
  * decreases (dir = -1), the ends' values not needed. Safeguarded Newton (rtsafe): starts at the
@@ -63,50 +65,67 @@ CD_INLINE double cdist__root_newton(cdist__fdf_fn fdf, const void *ctx, double l
     return x;
 }
 
-/* cdist__root_newton with accelerations, for a hot family (line-circle); same bracket
- * safeguards, and it differs from cdist__root_newton's answer by less than the tolerance:
+/* cdist__root_newton's bracket and safeguards with Halley's steps and accelerations, for a hot
+ * family (line-circle). The callback also writes f'' (f, f' and f'' may all be multiplied by one
+ * positive factor, which can vary with x: only signs and the ratios f / f', f f'' / f'^2 are
+ * used; where f'^2 leaves [2^-1000, 2^1000] the step is f / f' itself). It differs from
+ * cdist__root_newton's answer by less than the tolerance:
  * - it starts at x0 (a caller's estimate; the midpoint when x0 is not inside (lo, hi), e.g. NaN);
- * - the last step of a quadratic convergence: with e' = C e^2, C estimated from the last two
- *   Newton steps (C = |step| / |prev|^2), when the step after this one would be below the
- *   tolerance with a margin of 4, the point after this step is returned without evaluating
+ * - the step is Halley's, the Newton step d = f / f' times 1 / (1 - C d), C = f'' / (2 f') (the
+ *   error cubed each step instead of squared), when |C d| < 1/2 (the factor in (2/3, 2)), and
+ *   Newton's otherwise (far from a root, or f'' not a number): one division either way,
+ *   2 f f' / (2 f'^2 - f f'') or f f' / f'^2;
+ * - the last step of a fast convergence: with e' = K e^3 after a Halley step, K = (C^2 - C')/3
+ *   from C here and at the last point, or e' = K e^2 after two Newton steps, K = |step| /
+ *   |prev|^2, when the step after this one would be below the tolerance with a margin of 4, the
+ *   point after this step is returned without evaluating there;
+ * - a root that may be multiple (a tangency, where f ~ (x - x*)^m and a step only shrinks the
+ *   error by (m - 1)/(m + 1), Halley, or (m - 1)/m, Newton): when two successive steps shrank
+ *   by a steady ratio q in [1/3, 1), the step is taken 1/(1 - q) times (the sum of the
+ *   geometric series of the remaining steps), or, past the bracket's end, 63/64 of the way
  *   there;
- * - a root that may be multiple (a tangency, where f ~ (x - x*)^m and a Newton step only shrinks
- *   the error by (m - 1)/m): when two successive Newton steps shrank by a steady ratio q in
- *   [1/2, 1), the step is taken 1/(1 - q) = m times (exact for an m-fold root), or, past the
- *   bracket's end, 63/64 of the way there;
- * - a root at an end of the bracket (a Newton step lands on or past it): 1023/1024 of the way
- *   there instead of a bisection, every other time.
- * At a simple root inside the bracket the steps are cdist__root_newton's. Commutes with
- * x -> -x for an odd f (and mirrored x0) as cdist__root_newton does. */
-CD_INLINE double cdist__root_newton_accel(cdist__fdf_fn fdf, const void *ctx, double lo, double hi, double x0,
+ * - a root at an end of the bracket (a step lands on or past it): 1023/1024 of the way there
+ *   instead of a bisection, every other time.
+ * Every operation commutes with x -> -x for an odd f (f' even, f'' odd) and a mirrored x0, as
+ * cdist__root_newton's do. */
+
+CD_INLINE double cdist__root_halley_accel(cdist__fd2f_fn fd2f, const void *ctx, double lo, double hi, double x0,
                                           int dir, double rel, double abs, int max_iter)
 {
     if (!(lo < hi)) return lo;
     double x = (x0 > lo && x0 < hi) ? x0 : 0.5 * (lo + hi), dxold = hi - lo, dx = dxold;
-    /* the last two Newton steps' lengths (0: none since a bisection or an extrapolation); the
-     * ratios q = |step| / p1 and p1 / p2 are compared multiplied out, without a division in
-     * the loop's chain */
+    /* the last two steps' lengths (0: none since a bisection or an extrapolation); the ratios
+     * q = |step| / p1 and p1 / p2 are compared multiplied out, without a division in the
+     * loop's chain */
     double p1 = 0.0, p2 = 0.0;
     int jumped = 0; /* the last step went to near an end of the bracket */
+    int ph = 0;     /* the last step of length p1 was Halley's */
+    double cp = 0.0, xp = 0.0; /* C = f'' / (2 f') and x at the last point (where p1 > 0) */
     for (int it = 0; it < max_iter; it++) {
-        double df, f = fdf(ctx, x, &df);
+        double df, d2f, f = fd2f(ctx, x, &df, &d2f);
         if (f != f) return NAN;
         if (dir < 0) {
             f = -f;
             df = -df;
+            d2f = -d2f;
         }
         if (f == 0.0) return x;
         if (f < 0.0) lo = x;
         else hi = x;
-        double step = f / df, xn = x - step, as = fabs(step);
+        double dd = df * df, fd = f * df;
+        int scaled = dd >= 0x1p-1000 && dd <= 0x1p1000; /* else Newton's step, as f / f' */
+        int halley = scaled && fabs(f * d2f) < dd;      /* |C d| < 1/2: the denominator is in (dd, 3 dd) */
+        double step = !scaled ? f / df : halley ? (2.0 * fd) / CD_MADD(-f, d2f, 2.0 * dd) : fd / dd;
+        double xn = x - step, as = fabs(step);
         if (df > 0.0 && (as <= rel * fabs(x) || as <= abs)) return xn; /* converged */
+        double c = d2f / (2.0 * df); /* C, free of the callback's factor (beside the step's chain) */
         int past = df > 0.0 && !(xn > lo && xn < hi);
         if (past && !jumped) {
-            /* Newton lands on or past an end: the root is at that end within rounding (F' of a
-             * line through the axis is linear up to it; near a tangency it flattens there), and
-             * bisection would take ~60 steps to reach it. A point 1023/1024 of the way to that
-             * end shrinks the bracket 1024 times when so, and costs one step otherwise (every
-             * other such step bisects, so the bracket at least halves every two steps). */
+            /* the step lands on or past an end: the root is at that end within rounding (F' of
+             * a line through the axis is linear up to it; near a tangency it flattens there),
+             * and bisection would take ~60 steps to reach it. A point 1023/1024 of the way to
+             * that end shrinks the bracket 1024 times when so, and costs one step otherwise
+             * (every other such step bisects, so the bracket at least halves every two steps). */
             dxold = dx;
             xn = (xn >= hi) ? hi - 0x1p-10 * (hi - x) : lo + 0x1p-10 * (x - lo);
             dx = fabs(xn - x);
@@ -120,12 +139,20 @@ CD_INLINE double cdist__root_newton_accel(cdist__fdf_fn fdf, const void *ctx, do
             jumped = 0;
         } else {
             jumped = 0;
-            /* quadratic: q <= 1/4 and the next step, 4 q^2 |step|, below the tolerance */
-            if (4.0 * as <= p1 && 4.0 * (as * as) * as <= cdist__fmax(rel * fabs(xn), abs) * (p1 * p1)) return xn;
-            /* linear with a steady q in [1/2, 1): |q - p1/p2| <= q/8 */
-            if (2.0 * as >= p1 && as < p1 && fabs(as * p2 - p1 * p1) <= 0.125 * (as * p2)) {
-                double xm = x - step * (p1 / (p1 - as)); /* the step times m = 1 / (1 - q) */
-                /* beyond the bracket: the m-fold point lies past its end (at a tangency F' has
+            /* fast: the next step below the tolerance with a margin of 4. After Halley's step
+             * it is K |step|^3 with Halley's constant K = C^2 - f'''/(6 f') = (C^2 - C')/3 at
+             * the root (C' = f'''/(2 f') - 2 C^2), C' taken from C here and at the last point:
+             * local, not a K fitted to earlier steps, which can be 1000 times too small where
+             * the steps shrank faster than the asymptotic rate. After Newton's (two in a row),
+             * K |step|^2 with K = |step| / p1^2 fitted to the last two, q <= 1/4. */
+            double tol = cdist__fmax(rel * fabs(xn), abs);
+            if (halley ? p1 > 0.0 && 4.0 * fabs(CD_MADD(c * c, x - xp, cp - c)) * (as * as * as) <= 3.0 * tol * fabs(x - xp)
+                       : !ph && 4.0 * as <= p1 && 4.0 * (as * as) * as <= tol * (p1 * p1))
+                return xn;
+            /* linear with a steady q in [1/3, 1): |q - p1/p2| <= q/8 */
+            if (3.0 * as >= p1 && as < p1 && fabs(as * p2 - p1 * p1) <= 0.125 * (as * p2)) {
+                double xm = x - step * (p1 / (p1 - as)); /* the step times 1 / (1 - q) */
+                /* beyond the bracket: the multiple point lies past its end (at a tangency F' has
                  * its inflection there) */
                 if (!(xm < hi)) xm = hi - 0x1p-6 * (hi - x);
                 if (!(xm > lo)) xm = lo + 0x1p-6 * (x - lo);
@@ -134,10 +161,13 @@ CD_INLINE double cdist__root_newton_accel(cdist__fdf_fn fdf, const void *ctx, do
             } else {
                 p2 = p1;
                 p1 = as;
+                ph = halley;
             }
             dxold = dx;
             dx = fabs(xn - x);
         }
+        cp = c;
+        xp = x;
         x = xn;
         if (dx <= rel * fabs(x) || !(hi - lo > abs)) break;
     }

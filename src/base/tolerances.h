@@ -38,8 +38,9 @@
  * the solvers on problems scaled to L in [1, 2), where 2^-62 is far below eps * L). */
 #define CD_ROOT_REL_ULPS 2.0
 #define CD_ROOT_ABS 0x1p-62
-/* Iteration caps: safeguarded Newton halves the bracket at worst, so 200 steps cover any
- * bracket of doubles; Newton polishing from a good start converges in a few steps. */
+/* Iteration caps: the safeguarded solvers halve the bracket at worst every step (rtsafe) or every
+ * two steps (the accelerated one), so 200 steps cover any bracket of doubles; Newton polishing
+ * from a good start converges in a few steps. */
 #define CD_ROOT_MAX_ITER 200
 #define CD_POLISH_MAX_ITER 60
 

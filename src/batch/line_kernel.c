@@ -18,8 +18,8 @@ _Static_assert(offsetof(cdist_circle, normal) == 24 && offsetof(cdist_circle, ra
 
 enum { LK_LINE = 0, LK_RAY = 1, LK_SEGMENT = 2 };
 
-/* Newton iterations the lanes of a bracket group take together (a random line's bracket takes
- * 2 to 6, a root at a ray's start about 10); the brackets that need more go on together in a
+/* Solver iterations the lanes of a bracket group take together (a random line's bracket takes
+ * 2 to 5, a root at a ray's start about 10); the brackets that need more go on together in a
  * second pass (stage_long, where the screen of nearly multiple roots applies). */
 #define LK_LANE_ITER 12
 /* Groups of W brackets iterating side by side in the vector kernels (1, 2 and 4 measured: 2
@@ -27,32 +27,26 @@ enum { LK_LINE = 0, LK_RAY = 1, LK_SEGMENT = 2 };
 #define LK_WIDE_CHAINS 2
 
 /* The per-entry state of a block of up to 64 entries between the kernel's stages, in columns:
- * the model of linear_circle (r, a, m0, x1, |x1|, c2, h and three invariants of fdf_scaled), the
- * core's and the outer scale factors, the brackets of robust_roots and the Newton start of a
- * single one (NaN for two), the range, the smallest candidate so far; then the brackets of each
- * entry and the list of brackets to solve. */
+ * the model of linear_circle (r, a, m0, x1, |x1|, c2, h and three invariants of fd2f_scaled), the
+ * core's and the outer scale factors, the brackets of robust_roots and the start of a single
+ * one (NaN for two), the range, the smallest candidate so far; then the brackets of each entry
+ * with their starts and the list of brackets to solve. */
 enum {
     LK_F_R, LK_F_A, LK_F_M0, LK_F_X1, LK_F_AX1, LK_F_C2, LK_F_H, LK_F_K, LK_F_RR2, LK_F_DFC,
     LK_F_UP, LK_F_OUTER, LK_F_BLO, LK_F_BHI, LK_F_X0, LK_F_SMIN, LK_F_SMAX, LK_F_BEST, LK_NF
 };
-/* The Newton state of a long bracket between stage_newton and stage_long (KN(newton)). */
-enum { LK_S_X, LK_S_LO, LK_S_HI, LK_S_DX, LK_S_DXOLD, LK_S_P1, LK_S_P2, LK_S_JUMPED, LK_NS };
+/* The solver state of a long bracket between stage_solve and stage_long (KN(solver)). */
+enum { LK_S_X, LK_S_LO, LK_S_HI, LK_S_DX, LK_S_DXOLD, LK_S_P1, LK_S_P2, LK_S_JUMPED, LK_S_PH, LK_S_CP, LK_S_XP, LK_NS };
 typedef struct lk_block {
     double f[LK_NF][64];
-    double br[2][2][64]; /* [left/right branch][lo/hi][entry] */
+    double br[2][3][64]; /* [left/right branch][lo/hi/start][entry] */
     unsigned char ok[64], two[64], has[2][64];
     int item_entry[128];
     double item_lo[128], item_hi[128], item_x0[128], item_d2[128];
     unsigned char item_fail[128];
     int n_long, long_item[128];  /* brackets still iterating after LK_LANE_ITER iterations */
-    double long_st[LK_NS][128];  /* and their Newton state */
+    double long_st[LK_NS][128];  /* and their solver state */
 } lk_block;
-
-#ifdef CD_X86_KERNELS
-/* 2^(k/3), k = -2..2, as the C library's cbrt has them (1.0 / SQR_CBRT2 etc.). */
-static const double lk_cbrt_factor[5] = {1.0 / 1.5874010519681994748, 1.0 / 1.2599210498948731648, 1.0,
-                                         1.2599210498948731648, 1.5874010519681994748};
-#endif
 
 /* CD_MADD of the scalar code: a hardware fma only when the whole build targets it. */
 #ifdef FP_FAST_FMA
@@ -101,32 +95,18 @@ CD_LANES_TARGET_POP
 
 static uint64_t kernel_scalar(const cdist__job *job, int shape, double tol, size_t lo, size_t count)
 {
-    return block_1(job, shape, tol, lo, count, 0);
+    return block_1(job, shape, tol, lo, count);
 }
 
 #ifdef CD_X86_KERNELS
-/* Whether an instantiation's cube root is the C library's (its cbrt_matches), checked once:
- * 0 unknown, 1 yes, -1 no (a benign race: every thread finds the same). */
-static int cbrt_verified(int *known, int (*matches)(void))
-{
-    int v = __atomic_load_n(known, __ATOMIC_RELAXED);
-    if (!v) {
-        v = matches() ? 1 : -1;
-        __atomic_store_n(known, v, __ATOMIC_RELAXED);
-    }
-    return v > 0;
-}
-
-static int cbrt_known_8, cbrt_known_4;
-
 static uint64_t kernel_avx512(const cdist__job *job, int shape, double tol, size_t lo, size_t count)
 {
-    return block_8(job, shape, tol, lo, count, cbrt_verified(&cbrt_known_8, cbrt_matches_8));
+    return block_8(job, shape, tol, lo, count);
 }
 
 static uint64_t kernel_avx2(const cdist__job *job, int shape, double tol, size_t lo, size_t count)
 {
-    return block_4(job, shape, tol, lo, count, cbrt_verified(&cbrt_known_4, cbrt_matches_4));
+    return block_4(job, shape, tol, lo, count);
 }
 #endif
 

@@ -5,16 +5,16 @@
  * the operations (vadd, vsqrt, vfma, vsel, mand, ...; see line_kernel.c).
  * Every operation is the one of the scalar path (validation, src/api/validate.c; framing and
  * scaling, run_scaled/run/cdist__line_near_centre; the ROBUST core, linear_circle and
- * robust_roots with cdist__root_newton_accel on fdf_scaled, src/lines/line_circle.c), lane by lane,
- * in the same order and with the same roundings (fma where the scalar code calls fma, CD_MADD
- * where it uses CD_MADD, the C library's cbrt): the distance of an entry the kernel answers is
- * the single query's, bit for bit. An entry whose inputs or intermediate values would take any
- * other branch of the scalar path (a failed check, a tiny or subnormal vector, the
- * perpendicular or zero-radius cases, a Newton iterate near the circle's axis, a NaN) is left
- * to the scalar path.
+ * robust_roots with its starts and cdist__root_halley_accel on fd2f_scaled,
+ * src/lines/line_circle.c), lane by lane, in the same order and with the same roundings (fma
+ * where the scalar code calls fma, CD_MADD where it uses CD_MADD, cdist__cbrt's algorithm): the
+ * distance of an entry the kernel answers is the single query's, bit for bit. An entry whose
+ * inputs or intermediate values would take any other branch of the scalar path (a failed check,
+ * a tiny or subnormal vector, the perpendicular or zero-radius cases, an iterate near the
+ * circle's axis, a NaN) is left to the scalar path.
  * Stages over a block of up to 64 entries: 1 (all entries, W at a time) validation, frame and
- * model; 2 (the entries where F' is not monotone) the branch brackets; 3 (every bracket) Newton;
- * 4 (all entries) the distance. */
+ * model; 2 (the entries where F' is not monotone) the branch brackets; 3 (every bracket) the
+ * solver; 4 (all entries) the distance. */
 
 /* Comparisons under a mask: m and (a op b); vngt_m: m and !(a > b). */
 #ifdef vcmp_mask
@@ -36,58 +36,62 @@
 /* The model of linear_circle (lc_model) in lanes. */
 typedef struct KN(model) {
     V r, a, m0, x1, ax1, c2, h;
-    V k, rr2, dfc; /* invariants of fdf_scaled: a^2 + m0^2, (|x1| - r)(|x1| + r), -(r m0 m0)(x1^2) */
+    V k, rr2, dfc, d2c; /* invariants of fd2f_scaled: a^2 + m0^2, (|x1| - r)(|x1| + r), -(r m0 m0)(x1^2),
+                         * -3 m0 dfc (d2c: set by load_model, for the solver) */
 } KN(model);
 
-/* fdf_scaled of line_circle.c; *ok cleared where it would call fdf (rho^2 out of range). */
-CD_INLINE V KN(fdf_scaled)(const KN(model) *m, V s, V *df, M *ok)
+/* fd2f_scaled of line_circle.c; *ok cleared where it would call fd2f (rho^2 out of range). */
+CD_INLINE V KN(fd2f_scaled)(const KN(model) *m, V s, V *df, V *d2f, M *ok)
 {
     V h = vmadd(m->a, s, m->h), x2 = vmadd(m->m0, s, m->c2);
     V rho2 = vmadd(x2, x2, vmul(m->x1, m->x1));
-    *ok = mand(vge(rho2, vset(0x1p-200)), vle(rho2, vset(0x1p200)));
+    *ok = mand(vge(rho2, vset(0x1p-100)), vle(rho2, vset(0x1p100)));
     V rho = vsqrt(rho2);
     V num = vmadd(x2, x2, m->rr2);
-    V ah = vmul(m->a, h), r2 = vmul(m->r, rho2), q2 = vmul(rho2, rho2);
-    *df = vmadd(vmadd(m->k, r2, m->dfc), rho, vmadd(m->k, q2, vmul(m->dfc, m->r)));
-    return vmadd(vmul(ah, r2), rho, vmadd(ah, q2, vmul(vmul(m->m0, x2), vmul(num, rho2))));
+    V ah = vmul(m->a, h), r2 = vmul(m->r, rho2), q2 = vmul(rho2, rho2), c3 = vmul(m->d2c, x2);
+    *df = vmadd(vmul(vmadd(m->k, r2, m->dfc), rho2), rho, vmul(vmadd(m->k, q2, vmul(m->dfc, m->r)), rho2));
+    *d2f = vmadd(c3, rho, vmul(c3, m->r));
+    return vmadd(vmul(vmul(ah, r2), rho2), rho,
+                 vmul(vmadd(ah, q2, vmul(vmul(m->m0, x2), vmul(num, rho2))), rho2));
 }
 
-/* The state of cdist__root_newton_accel(fdf_scaled, m, lo, hi, x0, +1, CD_ROOT_REL_ULPS * eps,
+/* The state of cdist__root_halley_accel(fd2f_scaled, m, lo, hi, x0, +1, CD_ROOT_REL_ULPS * eps,
  * CD_ROOT_ABS, CD_ROOT_MAX_ITER) in each lane: act = still iterating, res = the root of a lane
- * that stopped; p1, p2 the last two Newton steps' lengths, jumped = the last step went to near
- * an end of the bracket. */
-typedef struct KN(newton) {
-    V x, lo, hi, dx, dxold, p1, p2, res;
-    M jumped, act;
-} KN(newton);
+ * that stopped; p1, p2 the last two steps' lengths, ph = the last of them was Halley's, cp and xp
+ * C = f'' / (2 f') and x at the last point, jumped = the last step went to near an end of the
+ * bracket. */
+typedef struct KN(solver) {
+    V x, lo, hi, dx, dxold, p1, p2, cp, xp, res;
+    M jumped, ph, act;
+} KN(solver);
 
-CD_INLINE KN(newton) KN(newton_start)(V lo, V hi, V x0, M act)
+CD_INLINE KN(solver) KN(solver_start)(V lo, V hi, V x0, M act)
 {
-    KN(newton) s;
+    KN(solver) s;
     s.res = lo; /* also the answer of an empty bracket */
     s.act = mand(act, vlt(lo, hi));
     s.x = vsel(mand(vgt(x0, lo), vlt(x0, hi)), x0, vmul(vset(0.5), vadd(lo, hi)));
     s.lo = lo, s.hi = hi;
     s.dxold = vsub(hi, lo), s.dx = s.dxold;
-    s.p1 = s.p2 = vset(0.0);
-    s.jumped = mfalse();
+    s.p1 = s.p2 = s.cp = s.xp = vset(0.0);
+    s.jumped = s.ph = mfalse();
     return s;
 }
 
-/* One iteration in the lanes of s->act, every branch of cdist__root_newton_accel as a select; a
+/* One iteration in the lanes of s->act, every branch of cdist__root_halley_accel as a select; a
  * lane that stops writes s->res and leaves s->act. Lanes meeting a branch the kernel does not
- * take (fdf instead of fdf_scaled, NaN) are added to *fail. Conditions are taken under the
+ * take (fd2f instead of fd2f_scaled, f'^2 out of the solver's range, NaN) are added to *fail. Conditions are taken under the
  * mask of the lanes they concern (vlt_m etc.: one instruction on AVX-512, whose mask logic is a
  * bottleneck here). */
-CD_INLINE void KN(newton_step)(const KN(model) *m, KN(newton) *s, M *fail)
+CD_INLINE void KN(solver_step)(const KN(model) *m, KN(solver) *s, M *fail)
 {
     const V rel = vset(CD_ROOT_REL_ULPS * DBL_EPSILON), abs_ = vset(CD_ROOT_ABS), half = vset(0.5), zero = vset(0.0);
     V x = s->x, lo = s->lo, hi = s->hi, res = s->res;
     M act = s->act;
-    V df;
+    V df, d2f;
     M rok;
-    V f = KN(fdf_scaled)(m, x, &df, &rok);
-    M good = veq_m(rok, f, f); /* fdf_scaled's own branch, and f not NaN */
+    V f = KN(fd2f_scaled)(m, x, &df, &d2f, &rok);
+    M good = veq_m(rok, f, f); /* fd2f_scaled's own branch, and f not NaN */
     *fail = mor(*fail, mandn(good, act));
     act = mand(act, good);
     M z = veq_m(act, f, zero);
@@ -96,30 +100,45 @@ CD_INLINE void KN(newton_step)(const KN(model) *m, KN(newton) *s, M *fail)
     /* f is a number in the lanes of act: f >= 0 is !(f < 0) */
     lo = vsel(vlt_m(act, f, zero), x, lo);
     hi = vsel(vgt_m(act, f, zero), x, hi);
-    V step = vdiv(f, df), xn = vsub(x, step);
+    /* Halley's step where |f f''| < f'^2, else Newton's; one division */
+    V dd = vmul(df, df), fd = vmul(f, df);
+    M scaled = mand(vge(dd, vset(0x1p-1000)), vle(dd, vset(0x1p1000)));
+    *fail = mor(*fail, mandn(scaled, act));
+    act = mand(act, scaled);
+    M halley = vlt(vabs(vmul(f, d2f)), dd);
+    V step = vdiv(vsel(halley, vmul(vset(2.0), fd), fd), vsel(halley, vmadd(vneg(f), d2f, vmul(vset(2.0), dd)), dd));
+    V xn = vsub(x, step);
     M dfpos = vgt(df, zero);
     V as = vabs(step);
     M conv = mor(vle_m(dfpos, as, vmul(rel, vabs(x))), vle_m(dfpos, as, abs_));
     conv = mand(act, conv);
     res = vsel(conv, xn, res);
     act = mandn(conv, act);
+    V c = vdiv(d2f, vmul(vset(2.0), df));
     M past = mandn(vlt_m(vgt(xn, lo), xn, hi), dfpos);
-    /* to near an end of the bracket (Newton lands on or past it, not twice in a row) */
+    /* to near an end of the bracket (a step lands on or past it, not twice in a row) */
     M jump = mand(act, mandn(s->jumped, past));
     /* bisection: !(df > 0), past, or |2 f| > |dxold df| (and no jump) */
     M newt = vngt_m(mandn(past, mand(act, dfpos)), vabs(vmul(vset(2.0), f)), vabs(vmul(s->dxold, df)));
     newt = mandn(jump, newt);
     M bis = mandn(mor(jump, newt), act);
-    /* Newton: quadratic convergence ending below the tolerance returns the point after the step */
+    /* a fast convergence ending below the tolerance returns the point after the step: the next
+     * step 4 |K| as^3 after Halley's, K = (C^2 - C')/3 from C here and at the last point, or
+     * 4 K as^2 after two of Newton's, K fitted to them */
     V p1 = s->p1, p2 = s->p2;
     /* cdist__fmax(rel |xn|, abs) is vmax's a > b ? a : b, abs_ being a number */
-    M quad = vle_m(vle_m(newt, vmul(vset(4.0), as), p1), vmul(vmul(vset(4.0), vmul(as, as)), as),
-                    vmul(vmax(vmul(rel, vabs(xn)), abs_), vmul(p1, p1)));
+    V tol = vmax(vmul(rel, vabs(xn)), abs_), dxp = vsub(x, s->xp);
+    M quadh = vle_m(vgt_m(mand(newt, halley), p1, zero),
+                    vmul(vmul(vset(4.0), vabs(vmadd(vmul(c, c), dxp, vsub(s->cp, c)))), vmul(vmul(as, as), as)),
+                    vmul(vmul(vset(3.0), tol), vabs(dxp)));
+    M quadn = vle_m(vle_m(mandn(mor(halley, s->ph), newt), vmul(vset(4.0), as), p1), vmul(vmul(vset(4.0), vmul(as, as)), as),
+                    vmul(tol, vmul(p1, p1)));
+    M quad = mor(quadh, quadn);
     res = vsel(quad, xn, res);
     act = mandn(quad, act);
     newt = mandn(quad, newt);
-    /* Newton: a steady linear shrink (a multiple root) extrapolated */
-    M lin = vlt_m(vge_m(newt, vmul(vset(2.0), as), p1), as, p1);
+    /* a steady linear shrink (a multiple root) extrapolated */
+    M lin = vlt_m(vge_m(newt, vmul(vset(3.0), as), p1), as, p1);
     if (many(lin)) {
         V asp2 = vmul(as, p2);
         lin = vle_m(lin, vabs(vsub(asp2, vmul(p1, p1))), vmul(vset(0.125), asp2));
@@ -133,10 +152,13 @@ CD_INLINE void KN(newton_step)(const KN(model) *m, KN(newton) *s, M *fail)
     V xb = vsel(bis, vmul(half, vadd(lo, hi)), xn);
     if (many(jump))
         xb = vsel(jump, vsel(vge(xn, hi), vsub(hi, vmul(vset(0x1p-10), vsub(hi, x))), vadd(lo, vmul(vset(0x1p-10), vsub(x, lo)))), xb);
-    /* the step lengths: kept after a plain Newton step, cleared after the others */
+    /* the step lengths: kept after a plain step, cleared after the others */
     M plain = mandn(lin, newt);
     s->p2 = vsel(plain, p1, vsel(act, zero, p2));
     s->p1 = vsel(plain, as, vsel(act, zero, p1));
+    s->ph = mor(mand(plain, halley), mandn(plain, s->ph));
+    s->cp = vsel(act, c, s->cp);
+    s->xp = vsel(act, x, s->xp);
     s->jumped = mor(jump, mandn(act, s->jumped));
     s->dxold = vsel(act, s->dx, s->dxold);
     V dx = vsel(act, vabs(vsub(xb, x)), s->dx);
@@ -145,6 +167,27 @@ CD_INLINE void KN(newton_step)(const KN(model) *m, KN(newton) *s, M *fail)
     res = vsel(stop, x, res);
     act = mandn(stop, act);
     s->x = x, s->lo = lo, s->hi = hi, s->dx = dx, s->res = res, s->act = act;
+}
+
+/* start_far of line_circle.c on the side sigma (+-1): R = r m0^2, B = mu m0 - c2. */
+CD_INLINE V KN(start_far)(const KN(model) *m, V mu, V R, V B, double sigma)
+{
+    V x2 = vsub(vmul(vset(sigma), R), B);
+    V q = vdiv(vmul(m->x1, m->x1), vmul(x2, x2));
+    return vfma(vmul(vset(sigma), vmul(m->r, m->m0)), vsub(vset(1.0), vmul(vset(0.5), q)), vneg(mu));
+}
+
+/* start_single of line_circle.c (lanes where R <= |x1|). */
+CD_INLINE V KN(start_single)(const KN(model) *m, V mu, V R, V B)
+{
+    V e = vsub(m->ax1, R), N = vmul(vneg(B), m->ax1);
+    M near = vle(vabs(N), vmul(m->ax1, e));
+    V e3 = vmul(vmul(m->x1, m->x1), vmul(vmul(e, e), e)), RN2 = vmul(R, vmul(N, N));
+    V D = vmul(e, vfma(vset(1.5), RN2, e3));
+    V sn = vdiv(vfma(N, vadd(e3, RN2), vmul(vneg(m->c2), D)), vmul(m->m0, D));
+    M pos = vgt(B, vset(0.0));
+    V sf = vsel(pos, KN(start_far)(m, mu, R, B, -1.0), KN(start_far)(m, mu, R, B, 1.0));
+    return vsel(near, sn, sf);
 }
 
 /* rho - r of the model (rho_minus_r) */
@@ -335,8 +378,8 @@ static void KN(stage_frame)(double in[13][W], int shape, double tol, lk_block *b
     V blo = vsub(vneg(mu), rm0), bhi = vadd(vneg(mu), rm0);
     V rm02 = vmul(rm0, m0);
     M single = vle(rm02, md.ax1);
-    /* the Newton start of a single bracket: -mu / (1 - g), G linearised at x2 = 0 */
-    V x0 = vsel(single, vdiv(vmul(vneg(mu), md.ax1), vsub(md.ax1, rm02)), vset(NAN));
+    /* the start of a single bracket (the branches' are stage_branches') */
+    V x0 = vsel(single, KN(start_single)(&md, mu, rm02, vfma(mu, m0, vneg(md.c2))), vset(NAN));
     V best = vset(INFINITY);
     M fail = mfalse();
     if (shape != LK_LINE) { /* the finite ends (offer_end), in the units of the core's range */
@@ -368,6 +411,7 @@ CD_INLINE void KN(load_model)(const lk_block *b, const int *e, KN(model) *m)
         for (int l = 0; l < W; l++) col[f][l] = b->f[f][e[l]];
     m->r = vld(col[0]), m->a = vld(col[1]), m->m0 = vld(col[2]), m->x1 = vld(col[3]), m->ax1 = vld(col[4]);
     m->c2 = vld(col[5]), m->h = vld(col[6]), m->k = vld(col[7]), m->rr2 = vld(col[8]), m->dfc = vld(col[9]);
+    m->d2c = vmul(vmul(vset(-3.0), m->m0), m->dfc);
 }
 
 /* Field f of W entries e[0..W-1]. */
@@ -379,14 +423,9 @@ CD_INLINE V KN(load_field)(const lk_block *b, int f, const int *e)
 }
 
 #ifdef vfrexp_m
-/* Lanes whose cube root KN(cbrt) takes: positive normal numbers. */
-CD_INLINE M KN(cbrt_domain)(V x) { return mand(vge(x, vset(0x1p-1022)), vle(x, vset(DBL_MAX))); }
-
-/* cbrt of the C library (glibc's sysdeps/ieee754/dbl-64/s_cbrt.c: a polynomial guess, one
- * Halley step, the exponent split by 3) for positive normal x, operation by operation. Used
- * only where lk_cbrt_verified found it equal to the library's cbrt (another C library gives
- * other last bits, and the kernel then calls its cbrt). */
-CD_INLINE V KN(cbrt)(V x)
+/* cdist__cbrt (src/base/numeric.h: glibc's algorithm) for positive normal x, operation by
+ * operation. */
+CD_INLINE V KN(cbrt_normal)(V x)
 {
     V xm = vfrexp_m(x), xe = vfrexp_e(x); /* x = xm 2^xe, xm in [0.5, 1) */
     V u = vsub(vset(0.784932344976639262), vmul(vset(0.145263899385486377), xm));
@@ -397,12 +436,26 @@ CD_INLINE V KN(cbrt)(V x)
     u = vadd(vset(0.354895765043919860), vmul(u, xm));
     V t2 = vmul(vmul(u, u), u);
     V q = vtrunc(vdiv(xe, vset(3.0))), r = vsub(xe, vmul(vset(3.0), q)); /* xe / 3 and xe % 3 of C */
-    V f = vsel(veq(r, vset(-2.0)), vset(lk_cbrt_factor[0]),
-               vsel(veq(r, vset(-1.0)), vset(lk_cbrt_factor[1]),
-                    vsel(veq(r, vset(1.0)), vset(lk_cbrt_factor[3]),
-                         vsel(veq(r, vset(2.0)), vset(lk_cbrt_factor[4]), vset(1.0)))));
+    V f = vsel(veq(r, vset(-2.0)), vset(cdist__cbrt_factor[0]),
+               vsel(veq(r, vset(-1.0)), vset(cdist__cbrt_factor[1]),
+                    vsel(veq(r, vset(1.0)), vset(cdist__cbrt_factor[3]),
+                         vsel(veq(r, vset(2.0)), vset(cdist__cbrt_factor[4]), vset(1.0)))));
     V ym = vmul(vdiv(vmul(u, vadd(t2, vmul(vset(2.0), xm))), vadd(vmul(vset(2.0), t2), xm)), f);
     return vscale2(ym, q);
+}
+#endif
+
+/* cdist__cbrt in lanes: KN(cbrt_normal) where every lane is a positive normal number, else
+ * cdist__cbrt lane by lane (the scalar instantiation always). */
+CD_INLINE V KN(cbrt)(V x)
+{
+#ifdef vfrexp_m
+    if (!many(mnot(mand(vge(x, vset(0x1p-1022)), vle(x, vset(DBL_MAX)))))) return KN(cbrt_normal)(x);
+#endif
+    double a[W];
+    vst(a, x);
+    for (int l = 0; l < W; l++) a[l] = cdist__cbrt(a[l]);
+    return vld(a);
 }
 
 /* y[i] = KN(cbrt)(x[i]), n a multiple of W (for the tests). */
@@ -411,59 +464,16 @@ static inline void KN(cbrt_lanes)(const double *x, double *y, int n)
     for (int i = 0; i < n; i += W) vst(&y[i], KN(cbrt)(vld(&x[i])));
 }
 
-/* Whether KN(cbrt) gives the C library's cbrt bit for bit on numbers all over its domain (every
- * binade, pseudo-random mantissas, exact cubes): 1 or 0. */
-static int KN(cbrt_matches)(void)
-{
-    uint64_t state = 0x9E3779B97F4A7C15ull;
-    for (int k = 0; k < 4096; k += W) {
-        double x[W], y[W];
-        for (int l = 0; l < W; l++) {
-            state = state * 6364136223846793005ull + 1442695040888963407ull;
-            uint64_t e = (uint64_t)((k + l) % 2046 + 1), bits = e << 52 | (state >> 12);
-            memcpy(&x[l], &bits, sizeof bits);
-            if ((k + l) % 97 == 0) x[l] = (double)((k + l) % 200 + 1) * (double)((k + l) % 200 + 1) * (double)((k + l) % 200 + 1);
-        }
-        vst(y, KN(cbrt)(vld(x)));
-        for (int l = 0; l < W; l++) {
-            double c = cbrt(x[l]);
-            if (memcmp(&c, &y[l], sizeof c)) return 0;
-        }
-    }
-    return 1;
-}
-#endif
-
 /* Stage 2, the entries e[0..n-1] (n <= W; the rest of e repeats e[0]) where F' is not monotone:
  * the tangent points of slope 1 and the brackets of the branches that hold a local minimum,
  * written to b->br (A: left, B: right) and b->has. */
-static void KN(stage_branches)(lk_block *b, const int *e, int n, int vector_cbrt)
+static void KN(stage_branches)(lk_block *b, const int *e, int n)
 {
     const V zero = vset(0.0);
     KN(model) md;
     KN(load_model)(b, e, &md);
     V blo = KN(load_field)(b, LK_F_BLO, e), bhi = KN(load_field)(b, LK_F_BHI, e);
-    /* the cube roots are the C library's (for bit-identical brackets): its algorithm in lanes
-     * where that was verified (KN(cbrt)), else its function lane by lane */
-    V c1 = vmul(md.m0, md.ax1), cm, cr;
-    (void)vector_cbrt;
-#ifdef vfrexp_m
-    if (vector_cbrt && !many(mnot(mand(KN(cbrt_domain)(c1), KN(cbrt_domain)(md.r))))) {
-        cm = KN(cbrt)(c1);
-        cr = KN(cbrt)(md.r);
-    } else
-#endif
-    {
-        double a1[W], a2[W], o1[W], o2[W];
-        vst(a1, c1);
-        vst(a2, md.r);
-        for (int l = 0; l < W; l++) {
-            o1[l] = l < n ? cbrt(a1[l]) : 1.0;
-            o2[l] = l < n ? cbrt(a2[l]) : 1.0;
-        }
-        cm = vld(o1);
-        cr = vld(o2);
-    }
+    V cm = KN(cbrt)(vmul(md.m0, md.ax1)), cr = KN(cbrt)(md.r);
     V rhohat = vmul(vmul(cr, cm), cm);
     V x2hat = vsqrt(KN(fmax)(zero, vmul(vsub(rhohat, md.ax1), vadd(rhohat, md.ax1))));
     V sc = vneg(vdiv(md.c2, md.m0));
@@ -475,25 +485,29 @@ static void KN(stage_branches)(lk_block *b, const int *e, int n, int vector_cbrt
     M neither = mnot(mor(left, right));
     left = mor(left, neither), right = mor(right, neither);
     unsigned hasA = mbits(mand(left, vle(blo, sL))), hasB = mbits(mand(right, vle(sR, bhi)));
-    double hiA[W], loB[W];
+    double hiA[W], loB[W], x0A[W], x0B[W];
     vst(hiA, KN(fmin)(sL, bhi));
     vst(loB, KN(fmax)(sR, blo));
+    V mu = vfma(md.a, md.h, vmul(md.m0, md.c2));
+    V R = vmul(vmul(md.r, md.m0), md.m0), B = vfma(mu, md.m0, vneg(md.c2));
+    vst(x0A, KN(start_far)(&md, mu, R, B, -1.0));
+    vst(x0B, KN(start_far)(&md, mu, R, B, 1.0));
     for (int l = 0; l < n; l++) {
         int i = e[l];
-        b->br[0][0][i] = b->f[LK_F_BLO][i], b->br[0][1][i] = hiA[l];
-        b->br[1][0][i] = loB[l], b->br[1][1][i] = b->f[LK_F_BHI][i];
+        b->br[0][0][i] = b->f[LK_F_BLO][i], b->br[0][1][i] = hiA[l], b->br[0][2][i] = x0A[l];
+        b->br[1][0][i] = loB[l], b->br[1][1][i] = b->f[LK_F_BHI][i], b->br[1][2][i] = x0B[l];
         b->has[0][i] = (unsigned char)(hasA >> l & 1), b->has[1][i] = (unsigned char)(hasB >> l & 1);
     }
 }
 
 /* Stage 3, the brackets k[0..n-1] of the item list (n <= LK_CHAINS * W; the rest of k repeats
- * k[0]): the root of each (cdist__root_newton_accel) and the squared distance there (offer_model), to
- * b->item_d2. The Newton iteration is a chain of dependent square roots and divisions:
+ * k[0]): the root of each (cdist__root_halley_accel) and the squared distance there (offer_model),
+ * to b->item_d2. The iteration is a chain of dependent square roots and divisions:
  * LK_CHAINS groups of W brackets iterate side by side to keep the units busy. */
-static void KN(stage_newton)(lk_block *b, const int *k, int n)
+static void KN(stage_solve)(lk_block *b, const int *k, int n)
 {
     KN(model) md[LK_CHAINS];
-    KN(newton) s[LK_CHAINS];
+    KN(solver) s[LK_CHAINS];
     M fail[LK_CHAINS];
     int e[LK_CHAINS][W];
     for (int c = 0; c < LK_CHAINS; c++) {
@@ -504,14 +518,14 @@ static void KN(stage_newton)(lk_block *b, const int *k, int n)
             act[l] = c * W + l < n ? 1.0 : 0.0;
         }
         KN(load_model)(b, e[c], &md[c]);
-        s[c] = KN(newton_start)(vld(lo), vld(hi), vld(x0), vgt(vld(act), vset(0.0)));
+        s[c] = KN(solver_start)(vld(lo), vld(hi), vld(x0), vgt(vld(act), vset(0.0)));
         fail[c] = mfalse();
     }
     for (int it = 0; it < LK_LANE_ITER; it++) {
         M act = s[0].act;
         for (int c = 1; c < LK_CHAINS; c++) act = mor(act, s[c].act);
         if (!many(act)) break;
-        for (int c = 0; c < LK_CHAINS; c++) KN(newton_step)(&md[c], &s[c], &fail[c]);
+        for (int c = 0; c < LK_CHAINS; c++) KN(solver_step)(&md[c], &s[c], &fail[c]);
     }
     /* a lane still iterating (a bracket bisected down to its end, as when the root lies beyond
      * a ray's start: ~50 iterations) goes on in stage_long, with the other such lanes */
@@ -523,6 +537,8 @@ static void KN(stage_newton)(lk_block *b, const int *k, int n)
         vst(st[LK_S_DX], s[c].dx), vst(st[LK_S_DXOLD], s[c].dxold);
         vst(st[LK_S_P1], s[c].p1), vst(st[LK_S_P2], s[c].p2);
         vst(st[LK_S_JUMPED], vsel(s[c].jumped, vset(1.0), vset(0.0)));
+        vst(st[LK_S_PH], vsel(s[c].ph, vset(1.0), vset(0.0)));
+        vst(st[LK_S_CP], s[c].cp), vst(st[LK_S_XP], s[c].xp);
         for (int l = 0; l < W; l++) {
             if (!(rest >> l & 1)) continue;
             int j = b->n_long++;
@@ -542,9 +558,9 @@ static void KN(stage_newton)(lk_block *b, const int *k, int n)
     }
 }
 
-/* Stage 3b, the long brackets j[0..n-1] (n <= W; the rest of j repeats j[0]) that stage_newton
+/* Stage 3b, the long brackets j[0..n-1] (n <= W; the rest of j repeats j[0]) that stage_solve
  * left: their iterations go on together up to CD_ROOT_MAX_ITER in all, where
- * cdist__root_newton_accel returns its last x.
+ * cdist__root_halley_accel returns its last x.
  * The screen: a root that took that long and is not at an end of the range (a ray's start, a
  * segment's end: the bracket bisected down to the end where F' does not vanish, the end
  * candidate decides) is a nearly multiple root of F' (a tangent line), where the solvers stop
@@ -561,14 +577,16 @@ static void KN(stage_long)(lk_block *b, const int *j, int n)
     }
     KN(model) md;
     KN(load_model)(b, e, &md);
-    KN(newton) s;
+    KN(solver) s;
     s.x = vld(st[LK_S_X]), s.lo = vld(st[LK_S_LO]), s.hi = vld(st[LK_S_HI]), s.dx = vld(st[LK_S_DX]);
     s.dxold = vld(st[LK_S_DXOLD]), s.p1 = vld(st[LK_S_P1]), s.p2 = vld(st[LK_S_P2]);
     s.jumped = vgt(vld(st[LK_S_JUMPED]), vset(0.0));
+    s.ph = vgt(vld(st[LK_S_PH]), vset(0.0));
+    s.cp = vld(st[LK_S_CP]), s.xp = vld(st[LK_S_XP]);
     s.res = s.x;
     s.act = vgt(vld(act), vset(0.0));
     M fail = mfalse();
-    for (int it = LK_LANE_ITER; it < CD_ROOT_MAX_ITER && many(s.act); it++) KN(newton_step)(&md, &s, &fail);
+    for (int it = LK_LANE_ITER; it < CD_ROOT_MAX_ITER && many(s.act); it++) KN(solver_step)(&md, &s, &fail);
     s.res = vsel(s.act, s.x, s.res);
     V smin = KN(load_field)(b, LK_F_SMIN, e), smax = KN(load_field)(b, LK_F_SMAX, e);
     V tol = vset(8.0 * DBL_EPSILON), atol = vset(0x1p-60);
@@ -601,8 +619,8 @@ static unsigned KN(stage_final)(lk_block *b, int base, double *out)
 /* Entries [lo, lo + count) of the job, count <= 64: the four stages over the block; returns the
  * mask of the entries left to the scalar path. The stages after the first take the entries
  * that need them, W at a time, so that the lanes stay busy (a quarter of random lines need
- * stage 2, the Newton iterations of a bracket vary). */
-static uint64_t KN(block)(const cdist__job *job, int shape, double tol, size_t lo, size_t count, int vector_cbrt)
+ * stage 2, the iterations of a bracket vary). */
+static uint64_t KN(block)(const cdist__job *job, int shape, double tol, size_t lo, size_t count)
 {
     lk_block b;
     double in[13][W];
@@ -630,19 +648,19 @@ static uint64_t KN(block)(const cdist__job *job, int shape, double tol, size_t l
     for (int i = 0; i < cnt; i++) {
         if (!b.ok[i]) continue;
         if (!b.two[i]) {
-            b.br[0][0][i] = b.f[LK_F_BLO][i], b.br[0][1][i] = b.f[LK_F_BHI][i];
+            b.br[0][0][i] = b.f[LK_F_BLO][i], b.br[0][1][i] = b.f[LK_F_BHI][i], b.br[0][2][i] = b.f[LK_F_X0][i];
             b.has[0][i] = 1, b.has[1][i] = 0;
             continue;
         }
         e[ne++] = i;
         if (ne == W) {
-            KN(stage_branches)(&b, e, W, vector_cbrt);
+            KN(stage_branches)(&b, e, W);
             ne = 0;
         }
     }
     if (ne) {
         for (int l = ne; l < W; l++) e[l] = e[0];
-        KN(stage_branches)(&b, e, ne, vector_cbrt);
+        KN(stage_branches)(&b, e, ne);
     }
     /* the brackets clipped to the range; an empty one has no root */
     int ni = 0;
@@ -654,7 +672,7 @@ static uint64_t KN(block)(const cdist__job *job, int shape, double tol, size_t l
             double blo = cdist__fmax(b.br[j][0][i], b.f[LK_F_SMIN][i]);
             double bhi = cdist__fmin(b.br[j][1][i], b.f[LK_F_SMAX][i]);
             if (blo > bhi) continue;
-            b.item_entry[ni] = i, b.item_lo[ni] = blo, b.item_hi[ni] = bhi, b.item_x0[ni] = b.f[LK_F_X0][i];
+            b.item_entry[ni] = i, b.item_lo[ni] = blo, b.item_hi[ni] = bhi, b.item_x0[ni] = b.br[j][2][i];
             ni++;
         }
     }
@@ -662,7 +680,7 @@ static uint64_t KN(block)(const cdist__job *job, int shape, double tol, size_t l
     for (int s0 = 0; s0 < ni; s0 += LK_CHAINS * W) {
         int n = ni - s0 < LK_CHAINS * W ? ni - s0 : LK_CHAINS * W;
         for (int l = 0; l < LK_CHAINS * W; l++) k[l] = s0 + (l < n ? l : 0);
-        KN(stage_newton)(&b, k, n);
+        KN(stage_solve)(&b, k, n);
     }
     for (int s0 = 0; s0 < b.n_long; s0 += W) {
         int n = b.n_long - s0 < W ? b.n_long - s0 : W, j[W];

@@ -38,7 +38,8 @@ typedef struct lc_model {
     double c2;        /* x2 at s = 0 */
     double h;         /* height at s = 0 */
     double e2x, e2y;  /* e2 in the circle basis (U, V) */
-    double x1sq, k, rr2, dfc; /* fdf_scaled's invariants: x1^2, a^2 + m0^2, (|x1| - r)(|x1| + r), -(r m0^2) x1^2 */
+    double x1sq, k, rr2, dfc, d2c; /* fd2f_scaled's invariants: x1^2, a^2 + m0^2, (|x1| - r)(|x1| + r),
+                                    * -(r m0^2) x1^2, 3 r m0^3 x1^2 */
 } lc_model;
 
 /* rho - r without cancellation, given x2 and rho. */
@@ -75,25 +76,41 @@ CD_INLINE double fdf(const void *ctx, double s, double *df)
     return MADD(m->a, h, m->m0 * x2 * (num * w));
 }
 
-/* fdf times P = rho^3 (rho + r) > 0, for the bracketed solver, which uses only the sign of f and
- * the ratio f / f': the same Newton steps to rounding, with one division per step (the step)
- * instead of two (w and the step): f P = a h P + m0 x2 num rho^2, f' P = k P - r m0^2 x1^2 (rho + r).
- * With P = rho2^2 + (r rho2) rho, both are one multiply-add in rho after the square root (the
- * rest is computed beside it): the chain of a Newton step is x2, rho2, sqrt, one multiply-add,
- * the division. Where P could underflow or overflow (rho far from 1; never in a scaled
- * problem's bracket except near the axis) it is fdf itself. Not for cdist__root_polish, which
+/* F'/2, F''/2 and F'''/2 (the Halley solver's callback): fdf, and F'''/2 = 3 r m0^3 x1^2 x2 / rho^5
+ * (infinite or NaN within ~2^-200 of the axis, where the solver then takes Newton's step). */
+CD_INLINE double fd2f(const void *ctx, double s, double *df, double *d2f)
+{
+    const lc_model *m = ctx;
+    double f = fdf(ctx, s, df);
+    double x2 = MADD(m->m0, s, m->c2);
+    double ir = 1.0 / sqrt(MADD(m->x1, m->x1, x2 * x2)), ir2 = ir * ir;
+    *d2f = m->d2c * x2 * (ir2 * ir2 * ir);
+    return f;
+}
+
+/* fd2f times P = rho^5 (rho + r) > 0, for the bracketed solver, which uses only the sign of f and
+ * the ratios f / f', f f'' / f'^2: the same steps to rounding, with one division per step (the
+ * step) instead of three (w, 1/rho and the step):
+ *   f P = (a h Q + m0 x2 num rho^2) rho^2,   f' P = (k Q - r m0^2 x1^2 (rho + r)) rho^2,
+ *   f'' P = 3 r m0^3 x1^2 x2 (rho + r),      Q = P / rho^2 = rho^3 (rho + r).
+ * With Q = rho2^2 + (r rho2) rho, each is one multiply-add in rho after the square root (the
+ * rest is computed beside it): the chain of a step is x2, rho2, sqrt, one multiply-add, Halley's
+ * products and the division. Where rho^2 leaves [2^-100, 2^100] (rho far from 1; never in a
+ * scaled problem's bracket except near the axis, where P would underflow) it is fd2f itself;
+ * the solver takes f / f' where f'^2 still leaves its range. Not for cdist__root_polish, which
  * compares |f| at two points. */
-CD_INLINE double fdf_scaled(const void *ctx, double s, double *df)
+CD_INLINE double fd2f_scaled(const void *ctx, double s, double *df, double *d2f)
 {
     const lc_model *m = ctx;
     double h = MADD(m->a, s, m->h), x2 = MADD(m->m0, s, m->c2);
     double rho2 = MADD(x2, x2, m->x1sq);
-    if (!(rho2 >= 0x1p-200 && rho2 <= 0x1p200)) return fdf(ctx, s, df);
+    if (!(rho2 >= 0x1p-100 && rho2 <= 0x1p100)) return fd2f(ctx, s, df, d2f);
     double rho = sqrt(rho2);
     double num = MADD(x2, x2, m->rr2);
-    double ah = m->a * h, r2 = m->r * rho2, q2 = rho2 * rho2;
-    *df = MADD(MADD(m->k, r2, m->dfc), rho, MADD(m->k, q2, m->dfc * m->r));
-    return MADD(ah * r2, rho, MADD(ah, q2, m->m0 * x2 * (num * rho2)));
+    double ah = m->a * h, r2 = m->r * rho2, q2 = rho2 * rho2, c3 = m->d2c * x2;
+    *df = MADD(MADD(m->k, r2, m->dfc) * rho2, rho, MADD(m->k, q2, m->dfc * m->r) * rho2);
+    *d2f = MADD(c3, rho, c3 * m->r);
+    return MADD((ah * r2) * rho2, rho, MADD(ah, q2, m->m0 * x2 * (num * rho2)) * rho2);
 }
 
 /* Squared distance (scaled) at s. */
@@ -105,12 +122,12 @@ CD_INLINE double f_at(const lc_model *m, double s)
     return MADD(h, h, dr * dr);
 }
 
-/* Root of F' in [lo, hi] where F' increases: safeguarded Newton (base/roots.h), which
+/* Root of F' in [lo, hi] where F' increases, from x0: safeguarded Halley (base/roots.h), which
  * commutes with s -> -s when F' is odd, so mirrored brackets give mirrored roots; the
  * accelerated variant (near a tangent line F' is nearly cubic about its root). */
 CD_INLINE double solve(const lc_model *m, double lo, double hi, double x0)
 {
-    return cdist__root_newton_accel(fdf_scaled, m, lo, hi, x0, +1, CD_ROOT_REL_ULPS * EPS, CD_ROOT_ABS, CD_ROOT_MAX_ITER);
+    return cdist__root_halley_accel(fd2f_scaled, m, lo, hi, x0, +1, CD_ROOT_REL_ULPS * EPS, CD_ROOT_ABS, CD_ROOT_MAX_ITER);
 }
 
 /* Newton on F' from a polynomial root, kept only while |F'| decreases. */
@@ -239,6 +256,36 @@ CD_INLINE void merge_basins(lc_ctx *x, const lc_model *m, double tol)
 
 /* ---- the two solvers on the general model (m0 > 0) ---- */
 
+/* ---- starts of the solver ----
+ * In x2 (the in-plane coordinate along the line), F'/2 = 0 reads x2 + B = R x2 / rho with
+ * B = mu m0 - c2 and R = r m0^2 (F'/2 is |x1|/m0 times y + beta - g y / sqrt(1 + y^2) in
+ * y = x2 / |x1|, beta = B / |x1|, g = R / |x1|). Two approximations of x2 / rho give starts
+ * within ~1e-4 of the root on most lines, so that Halley's steps end after two evaluations. */
+
+/* Far from the centre on the side sigma = +-1 of x2 (a branch of F' when g > 1):
+ * x2 / rho = sigma (1 + x1^2 / x2^2)^(-1/2) ~ sigma (1 - x1^2 / (2 x2^2)), with x2 taken at the
+ * limit sigma R - B (G = sigma r m0): s = -mu + sigma r m0 (1 - x1^2 / (2 x2^2)). One division;
+ * NaN or far outside the bracket where that x2 is 0 (the solver then starts at the midpoint). */
+CD_INLINE double start_far(const lc_model *m, double mu, double R, double B, double sigma)
+{
+    double x2 = sigma * R - B;
+    return fma(sigma * (m->r * m->m0), 1.0 - 0.5 * (m->x1sq / (x2 * x2)), -mu);
+}
+
+/* The single root of F' when g <= 1. Near the centre (the linear part's root x2l = N / e with
+ * N = -B |x1|, e = |x1| - R >= 0, within |x1|), x2 / rho to third order, (x2 / |x1|)(1 -
+ * x2^2 / (2 x1^2)): one Newton step on that cubic from x2l, x2 = N (x1^2 e^3 + R N^2) /
+ * (e (x1^2 e^3 + 3/2 R N^2)), in s with the same one division; otherwise start_far on the side
+ * opposite to B. */
+CD_INLINE double start_single(const lc_model *m, double mu, double R, double B)
+{
+    double e = m->ax1 - R, N = -B * m->ax1;
+    if (!(fabs(N) <= m->ax1 * e)) return start_far(m, mu, R, B, B > 0.0 ? -1.0 : 1.0);
+    double e3 = m->x1sq * (e * e * e), RN2 = R * (N * N);
+    double D = e * fma(1.5, RN2, e3);
+    return fma(N, e3 + RN2, -m->c2 * D) / (m->m0 * D);
+}
+
 /* §4.2: brackets from the shape of G (odd, increasing, slope at most r m0^2/|x1| at x2 = 0),
  * local minima only, each found by safeguarded bisection. */
 CD_FMA_CLONES static void robust_roots(const lc_model *m, double smin, double smax, double *roots, int *nr)
@@ -246,21 +293,21 @@ CD_FMA_CLONES static void robust_roots(const lc_model *m, double smin, double sm
     double mu = fma(m->a, m->h, m->m0 * m->c2);
     double lo = -mu - m->r * m->m0, hi = -mu + m->r * m->m0;
     *nr = 0;
-    double br[2][2], x0 = NAN;
+    double br[2][3]; /* lo, hi, start */
     int nb = 0;
-    if (m->r * m->m0 * m->m0 <= m->ax1) {
-        /* G' <= 1 everywhere: F' increasing, one root; the start is the root of F' with G
-         * linearised at x2 = 0 (slope g = r m0^2 / |x1| <= 1, exact near the centre). */
-        x0 = -mu * m->ax1 / (m->ax1 - m->r * m->m0 * m->m0); /* -mu / (1 - g), one division */
+    double R = m->r * m->m0 * m->m0, B = fma(mu, m->m0, -m->c2);
+    if (R <= m->ax1) {
+        /* G' <= 1 everywhere: F' increasing, one root */
         br[nb][0] = lo;
         br[nb][1] = hi;
+        br[nb][2] = start_single(m, mu, R, B);
         nb++;
     } else {
         /* Tangent points of slope 1: rho^3 = r m0^2 x1^2 (eq. (14)), x2 = -+ x2hat. F' increases
          * left of sL, decreases between, increases right of sR. A local minimum on the left
          * branch exists iff F'(sL) >= 0, on the right branch iff F'(sR) <= 0. */
-        double cm = cbrt(m->m0 * m->ax1);
-        double rhohat = cbrt(m->r) * cm * cm;
+        double cm = cdist__cbrt(m->m0 * m->ax1);
+        double rhohat = cdist__cbrt(m->r) * cm * cm;
         double x2hat = sqrt(cdist__fmax(0.0, (rhohat - m->ax1) * (rhohat + m->ax1)));
         double sc = -m->c2 / m->m0;
         double sL = sc - x2hat / m->m0, sR = sc + x2hat / m->m0;
@@ -273,18 +320,20 @@ CD_FMA_CLONES static void robust_roots(const lc_model *m, double smin, double sm
         if (left && lo <= sL) {
             br[nb][0] = lo;
             br[nb][1] = cdist__fmin(sL, hi);
+            br[nb][2] = start_far(m, mu, R, B, -1.0);
             nb++;
         }
         if (right && sR <= hi) {
             br[nb][0] = cdist__fmax(sR, lo);
             br[nb][1] = hi;
+            br[nb][2] = start_far(m, mu, R, B, 1.0);
             nb++;
         }
     }
     for (int i = 0; i < nb; i++) {
         double a = cdist__fmax(br[i][0], smin), b = cdist__fmin(br[i][1], smax);
         if (a > b) continue;
-        roots[(*nr)++] = solve(m, a, b, x0);
+        roots[(*nr)++] = solve(m, a, b, br[i][2]);
     }
 }
 
@@ -318,7 +367,7 @@ CD_FMA_CLONES static int poly_roots(cdist_query *q, const lc_model *m, double sm
 
 /* ---- the core ---- */
 
-CD_FMA_CLONES static cdist_status linear_circle(cdist_query *q, cdist_method method, vec3 B, vec3 M, double tmin, double tmax,
+CD_INLINE cdist_status linear_circle(cdist_query *q, cdist_method method, vec3 B, vec3 M, double tmin, double tmax,
                                   const cdist__circle *c, cdist__best *b, cdist_method *used)
 {
     if (method != CDIST_METHOD_POLYNOMIAL) method = CDIST_METHOD_ROBUST;
@@ -434,6 +483,7 @@ CD_FMA_CLONES static cdist_status linear_circle(cdist_query *q, cdist_method met
     m.k = MADD(a, a, m0 * m0);
     m.rr2 = (m.ax1 - rs) * (m.ax1 + rs);
     m.dfc = -(rs * m0 * m0) * (m.ax1 * m.ax1);
+    m.d2c = -3.0 * m0 * m.dfc;
 
     double roots[4];
     int nr = -1;
@@ -461,7 +511,7 @@ done:;
     return CDIST_OK;
 }
 
-cdist_status cdist__linear_circle_ex(cdist_query *q, cdist_method method, vec3 B, vec3 M, double tmin, double tmax,
+CD_FMA_CLONES cdist_status cdist__linear_circle_ex(cdist_query *q, cdist_method method, vec3 B, vec3 M, double tmin, double tmax,
                                  const cdist__circle *c, cdist__best *b, cdist_method *used)
 {
     return linear_circle(q, method, B, M, tmin, tmax, c, b, used);
@@ -530,7 +580,7 @@ CD_INLINE cdist_status run(cdist_query *q, vec3 origin, vec3 D, vec3 M, double l
     if (tmax == t0) hi = 0.0;
     cdist__best b;
     cdist__best_init(&b, range_scale(B, M, lo, hi, cc->r));
-    cdist_status st = cdist__linear_circle_ex(q, cdist__family_method(q, CD_FAM_LINE_CIRCLE), B, M, lo, hi, cc, &b, used);
+    cdist_status st = linear_circle(q, cdist__family_method(q, CD_FAM_LINE_CIRCLE), B, M, lo, hi, cc, &b, used);
     if (st) return st;
     if (b.n == 0) return cdist__fail(q, CDIST_ERR_INTERNAL, "line-circle: no candidate");
     cdist__best_to_result(&b, cc->c, 0, r);
@@ -609,7 +659,9 @@ cdist_status cdist_ray_circle(cdist_query *q, const cdist_ray *l, const cdist_ci
     return linear_public(q, l ? &l->origin : NULL, l ? &l->direction : NULL, l, 1, 0.0, INFINITY, c, r);
 }
 
-cdist_status cdist_segment_circle(cdist_query *q, const cdist_segment *s, const cdist_circle *c, cdist_result *r)
+/* FMA clone, as linear_public (the core is inlined into it). */
+CD_FMA_CLONES static cdist_status segment_public(cdist_query *q, const cdist_segment *s, const cdist_circle *c,
+                                                cdist_result *r)
 {
     cdist_status st = cdist__enter(q, r);
     if (st) return st;
@@ -638,4 +690,9 @@ cdist_status cdist_segment_circle(cdist_query *q, const cdist_segment *s, const 
             if (r->pairs[i].param[0] == 0.0) r->pairs[i].point[0] = s->p0; /* exactly the caller's start point */
     }
     return cdist__leave(q, r, st, used);
+}
+
+cdist_status cdist_segment_circle(cdist_query *q, const cdist_segment *s, const cdist_circle *c, cdist_result *r)
+{
+    return segment_public(q, s, c, r);
 }
