@@ -138,9 +138,10 @@ CD_INLINE double cdist__atan_ratio(double y, double x)
 
 /* Polar angle of finite (x, y) in (-pi, pi]; NaN for (0, 0) or NaN arguments. Within 2 ulps of
  * atan2 (measured on 2e7 random and near-axis arguments: 1.5 ulp) and about twice as fast, with
- * one division: the point queries spent a third of their time in atan2. The octant is a table row, not a branch
- * (row j: a = base + sign (a0 + off), the roundings of pi - (a0 - pi_lo), pi/2 - (a0 - pio2_lo)
- * and pi/2 + (a0 + pio2_lo)): random directions made every branch a coin toss. */
+ * one division: the point queries spent a third of their time in atan2. The octant is a table
+ * row, not a branch (row j: a = base + sign (a0 + off), the roundings of pi - (a0 - pi_lo),
+ * pi/2 - (a0 - pio2_lo) and pi/2 + (a0 + pio2_lo)): random directions made every branch a coin
+ * toss. */
 CD_INLINE double cdist__polar_angle(double x, double y)
 {
     const double pio2_hi = 1.57079632679489655800e+00, pio2_lo = 6.12323399573676603587e-17;

@@ -2,7 +2,7 @@
 /* The one root and minimum module of the library (every family's solvers go through it).
  *
  * A family describes its function by a callback and a context pointer:
- *     cdist__fdf_fn: f(x) returned, f'(x) written to *df   (for the Newton-based solvers)
+ *     cdist__fdf_fn: f(x) returned, f'(x) written to *df   (Newton's polishing)
  *     cdist__fd2f_fn: the same, and f''(x) written to *d2f   (Halley's steps)
  *     cdist__f_fn:   f(x) returned                         (derivative-free Brent solvers)
  * A callback that fails (e.g. a user curve returning an error) returns NaN and records the
@@ -12,7 +12,7 @@
  * library's defaults are CD_ROOT_REL_ULPS * eps and CD_ROOT_ABS (src/base/tolerances.h), for
  * problems scaled to L in [1, 2) (src/base/numeric.h).
  *
- * cdist__root_newton, cdist__root_halley_accel and cdist__root_polish are always inlined so that a
+ * cdist__root_halley_accel and cdist__root_polish are always inlined so that a
  * hot family (line-circle) gets them specialised for its callback (the call through the pointer
  * is inlined away); the Brent solvers are out of line (roots.c). */
 #ifndef CDIST_BASE_ROOTS_H
@@ -28,48 +28,14 @@ typedef double (*cdist__f_fn)(const void *ctx, double x);
 typedef double (*cdist__fd2f_fn)(const void *ctx, double x, double *df, double *d2f);
 
 /* Root of f in [lo, hi] where f increases through zero (dir = +1: f(lo) <= 0 <= f(hi)) or
- * decreases (dir = -1), the ends' values not needed. Safeguarded Newton (rtsafe): starts at the
- * midpoint, and a Newton step is taken only when dir * f' > 0, it stays strictly inside the
- * bracket, and it shrinks faster than bisection would; otherwise the bracket is bisected.
- * Converged when a Newton step is below rel * |x| or abs, or the bracket is below abs.
- * Every operation commutes with x -> -x for an odd f, so mirrored brackets give mirrored
- * roots. Returns lo when lo >= hi, NaN when the callback failed. */
-CD_INLINE double cdist__root_newton(cdist__fdf_fn fdf, const void *ctx, double lo, double hi, int dir, double rel,
-                                 double abs, int max_iter)
-{
-    if (!(lo < hi)) return lo;
-    double x = 0.5 * (lo + hi), dxold = hi - lo, dx = dxold;
-    for (int it = 0; it < max_iter; it++) {
-        double df, f = fdf(ctx, x, &df);
-        if (f != f) return NAN;
-        if (dir < 0) {
-            f = -f;
-            df = -df;
-        }
-        if (f == 0.0) return x;
-        if (f < 0.0) lo = x;
-        else hi = x;
-        double step = f / df, xn = x - step;
-        if (df > 0.0 && (fabs(step) <= rel * fabs(x) || fabs(step) <= abs)) return xn; /* converged */
-        if (!(df > 0.0) || !(xn > lo && xn < hi) || fabs(2.0 * f) > fabs(dxold * df)) {
-            dxold = dx;
-            xn = 0.5 * (lo + hi);
-            dx = fabs(xn - x);
-        } else {
-            dxold = dx;
-            dx = fabs(xn - x);
-        }
-        x = xn;
-        if (dx <= rel * fabs(x) || !(hi - lo > abs)) break;
-    }
-    return x;
-}
-
-/* cdist__root_newton's bracket and safeguards with Halley's steps and accelerations, for a hot
- * family (line-circle). The callback also writes f'' (f, f' and f'' may all be multiplied by one
+ * decreases (dir = -1), the ends' values not needed, for a hot family (line-circle): the bracket
+ * and safeguards of rtsafe (a step is taken only when dir * f' > 0, it stays strictly inside the
+ * bracket and it shrinks faster than bisection would; otherwise the bracket is bisected) with
+ * Halley's steps and accelerations. Converged when a step is below rel * |x| or abs, or the
+ * bracket is below abs. Returns lo when lo >= hi, NaN when the callback failed. The callback also writes f'' (f, f' and f'' may all be multiplied by one
  * positive factor, which can vary with x: only signs and the ratios f / f', f f'' / f'^2 are
  * used; where f'^2 leaves [2^-1000, 2^1000] the step is f / f' itself). It differs from
- * cdist__root_newton's answer by less than the tolerance:
+ * rtsafe's answer by less than the tolerance:
  * - it starts at x0 (a caller's estimate; the midpoint when x0 is not inside (lo, hi), e.g. NaN);
  * - the step is Halley's, the Newton step d = f / f' times 1 / (1 - C d), C = f'' / (2 f') (the
  *   error cubed each step instead of squared), when |C d| < 1/2 (the factor in (2/3, 2)), and
@@ -86,8 +52,8 @@ CD_INLINE double cdist__root_newton(cdist__fdf_fn fdf, const void *ctx, double l
  *   there;
  * - a root at an end of the bracket (a step lands on or past it): 1023/1024 of the way there
  *   instead of a bisection, every other time.
- * Every operation commutes with x -> -x for an odd f (f' even, f'' odd) and a mirrored x0, as
- * cdist__root_newton's do. */
+ * Every operation commutes with x -> -x for an odd f (f' even, f'' odd) and a mirrored x0, so
+ * mirrored brackets give mirrored roots. */
 
 CD_INLINE double cdist__root_halley_accel(cdist__fd2f_fn fd2f, const void *ctx, double lo, double hi, double x0,
                                           int dir, double rel, double abs, int max_iter)

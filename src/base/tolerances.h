@@ -16,9 +16,11 @@
 /* Largest accepted |coordinate| or radius (length units): squares of differences stay finite
  * (1e150^2 * 12 < DBL_MAX) even before a family rescales. */
 #define CD_MAX_ABS 1e150
-/* The length rule takes |d| from d itself when its largest component is at least this (length
- * units): |d|^2 is then normal; below it |d|^2 may underflow, and the full check rescales d by
- * a power of two first. */
+/* The length rule of a vector: |d| is taken from d itself when its largest component is at
+ * least this (length units), |d|^2 being then normal; below it |d|^2 may underflow, and d is
+ * rescaled to its largest component first (the full check of a direction or normal, by a power
+ * of two; a point's in-plane offset near a circle's axis before it is normalised). Not a
+ * tolerance of the answer: only where exact rescaling is needed. */
 #define CD_MIN_NORMAL_FAST 0x1p-500
 
 /* ---- candidate collector (src/base/best.c) ---- */
@@ -38,9 +40,9 @@
  * the solvers on problems scaled to L in [1, 2), where 2^-62 is far below eps * L). */
 #define CD_ROOT_REL_ULPS 2.0
 #define CD_ROOT_ABS 0x1p-62
-/* Iteration caps: the safeguarded solvers halve the bracket at worst every step (rtsafe) or every
- * two steps (the accelerated one), so 200 steps cover any bracket of doubles; Newton polishing
- * from a good start converges in a few steps. */
+/* Iteration caps: the safeguarded solver (cdist__root_halley_accel) halves the bracket at worst
+ * every two steps, so 200 steps cover any bracket of doubles; Newton polishing from a good start
+ * converges in a few steps. */
 #define CD_ROOT_MAX_ITER 200
 #define CD_POLISH_MAX_ITER 60
 
@@ -58,10 +60,6 @@
 /* A point is on the circle's axis when its axis distance |n x p| is below the rounding noise
  * of the cross product: CD_ON_AXIS_ULPS * eps * |p|. Then every circle point is closest. */
 #define CD_ON_AXIS_ULPS 2.0
-/* Below this largest component (length units) the in-plane part w of a point near the axis has
- * subnormal squares, and is rescaled before it is normalised (not a tolerance of the answer:
- * only where exact rescaling is needed). */
-#define CD_POINT_TINY_W 0x1p-500
 /* The point queries' fast path and the batch point kernel work unscaled when the problem scale
  * L = max(r, |p - c|) is at least this (length units): power-of-two scaling changes no rounding
  * unless a square underflows, and a term whose square underflows (below 2^-511) is then below

@@ -80,9 +80,9 @@ CD_INLINE KN(solver) KN(solver_start)(V lo, V hi, V x0, M act)
 
 /* One iteration in the lanes of s->act, every branch of cdist__root_halley_accel as a select; a
  * lane that stops writes s->res and leaves s->act. Lanes meeting a branch the kernel does not
- * take (fd2f instead of fd2f_scaled, f'^2 out of the solver's range, NaN) are added to *fail. Conditions are taken under the
- * mask of the lanes they concern (vlt_m etc.: one instruction on AVX-512, whose mask logic is a
- * bottleneck here). */
+ * take (fd2f instead of fd2f_scaled, f'^2 out of the solver's range, NaN) are added to *fail.
+ * Conditions are taken under the mask of the lanes they concern (vlt_m etc.: one instruction on
+ * AVX-512, whose mask logic is a bottleneck here). */
 CD_INLINE void KN(solver_step)(const KN(model) *m, KN(solver) *s, M *fail)
 {
     const V rel = vset(CD_ROOT_REL_ULPS * DBL_EPSILON), abs_ = vset(CD_ROOT_ABS), half = vset(0.5), zero = vset(0.0);
@@ -169,12 +169,12 @@ CD_INLINE void KN(solver_step)(const KN(model) *m, KN(solver) *s, M *fail)
     s->x = x, s->lo = lo, s->hi = hi, s->dx = dx, s->res = res, s->act = act;
 }
 
-/* start_far of line_circle.c on the side sigma (+-1): R = r m0^2, B = mu m0 - c2. */
-CD_INLINE V KN(start_far)(const KN(model) *m, V mu, V R, V B, double sigma)
+/* start_far of line_circle.c on the side sigma (+-1 in each lane): R = r m0^2, B = mu m0 - c2. */
+CD_INLINE V KN(start_far)(const KN(model) *m, V mu, V R, V B, V sigma)
 {
-    V x2 = vsub(vmul(vset(sigma), R), B);
+    V x2 = vsub(vmul(sigma, R), B);
     V q = vdiv(vmul(m->x1, m->x1), vmul(x2, x2));
-    return vfma(vmul(vset(sigma), vmul(m->r, m->m0)), vsub(vset(1.0), vmul(vset(0.5), q)), vneg(mu));
+    return vfma(vmul(sigma, vmul(m->r, m->m0)), vsub(vset(1.0), vmul(vset(0.5), q)), vneg(mu));
 }
 
 /* start_single of line_circle.c (lanes where R <= |x1|). */
@@ -185,8 +185,7 @@ CD_INLINE V KN(start_single)(const KN(model) *m, V mu, V R, V B)
     V e3 = vmul(vmul(m->x1, m->x1), vmul(vmul(e, e), e)), RN2 = vmul(R, vmul(N, N));
     V D = vmul(e, vfma(vset(1.5), RN2, e3));
     V sn = vdiv(vfma(N, vadd(e3, RN2), vmul(vneg(m->c2), D)), vmul(m->m0, D));
-    M pos = vgt(B, vset(0.0));
-    V sf = vsel(pos, KN(start_far)(m, mu, R, B, -1.0), KN(start_far)(m, mu, R, B, 1.0));
+    V sf = KN(start_far)(m, mu, R, B, vsel(vgt(B, vset(0.0)), vset(-1.0), vset(1.0)));
     return vsel(near, sn, sf);
 }
 
@@ -490,8 +489,8 @@ static void KN(stage_branches)(lk_block *b, const int *e, int n)
     vst(loB, KN(fmax)(sR, blo));
     V mu = vfma(md.a, md.h, vmul(md.m0, md.c2));
     V R = vmul(vmul(md.r, md.m0), md.m0), B = vfma(mu, md.m0, vneg(md.c2));
-    vst(x0A, KN(start_far)(&md, mu, R, B, -1.0));
-    vst(x0B, KN(start_far)(&md, mu, R, B, 1.0));
+    vst(x0A, KN(start_far)(&md, mu, R, B, vset(-1.0)));
+    vst(x0B, KN(start_far)(&md, mu, R, B, vset(1.0)));
     for (int l = 0; l < n; l++) {
         int i = e[l];
         b->br[0][0][i] = b->f[LK_F_BLO][i], b->br[0][1][i] = hiA[l], b->br[0][2][i] = x0A[l];

@@ -18,18 +18,16 @@
 _Static_assert(offsetof(cdist_vec3, y) == 8 && offsetof(cdist_vec3, z) == 16, "cdist_vec3 layout");
 _Static_assert(offsetof(cdist_circle, normal) == 24 && offsetof(cdist_circle, radius) == 48, "cdist_circle layout");
 
-/* One entry: returns 0 (and writes *d) when every fast check passes. */
+/* One entry: returns 0 (and writes *d) when every fast check passes (the single query's own:
+ * cdist__in_range and cdist__circle_fast_body). */
 static int point_one(const cdist_vec3 *P, const cdist_circle *C, int disk, double tol, double *d)
 {
-    vec3 p = *P, c = C->center, nd = C->normal;
-    double r = C->radius;
-    if (!cdist__in_range(p) || !cdist__in_range(c) || !cdist__in_range(nd) || !(r >= 0.0 && r <= CD_MAX_ABS)) return 1;
-    double m = v_maxabs(nd);
-    if (!(m >= CD_MIN_NORMAL_FAST)) return 1;
-    double len = v_norm(nd);
-    if (!(fabs(len - 1.0) <= tol)) return 1;
-    vec3 n = v_scale(1.0 / len, nd);
-    vec3 rel = v_sub(p, c);
+    vec3 p = *P;
+    cdist__circle cc;
+    if (!cdist__in_range(p) || !cdist__circle_fast_body(tol, C, &cc)) return 1;
+    vec3 n = cc.n;
+    double r = cc.r;
+    vec3 rel = v_sub(p, cc.c);
     vec3 np = v_cross(n, rel);
     double h = v_dot(n, rel), q2 = v_sqr(np), rho = sqrt(q2);
     /* the scale guard: |rel|^2 = |n x rel|^2 + h^2, or r^2, at least CD_POINT_MIN_SCALE^2 */

@@ -38,14 +38,14 @@ typedef struct lc_model {
     double c2;        /* x2 at s = 0 */
     double h;         /* height at s = 0 */
     double e2x, e2y;  /* e2 in the circle basis (U, V) */
-    double x1sq, k, rr2, dfc, d2c; /* fd2f_scaled's invariants: x1^2, a^2 + m0^2, (|x1| - r)(|x1| + r),
+    double x1sq, k, rr2, dfc, d2c; /* invariants of the evaluators: x1^2, a^2 + m0^2, (|x1| - r)(|x1| + r),
                                     * -(r m0^2) x1^2, 3 r m0^3 x1^2 */
 } lc_model;
 
 /* rho - r without cancellation, given x2 and rho. */
 CD_INLINE double rho_minus_r(const lc_model *m, double x2, double rho)
 {
-    return MADD(x2, x2, (m->ax1 - m->r) * (m->ax1 + m->r)) / (rho + m->r);
+    return MADD(x2, x2, m->rr2) / (rho + m->r);
 }
 
 /* F'/2 at height h and in-plane coordinate x2. On the axis (rho = 0) F' is undefined: side = -1
@@ -64,15 +64,14 @@ CD_INLINE double fdf(const void *ctx, double s, double *df)
     const lc_model *m = ctx;
     double h = MADD(m->a, s, m->h), x2 = MADD(m->m0, s, m->c2);
     double rho = sqrt(MADD(m->x1, m->x1, x2 * x2));
-    double k = MADD(m->a, m->a, m->m0 * m->m0);
     if (rho == 0.0) {
         *df = -INFINITY;
         return m->a * h;
     }
     double w = 1.0 / (rho * (rho + m->r));
-    double num = MADD(x2, x2, (m->ax1 - m->r) * (m->ax1 + m->r));
+    double num = MADD(x2, x2, m->rr2);
     double ir = (rho + m->r) * w, q = m->ax1 * ir;
-    *df = k - m->r * m->m0 * m->m0 * q * q * ir;
+    *df = m->k - m->r * m->m0 * m->m0 * q * q * ir;
     return MADD(m->a, h, m->m0 * x2 * (num * w));
 }
 

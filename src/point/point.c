@@ -68,21 +68,13 @@ CD_INLINE cdist__point_pair circle_pair(vec3 p, const cdist__circle *c, double h
          * subnormal: normalise a copy scaled to its largest component there. */
         vec3 ws = w;
         double m = v_maxabs(w);
-        if (m < CD_POINT_TINY_W) ws = v3(w.x / m, w.y / m, w.z / m);
+        if (m < CD_MIN_NORMAL_FAST) ws = v3(w.x / m, w.y / m, w.z / m);
         q.k = v_scale(c->r / v_norm(ws), ws);
         q.angle = plane_angle(c->n, w, np);
     }
     double dr = rho - c->r;
     q.d2 = fma(dr, dr, h * h);
     return q;
-}
-
-CD_INLINE cdist__point_pair circle_pair_at(vec3 p, const cdist__circle *c)
-{
-    double h, rho;
-    vec3 w, np;
-    split(p, c->n, &h, &w, &np, &rho);
-    return circle_pair(p, c, h, w, np, rho);
 }
 
 /* The disk point of p (relative to the centre) over the disk (rho <= r): its projection. */
@@ -97,17 +89,24 @@ CD_INLINE cdist__point_pair disk_inside(const cdist__circle *c, double h, vec3 w
     return q;
 }
 
-CD_INLINE cdist__point_pair disk_pair_at(vec3 p, const cdist__circle *c)
+/* The pair of p (relative to the centre) from its split: on a disk the projection where p is
+ * over it (rho <= r), else the circle's point. */
+CD_INLINE cdist__point_pair pair_of_split(vec3 p, const cdist__circle *c, int disk, double h, vec3 w, vec3 np, double rho)
+{
+    if (disk && !(rho > c->r)) return disk_inside(c, h, w, np, rho, p);
+    return circle_pair(p, c, h, w, np, rho);
+}
+
+CD_INLINE cdist__point_pair pair_at(vec3 p, const cdist__circle *c, int disk)
 {
     double h, rho;
     vec3 w, np;
     split(p, c->n, &h, &w, &np, &rho);
-    if (rho > c->r) return circle_pair(p, c, h, w, np, rho);
-    return disk_inside(c, h, w, np, rho, p);
+    return pair_of_split(p, c, disk, h, w, np, rho);
 }
 
-CD_FMA_CLONES cdist__point_pair cdist__point_circle_pair(vec3 p, const cdist__circle *c) { return circle_pair_at(p, c); }
-CD_FMA_CLONES cdist__point_pair cdist__point_disk_pair(vec3 p, const cdist__circle *c) { return disk_pair_at(p, c); }
+CD_FMA_CLONES cdist__point_pair cdist__point_circle_pair(vec3 p, const cdist__circle *c) { return pair_at(p, c, 0); }
+CD_FMA_CLONES cdist__point_pair cdist__point_disk_pair(vec3 p, const cdist__circle *c) { return pair_at(p, c, 1); }
 
 void cdist__point_circle_core(vec3 p, const cdist__circle *c, cdist__best *b, int swap)
 {
@@ -148,7 +147,7 @@ CD_FMA_CLONES void cdist__point_result(vec3 p, const cdist__circle *c, int disk,
     vec3 ps = v_scale(down, rel);
     cdist__circle sc = *c;
     sc.r = c->r * down;
-    cdist__point_pair k = disk ? disk_pair_at(ps, &sc) : circle_pair_at(ps, &sc);
+    cdist__point_pair k = pair_at(ps, &sc, disk);
     write_result(p, c->c, up, &k, r);
 }
 
@@ -171,7 +170,7 @@ CD_FMA_CLONES CD_NO_SLP static int point_fast(double unit_tol, const cdist_vec3 
     split(rel, c.n, &h, &w, &np, &rho);
     /* the batch kernel's scale guard: |rel|^2 = |n x rel|^2 + h^2, or r^2 */
     if (!(cdist__fmax(v_sqr(np) + h * h, c.r * c.r) >= CD_POINT_MIN_SCALE * CD_POINT_MIN_SCALE)) return 0;
-    cdist__point_pair k = (disk && !(rho > c.r)) ? disk_inside(&c, h, w, np, rho, rel) : circle_pair(rel, &c, h, w, np, rho);
+    cdist__point_pair k = pair_of_split(rel, &c, disk, h, w, np, rho);
     write_result(p, c.c, 1.0, &k, r);
     return 1;
 }
