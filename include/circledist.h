@@ -198,6 +198,9 @@ CDIST_API int cdist_version_patch(void);
 CDIST_API const char *cdist_status_string(cdist_status status);
 /** The enumerator's name, e.g. "CDIST_ERR_NOT_UNIT" ("CDIST_UNKNOWN" if not listed). */
 CDIST_API const char *cdist_status_name(cdist_status status);
+/** The method's short name as the circledist tool's --method option spells it: "auto",
+ * "polynomial", "robust", "iteration" ("unknown" for numbers not listed). Since 1.1. */
+CDIST_API const char *cdist_method_name(cdist_method method);
 /** sizeof(cdist_result) as compiled into the library, for FFI users to check their layout. */
 CDIST_API size_t cdist_result_size(void);
 /** sizeof(cdist_pair) as compiled into the library. */

@@ -9,6 +9,7 @@ import math
 import os
 import random
 import re
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -67,6 +68,9 @@ check(len(outl) == 2, "json lines")
 o = json.loads(outl[0])
 check(o["equidistant"] is True and o["num_pairs"] == 1 and abs(o["distance"] - math.sqrt(29)) < 1e-15, outl[0])
 check(o["pairs"][0]["params"][0] is None, "NaN param is null")
+check(o["method"] == "auto" and o["sqr_distance"] == 29, "method by name, sqr_distance: " + outl[0])
+rc, out, err = run(["--format=json", "--method=robust"], "cc 0 0 0  0 0 1  1  3 0 0  0 0 1  1\n")
+check(json.loads(out)["method"] in ("robust", "auto"), "method name: " + out)
 e = json.loads(outl[1])
 check(e["line"] == 2 and "error" in e, outl[1])
 
@@ -187,14 +191,25 @@ check(abs(float(outl[1].split()[0]) - 3.0) < 1e-14, "normalized line " + outl[1]
 # reference), a second pair on a continuation row; --header: a '#' line before text output.
 rc, out, err = run(["--format=table"], "\n".join(lines[:20]) + "\npc 0 0 5  0 0 0  0 0 1  2\n")
 outl = out.splitlines()
-check(rc == 0 and outl[0].split()[:5] == ["line", "kind", "distance", "pairs", "equidistant"]
+check(rc == 0 and outl[0].split()[:5] == ["line", "kind", "distance", "n", "eq"]
       and outl[0].split()[5:] == ["x0", "y0", "z0", "x1", "y1", "z1"], "table header: " + outl[0])
+check(max(len(o) for o in outl) <= 110, "table rows fit 110 columns: %d" % max(len(o) for o in outl))
 for o, e in zip(outl[1:21], expected[:20]):
     f = o.split()
     check(f[1] == "pc" and abs(float(f[2]) - e) <= 1e-13 * max(1.0, e) and len(f) == 11, "table row: " + o)
 check(outl[21].split()[4] == "yes", "equidistant column: " + outl[21])
 rc, out, err = run(["--header"], "pc 3 4 12  0 0 0  0 0 1  2\n")
 check(out.startswith("# distance num_pairs equidistant") and len(out.splitlines()) == 2, "header: " + out)
+rc, out, err = run(["--header", "--no-header"], "pc 3 4 12  0 0 0  0 0 1  2\n")
+check(len(out.splitlines()) == 1 and not out.startswith("#"), "--no-header: " + out)
+# a pipe is not a terminal: no header by default (scripts read the plain format unchanged)
+rc, out, err = run([], "pc 3 4 12  0 0 0  0 0 1  2\n")
+check(len(out.splitlines()) == 1 and not out.startswith("#"), "no header into a pipe: " + out)
+# on a terminal the header comes first (script(1) gives the tool a pseudo-terminal)
+if shutil.which("script"):
+    pty = subprocess.run(["script", "-qec", "%s %s" % (tool, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "examples", "queries.txt")), "/dev/null"],
+                         capture_output=True, text=True, timeout=60)
+    check(pty.stdout.lstrip().startswith("# distance num_pairs"), "header on a terminal: %r" % pty.stdout[:80])
 
 # -j N: the same output, byte for byte, as one thread (every hard file, text and JSON).
 allhard = "".join(open(os.path.join(data, f)).read() for f in sorted(os.listdir(data)) if f.endswith("_hard.txt"))

@@ -8,6 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
+#include <unistd.h>
 
 #include "circledist.h"
 #include "query_io.h"
@@ -31,9 +32,13 @@ static void usage(FILE *f)
             "  --format=text    distance num_pairs equidistant, then per pair the point on the first\n"
             "                   object and the point on the second (x y z each), all %%.17g (default)\n"
             "  --format=json    one JSON object per line with the same fields plus the parameters\n"
-            "                   (NaN as null; strings always valid UTF-8, bad bytes as U+FFFD)\n"
-            "  --format=table   aligned columns under a header row; a second pair on its own row\n"
-            "  --header         text format: first print a '#' line naming the columns\n"
+            "                   and the method's name (a NaN parameter as null; no sqr_distance for\n"
+            "                   the swept kinds' signed distance; strings always valid UTF-8)\n"
+            "  --format=table   aligned columns under a header row (distance %%.17g, coordinates\n"
+            "                   to 6 digits); a second pair on its own row\n"
+            "  --header, --no-header\n"
+            "                   text format: a first '#' line naming the columns (default: only\n"
+            "                   when standard output is a terminal)\n"
             "  --normalize      scale normals, line and ray directions and helix axes to unit length\n"
             "                   (for hand-typed values such as 0.7071 0.7071 0); without it they must\n"
             "                   be unit length within 1e-6\n"
@@ -115,15 +120,15 @@ static void print_result(const cdist_result *r, int fmt, long lineno, const char
         putchar('\n');
         return;
     }
-    if (fmt == FMT_TABLE) {
+    if (fmt == FMT_TABLE) { /* the distance in full; coordinates to 6 digits, to fit ~110 columns */
         for (int i = 0; i < (r->num_pairs > 0 ? r->num_pairs : 1); i++) {
             if (i == 0)
-                printf("%6ld %-4s %24.17g %5d %11s", lineno, kind, r->distance, r->num_pairs,
+                printf("%5ld %-4s %23.17g %1d %-3s", lineno, kind, r->distance, r->num_pairs,
                        r->equidistant ? "yes" : "no");
             else
-                printf("%6s %-4s %24s %5s %11s", "", "", "", "", "");
+                printf("%5s %-4s %23s %1s %-3s", "", "", "", "", "");
             for (int k = 0; k < 2 && i < r->num_pairs; k++)
-                printf(" %24.17g %24.17g %24.17g", r->pairs[i].point[k].x, r->pairs[i].point[k].y,
+                printf("  %10.6g %10.6g %10.6g", r->pairs[i].point[k].x, r->pairs[i].point[k].y,
                        r->pairs[i].point[k].z);
             putchar('\n');
         }
@@ -131,8 +136,10 @@ static void print_result(const cdist_result *r, int fmt, long lineno, const char
     }
     printf("{\"line\":%ld,\"kind\":\"%s\",\"distance\":", lineno, kind);
     json_num(stdout, r->distance);
-    printf(",\"sqr_distance\":");
-    json_num(stdout, r->sqr_distance);
+    if (!isnan(r->sqr_distance) || isnan(r->distance)) { /* a contact's signed distance has no square */
+        printf(",\"sqr_distance\":");
+        json_num(stdout, r->sqr_distance);
+    }
     printf(",\"num_pairs\":%d,\"equidistant\":%s,\"pairs\":[", r->num_pairs, r->equidistant ? "true" : "false");
     for (int i = 0; i < r->num_pairs; i++) {
         printf("%s{\"points\":[", i ? "," : "");
@@ -152,16 +159,14 @@ static void print_result(const cdist_result *r, int fmt, long lineno, const char
         json_num(stdout, r->pairs[i].param[1]);
         printf("]}");
     }
-    printf("],\"method\":%d}\n", r->method);
+    printf("],\"method\":\"%s\"}\n", cdist_method_name(r->method));
 }
 
 static void print_header(int fmt, int header)
 {
     if (fmt == FMT_TABLE) {
-        printf("%6s %-4s %24s %5s %11s", "line", "kind", "distance", "pairs", "equidistant");
-        const char *cols[] = {"x0", "y0", "z0", "x1", "y1", "z1"};
-        for (int i = 0; i < 6; i++) printf(" %24s", cols[i]);
-        putchar('\n');
+        printf("%5s %-4s %23s %1s %-3s  %10s %10s %10s  %10s %10s %10s\n", "line", "kind", "distance", "n", "eq",
+               "x0", "y0", "z0", "x1", "y1", "z1");
     } else if (fmt == FMT_TEXT && header) {
         printf("# distance num_pairs equidistant then per pair: x0 y0 z0 (first object) x1 y1 z1 (second)\n");
     }
@@ -496,7 +501,7 @@ static int finish_output(void)
 
 int main(int argc, char **argv)
 {
-    settings s = {CDIST_METHOD_AUTO, FMT_TEXT, 0, 0, 1, 0};
+    settings s = {CDIST_METHOD_AUTO, FMT_TEXT, isatty(STDOUT_FILENO), 0, 1, 0};
     int nfiles = 0, opts_done = 0;
     const char **files = malloc((size_t)(argc + 1) * sizeof *files);
     if (!files) return EXIT_USAGE;
@@ -520,6 +525,7 @@ int main(int argc, char **argv)
         else if (!strcmp(a, "--format=json")) s.fmt = FMT_JSON;
         else if (!strcmp(a, "--format=table")) s.fmt = FMT_TABLE;
         else if (!strcmp(a, "--header")) s.header = 1;
+        else if (!strcmp(a, "--no-header")) s.header = 0;
         else if (!strcmp(a, "--normalize")) s.normalize = 1;
         else if (!strcmp(a, "--method=auto")) s.method = CDIST_METHOD_AUTO;
         else if (!strcmp(a, "--method=polynomial")) s.method = CDIST_METHOD_POLYNOMIAL;

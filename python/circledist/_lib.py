@@ -4,10 +4,11 @@
 The library is searched in this order, and the ImportError lists every place tried:
 
 1. ``$CIRCLEDIST_LIBRARY`` (a file path), if set; nothing else is tried then.
-2. The library installed together with this package by ``meson install``: its install path is
+2. The copy inside this package's directory (a wheel built by ``pip install .``).
+3. The library installed together with this package by ``meson install``: its install path is
    written into the generated ``_build_config.py`` (first relative to this package, so a
    ``--destdir`` or relocated prefix works, then the absolute configured path).
-3. The system loader: ``ctypes.util.find_library("circledist")``, then ``libcircledist.so.1``.
+4. The system loader: ``ctypes.util.find_library("circledist")``, then ``libcircledist.so.1``.
 """
 import ctypes
 import ctypes.util
@@ -16,6 +17,7 @@ import os
 import numpy as np
 
 SONAME = "libcircledist.so.1"
+PACKAGE_DIR = os.path.dirname(os.path.abspath(__file__))
 
 
 def _build_config_candidates():
@@ -30,13 +32,33 @@ def _build_config_candidates():
     # relative to this file first makes a --destdir staging or a moved prefix work too.
     rel_py = os.path.relpath(bc.PYTHON_DIR, bc.PREFIX)
     rel_lib = os.path.relpath(libdir, bc.PREFIX)
-    site = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+    site = os.path.dirname(PACKAGE_DIR)
     if not rel_py.startswith("..") and not rel_lib.startswith("..") and \
             site.endswith(os.sep + rel_py):
         root = site[: -len(rel_py) - 1]
         found.append(("installed with this package", os.path.join(root, rel_lib, bc.LIBRARY)))
     found.append(("configured install path", os.path.join(libdir, bc.LIBRARY)))
     return found
+
+
+# Candidates that are files this package expects to exist (the others are names for the loader).
+_FILE_CANDIDATES = ("inside this package", "installed with this package", "configured install path")
+
+
+def tool_path():
+    """The circledist tool installed with this package (inside a wheel, or meson's bindir), else
+    the first on PATH; None when there is none."""
+    import shutil
+    candidates = [os.path.join(PACKAGE_DIR, "circledist")]
+    try:
+        from . import _build_config as bc
+        candidates.append(os.path.join(bc.PREFIX, bc.BINDIR, "circledist"))
+    except (ImportError, AttributeError):
+        pass
+    for path in candidates:
+        if os.path.isfile(path) and os.access(path, os.X_OK):
+            return path
+    return shutil.which("circledist")
 
 
 def load():
@@ -46,13 +68,14 @@ def load():
     if env:
         candidates = [("$CIRCLEDIST_LIBRARY", env)]
     else:
-        candidates = _build_config_candidates()
+        candidates = [("inside this package", os.path.join(PACKAGE_DIR, SONAME))]
+        candidates += _build_config_candidates()
         found = ctypes.util.find_library("circledist")
         if found:
             candidates.append(("ctypes.util.find_library", found))
         candidates.append(("system loader", SONAME))
     for how, path in candidates:
-        if how in ("installed with this package", "configured install path") and not os.path.exists(path):
+        if how in _FILE_CANDIDATES and not os.path.exists(path):
             tried.append("%s: %s (no such file)" % (how, path))
             continue
         try:

@@ -51,6 +51,12 @@ const char *cdist_status_name(cdist_status st)
     return ((unsigned)st < STATUS_COUNT) ? status_table[st].name : "CDIST_UNKNOWN";
 }
 
+const char *cdist_method_name(cdist_method method)
+{
+    static const char *const names[] = {"auto", "polynomial", "robust", "iteration"};
+    return ((unsigned)method < sizeof names / sizeof names[0]) ? names[method] : "unknown";
+}
+
 size_t cdist_result_size(void) { return sizeof(cdist_result); }
 size_t cdist_pair_size(void) { return sizeof(cdist_pair); }
 

@@ -17,7 +17,7 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."
 from checks import check, finish  # noqa: E402
 
 src, tool = sys.argv[1:3]
-pages = {name: os.path.join(src, "man", name) for name in ("circledist.1", "libcircledist.3")}
+pages = {name: os.path.join(src, "man", name + ".in") for name in ("circledist.1", "libcircledist.3")}
 text = {}
 for name, path in pages.items():
     raw = open(path).read()

@@ -39,6 +39,11 @@ for f in "$dest$includedir/circledist.h" "$dest$includedir/circledist_version.h"
   check_file "$f"
 done
 for f in "$src"/docs/*.md; do check_file "$dest$datadir/doc/libcircledist/$(basename "$f")"; done
+# The man pages name this build's documentation directory, not a fixed one.
+for page in "$dest$mandir/man1/circledist.1" "$dest$mandir/man3/libcircledist.3"; do
+  grep -qF "$datadir/doc/libcircledist" "$page" && ok || fail "$page does not name $datadir/doc/libcircledist"
+  grep -q '@DOCDIR@' "$page" && fail "$page has an unsubstituted @DOCDIR@" || ok
+done
 if [ "$default_library" = static ]; then
   check_file "$lib/libcircledist.a"
 else

@@ -72,8 +72,10 @@ for (k, v, want), line in zip(cases, lines):
     if d is None or abs(d - want) > 1e-14 * (1 + abs(want)):
         fail(f"{k} {v}: distance {d} expected {want}")
         continue
-    if o["sqr_distance"] is not None:
-        fail(f"{k}: sqr_distance should be null for a signed distance")
+    if "sqr_distance" in o:
+        fail(f"{k}: a signed distance has no sqr_distance field")
+    if o.get("method") not in ("auto", "polynomial", "robust", "iteration"):
+        fail(f"{k}: method {o.get('method')!r} is not a method name")
     p0, p1 = o["pairs"][0]["points"]
     sep = math.dist(p0, p1)
     if abs(sep - abs(d)) > 1e-13:
