@@ -58,7 +58,19 @@ run_tsan build-tsan || status=1
 # With CIRCLEDIST_SLOW=1 (CI): also a static-only build (-Ddefault_library=static), whose tests
 # skip only what needs a shared library (ctypes, exported-symbol checks).
 if [ "${CIRCLEDIST_SLOW:-0}" = 1 ]; then
-  run_suite build-static -Ddefault_library=static || status=1
+  run_suite build-static -Ddefault_library=static -Dbench=false || status=1
+  # A packager's build: the library, the tool and the Python package only (-Dtests=false
+  # -Dbench=false) configure, compile and install.
+  pk=build-packager
+  if { [ -d $pk ] || meson setup $pk -Dtests=false -Dbench=false >/dev/null; } &&
+    meson compile -C $pk >/dev/null && rm -rf $pk/dest && meson install -C $pk --destdir dest >/dev/null &&
+    [ -n "$(find $pk/dest -name libcircledist.so.1)" ] && [ -z "$(find $pk -name 'test_*' -type f)" ]; then
+    total_ok=$((total_ok + 1))
+  else
+    echo "FAIL: packager build (-Dtests=false -Dbench=false)"
+    total_fail=$((total_fail + 1))
+    status=1
+  fi
 fi
 [ "$status" -ne 0 ] && [ "$total_fail" -eq 0 ] && total_fail=1
 echo "test suites: $total_ok passed, $total_fail failed"

@@ -68,4 +68,29 @@ for q in queries:
     check(documented(q, table), "README query table has no row for %s" % q)
 for kind in kinds:
     check("`%s`" % kind in table, "README query table does not give tool kind %s" % kind)
+
+# The README's Python column names functions the package has (no "—" left for existing ones).
+python_dir = os.path.join(src, "python")
+if os.environ.get("CIRCLEDIST_LIBRARY") and os.path.isdir(python_dir):
+    sys.path.insert(0, python_dir)
+    import circledist  # noqa: E402
+    for line in table.splitlines():
+        py = line.rstrip(" |").rsplit(" | ", 1)[-1]
+        for name in re.findall(r"`(\w+)`", py):
+            check(hasattr(circledist, name), "README names Python function %s, which the package lacks" % name)
+        check("—" not in py, "README row gives no Python name: " + line[:80])
+
+# The README's two quick-start commands are what .ci/run runs: the first installs the
+# dependencies with the same script, the second is the test command .ci/run calls.
+quick = readme.split("## Quick start", 1)[-1].split("\n## ", 1)[0]
+commands = [c.strip() for c in re.findall(r"^    (\S.*)$", quick, re.M)]
+ci = open(os.path.join(src, ".ci", "run")).read()
+ci_lines = [c.strip() for c in ci.splitlines() if c.strip() and not c.strip().startswith("#")]
+check(len(commands) >= 2, "README quick start has %d commands" % len(commands))
+if len(commands) >= 2:
+    install = commands[0].split("&&")[0].strip()
+    check(install in ci_lines, "README's install step '%s' is not a line of .ci/run" % install)
+    test_cmds = [c for c in commands[1:] if "scripts/test.sh" in c]
+    check(any(c in ci_lines for c in test_cmds),
+          "no README test command %s is a line of .ci/run %s" % (test_cmds, ci_lines))
 finish("check_docs")
