@@ -12,10 +12,11 @@ the closest core points. All neighbour pairs are answered by one vectorised call
 Neighbouring rings are linked (each passes through the other's disk), so some pairs sit
 close to touching. Run:
 
-    python3 examples/torus_chain.py [--rings 9] [--png docs/torus_chain.png]
+    python3 examples/torus_chain.py [--rings 9] [--png FILE]
 
-It prints one line per neighbour pair and writes a PNG (matplotlib, Agg backend) of the rings
-with their closest segments drawn in red.
+It prints one line per neighbour pair and, with --png, writes a PNG (matplotlib, Agg backend) of
+the rings with their closest segments drawn in red (the README's picture is
+`--png docs/torus_chain.png`). Without --png nothing is written.
 """
 import argparse
 
@@ -109,7 +110,7 @@ def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--rings", type=int, default=7)
     ap.add_argument("--seed", type=int, default=3)
-    ap.add_argument("--png", default="docs/torus_chain.png", help="output picture ('' for none)")
+    ap.add_argument("--png", default="", help="write the picture to this file (default: none)")
     args = ap.parse_args(argv)
     cores, tube = make_chain(args.rings, args.seed)
     clearance, res = neighbours(cores, tube)

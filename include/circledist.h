@@ -414,7 +414,7 @@ CDIST_API cdist_status cdist_query_set_threads(cdist_query *q, int threads);
 /** The worker thread count (1 for a NULL handle). */
 CDIST_API int cdist_query_get_threads(const cdist_query *q);
 
-/* ---- swept objects and gradients (issue 14) ----------------------------------------- */
+/* ---- swept objects and gradients ---------------------------------------------------- */
 /* A swept object is a core (point, segment, circle, disk) swept by a ball of radius
  * `radius`: the set of points within `radius` of the core. The signed distance between two
  * swept objects (or a swept object and a plain object, radius 0) is

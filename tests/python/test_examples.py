@@ -20,6 +20,13 @@ def _example(name):
     return mod
 
 
+def test_torus_chain_writes_nothing_unless_asked(tmp_path, monkeypatch):
+    tc = _example("torus_chain")
+    monkeypatch.chdir(tmp_path)
+    tc.main(["--rings", "3"])
+    assert list(tmp_path.iterdir()) == []
+
+
 def test_torus_chain(tmp_path):
     tc = _example("torus_chain")
     png = tmp_path / "chain.png"
