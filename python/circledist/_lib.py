@@ -108,6 +108,7 @@ def _decl(name, restype, *argtypes, required=True):
 version_string = _decl("cdist_version_string", _c.c_char_p)
 version_major = _decl("cdist_version_major", _c.c_int)
 status_name = _decl("cdist_status_name", _c.c_char_p, _c.c_int)
+method_name = _decl("cdist_method_name", _c.c_char_p, _c.c_int)
 status_string = _decl("cdist_status_string", _c.c_char_p, _c.c_int)
 result_size = _decl("cdist_result_size", _c.c_size_t)
 query_new = _decl("cdist_query_new", _P)

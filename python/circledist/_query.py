@@ -22,6 +22,10 @@ class Method(enum.IntEnum):
     ROBUST = 2
     ITERATION = 3
 
+    def __str__(self):
+        """The name as the tool and cdist_method_name() spell it: print(r.method) shows 'robust'."""
+        return self.name.lower()
+
 
 class CircleDistError(Exception):
     """A query or option was rejected by the library.

@@ -64,6 +64,13 @@ def test_bad_method():
         assert e.value.name == "CDIST_ERR_BAD_OPTION"
 
 
+def test_method_prints_its_name():
+    r = cd.circle_circle(cd.Circle((0, 0, 0), (0, 0, 1), 1), cd.Circle((3, 0, 0), (0, 1, 0), 1))
+    assert isinstance(r.method, cd.Method) and str(r.method) == cd._lib.method_name(int(r.method)).decode()
+    assert [str(m) for m in cd.Method] == ["auto", "polynomial", "robust", "iteration"]
+    assert "method=" + r.method.name in repr(r)
+
+
 def test_unit_tolerance_option():
     with cd.Query(unit_tolerance=float("inf")) as q:
         r = q.point_circle((3, 4, 12), cd.Circle((0, 0, 0), (0, 0, 7), 2))
