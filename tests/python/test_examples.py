@@ -76,3 +76,74 @@ def test_candidate_grid_against_all_pairs():
     dist = np.linalg.norm(pts[:, None] - pts[None], axis=2)
     want = {(a, b) for a, b in zip(*np.nonzero(dist < 1.3)) if a < b and a < 300}
     assert want <= got
+
+
+def _disk_samples(c, n, r, k=30):
+    """Points of a disk: k rings of k points (polar grid), for a sampled brute force."""
+    u = np.cross(n, [1.0, 0, 0] if abs(n[0]) < 0.9 else [0, 1.0, 0])
+    u /= np.linalg.norm(u)
+    v = np.cross(n, u)
+    rr, aa = np.meshgrid(np.linspace(0, r, k), np.linspace(-np.pi, np.pi, 2 * k, endpoint=False))
+    return c + (rr * np.cos(aa)).reshape(-1, 1) * u + (rr * np.sin(aa)).reshape(-1, 1) * v
+
+
+def _check_rings(pr, res):
+    labels, c, n, r = res["labels"], res["centres"], res["normals"], res["radii"]
+    assert len(labels) == 80 and np.allclose(np.linalg.norm(n, axis=1), 1)
+    index = {lab: k for k, lab in enumerate(labels)}
+    assert res["pairs"] and all(p[2] <= 7.5 for p in res["pairs"])
+    for a, b, d, dc, _, _, _, pts in res["pairs"][:12]:
+        i, j = index[a], index[b]
+        pa, pb = _disk_samples(c[i], n[i], r[i]), _disk_samples(c[j], n[j], r[j])
+        brute = np.min(np.linalg.norm(pa[:, None, :] - pb[None, :, :], axis=2))
+        # the exact distance lies below every sampled pair and within the grid's resolution of it
+        assert d <= brute + 1e-12 and brute - d < 0.2, (a, b, d, brute)
+        assert abs(np.linalg.norm(pts[1] - pts[0]) - d) < 1e-9 and d <= dc
+    # every pair of different residues closer than 7.5 is listed (no pair lost)
+    listed = {(p[0], p[1]) for p in res["pairs"]}
+    for i in range(len(labels)):
+        for j in range(i + 1, len(labels)):
+            if pr.residue(labels[i]) == pr.residue(labels[j]):
+                continue
+            lower = np.linalg.norm(c[i] - c[j]) - r[i] - r[j]   # disks are at least this far apart
+            if lower < 7.0 and (labels[i], labels[j]) not in listed:
+                pa, pb = _disk_samples(c[i], n[i], r[i], 12), _disk_samples(c[j], n[j], r[j], 12)
+                assert np.min(np.linalg.norm(pa[:, None, :] - pb[None, :, :], axis=2)) > 7.5 - 1e-9
+    for row in res["missed"]:
+        assert row[2] <= pr.CONTACT and not row[6]
+    for row in res["extra"]:
+        assert row[2] > pr.CONTACT and row[6]
+
+
+def test_protein_rings_shipped_table():
+    import io
+    pr = _example("protein_rings")
+    out = io.StringIO()
+    res = pr.analyse(pdb="/nonexistent/1tii.pdb", out=out)
+    assert "using the shipped ring table" in out.getvalue() and res["pierced"] is None
+    _check_rings(pr, res)
+
+
+def test_protein_rings_from_pdb(tmp_path):
+    import io
+    pr = _example("protein_rings")
+    if not os.path.exists(pr.DEFAULT_PDB):
+        pytest.skip("%s absent (Debian's pymol-data not installed): the shipped table is tested alone" % pr.DEFAULT_PDB)
+    table = tmp_path / "rings.tsv"
+    res = pr.analyse(pdb=pr.DEFAULT_PDB, out=io.StringIO(), table=str(table))
+    _check_rings(pr, res)
+    # the shipped table is what the PDB file gives (its provenance)
+    shipped = pr.read_table(pr.SHIPPED_TABLE)
+    made = pr.read_table(str(table))
+    assert shipped[0] == made[0] and all(np.array_equal(x, y) for x, y in zip(shipped[1:], made[1:]))
+    assert res["pierced"] == []   # a well-formed structure: no bond passes through a ring
+    # the piercing check finds a bond through a ring's face and none beside it
+    atoms = pr.read_pdb(pr.DEFAULT_PDB)
+    labels, members, c, n, r = pr.ring_disks(atoms)
+    k = 7
+    through = [("Z", "1", "XXX", "P1", "C", tuple(c[k] - 0.7 * n[k])), ("Z", "1", "XXX", "P2", "C", tuple(c[k] + 0.7 * n[k]))]
+    beside = [("Z", "2", "XXX", "Q1", "C", tuple(c[k] + 1.6 * r[k] * np.cross(n[k], [0, 0, 1]) / np.linalg.norm(np.cross(n[k], [0, 0, 1])) + s * 0.7 * n[k]))
+              for s in (-1, 1)]
+    found, _ = pr.pierced(atoms + through + beside, members, c, n, r)
+    got = {(ring, atoms_i) for ring, atoms_i, _, _ in found}
+    assert got == {(k, len(atoms))}, found
