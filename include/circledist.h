@@ -686,6 +686,82 @@ CDIST_API cdist_status cdist_sphere_circle_grad(cdist_query *q, const cdist_sphe
 /** cdist_sphere_disk() with the gradient. */
 CDIST_API cdist_status cdist_sphere_disk_grad(cdist_query *q, const cdist_sphere *a, const cdist_circle *b, cdist_contact *c, cdist_grad *g);
 
+/* ---- linking and time of impact ------------------------------------------------------ */
+
+/* Linking. The linking number of two oriented circles a and b (each oriented counterclockwise
+ * about its normal: the tangent at a point p is N x (p - C)) is the signed number of times b
+ * crosses the open disk of a, a crossing counting +1 when b passes through the disk in the
+ * direction of a's normal and -1 against it. It is symmetric (lk(a, b) = lk(b, a)), equals the
+ * Gauss linking integral, changes sign when either normal is reversed, and is -1, 0 or +1 for
+ * two circles. It is defined only when the circles do not meet.
+ *
+ * Guarantee: with L = max(r_a, r_b, |C_b - C_a|) and d the certified circle-circle distance
+ * (cdist_circle_circle()), pairs with d <= 2^-40 L (9.1e-13 L) are reported
+ * ::CDIST_LINK_TOUCHING; every other pair gets its exact linking number, never a wrong -1, 0 or
+ * +1: the crossings are counted in double with a running error bound, and again in extended
+ * precision (binary128, or long double where the compiler has no binary128) when the bound is
+ * not below d. One configuration can exhaust even the extended bound: planes within about 1e-8
+ * rad of parallel, one circle nearly tangent to the other's plane, and d below about 5e-11 L;
+ * it is then reported ::CDIST_LINK_TOUCHING with ::CDIST_LINK_FLAG_UNRESOLVED (never a wrong
+ * number). A circle of radius 0 (a point) is unlinked from everything it does not touch.
+ *
+ * Tori (solid, cdist_torus): linked when their core circles are linked and the solids are
+ * disjoint, i.e. core distance > r_a + r_b (tube radii). When the solids overlap or touch
+ * (core distance <= r_a + r_b, with r_a + r_b > 0) the result is ::CDIST_LINK_OVERLAP and
+ * core_linking still gives the cores' value (their linking number, or ::CDIST_LINK_TOUCHING).
+ */
+
+/** Values of cdist_link::linking besides -1, 0 and +1. Numbers are fixed. */
+typedef enum cdist_link_value {
+    CDIST_LINK_TOUCHING = 2, /**< the circles meet (distance <= 2^-40 L): linking is undefined */
+    CDIST_LINK_OVERLAP = 3,  /**< tori only: the solid tori overlap or touch */
+    CDIST_LINK_ERROR = 4     /**< the query failed (see its status) */
+} cdist_link_value;
+
+/** Flags (bits of cdist_link::flags). Values are fixed. */
+typedef enum cdist_link_flag {
+    /** The double-precision count was not certain; extended precision decided. */
+    CDIST_LINK_FLAG_EXTENDED = 1,
+    /** Even extended precision could not decide: reported ::CDIST_LINK_TOUCHING (see above). */
+    CDIST_LINK_FLAG_UNRESOLVED = 2
+} cdist_link_flag;
+
+/** Result of a linking query. Output only; growth policy as for ::cdist_result (new fields
+ *  take their place in `reserved`). */
+typedef struct cdist_link {
+    int linking;          /**< -1, 0, +1, or a ::cdist_link_value */
+    int core_linking;     /**< the core circles' value (equal to linking for circles) */
+    double distance;      /**< circles: their distance; tori: signed distance (core - tube radii) */
+    double core_distance; /**< distance between the (core) circles, from cdist_circle_circle() */
+    double scale;         /**< L = max(r_a, r_b, |C_b - C_a|) of the (core) circles */
+    int flags;            /**< bits of ::cdist_link_flag */
+    int reserved_int;     /**< reserved; 0 */
+    double reserved[4];   /**< reserved for future fields; set to zero */
+} cdist_link;
+
+/** sizeof(cdist_link) as compiled into the library. */
+CDIST_API size_t cdist_link_size(void);
+/** Linking number of circles a and b (the rule above). Validates like cdist_circle_circle()
+ *  and runs it with the handle's method; on error out->linking is ::CDIST_LINK_ERROR and the
+ *  distances NaN. */
+CDIST_API cdist_status cdist_link_circles(cdist_query *q, const cdist_circle *a, const cdist_circle *b, cdist_link *out);
+/** Linking of two solid tori (the rule above); tube radii must be finite and >= 0. */
+CDIST_API cdist_status cdist_link_tori(cdist_query *q, const cdist_torus *a, const cdist_torus *b, cdist_link *out);
+/** n linking queries: object i of a at (const char *)a + i * a_stride bytes (0 broadcasts one
+ *  object, negative allowed), likewise b, both ::cdist_circle; out[i] and statuses[i] (may be
+ *  NULL) written for every i; a bad entry gets its status and ::CDIST_LINK_ERROR, the others
+ *  are answered exactly as cdist_link_circles() answers them. Runs on the calling thread and
+ *  never allocates. Returns ::CDIST_OK, else the status of the lowest failing entry
+ *  (cdist_query_last_error() names it); NULL handle or arrays (n > 0):
+ *  ::CDIST_ERR_NULL_ARGUMENT for every entry. */
+CDIST_API cdist_status cdist_link_circles_batch(cdist_query *q, size_t n, const void *a, ptrdiff_t a_stride,
+                                                const void *b, ptrdiff_t b_stride, cdist_link *out,
+                                                cdist_status *statuses);
+/** cdist_link_circles_batch() for ::cdist_torus objects (cdist_link_tori()). */
+CDIST_API cdist_status cdist_link_tori_batch(cdist_query *q, size_t n, const void *a, ptrdiff_t a_stride,
+                                             const void *b, ptrdiff_t b_stride, cdist_link *out,
+                                             cdist_status *statuses);
+
 #ifdef __cplusplus
 }
 #endif

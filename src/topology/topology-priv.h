@@ -1,0 +1,13 @@
+/* SPDX-License-Identifier: MIT */
+/* Linking and time of impact (src/topology): internal entry points, for the tests. */
+#ifndef CDIST_TOPOLOGY_PRIV_H
+#define CDIST_TOPOLOGY_PRIV_H
+
+#include "internal.h"
+
+/* The crossing count of link_core.h for validated circles a, b whose certified distance is d
+ * (caller's units, d > CD_LINK_TOUCH_REL * L): -1, 0, +1, or CDIST_LINK_TOUCHING when the error
+ * bound of that precision (extended = 0: double, 1: the extended type) does not settle it. */
+int cdist__link_count(const cdist__circle *a, const cdist__circle *b, double d, int extended);
+
+#endif
