@@ -762,6 +762,107 @@ CDIST_API cdist_status cdist_link_tori_batch(cdist_query *q, size_t n, const voi
                                              const void *b, ptrdiff_t b_stride, cdist_link *out,
                                              cdist_status *statuses);
 
+/* Time of impact. Two swept objects (cdist_shape) each move rigidly over t in [0, 1]. The
+ * motion model (cdist_motion): a point x of the object at t = 0 is at
+ *     x(t) = c + t T + R(t omega) (x - c),
+ * where c is the rotation centre (any point, fixed in the body), T is the translation of c over
+ * the interval, and R(t omega) is the rotation by angle t |omega| about the axis omega / |omega|
+ * (Rodrigues). So c moves linearly while the body turns about c at a constant angular velocity
+ * omega. Two poses (R0, p0) and (R1, p1) of a body with reference point c0 give
+ * omega = log(R1 R0^T) (axis times angle, angle in [0, pi], or more for several turns) and
+ * T = p1 - p0. The object's normals turn with it. A NULL motion keeps the object still.
+ *
+ * cdist_toi() finds the first t at which the signed distance (cdist_torus_torus() etc.) reaches
+ * the target separation, by conservative advancement on the exact distance d(t). No point of a
+ * body moves faster than |T| + |omega| rho, where rho is the largest distance of its core from
+ * c. So d shrinks no faster than V = |T_a - T_b| + |omega_a| rho_a + |omega_b| rho_b, and the
+ * step from t to t + (d(t) - target - slack) / V cannot pass a contact. The result never
+ * tunnels: a ring that passes through another's hole is no hit, and one that clips the rim is.
+ * Guarantee: on ::CDIST_TOI_HIT, d(s) > target for every s in [0, t) and
+ * d(t) <= target + tolerance. On ::CDIST_TOI_NONE, d(s) > target on all of [0, 1]. On
+ * ::CDIST_TOI_ITERATION_LIMIT, d(s) > target on [0, t] and the search stopped. slack covers
+ * the rounding of poses and distances: 64 eps times the largest coordinate of the motion. The
+ * tolerance used is max(tolerance, 2 slack). The distance tolerance does not bound the time: a
+ * grazing approach (d' near 0) can sit within the tolerance for a long time. Each step costs one
+ * contact query. The count is about log(gap / tolerance) / (|d'| / V) near a transversal contact,
+ * so it is larger when the approach speed |d'| is small compared with V (fast spin, slow
+ * approach). */
+
+/** Shape types of ::cdist_shape. Numbers are fixed. Circles (a torus with tube radius 0),
+ *  segments (a capsule with radius 0), points and disks are the zero-radius cases. */
+typedef enum cdist_shape_type {
+    CDIST_SHAPE_SPHERE = 0,      /**< u.sphere */
+    CDIST_SHAPE_CAPSULE = 1,     /**< u.capsule */
+    CDIST_SHAPE_TORUS = 2,       /**< u.torus */
+    CDIST_SHAPE_ROUNDED_DISK = 3 /**< u.rounded_disk */
+} cdist_shape_type;
+
+/** A swept object of any type. sizeof = 88 bytes on LP64 (cdist_shape_size()). */
+typedef struct cdist_shape {
+    int type;         /**< a ::cdist_shape_type */
+    int reserved_int; /**< reserved; 0 */
+    /** The object, by type. */
+    union {
+        cdist_sphere sphere;             /**< ::CDIST_SHAPE_SPHERE */
+        cdist_capsule capsule;           /**< ::CDIST_SHAPE_CAPSULE */
+        cdist_torus torus;               /**< ::CDIST_SHAPE_TORUS */
+        cdist_rounded_disk rounded_disk; /**< ::CDIST_SHAPE_ROUNDED_DISK */
+        double reserved[10];             /**< room for larger types; keeps the size fixed */
+    } u;
+} cdist_shape;
+
+/** A rigid motion over t in [0, 1] (the model above). */
+typedef struct cdist_motion {
+    cdist_vec3 center;      /**< rotation centre c at t = 0 (a point fixed in the body) */
+    cdist_vec3 translation; /**< T: the displacement of c from t = 0 to t = 1 */
+    cdist_vec3 rotation;    /**< omega: rotation axis times total angle (radians) over [0, 1] */
+} cdist_motion;
+
+/** Outcome of a time-of-impact query. Numbers are fixed. */
+typedef enum cdist_toi_state {
+    CDIST_TOI_NONE = 0,           /**< no contact in [0, 1] */
+    CDIST_TOI_HIT = 1,            /**< contact at t */
+    CDIST_TOI_ITERATION_LIMIT = 2 /**< max_iterations steps used; no contact in [0, t] */
+} cdist_toi_state;
+
+/** Result of cdist_toi(). Output only; growth policy as for ::cdist_result. */
+typedef struct cdist_toi_result {
+    int state;             /**< a ::cdist_toi_state */
+    int iterations;        /**< distance queries used */
+    double t;              /**< HIT: the time of impact; otherwise the last time evaluated */
+    double distance;       /**< signed distance at t */
+    cdist_contact contact; /**< the contact of the objects posed at t (cdist_shape_at()) */
+    double reserved[4];    /**< reserved for future fields; set to zero */
+} cdist_toi_result;
+
+/** sizeof(cdist_shape) as compiled into the library. */
+CDIST_API size_t cdist_shape_size(void);
+/** sizeof(cdist_toi_result) as compiled into the library. */
+CDIST_API size_t cdist_toi_result_size(void);
+/** The shape s moved by m to time t (any real t), as cdist_toi() poses it. Thread-safe, no
+ *  handle. Returns ::CDIST_ERR_NULL_ARGUMENT, ::CDIST_ERR_BAD_OPTION (unknown type) or
+ *  ::CDIST_ERR_NOT_FINITE (t or the motion); the shape itself is not validated. */
+CDIST_API cdist_status cdist_shape_at(const cdist_shape *s, const cdist_motion *m, double t, cdist_shape *out);
+/** First time of impact of a moving with ma and b moving with mb (either motion may be NULL):
+ *  the first t in [0, 1] with signed distance <= target (+ tolerance, see above). target is any
+ *  finite separation (0: touching; negative: that penetration depth). tolerance > 0 is in
+ *  length units. max_iterations >= 1 caps the distance queries. The shapes are validated by the
+ *  contact query at t = 0 (its status and message); a bad type, a non-finite motion or target,
+ *  or a bad tolerance or cap gives ::CDIST_ERR_BAD_OPTION / ::CDIST_ERR_NOT_FINITE. Reaching the
+ *  cap is not an error (state ::CDIST_TOI_ITERATION_LIMIT). On error out->t and distance are NaN. */
+CDIST_API cdist_status cdist_toi(cdist_query *q, const cdist_shape *a, const cdist_motion *ma, const cdist_shape *b,
+                                 const cdist_motion *mb, double target, double tolerance, int max_iterations,
+                                 cdist_toi_result *out);
+/** n time-of-impact queries with the batch conventions of cdist_link_circles_batch(): entry i
+ *  uses the objects and motions at byte offsets i * stride of a, ma, b, mb (stride 0
+ *  broadcasts; ma or mb NULL: that side does not move). It writes out[i] and statuses[i] (may
+ *  be NULL) for every i, runs on the calling thread and never allocates. */
+CDIST_API cdist_status cdist_toi_batch(cdist_query *q, size_t n, const cdist_shape *a, ptrdiff_t a_stride,
+                                       const cdist_motion *ma, ptrdiff_t ma_stride, const cdist_shape *b,
+                                       ptrdiff_t b_stride, const cdist_motion *mb, ptrdiff_t mb_stride, double target,
+                                       double tolerance, int max_iterations, cdist_toi_result *out,
+                                       cdist_status *statuses);
+
 #ifdef __cplusplus
 }
 #endif

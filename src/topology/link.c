@@ -162,12 +162,8 @@ static cdist_status link_batch(cdist_query *q, link_fn fn, size_t n, const void 
             if (out) link_set_error(&out[i]);
             if (statuses) statuses[i] = CDIST_ERR_NULL_ARGUMENT;
         }
-        if (q) {
-            if (cdist__enter_setter(q)) return CDIST_ERR_HANDLE_BUSY;
-            cdist__fail(q, CDIST_ERR_NULL_ARGUMENT, "a handle, object array or output array is NULL");
-            cdist__leave_setter(q);
-        }
-        return CDIST_ERR_NULL_ARGUMENT;
+        return cdist__topology_batch_report(q, SIZE_MAX, CDIST_ERR_NULL_ARGUMENT,
+                                            "a handle, object array or output array is NULL");
     }
     size_t first = SIZE_MAX;
     cdist_status first_st = CDIST_OK;
@@ -184,10 +180,16 @@ static cdist_status link_batch(cdist_query *q, link_fn fn, size_t n, const void 
     }
     if (first == SIZE_MAX) return CDIST_OK;
     if (first_st == CDIST_ERR_HANDLE_BUSY) return first_st;
-    if (cdist__enter_setter(q)) return first_st;
-    cdist__fail(q, first_st, "entry %zu: %s", first, message);
+    return cdist__topology_batch_report(q, first, first_st, message);
+}
+
+cdist_status cdist__topology_batch_report(cdist_query *q, size_t first, cdist_status st, const char *message)
+{
+    if (!q || cdist__enter_setter(q)) return st;
+    if (first == SIZE_MAX) cdist__fail(q, st, "%s", message);
+    else cdist__fail(q, st, "entry %zu: %s", first, message);
     cdist__leave_setter(q);
-    return first_st;
+    return st;
 }
 
 cdist_status cdist_link_circles_batch(cdist_query *q, size_t n, const void *a, ptrdiff_t a_stride, const void *b,

@@ -10,4 +10,9 @@
  * bound of that precision (extended = 0: double, 1: the extended type) does not settle it. */
 int cdist__link_count(const cdist__circle *a, const cdist__circle *b, double d, int extended);
 
+/* The batches' closing report: records st with "entry <first>: <message>" (just the message when
+ * first is SIZE_MAX) on q, under its in-use flag (a busy or NULL handle is left alone), and
+ * returns st. */
+cdist_status cdist__topology_batch_report(cdist_query *q, size_t first, cdist_status st, const char *message);
+
 #endif
