@@ -797,18 +797,20 @@ typedef enum cdist_shape_type {
     CDIST_SHAPE_ROUNDED_DISK = 3 /**< u.rounded_disk */
 } cdist_shape_type;
 
+/** The object of a ::cdist_shape, by its type. sizeof = 80 bytes. */
+typedef union cdist_shape_data {
+    cdist_sphere sphere;             /**< ::CDIST_SHAPE_SPHERE */
+    cdist_capsule capsule;           /**< ::CDIST_SHAPE_CAPSULE */
+    cdist_torus torus;               /**< ::CDIST_SHAPE_TORUS */
+    cdist_rounded_disk rounded_disk; /**< ::CDIST_SHAPE_ROUNDED_DISK */
+    double reserved[10];             /**< room for larger types; keeps the size fixed */
+} cdist_shape_data;
+
 /** A swept object of any type. sizeof = 88 bytes on LP64 (cdist_shape_size()). */
 typedef struct cdist_shape {
-    int type;         /**< a ::cdist_shape_type */
-    int reserved_int; /**< reserved; 0 */
-    /** The object, by type. */
-    union {
-        cdist_sphere sphere;             /**< ::CDIST_SHAPE_SPHERE */
-        cdist_capsule capsule;           /**< ::CDIST_SHAPE_CAPSULE */
-        cdist_torus torus;               /**< ::CDIST_SHAPE_TORUS */
-        cdist_rounded_disk rounded_disk; /**< ::CDIST_SHAPE_ROUNDED_DISK */
-        double reserved[10];             /**< room for larger types; keeps the size fixed */
-    } u;
+    int type;           /**< a ::cdist_shape_type */
+    int reserved_int;   /**< reserved; 0 */
+    cdist_shape_data u; /**< the object (the member named by type) */
 } cdist_shape;
 
 /** A rigid motion over t in [0, 1] (the model above). */
