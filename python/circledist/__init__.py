@@ -44,7 +44,8 @@ from ._query import (FUNCTIONS as _FUNCTIONS, BatchResult, CircleDistError, Cont
                      default_query, status_name, status_string, version)
 
 from ._topology import (LINK_DTYPE, LINK_ERROR, LINK_FLAG_EXTENDED, LINK_FLAG_UNRESOLVED, LINK_OVERLAP,
-                        LINK_TOUCHING, link_details, linking)
+                        LINK_TOUCHING, MOTION_DTYPE, SHAPE_DTYPE, TOI_DTYPE, TOI_HIT,
+                        TOI_ITERATION_LIMIT, TOI_NONE, link_details, linking, time_of_impact)
 
 globals().update(_FUNCTIONS)
 
@@ -60,4 +61,6 @@ __all__ = ["Point", "Circle", "Disk", "Line", "Ray", "Segment", "Arc", "Helix", 
            "CircleDistError", "circle_basis", "circle_point", "default_query", "status_name",
            "status_string", "version", "RESULT_DTYPE", "CONTACT_DTYPE", "GRAD_DTYPE", "METHOD_AUTO", "METHOD_POLYNOMIAL",
            "METHOD_ROBUST", "METHOD_ITERATION", "linking", "link_details", "LINK_DTYPE", "LINK_TOUCHING",
-           "LINK_OVERLAP", "LINK_ERROR", "LINK_FLAG_EXTENDED", "LINK_FLAG_UNRESOLVED"] + sorted(_FUNCTIONS)
+           "LINK_OVERLAP", "LINK_ERROR", "LINK_FLAG_EXTENDED", "LINK_FLAG_UNRESOLVED",
+           "time_of_impact", "SHAPE_DTYPE", "MOTION_DTYPE", "TOI_DTYPE", "TOI_NONE", "TOI_HIT",
+           "TOI_ITERATION_LIMIT"] + sorted(_FUNCTIONS)

@@ -85,3 +85,107 @@ def linking(a, b, *, query=None):
             raise CircleDistError(int(status), _lib.query_last_error(h._handle()).decode())
         return int(out["linking"])
     return out["linking"].copy()
+
+
+# ---- time of impact --------------------------------------------------------------------------
+
+from ._objects import Capsule, RoundedDisk, Sphere, as_float_array  # noqa: E402
+
+#: numpy mirrors of struct cdist_shape, cdist_motion and cdist_toi_result.
+SHAPE_DTYPE = np.dtype([("type", np.int32), ("reserved_int", np.int32), ("u", np.float64, (10,))],
+                       align=True)
+MOTION_DTYPE = np.dtype([("center", np.float64, (3,)), ("translation", np.float64, (3,)),
+                         ("rotation", np.float64, (3,))], align=True)
+TOI_DTYPE = np.dtype([("state", np.int32), ("iterations", np.int32), ("t", np.float64),
+                      ("distance", np.float64), ("contact", _lib.CONTACT_DTYPE),
+                      ("reserved", np.float64, (4,))], align=True)
+#: Outcomes of a time-of-impact query (cdist_toi_state).
+TOI_NONE, TOI_HIT, TOI_ITERATION_LIMIT = 0, 1, 2
+_SHAPE_TYPES = {Sphere: 0, Capsule: 1, Torus: 2, RoundedDisk: 3}
+
+_shape_size = _lib._decl("cdist_shape_size", _c.c_size_t, required=False)
+_toi_size = _lib._decl("cdist_toi_result_size", _c.c_size_t, required=False)
+_toi_batch = _lib._decl("cdist_toi_batch", _c.c_int, _P, _c.c_size_t, _P, _c.c_ssize_t, _P,
+                        _c.c_ssize_t, _P, _c.c_ssize_t, _P, _c.c_ssize_t, _c.c_double,
+                        _c.c_double, _c.c_int, _P, _P, required=False)
+for _fn, _dt, _what in ((_shape_size, SHAPE_DTYPE, "cdist_shape"),
+                        (_toi_size, TOI_DTYPE, "cdist_toi_result")):
+    if _fn is not None and _fn() != _dt.itemsize:
+        raise ImportError("circledist: the library's %s is %d bytes, this package expects %d"
+                          % (_what, _fn(), _dt.itemsize))
+
+
+def _shapes(obj, what):
+    """A Sphere/Capsule/Torus/RoundedDisk (single or array) as a SHAPE_DTYPE array."""
+    kind = _SHAPE_TYPES.get(type(obj))
+    if kind is None:
+        raise TypeError("%s: expected a Sphere, Capsule, Torus or RoundedDisk, got %s"
+                        % (what, type(obj).__name__))
+    out = np.zeros(obj.shape, SHAPE_DTYPE)
+    out["type"] = kind
+    out["u"][..., :obj.WIDTH] = obj.data
+    return out
+
+
+def _motions(motion, what):
+    """None (no motion) or (center, translation, rotation), each broadcasting to (..., 3)."""
+    if motion is None:
+        return None
+    if len(motion) != 3:
+        raise ValueError("%s: expected (center, translation, rotation)" % what)
+    parts = [as_float_array(v, "%s.%s" % (what, f), 3)
+             for v, f in zip(motion, ("center", "translation", "rotation"))]
+    shape = np.broadcast_shapes(*(p.shape[:-1] for p in parts))
+    out = np.zeros(shape, MOTION_DTYPE)
+    for p, f in zip(parts, ("center", "translation", "rotation")):
+        out[f] = p
+    return out
+
+
+def _rec_rows(arr, shape, n):
+    """(pointer, byte stride, keep-alive) of a record array broadcast to `shape` (stride 0 for
+    one record)."""
+    if arr.ndim == 0 or arr.size == 1:
+        a = np.ascontiguousarray(arr.reshape(1))
+        return a.ctypes.data, 0, a
+    a = np.ascontiguousarray(np.broadcast_to(arr, shape)).reshape(n)
+    return a.ctypes.data, arr.dtype.itemsize, a
+
+
+def time_of_impact(a, b, motion_a=None, motion_b=None, *, target=0.0, tolerance=1e-9,
+                   max_iterations=100000, query=None):
+    """First time t in [0, 1] at which swept objects a and b, moving rigidly, reach the signed
+    distance `target` (within `tolerance`), by conservative advancement (never tunnels).
+
+    a, b: Sphere, Capsule, Torus or RoundedDisk (single or arrays, broadcast). motion_a,
+    motion_b: None (still) or (center, translation, rotation): x(t) = c + t T + R(t w)(x - c),
+    w the rotation vector (axis times angle over [0, 1]); docs/toi.md. Returns TOI_DTYPE
+    records (state TOI_NONE / TOI_HIT / TOI_ITERATION_LIMIT, iterations, t, distance, contact)
+    and a status array, from one C call (cdist_toi_batch)."""
+    if _toi_batch is None:
+        raise RuntimeError("time_of_impact: the loaded libcircledist has no cdist_toi_batch")
+    sa, sb = _shapes(a, "time_of_impact a"), _shapes(b, "time_of_impact b")
+    ma, mb = _motions(motion_a, "motion_a"), _motions(motion_b, "motion_b")
+    shapes = [sa.shape, sb.shape] + [m.shape for m in (ma, mb) if m is not None]
+    try:
+        shape = np.broadcast_shapes(*shapes)
+    except ValueError:
+        raise ValueError("time_of_impact: the batch shapes do not broadcast: %s" % shapes) from None
+    n = math.prod(shape)
+    out = np.zeros(shape, TOI_DTYPE)
+    status = np.zeros(shape, np.int32)
+    if n:
+        pa, stra, ka = _rec_rows(sa, shape, n)
+        pb, strb, kb = _rec_rows(sb, shape, n)
+        pma, strma, kma = _rec_rows(ma, shape, n) if ma is not None else (None, 0, None)
+        pmb, strmb, kmb = _rec_rows(mb, shape, n) if mb is not None else (None, 0, None)
+        h = query if query is not None else default_query()
+        with h._lock:
+            q = h._handle()
+            st = _toi_batch(q, n, pa, stra, pma, strma, pb, strb, pmb, strmb, float(target),
+                            float(tolerance), int(max_iterations), out.ctypes.data,
+                            status.ctypes.data)
+            if st in (1, 13):
+                raise CircleDistError(st, _lib.query_last_error(q).decode())
+        del ka, kb, kma, kmb
+    return out, status
