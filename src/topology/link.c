@@ -165,22 +165,29 @@ static cdist_status link_batch(cdist_query *q, link_fn fn, size_t n, const void 
         return cdist__topology_batch_report(q, SIZE_MAX, CDIST_ERR_NULL_ARGUMENT,
                                             "a handle, object array or output array is NULL");
     }
-    size_t first = SIZE_MAX;
-    cdist_status first_st = CDIST_OK;
-    char message[CD_MESSAGE_LEN];
+    cdist__topology_failure fail = {SIZE_MAX, CDIST_OK, ""};
     for (size_t i = 0; i < n; i++) {
         const char *ai = (const char *)a + (ptrdiff_t)i * a_stride, *bi = (const char *)b + (ptrdiff_t)i * b_stride;
         cdist_status st = fn(q, ai, bi, &out[i]);
         if (statuses) statuses[i] = st;
-        if (st && first == SIZE_MAX) {
-            first = i;
-            first_st = st;
-            if (st != CDIST_ERR_HANDLE_BUSY) memcpy(message, q->message, sizeof message);
-        }
+        cdist__topology_note(q, &fail, i, st);
     }
-    if (first == SIZE_MAX) return CDIST_OK;
-    if (first_st == CDIST_ERR_HANDLE_BUSY) return first_st;
-    return cdist__topology_batch_report(q, first, first_st, message);
+    return cdist__topology_finish(q, &fail);
+}
+
+void cdist__topology_note(const cdist_query *q, cdist__topology_failure *f, size_t i, cdist_status st)
+{
+    if (!st || f->first != SIZE_MAX) return;
+    f->first = i;
+    f->status = st;
+    if (st != CDIST_ERR_HANDLE_BUSY) memcpy(f->message, q->message, sizeof f->message);
+}
+
+cdist_status cdist__topology_finish(cdist_query *q, const cdist__topology_failure *f)
+{
+    if (f->first == SIZE_MAX) return CDIST_OK;
+    if (f->status == CDIST_ERR_HANDLE_BUSY) return f->status;
+    return cdist__topology_batch_report(q, f->first, f->status, f->message);
 }
 
 cdist_status cdist__topology_batch_report(cdist_query *q, size_t first, cdist_status st, const char *message)

@@ -209,9 +209,7 @@ cdist_status cdist_toi_batch(cdist_query *q, size_t n, const cdist_shape *a, ptr
         }
         return cdist__topology_batch_report(q, SIZE_MAX, CDIST_ERR_NULL_ARGUMENT, "a handle, shape array or output array is NULL");
     }
-    size_t first = SIZE_MAX;
-    cdist_status first_st = CDIST_OK;
-    char message[CD_MESSAGE_LEN] = "";
+    cdist__topology_failure fail = {SIZE_MAX, CDIST_OK, ""};
     for (size_t i = 0; i < n; i++) {
         const cdist_shape *ai = (const void *)((const char *)a + (ptrdiff_t)i * a_stride);
         const cdist_shape *bi = (const void *)((const char *)b + (ptrdiff_t)i * b_stride);
@@ -219,13 +217,7 @@ cdist_status cdist_toi_batch(cdist_query *q, size_t n, const cdist_shape *a, ptr
         const cdist_motion *mbi = mb ? (const void *)((const char *)mb + (ptrdiff_t)i * mb_stride) : NULL;
         cdist_status st = cdist_toi(q, ai, mai, bi, mbi, target, tolerance, max_iterations, &out[i]);
         if (statuses) statuses[i] = st;
-        if (st && first == SIZE_MAX) {
-            first = i;
-            first_st = st;
-            if (st != CDIST_ERR_HANDLE_BUSY) memcpy(message, q->message, sizeof message);
-        }
+        cdist__topology_note(q, &fail, i, st);
     }
-    if (first == SIZE_MAX) return CDIST_OK;
-    if (first_st == CDIST_ERR_HANDLE_BUSY) return first_st;
-    return cdist__topology_batch_report(q, first, first_st, message);
+    return cdist__topology_finish(q, &fail);
 }

@@ -15,4 +15,15 @@ int cdist__link_count(const cdist__circle *a, const cdist__circle *b, double d, 
  * returns st. */
 cdist_status cdist__topology_batch_report(cdist_query *q, size_t first, cdist_status st, const char *message);
 
+/* The lowest failing entry of a batch and its message: cdist__topology_note records entry i's
+ * status (the first failure only, copying the handle's message), cdist__topology_finish
+ * returns CDIST_OK or reports that failure. */
+typedef struct cdist__topology_failure {
+    size_t first; /* SIZE_MAX: none */
+    cdist_status status;
+    char message[CD_MESSAGE_LEN];
+} cdist__topology_failure;
+void cdist__topology_note(const cdist_query *q, cdist__topology_failure *f, size_t i, cdist_status st);
+cdist_status cdist__topology_finish(cdist_query *q, const cdist__topology_failure *f);
+
 #endif

@@ -91,8 +91,6 @@ static void check_precisions(cdist_query *q, int n)
         }
         if (!(r.distance > 0x1p-40 * lk.scale)) continue;
         cdist__circle va, vb;
-        cdist_result dummy;
-        (void)dummy;
         va.c = a.center; va.n = unitv(a.normal); va.r = a.radius;
         vb.c = b.center; vb.n = unitv(b.normal); vb.r = b.radius;
         int vd = cdist__link_count(&va, &vb, r.distance, 0);
