@@ -45,7 +45,8 @@ from ._query import (FUNCTIONS as _FUNCTIONS, BatchResult, CircleDistError, Cont
 
 from ._topology import (LINK_DTYPE, LINK_ERROR, LINK_FLAG_EXTENDED, LINK_FLAG_UNRESOLVED, LINK_OVERLAP,
                         LINK_TOUCHING, MOTION_DTYPE, SHAPE_DTYPE, TOI_DTYPE, TOI_HIT,
-                        TOI_ITERATION_LIMIT, TOI_NONE, link_details, linking, time_of_impact)
+                        TOI_ITERATION_LIMIT, TOI_NONE, chain_invariants, link_details, linking,
+                        time_of_impact)
 
 globals().update(_FUNCTIONS)
 
@@ -63,4 +64,4 @@ __all__ = ["Point", "Circle", "Disk", "Line", "Ray", "Segment", "Arc", "Helix", 
            "METHOD_ROBUST", "METHOD_ITERATION", "linking", "link_details", "LINK_DTYPE", "LINK_TOUCHING",
            "LINK_OVERLAP", "LINK_ERROR", "LINK_FLAG_EXTENDED", "LINK_FLAG_UNRESOLVED",
            "time_of_impact", "SHAPE_DTYPE", "MOTION_DTYPE", "TOI_DTYPE", "TOI_NONE", "TOI_HIT",
-           "TOI_ITERATION_LIMIT"] + sorted(_FUNCTIONS)
+           "TOI_ITERATION_LIMIT", "chain_invariants"] + sorted(_FUNCTIONS)

@@ -189,3 +189,38 @@ def time_of_impact(a, b, motion_a=None, motion_b=None, *, target=0.0, tolerance=
                 raise CircleDistError(st, _lib.query_last_error(q).decode())
         del ka, kb, kma, kmb
     return out, status
+
+
+# ---- invariants of a chain of linked rings ------------------------------------------------------
+
+def chain_invariants(tori, expected_linking=None, *, query=None):
+    """The two invariants a simulated chain of solid tori must keep, from one C call over every
+    pair (N (N - 1) / 2 pairs: meant for chains of hundreds of links).
+
+    tori: a Torus array of shape (N,) in chain order (link i hangs in links i - 1 and i + 1).
+    expected_linking: the neighbours' core linking numbers to compare with, shape (N - 1,)
+    (e.g. those of the first frame); None: only report them.
+
+    Returns a dict:
+      max_penetration   largest overlap depth -signed distance over all pairs (0 if none);
+      worst_pair        (i, j) of that overlap, or None;
+      neighbour_linking core linking numbers of the pairs (i, i + 1) (-1, 0, +1, or
+                        LINK_TOUCHING when the core circles meet);
+      linking_kept      neighbour_linking equals expected_linking (True when not given);
+      status_ok         every pair was answered (no invalid torus)."""
+    if not isinstance(tori, Torus) or len(tori.shape) != 1:
+        raise TypeError("chain_invariants: expected a Torus array of shape (N,)")
+    n = tori.shape[0]
+    i, j = np.triu_indices(n, 1)
+    rec, status = link_details(Torus.from_array(tori.data[i]), Torus.from_array(tori.data[j]),
+                               query=query)
+    depth = np.where(status == 0, -rec["distance"], np.nan)
+    worst = int(np.nanargmax(depth)) if depth.size and np.any(depth > 0) else None
+    neighbour = (j == i + 1)
+    lk = rec["core_linking"][neighbour]
+    kept = True if expected_linking is None else bool(
+        np.array_equal(lk, np.asarray(expected_linking, dtype=lk.dtype)))
+    return {"max_penetration": float(depth[worst]) if worst is not None else 0.0,
+            "worst_pair": (int(i[worst]), int(j[worst])) if worst is not None else None,
+            "neighbour_linking": lk.copy(), "linking_kept": kept,
+            "status_ok": bool(np.all(status == 0))}

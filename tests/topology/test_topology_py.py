@@ -71,3 +71,29 @@ def test_time_of_impact_mixed_shapes_and_errors():
     assert status == 7 and np.isnan(rec["t"])
     with pytest.raises(TypeError):
         cd.time_of_impact(s, cd.Circle((0, 0, 0), (0, 0, 1), 1))
+
+
+def _chain(n, spacing=1.5, tube=0.1):
+    x = np.arange(n) * spacing
+    centers = np.stack([x, 0 * x, 0 * x], 1)
+    normals = np.where((np.arange(n) % 2 == 0)[:, None], [0.0, 0.0, 1.0], [0.0, 1.0, 0.0])
+    return centers, normals, tube
+
+
+def test_chain_invariants():
+    centers, normals, tube = _chain(12)
+    tori = cd.Torus(cd.Circle(centers, normals, 1.0), tube)
+    inv = cd.chain_invariants(tori)
+    assert inv["status_ok"] and inv["max_penetration"] == 0.0 and inv["worst_pair"] is None
+    lk = inv["neighbour_linking"]
+    assert set(np.abs(lk).tolist()) == {1}
+    # Pull link 5 out of link 4 (move it far along z): the linking of pairs (4, 5), (5, 6) breaks.
+    moved = centers.copy()
+    moved[5, 2] += 5.0
+    inv2 = cd.chain_invariants(cd.Torus(cd.Circle(moved, normals, 1.0), tube), lk)
+    assert not inv2["linking_kept"]
+    assert inv2["neighbour_linking"][4] == 0 and inv2["neighbour_linking"][5] == 0
+    # Thick tubes: neighbours overlap, the deepest pair is reported, the cores stay linked.
+    inv3 = cd.chain_invariants(cd.Torus(cd.Circle(centers, normals, 1.0), 0.4), lk)
+    assert inv3["max_penetration"] > 0 and inv3["worst_pair"][1] == inv3["worst_pair"][0] + 1
+    assert inv3["linking_kept"]
