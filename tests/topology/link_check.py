@@ -104,14 +104,13 @@ def families(rng, n):
     eps = sgn() * 10.0 ** -rng.uniform(2, 14, k)
     out["tangent"] = (Ca, Na, ra, X - rb[:, None] * low + eps[:, None] * Na, Nb, rb)
     # The same with b 1e-13.5 .. 1e-12 below a's plane (crossings about 1e-7 apart) and the rim
-    # 1e-12 .. 3e-11 from them: the double-precision bound on the chord (about 1e-13 in its
-    # square) then exceeds the distance, and extended precision decides.
+    # 1e-12 .. 3e-11 from them: chords near the rounding of their squares (mostly touching).
     X = Ca + (ra + sgn() * 10.0 ** -rng.uniform(10.5, 12, k))[:, None] * perp(rng, Na)
     eps = -10.0 ** -rng.uniform(12, 13.5, k)
-    out["tangent_extended"] = (Ca, Na, ra, X - rb[:, None] * low + eps[:, None] * Na, Nb, rb)
+    out["tangent_close"] = (Ca, Na, ra, X - rb[:, None] * low + eps[:, None] * Na, Nb, rb)
     # Nearly parallel planes (1e-11 .. 1e-6 rad) with an end of b's chord on the common line
-    # 1e-12 .. 1e-6 from an end of a's: the line's position is ill-conditioned (error ~ eps / angle)
-    # and the double-precision bound can exceed the gap, so extended precision decides.
+    # 1e-12 .. 1e-6 from an end of a's: the line's position is ill-conditioned (error ~ eps / angle;
+    # mostly touching, the rims cross within the angle times the gap).
     Ca = rng.normal(size=(k, 3)); Na = random_unit(rng, k); ra = rng.uniform(0.5, 2, k)
     D = perp(rng, Na); m0 = np.cross(Na, D)
     dela = rng.uniform(-0.9, 0.9, k) * ra
