@@ -742,7 +742,7 @@ typedef struct cdist_link {
 /** sizeof(cdist_link) as compiled into the library. */
 CDIST_API size_t cdist_link_size(void);
 /** Linking number of circles a and b (the rule above). Validates like cdist_circle_circle()
- *  and runs it with the handle's method; on error out->linking is ::CDIST_LINK_ERROR and the
+ *  and runs it with ::CDIST_METHOD_AUTO whatever the handle's method; on error out->linking is ::CDIST_LINK_ERROR and the
  *  distances NaN. */
 CDIST_API cdist_status cdist_link_circles(cdist_query *q, const cdist_circle *a, const cdist_circle *b, cdist_link *out);
 /** Linking of two solid tori (the rule above); tube radii must be finite and >= 0. */

@@ -118,8 +118,17 @@ static cdist_status link_circles(cdist_query *q, const cdist_circle *a, const cd
         }
     }
     if (st) return cdist__leave(q, &r, st, CDIST_METHOD_AUTO);
+    /* The certificate rests on the distance: AUTO, the library's certified choice, whatever
+     * method the handle has (restored afterwards). */
+    cdist_method method = q->method;
+    q->method = CDIST_METHOD_AUTO;
     cdist__leave_setter(q);
-    if ((st = cdist_circle_circle(q, a, b, &r))) return st;
+    st = cdist_circle_circle(q, a, b, &r);
+    if (!cdist__enter_setter(q)) {
+        q->method = method;
+        cdist__leave_setter(q);
+    }
+    if (st) return st;
     out->flags = 0;
     classify(&ca, &cb, r.distance, out);
     if (tori) {

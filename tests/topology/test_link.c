@@ -178,6 +178,12 @@ static void check_errors_and_batch(cdist_query *q)
     CHECK(cdist_link_circles(q, &a, &bad, &lk) == CDIST_ERR_ZERO_VECTOR && isnan(lk.distance), "zero normal");
     CHECK(strstr(cdist_query_last_error(q), "second circle") != NULL, "message: %s", cdist_query_last_error(q));
     CHECK(cdist_link_size() == sizeof(cdist_link), "size");
+    /* The handle's method is left as it was (the distance runs with AUTO). */
+    cdist_query_set_method(q, CDIST_METHOD_ITERATION);
+    CHECK(cdist_link_circles(q, &a, &b, &lk) == CDIST_OK && lk.linking == 1 &&
+              cdist_query_get_method(q) == CDIST_METHOD_ITERATION,
+          "method kept");
+    cdist_query_set_method(q, CDIST_METHOD_AUTO);
 
     /* Batch: a broadcast (stride 0) against four circles, one bad, negative stride on b. */
     cdist_circle bs[4] = {b, circ(tv(3, 0, 0), tv(0, 1, 0), 1), bad, circ(tv(1, 0, 0), tv(0, -1, 0), 1)};
