@@ -689,6 +689,185 @@ CDIST_API cdist_status cdist_sphere_circle_grad(cdist_query *q, const cdist_sphe
 /** cdist_sphere_disk() with the gradient. */
 CDIST_API cdist_status cdist_sphere_disk_grad(cdist_query *q, const cdist_sphere *a, const cdist_circle *b, cdist_contact *c, cdist_grad *g);
 
+/* ---- linking and time of impact ------------------------------------------------------ */
+
+/* Linking. The linking number of two oriented circles a and b (each oriented counterclockwise
+ * about its normal: the tangent at a point p is N x (p - C)) is the signed number of times b
+ * crosses the open disk of a, a crossing counting +1 when b passes through the disk in the
+ * direction of a's normal and -1 against it. It is symmetric (lk(a, b) = lk(b, a)), equals the
+ * Gauss linking integral, changes sign when either normal is reversed, and is -1, 0 or +1 for
+ * two circles. It is defined only when the circles do not meet.
+ *
+ * Guarantee: with L = max(r_a, r_b, |C_b - C_a|) and d the certified circle-circle distance
+ * (cdist_circle_circle()), pairs with d <= 2^-40 L (9.1e-13 L) are reported
+ * ::CDIST_LINK_TOUCHING; every other pair gets its exact linking number, never a wrong -1, 0 or
+ * +1: the crossings are counted in double with a running error bound, and again in extended
+ * precision (binary128, or long double where the compiler has no binary128) when the bound is
+ * not below d. One configuration can exhaust even the extended bound: planes within about 1e-8
+ * rad of parallel, one circle nearly tangent to the other's plane, and d below about 5e-11 L;
+ * it is then reported ::CDIST_LINK_TOUCHING with ::CDIST_LINK_FLAG_UNRESOLVED (never a wrong
+ * number). A circle of radius 0 (a point) is unlinked from everything it does not touch.
+ *
+ * Tori (solid, cdist_torus): linked when their core circles are linked and the solids are
+ * disjoint, i.e. core distance > r_a + r_b (tube radii). When the solids overlap or touch
+ * (core distance <= r_a + r_b, with r_a + r_b > 0) the result is ::CDIST_LINK_OVERLAP and
+ * core_linking still gives the cores' value (their linking number, or ::CDIST_LINK_TOUCHING).
+ */
+
+/** Values of cdist_link::linking besides -1, 0 and +1. Numbers are fixed. */
+typedef enum cdist_link_value {
+    CDIST_LINK_TOUCHING = 2, /**< the circles meet (distance <= 2^-40 L): linking is undefined */
+    CDIST_LINK_OVERLAP = 3,  /**< tori only: the solid tori overlap or touch */
+    CDIST_LINK_ERROR = 4     /**< the query failed (see its status) */
+} cdist_link_value;
+
+/** Flags (bits of cdist_link::flags). Values are fixed. */
+typedef enum cdist_link_flag {
+    /** The double-precision count was not certain; extended precision decided. */
+    CDIST_LINK_FLAG_EXTENDED = 1,
+    /** Even extended precision could not decide: reported ::CDIST_LINK_TOUCHING (see above). */
+    CDIST_LINK_FLAG_UNRESOLVED = 2
+} cdist_link_flag;
+
+/** Result of a linking query. Output only; growth policy as for ::cdist_result (new fields
+ *  take their place in `reserved`). */
+typedef struct cdist_link {
+    int linking;          /**< -1, 0, +1, or a ::cdist_link_value */
+    int core_linking;     /**< the core circles' value (equal to linking for circles) */
+    double distance;      /**< circles: their distance; tori: signed distance (core - tube radii) */
+    double core_distance; /**< distance between the (core) circles, from cdist_circle_circle() */
+    double scale;         /**< L = max(r_a, r_b, |C_b - C_a|) of the (core) circles */
+    int flags;            /**< bits of ::cdist_link_flag */
+    int reserved_int;     /**< reserved; 0 */
+    double reserved[4];   /**< reserved for future fields; set to zero */
+} cdist_link;
+
+/** sizeof(cdist_link) as compiled into the library. */
+CDIST_API size_t cdist_link_size(void);
+/** Linking number of circles a and b (the rule above). Validates like cdist_circle_circle()
+ *  and runs it with ::CDIST_METHOD_AUTO whatever the handle's method; on error out->linking is ::CDIST_LINK_ERROR and the
+ *  distances NaN. */
+CDIST_API cdist_status cdist_link_circles(cdist_query *q, const cdist_circle *a, const cdist_circle *b, cdist_link *out);
+/** Linking of two solid tori (the rule above); tube radii must be finite and >= 0. */
+CDIST_API cdist_status cdist_link_tori(cdist_query *q, const cdist_torus *a, const cdist_torus *b, cdist_link *out);
+/** n linking queries: object i of a at (const char *)a + i * a_stride bytes (0 broadcasts one
+ *  object, negative allowed), likewise b, both ::cdist_circle; out[i] and statuses[i] (may be
+ *  NULL) written for every i; a bad entry gets its status and ::CDIST_LINK_ERROR, the others
+ *  are answered exactly as cdist_link_circles() answers them. Runs on the calling thread and
+ *  never allocates. Returns ::CDIST_OK, else the status of the lowest failing entry
+ *  (cdist_query_last_error() names it); NULL handle or arrays (n > 0):
+ *  ::CDIST_ERR_NULL_ARGUMENT for every entry. */
+CDIST_API cdist_status cdist_link_circles_batch(cdist_query *q, size_t n, const void *a, ptrdiff_t a_stride,
+                                                const void *b, ptrdiff_t b_stride, cdist_link *out,
+                                                cdist_status *statuses);
+/** cdist_link_circles_batch() for ::cdist_torus objects (cdist_link_tori()). */
+CDIST_API cdist_status cdist_link_tori_batch(cdist_query *q, size_t n, const void *a, ptrdiff_t a_stride,
+                                             const void *b, ptrdiff_t b_stride, cdist_link *out,
+                                             cdist_status *statuses);
+
+/* Time of impact. Two swept objects (cdist_shape) each move rigidly over t in [0, 1]. The
+ * motion model (cdist_motion): a point x of the object at t = 0 is at
+ *     x(t) = c + t T + R(t omega) (x - c),
+ * where c is the rotation centre (any point, fixed in the body), T is the translation of c over
+ * the interval, and R(t omega) is the rotation by angle t |omega| about the axis omega / |omega|
+ * (Rodrigues). So c moves linearly while the body turns about c at a constant angular velocity
+ * omega. Two poses (R0, p0) and (R1, p1) of a body with reference point c0 give
+ * omega = log(R1 R0^T) (axis times angle, angle in [0, pi], or more for several turns) and
+ * T = p1 - p0. The object's normals turn with it. A NULL motion keeps the object still.
+ *
+ * cdist_toi() finds the first t at which the signed distance (cdist_torus_torus() etc.) reaches
+ * the target separation, by conservative advancement on the exact distance d(t). No point of a
+ * body moves faster than |T| + |omega| rho, where rho is the largest distance of its core from
+ * c. So d shrinks no faster than V = |T_a - T_b| + |omega_a| rho_a + |omega_b| rho_b, and the
+ * step from t to t + (d(t) - target - slack) / V cannot pass a contact. The result never
+ * tunnels: a ring that passes through another's hole is no hit, and one that clips the rim is.
+ * Guarantee: on ::CDIST_TOI_HIT, d(s) > target for every s in [0, t) and
+ * d(t) <= target + tolerance. On ::CDIST_TOI_NONE, d(s) > target on all of [0, 1]. On
+ * ::CDIST_TOI_ITERATION_LIMIT, d(s) > target on [0, t] and the search stopped. slack covers
+ * the rounding of poses and distances: 64 eps times the largest coordinate of the motion. The
+ * tolerance used is max(tolerance, 2 slack). The distance tolerance does not bound the time: a
+ * grazing approach (d' near 0) can sit within the tolerance for a long time. Each step costs one
+ * contact query. The count is about log(gap / tolerance) / (|d'| / V) near a transversal contact,
+ * so it is larger when the approach speed |d'| is small compared with V (fast spin, slow
+ * approach). */
+
+/** Shape types of ::cdist_shape. Numbers are fixed. Circles (a torus with tube radius 0),
+ *  segments (a capsule with radius 0), points and disks are the zero-radius cases. */
+typedef enum cdist_shape_type {
+    CDIST_SHAPE_SPHERE = 0,      /**< u.sphere */
+    CDIST_SHAPE_CAPSULE = 1,     /**< u.capsule */
+    CDIST_SHAPE_TORUS = 2,       /**< u.torus */
+    CDIST_SHAPE_ROUNDED_DISK = 3 /**< u.rounded_disk */
+} cdist_shape_type;
+
+/** The object of a ::cdist_shape, by its type. sizeof = 80 bytes. */
+typedef union cdist_shape_data {
+    cdist_sphere sphere;             /**< ::CDIST_SHAPE_SPHERE */
+    cdist_capsule capsule;           /**< ::CDIST_SHAPE_CAPSULE */
+    cdist_torus torus;               /**< ::CDIST_SHAPE_TORUS */
+    cdist_rounded_disk rounded_disk; /**< ::CDIST_SHAPE_ROUNDED_DISK */
+    double reserved[10];             /**< room for larger types; keeps the size fixed */
+} cdist_shape_data;
+
+/** A swept object of any type. sizeof = 88 bytes on LP64 (cdist_shape_size()). */
+typedef struct cdist_shape {
+    int type;           /**< a ::cdist_shape_type */
+    int reserved_int;   /**< reserved; 0 */
+    cdist_shape_data u; /**< the object (the member named by type) */
+} cdist_shape;
+
+/** A rigid motion over t in [0, 1] (the model above). */
+typedef struct cdist_motion {
+    cdist_vec3 center;      /**< rotation centre c at t = 0 (a point fixed in the body) */
+    cdist_vec3 translation; /**< T: the displacement of c from t = 0 to t = 1 */
+    cdist_vec3 rotation;    /**< omega: rotation axis times total angle (radians) over [0, 1] */
+} cdist_motion;
+
+/** Outcome of a time-of-impact query. Numbers are fixed. */
+typedef enum cdist_toi_state {
+    CDIST_TOI_NONE = 0,           /**< no contact in [0, 1] */
+    CDIST_TOI_HIT = 1,            /**< contact at t */
+    CDIST_TOI_ITERATION_LIMIT = 2 /**< max_iterations steps used; no contact in [0, t] */
+} cdist_toi_state;
+
+/** Result of cdist_toi(). Output only; growth policy as for ::cdist_result. */
+typedef struct cdist_toi_result {
+    int state;             /**< a ::cdist_toi_state */
+    int iterations;        /**< distance queries used */
+    double t;              /**< HIT: the time of impact; otherwise the last time evaluated */
+    double distance;       /**< signed distance at t */
+    cdist_contact contact; /**< the contact of the objects posed at t (cdist_shape_at()) */
+    double reserved[4];    /**< reserved for future fields; set to zero */
+} cdist_toi_result;
+
+/** sizeof(cdist_shape) as compiled into the library. */
+CDIST_API size_t cdist_shape_size(void);
+/** sizeof(cdist_toi_result) as compiled into the library. */
+CDIST_API size_t cdist_toi_result_size(void);
+/** The shape s moved by m to time t (any real t), as cdist_toi() poses it. Thread-safe, no
+ *  handle. Returns ::CDIST_ERR_NULL_ARGUMENT, ::CDIST_ERR_BAD_OPTION (unknown type) or
+ *  ::CDIST_ERR_NOT_FINITE (t or the motion); the shape itself is not validated. */
+CDIST_API cdist_status cdist_shape_at(const cdist_shape *s, const cdist_motion *m, double t, cdist_shape *out);
+/** First time of impact of a moving with ma and b moving with mb (either motion may be NULL):
+ *  the first t in [0, 1] with signed distance <= target (+ tolerance, see above). target is any
+ *  finite separation (0: touching; negative: that penetration depth). tolerance > 0 is in
+ *  length units. max_iterations >= 1 caps the distance queries. The shapes are validated by the
+ *  contact query at t = 0 (its status and message); a bad type, a non-finite motion or target,
+ *  or a bad tolerance or cap gives ::CDIST_ERR_BAD_OPTION / ::CDIST_ERR_NOT_FINITE. Reaching the
+ *  cap is not an error (state ::CDIST_TOI_ITERATION_LIMIT). On error out->t and distance are NaN. */
+CDIST_API cdist_status cdist_toi(cdist_query *q, const cdist_shape *a, const cdist_motion *ma, const cdist_shape *b,
+                                 const cdist_motion *mb, double target, double tolerance, int max_iterations,
+                                 cdist_toi_result *out);
+/** n time-of-impact queries with the batch conventions of cdist_link_circles_batch(): entry i
+ *  uses the objects and motions at byte offsets i * stride of a, ma, b, mb (stride 0
+ *  broadcasts; ma or mb NULL: that side does not move). It writes out[i] and statuses[i] (may
+ *  be NULL) for every i, runs on the calling thread and never allocates. */
+CDIST_API cdist_status cdist_toi_batch(cdist_query *q, size_t n, const cdist_shape *a, ptrdiff_t a_stride,
+                                       const cdist_motion *ma, ptrdiff_t ma_stride, const cdist_shape *b,
+                                       ptrdiff_t b_stride, const cdist_motion *mb, ptrdiff_t mb_stride, double target,
+                                       double tolerance, int max_iterations, cdist_toi_result *out,
+                                       cdist_status *statuses);
+
 #ifdef __cplusplus
 }
 #endif

@@ -410,3 +410,25 @@ def arc_circle_grad(a: _ArcLike, b: _CircleLike, *, method: _MethodArg = ..., qu
 def arc_arc_grad(a: _ArcLike, b: _ArcLike, *, method: _MethodArg = ..., query: Query | None = ...) -> tuple[Result, Grad]: ...
 def segment_arc_grad(a: _SegmentLike, b: _ArcLike, *, method: _MethodArg = ..., query: Query | None = ...) -> tuple[Result, Grad]: ...
 def arc_disk_grad(a: _ArcLike, b: _CircleLike, *, method: _MethodArg = ..., query: Query | None = ...) -> tuple[Result, Grad]: ...
+
+# ---- linking and time of impact (circledist._topology) ----
+LINK_DTYPE: np.dtype[Any]
+LINK_TOUCHING: int
+LINK_OVERLAP: int
+LINK_ERROR: int
+LINK_FLAG_EXTENDED: int
+LINK_FLAG_UNRESOLVED: int
+SHAPE_DTYPE: np.dtype[Any]
+MOTION_DTYPE: np.dtype[Any]
+TOI_DTYPE: np.dtype[Any]
+TOI_NONE: int
+TOI_HIT: int
+TOI_ITERATION_LIMIT: int
+_Motion = tuple[_Array, _Array, _Array] | None
+def link_details(a: Circle | Torus, b: Circle | Torus, *, query: Query | None = ...) -> tuple[npt.NDArray[Any], npt.NDArray[np.int32]]: ...
+def linking(a: Circle | Torus, b: Circle | Torus, *, query: Query | None = ...) -> int | npt.NDArray[np.int32]: ...
+def time_of_impact(a: Sphere | Capsule | Torus | RoundedDisk, b: Sphere | Capsule | Torus | RoundedDisk,
+                   motion_a: _Motion = ..., motion_b: _Motion = ..., *, target: float = ...,
+                   tolerance: float = ..., max_iterations: int = ...,
+                   query: Query | None = ...) -> tuple[npt.NDArray[Any], npt.NDArray[np.int32]]: ...
+def chain_invariants(tori: Torus, expected_linking: _Array | None = ..., *, query: Query | None = ...) -> dict[str, Any]: ...

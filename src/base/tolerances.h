@@ -192,4 +192,23 @@
  * search leaves to the scan anyway (the cc_center_on_axis family). Routing only. */
 #define CD_CC_QUICK_AXIS_REL 1e-9
 
+/* ---- linking and time of impact (src/topology) ---- */
+
+/* Linking: two circles are reported touching when their certified distance is at most
+ * CD_LINK_TOUCH_REL * L (L = max(r_a, r_b, |C_b - C_a|)). Any lower value works for the proof
+ * (the classification is certified against the distance, see link_core.h); this one sits below
+ * the 1e-12 L promised in the header and well above the distance's own error. */
+#define CD_LINK_TOUCH_REL 0x1p-40
+/* Error allowed for the circle-circle distance and for the working copy of the circles (unit
+ * normals, the centre difference), relative to L: the reference tolerance of the cc family
+ * (1e-13 of scale), far above its rounding. d - CD_LINK_DIST_REL * L is a certified lower bound
+ * of the working circles' distance. */
+#define CD_LINK_DIST_REL 0x1p-43
+
+/* Time of impact: slack for the rounding of a pose and of the distance at a pose, in eps times
+ * the scale of the posed coordinates (the Rodrigues rotation and the translation add a few
+ * ulps to each coordinate; the swept queries' distance is exact to CD_TIE_ULPS). A conservative
+ * step advances by (distance - target - slack) / bound. */
+#define CD_TOI_POSE_ULPS 64.0
+
 #endif

@@ -130,6 +130,39 @@ SIZE(cdist_curve_fn, 8);
 SIZE(cdist_kind, 4);
 SIZE(cdist_contact_flag, 4);
 SIZE(cdist_grad_flag, 4);
+SIZE(cdist_link, 72);
+OFF(cdist_link, linking, 0);
+OFF(cdist_link, core_linking, 4);
+OFF(cdist_link, distance, 8);
+OFF(cdist_link, core_distance, 16);
+OFF(cdist_link, scale, 24);
+OFF(cdist_link, flags, 32);
+OFF(cdist_link, reserved_int, 36);
+OFF(cdist_link, reserved, 40);
+
+SIZE(cdist_shape_data, 80);
+OFF(cdist_shape_data, sphere, 0);
+OFF(cdist_shape_data, capsule, 0);
+OFF(cdist_shape_data, torus, 0);
+OFF(cdist_shape_data, rounded_disk, 0);
+OFF(cdist_shape_data, reserved, 0);
+SIZE(cdist_shape, 88);
+OFF(cdist_shape, type, 0);
+OFF(cdist_shape, reserved_int, 4);
+OFF(cdist_shape, u, 8);
+
+SIZE(cdist_motion, 72);
+OFF(cdist_motion, center, 0);
+OFF(cdist_motion, translation, 24);
+OFF(cdist_motion, rotation, 48);
+
+SIZE(cdist_toi_result, 424);
+OFF(cdist_toi_result, state, 0);
+OFF(cdist_toi_result, iterations, 4);
+OFF(cdist_toi_result, t, 8);
+OFF(cdist_toi_result, distance, 16);
+OFF(cdist_toi_result, contact, 24);
+OFF(cdist_toi_result, reserved, 392);
 #define LAYOUT_CHECKED 1
 #endif
 
@@ -182,6 +215,22 @@ VALUE(CDIST_KIND_BEZIER3_DISK, 20);
 
 VALUE(CDIST_CONTACT_CORE_TOUCH, 1);
 VALUE(CDIST_GRAD_NOT_DIFFERENTIABLE, 1);
+SIZE(cdist_link_value, sizeof(int));
+VALUE(CDIST_LINK_TOUCHING, 2);
+VALUE(CDIST_LINK_OVERLAP, 3);
+VALUE(CDIST_LINK_ERROR, 4);
+SIZE(cdist_link_flag, sizeof(int));
+VALUE(CDIST_LINK_FLAG_EXTENDED, 1);
+VALUE(CDIST_LINK_FLAG_UNRESOLVED, 2);
+SIZE(cdist_shape_type, sizeof(int));
+VALUE(CDIST_SHAPE_SPHERE, 0);
+VALUE(CDIST_SHAPE_CAPSULE, 1);
+VALUE(CDIST_SHAPE_TORUS, 2);
+VALUE(CDIST_SHAPE_ROUNDED_DISK, 3);
+SIZE(cdist_toi_state, sizeof(int));
+VALUE(CDIST_TOI_NONE, 0);
+VALUE(CDIST_TOI_HIT, 1);
+VALUE(CDIST_TOI_ITERATION_LIMIT, 2);
 
 int main(void)
 {
@@ -192,7 +241,9 @@ int main(void)
              && cdist_swept_size(2) == sizeof(cdist_torus) && cdist_swept_size(3) == sizeof(cdist_rounded_disk)
              && cdist_kind_size_a(CDIST_KIND_CURVE_CIRCLE) == sizeof(cdist_curve)
              && cdist_contact_flag_core_touch() == CDIST_CONTACT_CORE_TOUCH
-             && cdist_grad_flag_not_differentiable() == CDIST_GRAD_NOT_DIFFERENTIABLE;
+             && cdist_grad_flag_not_differentiable() == CDIST_GRAD_NOT_DIFFERENTIABLE
+             && cdist_link_size() == sizeof(cdist_link) && cdist_shape_size() == sizeof(cdist_shape)
+             && cdist_toi_result_size() == sizeof(cdist_toi_result);
 #ifndef LAYOUT_CHECKED
     printf("test_layout: enumerator values checked; struct layout skipped (documented for x86-64 only)\n");
 #endif
