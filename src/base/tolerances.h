@@ -192,4 +192,16 @@
  * search leaves to the scan anyway (the cc_center_on_axis family). Routing only. */
 #define CD_CC_QUICK_AXIS_REL 1e-9
 
+/* Scenes (src/scene): every bound of the broad phase (boxes, balls, circle-plane slabs) is
+ * widened by CD_SCENE_BOUND_REL times the objects' coordinate scale S (largest |coordinate| plus
+ * the radii). The bounds take a handful of roundings (about 10 eps S) and the exact queries
+ * answer to a few ulps of their scale (<= S; the reference files hold them to 1e-13 S), so a
+ * pair whose computed distance is <= delta always passes: 2^-36 (1.5e-11) is over 100 times
+ * either and still far below any geometric gap that matters for pruning. */
+#define CD_SCENE_BOUND_REL 0x1p-36
+/* A moved object whose box leaves its tree box gets a box fattened by this fraction of its
+ * largest extent on every side (Box2D's dynamic tree fattens the same way), so small motions
+ * of the next steps need no tree change. Quality only. */
+#define CD_SCENE_FAT_REL 0.125
+
 #endif

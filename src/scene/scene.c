@@ -1,0 +1,651 @@
+/* SPDX-License-Identifier: MIT */
+/* Scenes: object storage and validation, certified bounds, the tree (build, refit) and the
+ * editing calls. The queries are in scene_query.c. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "scene-priv.h"
+
+/* Leaves hold up to this many objects: measured on the chain-mail sheet (bench_scene), 4 beat
+ * 2 and 8 (fewer nodes to visit against more box tests per leaf pair). */
+#define CD_SCENE_LEAF 4
+
+/* ---- objects ---- */
+
+static const size_t kind_size[] = {sizeof(cdist_vec3),   sizeof(cdist_segment), sizeof(cdist_circle),
+                                   sizeof(cdist_circle), sizeof(cdist_arc),     sizeof(cdist_sphere),
+                                   sizeof(cdist_capsule), sizeof(cdist_torus),  sizeof(cdist_rounded_disk)};
+#define KIND_COUNT (sizeof kind_size / sizeof kind_size[0])
+
+size_t cdist_scene_kind_size(cdist_scene_kind kind) { return (unsigned)kind < KIND_COUNT ? kind_size[kind] : 0; }
+size_t cdist_scene_pair_size(void) { return sizeof(cdist_scene_pair); }
+size_t cdist_scene_stats_size(void) { return sizeof(cdist_scene_stats); }
+
+static cdist__core_type core_type(int kind)
+{
+    switch (kind) {
+    case CDIST_SCENE_POINT:
+    case CDIST_SCENE_SPHERE: return CD_CORE_POINT;
+    case CDIST_SCENE_SEGMENT:
+    case CDIST_SCENE_CAPSULE: return CD_CORE_SEGMENT;
+    case CDIST_SCENE_CIRCLE:
+    case CDIST_SCENE_TORUS: return CD_CORE_CIRCLE;
+    case CDIST_SCENE_DISK:
+    case CDIST_SCENE_ROUNDED_DISK: return CD_CORE_DISK;
+    default: return CD_CORE_ARC;
+    }
+}
+
+cdist__core_obj cdist__scene_core(const cdist__scene_obj *o)
+{
+    cdist__core_obj c = {core_type(o->kind), &o->g, o->r, o->kind >= CDIST_SCENE_SPHERE};
+    return c;
+}
+
+static cdist_status check_radius(cdist_query *q, double r)
+{
+    cdist_status st = cdist__check_scalar(q, r, "radius");
+    if (st) return st;
+    if (r < 0.0) return cdist__fail(q, CDIST_ERR_NEGATIVE_RADIUS, "radius is negative (%g)", r);
+    return CDIST_OK;
+}
+
+static cdist_status check_segment(cdist_query *q, const cdist_segment *s)
+{
+    cdist_status st = cdist__check_point(q, &s->p0, "segment p0");
+    return st ? st : cdist__check_point(q, &s->p1, "segment p1");
+}
+
+/* An arc is checked by the arc query itself (against a unit circle), so a scene accepts
+ * exactly the arcs the arc queries accept. */
+static cdist_status check_arc(cdist_query *q, const cdist_arc *a)
+{
+    static const cdist_circle unit = {{0, 0, 0}, {0, 0, 1}, 1.0};
+    cdist_result r;
+    return cdist_arc_circle(q, a, &unit, &r);
+}
+
+cdist_status cdist__scene_make(cdist_query *q, cdist_scene_kind kind, const void *src, cdist__scene_obj *o)
+{
+    cdist__circle tmp;
+    cdist_status st = CDIST_OK;
+    memset(&o->g, 0, sizeof o->g);
+    o->r = 0.0;
+    o->kind = (uint8_t)kind;
+    switch (kind) {
+    case CDIST_SCENE_POINT:
+        o->g.point = *(const cdist_vec3 *)src;
+        st = cdist__check_point(q, &o->g.point, "point");
+        break;
+    case CDIST_SCENE_SEGMENT:
+        o->g.segment = *(const cdist_segment *)src;
+        st = check_segment(q, &o->g.segment);
+        break;
+    case CDIST_SCENE_CIRCLE:
+    case CDIST_SCENE_DISK:
+        o->g.circle = *(const cdist_circle *)src;
+        st = cdist__check_circle_nobasis(q, &o->g.circle, kind == CDIST_SCENE_DISK ? "disk" : "circle", &tmp);
+        break;
+    case CDIST_SCENE_ARC:
+        o->g.arc = *(const cdist_arc *)src;
+        st = check_arc(q, &o->g.arc);
+        break;
+    case CDIST_SCENE_SPHERE: {
+        const cdist_sphere *x = src;
+        o->g.point = x->center;
+        o->r = x->radius;
+        if (!(st = cdist__check_point(q, &o->g.point, "sphere centre"))) st = check_radius(q, o->r);
+        break;
+    }
+    case CDIST_SCENE_CAPSULE: {
+        const cdist_capsule *x = src;
+        o->g.segment = x->segment;
+        o->r = x->radius;
+        if (!(st = check_segment(q, &o->g.segment))) st = check_radius(q, o->r);
+        break;
+    }
+    case CDIST_SCENE_TORUS: {
+        const cdist_torus *x = src;
+        o->g.circle = x->circle;
+        o->r = x->tube_radius;
+        if (!(st = cdist__check_circle_nobasis(q, &o->g.circle, "torus circle", &tmp))) st = check_radius(q, o->r);
+        break;
+    }
+    case CDIST_SCENE_ROUNDED_DISK: {
+        const cdist_rounded_disk *x = src;
+        o->g.circle = x->disk;
+        o->r = x->radius;
+        if (!(st = cdist__check_circle_nobasis(q, &o->g.circle, "rounded disk", &tmp))) st = check_radius(q, o->r);
+        break;
+    }
+    default: st = cdist__fail(q, CDIST_ERR_BAD_KIND, "%d is not a cdist_scene_kind", (int)kind);
+    }
+    o->state = st ? CD_SCENE_INVALID : CD_SCENE_LIVE;
+    o->status = (uint8_t)st;
+    return st;
+}
+
+/* ---- bounds ---- */
+
+/* The core's bounding ball (centre m, radius rho) and its coordinate scale. */
+static void core_ball(const cdist__scene_obj *o, vec3 *m, double *rho)
+{
+    switch (core_type(o->kind)) {
+    case CD_CORE_POINT:
+        *m = o->g.point;
+        *rho = 0.0;
+        return;
+    case CD_CORE_SEGMENT: {
+        vec3 a = o->g.segment.p0, b = o->g.segment.p1;
+        *m = v_scale(0.5, v_add(a, b));
+        *rho = 0.5 * v_dist(a, b);
+        return;
+    }
+    default:
+        *m = o->g.circle.center; /* an arc's circle is its first member */
+        *rho = o->g.circle.radius;
+        return;
+    }
+}
+
+/* Largest |coordinate| plus the radii: the scale of the bounds' margin. */
+static double obj_scale(vec3 m, double rho, double r) { return v_maxabs(m) + rho + r; }
+
+static int is_planar(int kind) { return core_type(kind) >= CD_CORE_CIRCLE; }
+
+void cdist__scene_box(const cdist__scene_obj *o, cdist__box *b)
+{
+    vec3 m;
+    double rho, ext[3];
+    core_ball(o, &m, &rho);
+    double pad = o->r + CD_SCENE_BOUND_REL * obj_scale(m, rho, o->r);
+    if (core_type(o->kind) == CD_CORE_POINT || core_type(o->kind) == CD_CORE_SEGMENT) {
+        vec3 a = o->kind == CDIST_SCENE_POINT || o->kind == CDIST_SCENE_SPHERE ? o->g.point : o->g.segment.p0;
+        vec3 c = o->kind == CDIST_SCENE_POINT || o->kind == CDIST_SCENE_SPHERE ? o->g.point : o->g.segment.p1;
+        b->lo[0] = fmin(a.x, c.x) - pad, b->hi[0] = fmax(a.x, c.x) + pad;
+        b->lo[1] = fmin(a.y, c.y) - pad, b->hi[1] = fmax(a.y, c.y) + pad;
+        b->lo[2] = fmin(a.z, c.z) - pad, b->hi[2] = fmax(a.z, c.z) + pad;
+        return;
+    }
+    /* A circle's extent along axis k is R sqrt(1 - n_k^2) = R sqrt(n_i^2 + n_j^2) (no
+     * cancellation) for the unit normal n. */
+    vec3 n = v_unit_or_zero(o->g.circle.normal);
+    ext[0] = rho * sqrt(n.y * n.y + n.z * n.z);
+    ext[1] = rho * sqrt(n.x * n.x + n.z * n.z);
+    ext[2] = rho * sqrt(n.x * n.x + n.y * n.y);
+    b->lo[0] = m.x - ext[0] - pad, b->hi[0] = m.x + ext[0] + pad;
+    b->lo[1] = m.y - ext[1] - pad, b->hi[1] = m.y + ext[1] + pad;
+    b->lo[2] = m.z - ext[2] - pad, b->hi[2] = m.z + ext[2] + pad;
+}
+
+/* The interval of heights of b's core over the plane (c, n) of a planar core. */
+static void heights(const cdist__scene_obj *b, vec3 c, vec3 n, double *lo, double *hi)
+{
+    switch (core_type(b->kind)) {
+    case CD_CORE_POINT: *lo = *hi = v_dot(n, v_sub(b->g.point, c)); return;
+    case CD_CORE_SEGMENT: {
+        double h0 = v_dot(n, v_sub(b->g.segment.p0, c)), h1 = v_dot(n, v_sub(b->g.segment.p1, c));
+        *lo = fmin(h0, h1);
+        *hi = fmax(h0, h1);
+        return;
+    }
+    default: {
+        /* A circle of unit normal nb tilted from n leaves its centre's height by at most
+         * R |n x nb| (the cross product, not sqrt(1 - (n.nb)^2), which cancels). */
+        double h = v_dot(n, v_sub(b->g.circle.center, c));
+        double e = b->g.circle.radius * v_norm(v_cross(n, v_unit_or_zero(b->g.circle.normal)));
+        *lo = h - e;
+        *hi = h + e;
+        return;
+    }
+    }
+}
+
+/* Lower bound of the core distance from the plane of planar core a to core b. */
+static double slab_bound(const cdist__scene_obj *a, const cdist__scene_obj *b)
+{
+    double lo, hi;
+    heights(b, a->g.circle.center, v_unit_or_zero(a->g.circle.normal), &lo, &hi);
+    return fmax(0.0, fmax(lo, -hi));
+}
+
+double cdist__scene_lower_bound(const cdist__scene_obj *a, const cdist__scene_obj *b)
+{
+    vec3 ma, mb;
+    double ra, rb;
+    core_ball(a, &ma, &ra);
+    core_ball(b, &mb, &rb);
+    double core = v_dist(ma, mb) - ra - rb;
+    if (is_planar(a->kind)) core = fmax(core, slab_bound(a, b));
+    if (is_planar(b->kind)) core = fmax(core, slab_bound(b, a));
+    double margin = CD_SCENE_BOUND_REL * (obj_scale(ma, ra, a->r) + obj_scale(mb, rb, b->r));
+    return core - (a->r + b->r) - margin;
+}
+
+/* ---- tree ---- */
+
+static void box_empty(cdist__box *b)
+{
+    for (int k = 0; k < 3; k++) b->lo[k] = INFINITY, b->hi[k] = -INFINITY;
+}
+
+static void box_join(cdist__box *b, const cdist__box *x)
+{
+    for (int k = 0; k < 3; k++) {
+        if (x->lo[k] < b->lo[k]) b->lo[k] = x->lo[k];
+        if (x->hi[k] > b->hi[k]) b->hi[k] = x->hi[k];
+    }
+}
+
+static int box_inside(const cdist__box *in, const cdist__box *out)
+{
+    for (int k = 0; k < 3; k++)
+        if (!(in->lo[k] >= out->lo[k] && in->hi[k] <= out->hi[k])) return 0;
+    return 1;
+}
+
+static uint64_t spread21(uint64_t x)
+{
+    x &= 0x1fffff;
+    x = (x | x << 32) & 0x1f00000000ffffULL;
+    x = (x | x << 16) & 0x1f0000ff0000ffULL;
+    x = (x | x << 8) & 0x100f00f00f00f00fULL;
+    x = (x | x << 4) & 0x10c30c30c30c30c3ULL;
+    x = (x | x << 2) & 0x1249249249249249ULL;
+    return x;
+}
+
+/* Stable LSD radix sort of keys with their payload (8 bits a pass; passes whose digit is the
+ * same for every key are skipped). */
+static void radix_sort(uint64_t *key, uint32_t *val, uint64_t *key_tmp, uint32_t *val_tmp, size_t n)
+{
+    for (int shift = 0; shift < 64; shift += 8) {
+        size_t cnt[256] = {0};
+        for (size_t i = 0; i < n; i++) cnt[(key[i] >> shift) & 255]++;
+        if (n == 0 || cnt[(key[0] >> shift) & 255] == n) continue;
+        size_t sum = 0;
+        for (int d = 0; d < 256; d++) {
+            size_t c = cnt[d];
+            cnt[d] = sum;
+            sum += c;
+        }
+        for (size_t i = 0; i < n; i++) {
+            size_t at = cnt[(key[i] >> shift) & 255]++;
+            key_tmp[at] = key[i];
+            if (val) val_tmp[at] = val[i];
+        }
+        memcpy(key, key_tmp, n * sizeof *key);
+        if (val) memcpy(val, val_tmp, n * sizeof *val);
+    }
+}
+
+void cdist__radix_sort_keys(uint64_t *key, uint64_t *tmp, size_t n) { radix_sort(key, NULL, tmp, NULL, n); }
+
+static void refit(cdist_scene *s)
+{
+    for (size_t i = s->node_n; i-- > 0;) {
+        cdist__node *nd = &s->node[i];
+        box_empty(&nd->box);
+        if (nd->count) {
+            for (uint32_t p = nd->first; p < nd->first + nd->count; p++) box_join(&nd->box, &s->box[p]);
+        } else {
+            box_join(&nd->box, &s->node[nd->first].box);
+            box_join(&nd->box, &s->node[nd->first + 1].box);
+        }
+    }
+    s->refit_pending = 0;
+}
+
+/* Median split of Morton-ordered positions [lo, hi) into node ni. */
+static void build_node(cdist_scene *s, size_t ni, uint32_t lo, uint32_t hi)
+{
+    for (;;) {
+        cdist__node *nd = &s->node[ni];
+        if (hi - lo <= CD_SCENE_LEAF) {
+            nd->first = lo;
+            nd->count = hi - lo;
+            return;
+        }
+        size_t c = s->node_n;
+        s->node_n += 2;
+        nd->first = (uint32_t)c;
+        nd->count = 0;
+        uint32_t mid = lo + (hi - lo) / 2;
+        build_node(s, c, lo, mid);
+        ni = c + 1;
+        lo = mid;
+    }
+}
+
+static void *grow(void *p, size_t *cap, size_t need, size_t size)
+{
+    if (need <= *cap) return p;
+    size_t c = *cap ? *cap : 16;
+    while (c < need) c *= 2;
+    void *np = realloc(p, c * size);
+    if (!np) return NULL;
+    *cap = c;
+    return np;
+}
+
+static cdist_status build(cdist_query *q, cdist_scene *s)
+{
+    size_t m = 0;
+    for (size_t i = 0; i < s->n; i++) m += s->obj[i].state == CD_SCENE_LIVE;
+    uint64_t *key = malloc((m ? m : 1) * sizeof *key), *key_tmp = malloc((m ? m : 1) * sizeof *key_tmp);
+    uint32_t *perm = malloc((m ? m : 1) * sizeof *perm), *perm_tmp = malloc((m ? m : 1) * sizeof *perm_tmp);
+    cdist__box *box = malloc((m ? m : 1) * sizeof *box);
+    cdist__node *node = malloc((m ? m : 1) * sizeof *node);
+    if (!key || !key_tmp || !perm || !perm_tmp || !box || !node) {
+        free(key), free(key_tmp), free(perm), free(perm_tmp), free(box), free(node);
+        return cdist__fail(q, CDIST_ERR_NO_MEMORY, "scene: out of memory for the tree of %zu objects", m);
+    }
+    /* Boxes by id order first (perm = ids), then Morton keys of their centres. */
+    double clo[3] = {INFINITY, INFINITY, INFINITY}, chi[3] = {-INFINITY, -INFINITY, -INFINITY};
+    size_t k = 0;
+    for (size_t i = 0; i < s->n; i++) {
+        if (s->obj[i].state != CD_SCENE_LIVE) {
+            s->pos[i] = CD_SCENE_NO_POS;
+            continue;
+        }
+        perm[k] = (uint32_t)i;
+        cdist__scene_box(&s->obj[i], &box[k]);
+        for (int a = 0; a < 3; a++) {
+            double c = 0.5 * box[k].lo[a] + 0.5 * box[k].hi[a];
+            if (c < clo[a]) clo[a] = c;
+            if (c > chi[a]) chi[a] = c;
+        }
+        k++;
+    }
+    double scale[3];
+    for (int a = 0; a < 3; a++) scale[a] = chi[a] > clo[a] ? 2097151.0 / (chi[a] - clo[a]) : 0.0;
+    for (size_t p = 0; p < m; p++) {
+        uint64_t code = 0;
+        for (int a = 0; a < 3; a++) {
+            double c = 0.5 * box[p].lo[a] + 0.5 * box[p].hi[a];
+            double x = (c - clo[a]) * scale[a];
+            uint64_t qx = x > 0.0 ? (x < 2097151.0 ? (uint64_t)x : 2097151u) : 0u;
+            code |= spread21(qx) << a;
+        }
+        key[p] = code;
+    }
+    radix_sort(key, perm, key_tmp, perm_tmp, m);
+    free(key), free(key_tmp), free(perm_tmp);
+    /* Boxes into tree order. */
+    for (size_t p = 0; p < m; p++) cdist__scene_box(&s->obj[perm[p]], &box[p]);
+    for (size_t p = 0; p < m; p++) s->pos[perm[p]] = (uint32_t)p;
+    free(s->perm), free(s->box), free(s->node);
+    s->perm = perm;
+    s->box = box;
+    s->node = node;
+    s->node_cap = m ? m : 1;
+    s->tree_n = m;
+    s->node_n = 0;
+    if (m > 0) {
+        s->node_n = 1;
+        build_node(s, 0, 0, (uint32_t)m);
+    }
+    refit(s);
+    s->dirty = 0;
+    s->escaped = 0;
+    s->stats.rebuilds++;
+    return CDIST_OK;
+}
+
+cdist_status cdist__scene_prepare(cdist_query *q, cdist_scene *s)
+{
+    /* Many objects outside their build-time neighbourhood make the tree's boxes overlap more
+     * and more: past a quarter of the live objects a rebuild pays. */
+    if (s->dirty || (s->escaped > 0 && s->escaped * 4 > s->live)) return build(q, s);
+    if (s->refit_pending) {
+        refit(s);
+        s->stats.refits++;
+    }
+    return CDIST_OK;
+}
+
+/* ---- scene handle ---- */
+
+cdist_scene *cdist_scene_new(void)
+{
+    cdist_scene *s = calloc(1, sizeof *s);
+    if (s) atomic_init(&s->busy, 0);
+    return s;
+}
+
+void cdist_scene_free(cdist_scene *s)
+{
+    if (!s) return;
+    for (int i = 0; i < s->worker_n; i++) cdist_query_free(s->worker[i]);
+    free(s->worker);
+    free(s->obj), free(s->pos), free(s->perm), free(s->box), free(s->node);
+    free(s->cand), free(s->cand_tmp), free(s->chunk_buf);
+    free(s);
+}
+
+int cdist__scene_take(cdist_scene *s) { return !atomic_exchange_explicit(&s->busy, 1, memory_order_acquire); }
+void cdist__scene_release(cdist_scene *s) { atomic_store_explicit(&s->busy, 0, memory_order_release); }
+
+/* Every scene call: the handle's batch flag (one scene or batch call per handle at a time; the
+ * handle's own flag is taken by each exact query) and the scene's flag. */
+static cdist_status enter(cdist_query *q, cdist_scene *s)
+{
+    if (!q) return CDIST_ERR_NULL_ARGUMENT;
+    if (atomic_exchange_explicit(&q->batch_busy, 1, memory_order_acquire)) return CDIST_ERR_HANDLE_BUSY;
+    cdist__begin(q, NULL);
+    if (!s) {
+        atomic_store_explicit(&q->batch_busy, 0, memory_order_release);
+        return cdist__fail(q, CDIST_ERR_NULL_ARGUMENT, "scene pointer is NULL");
+    }
+    if (!cdist__scene_take(s)) {
+        atomic_store_explicit(&q->batch_busy, 0, memory_order_release);
+        return cdist__fail(q, CDIST_ERR_HANDLE_BUSY, "scene: in use by another call");
+    }
+    return CDIST_OK;
+}
+
+static cdist_status leave(cdist_query *q, cdist_scene *s, cdist_status st)
+{
+    cdist__scene_release(s);
+    atomic_store_explicit(&q->batch_busy, 0, memory_order_release);
+    return st;
+}
+
+cdist_status cdist__scene_enter(cdist_query *q, cdist_scene *s) { return enter(q, s); }
+cdist_status cdist__scene_leave(cdist_query *q, cdist_scene *s, cdist_status st) { return leave(q, s, st); }
+
+static cdist_status reserve(cdist_query *q, cdist_scene *s, size_t need)
+{
+    if (need >= UINT32_MAX) return cdist__fail(q, CDIST_ERR_OUT_OF_RANGE, "scene: more than 2^32 - 2 objects");
+    if (need <= s->cap) return CDIST_OK;
+    size_t cap = s->cap;
+    cdist__scene_obj *o = grow(s->obj, &cap, need, sizeof *o);
+    if (!o) return cdist__fail(q, CDIST_ERR_NO_MEMORY, "scene: out of memory for %zu objects", need);
+    s->obj = o;
+    uint32_t *p = realloc(s->pos, cap * sizeof *p);
+    if (!p) return cdist__fail(q, CDIST_ERR_NO_MEMORY, "scene: out of memory for %zu objects", need);
+    s->pos = p;
+    s->cap = cap;
+    return CDIST_OK;
+}
+
+/* First failing entry of a call: its status and message, kept while later entries overwrite
+ * the handle's message. */
+typedef struct first_fail {
+    size_t index;
+    cdist_status status;
+    char message[CD_MESSAGE_LEN];
+} first_fail;
+
+static void note_fail(cdist_query *q, first_fail *f, size_t index, cdist_status st)
+{
+    if (st == CDIST_OK || f->status != CDIST_OK) return;
+    f->index = index;
+    f->status = st;
+    memcpy(f->message, q->message, sizeof f->message);
+}
+
+static cdist_status report(cdist_query *q, const first_fail *f, const char *what)
+{
+    cdist__begin(q, NULL);
+    if (f->status == CDIST_OK) return CDIST_OK;
+    return cdist__fail(q, f->status, "scene %s, entry %zu: %.200s", what, f->index, f->message);
+}
+
+cdist_status cdist_scene_add(cdist_query *q, cdist_scene *s, cdist_scene_kind kind, size_t n, const void *objects,
+                             ptrdiff_t stride, size_t *first_id, cdist_status *statuses)
+{
+    cdist_status st = enter(q, s);
+    if (st) return st;
+    if (first_id) *first_id = s->n;
+    if ((unsigned)kind >= KIND_COUNT) {
+        for (size_t k = 0; statuses && k < n; k++) statuses[k] = CDIST_ERR_BAD_KIND;
+        return leave(q, s, cdist__fail(q, CDIST_ERR_BAD_KIND, "scene add: %d is not a cdist_scene_kind", (int)kind));
+    }
+    if (n > 0 && !objects) {
+        for (size_t k = 0; statuses && k < n; k++) statuses[k] = CDIST_ERR_NULL_ARGUMENT;
+        return leave(q, s, cdist__fail(q, CDIST_ERR_NULL_ARGUMENT, "scene add: object array is NULL"));
+    }
+    if ((st = reserve(q, s, s->n + n))) return leave(q, s, st);
+    first_fail f = {0, CDIST_OK, ""};
+    for (size_t k = 0; k < n; k++) {
+        cdist__scene_obj *o = &s->obj[s->n];
+        st = cdist__scene_make(q, kind, (const char *)objects + (ptrdiff_t)k * stride, o);
+        o->group = o->chain = 0;
+        s->pos[s->n] = CD_SCENE_NO_POS;
+        if (statuses) statuses[k] = st;
+        note_fail(q, &f, k, st);
+        s->live += o->state == CD_SCENE_LIVE;
+        s->n++;
+    }
+    if (n > 0) s->dirty = 1;
+    return leave(q, s, report(q, &f, "add"));
+}
+
+static cdist_status bad_id(cdist_query *q, size_t id, size_t n)
+{
+    return cdist__fail(q, CDIST_ERR_OUT_OF_RANGE, "id %zu is out of range or removed (%zu ids)", id, n);
+}
+
+cdist_status cdist_scene_update(cdist_query *q, cdist_scene *s, size_t n, const size_t *ids, cdist_scene_kind kind,
+                                const void *objects, ptrdiff_t stride, cdist_status *statuses)
+{
+    cdist_status st = enter(q, s);
+    if (st) return st;
+    if ((unsigned)kind >= KIND_COUNT) {
+        for (size_t k = 0; statuses && k < n; k++) statuses[k] = CDIST_ERR_BAD_KIND;
+        return leave(q, s, cdist__fail(q, CDIST_ERR_BAD_KIND, "scene update: %d is not a cdist_scene_kind", (int)kind));
+    }
+    if (n > 0 && !objects) {
+        for (size_t k = 0; statuses && k < n; k++) statuses[k] = CDIST_ERR_NULL_ARGUMENT;
+        return leave(q, s, cdist__fail(q, CDIST_ERR_NULL_ARGUMENT, "scene update: object array is NULL"));
+    }
+    first_fail f = {0, CDIST_OK, ""};
+    for (size_t k = 0; k < n; k++) {
+        size_t id = ids ? ids[k] : k;
+        if (id >= s->n || s->obj[id].state == CD_SCENE_REMOVED) {
+            st = bad_id(q, id, s->n);
+        } else {
+            cdist__scene_obj o;
+            st = cdist__scene_make(q, kind, (const char *)objects + (ptrdiff_t)k * stride, &o);
+            if (st == CDIST_OK) {
+                cdist__scene_obj *t = &s->obj[id];
+                o.group = t->group;
+                o.chain = t->chain;
+                if (t->state != CD_SCENE_LIVE) s->live++;
+                *t = o;
+                uint32_t p = s->pos[id];
+                if (p == CD_SCENE_NO_POS) {
+                    s->dirty = 1;
+                } else {
+                    cdist__box b;
+                    cdist__scene_box(t, &b);
+                    if (!box_inside(&b, &s->box[p])) {
+                        double e = 0.0;
+                        for (int a = 0; a < 3; a++) e = fmax(e, b.hi[a] - b.lo[a]);
+                        for (int a = 0; a < 3; a++) {
+                            b.lo[a] -= CD_SCENE_FAT_REL * e;
+                            b.hi[a] += CD_SCENE_FAT_REL * e;
+                        }
+                        s->box[p] = b;
+                        s->refit_pending = 1;
+                        s->escaped++;
+                    }
+                }
+            }
+        }
+        if (statuses) statuses[k] = st;
+        note_fail(q, &f, k, st);
+    }
+    return leave(q, s, report(q, &f, "update"));
+}
+
+cdist_status cdist_scene_remove(cdist_query *q, cdist_scene *s, size_t n, const size_t *ids)
+{
+    cdist_status st = enter(q, s);
+    if (st) return st;
+    if (n > 0 && !ids) return leave(q, s, cdist__fail(q, CDIST_ERR_NULL_ARGUMENT, "scene remove: id array is NULL"));
+    first_fail f = {0, CDIST_OK, ""};
+    for (size_t k = 0; k < n; k++) {
+        size_t id = ids[k];
+        if (id >= s->n) {
+            note_fail(q, &f, k, bad_id(q, id, s->n));
+            continue;
+        }
+        cdist__scene_obj *o = &s->obj[id];
+        if (o->state == CD_SCENE_LIVE) s->live--;
+        o->state = CD_SCENE_REMOVED;
+        /* An empty box is near nothing; the node boxes above it only stay larger than needed. */
+        if (s->pos[id] != CD_SCENE_NO_POS) box_empty(&s->box[s->pos[id]]);
+    }
+    return leave(q, s, report(q, &f, "remove"));
+}
+
+cdist_status cdist_scene_set_groups(cdist_query *q, cdist_scene *s, size_t n, const size_t *ids, const unsigned *group,
+                                    const unsigned *chain)
+{
+    cdist_status st = enter(q, s);
+    if (st) return st;
+    first_fail f = {0, CDIST_OK, ""};
+    for (size_t k = 0; k < n; k++) {
+        size_t id = ids ? ids[k] : k;
+        if (id >= s->n) {
+            note_fail(q, &f, k, bad_id(q, id, s->n));
+            continue;
+        }
+        if (group) s->obj[id].group = group[k];
+        if (chain) s->obj[id].chain = chain[k];
+    }
+    return leave(q, s, report(q, &f, "set_groups"));
+}
+
+size_t cdist_scene_count(const cdist_scene *s) { return s ? s->n : 0; }
+
+cdist_status cdist_scene_object_status(const cdist_scene *s, size_t id)
+{
+    if (!s) return CDIST_ERR_NULL_ARGUMENT;
+    if (id >= s->n || s->obj[id].state == CD_SCENE_REMOVED) return CDIST_ERR_OUT_OF_RANGE;
+    return (cdist_status)s->obj[id].status;
+}
+
+cdist_status cdist_scene_rebuild(cdist_query *q, cdist_scene *s)
+{
+    cdist_status st = enter(q, s);
+    if (st) return st;
+    return leave(q, s, build(q, s));
+}
+
+cdist_status cdist_scene_get_stats(const cdist_scene *s, cdist_scene_stats *out)
+{
+    if (!s || !out) return CDIST_ERR_NULL_ARGUMENT;
+    *out = s->stats;
+    out->objects = s->n;
+    out->live = s->live;
+    out->nodes = s->node_n;
+    out->bytes = sizeof *s + s->cap * (sizeof *s->obj + sizeof *s->pos) +
+                 s->tree_n * (sizeof *s->perm + sizeof *s->box) + s->node_cap * sizeof *s->node +
+                 s->cand_cap * 2 * sizeof *s->cand + s->chunk_buf_cap * sizeof *s->chunk_buf +
+                 (size_t)s->worker_n * sizeof(cdist_query);
+    return CDIST_OK;
+}
