@@ -76,9 +76,9 @@ struct cdist_scene {
 cdist__core_obj cdist__scene_core(const cdist__scene_obj *o);
 /* The certified solid box of a valid object. */
 void cdist__scene_box(const cdist__scene_obj *o, cdist__box *b);
-/* A certified lower bound of the signed distance of a and b (balls and circle-plane slabs),
- * already lowered by the bound margin: a pair with bound > lim has distance > lim. */
-double cdist__scene_lower_bound(const cdist__scene_obj *a, const cdist__scene_obj *b);
+/* 1 when the signed distance of a and b is certified > lim (balls, circle-plane slabs and the
+ * ring screen, each lowered by the bound margin); 0 when the pair must be answered. */
+int cdist__scene_excluded(const cdist__scene_obj *a, const cdist__scene_obj *b, double lim);
 /* Validate one object of a kind (q's tolerance) into o; returns the status (o->state set). */
 cdist_status cdist__scene_make(cdist_query *q, cdist_scene_kind kind, const void *src, cdist__scene_obj *o);
 /* Bring the tree up to date (rebuild when dirty or degraded, refit when boxes grew). */

@@ -2,6 +2,7 @@
 /* Scenes: object storage and validation, certified bounds, the tree (build, refit) and the
  * editing calls. The queries are in scene_query.c. */
 #include <math.h>
+#include <pthread.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -210,17 +211,145 @@ static double slab_bound(const cdist__scene_obj *a, const cdist__scene_obj *b)
     return fmax(0.0, fmax(lo, -hi));
 }
 
-double cdist__scene_lower_bound(const cdist__scene_obj *a, const cdist__scene_obj *b)
+/* A core prepared for point distances: the unit normal once per pair. */
+typedef struct prepared {
+    cdist__core_type type;
+    vec3 p0, p1;  /* point (p0), segment */
+    vec3 c, n;    /* circle, disk (an arc: its circle) */
+    double R;
+} prepared;
+
+static prepared prepare(const cdist__scene_obj *o)
+{
+    prepared x;
+    memset(&x, 0, sizeof x);
+    x.type = core_type(o->kind);
+    if (x.type == CD_CORE_POINT) {
+        x.p0 = o->g.point;
+    } else if (x.type == CD_CORE_SEGMENT) {
+        x.p0 = o->g.segment.p0;
+        x.p1 = o->g.segment.p1;
+    } else {
+        x.c = o->g.circle.center;
+        x.n = v_unit_or_zero(o->g.circle.normal);
+        x.R = o->g.circle.radius;
+        if (x.type == CD_CORE_ARC) x.type = CD_CORE_CIRCLE; /* the arc's circle: a lower bound */
+    }
+    return x;
+}
+
+/* Plain arithmetic (no fma: without -mfma the C library's fma is a call). */
+static inline double dot3(vec3 a, vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+static inline vec3 sub3(vec3 a, vec3 b) { return v3(a.x - b.x, a.y - b.y, a.z - b.z); }
+static inline vec3 axpy3(vec3 a, double s, vec3 b) { return v3(a.x + s * b.x, a.y + s * b.y, a.z + s * b.z); }
+
+/* Distance from p to the core (to rounding of a few eps times the coordinates). */
+static double point_distance(const prepared *x, vec3 p)
+{
+    switch (x->type) {
+    case CD_CORE_POINT: {
+        vec3 d = sub3(p, x->p0);
+        return sqrt(dot3(d, d));
+    }
+    case CD_CORE_SEGMENT: {
+        vec3 d = sub3(x->p1, x->p0), w = sub3(p, x->p0);
+        double dd = dot3(d, d), t = dd > 0.0 ? dot3(w, d) / dd : 0.0;
+        t = t < 0.0 ? 0.0 : (t > 1.0 ? 1.0 : t);
+        vec3 e = sub3(p, axpy3(x->p0, t, d));
+        return sqrt(dot3(e, e));
+    }
+    default: {
+        vec3 w = sub3(p, x->c);
+        double h = dot3(w, x->n);
+        vec3 o = axpy3(w, -h, x->n);
+        double e = sqrt(dot3(o, o)) - x->R;
+        if (x->type == CD_CORE_DISK && e < 0.0) e = 0.0;
+        return sqrt(h * h + e * e);
+    }
+    }
+}
+
+/* Initial samples and the finest subdivision of the ring screen. */
+#define RING_SAMPLES 8
+#define RING_DEPTH 5
+#define RING_ANGLES (RING_SAMPLES << RING_DEPTH)
+
+/* cos and sin of the screen's angles 2 pi k / RING_ANGLES, filled once. */
+static double ring_cos[RING_ANGLES], ring_sin[RING_ANGLES];
+static pthread_once_t ring_once = PTHREAD_ONCE_INIT;
+static void ring_table(void)
+{
+    for (int k = 0; k < RING_ANGLES; k++) {
+        ring_cos[k] = cos(2.0 * M_PI * k / RING_ANGLES);
+        ring_sin[k] = sin(2.0 * M_PI * k / RING_ANGLES);
+    }
+}
+
+/* Ring screen: 1 when every point of the circle (c, u, v, R) is certified farther than thr
+ * from core x. The distance to x is R-Lipschitz in the circle's angle, so on an interval of
+ * width w with end values f0, f1 it is >= (f0 + f1) / 2 - R w / 2; intervals that do not clear
+ * thr are halved down to RING_DEPTH, and a sample within thr ends the screen (the pair is
+ * close). Angles are table indices, so every sample is a point of the circle to rounding. */
+static int ring_clears(const prepared *x, vec3 c, vec3 n, double R, double thr)
+{
+    vec3 u, v;
+    v_basis(n, &u, &v);
+    pthread_once(&ring_once, ring_table);
+#define RING_AT(k) point_distance(x, axpy3(axpy3(c, R * ring_cos[(k) % RING_ANGLES], u), R * ring_sin[(k) % RING_ANGLES], v))
+    const int step0 = RING_ANGLES / RING_SAMPLES;
+    double f[RING_SAMPLES + 1];
+    for (int k = 0; k < RING_SAMPLES; k++)
+        if ((f[k] = RING_AT(k * step0)) <= thr) return 0;
+    f[RING_SAMPLES] = f[0];
+    struct {
+        int k0, step;
+        double f0, f1;
+    } stack[RING_SAMPLES + RING_DEPTH + 2];
+    int top = 0;
+    for (int k = RING_SAMPLES - 1; k >= 0; k--) {
+        stack[top].k0 = k * step0, stack[top].step = step0, stack[top].f0 = f[k], stack[top].f1 = f[k + 1];
+        top++;
+    }
+    const double w1 = 2.0 * M_PI / RING_ANGLES;
+    while (top > 0) {
+        top--;
+        int k0 = stack[top].k0, step = stack[top].step;
+        double f0 = stack[top].f0, f1 = stack[top].f1;
+        if (0.5 * (f0 + f1) - 0.5 * R * (w1 * step) > thr) continue;
+        if (step == 1) return 0;
+        int km = k0 + step / 2;
+        double fm = RING_AT(km);
+        if (fm <= thr) return 0;
+        stack[top].k0 = km, stack[top].step = step / 2, stack[top].f0 = fm, stack[top].f1 = f1;
+        top++;
+        stack[top].k0 = k0, stack[top].step = step / 2, stack[top].f0 = f0, stack[top].f1 = fm;
+        top++;
+    }
+#undef RING_AT
+    return 1;
+}
+
+int cdist__scene_excluded(const cdist__scene_obj *a, const cdist__scene_obj *b, double lim)
 {
     vec3 ma, mb;
     double ra, rb;
     core_ball(a, &ma, &ra);
     core_ball(b, &mb, &rb);
-    double core = v_dist(ma, mb) - ra - rb;
-    if (is_planar(a->kind)) core = fmax(core, slab_bound(a, b));
-    if (is_planar(b->kind)) core = fmax(core, slab_bound(b, a));
     double margin = CD_SCENE_BOUND_REL * (obj_scale(ma, ra, a->r) + obj_scale(mb, rb, b->r));
-    return core - (a->r + b->r) - margin;
+    /* Certified lower bounds of the core distance against thr, the core distance the pair
+     * must not exceed to be within lim. */
+    double thr = lim + (a->r + b->r) + margin;
+    if (v_dist(ma, mb) - ra - rb > thr) return 1;
+    if (is_planar(a->kind) && slab_bound(a, b) > thr) return 1;
+    if (is_planar(b->kind) && slab_bound(b, a) > thr) return 1;
+    /* The ring screen samples the circle (of a circle or arc core) of smaller radius against
+     * the other core. */
+    int ca = core_type(a->kind) == CD_CORE_CIRCLE || core_type(a->kind) == CD_CORE_ARC;
+    int cb = core_type(b->kind) == CD_CORE_CIRCLE || core_type(b->kind) == CD_CORE_ARC;
+    if (!(thr < INFINITY) || !(ca || cb)) return 0;
+    const cdist__scene_obj *ring = cb && (!ca || rb <= ra) ? b : a, *other = ring == b ? a : b;
+    prepared x = prepare(other);
+    return ring_clears(&x, ring->g.circle.center, v_unit_or_zero(ring->g.circle.normal), ring->g.circle.radius, thr);
 }
 
 /* ---- tree ---- */
@@ -358,8 +487,12 @@ static cdist_status build(cdist_query *q, cdist_scene *s)
         }
         k++;
     }
+    /* One scale for the three axes: a flat scene (a sheet) gets few bits across its thin axis,
+     * so its order follows the sheet instead of the noise across it. */
+    double ext = 0.0;
+    for (int a = 0; a < 3; a++) ext = fmax(ext, chi[a] - clo[a]);
     double scale[3];
-    for (int a = 0; a < 3; a++) scale[a] = chi[a] > clo[a] ? 2097151.0 / (chi[a] - clo[a]) : 0.0;
+    for (int a = 0; a < 3; a++) scale[a] = ext > 0.0 && isfinite(ext) ? 2097151.0 / ext : 0.0;
     for (size_t p = 0; p < m; p++) {
         uint64_t code = 0;
         for (int a = 0; a < 3; a++) {

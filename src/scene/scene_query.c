@@ -121,7 +121,7 @@ static void test_pos(broad *b, uint32_t pa, uint32_t pb)
         if (skipped(oa, ob, i, j)) return;
     }
     b->box_pairs++;
-    if (cdist__scene_lower_bound(oa, ob) > b->delta) return;
+    if (cdist__scene_excluded(oa, ob, b->delta)) return;
     push(b, (uint64_t)i << 32 | j);
 }
 
@@ -486,7 +486,7 @@ static void best_pos(closest *c, uint32_t pa, uint32_t pb)
         if (skipped(oa, ob, i, j)) return;
     }
     c->box_pairs++;
-    if (cdist__scene_lower_bound(oa, ob) > c->best) return;
+    if (cdist__scene_excluded(oa, ob, c->best)) return;
     c->candidates++;
     cdist_scene_pair p;
     answer(c->h, oa, ob, i, j, INFINITY, &p);
@@ -623,7 +623,7 @@ static void near_obj(near_q *c, uint32_t p)
     if (cdist__box_gap(&c->s->box[p], &c->qbox) > (cut > 0.0 ? cut : 0.0)) return;
     size_t i = c->s->perm[p];
     const cdist__scene_obj *o = &c->s->obj[i];
-    if (o->state != CD_SCENE_LIVE || cdist__scene_lower_bound(o, c->qo) > cut) return;
+    if (o->state != CD_SCENE_LIVE || cdist__scene_excluded(o, c->qo, cut)) return;
     cdist_scene_pair r;
     answer(c->h, o, c->qo, i, SIZE_MAX, INFINITY, &r);
     if (r.status != CDIST_OK) {
@@ -669,7 +669,7 @@ static void within_node(near_q *c, uint32_t x)
             const cdist__scene_obj *o = &c->s->obj[i];
             if (o->state != CD_SCENE_LIVE) continue;
             c->b->box_pairs++;
-            if (cdist__scene_lower_bound(o, c->qo) > c->b->delta) continue;
+            if (cdist__scene_excluded(o, c->qo, c->b->delta)) continue;
             push(c->b, i);
         }
         return;
