@@ -199,9 +199,5 @@
  * pair whose computed distance is <= delta always passes: 2^-36 (1.5e-11) is over 100 times
  * either and still far below any geometric gap that matters for pruning. */
 #define CD_SCENE_BOUND_REL 0x1p-36
-/* A moved object whose box leaves its tree box gets a box fattened by this fraction of its
- * largest extent on every side (Box2D's dynamic tree fattens the same way), so small motions
- * of the next steps need no tree change. Quality only. */
-#define CD_SCENE_FAT_REL 0.125
 
 #endif

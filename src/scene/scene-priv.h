@@ -23,8 +23,6 @@ enum { CD_SCENE_LIVE = 0, CD_SCENE_INVALID = 1, CD_SCENE_REMOVED = 2 };
 typedef struct cdist__scene_obj {
     cdist__scene_geom g;
     double r;       /* ball radius: 0 for the plain kinds */
-    uint32_t group; /* pairs of the same non-zero group are skipped */
-    uint32_t chain; /* ids i, i + 1 of the same non-zero chain are skipped */
     uint8_t kind;   /* cdist_scene_kind */
     uint8_t state;  /* CD_SCENE_LIVE, _INVALID, _REMOVED */
     uint8_t status; /* the validation status of an invalid object */
@@ -49,6 +47,7 @@ struct cdist_scene {
     atomic_int busy;
     size_t n, cap;           /* ids given out, allocated */
     cdist__scene_obj *obj;   /* by id */
+    uint32_t *filter;        /* by id, 2 each: group, chain (NULL until cdist_scene_set_groups) */
     uint32_t *pos;           /* by id: position in the tree, CD_SCENE_NO_POS when not in it */
     /* The tree over the live objects at its last build: positions 0 .. tree_n - 1. */
     size_t tree_n;
@@ -57,11 +56,11 @@ struct cdist_scene {
     cdist__node *node;
     size_t node_n, node_cap;
     int dirty;               /* objects added or revived since the build: rebuild before a query */
-    int refit_pending;       /* boxes grew since the last refit */
-    size_t escaped;          /* objects that left their box since the build */
+    int refit_pending;       /* boxes changed since the last refit */
+    double built_leaves;     /* the sum of the leaves' box sizes at the build */
     size_t live;
     /* Workspaces, kept between queries. */
-    uint64_t *cand, *cand_tmp;
+    uint64_t *cand;
     size_t cand_n, cand_cap;
     cdist_query **worker;    /* handles of the extra threads */
     int worker_n;

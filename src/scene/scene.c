@@ -8,9 +8,9 @@
 
 #include "scene-priv.h"
 
-/* Leaves hold up to this many objects: measured on the chain-mail sheet (bench_scene), 4 beat
- * 2 and 8 (fewer nodes to visit against more box tests per leaf pair). */
-#define CD_SCENE_LEAF 4
+/* Leaves hold up to this many objects: on the chain-mail sheet (bench_scene) 8 took the same
+ * CPU time as 4 with half the nodes (198 against 217 bytes per object); 16 took more. */
+#define CD_SCENE_LEAF 8
 
 /* ---- objects ---- */
 
@@ -367,13 +367,6 @@ static void box_join(cdist__box *b, const cdist__box *x)
     }
 }
 
-static int box_inside(const cdist__box *in, const cdist__box *out)
-{
-    for (int k = 0; k < 3; k++)
-        if (!(in->lo[k] >= out->lo[k] && in->hi[k] <= out->hi[k])) return 0;
-    return 1;
-}
-
 static uint64_t spread21(uint64_t x)
 {
     x &= 0x1fffff;
@@ -411,19 +404,25 @@ static void radix_sort(uint64_t *key, uint32_t *val, uint64_t *key_tmp, uint32_t
 
 void cdist__radix_sort_keys(uint64_t *key, uint64_t *tmp, size_t n) { radix_sort(key, NULL, tmp, NULL, n); }
 
-static void refit(cdist_scene *s)
+/* Node boxes bottom-up from the object boxes; returns the sum of the leaves' box sizes (the
+ * tree's quality: it grows as objects move away from the neighbours they were built with). */
+static double refit(cdist_scene *s)
 {
+    double leaves = 0.0;
     for (size_t i = s->node_n; i-- > 0;) {
         cdist__node *nd = &s->node[i];
         box_empty(&nd->box);
         if (nd->count) {
             for (uint32_t p = nd->first; p < nd->first + nd->count; p++) box_join(&nd->box, &s->box[p]);
+            if (nd->box.lo[0] <= nd->box.hi[0])
+                leaves += (nd->box.hi[0] - nd->box.lo[0]) + (nd->box.hi[1] - nd->box.lo[1]) + (nd->box.hi[2] - nd->box.lo[2]);
         } else {
             box_join(&nd->box, &s->node[nd->first].box);
             box_join(&nd->box, &s->node[nd->first + 1].box);
         }
     }
     s->refit_pending = 0;
+    return leaves;
 }
 
 /* Median split of Morton-ordered positions [lo, hi) into node ni. */
@@ -445,17 +444,6 @@ static void build_node(cdist_scene *s, size_t ni, uint32_t lo, uint32_t hi)
         ni = c + 1;
         lo = mid;
     }
-}
-
-static void *grow(void *p, size_t *cap, size_t need, size_t size)
-{
-    if (need <= *cap) return p;
-    size_t c = *cap ? *cap : 16;
-    while (c < need) c *= 2;
-    void *np = realloc(p, c * size);
-    if (!np) return NULL;
-    *cap = c;
-    return np;
 }
 
 static cdist_status build(cdist_query *q, cdist_scene *s)
@@ -519,20 +507,23 @@ static cdist_status build(cdist_query *q, cdist_scene *s)
         s->node_n = 1;
         build_node(s, 0, 0, (uint32_t)m);
     }
-    refit(s);
+    /* The node array was sized for the worst case (one node per object). */
+    cdist__node *fit = realloc(s->node, (s->node_n ? s->node_n : 1) * sizeof *fit);
+    if (fit) s->node = fit, s->node_cap = s->node_n ? s->node_n : 1;
+    s->built_leaves = refit(s);
     s->dirty = 0;
-    s->escaped = 0;
     s->stats.rebuilds++;
     return CDIST_OK;
 }
 
 cdist_status cdist__scene_prepare(cdist_query *q, cdist_scene *s)
 {
-    /* Many objects outside their build-time neighbourhood make the tree's boxes overlap more
-     * and more: past a quarter of the live objects a rebuild pays. */
-    if (s->dirty || (s->escaped > 0 && s->escaped * 4 > s->live)) return build(q, s);
+    if (s->dirty) return build(q, s);
     if (s->refit_pending) {
-        refit(s);
+        /* Moved objects keep their place in the tree; once the leaves' boxes have grown to twice
+         * their size at the build (objects far from their former neighbours), a rebuild pays. */
+        double leaves = refit(s);
+        if (leaves > 2.0 * s->built_leaves) return build(q, s);
         s->stats.refits++;
     }
     return CDIST_OK;
@@ -553,7 +544,7 @@ void cdist_scene_free(cdist_scene *s)
     for (int i = 0; i < s->worker_n; i++) cdist_query_free(s->worker[i]);
     free(s->worker);
     free(s->obj), free(s->pos), free(s->perm), free(s->box), free(s->node);
-    free(s->cand), free(s->cand_tmp), free(s->chunk_buf);
+    free(s->cand), free(s->filter), free(s->chunk_buf);
     free(s);
 }
 
@@ -592,13 +583,20 @@ static cdist_status reserve(cdist_query *q, cdist_scene *s, size_t need)
 {
     if (need >= UINT32_MAX) return cdist__fail(q, CDIST_ERR_OUT_OF_RANGE, "scene: more than 2^32 - 2 objects");
     if (need <= s->cap) return CDIST_OK;
-    size_t cap = s->cap;
-    cdist__scene_obj *o = grow(s->obj, &cap, need, sizeof *o);
+    size_t cap = s->cap + s->cap / 2;
+    if (cap < need) cap = need; /* a bulk add gets exactly its size */
+    cdist__scene_obj *o = realloc(s->obj, cap * sizeof *o);
     if (!o) return cdist__fail(q, CDIST_ERR_NO_MEMORY, "scene: out of memory for %zu objects", need);
     s->obj = o;
     uint32_t *p = realloc(s->pos, cap * sizeof *p);
     if (!p) return cdist__fail(q, CDIST_ERR_NO_MEMORY, "scene: out of memory for %zu objects", need);
     s->pos = p;
+    if (s->filter) {
+        uint32_t *g = realloc(s->filter, 2 * cap * sizeof *g);
+        if (!g) return cdist__fail(q, CDIST_ERR_NO_MEMORY, "scene: out of memory for %zu objects", need);
+        memset(g + 2 * s->cap, 0, 2 * (cap - s->cap) * sizeof *g);
+        s->filter = g;
+    }
     s->cap = cap;
     return CDIST_OK;
 }
@@ -645,7 +643,6 @@ cdist_status cdist_scene_add(cdist_query *q, cdist_scene *s, cdist_scene_kind ki
     for (size_t k = 0; k < n; k++) {
         cdist__scene_obj *o = &s->obj[s->n];
         st = cdist__scene_make(q, kind, (const char *)objects + (ptrdiff_t)k * stride, o);
-        o->group = o->chain = 0;
         s->pos[s->n] = CD_SCENE_NO_POS;
         if (statuses) statuses[k] = st;
         note_fail(q, &f, k, st);
@@ -684,27 +681,16 @@ cdist_status cdist_scene_update(cdist_query *q, cdist_scene *s, size_t n, const 
             st = cdist__scene_make(q, kind, (const char *)objects + (ptrdiff_t)k * stride, &o);
             if (st == CDIST_OK) {
                 cdist__scene_obj *t = &s->obj[id];
-                o.group = t->group;
-                o.chain = t->chain;
                 if (t->state != CD_SCENE_LIVE) s->live++;
                 *t = o;
                 uint32_t p = s->pos[id];
                 if (p == CD_SCENE_NO_POS) {
                     s->dirty = 1;
                 } else {
-                    cdist__box b;
-                    cdist__scene_box(t, &b);
-                    if (!box_inside(&b, &s->box[p])) {
-                        double e = 0.0;
-                        for (int a = 0; a < 3; a++) e = fmax(e, b.hi[a] - b.lo[a]);
-                        for (int a = 0; a < 3; a++) {
-                            b.lo[a] -= CD_SCENE_FAT_REL * e;
-                            b.hi[a] += CD_SCENE_FAT_REL * e;
-                        }
-                        s->box[p] = b;
-                        s->refit_pending = 1;
-                        s->escaped++;
-                    }
+                    /* The tree keeps its shape; the boxes above are refitted before the
+                     * next query (cdist__scene_prepare). */
+                    cdist__scene_box(t, &s->box[p]);
+                    s->refit_pending = 1;
                 }
             }
         }
@@ -740,6 +726,10 @@ cdist_status cdist_scene_set_groups(cdist_query *q, cdist_scene *s, size_t n, co
 {
     cdist_status st = enter(q, s);
     if (st) return st;
+    if (!s->filter && n > 0) {
+        s->filter = calloc(s->cap ? 2 * s->cap : 2, sizeof *s->filter);
+        if (!s->filter) return leave(q, s, cdist__fail(q, CDIST_ERR_NO_MEMORY, "scene: out of memory for the groups"));
+    }
     first_fail f = {0, CDIST_OK, ""};
     for (size_t k = 0; k < n; k++) {
         size_t id = ids ? ids[k] : k;
@@ -747,8 +737,8 @@ cdist_status cdist_scene_set_groups(cdist_query *q, cdist_scene *s, size_t n, co
             note_fail(q, &f, k, bad_id(q, id, s->n));
             continue;
         }
-        if (group) s->obj[id].group = group[k];
-        if (chain) s->obj[id].chain = chain[k];
+        if (group) s->filter[2 * id] = group[k];
+        if (chain) s->filter[2 * id + 1] = chain[k];
     }
     return leave(q, s, report(q, &f, "set_groups"));
 }
@@ -778,7 +768,7 @@ cdist_status cdist_scene_get_stats(const cdist_scene *s, cdist_scene_stats *out)
     out->nodes = s->node_n;
     out->bytes = sizeof *s + s->cap * (sizeof *s->obj + sizeof *s->pos) +
                  s->tree_n * (sizeof *s->perm + sizeof *s->box) + s->node_cap * sizeof *s->node +
-                 s->cand_cap * 2 * sizeof *s->cand + s->chunk_buf_cap * sizeof *s->chunk_buf +
+                 s->cand_cap * sizeof *s->cand + (s->filter ? 2 * s->cap * sizeof *s->filter : 0) + s->chunk_buf_cap * sizeof *s->chunk_buf +
                  (size_t)s->worker_n * sizeof(cdist_query);
     return CDIST_OK;
 }

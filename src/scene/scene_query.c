@@ -17,10 +17,12 @@
 
 /* ---- pair filters ---- */
 
-static int skipped(const cdist__scene_obj *a, const cdist__scene_obj *b, size_t i, size_t j)
+static int skipped(const cdist_scene *s, size_t i, size_t j)
 {
-    if (a->group != 0 && a->group == b->group) return 1;
-    return j == i + 1 && a->chain != 0 && a->chain == b->chain;
+    if (!s->filter) return 0;
+    uint32_t ga = s->filter[2 * i], gb = s->filter[2 * j], ca = s->filter[2 * i + 1], cb = s->filter[2 * j + 1];
+    if (ga != 0 && ga == gb) return 1;
+    return j == i + 1 && ca != 0 && ca == cb;
 }
 
 static int unsupported(cdist__core_type a, cdist__core_type b)
@@ -118,7 +120,7 @@ static void test_pos(broad *b, uint32_t pa, uint32_t pb)
             const cdist__scene_obj *o = oa;
             oa = ob, ob = o;
         }
-        if (skipped(oa, ob, i, j)) return;
+        if (skipped(b->sa, i, j)) return;
     }
     b->box_pairs++;
     if (cdist__scene_excluded(oa, ob, b->delta)) return;
@@ -370,6 +372,18 @@ static cdist_status check_delta(cdist_query *q, double delta, const void *out, s
     return CDIST_OK;
 }
 
+/* Sort the candidate keys (the scratch lives for the sort only: it would double the
+ * candidates' share of the scene's memory). */
+static cdist_status sort_keys(cdist_query *q, uint64_t *key, size_t n)
+{
+    if (n < 2) return CDIST_OK;
+    uint64_t *tmp = malloc(n * sizeof *tmp);
+    if (!tmp) return cdist__fail(q, CDIST_ERR_NO_MEMORY, "scene: out of memory for sorting %zu candidate pairs", n);
+    cdist__radix_sort_keys(key, tmp, n);
+    free(tmp);
+    return CDIST_OK;
+}
+
 /* Broad and narrow phase of pairs within delta of sa (x) sb (self when sa == sb). */
 static cdist_status pairs_run(cdist_query *q, cdist_scene *sa, cdist_scene *sb, double delta, narrow *w,
                               const char *what)
@@ -384,12 +398,7 @@ static cdist_status pairs_run(cdist_query *q, cdist_scene *sa, cdist_scene *sb, 
     sa->cand = b.key;
     sa->cand_cap = b.cap;
     if (b.oom) return cdist__fail(q, CDIST_ERR_NO_MEMORY, "scene %s: out of memory for the candidate pairs", what);
-    if (sa->cand_tmp == NULL || b.n > 0) {
-        uint64_t *t = realloc(sa->cand_tmp, (b.cap ? b.cap : 1) * sizeof *t);
-        if (!t) return cdist__fail(q, CDIST_ERR_NO_MEMORY, "scene %s: out of memory for the candidate pairs", what);
-        sa->cand_tmp = t;
-    }
-    cdist__radix_sort_keys(sa->cand, sa->cand_tmp, b.n);
+    if ((st = sort_keys(q, sa->cand, b.n))) return st;
     w->sa = sa;
     w->sb = sb;
     w->key = sa->cand;
@@ -483,7 +492,7 @@ static void best_pos(closest *c, uint32_t pa, uint32_t pb)
             const cdist__scene_obj *o = oa;
             oa = ob, ob = o;
         }
-        if (skipped(oa, ob, i, j)) return;
+        if (skipped(c->sa, i, j)) return;
     }
     c->box_pairs++;
     if (cdist__scene_excluded(oa, ob, c->best)) return;
@@ -736,12 +745,7 @@ cdist_status cdist_scene_within(cdist_query *q, cdist_scene *s, cdist_scene_kind
         if (b.oom) {
             st = cdist__fail(q, CDIST_ERR_NO_MEMORY, "scene within: out of memory for the candidates");
         } else {
-            uint64_t *t = realloc(s->cand_tmp, (b.cap ? b.cap : 1) * sizeof *t);
-            if (!t) {
-                st = cdist__fail(q, CDIST_ERR_NO_MEMORY, "scene within: out of memory for the candidates");
-            } else {
-                s->cand_tmp = t;
-                cdist__radix_sort_keys(s->cand, s->cand_tmp, b.n);
+            if (!(st = sort_keys(q, s->cand, b.n))) {
                 narrow w;
                 memset(&w, 0, sizeof w);
                 w.sa = s;

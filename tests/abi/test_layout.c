@@ -129,6 +129,29 @@ SIZE(cdist_method, 4);
 SIZE(cdist_curve_fn, 8);
 SIZE(cdist_kind, 4);
 SIZE(cdist_contact_flag, 4);
+/* scenes (CDIST_1.1) */
+SIZE(cdist_scene_pair, 136);
+OFF(cdist_scene_pair, i, 0);
+OFF(cdist_scene_pair, j, 8);
+OFF(cdist_scene_pair, distance, 16);
+OFF(cdist_scene_pair, status, 24);
+OFF(cdist_scene_pair, num_pairs, 28);
+OFF(cdist_scene_pair, flags, 32);
+OFF(cdist_scene_pair, reserved, 36);
+OFF(cdist_scene_pair, point, 40);
+SIZE(cdist_scene_stats, 128);
+OFF(cdist_scene_stats, objects, 0);
+OFF(cdist_scene_stats, live, 8);
+OFF(cdist_scene_stats, nodes, 16);
+OFF(cdist_scene_stats, bytes, 24);
+OFF(cdist_scene_stats, box_pairs, 32);
+OFF(cdist_scene_stats, candidates, 40);
+OFF(cdist_scene_stats, reported, 48);
+OFF(cdist_scene_stats, rebuilds, 56);
+OFF(cdist_scene_stats, refits, 64);
+OFF(cdist_scene_stats, reserved, 72);
+SIZE(cdist_scene_kind, 4);
+SIZE(cdist_scene_pair_flag, 4);
 SIZE(cdist_grad_flag, 4);
 #define LAYOUT_CHECKED 1
 #endif
@@ -183,6 +206,18 @@ VALUE(CDIST_KIND_BEZIER3_DISK, 20);
 VALUE(CDIST_CONTACT_CORE_TOUCH, 1);
 VALUE(CDIST_GRAD_NOT_DIFFERENTIABLE, 1);
 
+VALUE(CDIST_SCENE_POINT, 0);
+VALUE(CDIST_SCENE_SEGMENT, 1);
+VALUE(CDIST_SCENE_CIRCLE, 2);
+VALUE(CDIST_SCENE_DISK, 3);
+VALUE(CDIST_SCENE_ARC, 4);
+VALUE(CDIST_SCENE_SPHERE, 5);
+VALUE(CDIST_SCENE_CAPSULE, 6);
+VALUE(CDIST_SCENE_TORUS, 7);
+VALUE(CDIST_SCENE_ROUNDED_DISK, 8);
+VALUE(CDIST_SCENE_PAIR_EQUIDISTANT, 1);
+VALUE(CDIST_SCENE_PAIR_CORE_TOUCH, 2);
+
 int main(void)
 {
     /* The library was compiled from the same header: its own sizes agree. */
@@ -192,7 +227,9 @@ int main(void)
              && cdist_swept_size(2) == sizeof(cdist_torus) && cdist_swept_size(3) == sizeof(cdist_rounded_disk)
              && cdist_kind_size_a(CDIST_KIND_CURVE_CIRCLE) == sizeof(cdist_curve)
              && cdist_contact_flag_core_touch() == CDIST_CONTACT_CORE_TOUCH
-             && cdist_grad_flag_not_differentiable() == CDIST_GRAD_NOT_DIFFERENTIABLE;
+             && cdist_grad_flag_not_differentiable() == CDIST_GRAD_NOT_DIFFERENTIABLE
+             && cdist_scene_pair_size() == sizeof(cdist_scene_pair) && cdist_scene_stats_size() == sizeof(cdist_scene_stats)
+             && cdist_scene_kind_size(CDIST_SCENE_ARC) == sizeof(cdist_arc);
 #ifndef LAYOUT_CHECKED
     printf("test_layout: enumerator values checked; struct layout skipped (documented for x86-64 only)\n");
 #endif
