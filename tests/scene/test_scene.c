@@ -500,6 +500,37 @@ static void public_agreement(void)
     }
 }
 
+/* ---- the boundary: delta equal to a pair's distance ---- */
+
+/* Two objects, delta exactly their computed distance: the pair is reported; one ulp below: it
+ * is not. Every bound meets its exact boundary here (axis-aligned and tilted objects, touching
+ * boxes, shared planes), so a bound without its rounding margin loses pairs. */
+static void boundary(int count)
+{
+    int missed = 0, extra = 0;
+    for (int t = 0; t < count; t++) {
+        tobj o[2];
+        double size = pow(10.0, -3 + 6 * rnd01());
+        cdist_vec3 n = (t % 3 == 0) ? tv(0, 0, 1) : rnd_unit_vec();
+        for (int k = 0; k < 2; k++) {
+            cdist_vec3 c = (t % 2 == 0) ? tv(size * (double)(next_rand() % 8), 0.0, 0.0) : rvec(3 * size);
+            o[k] = make(all_kinds[next_rand() % 9], vadd(c, tv(1e3 * size, 0, 0)), size, (t % 3 == 0) ? n : rnd_unit_vec());
+        }
+        tpair r;
+        if (ref_pair(&o[0], &o[1], &r) != 0) continue;
+        cdist_scene *s = build_scene(o, 2);
+        cdist_scene_pair got[2];
+        size_t ng = 0;
+        cdist_scene_pairs_within(Q, s, r.d, got, 2, &ng);
+        missed += ng != 1;
+        cdist_scene_pairs_within(Q, s, nextafter(r.d, -INFINITY), got, 2, &ng);
+        extra += ng != 0;
+        cdist_scene_free(s);
+    }
+    CHECK(missed == 0 && extra == 0, "boundary: %d pairs missed at delta = distance, %d reported below it", missed,
+          extra);
+}
+
 /* ---- bad input ---- */
 
 static void bad_input(void)
@@ -569,6 +600,7 @@ int main(int argc, char **argv)
     Q = cdist_query_new();
     public_agreement();
     bad_input();
+    boundary(big ? 100000 : 10000);
     scenario("random tori", big ? 2000 : 600, gen_random_tori, 0.02);
     scenario("random mixed", big ? 2000 : 500, gen_random_mixed, 0.05);
     scenario("coplanar", 300, gen_coplanar, 0.1);
