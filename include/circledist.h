@@ -791,8 +791,8 @@ CDIST_API cdist_status cdist_scene_add(cdist_query *q, cdist_scene *s, cdist_sce
                                        const void *objects, ptrdiff_t stride, size_t *first_id,
                                        cdist_status *statuses);
 /** Moves (or reshapes) objects: object k replaces the object with id ids[k] (ids NULL: ids 0 ..
- *  n - 1); its kind may change. A valid object updates its bounds without rebuilding the tree
- *  (fattened boxes, refit; see docs/scene.md); an invalid one gets its status in statuses[k]
+ *  n - 1); its kind may change. A valid object keeps its place in the tree, whose boxes are
+ *  refitted before the next query (no rebuild; see docs/scene.md); an invalid one gets its status in statuses[k]
  *  and the old object stays. An id out of range or removed: ::CDIST_ERR_OUT_OF_RANGE at its
  *  index. An invalid object previously added becomes live when updated with a valid one.
  *  Returns the first failing status as cdist_scene_add(). */
@@ -813,7 +813,7 @@ CDIST_API size_t cdist_scene_count(const cdist_scene *s);
  *  ::CDIST_ERR_OUT_OF_RANGE when out of range or removed. */
 CDIST_API cdist_status cdist_scene_object_status(const cdist_scene *s, size_t id);
 /** Rebuilds the tree from the current poses (queries rebuild by themselves when objects were
- *  added, or when many moved out of their fattened boxes; see docs/scene.md). */
+ *  added, or when moves have doubled the leaves' boxes; see docs/scene.md). */
 CDIST_API cdist_status cdist_scene_rebuild(cdist_query *q, cdist_scene *s);
 /** Counters of the scene and of its last query. */
 CDIST_API cdist_status cdist_scene_get_stats(const cdist_scene *s, cdist_scene_stats *stats);

@@ -43,6 +43,8 @@ from ._query import (FUNCTIONS as _FUNCTIONS, BatchResult, CircleDistError, Cont
                      Grad, GradObject, Method, Pair, Query, Result, circle_basis, circle_point,
                      default_query, status_name, status_string, version)
 
+from ._scene import Scene, ScenePairs  # noqa: E402  (scenes: many objects at once)
+
 globals().update(_FUNCTIONS)
 
 METHOD_AUTO, METHOD_POLYNOMIAL, METHOD_ROBUST, METHOD_ITERATION = (
@@ -56,4 +58,4 @@ __all__ = ["Point", "Circle", "Disk", "Line", "Ray", "Segment", "Arc", "Helix", 
            "Grad", "GradObject", "Method",
            "CircleDistError", "circle_basis", "circle_point", "default_query", "status_name",
            "status_string", "version", "RESULT_DTYPE", "CONTACT_DTYPE", "GRAD_DTYPE", "METHOD_AUTO", "METHOD_POLYNOMIAL",
-           "METHOD_ROBUST", "METHOD_ITERATION"] + sorted(_FUNCTIONS)
+           "METHOD_ROBUST", "METHOD_ITERATION", "Scene", "ScenePairs"] + sorted(_FUNCTIONS)

@@ -52,7 +52,7 @@ struct cdist_scene {
     /* The tree over the live objects at its last build: positions 0 .. tree_n - 1. */
     size_t tree_n;
     uint32_t *perm;          /* by position: the id */
-    cdist__box *box;         /* by position: the (possibly fattened) box */
+    cdist__box *box;         /* by position: the object's box (empty when removed) */
     cdist__node *node;
     size_t node_n, node_cap;
     int dirty;               /* objects added or revived since the build: rebuild before a query */
