@@ -128,42 +128,70 @@ cdist_status cdist__scene_make(cdist_query *q, cdist_scene_kind kind, const void
 }
 
 /* ---- bounds ---- */
+/* Plain arithmetic throughout (no fma: without -mfma the C library's fma is a call); every
+ * rounding is covered by the margin CD_SCENE_BOUND_REL of the coordinate scale. */
 
-/* The core's bounding ball (centre m, radius rho) and its coordinate scale. */
-static void core_ball(const cdist__scene_obj *o, vec3 *m, double *rho)
+static inline double dot3(vec3 a, vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+static inline vec3 sub3(vec3 a, vec3 b) { return v3(a.x - b.x, a.y - b.y, a.z - b.z); }
+static inline vec3 axpy3(vec3 a, double s, vec3 b) { return v3(a.x + s * b.x, a.y + s * b.y, a.z + s * b.z); }
+static inline double norm3(vec3 a) { return sqrt(dot3(a, a)); }
+
+/* n / |n|: validated normals are unit within the handle's tolerance; any other length (a
+ * tolerance of INFINITY) takes the library's overflow-safe rule. */
+static inline vec3 unit3(vec3 n)
 {
-    switch (core_type(o->kind)) {
-    case CD_CORE_POINT:
-        *m = o->g.point;
-        *rho = 0.0;
-        return;
-    case CD_CORE_SEGMENT: {
-        vec3 a = o->g.segment.p0, b = o->g.segment.p1;
-        *m = v_scale(0.5, v_add(a, b));
-        *rho = 0.5 * v_dist(a, b);
-        return;
-    }
-    default:
-        *m = o->g.circle.center; /* an arc's circle is its first member */
-        *rho = o->g.circle.radius;
-        return;
-    }
+    double l2 = dot3(n, n);
+    if (l2 > 0.25 && l2 < 4.0) return v_scale(1.0 / sqrt(l2), n);
+    return v_unit_or_zero(n);
 }
 
-/* Largest |coordinate| plus the radii: the scale of the bounds' margin. */
-static double obj_scale(vec3 m, double rho, double r) { return v_maxabs(m) + rho + r; }
+/* An object's core as the bounds see it: an arc is its circle (a superset: lower bounds stay
+ * lower bounds). */
+typedef struct bound {
+    cdist__core_type type; /* POINT, SEGMENT, CIRCLE or DISK */
+    vec3 p0, p1;           /* point (p0), segment */
+    vec3 c, n;             /* circle or disk: centre, unit normal */
+    double R;
+    vec3 m;                /* bounding ball of the core */
+    double rho;
+    double r;              /* the object's ball radius */
+    double scale;          /* largest |coordinate| plus the radii */
+} bound;
 
-static int is_planar(int kind) { return core_type(kind) >= CD_CORE_CIRCLE; }
+static void bound_of(const cdist__scene_obj *o, int with_normal, bound *x)
+{
+    x->type = core_type(o->kind);
+    x->r = o->r;
+    switch (x->type) {
+    case CD_CORE_POINT:
+        x->p0 = x->p1 = x->m = o->g.point;
+        x->rho = 0.0;
+        break;
+    case CD_CORE_SEGMENT:
+        x->p0 = o->g.segment.p0;
+        x->p1 = o->g.segment.p1;
+        x->m = v_scale(0.5, v_add(x->p0, x->p1));
+        x->rho = 0.5 * norm3(sub3(x->p1, x->p0));
+        break;
+    default:
+        if (x->type == CD_CORE_ARC) x->type = CD_CORE_CIRCLE;
+        x->p0 = x->p1 = x->c = x->m = o->g.circle.center; /* an arc's circle is its first member */
+        x->R = x->rho = o->g.circle.radius;
+        if (with_normal) x->n = unit3(o->g.circle.normal);
+        break;
+    }
+    x->scale = v_maxabs(x->m) + x->rho + x->r;
+}
+
+static int is_planar(const bound *x) { return x->type == CD_CORE_CIRCLE || x->type == CD_CORE_DISK; }
 
 void cdist__scene_box(const cdist__scene_obj *o, cdist__box *b)
 {
-    vec3 m;
-    double rho, ext[3];
-    core_ball(o, &m, &rho);
-    double pad = o->r + CD_SCENE_BOUND_REL * obj_scale(m, rho, o->r);
-    if (core_type(o->kind) == CD_CORE_POINT || core_type(o->kind) == CD_CORE_SEGMENT) {
-        vec3 a = o->kind == CDIST_SCENE_POINT || o->kind == CDIST_SCENE_SPHERE ? o->g.point : o->g.segment.p0;
-        vec3 c = o->kind == CDIST_SCENE_POINT || o->kind == CDIST_SCENE_SPHERE ? o->g.point : o->g.segment.p1;
+    bound x;
+    bound_of(o, 1, &x);
+    double pad = x.r + CD_SCENE_BOUND_REL * x.scale;
+    if (!is_planar(&x)) {
+        vec3 a = x.p0, c = x.type == CD_CORE_SEGMENT ? x.p1 : x.p0;
         b->lo[0] = fmin(a.x, c.x) - pad, b->hi[0] = fmax(a.x, c.x) + pad;
         b->lo[1] = fmin(a.y, c.y) - pad, b->hi[1] = fmax(a.y, c.y) + pad;
         b->lo[2] = fmin(a.z, c.z) - pad, b->hi[2] = fmax(a.z, c.z) + pad;
@@ -171,107 +199,66 @@ void cdist__scene_box(const cdist__scene_obj *o, cdist__box *b)
     }
     /* A circle's extent along axis k is R sqrt(1 - n_k^2) = R sqrt(n_i^2 + n_j^2) (no
      * cancellation) for the unit normal n. */
-    vec3 n = v_unit_or_zero(o->g.circle.normal);
-    ext[0] = rho * sqrt(n.y * n.y + n.z * n.z);
-    ext[1] = rho * sqrt(n.x * n.x + n.z * n.z);
-    ext[2] = rho * sqrt(n.x * n.x + n.y * n.y);
-    b->lo[0] = m.x - ext[0] - pad, b->hi[0] = m.x + ext[0] + pad;
-    b->lo[1] = m.y - ext[1] - pad, b->hi[1] = m.y + ext[1] + pad;
-    b->lo[2] = m.z - ext[2] - pad, b->hi[2] = m.z + ext[2] + pad;
+    vec3 n = x.n, m = x.m;
+    double ex = x.R * sqrt(n.y * n.y + n.z * n.z), ey = x.R * sqrt(n.x * n.x + n.z * n.z);
+    double ez = x.R * sqrt(n.x * n.x + n.y * n.y);
+    b->lo[0] = m.x - ex - pad, b->hi[0] = m.x + ex + pad;
+    b->lo[1] = m.y - ey - pad, b->hi[1] = m.y + ey + pad;
+    b->lo[2] = m.z - ez - pad, b->hi[2] = m.z + ez + pad;
 }
 
-/* The interval of heights of b's core over the plane (c, n) of a planar core. */
-static void heights(const cdist__scene_obj *b, vec3 c, vec3 n, double *lo, double *hi)
+/* Lower bound of the distance from the plane of planar core a to core b: the distance of the
+ * interval of b's heights over a's plane from 0. */
+static double slab_bound(const bound *a, const bound *b)
 {
-    switch (core_type(b->kind)) {
-    case CD_CORE_POINT: *lo = *hi = v_dot(n, v_sub(b->g.point, c)); return;
+    double lo, hi;
+    switch (b->type) {
+    case CD_CORE_POINT: lo = hi = dot3(a->n, sub3(b->p0, a->c)); break;
     case CD_CORE_SEGMENT: {
-        double h0 = v_dot(n, v_sub(b->g.segment.p0, c)), h1 = v_dot(n, v_sub(b->g.segment.p1, c));
-        *lo = fmin(h0, h1);
-        *hi = fmax(h0, h1);
-        return;
+        double h0 = dot3(a->n, sub3(b->p0, a->c)), h1 = dot3(a->n, sub3(b->p1, a->c));
+        lo = fmin(h0, h1);
+        hi = fmax(h0, h1);
+        break;
     }
     default: {
         /* A circle of unit normal nb tilted from n leaves its centre's height by at most
          * R |n x nb| (the cross product, not sqrt(1 - (n.nb)^2), which cancels). */
-        double h = v_dot(n, v_sub(b->g.circle.center, c));
-        double e = b->g.circle.radius * v_norm(v_cross(n, v_unit_or_zero(b->g.circle.normal)));
-        *lo = h - e;
-        *hi = h + e;
-        return;
+        double h = dot3(a->n, sub3(b->c, a->c));
+        double e = b->R * norm3(v_cross(a->n, b->n));
+        lo = h - e;
+        hi = h + e;
+        break;
     }
     }
-}
-
-/* Lower bound of the core distance from the plane of planar core a to core b. */
-static double slab_bound(const cdist__scene_obj *a, const cdist__scene_obj *b)
-{
-    double lo, hi;
-    heights(b, a->g.circle.center, v_unit_or_zero(a->g.circle.normal), &lo, &hi);
     return fmax(0.0, fmax(lo, -hi));
 }
 
-/* A core prepared for point distances: the unit normal once per pair. */
-typedef struct prepared {
-    cdist__core_type type;
-    vec3 p0, p1;  /* point (p0), segment */
-    vec3 c, n;    /* circle, disk (an arc: its circle) */
-    double R;
-} prepared;
-
-static prepared prepare(const cdist__scene_obj *o)
-{
-    prepared x;
-    memset(&x, 0, sizeof x);
-    x.type = core_type(o->kind);
-    if (x.type == CD_CORE_POINT) {
-        x.p0 = o->g.point;
-    } else if (x.type == CD_CORE_SEGMENT) {
-        x.p0 = o->g.segment.p0;
-        x.p1 = o->g.segment.p1;
-    } else {
-        x.c = o->g.circle.center;
-        x.n = v_unit_or_zero(o->g.circle.normal);
-        x.R = o->g.circle.radius;
-        if (x.type == CD_CORE_ARC) x.type = CD_CORE_CIRCLE; /* the arc's circle: a lower bound */
-    }
-    return x;
-}
-
-/* Plain arithmetic (no fma: without -mfma the C library's fma is a call). */
-static inline double dot3(vec3 a, vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-static inline vec3 sub3(vec3 a, vec3 b) { return v3(a.x - b.x, a.y - b.y, a.z - b.z); }
-static inline vec3 axpy3(vec3 a, double s, vec3 b) { return v3(a.x + s * b.x, a.y + s * b.y, a.z + s * b.z); }
-
 /* Distance from p to the core (to rounding of a few eps times the coordinates). */
-static double point_distance(const prepared *x, vec3 p)
+static double point_distance(const bound *x, vec3 p)
 {
     switch (x->type) {
-    case CD_CORE_POINT: {
-        vec3 d = sub3(p, x->p0);
-        return sqrt(dot3(d, d));
-    }
+    case CD_CORE_POINT: return norm3(sub3(p, x->p0));
     case CD_CORE_SEGMENT: {
         vec3 d = sub3(x->p1, x->p0), w = sub3(p, x->p0);
         double dd = dot3(d, d), t = dd > 0.0 ? dot3(w, d) / dd : 0.0;
         t = t < 0.0 ? 0.0 : (t > 1.0 ? 1.0 : t);
-        vec3 e = sub3(p, axpy3(x->p0, t, d));
-        return sqrt(dot3(e, e));
+        return norm3(sub3(p, axpy3(x->p0, t, d)));
     }
     default: {
         vec3 w = sub3(p, x->c);
         double h = dot3(w, x->n);
-        vec3 o = axpy3(w, -h, x->n);
-        double e = sqrt(dot3(o, o)) - x->R;
+        double e = norm3(axpy3(w, -h, x->n)) - x->R;
         if (x->type == CD_CORE_DISK && e < 0.0) e = 0.0;
         return sqrt(h * h + e * e);
     }
     }
 }
 
-/* Initial samples and the finest subdivision of the ring screen. */
-#define RING_SAMPLES 8
-#define RING_DEPTH 5
+/* Initial samples and the finest subdivision of the ring screen (bench_scene: 4 and 6 took
+ * the least time, 8 and 5 or 16 and 4 up to 10% more; the finest spacing decides the
+ * candidates). */
+#define RING_SAMPLES 4
+#define RING_DEPTH 6
 #define RING_ANGLES (RING_SAMPLES << RING_DEPTH)
 
 /* cos and sin of the screen's angles 2 pi k / RING_ANGLES, filled once. */
@@ -285,15 +272,20 @@ static void ring_table(void)
     }
 }
 
-/* Ring screen: 1 when every point of the circle (c, u, v, R) is certified farther than thr
- * from core x. The distance to x is R-Lipschitz in the circle's angle, so on an interval of
- * width w with end values f0, f1 it is >= (f0 + f1) / 2 - R w / 2; intervals that do not clear
- * thr are halved down to RING_DEPTH, and a sample within thr ends the screen (the pair is
- * close). Angles are table indices, so every sample is a point of the circle to rounding. */
-static int ring_clears(const prepared *x, vec3 c, vec3 n, double R, double thr)
+/* Ring screen: 1 when every point of the circle of ring is certified farther than thr from
+ * core x. The distance to x is R-Lipschitz in the circle's angle, so on an interval of width w
+ * with end values f0, f1 it is >= (f0 + f1) / 2 - R w / 2; intervals that do not clear thr are
+ * halved down to RING_DEPTH, and a sample within thr ends the screen (the pair is close).
+ * Angles are table indices and u, v an orthonormal basis of the ring's plane (to rounding), so
+ * every sample is a point of the circle to rounding. */
+static int ring_clears(const bound *x, const bound *ring, double thr)
 {
-    vec3 u, v;
-    v_basis(n, &u, &v);
+    vec3 n = ring->n, c = ring->c, e;
+    double R = ring->R;
+    double ax = fabs(n.x), ay = fabs(n.y), az = fabs(n.z);
+    e = ax <= ay && ax <= az ? v3(1, 0, 0) : (ay <= az ? v3(0, 1, 0) : v3(0, 0, 1));
+    vec3 w = axpy3(e, -dot3(e, n), n);
+    vec3 u = v_scale(1.0 / norm3(w), w), v = v_cross(n, u);
     pthread_once(&ring_once, ring_table);
 #define RING_AT(k) point_distance(x, axpy3(axpy3(c, R * ring_cos[(k) % RING_ANGLES], u), R * ring_sin[(k) % RING_ANGLES], v))
     const int step0 = RING_ANGLES / RING_SAMPLES;
@@ -329,27 +321,26 @@ static int ring_clears(const prepared *x, vec3 c, vec3 n, double R, double thr)
     return 1;
 }
 
-int cdist__scene_excluded(const cdist__scene_obj *a, const cdist__scene_obj *b, double lim)
+int cdist__scene_excluded(const cdist__scene_obj *oa, const cdist__scene_obj *ob, double lim)
 {
-    vec3 ma, mb;
-    double ra, rb;
-    core_ball(a, &ma, &ra);
-    core_ball(b, &mb, &rb);
-    double margin = CD_SCENE_BOUND_REL * (obj_scale(ma, ra, a->r) + obj_scale(mb, rb, b->r));
+    bound a, b;
+    bound_of(oa, 0, &a);
+    bound_of(ob, 0, &b);
+    double margin = CD_SCENE_BOUND_REL * (a.scale + b.scale);
     /* Certified lower bounds of the core distance against thr, the core distance the pair
      * must not exceed to be within lim. */
-    double thr = lim + (a->r + b->r) + margin;
-    if (v_dist(ma, mb) - ra - rb > thr) return 1;
-    if (is_planar(a->kind) && slab_bound(a, b) > thr) return 1;
-    if (is_planar(b->kind) && slab_bound(b, a) > thr) return 1;
-    /* The ring screen samples the circle (of a circle or arc core) of smaller radius against
+    double thr = lim + (a.r + b.r) + margin;
+    if (norm3(sub3(a.m, b.m)) - a.rho - b.rho > thr) return 1;
+    if (!(thr < INFINITY)) return 0;
+    if (is_planar(&a)) a.n = unit3(oa->g.circle.normal);
+    if (is_planar(&b)) b.n = unit3(ob->g.circle.normal);
+    if (is_planar(&a) && slab_bound(&a, &b) > thr) return 1;
+    if (is_planar(&b) && slab_bound(&b, &a) > thr) return 1;
+    /* The ring screen samples the circle of smaller radius (of a circle or arc core) against
      * the other core. */
-    int ca = core_type(a->kind) == CD_CORE_CIRCLE || core_type(a->kind) == CD_CORE_ARC;
-    int cb = core_type(b->kind) == CD_CORE_CIRCLE || core_type(b->kind) == CD_CORE_ARC;
-    if (!(thr < INFINITY) || !(ca || cb)) return 0;
-    const cdist__scene_obj *ring = cb && (!ca || rb <= ra) ? b : a, *other = ring == b ? a : b;
-    prepared x = prepare(other);
-    return ring_clears(&x, ring->g.circle.center, v_unit_or_zero(ring->g.circle.normal), ring->g.circle.radius, thr);
+    int ca = a.type == CD_CORE_CIRCLE, cb = b.type == CD_CORE_CIRCLE;
+    if (!(ca || cb)) return 0;
+    return cb && (!ca || b.R <= a.R) ? ring_clears(&a, &b, thr) : ring_clears(&b, &a, thr);
 }
 
 /* ---- tree ---- */
