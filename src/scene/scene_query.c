@@ -174,14 +174,7 @@ typedef struct narrow {
     int stopped;                     /* the callback asked to stop */
     cdist_status fail;               /* first failing pair (in key order) */
     size_t fail_i, fail_j;
-    /* threads */
     cdist_query **h;                 /* handle of thread t */
-    int threads, started;
-    pthread_t *tid;
-    pthread_mutex_t mutex;
-    pthread_cond_t start, done;
-    unsigned long generation;
-    int pending, quit;
     size_t round_lo, round_hi;       /* chunks of the current round */
     atomic_size_t next;
     cdist_scene_pair *buf;           /* CD_SCENE_CHUNK answers per chunk of the round */
@@ -219,30 +212,95 @@ static void drain(narrow *w, cdist_query *h)
     }
 }
 
-typedef struct worker_arg {
-    narrow *w;
-    int t;
-} worker_arg;
-
-static void *worker_main(void *arg)
+static void narrow_round(void *ctx, int t)
 {
-    worker_arg *a = arg;
-    narrow *w = a->w;
+    narrow *w = ctx;
+    drain(w, w->h[t]);
+}
+
+/* ---- threads of one call ----
+ * The handle's thread count T: T - 1 pthreads started for the call, each running fn(ctx, t)
+ * once per pool_run with its thread number t (the caller is t = 0). A thread that cannot be
+ * started leaves fewer threads: the work is shared by whoever runs, with the same answers. */
+
+typedef struct pool {
+    int threads; /* including the caller */
+    pthread_t tid[256];
+    struct pool_arg {
+        struct pool *p;
+        int t;
+    } arg[256];
+    pthread_mutex_t mutex;
+    pthread_cond_t start, done;
+    unsigned long generation;
+    int pending, quit;
+    void (*fn)(void *ctx, int t);
+    void *ctx;
+} pool;
+
+static void *pool_main(void *arg)
+{
+    struct pool_arg *a = arg;
+    pool *p = a->p;
     unsigned long seen = 0;
     for (;;) {
-        pthread_mutex_lock(&w->mutex);
-        while (w->generation == seen && !w->quit) pthread_cond_wait(&w->start, &w->mutex);
-        if (w->quit) {
-            pthread_mutex_unlock(&w->mutex);
+        pthread_mutex_lock(&p->mutex);
+        while (p->generation == seen && !p->quit) pthread_cond_wait(&p->start, &p->mutex);
+        if (p->quit) {
+            pthread_mutex_unlock(&p->mutex);
             return NULL;
         }
-        seen = w->generation;
-        pthread_mutex_unlock(&w->mutex);
-        drain(w, w->h[a->t]);
-        pthread_mutex_lock(&w->mutex);
-        if (--w->pending == 0) pthread_cond_signal(&w->done);
-        pthread_mutex_unlock(&w->mutex);
+        seen = p->generation;
+        pthread_mutex_unlock(&p->mutex);
+        p->fn(p->ctx, a->t);
+        pthread_mutex_lock(&p->mutex);
+        if (--p->pending == 0) pthread_cond_signal(&p->done);
+        pthread_mutex_unlock(&p->mutex);
     }
+}
+
+static void pool_start(pool *p, int threads)
+{
+    p->threads = 1;
+    p->generation = 0;
+    p->pending = 0;
+    p->quit = 0;
+    pthread_mutex_init(&p->mutex, NULL);
+    pthread_cond_init(&p->start, NULL);
+    pthread_cond_init(&p->done, NULL);
+    for (int t = 1; t < threads; t++) {
+        p->arg[t].p = p;
+        p->arg[t].t = t;
+        if (pthread_create(&p->tid[t], NULL, pool_main, &p->arg[t])) break;
+        p->threads++;
+    }
+}
+
+static void pool_run(pool *p, void (*fn)(void *ctx, int t), void *ctx)
+{
+    pthread_mutex_lock(&p->mutex);
+    p->fn = fn;
+    p->ctx = ctx;
+    p->pending = p->threads - 1;
+    p->generation++;
+    pthread_cond_broadcast(&p->start);
+    pthread_mutex_unlock(&p->mutex);
+    fn(ctx, 0);
+    pthread_mutex_lock(&p->mutex);
+    while (p->pending > 0) pthread_cond_wait(&p->done, &p->mutex);
+    pthread_mutex_unlock(&p->mutex);
+}
+
+static void pool_stop(pool *p)
+{
+    pthread_mutex_lock(&p->mutex);
+    p->quit = 1;
+    pthread_cond_broadcast(&p->start);
+    pthread_mutex_unlock(&p->mutex);
+    for (int t = 1; t < p->threads; t++) pthread_join(p->tid[t], NULL);
+    pthread_cond_destroy(&p->done);
+    pthread_cond_destroy(&p->start);
+    pthread_mutex_destroy(&p->mutex);
 }
 
 static void commit(narrow *w, const cdist_scene_pair *p, size_t m)
@@ -284,15 +342,22 @@ static cdist_status worker_handles(cdist_query *q, cdist_scene *s, int threads)
     return CDIST_OK;
 }
 
-/* Answer w->n keys; reports go to the sink in key order. */
-static cdist_status run_narrow(cdist_query *q, cdist_scene *s, narrow *w)
+/* The threads of a call: the handle's count (1 when their handles cannot be made ready) and
+ * their handles. */
+static int call_threads(cdist_query *q, cdist_scene *s, cdist_query **handles)
+{
+    int threads = cdist_query_get_threads(q);
+    if (threads > 1 && worker_handles(q, s, threads)) threads = 1;
+    handles[0] = q;
+    for (int t = 1; t < threads; t++) handles[t] = s->worker[t - 1];
+    return threads;
+}
+
+/* Answer w->n keys with the pool's threads; reports go to the sink in key order. */
+static cdist_status run_narrow(cdist_query *q, cdist_scene *s, narrow *w, pool *p)
 {
     size_t chunks = (w->n + CD_SCENE_CHUNK - 1) / CD_SCENE_CHUNK;
-    int threads = cdist_query_get_threads(q);
-    if ((size_t)threads > chunks) threads = chunks > 0 ? (int)chunks : 1;
-    cdist_status st = CDIST_OK;
-    if (threads > 1 && worker_handles(q, s, threads)) threads = 1;
-    size_t per_round = (size_t)threads * CD_SCENE_CHUNKS_PER_THREAD;
+    size_t per_round = (size_t)p->threads * CD_SCENE_CHUNKS_PER_THREAD;
     size_t need = per_round * CD_SCENE_CHUNK;
     if (s->chunk_buf_cap < need) {
         cdist_scene_pair *b = realloc(s->chunk_buf, need * sizeof *b);
@@ -301,53 +366,19 @@ static cdist_status run_narrow(cdist_query *q, cdist_scene *s, narrow *w)
         s->chunk_buf_cap = need;
     }
     size_t buf_n[256 * CD_SCENE_CHUNKS_PER_THREAD];
-    cdist_query *handles[256];
-    pthread_t tid[256];
-    worker_arg args[256];
-    handles[0] = q;
-    for (int t = 1; t < threads; t++) handles[t] = s->worker[t - 1];
-    w->h = handles;
     w->buf = s->chunk_buf;
     w->buf_n = buf_n;
-    w->threads = threads;
-    w->started = 0;
-    w->generation = 0;
-    w->quit = 0;
-    atomic_init(&w->next, 0);
-    pthread_mutex_init(&w->mutex, NULL);
-    pthread_cond_init(&w->start, NULL);
-    pthread_cond_init(&w->done, NULL);
-    for (int t = 1; t < threads; t++) {
-        args[t].w = w;
-        args[t].t = t;
-        if (pthread_create(&tid[t], NULL, worker_main, &args[t])) break; /* fewer threads: same answers */
-        w->started++;
-    }
     for (size_t r = 0; r < chunks && !w->stopped; r += per_round) {
-        pthread_mutex_lock(&w->mutex);
         w->round_lo = r;
         w->round_hi = r + per_round < chunks ? r + per_round : chunks;
         atomic_store_explicit(&w->next, r, memory_order_relaxed);
-        w->pending = w->started;
-        w->generation++;
-        pthread_cond_broadcast(&w->start);
-        pthread_mutex_unlock(&w->mutex);
-        drain(w, q);
-        pthread_mutex_lock(&w->mutex);
-        while (w->pending > 0) pthread_cond_wait(&w->done, &w->mutex);
-        pthread_mutex_unlock(&w->mutex);
+        if (p->threads > 1 && w->round_hi - w->round_lo > 1) pool_run(p, narrow_round, w);
+        else narrow_round(w, 0);
         for (size_t c = w->round_lo; c < w->round_hi && !w->stopped; c++)
             commit(w, w->buf + (c - w->round_lo) * CD_SCENE_CHUNK, buf_n[c - w->round_lo]);
     }
-    pthread_mutex_lock(&w->mutex);
-    w->quit = 1;
-    pthread_cond_broadcast(&w->start);
-    pthread_mutex_unlock(&w->mutex);
-    for (int t = 1; t <= w->started; t++) pthread_join(tid[t], NULL);
-    pthread_cond_destroy(&w->done);
-    pthread_cond_destroy(&w->start);
-    pthread_mutex_destroy(&w->mutex);
-    return st;
+    w->buf_n = NULL;
+    return CDIST_OK;
 }
 
 /* The status of a finished narrow phase, with the message of its first failing pair. */
@@ -384,27 +415,159 @@ static cdist_status sort_keys(cdist_query *q, uint64_t *key, size_t n)
     return CDIST_OK;
 }
 
+/* ---- the broad phase on several threads: subtree pairs from the top of the traversal as
+ * tasks, each thread with its own key list; the lists are joined and sorted, so the keys are
+ * those of the one-thread traversal in the same order. */
+
+typedef struct btask {
+    uint32_t x, y;
+    int self;
+} btask;
+
+typedef struct broad_par {
+    broad *b; /* one per thread */
+    const btask *task;
+    size_t n_tasks;
+    atomic_size_t next;
+} broad_par;
+
+static void broad_round(void *ctx, int t)
+{
+    broad_par *bp = ctx;
+    broad *b = &bp->b[t];
+    for (;;) {
+        size_t k = atomic_fetch_add_explicit(&bp->next, 1, memory_order_relaxed);
+        if (k >= bp->n_tasks) return;
+        const btask *x = &bp->task[k];
+        if (x->self) self(b, x->x);
+        else cross(b, x->x, x->y);
+    }
+}
+
+/* At least `want` tasks (fewer when the tree is small), by expanding the traversal's first
+ * levels exactly as self() and cross() would. NULL when memory runs out. */
+static btask *make_tasks(const broad *b, size_t want, size_t *n_out)
+{
+    size_t n = 1, cap = 16;
+    btask *cur = malloc(cap * sizeof *cur);
+    if (!cur) return NULL;
+    cur[0] = (btask){0, 0, b->self};
+    for (int level = 0; level < 32 && n < want; level++) {
+        btask *nx = malloc(3 * n * sizeof *nx);
+        if (!nx) {
+            free(cur);
+            return NULL;
+        }
+        size_t m = 0;
+        int grew = 0;
+        for (size_t k = 0; k < n; k++) {
+            btask t = cur[k];
+            const cdist__node *nx_ = &b->sa->node[t.x], *ny_ = &b->sb->node[t.y];
+            if (t.self) {
+                if (nx_->count) {
+                    nx[m++] = t;
+                } else {
+                    nx[m++] = (btask){nx_->first, nx_->first, 1};
+                    nx[m++] = (btask){nx_->first + 1, nx_->first + 1, 1};
+                    nx[m++] = (btask){nx_->first, nx_->first + 1, 0};
+                    grew = 1;
+                }
+                continue;
+            }
+            if (!cdist__box_near(&nx_->box, &ny_->box, b->lim)) continue;
+            if (nx_->count && ny_->count) {
+                nx[m++] = t;
+            } else if (ny_->count || (!nx_->count && box_size(&nx_->box) >= box_size(&ny_->box))) {
+                nx[m++] = (btask){nx_->first, t.y, 0};
+                nx[m++] = (btask){nx_->first + 1, t.y, 0};
+                grew = 1;
+            } else {
+                nx[m++] = (btask){t.x, ny_->first, 0};
+                nx[m++] = (btask){t.x, ny_->first + 1, 0};
+                grew = 1;
+            }
+        }
+        free(cur);
+        cur = nx;
+        n = m;
+        if (!grew) break;
+    }
+    *n_out = n;
+    return cur;
+}
+
+/* The candidate keys of sa x sb into sa->cand (unsorted), on the pool's threads. */
+static cdist_status broad_run(cdist_query *q, broad *b, pool *p, const char *what)
+{
+    cdist_scene *sa = b->sa;
+    if (sa->node_n == 0 || b->sb->node_n == 0) return CDIST_OK;
+    if (p->threads == 1) {
+        if (b->self) self(b, 0);
+        else cross(b, 0, 0);
+        sa->cand = b->key;
+        sa->cand_cap = b->cap;
+        return b->oom ? cdist__fail(q, CDIST_ERR_NO_MEMORY, "scene %s: out of memory for the candidate pairs", what)
+                      : CDIST_OK;
+    }
+    size_t n_tasks = 0;
+    btask *task = make_tasks(b, (size_t)p->threads * 32, &n_tasks);
+    broad per[256];
+    for (int t = 0; t < p->threads; t++) {
+        per[t] = *b;
+        per[t].key = NULL;
+        per[t].n = per[t].cap = 0;
+    }
+    per[0].key = b->key; /* the scene's kept list */
+    per[0].cap = b->cap;
+    broad_par bp = {per, task, n_tasks, 0};
+    atomic_init(&bp.next, 0);
+    if (task) pool_run(p, broad_round, &bp);
+    size_t total = 0;
+    int oom = !task;
+    for (int t = 0; t < p->threads; t++) total += per[t].n, oom |= per[t].oom;
+    uint64_t *key = per[0].key;
+    size_t cap = per[0].cap;
+    if (!oom && total > cap) {
+        uint64_t *k = realloc(key, total * sizeof *k);
+        if (k) key = k, cap = total;
+        else oom = 1;
+    }
+    size_t n = per[0].n;
+    for (int t = 1; t < p->threads; t++) {
+        if (!oom) memcpy(key + n, per[t].key, per[t].n * sizeof *key);
+        n += per[t].n;
+        free(per[t].key);
+        b->box_pairs += per[t].box_pairs;
+    }
+    b->box_pairs += per[0].box_pairs;
+    b->n = n;
+    sa->cand = key;
+    sa->cand_cap = cap;
+    free(task);
+    return oom ? cdist__fail(q, CDIST_ERR_NO_MEMORY, "scene %s: out of memory for the candidate pairs", what) : CDIST_OK;
+}
+
 /* Broad and narrow phase of pairs within delta of sa (x) sb (self when sa == sb). */
 static cdist_status pairs_run(cdist_query *q, cdist_scene *sa, cdist_scene *sb, double delta, narrow *w,
                               const char *what)
 {
     cdist_status st;
     if ((st = cdist__scene_prepare(q, sa)) || (sb != sa && (st = cdist__scene_prepare(q, sb)))) return st;
+    cdist_query *handles[256];
+    pool p;
+    pool_start(&p, call_threads(q, sa, handles));
     broad b = {sa, sb, sa == sb, fmax(delta, 0.0), delta, 0, sa->cand, 0, sa->cand_cap, 0};
-    if (sa->node_n > 0 && sb->node_n > 0) {
-        if (sa == sb) self(&b, 0);
-        else cross(&b, 0, 0);
+    if (!(st = broad_run(q, &b, &p, what)) && !(st = sort_keys(q, sa->cand, b.n))) {
+        w->sa = sa;
+        w->sb = sb;
+        w->key = sa->cand;
+        w->n = b.n;
+        w->lim = delta;
+        w->h = handles;
+        st = run_narrow(q, sa, w, &p);
     }
-    sa->cand = b.key;
-    sa->cand_cap = b.cap;
-    if (b.oom) return cdist__fail(q, CDIST_ERR_NO_MEMORY, "scene %s: out of memory for the candidate pairs", what);
-    if ((st = sort_keys(q, sa->cand, b.n))) return st;
-    w->sa = sa;
-    w->sb = sb;
-    w->key = sa->cand;
-    w->n = b.n;
-    w->lim = delta;
-    if ((st = run_narrow(q, sa, w))) return st;
+    pool_stop(&p);
+    if (st) return st;
     sa->stats.box_pairs = b.box_pairs;
     sa->stats.candidates = b.n;
     sa->stats.reported = w->count;
@@ -755,7 +918,13 @@ cdist_status cdist_scene_within(cdist_query *q, cdist_scene *s, cdist_scene_kind
                 w.lim = delta;
                 w.out = out;
                 w.capacity = out ? capacity : 0;
-                if (!(st = run_narrow(q, s, &w))) {
+                cdist_query *handles[256];
+                pool p;
+                pool_start(&p, call_threads(q, s, handles));
+                w.h = handles;
+                st = run_narrow(q, s, &w, &p);
+                pool_stop(&p);
+                if (!st) {
                     s->stats.box_pairs = b.box_pairs;
                     s->stats.candidates = b.n;
                     s->stats.reported = w.count;
