@@ -17,6 +17,7 @@
 #include <time.h>
 
 #include "circledist.h"
+#include "test_rand.h"
 
 #define RADIUS 1.0
 #define WIRE 0.11
@@ -25,14 +26,6 @@
 #define TILT (50.0 * M_PI / 180.0)
 #define JITTER 0.03
 
-static uint64_t rng = 0x9E3779B97F4A7C15ull;
-static double rnd01(void)
-{
-    rng ^= rng << 13;
-    rng ^= rng >> 7;
-    rng ^= rng << 17;
-    return (double)(rng >> 11) * 0x1p-53;
-}
 static double gauss(double s)
 {
     double u = rnd01(), v = rnd01();

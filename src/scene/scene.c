@@ -2,6 +2,7 @@
 /* Scenes: object storage and validation, certified bounds, the tree (build, refit) and the
  * editing calls. The queries are in scene_query.c. */
 #include <math.h>
+#include <stddef.h>
 #include <pthread.h>
 #include <stdlib.h>
 #include <string.h>
@@ -67,60 +68,36 @@ static cdist_status check_arc(cdist_query *q, const cdist_arc *a)
     return cdist_arc_circle(q, a, &unit, &r);
 }
 
+/* A swept kind is its plain core kind (sphere: point, capsule: segment, torus: circle, rounded
+ * disk: disk) followed by one double, the ball radius, in its struct. */
+#define SWEPT_FIRST CDIST_SCENE_SPHERE
+_Static_assert(offsetof(cdist_sphere, radius) == sizeof(cdist_vec3), "sphere: point, radius");
+_Static_assert(offsetof(cdist_capsule, radius) == sizeof(cdist_segment), "capsule: segment, radius");
+_Static_assert(offsetof(cdist_torus, tube_radius) == sizeof(cdist_circle), "torus: circle, radius");
+_Static_assert(offsetof(cdist_rounded_disk, radius) == sizeof(cdist_circle), "rounded disk: disk, radius");
+
 cdist_status cdist__scene_make(cdist_query *q, cdist_scene_kind kind, const void *src, cdist__scene_obj *o)
 {
+    static const char *const what[] = {"point", "segment", "circle", "disk", "arc"};
     cdist__circle tmp;
     cdist_status st = CDIST_OK;
     memset(&o->g, 0, sizeof o->g);
     o->r = 0.0;
     o->kind = (uint8_t)kind;
-    switch (kind) {
-    case CDIST_SCENE_POINT:
-        o->g.point = *(const cdist_vec3 *)src;
-        st = cdist__check_point(q, &o->g.point, "point");
-        break;
-    case CDIST_SCENE_SEGMENT:
-        o->g.segment = *(const cdist_segment *)src;
-        st = check_segment(q, &o->g.segment);
-        break;
-    case CDIST_SCENE_CIRCLE:
-    case CDIST_SCENE_DISK:
-        o->g.circle = *(const cdist_circle *)src;
-        st = cdist__check_circle_nobasis(q, &o->g.circle, kind == CDIST_SCENE_DISK ? "disk" : "circle", &tmp);
-        break;
-    case CDIST_SCENE_ARC:
-        o->g.arc = *(const cdist_arc *)src;
-        st = check_arc(q, &o->g.arc);
-        break;
-    case CDIST_SCENE_SPHERE: {
-        const cdist_sphere *x = src;
-        o->g.point = x->center;
-        o->r = x->radius;
-        if (!(st = cdist__check_point(q, &o->g.point, "sphere centre"))) st = check_radius(q, o->r);
-        break;
-    }
-    case CDIST_SCENE_CAPSULE: {
-        const cdist_capsule *x = src;
-        o->g.segment = x->segment;
-        o->r = x->radius;
-        if (!(st = check_segment(q, &o->g.segment))) st = check_radius(q, o->r);
-        break;
-    }
-    case CDIST_SCENE_TORUS: {
-        const cdist_torus *x = src;
-        o->g.circle = x->circle;
-        o->r = x->tube_radius;
-        if (!(st = cdist__check_circle_nobasis(q, &o->g.circle, "torus circle", &tmp))) st = check_radius(q, o->r);
-        break;
-    }
-    case CDIST_SCENE_ROUNDED_DISK: {
-        const cdist_rounded_disk *x = src;
-        o->g.circle = x->disk;
-        o->r = x->radius;
-        if (!(st = cdist__check_circle_nobasis(q, &o->g.circle, "rounded disk", &tmp))) st = check_radius(q, o->r);
-        break;
-    }
-    default: st = cdist__fail(q, CDIST_ERR_BAD_KIND, "%d is not a cdist_scene_kind", (int)kind);
+    if ((unsigned)kind >= KIND_COUNT) {
+        st = cdist__fail(q, CDIST_ERR_BAD_KIND, "%d is not a cdist_scene_kind", (int)kind);
+    } else {
+        int core = kind >= SWEPT_FIRST ? kind - SWEPT_FIRST : kind;
+        memcpy(&o->g, src, kind_size[core]);
+        if (kind >= SWEPT_FIRST) memcpy(&o->r, (const char *)src + kind_size[core], sizeof o->r);
+        switch (core) {
+        case CDIST_SCENE_POINT: st = cdist__check_point(q, &o->g.point, what[core]); break;
+        case CDIST_SCENE_SEGMENT: st = check_segment(q, &o->g.segment); break;
+        case CDIST_SCENE_CIRCLE:
+        case CDIST_SCENE_DISK: st = cdist__check_circle_nobasis(q, &o->g.circle, what[core], &tmp); break;
+        default: st = check_arc(q, &o->g.arc); break;
+        }
+        if (!st && kind >= SWEPT_FIRST) st = check_radius(q, o->r);
     }
     o->state = st ? CD_SCENE_INVALID : CD_SCENE_LIVE;
     o->status = (uint8_t)st;

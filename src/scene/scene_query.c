@@ -107,21 +107,28 @@ static void push(broad *b, uint64_t key)
     b->key[b->n++] = key;
 }
 
+/* The objects at tree positions pa of sa and pb of sb, ordered i < j within one scene (self):
+ * 0 when either is not live or the pair is skipped. */
+static int pair_at(const cdist_scene *sa, const cdist_scene *sb, int self, uint32_t pa, uint32_t pb, size_t *pi,
+                   size_t *pj, const cdist__scene_obj **poa, const cdist__scene_obj **pob)
+{
+    size_t i = sa->perm[pa], j = sb->perm[pb];
+    if (self && i > j) {
+        size_t t = i;
+        i = j, j = t;
+    }
+    const cdist__scene_obj *oa = &sa->obj[i], *ob = &sb->obj[j];
+    if (oa->state != CD_SCENE_LIVE || ob->state != CD_SCENE_LIVE || (self && skipped(sa, i, j))) return 0;
+    *pi = i, *pj = j, *poa = oa, *pob = ob;
+    return 1;
+}
+
 static void test_pos(broad *b, uint32_t pa, uint32_t pb)
 {
     if (!cdist__box_near(&b->sa->box[pa], &b->sb->box[pb], b->lim)) return;
-    size_t i = b->sa->perm[pa], j = b->sb->perm[pb];
-    const cdist__scene_obj *oa = &b->sa->obj[i], *ob = &b->sb->obj[j];
-    if (oa->state != CD_SCENE_LIVE || ob->state != CD_SCENE_LIVE) return;
-    if (b->self) {
-        if (i > j) {
-            size_t t = i;
-            i = j, j = t;
-            const cdist__scene_obj *o = oa;
-            oa = ob, ob = o;
-        }
-        if (skipped(b->sa, i, j)) return;
-    }
+    size_t i, j;
+    const cdist__scene_obj *oa, *ob;
+    if (!pair_at(b->sa, b->sb, b->self, pa, pb, &i, &j, &oa, &ob)) return;
     b->box_pairs++;
     if (cdist__scene_excluded(oa, ob, b->delta)) return;
     push(b, (uint64_t)i << 32 | j);
@@ -645,18 +652,9 @@ static double box_cut(const closest *c) { return c->best > 0.0 ? c->best : 0.0; 
 static void best_pos(closest *c, uint32_t pa, uint32_t pb)
 {
     if (cdist__box_gap(&c->sa->box[pa], &c->sb->box[pb]) > box_cut(c)) return;
-    size_t i = c->sa->perm[pa], j = c->sb->perm[pb];
-    const cdist__scene_obj *oa = &c->sa->obj[i], *ob = &c->sb->obj[j];
-    if (oa->state != CD_SCENE_LIVE || ob->state != CD_SCENE_LIVE) return;
-    if (c->self) {
-        if (i > j) {
-            size_t t = i;
-            i = j, j = t;
-            const cdist__scene_obj *o = oa;
-            oa = ob, ob = o;
-        }
-        if (skipped(c->sa, i, j)) return;
-    }
+    size_t i, j;
+    const cdist__scene_obj *oa, *ob;
+    if (!pair_at(c->sa, c->sb, c->self, pa, pb, &i, &j, &oa, &ob)) return;
     c->box_pairs++;
     if (cdist__scene_excluded(oa, ob, c->best)) return;
     c->candidates++;
