@@ -541,7 +541,7 @@ static cdist_status broad_run(cdist_query *q, broad *b, pool *p, const char *wha
     }
     size_t n = per[0].n;
     for (int t = 1; t < p->threads; t++) {
-        if (!oom) memcpy(key + n, per[t].key, per[t].n * sizeof *key);
+        if (!oom && per[t].n > 0) memcpy(key + n, per[t].key, per[t].n * sizeof *key);
         n += per[t].n;
         free(per[t].key);
         b->box_pairs += per[t].box_pairs;
