@@ -112,8 +112,9 @@ int main(int argc, char **argv)
     printf("chain mail: %zu tori, clearance <= %.2f R, %d thread(s), min of %d, %s seconds\n", rings, delta, threads,
            reps, use_wall ? "wall" : "CPU");
     printf("  build %.3f s + query %.3f s = %.3f s\n", best_build, best_query, best_build + best_query);
-    printf("  pairs %.0f, box pairs %zu, exact queries %zu (%.3f per pair), nodes %zu\n", acc[1], st.box_pairs,
-           st.candidates, (double)st.candidates / fmax(1.0, acc[1]), st.nodes);
+    printf("  pairs %.0f, box pairs %zu, past the bounds %zu (%.3f per pair), exact queries %zu (%.3f per pair), "
+           "nodes %zu\n", acc[1], st.box_pairs, st.screened, (double)st.screened / fmax(1.0, acc[1]), st.candidates,
+           (double)st.candidates / fmax(1.0, acc[1]), st.nodes);
     printf("  scene memory %.1f bytes per object (output not included)\n", (double)st.bytes / (double)rings);
     free(t);
 

@@ -757,11 +757,12 @@ typedef struct cdist_scene_stats {
     size_t nodes;       /**< nodes of the tree */
     size_t bytes;       /**< memory held by the scene (objects, bounds, tree, workspaces) */
     size_t box_pairs;   /**< last query: object pairs whose boxes passed */
+    size_t screened;    /**< last query: pairs passed by the bounds, before the distance screen */
     size_t candidates;  /**< last query: pairs answered by the exact query */
     size_t reported;    /**< last query: pairs reported */
     size_t rebuilds;    /**< tree builds since the scene was created */
     size_t refits;      /**< refits (pose updates answered without a rebuild) */
-    size_t reserved[7]; /**< reserved for future counters; 0 */
+    size_t reserved[6]; /**< reserved for future counters; 0 */
 } cdist_scene_stats;
 
 /** Receives answered pairs in order (sorted by i, then j), n at a time; return 0 to go on,

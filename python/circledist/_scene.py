@@ -20,8 +20,8 @@ _d = _lib._decl
 SCENE_PAIR_DTYPE = np.dtype([("i", np.uint64), ("j", np.uint64), ("distance", np.float64),
                              ("status", np.int32), ("num_pairs", np.int32), ("flags", np.int32),
                              ("reserved", np.int32), ("point", np.float64, (2, 2, 3))], align=True)
-SCENE_STATS_FIELDS = ("objects", "live", "nodes", "bytes", "box_pairs", "candidates", "reported",
-                      "rebuilds", "refits")
+SCENE_STATS_FIELDS = ("objects", "live", "nodes", "bytes", "box_pairs", "screened", "candidates",
+                      "reported", "rebuilds", "refits")
 
 _pair_size = _d("cdist_scene_pair_size", _SZ, required=False)
 _new = _d("cdist_scene_new", _P, required=False)

@@ -64,6 +64,8 @@ struct cdist_scene {
     size_t cand_n, cand_cap;
     cdist_query **worker;    /* handles of the extra threads */
     int worker_n;
+    cdist_query **screen;    /* one per thread: the batch distance screen (1 thread each) */
+    int screen_n;
     cdist_scene_pair *chunk_buf;
     size_t chunk_buf_cap;
     cdist_scene_stats stats;
@@ -77,7 +79,12 @@ cdist__core_obj cdist__scene_core(const cdist__scene_obj *o);
 void cdist__scene_box(const cdist__scene_obj *o, cdist__box *b);
 /* 1 when the signed distance of a and b is certified > lim (balls, circle-plane slabs and the
  * ring screen, each lowered by the bound margin); 0 when the pair must be answered. */
-int cdist__scene_excluded(const cdist__scene_obj *a, const cdist__scene_obj *b, double lim);
+int cdist__scene_excluded(const cdist__scene_obj *a, const cdist__scene_obj *b, double lim, int ring);
+/* ring 0 leaves the ring screen out for two circle cores (cdist__scene_circle_pair: circles and
+ * tori), which the narrow phase screens with the batch distance kernel instead. */
+int cdist__scene_circle_pair(const cdist__scene_obj *a, const cdist__scene_obj *b);
+/* The bound margin of a pair: CD_SCENE_BOUND_REL times the two objects' coordinate scales. */
+double cdist__scene_margin(const cdist__scene_obj *a, const cdist__scene_obj *b);
 /* Validate one object of a kind (q's tolerance) into o; returns the status (o->state set). */
 cdist_status cdist__scene_make(cdist_query *q, cdist_scene_kind kind, const void *src, cdist__scene_obj *o);
 /* Bring the tree up to date (rebuild when dirty or degraded, refit when boxes grew). */

@@ -298,7 +298,20 @@ static int ring_clears(const bound *x, const bound *ring, double thr)
     return 1;
 }
 
-int cdist__scene_excluded(const cdist__scene_obj *oa, const cdist__scene_obj *ob, double lim)
+double cdist__scene_margin(const cdist__scene_obj *oa, const cdist__scene_obj *ob)
+{
+    bound a, b;
+    bound_of(oa, 0, &a);
+    bound_of(ob, 0, &b);
+    return CD_SCENE_BOUND_REL * (a.scale + b.scale);
+}
+
+int cdist__scene_circle_pair(const cdist__scene_obj *a, const cdist__scene_obj *b)
+{
+    return core_type(a->kind) == CD_CORE_CIRCLE && core_type(b->kind) == CD_CORE_CIRCLE;
+}
+
+int cdist__scene_excluded(const cdist__scene_obj *oa, const cdist__scene_obj *ob, double lim, int ring)
 {
     bound a, b;
     bound_of(oa, 0, &a);
@@ -316,7 +329,7 @@ int cdist__scene_excluded(const cdist__scene_obj *oa, const cdist__scene_obj *ob
     /* The ring screen samples the circle of smaller radius (of a circle or arc core) against
      * the other core. */
     int ca = a.type == CD_CORE_CIRCLE, cb = b.type == CD_CORE_CIRCLE;
-    if (!(ca || cb)) return 0;
+    if (!(ca || cb) || (!ring && cdist__scene_circle_pair(oa, ob))) return 0;
     return cb && (!ca || b.R <= a.R) ? ring_clears(&a, &b, thr) : ring_clears(&b, &a, thr);
 }
 

@@ -130,7 +130,7 @@ static void test_pos(broad *b, uint32_t pa, uint32_t pb)
     const cdist__scene_obj *oa, *ob;
     if (!pair_at(b->sa, b->sb, b->self, pa, pb, &i, &j, &oa, &ob)) return;
     b->box_pairs++;
-    if (cdist__scene_excluded(oa, ob, b->delta)) return;
+    if (cdist__scene_excluded(oa, ob, b->delta, 0)) return;
     push(b, (uint64_t)i << 32 | j);
 }
 
@@ -182,47 +182,81 @@ typedef struct narrow {
     cdist_status fail;               /* first failing pair (in key order) */
     size_t fail_i, fail_j;
     cdist_query **h;                 /* handle of thread t */
+    cdist_query **hs;                /* its screening handle (NULL: no screen) */
     size_t round_lo, round_hi;       /* chunks of the current round */
     atomic_size_t next;
     cdist_scene_pair *buf;           /* CD_SCENE_CHUNK answers per chunk of the round */
-    size_t *buf_n;
+    size_t *buf_n;                   /* answers kept per chunk */
+    size_t *buf_full;                /* full queries per chunk */
+    size_t full;                     /* full queries in all */
 } narrow;
 
-static void run_chunk(narrow *w, cdist_query *h, size_t c)
+/* The objects of key k: i, j (SIZE_MAX for the query object) and the second object. */
+static const cdist__scene_obj *key_pair(const narrow *w, size_t k, size_t *i, size_t *j)
 {
-    size_t lo = c * CD_SCENE_CHUNK, hi = lo + CD_SCENE_CHUNK < w->n ? lo + CD_SCENE_CHUNK : w->n;
-    size_t slot = c - w->round_lo, m = 0;
-    cdist_scene_pair *out = w->buf + slot * CD_SCENE_CHUNK;
-    for (size_t k = lo; k < hi; k++) {
-        size_t i, j;
-        const cdist__scene_obj *b;
-        if (w->qo) {
-            i = (size_t)w->key[k];
-            j = SIZE_MAX;
-            b = w->qo;
-        } else {
-            i = (size_t)(w->key[k] >> 32);
-            j = (size_t)(w->key[k] & 0xffffffffu);
-            b = &w->sb->obj[j];
-        }
-        m += answer(h, &w->sa->obj[i], b, i, j, w->lim, &out[m]);
+    if (w->qo) {
+        *i = (size_t)w->key[k];
+        *j = SIZE_MAX;
+        return w->qo;
     }
-    w->buf_n[slot] = m;
+    *i = (size_t)(w->key[k] >> 32);
+    *j = (size_t)(w->key[k] & 0xffffffffu);
+    return &w->sb->obj[*j];
 }
 
-static void drain(narrow *w, cdist_query *h)
+/* One chunk of keys. Pairs of two circle cores are screened first by the batch distance kernel
+ * (hs, one thread): its distance is within 2 ulps of the scale of the full query's, far inside
+ * the bound margin, so a pair it puts above lim + margin is above lim; the others get the full
+ * query. */
+static void run_chunk(narrow *w, cdist_query *h, cdist_query *hs, size_t c)
+{
+    size_t lo = c * CD_SCENE_CHUNK, hi = lo + CD_SCENE_CHUNK < w->n ? lo + CD_SCENE_CHUNK : w->n;
+    size_t slot = c - w->round_lo, m = 0, nc = 0, full = 0;
+    cdist_scene_pair *out = w->buf + slot * CD_SCENE_CHUNK;
+    cdist_circle ca[CD_SCENE_CHUNK], cb[CD_SCENE_CHUNK];
+    double dist[CD_SCENE_CHUNK];
+    unsigned char screened[CD_SCENE_CHUNK];
+    for (size_t k = lo; k < hi; k++) {
+        size_t i, j;
+        const cdist__scene_obj *b = key_pair(w, k, &i, &j), *a = &w->sa->obj[i];
+        screened[k - lo] = hs && cdist__scene_circle_pair(a, b);
+        if (screened[k - lo]) {
+            ca[nc] = a->g.circle;
+            cb[nc] = b->g.circle;
+            nc++;
+        }
+    }
+    if (nc > 0 && cdist_batch_distance(hs, CDIST_KIND_CIRCLE_CIRCLE, nc, ca, sizeof ca[0], cb, sizeof cb[0], dist, NULL) ==
+                      CDIST_ERR_HANDLE_BUSY)
+        for (size_t t = 0; t < nc; t++) dist[t] = NAN;
+    nc = 0;
+    for (size_t k = lo; k < hi; k++) {
+        size_t i, j;
+        const cdist__scene_obj *b = key_pair(w, k, &i, &j), *a = &w->sa->obj[i];
+        if (screened[k - lo]) {
+            double d = dist[nc++];
+            if (d - (a->r + b->r) - cdist__scene_margin(a, b) > w->lim) continue;
+        }
+        m += answer(h, a, b, i, j, w->lim, &out[m]);
+        full++;
+    }
+    w->buf_n[slot] = m;
+    w->buf_full[slot] = full;
+}
+
+static void drain(narrow *w, cdist_query *h, cdist_query *hs)
 {
     for (;;) {
         size_t c = atomic_fetch_add_explicit(&w->next, 1, memory_order_relaxed);
         if (c >= w->round_hi) return;
-        run_chunk(w, h, c);
+        run_chunk(w, h, hs, c);
     }
 }
 
 static void narrow_round(void *ctx, int t)
 {
     narrow *w = ctx;
-    drain(w, w->h[t]);
+    drain(w, w->h[t], w->hs ? w->hs[t] : NULL);
 }
 
 /* ---- threads of one call ----
@@ -324,21 +358,21 @@ static void commit(narrow *w, const cdist_scene_pair *p, size_t m)
     w->count += m;
 }
 
-/* Worker handles with the options of q (created once per scene, kept). */
-static cdist_status worker_handles(cdist_query *q, cdist_scene *s, int threads)
+/* Handles with the options of q, created once per scene and kept: *list grows to n. */
+static cdist_status sync_handles(cdist_query *q, cdist_query ***list, int *have, int n)
 {
-    if (s->worker_n < threads - 1) {
-        cdist_query **h = realloc(s->worker, (size_t)(threads - 1) * sizeof *h);
-        if (!h) return cdist__fail(q, CDIST_ERR_NO_MEMORY, "scene: out of memory for %d thread handles", threads);
-        s->worker = h;
-        while (s->worker_n < threads - 1) {
-            if (!(h[s->worker_n] = cdist_query_new()))
-                return cdist__fail(q, CDIST_ERR_NO_MEMORY, "scene: out of memory for %d thread handles", threads);
-            s->worker_n++;
+    if (*have < n) {
+        cdist_query **h = realloc(*list, (size_t)n * sizeof *h);
+        if (!h) return cdist__fail(q, CDIST_ERR_NO_MEMORY, "scene: out of memory for %d thread handles", n);
+        *list = h;
+        while (*have < n) {
+            if (!(h[*have] = cdist_query_new()))
+                return cdist__fail(q, CDIST_ERR_NO_MEMORY, "scene: out of memory for %d thread handles", n);
+            (*have)++;
         }
     }
-    for (int t = 0; t < threads - 1; t++) {
-        cdist_query *w = s->worker[t];
+    for (int t = 0; t < n; t++) {
+        cdist_query *w = (*list)[t];
         cdist_status st;
         if ((st = cdist_query_set_method(w, cdist_query_get_method(q))) ||
             (st = cdist_query_set_unit_tolerance(w, cdist_query_get_unit_tolerance(q))) ||
@@ -349,14 +383,15 @@ static cdist_status worker_handles(cdist_query *q, cdist_scene *s, int threads)
     return CDIST_OK;
 }
 
-/* The threads of a call: the handle's count (1 when their handles cannot be made ready) and
- * their handles. */
-static int call_threads(cdist_query *q, cdist_scene *s, cdist_query **handles)
+/* The threads of a call: the handle's count (1 when their handles cannot be made ready), their
+ * handles, and one screening handle per thread (*screen NULL when those cannot be made). */
+static int call_threads(cdist_query *q, cdist_scene *s, cdist_query **handles, cdist_query ***screen)
 {
     int threads = cdist_query_get_threads(q);
-    if (threads > 1 && worker_handles(q, s, threads)) threads = 1;
+    if (threads > 1 && sync_handles(q, &s->worker, &s->worker_n, threads - 1)) threads = 1;
     handles[0] = q;
     for (int t = 1; t < threads; t++) handles[t] = s->worker[t - 1];
+    *screen = sync_handles(q, &s->screen, &s->screen_n, threads) ? NULL : s->screen;
     return threads;
 }
 
@@ -372,19 +407,22 @@ static cdist_status run_narrow(cdist_query *q, cdist_scene *s, narrow *w, pool *
         s->chunk_buf = b;
         s->chunk_buf_cap = need;
     }
-    size_t buf_n[256 * CD_SCENE_CHUNKS_PER_THREAD];
+    size_t buf_n[256 * CD_SCENE_CHUNKS_PER_THREAD], buf_full[256 * CD_SCENE_CHUNKS_PER_THREAD];
     w->buf = s->chunk_buf;
     w->buf_n = buf_n;
+    w->buf_full = buf_full;
     for (size_t r = 0; r < chunks && !w->stopped; r += per_round) {
         w->round_lo = r;
         w->round_hi = r + per_round < chunks ? r + per_round : chunks;
         atomic_store_explicit(&w->next, r, memory_order_relaxed);
         if (p->threads > 1 && w->round_hi - w->round_lo > 1) pool_run(p, narrow_round, w);
         else narrow_round(w, 0);
-        for (size_t c = w->round_lo; c < w->round_hi && !w->stopped; c++)
+        for (size_t c = w->round_lo; c < w->round_hi && !w->stopped; c++) {
             commit(w, w->buf + (c - w->round_lo) * CD_SCENE_CHUNK, buf_n[c - w->round_lo]);
+            w->full += buf_full[c - w->round_lo];
+        }
     }
-    w->buf_n = NULL;
+    w->buf_n = w->buf_full = NULL;
     return CDIST_OK;
 }
 
@@ -560,9 +598,9 @@ static cdist_status pairs_run(cdist_query *q, cdist_scene *sa, cdist_scene *sb, 
 {
     cdist_status st;
     if ((st = cdist__scene_prepare(q, sa)) || (sb != sa && (st = cdist__scene_prepare(q, sb)))) return st;
-    cdist_query *handles[256];
+    cdist_query *handles[256], **screen;
     pool p;
-    pool_start(&p, call_threads(q, sa, handles));
+    pool_start(&p, call_threads(q, sa, handles, &screen));
     broad b = {sa, sb, sa == sb, fmax(delta, 0.0), delta, 0, sa->cand, 0, sa->cand_cap, 0};
     if (!(st = broad_run(q, &b, &p, what)) && !(st = sort_keys(q, sa->cand, b.n))) {
         w->sa = sa;
@@ -571,12 +609,14 @@ static cdist_status pairs_run(cdist_query *q, cdist_scene *sa, cdist_scene *sb, 
         w->n = b.n;
         w->lim = delta;
         w->h = handles;
+        w->hs = screen;
         st = run_narrow(q, sa, w, &p);
     }
     pool_stop(&p);
     if (st) return st;
     sa->stats.box_pairs = b.box_pairs;
-    sa->stats.candidates = b.n;
+    sa->stats.screened = b.n;
+    sa->stats.candidates = w->full;
     sa->stats.reported = w->count;
     return narrow_status(q, w, what);
 }
@@ -656,7 +696,7 @@ static void best_pos(closest *c, uint32_t pa, uint32_t pb)
     const cdist__scene_obj *oa, *ob;
     if (!pair_at(c->sa, c->sb, c->self, pa, pb, &i, &j, &oa, &ob)) return;
     c->box_pairs++;
-    if (cdist__scene_excluded(oa, ob, c->best)) return;
+    if (cdist__scene_excluded(oa, ob, c->best, 1)) return;
     c->candidates++;
     cdist_scene_pair p;
     answer(c->h, oa, ob, i, j, INFINITY, &p);
@@ -740,6 +780,7 @@ static cdist_status closest_entry(cdist_query *q, cdist_scene *sa, cdist_scene *
             else best_cross(&c, 0, 0);
         }
         sa->stats.box_pairs = c.box_pairs;
+        sa->stats.screened = c.candidates;
         sa->stats.candidates = c.candidates;
         sa->stats.reported = c.have;
         cdist__begin(q, NULL);
@@ -793,7 +834,7 @@ static void near_obj(near_q *c, uint32_t p)
     if (cdist__box_gap(&c->s->box[p], &c->qbox) > (cut > 0.0 ? cut : 0.0)) return;
     size_t i = c->s->perm[p];
     const cdist__scene_obj *o = &c->s->obj[i];
-    if (o->state != CD_SCENE_LIVE || cdist__scene_excluded(o, c->qo, cut)) return;
+    if (o->state != CD_SCENE_LIVE || cdist__scene_excluded(o, c->qo, cut, 1)) return;
     cdist_scene_pair r;
     answer(c->h, o, c->qo, i, SIZE_MAX, INFINITY, &r);
     if (r.status != CDIST_OK) {
@@ -839,7 +880,7 @@ static void within_node(near_q *c, uint32_t x)
             const cdist__scene_obj *o = &c->s->obj[i];
             if (o->state != CD_SCENE_LIVE) continue;
             c->b->box_pairs++;
-            if (cdist__scene_excluded(o, c->qo, c->b->delta)) continue;
+            if (cdist__scene_excluded(o, c->qo, c->b->delta, 0)) continue;
             push(c->b, i);
         }
         return;
@@ -916,15 +957,17 @@ cdist_status cdist_scene_within(cdist_query *q, cdist_scene *s, cdist_scene_kind
                 w.lim = delta;
                 w.out = out;
                 w.capacity = out ? capacity : 0;
-                cdist_query *handles[256];
+                cdist_query *handles[256], **screen;
                 pool p;
-                pool_start(&p, call_threads(q, s, handles));
+                pool_start(&p, call_threads(q, s, handles, &screen));
                 w.h = handles;
+                w.hs = screen;
                 st = run_narrow(q, s, &w, &p);
                 pool_stop(&p);
                 if (!st) {
                     s->stats.box_pairs = b.box_pairs;
-                    s->stats.candidates = b.n;
+                    s->stats.screened = b.n;
+                    s->stats.candidates = w.full;
                     s->stats.reported = w.count;
                     if (count) *count = w.count;
                     st = narrow_status(q, &w, "within");
