@@ -49,6 +49,7 @@ if _pair_size is not None and _pair_size() != SCENE_PAIR_DTYPE.itemsize:
 KINDS = {Point: 0, Segment: 1, Circle: 2, Disk: 3, Arc: 4, Sphere: 5, Capsule: 6, Torus: 7,
          RoundedDisk: 8}
 _BAD_KIND = 16  # CDIST_ERR_BAD_KIND: a pair without an exact query (point or sphere vs arc)
+_CALLBACK_FAILED = 9  # CDIST_ERR_CALLBACK_FAILED: the pair callback stopped the query
 
 
 def _kind_rows(obj, what):
@@ -230,7 +231,7 @@ class Scene:
     def pairs_within(self, delta):
         """Every pair i < j with distance <= delta (one C call; returns a ScenePairs)."""
         chunks = []
-        state = {"interrupted": False}
+        state = {"error": None}
 
         def take(user, pairs, n):
             try:
@@ -238,14 +239,16 @@ class Scene:
                 _c.memmove(a.ctypes.data, pairs, n * SCENE_PAIR_DTYPE.itemsize)
                 chunks.append(a)
                 return 0
-            except KeyboardInterrupt:
-                state["interrupted"] = True
+            except BaseException as e:  # KeyboardInterrupt from Ctrl-C: stop the query
+                state["error"] = e
                 return 1
 
         fn = PAIR_FN(take)
         with self._query._lock, self._lock:
             st = _within_fn(self._query._handle(), self._handle(), float(delta), fn, None, None)
-            if state["interrupted"]:
+            if state["error"] is not None:
+                raise state["error"]
+            if st == _CALLBACK_FAILED:  # an interrupt arrived where take() could not catch it
                 raise KeyboardInterrupt
             self._check(st, allow=(_BAD_KIND,))
         raw = np.concatenate(chunks) if chunks else np.empty(0, SCENE_PAIR_DTYPE)

@@ -162,3 +162,27 @@ def test_bad_input():
     assert e.value.name == "CDIST_ERR_OUT_OF_RANGE"
     with pytest.raises(TypeError):
         cd.Scene([cd.Line((0, 0, 0), (1, 0, 0))])
+
+
+# The interrupt may land in ctypes' own trampoline, which reports it as unraisable.
+@pytest.mark.filterwarnings("ignore::pytest.PytestUnraisableExceptionWarning")
+def test_interrupt():
+    """Ctrl-C (a KeyboardInterrupt raised by a signal handler) stops a long pairs_within: the
+    library returns to Python between blocks of answers."""
+    import signal
+    tori = random_scene(4 * 60000, seed=13, box=60.0)
+    scene = cd.Scene(tori)
+    scene.rebuild()
+
+    def interrupt(signum, frame):
+        raise KeyboardInterrupt
+
+    old = signal.signal(signal.SIGALRM, interrupt)
+    try:
+        signal.setitimer(signal.ITIMER_REAL, 0.005)
+        with pytest.raises(KeyboardInterrupt):
+            scene.pairs_within(1.0)
+    finally:
+        signal.setitimer(signal.ITIMER_REAL, 0)
+        signal.signal(signal.SIGALRM, old)
+    assert len(scene.pairs_within(0.0)) >= 0  # the scene is still usable
