@@ -42,6 +42,8 @@ typedef struct cdist__node {
 } cdist__node;
 
 #define CD_SCENE_NO_POS UINT32_MAX
+/* The most objects a leaf holds (src/scene/scene.c builds leaves of up to CD_SCENE_LEAF). */
+#define CD_SCENE_LEAF_MAX 8
 
 struct cdist_scene {
     atomic_int busy;

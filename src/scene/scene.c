@@ -11,7 +11,7 @@
 
 /* Leaves hold up to this many objects: on the chain-mail sheet (bench_scene) 8 took the same
  * CPU time as 4 with half the nodes (198 against 217 bytes per object); 16 took more. */
-#define CD_SCENE_LEAF 8
+#define CD_SCENE_LEAF CD_SCENE_LEAF_MAX
 
 /* ---- objects ---- */
 

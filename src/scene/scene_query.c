@@ -141,8 +141,14 @@ static void cross(broad *b, uint32_t x, uint32_t y)
     const cdist__node *nx = &b->sa->node[x], *ny = &b->sb->node[y];
     if (!cdist__box_near(&nx->box, &ny->box, b->lim)) return;
     if (nx->count && ny->count) {
+        /* Only the objects near the other leaf's box can pair: a pass per leaf first. */
+        uint32_t px[CD_SCENE_LEAF_MAX], py[CD_SCENE_LEAF_MAX], mx = 0, my = 0;
         for (uint32_t p = nx->first; p < nx->first + nx->count; p++)
-            for (uint32_t q = ny->first; q < ny->first + ny->count; q++) test_pos(b, p, q);
+            if (cdist__box_near(&b->sa->box[p], &ny->box, b->lim)) px[mx++] = p;
+        for (uint32_t q = ny->first; q < ny->first + ny->count; q++)
+            if (cdist__box_near(&b->sb->box[q], &nx->box, b->lim)) py[my++] = q;
+        for (uint32_t u = 0; u < mx; u++)
+            for (uint32_t v = 0; v < my; v++) test_pos(b, px[u], py[v]);
     } else if (ny->count || (!nx->count && box_size(&nx->box) >= box_size(&ny->box))) {
         cross(b, nx->first, y);
         cross(b, nx->first + 1, y);
