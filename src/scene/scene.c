@@ -523,7 +523,9 @@ void cdist_scene_free(cdist_scene *s)
 {
     if (!s) return;
     for (int i = 0; i < s->worker_n; i++) cdist_query_free(s->worker[i]);
+    for (int i = 0; i < s->screen_n; i++) cdist_query_free(s->screen[i]);
     free(s->worker);
+    free(s->screen);
     free(s->obj), free(s->pos), free(s->perm), free(s->box), free(s->node);
     free(s->cand), free(s->filter), free(s->chunk_buf);
     free(s);
@@ -750,6 +752,6 @@ cdist_status cdist_scene_get_stats(const cdist_scene *s, cdist_scene_stats *out)
     out->bytes = sizeof *s + s->cap * (sizeof *s->obj + sizeof *s->pos) +
                  s->tree_n * (sizeof *s->perm + sizeof *s->box) + s->node_cap * sizeof *s->node +
                  s->cand_cap * sizeof *s->cand + (s->filter ? 2 * s->cap * sizeof *s->filter : 0) + s->chunk_buf_cap * sizeof *s->chunk_buf +
-                 (size_t)s->worker_n * sizeof(cdist_query);
+                 (size_t)(s->worker_n + s->screen_n) * sizeof(cdist_query);
     return CDIST_OK;
 }
