@@ -699,10 +699,12 @@ CDIST_API cdist_status cdist_sphere_disk_grad(cdist_query *q, const cdist_sphere
  * status ::CDIST_ERR_BAD_KIND and distance NaN whenever the bounds cannot exclude it: never
  * approximated, never dropped.
  *
- * The broad phase is certified: every bound (boxes, balls, slabs of circle planes) is a lower
- * bound of the signed distance widened by a relative margin of 2^-36 of the objects'
- * coordinate scale, far above the rounding of the bounds and of the queries, so no pair whose
- * computed distance is <= delta is ever left out (docs/scene.md gives the argument).
+ * The broad phase is certified: every bound (boxes, balls, slabs of circle planes, a sampled
+ * ring bound) is a lower bound of the signed distance widened by a relative margin of 2^-36 of
+ * the objects' coordinate scale, far above the rounding of the bounds and of the queries, and
+ * pairs of two circle cores are screened by the distance of cdist_batch_distance() (within 2
+ * ulps of the scale of the full query's) against the same margin, so no pair whose computed
+ * distance is <= delta is ever left out (docs/scene.md gives the argument).
  * Pairs are skipped (never tested, never reported) when both objects have the same non-zero
  * group, or when they are consecutive ids i, i + 1 with the same non-zero chain (the links of
  * a chain touch by design): see cdist_scene_set_groups().
