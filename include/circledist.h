@@ -867,6 +867,173 @@ CDIST_API cdist_status cdist_toi_batch(cdist_query *q, size_t n, const cdist_sha
                                        ptrdiff_t b_stride, const cdist_motion *mb, ptrdiff_t mb_stride, double target,
                                        double tolerance, int max_iterations, cdist_toi_result *out,
                                        cdist_status *statuses);
+/* ---- scenes: many objects at once --------------------------------------------------- */
+/* A scene holds N objects of any of the kinds below; object ids are the indices at which
+ * cdist_scene_add() put them (0, 1, 2, ... in order of addition; an id is never reused).
+ * Every object is a core (point, segment, circle, disk, arc) plus a ball radius (0 for the
+ * plain kinds), and the distance of a pair is the signed distance of the swept queries:
+ *     distance = core_distance - (radius_a + radius_b),
+ * with the core distance from the library's own query for the two cores (swapping the
+ * arguments where only the other order exists, and the result back), so a scene's answer for
+ * a pair (i, j), i first, is bit for bit that of the corresponding single query. The one core
+ * pair without an exact query, point-arc (sphere or point against an arc), is reported with
+ * status ::CDIST_ERR_BAD_KIND and distance NaN whenever the bounds cannot exclude it: never
+ * approximated, never dropped.
+ *
+ * The broad phase is certified: every bound (boxes, balls, slabs of circle planes, a sampled
+ * ring bound) is a lower bound of the signed distance widened by a relative margin of 2^-36 of
+ * the objects' coordinate scale, far above the rounding of the bounds and of the queries, and
+ * pairs of two circle cores are screened by the distance of cdist_batch_distance() (within 2
+ * ulps of the scale of the full query's) against the same margin, so no pair whose computed
+ * distance is <= delta is ever left out (docs/scene.md gives the argument).
+ * Pairs are skipped (never tested, never reported) when both objects have the same non-zero
+ * group, or when they are consecutive ids i, i + 1 with the same non-zero chain (the links of
+ * a chain touch by design): see cdist_scene_set_groups().
+ *
+ * Threads: the queries share their work among the query handle's threads
+ * (cdist_query_set_threads()); results are bit-identical for every thread count. A scene
+ * must be used by one call at a time (it holds the workspaces); a call that finds it in use
+ * returns ::CDIST_ERR_HANDLE_BUSY. Object ids and counts must stay below 2^32 - 1. */
+
+/** Opaque scene: objects, their bounds and the bounding-volume tree. */
+typedef struct cdist_scene cdist_scene;
+
+/** Object kinds of a scene, with the C type of one object. Numbers are fixed. */
+typedef enum cdist_scene_kind {
+    CDIST_SCENE_POINT = 0,        /**< cdist_vec3 */
+    CDIST_SCENE_SEGMENT = 1,      /**< cdist_segment */
+    CDIST_SCENE_CIRCLE = 2,       /**< cdist_circle */
+    CDIST_SCENE_DISK = 3,         /**< cdist_circle as a disk */
+    CDIST_SCENE_ARC = 4,          /**< cdist_arc */
+    CDIST_SCENE_SPHERE = 5,       /**< cdist_sphere */
+    CDIST_SCENE_CAPSULE = 6,      /**< cdist_capsule */
+    CDIST_SCENE_TORUS = 7,        /**< cdist_torus */
+    CDIST_SCENE_ROUNDED_DISK = 8  /**< cdist_rounded_disk */
+} cdist_scene_kind;
+
+/** Bits of cdist_scene_pair::flags. Values are fixed. */
+typedef enum cdist_scene_pair_flag {
+    CDIST_SCENE_PAIR_EQUIDISTANT = 1, /**< infinitely many closest pairs (the core query's flag) */
+    CDIST_SCENE_PAIR_CORE_TOUCH = 2   /**< the cores touch (::CDIST_CONTACT_CORE_TOUCH) */
+} cdist_scene_pair_flag;
+
+/** One answered pair of a scene query. For a pair of one scene i < j; for two scenes i is an
+ *  id of the first and j of the second; for a query object i is the scene's id and j is
+ *  SIZE_MAX (the query object is the second object). sizeof = 136 bytes on LP64. */
+typedef struct cdist_scene_pair {
+    size_t i;        /**< id of the first object */
+    size_t j;        /**< id of the second object */
+    double distance; /**< signed distance (NaN when status is not ::CDIST_OK) */
+    int status;      /**< ::CDIST_OK, or why the pair could not be answered */
+    int num_pairs;   /**< closest pairs given: 1 or 2 (0 on error) */
+    int flags;       /**< bits of ::cdist_scene_pair_flag */
+    int reserved;    /**< 0 */
+    /** point[k][0] on object i's surface, point[k][1] on object j's (the witness points of
+     *  the contact query, cdist_contact_pair::point), for k < num_pairs. */
+    cdist_vec3 point[2][2];
+} cdist_scene_pair;
+
+/** Counters of a scene and of its last query (cdist_scene_get_stats()). */
+typedef struct cdist_scene_stats {
+    size_t objects;     /**< ids given out (live, invalid and removed objects) */
+    size_t live;        /**< objects that take part in queries */
+    size_t nodes;       /**< nodes of the tree */
+    size_t bytes;       /**< memory held by the scene (objects, bounds, tree, workspaces) */
+    size_t box_pairs;   /**< last query: object pairs whose boxes passed */
+    size_t screened;    /**< last query: pairs passed by the bounds, before the distance screen */
+    size_t candidates;  /**< last query: pairs answered by the exact query */
+    size_t reported;    /**< last query: pairs reported */
+    size_t rebuilds;    /**< tree builds since the scene was created */
+    size_t refits;      /**< refits (pose updates answered without a rebuild) */
+    size_t reserved[6]; /**< reserved for future counters; 0 */
+} cdist_scene_stats;
+
+/** Receives answered pairs in order (sorted by i, then j), n at a time; return 0 to go on,
+ *  anything else to stop the query (it then returns ::CDIST_ERR_CALLBACK_FAILED). */
+typedef int (*cdist_scene_pair_fn)(void *user, const cdist_scene_pair *pairs, size_t n);
+
+/** sizeof(cdist_scene_pair) as compiled into the library. */
+CDIST_API size_t cdist_scene_pair_size(void);
+/** sizeof(cdist_scene_stats) as compiled into the library. */
+CDIST_API size_t cdist_scene_stats_size(void);
+/** sizeof the C type of one object of a scene kind (0 for a number that is not a kind). */
+CDIST_API size_t cdist_scene_kind_size(cdist_scene_kind kind);
+
+/** Creates an empty scene (NULL if memory runs out). */
+CDIST_API cdist_scene *cdist_scene_new(void);
+/** Frees a scene. NULL is allowed. */
+CDIST_API void cdist_scene_free(cdist_scene *s);
+
+/** Adds n objects of one kind; object k is at (const char *)objects + k * stride (stride 0
+ *  repeats one object). They get the ids first .. first + n - 1 (*first_id, may be NULL).
+ *  Each object is validated as the single queries validate it, with q's unit tolerance; an
+ *  invalid one gets its status in statuses[k] (may be NULL), keeps its id and takes part in
+ *  no query; the others are added. Returns ::CDIST_OK when all were valid, else the status of
+ *  the first invalid one (cdist_query_last_error() names its index). A bad kind:
+ *  ::CDIST_ERR_BAD_KIND and nothing is added. */
+CDIST_API cdist_status cdist_scene_add(cdist_query *q, cdist_scene *s, cdist_scene_kind kind, size_t n,
+                                       const void *objects, ptrdiff_t stride, size_t *first_id,
+                                       cdist_status *statuses);
+/** Moves (or reshapes) objects: object k replaces the object with id ids[k] (ids NULL: ids 0 ..
+ *  n - 1); its kind may change. A valid object keeps its place in the tree, whose boxes are
+ *  refitted before the next query (no rebuild; see docs/scene.md); an invalid one gets its status in statuses[k]
+ *  and the old object stays. An id out of range or removed: ::CDIST_ERR_OUT_OF_RANGE at its
+ *  index. An invalid object previously added becomes live when updated with a valid one.
+ *  Returns the first failing status as cdist_scene_add(). */
+CDIST_API cdist_status cdist_scene_update(cdist_query *q, cdist_scene *s, size_t n, const size_t *ids,
+                                          cdist_scene_kind kind, const void *objects, ptrdiff_t stride,
+                                          cdist_status *statuses);
+/** Removes objects (their ids are not reused). Ids out of range: ::CDIST_ERR_OUT_OF_RANGE (the
+ *  valid ids of the call are still removed); removing twice is allowed. */
+CDIST_API cdist_status cdist_scene_remove(cdist_query *q, cdist_scene *s, size_t n, const size_t *ids);
+/** Sets the skip filter of objects ids[k] (ids NULL: 0 .. n - 1): group[k] (0: none; a pair of
+ *  the same non-zero group is skipped) and chain[k] (0: none; ids i and i + 1 of the same
+ *  non-zero chain are skipped). Either array may be NULL (left unchanged). New objects have 0. */
+CDIST_API cdist_status cdist_scene_set_groups(cdist_query *q, cdist_scene *s, size_t n, const size_t *ids,
+                                              const unsigned *group, const unsigned *chain);
+/** Number of ids given out (removed and invalid objects included); 0 for NULL. */
+CDIST_API size_t cdist_scene_count(const cdist_scene *s);
+/** Status of object id: ::CDIST_OK when live, its validation status when invalid,
+ *  ::CDIST_ERR_OUT_OF_RANGE when out of range or removed. */
+CDIST_API cdist_status cdist_scene_object_status(const cdist_scene *s, size_t id);
+/** Rebuilds the tree from the current poses (queries rebuild by themselves when objects were
+ *  added, or when moves have doubled the leaves' boxes; see docs/scene.md). */
+CDIST_API cdist_status cdist_scene_rebuild(cdist_query *q, cdist_scene *s);
+/** Counters of the scene and of its last query. */
+CDIST_API cdist_status cdist_scene_get_stats(const cdist_scene *s, cdist_scene_stats *stats);
+
+/** Every pair i < j (not skipped) with distance <= delta, sorted by (i, j), with its
+ *  distance and closest points. The first min(count, capacity) pairs go to out, *count gets
+ *  the number of pairs found (all of them: when it exceeds capacity, call again with a larger
+ *  array; nothing is dropped silently). Pairs that could not be answered (status != OK) are
+ *  always included and the call returns the first such status. delta may be negative
+ *  (overlapping swept objects); NaN: ::CDIST_ERR_NOT_FINITE. out NULL with capacity > 0:
+ *  ::CDIST_ERR_NULL_ARGUMENT. */
+CDIST_API cdist_status cdist_scene_pairs_within(cdist_query *q, cdist_scene *s, double delta, cdist_scene_pair *out,
+                                                size_t capacity, size_t *count);
+/** cdist_scene_pairs_within() delivering the pairs to fn in order instead (*count, may be
+ *  NULL, gets the number delivered). */
+CDIST_API cdist_status cdist_scene_pairs_within_fn(cdist_query *q, cdist_scene *s, double delta,
+                                                   cdist_scene_pair_fn fn, void *user, size_t *count);
+/** Every pair (i in a, j in b) with distance <= delta, sorted by (i, j); groups and chains do
+ *  not apply between scenes. Same conventions as cdist_scene_pairs_within(). a == b is allowed
+ *  (every ordered pair i != j then appears once as (i, j), i < j, as in the one-scene query). */
+CDIST_API cdist_status cdist_scene_pairs_between(cdist_query *q, cdist_scene *a, cdist_scene *b, double delta,
+                                                 cdist_scene_pair *out, size_t capacity, size_t *count);
+/** The closest pair of the scene (the smallest distance; ties: smallest (i, j)); skipped pairs
+ *  do not count. Fewer than two live objects: ::CDIST_ERR_BAD_INTERVAL, out->distance NaN. */
+CDIST_API cdist_status cdist_scene_closest_pair(cdist_query *q, cdist_scene *s, cdist_scene_pair *out);
+/** The closest pair between scenes a and b (i in a, j in b). */
+CDIST_API cdist_status cdist_scene_closest_pair_between(cdist_query *q, cdist_scene *a, cdist_scene *b,
+                                                        cdist_scene_pair *out);
+/** The k objects nearest to a query object (kind, object), sorted by distance then id: out[m].i
+ *  the id, out[m].j = SIZE_MAX, point[.][1] on the query object. *count = min(k, live objects). */
+CDIST_API cdist_status cdist_scene_nearest(cdist_query *q, cdist_scene *s, cdist_scene_kind kind, const void *object,
+                                           size_t k, cdist_scene_pair *out, size_t *count);
+/** Every object within delta of a query object, sorted by id (conventions of
+ *  cdist_scene_nearest() and of cdist_scene_pairs_within() for capacity and count). */
+CDIST_API cdist_status cdist_scene_within(cdist_query *q, cdist_scene *s, cdist_scene_kind kind, const void *object,
+                                          double delta, cdist_scene_pair *out, size_t capacity, size_t *count);
 
 #ifdef __cplusplus
 }

@@ -41,7 +41,8 @@ run_suite build || status=1
 ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 \
   run_suite build-sanitize -Db_sanitize=address,undefined -Db_lundef=false -Dbuildtype=debugoptimized || status=1
 # ThreadSanitizer: the tests that run threads (the batch suite: threads 1, 2 and 7 bit-identical,
-# a second batch on a busy handle; the handle's in-use flag), halting on any report.
+# a second batch on a busy handle; the handle's in-use flag; scenes with 1 and 2 threads),
+# halting on any report.
 run_tsan() { # DIR
   if [ ! -d "$1" ]; then
     meson setup "$1" -Db_sanitize=thread -Db_lundef=false -Dbuildtype=debugoptimized || return 1
@@ -51,6 +52,8 @@ run_tsan() { # DIR
   TSAN_OPTIONS=halt_on_error=1 meson test -C "$1" --print-errorlogs --num-processes 2 --suite batch || rc=1
   count "$1"
   TSAN_OPTIONS=halt_on_error=1 meson test -C "$1" --print-errorlogs handle || rc=1
+  count "$1"
+  TSAN_OPTIONS=halt_on_error=1 meson test -C "$1" --print-errorlogs scene || rc=1
   count "$1"
   return $rc
 }

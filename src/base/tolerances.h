@@ -210,5 +210,12 @@
  * ulps to each coordinate; the swept queries' distance is exact to CD_TIE_ULPS). A conservative
  * step advances by (distance - target - slack) / bound. */
 #define CD_TOI_POSE_ULPS 64.0
+/* Scenes (src/scene): every bound of the broad phase (boxes, balls, circle-plane slabs) is
+ * widened by CD_SCENE_BOUND_REL times the objects' coordinate scale S (largest |coordinate| plus
+ * the radii). The bounds take a handful of roundings (about 10 eps S) and the exact queries
+ * answer to a few ulps of their scale (<= S; the reference files hold them to 1e-13 S), so a
+ * pair whose computed distance is <= delta always passes: 2^-36 (1.5e-11) is over 100 times
+ * either and still far below any geometric gap that matters for pruning. */
+#define CD_SCENE_BOUND_REL 0x1p-36
 
 #endif

@@ -129,6 +129,30 @@ SIZE(cdist_method, 4);
 SIZE(cdist_curve_fn, 8);
 SIZE(cdist_kind, 4);
 SIZE(cdist_contact_flag, 4);
+/* scenes (CDIST_1.1) */
+SIZE(cdist_scene_pair, 136);
+OFF(cdist_scene_pair, i, 0);
+OFF(cdist_scene_pair, j, 8);
+OFF(cdist_scene_pair, distance, 16);
+OFF(cdist_scene_pair, status, 24);
+OFF(cdist_scene_pair, num_pairs, 28);
+OFF(cdist_scene_pair, flags, 32);
+OFF(cdist_scene_pair, reserved, 36);
+OFF(cdist_scene_pair, point, 40);
+SIZE(cdist_scene_stats, 128);
+OFF(cdist_scene_stats, objects, 0);
+OFF(cdist_scene_stats, live, 8);
+OFF(cdist_scene_stats, nodes, 16);
+OFF(cdist_scene_stats, bytes, 24);
+OFF(cdist_scene_stats, box_pairs, 32);
+OFF(cdist_scene_stats, screened, 40);
+OFF(cdist_scene_stats, candidates, 48);
+OFF(cdist_scene_stats, reported, 56);
+OFF(cdist_scene_stats, rebuilds, 64);
+OFF(cdist_scene_stats, refits, 72);
+OFF(cdist_scene_stats, reserved, 80);
+SIZE(cdist_scene_kind, 4);
+SIZE(cdist_scene_pair_flag, 4);
 SIZE(cdist_grad_flag, 4);
 SIZE(cdist_link, 72);
 OFF(cdist_link, linking, 0);
@@ -232,6 +256,18 @@ VALUE(CDIST_TOI_NONE, 0);
 VALUE(CDIST_TOI_HIT, 1);
 VALUE(CDIST_TOI_ITERATION_LIMIT, 2);
 
+VALUE(CDIST_SCENE_POINT, 0);
+VALUE(CDIST_SCENE_SEGMENT, 1);
+VALUE(CDIST_SCENE_CIRCLE, 2);
+VALUE(CDIST_SCENE_DISK, 3);
+VALUE(CDIST_SCENE_ARC, 4);
+VALUE(CDIST_SCENE_SPHERE, 5);
+VALUE(CDIST_SCENE_CAPSULE, 6);
+VALUE(CDIST_SCENE_TORUS, 7);
+VALUE(CDIST_SCENE_ROUNDED_DISK, 8);
+VALUE(CDIST_SCENE_PAIR_EQUIDISTANT, 1);
+VALUE(CDIST_SCENE_PAIR_CORE_TOUCH, 2);
+
 int main(void)
 {
     /* The library was compiled from the same header: its own sizes agree. */
@@ -243,7 +279,9 @@ int main(void)
              && cdist_contact_flag_core_touch() == CDIST_CONTACT_CORE_TOUCH
              && cdist_grad_flag_not_differentiable() == CDIST_GRAD_NOT_DIFFERENTIABLE
              && cdist_link_size() == sizeof(cdist_link) && cdist_shape_size() == sizeof(cdist_shape)
-             && cdist_toi_result_size() == sizeof(cdist_toi_result);
+             && cdist_toi_result_size() == sizeof(cdist_toi_result)
+             && cdist_scene_pair_size() == sizeof(cdist_scene_pair) && cdist_scene_stats_size() == sizeof(cdist_scene_stats)
+             && cdist_scene_kind_size(CDIST_SCENE_ARC) == sizeof(cdist_arc);
 #ifndef LAYOUT_CHECKED
     printf("test_layout: enumerator values checked; struct layout skipped (documented for x86-64 only)\n");
 #endif

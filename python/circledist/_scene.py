@@ -1,0 +1,319 @@
+# SPDX-License-Identifier: MIT
+"""Scenes: many objects at once (cdist_scene; internal module, see circledist.Scene)."""
+import ctypes
+import threading
+
+import numpy as np
+
+from . import _lib
+from ._objects import (Arc, Capsule, Circle, Disk, GeometricObject, Point, RoundedDisk, Segment,
+                       Sphere, Torus, coerce)
+from ._query import CircleDistError, Query
+
+_c = ctypes
+_P = _c.c_void_p
+_ST = _c.c_int
+_SZ = _c.c_size_t
+_d = _lib._decl
+
+#: numpy mirror of struct cdist_scene_pair (checked against cdist_scene_pair_size()).
+SCENE_PAIR_DTYPE = np.dtype([("i", np.uint64), ("j", np.uint64), ("distance", np.float64),
+                             ("status", np.int32), ("num_pairs", np.int32), ("flags", np.int32),
+                             ("reserved", np.int32), ("point", np.float64, (2, 2, 3))], align=True)
+SCENE_STATS_FIELDS = ("objects", "live", "nodes", "bytes", "box_pairs", "screened", "candidates",
+                      "reported", "rebuilds", "refits")
+
+_pair_size = _d("cdist_scene_pair_size", _SZ, required=False)
+_new = _d("cdist_scene_new", _P, required=False)
+_free = _d("cdist_scene_free", None, _P, required=False)
+_add = _d("cdist_scene_add", _ST, _P, _P, _c.c_int, _SZ, _P, _c.c_ssize_t, _P, _P, required=False)
+_update = _d("cdist_scene_update", _ST, _P, _P, _SZ, _P, _c.c_int, _P, _c.c_ssize_t, _P, required=False)
+_remove = _d("cdist_scene_remove", _ST, _P, _P, _SZ, _P, required=False)
+_set_groups = _d("cdist_scene_set_groups", _ST, _P, _P, _SZ, _P, _P, _P, required=False)
+_count = _d("cdist_scene_count", _SZ, _P, required=False)
+_object_status = _d("cdist_scene_object_status", _ST, _P, _SZ, required=False)
+_rebuild = _d("cdist_scene_rebuild", _ST, _P, _P, required=False)
+_stats = _d("cdist_scene_get_stats", _ST, _P, _P, required=False)
+PAIR_FN = _c.CFUNCTYPE(_c.c_int, _P, _P, _SZ)
+_within_fn = _d("cdist_scene_pairs_within_fn", _ST, _P, _P, _c.c_double, PAIR_FN, _P, _P, required=False)
+_between = _d("cdist_scene_pairs_between", _ST, _P, _P, _P, _c.c_double, _P, _SZ, _P, required=False)
+_closest = _d("cdist_scene_closest_pair", _ST, _P, _P, _P, required=False)
+_closest_between = _d("cdist_scene_closest_pair_between", _ST, _P, _P, _P, _P, required=False)
+_nearest = _d("cdist_scene_nearest", _ST, _P, _P, _c.c_int, _P, _SZ, _P, _P, required=False)
+_within = _d("cdist_scene_within", _ST, _P, _P, _c.c_int, _P, _c.c_double, _P, _SZ, _P, required=False)
+if _pair_size is not None and _pair_size() != SCENE_PAIR_DTYPE.itemsize:
+    raise ImportError("circledist: the library's cdist_scene_pair is %d bytes, this package expects %d"
+                      % (_pair_size(), SCENE_PAIR_DTYPE.itemsize))
+
+#: The scene kind (cdist_scene_kind) of each object class.
+KINDS = {Point: 0, Segment: 1, Circle: 2, Disk: 3, Arc: 4, Sphere: 5, Capsule: 6, Torus: 7,
+         RoundedDisk: 8}
+_BAD_KIND = 16  # CDIST_ERR_BAD_KIND: a pair without an exact query (point or sphere vs arc)
+_CALLBACK_FAILED = 9  # CDIST_ERR_CALLBACK_FAILED: the pair callback stopped the query
+
+
+def _kind_rows(obj, what):
+    """(kind, contiguous (N, WIDTH) float64 rows) of one object or array of objects."""
+    if not isinstance(obj, GeometricObject):
+        raise TypeError("%s: expected a circledist object (Torus, Sphere, Capsule, Circle, ...), got %s"
+                        % (what, type(obj).__name__))
+    kind = KINDS.get(type(obj))
+    if kind is None:
+        raise TypeError("%s: a scene cannot hold %s objects" % (what, type(obj).__name__))
+    rows = np.ascontiguousarray(obj.data.reshape(-1, obj.WIDTH), dtype=np.float64)
+    return kind, rows
+
+
+def _groups(objects, what):
+    """objects (one object/array, or a list of them, mixed kinds) as a list of (kind, rows)."""
+    if isinstance(objects, GeometricObject):
+        return [_kind_rows(objects, what)]
+    return [_kind_rows(o, "%s[%d]" % (what, k)) for k, o in enumerate(objects)]
+
+
+class ScenePairs:
+    """Answered pairs of a scene query, as numpy arrays (one entry per pair, sorted by i, j).
+
+    i, j: ids (j is -1 for a query object); distance: signed distance; points (n, 2, 3): the
+    closest pair's witness points (points[:, 0] on object i); all_points (n, 2, 2, 3) with
+    num_pairs (1 or 2) valid; equidistant (bool); status (0, or the status of a pair the
+    library has no exact query for, with distance NaN). Unpacks as ``i, j, distance, points``."""
+
+    def __init__(self, raw):
+        self.raw = raw
+        self.i = raw["i"].astype(np.int64)
+        self.j = raw["j"].astype(np.int64)  # SIZE_MAX (a query object) wraps to -1
+        self.distance = raw["distance"]
+        self.all_points = raw["point"]
+        self.points = raw["point"][:, 0]
+        self.num_pairs = raw["num_pairs"]
+        self.equidistant = (raw["flags"] & 1) != 0
+        self.status = raw["status"]
+
+    def __len__(self):
+        return len(self.raw)
+
+    def __iter__(self):
+        return iter((self.i, self.j, self.distance, self.points))
+
+    def __repr__(self):
+        return "<ScenePairs: %d pairs>" % len(self.raw)
+
+
+class Scene:
+    """Many objects at once: a certified broad phase over the library's exact queries.
+
+    Scene(objects=(), query=None, threads=1): objects is one object array (e.g. Torus(...) with
+    array fields) or a list of them of any kinds (Point, Segment, Circle, Disk, Arc, Sphere,
+    Capsule, Torus, RoundedDisk); ids are their positions in that order (later add() calls
+    continue the numbering). Distances are the signed distances of the swept queries
+    (core distance minus the radii), bit for bit those of the pair queries.
+
+    Invalid objects keep their ids and take part in nothing; add() then raises CircleDistError
+    naming the first one (the valid ones are added). Long queries return to Python between
+    blocks of answers, so Ctrl-C interrupts them (KeyboardInterrupt)."""
+
+    def __init__(self, objects=(), query=None, threads=1):
+        if _new is None:
+            raise RuntimeError("the loaded libcircledist has no scene API (cdist_scene_new)")
+        self._query = query if query is not None else Query(threads=threads)
+        if query is not None and threads != 1:
+            self._query.set_threads(threads)
+        self._s = _new()
+        if not self._s:
+            raise MemoryError("cdist_scene_new failed")
+        self._lock = threading.RLock()
+        if isinstance(objects, GeometricObject) or len(objects) > 0:
+            self.add(objects)
+
+    def close(self):
+        """Free the C scene (also done when the object is collected)."""
+        if getattr(self, "_s", None):
+            _free(self._s)
+            self._s = None
+
+    def __del__(self):
+        self.close()
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        self.close()
+
+    def __len__(self):
+        return int(_count(self._handle()))
+
+    def _handle(self):
+        if not self._s:
+            raise ValueError("the Scene is closed")
+        return self._s
+
+    def _check(self, st, allow=()):
+        if st != 0 and st not in allow:
+            raise CircleDistError(st, _lib.query_last_error(self._query._handle()).decode())
+
+    # ---- objects ---------------------------------------------------------------------------
+    def add(self, objects):
+        """Add objects (one object array or a list of them); returns their ids (int64 array)."""
+        ids = []
+        first_bad = None
+        with self._query._lock, self._lock:
+            for kind, rows in _groups(objects, "objects"):
+                first = _c.c_size_t()
+                st = _add(self._query._handle(), self._handle(), kind, len(rows), rows.ctypes.data,
+                          rows.strides[0], _c.byref(first), None)
+                if st != 0 and first_bad is None:
+                    first_bad = (st, _lib.query_last_error(self._query._handle()).decode())
+                ids.append(np.arange(first.value, first.value + len(rows), dtype=np.int64))
+        if first_bad is not None:
+            raise CircleDistError(*first_bad)
+        return np.concatenate(ids) if ids else np.empty(0, np.int64)
+
+    def update(self, ids, objects):
+        """Move or reshape objects: objects (one array, or a list of arrays of any kinds) replace
+        ids in order. No rebuild: the tree is refitted before the next query."""
+        ids = np.ascontiguousarray(np.asarray(ids, dtype=np.int64).reshape(-1)).astype(np.uintp)
+        groups = _groups(objects, "objects")
+        total = sum(len(r) for _, r in groups)
+        if total != len(ids):
+            raise ValueError("update: %d ids for %d objects" % (len(ids), total))
+        at = 0
+        with self._query._lock, self._lock:
+            for kind, rows in groups:
+                part = np.ascontiguousarray(ids[at:at + len(rows)])
+                self._check(_update(self._query._handle(), self._handle(), len(rows), part.ctypes.data, kind,
+                                    rows.ctypes.data, rows.strides[0], None))
+                at += len(rows)
+
+    def remove(self, ids):
+        """Remove objects (their ids are not reused)."""
+        ids = np.ascontiguousarray(np.asarray(ids, dtype=np.int64).reshape(-1)).astype(np.uintp)
+        with self._query._lock, self._lock:
+            self._check(_remove(self._query._handle(), self._handle(), len(ids), ids.ctypes.data))
+
+    def set_groups(self, ids=None, group=None, chain=None):
+        """Skip filter: pairs of the same non-zero group are skipped, and consecutive ids i, i + 1
+        of the same non-zero chain. ids None: 0 .. n - 1 (n the length of group or chain)."""
+        g = None if group is None else np.ascontiguousarray(np.asarray(group, dtype=np.uint32).reshape(-1))
+        c = None if chain is None else np.ascontiguousarray(np.asarray(chain, dtype=np.uint32).reshape(-1))
+        n = len(g) if g is not None else (len(c) if c is not None else 0)
+        idp = None
+        if ids is not None:
+            ids = np.ascontiguousarray(np.asarray(ids, dtype=np.int64).reshape(-1)).astype(np.uintp)
+            n = len(ids)
+            idp = ids.ctypes.data
+        for a, name in ((g, "group"), (c, "chain")):
+            if a is not None and len(a) != n:
+                raise ValueError("set_groups: %s has %d entries for %d ids" % (name, len(a), n))
+        with self._query._lock, self._lock:
+            self._check(_set_groups(self._query._handle(), self._handle(), n, idp,
+                                    None if g is None else g.ctypes.data, None if c is None else c.ctypes.data))
+
+    def object_status(self, ids):
+        """cdist_status of each id (0: live; its validation status when invalid)."""
+        return np.array([_object_status(self._handle(), int(i)) for i in np.asarray(ids).reshape(-1)],
+                        dtype=np.int32)
+
+    def rebuild(self):
+        """Rebuild the tree now (queries rebuild by themselves when needed)."""
+        with self._query._lock, self._lock:
+            self._check(_rebuild(self._query._handle(), self._handle()))
+
+    @property
+    def stats(self):
+        """Counters of the scene and its last query (dict)."""
+        buf = (_c.c_size_t * 16)()
+        _stats(self._handle(), buf)
+        return {name: int(buf[k]) for k, name in enumerate(SCENE_STATS_FIELDS)}
+
+    # ---- queries ---------------------------------------------------------------------------
+    def pairs_within(self, delta):
+        """Every pair i < j with distance <= delta (one C call; returns a ScenePairs)."""
+        chunks = []
+        state = {"error": None}
+
+        def take(user, pairs, n):
+            try:
+                a = np.empty(n, SCENE_PAIR_DTYPE)
+                _c.memmove(a.ctypes.data, pairs, n * SCENE_PAIR_DTYPE.itemsize)
+                chunks.append(a)
+                return 0
+            except BaseException as e:  # KeyboardInterrupt from Ctrl-C: stop the query
+                state["error"] = e
+                return 1
+
+        fn = PAIR_FN(take)
+        with self._query._lock, self._lock:
+            st = _within_fn(self._query._handle(), self._handle(), float(delta), fn, None, None)
+            if state["error"] is not None:
+                raise state["error"]
+            if st == _CALLBACK_FAILED:  # an interrupt arrived where take() could not catch it
+                raise KeyboardInterrupt
+            self._check(st, allow=(_BAD_KIND,))
+        raw = np.concatenate(chunks) if chunks else np.empty(0, SCENE_PAIR_DTYPE)
+        return ScenePairs(raw)
+
+    def _sized(self, call, capacity):
+        """Run call(out, capacity, count) and again with the exact size when it did not fit."""
+        while True:
+            out = np.empty(max(capacity, 1), SCENE_PAIR_DTYPE)
+            count = _c.c_size_t()
+            st = call(out.ctypes.data, capacity, _c.byref(count))
+            self._check(st, allow=(_BAD_KIND,))
+            if count.value <= capacity:
+                return ScenePairs(out[:count.value])
+            capacity = count.value
+
+    def pairs_between(self, other, delta):
+        """Every pair (i of this scene, j of other) with distance <= delta."""
+        with self._query._lock, self._lock, other._lock:
+            return self._sized(lambda out, cap, cnt: _between(self._query._handle(), self._handle(), other._handle(),
+                                                              float(delta), out, cap, cnt), 4 * len(self) + 64)
+
+    def _one_pair(self, st, out):
+        self._check(st)
+        return ScenePairs(out)
+
+    def closest_pair(self):
+        """The closest pair (smallest distance, then smallest (i, j)): (i, j, distance, points)."""
+        out = np.empty(1, SCENE_PAIR_DTYPE)
+        with self._query._lock, self._lock:
+            st = _closest(self._query._handle(), self._handle(), out.ctypes.data)
+            p = self._one_pair(st, out)
+        return int(p.i[0]), int(p.j[0]), float(p.distance[0]), p.points[0]
+
+    def closest_pair_between(self, other):
+        """The closest pair (i of this scene, j of other): (i, j, distance, points)."""
+        out = np.empty(1, SCENE_PAIR_DTYPE)
+        with self._query._lock, self._lock, other._lock:
+            st = _closest_between(self._query._handle(), self._handle(), other._handle(), out.ctypes.data)
+            p = self._one_pair(st, out)
+        return int(p.i[0]), int(p.j[0]), float(p.distance[0]), p.points[0]
+
+    def _query_object(self, obj):
+        if not isinstance(obj, GeometricObject):
+            obj = coerce(obj, Point, "obj")
+        kind, rows = _kind_rows(obj, "obj")
+        if len(rows) != 1:
+            raise ValueError("obj: expected one object, got %d" % len(rows))
+        return kind, rows
+
+    def nearest(self, obj, k=1):
+        """The k objects nearest to obj (any kind), by distance then id: ScenePairs (i = ids)."""
+        kind, rows = self._query_object(obj)
+        k = int(k)
+        out = np.empty(max(k, 1), SCENE_PAIR_DTYPE)
+        count = _c.c_size_t()
+        with self._query._lock, self._lock:
+            st = _nearest(self._query._handle(), self._handle(), kind, rows.ctypes.data, k, out.ctypes.data,
+                          _c.byref(count))
+            self._check(st)
+        return ScenePairs(out[:count.value])
+
+    def within(self, obj, delta):
+        """Every object within delta of obj (any kind), sorted by id: ScenePairs (i = ids)."""
+        kind, rows = self._query_object(obj)
+        with self._query._lock, self._lock:
+            return self._sized(lambda out, cap, cnt: _within(self._query._handle(), self._handle(), kind,
+                                                             rows.ctypes.data, float(delta), out, cap, cnt), 64)

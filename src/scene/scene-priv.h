@@ -1,0 +1,123 @@
+/* SPDX-License-Identifier: MIT */
+/* Scenes (src/scene): objects, certified bounds, the bounding-volume tree and the queries.
+ * Nothing here is exported. */
+#ifndef CDIST_SCENE_PRIV_H
+#define CDIST_SCENE_PRIV_H
+
+#include <stdatomic.h>
+#include <stdint.h>
+
+#include "internal.h"
+#include "swept/swept-priv.h"
+
+/* One object's geometry: the core (an arc is the largest) plus the ball radius. */
+typedef union cdist__scene_geom {
+    cdist_vec3 point;
+    cdist_segment segment;
+    cdist_circle circle; /* circle or disk */
+    cdist_arc arc;
+} cdist__scene_geom;
+
+enum { CD_SCENE_LIVE = 0, CD_SCENE_INVALID = 1, CD_SCENE_REMOVED = 2 };
+
+typedef struct cdist__scene_obj {
+    cdist__scene_geom g;
+    double r;       /* ball radius: 0 for the plain kinds */
+    uint8_t kind;   /* cdist_scene_kind */
+    uint8_t state;  /* CD_SCENE_LIVE, _INVALID, _REMOVED */
+    uint8_t status; /* the validation status of an invalid object */
+} cdist__scene_obj;
+
+/* An axis-aligned box that contains its object's solid (rounding included). */
+typedef struct cdist__box {
+    double lo[3], hi[3];
+} cdist__box;
+
+/* Tree node: a leaf (count > 0) holds the tree positions first .. first + count - 1; an inner
+ * node (count == 0) has its children at first and first + 1 (children come after their
+ * parent, so a backward loop refits bottom-up). */
+typedef struct cdist__node {
+    cdist__box box;
+    uint32_t first, count;
+} cdist__node;
+
+#define CD_SCENE_NO_POS UINT32_MAX
+/* The most objects a leaf holds (src/scene/scene.c builds leaves of up to CD_SCENE_LEAF). */
+#define CD_SCENE_LEAF_MAX 8
+
+struct cdist_scene {
+    atomic_int busy;
+    size_t n, cap;           /* ids given out, allocated */
+    cdist__scene_obj *obj;   /* by id */
+    uint32_t *filter;        /* by id, 2 each: group, chain (NULL until cdist_scene_set_groups) */
+    uint32_t *pos;           /* by id: position in the tree, CD_SCENE_NO_POS when not in it */
+    /* The tree over the live objects at its last build: positions 0 .. tree_n - 1. */
+    size_t tree_n;
+    uint32_t *perm;          /* by position: the id */
+    cdist__box *box;         /* by position: the object's box (empty when removed) */
+    cdist__node *node;
+    size_t node_n, node_cap;
+    int dirty;               /* objects added or revived since the build: rebuild before a query */
+    int refit_pending;       /* boxes changed since the last refit */
+    double built_leaves;     /* the sum of the leaves' box sizes at the build */
+    size_t live;
+    /* Workspaces, kept between queries. */
+    uint64_t *cand;
+    size_t cand_n, cand_cap;
+    cdist_query **worker;    /* handles of the extra threads */
+    int worker_n;
+    cdist_query **screen;    /* one per thread: the batch distance screen (1 thread each) */
+    int screen_n;
+    cdist_scene_pair *chunk_buf;
+    size_t chunk_buf_cap;
+    cdist_scene_stats stats;
+};
+
+/* Tolerances of the scene's bounds (src/base/tolerances.h has the reasons). */
+
+/* The core descriptor of an object for cdist__swept_query. */
+cdist__core_obj cdist__scene_core(const cdist__scene_obj *o);
+/* The certified solid box of a valid object. */
+void cdist__scene_box(const cdist__scene_obj *o, cdist__box *b);
+/* 1 when the signed distance of a and b is certified > lim (balls, circle-plane slabs and the
+ * ring screen, each lowered by the bound margin); 0 when the pair must be answered. */
+int cdist__scene_excluded(const cdist__scene_obj *a, const cdist__scene_obj *b, double lim, int ring);
+/* ring 0 leaves the ring screen out for two circle cores (cdist__scene_circle_pair: circles and
+ * tori), which the narrow phase screens with the batch distance kernel instead. */
+int cdist__scene_circle_pair(const cdist__scene_obj *a, const cdist__scene_obj *b);
+/* The bound margin of a pair: CD_SCENE_BOUND_REL times the two objects' coordinate scales. */
+double cdist__scene_margin(const cdist__scene_obj *a, const cdist__scene_obj *b);
+/* Validate one object of a kind (q's tolerance) into o; returns the status (o->state set). */
+cdist_status cdist__scene_make(cdist_query *q, cdist_scene_kind kind, const void *src, cdist__scene_obj *o);
+/* Bring the tree up to date (rebuild when dirty or degraded, refit when boxes grew). */
+cdist_status cdist__scene_prepare(cdist_query *q, cdist_scene *s);
+/* Take / release the scene's in-use flag. */
+int cdist__scene_take(cdist_scene *s);
+void cdist__scene_release(cdist_scene *s);
+/* Every scene call starts with cdist__scene_enter (the handle's batch flag, which also keeps
+ * its options and threads fixed, then the scene's flag; the message cleared) and ends with
+ * cdist__scene_leave, which releases both and returns st. */
+cdist_status cdist__scene_enter(cdist_query *q, cdist_scene *s);
+cdist_status cdist__scene_leave(cdist_query *q, cdist_scene *s, cdist_status st);
+/* Sort 64-bit keys ascending (tmp: n entries of scratch). */
+void cdist__radix_sort_keys(uint64_t *key, uint64_t *tmp, size_t n);
+
+/* Box gap test: every axis gap <= lim. */
+static inline int cdist__box_near(const cdist__box *a, const cdist__box *b, double lim)
+{
+    return (b->lo[0] - a->hi[0] <= lim) & (a->lo[0] - b->hi[0] <= lim) & (b->lo[1] - a->hi[1] <= lim) &
+           (a->lo[1] - b->hi[1] <= lim) & (b->lo[2] - a->hi[2] <= lim) & (a->lo[2] - b->hi[2] <= lim);
+}
+/* The largest axis gap of two boxes (a lower bound of the distance of their contents when > 0). */
+static inline double cdist__box_gap(const cdist__box *a, const cdist__box *b)
+{
+    double g = 0.0;
+    for (int k = 0; k < 3; k++) {
+        double x = b->lo[k] - a->hi[k], y = a->lo[k] - b->hi[k];
+        if (x > g) g = x;
+        if (y > g) g = y;
+    }
+    return g;
+}
+
+#endif

@@ -1,0 +1,985 @@
+/* SPDX-License-Identifier: MIT */
+/* Scene queries. A query runs in two phases: the broad phase walks the tree (two subtrees at a
+ * time) and keeps the object pairs that no certified bound excludes, as keys (i << 32 | j);
+ * the keys are sorted, and the narrow phase answers each with the exact query, chunks of keys
+ * spread over the handle's threads and committed in key order, so the output is the same for
+ * every thread count. */
+#include <pthread.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "scene-priv.h"
+
+/* Keys answered by one thread at a time, and chunks per thread and round of the narrow phase
+ * (a round's answers are committed in order before the next round starts). */
+#define CD_SCENE_CHUNK 256
+#define CD_SCENE_CHUNKS_PER_THREAD 8
+
+/* ---- pair filters ---- */
+
+static int skipped(const cdist_scene *s, size_t i, size_t j)
+{
+    if (!s->filter) return 0;
+    uint32_t ga = s->filter[2 * i], gb = s->filter[2 * j], ca = s->filter[2 * i + 1], cb = s->filter[2 * j + 1];
+    if (ga != 0 && ga == gb) return 1;
+    return j == i + 1 && ca != 0 && ca == cb;
+}
+
+static int unsupported(cdist__core_type a, cdist__core_type b)
+{
+    return (a == CD_CORE_POINT && b == CD_CORE_ARC) || (a == CD_CORE_ARC && b == CD_CORE_POINT);
+}
+
+static void pair_error(cdist_scene_pair *p, size_t i, size_t j, cdist_status st)
+{
+    p->i = i;
+    p->j = j;
+    p->distance = NAN;
+    p->status = st;
+    p->num_pairs = 0;
+    p->flags = 0;
+    p->reserved = 0;
+    for (int k = 0; k < 2; k++) p->point[k][0] = p->point[k][1] = v3(NAN, NAN, NAN);
+}
+
+/* The exact answer of the pair (a first). Returns 1 when it is to be reported: distance <= lim,
+ * or a failure (reported always). */
+static int answer(cdist_query *h, const cdist__scene_obj *a, const cdist__scene_obj *b, size_t i, size_t j, double lim,
+                  cdist_scene_pair *p)
+{
+    cdist__core_obj ca = cdist__scene_core(a), cb = cdist__scene_core(b);
+    if (unsupported(ca.type, cb.type)) {
+        pair_error(p, i, j, CDIST_ERR_BAD_KIND);
+        return 1;
+    }
+    cdist_contact c;
+    cdist_status st = cdist__swept_query(h, &ca, &cb, &c, NULL);
+    if (st) {
+        pair_error(p, i, j, st);
+        return 1;
+    }
+    if (!(c.distance <= lim)) return 0;
+    p->i = i;
+    p->j = j;
+    p->distance = c.distance;
+    p->status = CDIST_OK;
+    p->num_pairs = c.num_pairs;
+    p->flags = (c.equidistant ? CDIST_SCENE_PAIR_EQUIDISTANT : 0) |
+               ((c.flags & CDIST_CONTACT_CORE_TOUCH) ? CDIST_SCENE_PAIR_CORE_TOUCH : 0);
+    p->reserved = 0;
+    for (int k = 0; k < 2; k++) {
+        p->point[k][0] = k < c.num_pairs ? c.pairs[k].point[0] : v3(NAN, NAN, NAN);
+        p->point[k][1] = k < c.num_pairs ? c.pairs[k].point[1] : v3(NAN, NAN, NAN);
+    }
+    return 1;
+}
+
+static const char *pair_message(cdist_status st)
+{
+    return st == CDIST_ERR_BAD_KIND ? "no exact query for a point (or sphere) and an arc" : cdist_status_string(st);
+}
+
+/* ---- broad phase: pairs within delta ---- */
+
+typedef struct broad {
+    cdist_scene *sa, *sb;
+    int self;        /* one scene: pairs i < j, the skip filter applies */
+    double lim;      /* box test: max(delta, 0) (boxes bound the solids, not the signed distance) */
+    double delta;
+    size_t box_pairs;
+    uint64_t *key;
+    size_t n, cap;
+    int oom;
+} broad;
+
+static void push(broad *b, uint64_t key)
+{
+    if (b->n == b->cap) {
+        size_t cap = b->cap ? 2 * b->cap : 1024;
+        uint64_t *k = realloc(b->key, cap * sizeof *k);
+        if (!k) {
+            b->oom = 1;
+            return;
+        }
+        b->key = k;
+        b->cap = cap;
+    }
+    b->key[b->n++] = key;
+}
+
+/* The objects at tree positions pa of sa and pb of sb, ordered i < j within one scene (self):
+ * 0 when either is not live or the pair is skipped. */
+static int pair_at(const cdist_scene *sa, const cdist_scene *sb, int self, uint32_t pa, uint32_t pb, size_t *pi,
+                   size_t *pj, const cdist__scene_obj **poa, const cdist__scene_obj **pob)
+{
+    size_t i = sa->perm[pa], j = sb->perm[pb];
+    if (self && i > j) {
+        size_t t = i;
+        i = j, j = t;
+    }
+    const cdist__scene_obj *oa = &sa->obj[i], *ob = &sb->obj[j];
+    if (oa->state != CD_SCENE_LIVE || ob->state != CD_SCENE_LIVE || (self && skipped(sa, i, j))) return 0;
+    *pi = i, *pj = j, *poa = oa, *pob = ob;
+    return 1;
+}
+
+static void test_pos(broad *b, uint32_t pa, uint32_t pb)
+{
+    if (!cdist__box_near(&b->sa->box[pa], &b->sb->box[pb], b->lim)) return;
+    size_t i, j;
+    const cdist__scene_obj *oa, *ob;
+    if (!pair_at(b->sa, b->sb, b->self, pa, pb, &i, &j, &oa, &ob)) return;
+    b->box_pairs++;
+    if (cdist__scene_excluded(oa, ob, b->delta, 0)) return;
+    push(b, (uint64_t)i << 32 | j);
+}
+
+static double box_size(const cdist__box *x) { return (x->hi[0] - x->lo[0]) + (x->hi[1] - x->lo[1]) + (x->hi[2] - x->lo[2]); }
+
+static void cross(broad *b, uint32_t x, uint32_t y)
+{
+    const cdist__node *nx = &b->sa->node[x], *ny = &b->sb->node[y];
+    if (!cdist__box_near(&nx->box, &ny->box, b->lim)) return;
+    if (nx->count && ny->count) {
+        /* Only the objects near the other leaf's box can pair: a pass per leaf first. */
+        uint32_t px[CD_SCENE_LEAF_MAX], py[CD_SCENE_LEAF_MAX], mx = 0, my = 0;
+        for (uint32_t p = nx->first; p < nx->first + nx->count; p++)
+            if (cdist__box_near(&b->sa->box[p], &ny->box, b->lim)) px[mx++] = p;
+        for (uint32_t q = ny->first; q < ny->first + ny->count; q++)
+            if (cdist__box_near(&b->sb->box[q], &nx->box, b->lim)) py[my++] = q;
+        for (uint32_t u = 0; u < mx; u++)
+            for (uint32_t v = 0; v < my; v++) test_pos(b, px[u], py[v]);
+    } else if (ny->count || (!nx->count && box_size(&nx->box) >= box_size(&ny->box))) {
+        cross(b, nx->first, y);
+        cross(b, nx->first + 1, y);
+    } else {
+        cross(b, x, ny->first);
+        cross(b, x, ny->first + 1);
+    }
+}
+
+static void self(broad *b, uint32_t x)
+{
+    const cdist__node *nx = &b->sa->node[x];
+    if (nx->count) {
+        for (uint32_t p = nx->first; p < nx->first + nx->count; p++)
+            for (uint32_t q = p + 1; q < nx->first + nx->count; q++) test_pos(b, p, q);
+        return;
+    }
+    self(b, nx->first);
+    self(b, nx->first + 1);
+    cross(b, nx->first, nx->first + 1);
+}
+
+/* ---- narrow phase: threads, rounds, ordered commit ---- */
+
+typedef struct narrow {
+    cdist_scene *sa, *sb;            /* pair (i of sa, j of sb) */
+    const cdist__scene_obj *qo;      /* or (key of sa, the query object): j = SIZE_MAX */
+    const uint64_t *key;
+    size_t n;
+    double lim;
+    cdist_scene_pair *out;           /* sink: the caller's array ... */
+    size_t capacity;
+    cdist_scene_pair_fn fn;          /* ... or its callback */
+    void *user;
+    size_t count;                    /* pairs reported */
+    int stopped;                     /* the callback asked to stop */
+    cdist_status fail;               /* first failing pair (in key order) */
+    size_t fail_i, fail_j;
+    cdist_query **h;                 /* handle of thread t */
+    cdist_query **hs;                /* its screening handle (NULL: no screen) */
+    size_t round_lo, round_hi;       /* chunks of the current round */
+    atomic_size_t next;
+    cdist_scene_pair *buf;           /* CD_SCENE_CHUNK answers per chunk of the round */
+    size_t *buf_n;                   /* answers kept per chunk */
+    size_t *buf_full;                /* full queries per chunk */
+    size_t full;                     /* full queries in all */
+} narrow;
+
+/* The objects of key k: i, j (SIZE_MAX for the query object) and the second object. */
+static const cdist__scene_obj *key_pair(const narrow *w, size_t k, size_t *i, size_t *j)
+{
+    if (w->qo) {
+        *i = (size_t)w->key[k];
+        *j = SIZE_MAX;
+        return w->qo;
+    }
+    *i = (size_t)(w->key[k] >> 32);
+    *j = (size_t)(w->key[k] & 0xffffffffu);
+    return &w->sb->obj[*j];
+}
+
+/* One chunk of keys. Pairs of two circle cores are screened first by the batch distance kernel
+ * (hs, one thread): its distance is within 2 ulps of the scale of the full query's, far inside
+ * the bound margin, so a pair it puts above lim + margin is above lim; the others get the full
+ * query. */
+static void run_chunk(narrow *w, cdist_query *h, cdist_query *hs, size_t c)
+{
+    size_t lo = c * CD_SCENE_CHUNK, hi = lo + CD_SCENE_CHUNK < w->n ? lo + CD_SCENE_CHUNK : w->n;
+    size_t slot = c - w->round_lo, m = 0, nc = 0, full = 0;
+    cdist_scene_pair *out = w->buf + slot * CD_SCENE_CHUNK;
+    cdist_circle ca[CD_SCENE_CHUNK], cb[CD_SCENE_CHUNK];
+    double dist[CD_SCENE_CHUNK];
+    unsigned char screened[CD_SCENE_CHUNK];
+    for (size_t k = lo; k < hi; k++) {
+        size_t i, j;
+        const cdist__scene_obj *b = key_pair(w, k, &i, &j), *a = &w->sa->obj[i];
+        screened[k - lo] = hs && cdist__scene_circle_pair(a, b);
+        if (screened[k - lo]) {
+            ca[nc] = a->g.circle;
+            cb[nc] = b->g.circle;
+            nc++;
+        }
+    }
+    if (nc > 0 && cdist_batch_distance(hs, CDIST_KIND_CIRCLE_CIRCLE, nc, ca, sizeof ca[0], cb, sizeof cb[0], dist, NULL) ==
+                      CDIST_ERR_HANDLE_BUSY)
+        for (size_t t = 0; t < nc; t++) dist[t] = NAN;
+    nc = 0;
+    for (size_t k = lo; k < hi; k++) {
+        size_t i, j;
+        const cdist__scene_obj *b = key_pair(w, k, &i, &j), *a = &w->sa->obj[i];
+        if (screened[k - lo]) {
+            double d = dist[nc++];
+            if (d - (a->r + b->r) - cdist__scene_margin(a, b) > w->lim) continue;
+        }
+        m += answer(h, a, b, i, j, w->lim, &out[m]);
+        full++;
+    }
+    w->buf_n[slot] = m;
+    w->buf_full[slot] = full;
+}
+
+static void drain(narrow *w, cdist_query *h, cdist_query *hs)
+{
+    for (;;) {
+        size_t c = atomic_fetch_add_explicit(&w->next, 1, memory_order_relaxed);
+        if (c >= w->round_hi) return;
+        run_chunk(w, h, hs, c);
+    }
+}
+
+static void narrow_round(void *ctx, int t)
+{
+    narrow *w = ctx;
+    drain(w, w->h[t], w->hs ? w->hs[t] : NULL);
+}
+
+/* ---- threads of one call ----
+ * The handle's thread count T: T - 1 pthreads started for the call, each running fn(ctx, t)
+ * once per pool_run with its thread number t (the caller is t = 0). A thread that cannot be
+ * started leaves fewer threads: the work is shared by whoever runs, with the same answers. */
+
+typedef struct pool {
+    int threads; /* including the caller */
+    pthread_t tid[256];
+    struct pool_arg {
+        struct pool *p;
+        int t;
+    } arg[256];
+    pthread_mutex_t mutex;
+    pthread_cond_t start, done;
+    unsigned long generation;
+    int pending, quit;
+    void (*fn)(void *ctx, int t);
+    void *ctx;
+} pool;
+
+static void *pool_main(void *arg)
+{
+    struct pool_arg *a = arg;
+    pool *p = a->p;
+    unsigned long seen = 0;
+    for (;;) {
+        pthread_mutex_lock(&p->mutex);
+        while (p->generation == seen && !p->quit) pthread_cond_wait(&p->start, &p->mutex);
+        if (p->quit) {
+            pthread_mutex_unlock(&p->mutex);
+            return NULL;
+        }
+        seen = p->generation;
+        pthread_mutex_unlock(&p->mutex);
+        p->fn(p->ctx, a->t);
+        pthread_mutex_lock(&p->mutex);
+        if (--p->pending == 0) pthread_cond_signal(&p->done);
+        pthread_mutex_unlock(&p->mutex);
+    }
+}
+
+static void pool_start(pool *p, int threads)
+{
+    p->threads = 1;
+    p->generation = 0;
+    p->pending = 0;
+    p->quit = 0;
+    pthread_mutex_init(&p->mutex, NULL);
+    pthread_cond_init(&p->start, NULL);
+    pthread_cond_init(&p->done, NULL);
+    for (int t = 1; t < threads; t++) {
+        p->arg[t].p = p;
+        p->arg[t].t = t;
+        if (pthread_create(&p->tid[t], NULL, pool_main, &p->arg[t])) break;
+        p->threads++;
+    }
+}
+
+static void pool_run(pool *p, void (*fn)(void *ctx, int t), void *ctx)
+{
+    pthread_mutex_lock(&p->mutex);
+    p->fn = fn;
+    p->ctx = ctx;
+    p->pending = p->threads - 1;
+    p->generation++;
+    pthread_cond_broadcast(&p->start);
+    pthread_mutex_unlock(&p->mutex);
+    fn(ctx, 0);
+    pthread_mutex_lock(&p->mutex);
+    while (p->pending > 0) pthread_cond_wait(&p->done, &p->mutex);
+    pthread_mutex_unlock(&p->mutex);
+}
+
+static void pool_stop(pool *p)
+{
+    pthread_mutex_lock(&p->mutex);
+    p->quit = 1;
+    pthread_cond_broadcast(&p->start);
+    pthread_mutex_unlock(&p->mutex);
+    for (int t = 1; t < p->threads; t++) pthread_join(p->tid[t], NULL);
+    pthread_cond_destroy(&p->done);
+    pthread_cond_destroy(&p->start);
+    pthread_mutex_destroy(&p->mutex);
+}
+
+static void commit(narrow *w, const cdist_scene_pair *p, size_t m)
+{
+    for (size_t k = 0; k < m; k++) {
+        if (p[k].status != CDIST_OK && w->fail == CDIST_OK) {
+            w->fail = (cdist_status)p[k].status;
+            w->fail_i = p[k].i;
+            w->fail_j = p[k].j;
+        }
+        if (w->out && w->count + k < w->capacity) w->out[w->count + k] = p[k];
+    }
+    if (w->fn && m > 0 && !w->stopped && w->fn(w->user, p, m) != 0) w->stopped = 1;
+    w->count += m;
+}
+
+/* Handles with the options of q, created once per scene and kept: *list grows to n. */
+static cdist_status sync_handles(cdist_query *q, cdist_query ***list, int *have, int n)
+{
+    if (*have < n) {
+        cdist_query **h = realloc(*list, (size_t)n * sizeof *h);
+        if (!h) return cdist__fail(q, CDIST_ERR_NO_MEMORY, "scene: out of memory for %d thread handles", n);
+        *list = h;
+        while (*have < n) {
+            if (!(h[*have] = cdist_query_new()))
+                return cdist__fail(q, CDIST_ERR_NO_MEMORY, "scene: out of memory for %d thread handles", n);
+            (*have)++;
+        }
+    }
+    for (int t = 0; t < n; t++) {
+        cdist_query *w = (*list)[t];
+        cdist_status st;
+        if ((st = cdist_query_set_method(w, cdist_query_get_method(q))) ||
+            (st = cdist_query_set_unit_tolerance(w, cdist_query_get_unit_tolerance(q))) ||
+            (st = cdist_query_set_curve_samples(w, cdist_query_get_curve_samples(q))) ||
+            (st = cdist_query_set_max_iterations(w, cdist_query_get_max_iterations(q))))
+            return cdist__fail(q, st, "scene: thread handle: %s", cdist_query_last_error(w));
+    }
+    return CDIST_OK;
+}
+
+/* The threads of a call: the handle's count (1 when their handles cannot be made ready), their
+ * handles, and one screening handle per thread (*screen NULL when those cannot be made). */
+static int call_threads(cdist_query *q, cdist_scene *s, cdist_query **handles, cdist_query ***screen)
+{
+    int threads = cdist_query_get_threads(q);
+    if (threads > 1 && sync_handles(q, &s->worker, &s->worker_n, threads - 1)) threads = 1;
+    handles[0] = q;
+    for (int t = 1; t < threads; t++) handles[t] = s->worker[t - 1];
+    *screen = sync_handles(q, &s->screen, &s->screen_n, threads) ? NULL : s->screen;
+    return threads;
+}
+
+/* Answer w->n keys with the pool's threads; reports go to the sink in key order. */
+static cdist_status run_narrow(cdist_query *q, cdist_scene *s, narrow *w, pool *p)
+{
+    size_t chunks = (w->n + CD_SCENE_CHUNK - 1) / CD_SCENE_CHUNK;
+    size_t per_round = (size_t)p->threads * CD_SCENE_CHUNKS_PER_THREAD;
+    size_t need = per_round * CD_SCENE_CHUNK;
+    if (s->chunk_buf_cap < need) {
+        cdist_scene_pair *b = realloc(s->chunk_buf, need * sizeof *b);
+        if (!b) return cdist__fail(q, CDIST_ERR_NO_MEMORY, "scene: out of memory for the answer buffers");
+        s->chunk_buf = b;
+        s->chunk_buf_cap = need;
+    }
+    size_t buf_n[256 * CD_SCENE_CHUNKS_PER_THREAD], buf_full[256 * CD_SCENE_CHUNKS_PER_THREAD];
+    w->buf = s->chunk_buf;
+    w->buf_n = buf_n;
+    w->buf_full = buf_full;
+    for (size_t r = 0; r < chunks && !w->stopped; r += per_round) {
+        w->round_lo = r;
+        w->round_hi = r + per_round < chunks ? r + per_round : chunks;
+        atomic_store_explicit(&w->next, r, memory_order_relaxed);
+        if (p->threads > 1 && w->round_hi - w->round_lo > 1) pool_run(p, narrow_round, w);
+        else narrow_round(w, 0);
+        for (size_t c = w->round_lo; c < w->round_hi && !w->stopped; c++) {
+            commit(w, w->buf + (c - w->round_lo) * CD_SCENE_CHUNK, buf_n[c - w->round_lo]);
+            w->full += buf_full[c - w->round_lo];
+        }
+    }
+    w->buf_n = w->buf_full = NULL;
+    return CDIST_OK;
+}
+
+/* The status of a finished narrow phase, with the message of its first failing pair. */
+static cdist_status narrow_status(cdist_query *q, const narrow *w, const char *what)
+{
+    cdist__begin(q, NULL);
+    if (w->stopped) return cdist__fail(q, CDIST_ERR_CALLBACK_FAILED, "scene %s: the pair callback stopped the query", what);
+    if (w->fail == CDIST_OK) return CDIST_OK;
+    if (w->fail_j == SIZE_MAX)
+        return cdist__fail(q, w->fail, "scene %s: object %zu and the query object: %s", what, w->fail_i,
+                           pair_message(w->fail));
+    return cdist__fail(q, w->fail, "scene %s: pair (%zu, %zu): %s", what, w->fail_i, w->fail_j, pair_message(w->fail));
+}
+
+/* ---- pairs within delta ---- */
+
+static cdist_status check_delta(cdist_query *q, double delta, const void *out, size_t capacity)
+{
+    if (isnan(delta)) return cdist__fail(q, CDIST_ERR_NOT_FINITE, "scene: delta is NaN");
+    if (!out && capacity > 0)
+        return cdist__fail(q, CDIST_ERR_NULL_ARGUMENT, "scene: output array is NULL with capacity %zu", capacity);
+    return CDIST_OK;
+}
+
+/* Sort the candidate keys (the scratch lives for the sort only: it would double the
+ * candidates' share of the scene's memory). */
+static cdist_status sort_keys(cdist_query *q, uint64_t *key, size_t n)
+{
+    if (n < 2) return CDIST_OK;
+    uint64_t *tmp = malloc(n * sizeof *tmp);
+    if (!tmp) return cdist__fail(q, CDIST_ERR_NO_MEMORY, "scene: out of memory for sorting %zu candidate pairs", n);
+    cdist__radix_sort_keys(key, tmp, n);
+    free(tmp);
+    return CDIST_OK;
+}
+
+/* ---- the broad phase on several threads: subtree pairs from the top of the traversal as
+ * tasks, each thread with its own key list; the lists are joined and sorted, so the keys are
+ * those of the one-thread traversal in the same order. */
+
+typedef struct btask {
+    uint32_t x, y;
+    int self;
+} btask;
+
+typedef struct broad_par {
+    broad *b; /* one per thread */
+    const btask *task;
+    size_t n_tasks;
+    atomic_size_t next;
+} broad_par;
+
+static void broad_round(void *ctx, int t)
+{
+    broad_par *bp = ctx;
+    broad *b = &bp->b[t];
+    for (;;) {
+        size_t k = atomic_fetch_add_explicit(&bp->next, 1, memory_order_relaxed);
+        if (k >= bp->n_tasks) return;
+        const btask *x = &bp->task[k];
+        if (x->self) self(b, x->x);
+        else cross(b, x->x, x->y);
+    }
+}
+
+/* At least `want` tasks (fewer when the tree is small), by expanding the traversal's first
+ * levels exactly as self() and cross() would. NULL when memory runs out. */
+static btask *make_tasks(const broad *b, size_t want, size_t *n_out)
+{
+    size_t n = 1, cap = 16;
+    btask *cur = malloc(cap * sizeof *cur);
+    if (!cur) return NULL;
+    cur[0] = (btask){0, 0, b->self};
+    for (int level = 0; level < 32 && n < want; level++) {
+        btask *nx = malloc(3 * n * sizeof *nx);
+        if (!nx) {
+            free(cur);
+            return NULL;
+        }
+        size_t m = 0;
+        int grew = 0;
+        for (size_t k = 0; k < n; k++) {
+            btask t = cur[k];
+            const cdist__node *nx_ = &b->sa->node[t.x], *ny_ = &b->sb->node[t.y];
+            if (t.self) {
+                if (nx_->count) {
+                    nx[m++] = t;
+                } else {
+                    nx[m++] = (btask){nx_->first, nx_->first, 1};
+                    nx[m++] = (btask){nx_->first + 1, nx_->first + 1, 1};
+                    nx[m++] = (btask){nx_->first, nx_->first + 1, 0};
+                    grew = 1;
+                }
+                continue;
+            }
+            if (!cdist__box_near(&nx_->box, &ny_->box, b->lim)) continue;
+            if (nx_->count && ny_->count) {
+                nx[m++] = t;
+            } else if (ny_->count || (!nx_->count && box_size(&nx_->box) >= box_size(&ny_->box))) {
+                nx[m++] = (btask){nx_->first, t.y, 0};
+                nx[m++] = (btask){nx_->first + 1, t.y, 0};
+                grew = 1;
+            } else {
+                nx[m++] = (btask){t.x, ny_->first, 0};
+                nx[m++] = (btask){t.x, ny_->first + 1, 0};
+                grew = 1;
+            }
+        }
+        free(cur);
+        cur = nx;
+        n = m;
+        if (!grew) break;
+    }
+    *n_out = n;
+    return cur;
+}
+
+/* The candidate keys of sa x sb into sa->cand (unsorted), on the pool's threads. */
+static cdist_status broad_run(cdist_query *q, broad *b, pool *p, const char *what)
+{
+    cdist_scene *sa = b->sa;
+    if (sa->node_n == 0 || b->sb->node_n == 0) return CDIST_OK;
+    if (p->threads == 1) {
+        if (b->self) self(b, 0);
+        else cross(b, 0, 0);
+        sa->cand = b->key;
+        sa->cand_cap = b->cap;
+        return b->oom ? cdist__fail(q, CDIST_ERR_NO_MEMORY, "scene %s: out of memory for the candidate pairs", what)
+                      : CDIST_OK;
+    }
+    size_t n_tasks = 0;
+    btask *task = make_tasks(b, (size_t)p->threads * 32, &n_tasks);
+    broad per[256];
+    for (int t = 0; t < p->threads; t++) {
+        per[t] = *b;
+        per[t].key = NULL;
+        per[t].n = per[t].cap = 0;
+    }
+    per[0].key = b->key; /* the scene's kept list */
+    per[0].cap = b->cap;
+    broad_par bp = {per, task, n_tasks, 0};
+    atomic_init(&bp.next, 0);
+    if (task) pool_run(p, broad_round, &bp);
+    size_t total = 0;
+    int oom = !task;
+    for (int t = 0; t < p->threads; t++) total += per[t].n, oom |= per[t].oom;
+    uint64_t *key = per[0].key;
+    size_t cap = per[0].cap;
+    if (!oom && total > cap) {
+        uint64_t *k = realloc(key, total * sizeof *k);
+        if (k) key = k, cap = total;
+        else oom = 1;
+    }
+    size_t n = per[0].n;
+    for (int t = 1; t < p->threads; t++) {
+        if (!oom && per[t].n > 0) memcpy(key + n, per[t].key, per[t].n * sizeof *key);
+        n += per[t].n;
+        free(per[t].key);
+        b->box_pairs += per[t].box_pairs;
+    }
+    b->box_pairs += per[0].box_pairs;
+    b->n = n;
+    sa->cand = key;
+    sa->cand_cap = cap;
+    free(task);
+    return oom ? cdist__fail(q, CDIST_ERR_NO_MEMORY, "scene %s: out of memory for the candidate pairs", what) : CDIST_OK;
+}
+
+/* Broad and narrow phase of pairs within delta of sa (x) sb (self when sa == sb). */
+static cdist_status pairs_run(cdist_query *q, cdist_scene *sa, cdist_scene *sb, double delta, narrow *w,
+                              const char *what)
+{
+    cdist_status st;
+    if ((st = cdist__scene_prepare(q, sa)) || (sb != sa && (st = cdist__scene_prepare(q, sb)))) return st;
+    cdist_query *handles[256], **screen;
+    pool p;
+    pool_start(&p, call_threads(q, sa, handles, &screen));
+    broad b = {sa, sb, sa == sb, fmax(delta, 0.0), delta, 0, sa->cand, 0, sa->cand_cap, 0};
+    if (!(st = broad_run(q, &b, &p, what)) && !(st = sort_keys(q, sa->cand, b.n))) {
+        w->sa = sa;
+        w->sb = sb;
+        w->key = sa->cand;
+        w->n = b.n;
+        w->lim = delta;
+        w->h = handles;
+        w->hs = screen;
+        st = run_narrow(q, sa, w, &p);
+    }
+    pool_stop(&p);
+    if (st) return st;
+    sa->stats.box_pairs = b.box_pairs;
+    sa->stats.screened = b.n;
+    sa->stats.candidates = w->full;
+    sa->stats.reported = w->count;
+    return narrow_status(q, w, what);
+}
+
+static cdist_status pairs_entry(cdist_query *q, cdist_scene *sa, cdist_scene *sb, double delta, cdist_scene_pair *out,
+                                size_t capacity, cdist_scene_pair_fn fn, void *user, size_t *count)
+{
+    if (count) *count = 0;
+    cdist_status st = cdist__scene_enter(q, sa);
+    if (st) return st;
+    if (sb != sa && sb && !cdist__scene_take(sb))
+        return cdist__scene_leave(q, sa, cdist__fail(q, CDIST_ERR_HANDLE_BUSY, "scene: in use by another call"));
+    const char *what = sb == sa ? "pairs_within" : "pairs_between";
+    if (!sb) st = cdist__fail(q, CDIST_ERR_NULL_ARGUMENT, "scene pointer is NULL");
+    else if (!fn && (st = check_delta(q, delta, out, capacity))) (void)0;
+    else if (fn && isnan(delta)) st = cdist__fail(q, CDIST_ERR_NOT_FINITE, "scene: delta is NaN");
+    else {
+        narrow w;
+        memset(&w, 0, sizeof w);
+        w.out = out;
+        w.capacity = out ? capacity : 0;
+        w.fn = fn;
+        w.user = user;
+        st = pairs_run(q, sa, sb, delta, &w, what);
+        if (count) *count = w.count;
+    }
+    if (sb && sb != sa) cdist__scene_release(sb);
+    return cdist__scene_leave(q, sa, st);
+}
+
+cdist_status cdist_scene_pairs_within(cdist_query *q, cdist_scene *s, double delta, cdist_scene_pair *out,
+                                      size_t capacity, size_t *count)
+{
+    return pairs_entry(q, s, s, delta, out, capacity, NULL, NULL, count);
+}
+
+cdist_status cdist_scene_pairs_within_fn(cdist_query *q, cdist_scene *s, double delta, cdist_scene_pair_fn fn,
+                                         void *user, size_t *count)
+{
+    if (!fn) {
+        if (count) *count = 0;
+        cdist_status st = cdist__scene_enter(q, s);
+        if (st) return st;
+        return cdist__scene_leave(q, s, cdist__fail(q, CDIST_ERR_NULL_ARGUMENT, "scene: pair callback is NULL"));
+    }
+    return pairs_entry(q, s, s, delta, NULL, 0, fn, user, count);
+}
+
+cdist_status cdist_scene_pairs_between(cdist_query *q, cdist_scene *a, cdist_scene *b, double delta,
+                                       cdist_scene_pair *out, size_t capacity, size_t *count)
+{
+    return pairs_entry(q, a, b, delta, out, capacity, NULL, NULL, count);
+}
+
+/* ---- closest pair: branch and bound over the tree ---- */
+
+typedef struct closest {
+    cdist_scene *sa, *sb;
+    int self;
+    cdist_query *h;
+    double best;              /* distance of the best pair so far */
+    uint64_t best_key;
+    cdist_scene_pair rec;
+    int have;
+    cdist_scene_pair err;     /* first failing pair */
+    size_t box_pairs, candidates;
+} closest;
+
+/* Boxes bound the solids: a box gap g > 0 means a signed distance >= g, and says nothing about
+ * overlapping solids; so a box pair is pruned when its gap exceeds max(best, 0). */
+static double box_cut(const closest *c) { return c->best > 0.0 ? c->best : 0.0; }
+
+static void best_pos(closest *c, uint32_t pa, uint32_t pb)
+{
+    if (cdist__box_gap(&c->sa->box[pa], &c->sb->box[pb]) > box_cut(c)) return;
+    size_t i, j;
+    const cdist__scene_obj *oa, *ob;
+    if (!pair_at(c->sa, c->sb, c->self, pa, pb, &i, &j, &oa, &ob)) return;
+    c->box_pairs++;
+    if (cdist__scene_excluded(oa, ob, c->best, 1)) return;
+    c->candidates++;
+    cdist_scene_pair p;
+    answer(c->h, oa, ob, i, j, INFINITY, &p);
+    uint64_t key = (uint64_t)i << 32 | j;
+    if (p.status != CDIST_OK) {
+        if (c->err.status == CDIST_OK) c->err = p;
+        return;
+    }
+    if (!c->have || p.distance < c->best || (p.distance == c->best && key < c->best_key)) {
+        c->have = 1;
+        c->best = p.distance;
+        c->best_key = key;
+        c->rec = p;
+    }
+}
+
+static void best_cross(closest *c, uint32_t x, uint32_t y)
+{
+    const cdist__node *nx = &c->sa->node[x], *ny = &c->sb->node[y];
+    if (cdist__box_gap(&nx->box, &ny->box) > box_cut(c)) return;
+    if (nx->count && ny->count) {
+        for (uint32_t p = nx->first; p < nx->first + nx->count; p++)
+            for (uint32_t q = ny->first; q < ny->first + ny->count; q++) best_pos(c, p, q);
+        return;
+    }
+    uint32_t a0, a1, b0, b1;
+    if (ny->count || (!nx->count && box_size(&nx->box) >= box_size(&ny->box)))
+        a0 = nx->first, a1 = nx->first + 1, b0 = b1 = y;
+    else
+        a0 = a1 = x, b0 = ny->first, b1 = ny->first + 1;
+    /* The nearer pair of subtrees first: a small best early prunes the rest. */
+    double g0 = cdist__box_gap(&c->sa->node[a0].box, &c->sb->node[b0].box);
+    double g1 = cdist__box_gap(&c->sa->node[a1].box, &c->sb->node[b1].box);
+    if (g1 < g0) {
+        best_cross(c, a1, b1);
+        best_cross(c, a0, b0);
+    } else {
+        best_cross(c, a0, b0);
+        best_cross(c, a1, b1);
+    }
+}
+
+static void best_self(closest *c, uint32_t x)
+{
+    const cdist__node *nx = &c->sa->node[x];
+    if (nx->count) {
+        for (uint32_t p = nx->first; p < nx->first + nx->count; p++)
+            for (uint32_t q = p + 1; q < nx->first + nx->count; q++) best_pos(c, p, q);
+        return;
+    }
+    best_self(c, nx->first);
+    best_self(c, nx->first + 1);
+    best_cross(c, nx->first, nx->first + 1);
+}
+
+static cdist_status closest_entry(cdist_query *q, cdist_scene *sa, cdist_scene *sb, cdist_scene_pair *out)
+{
+    cdist_status st = cdist__scene_enter(q, sa);
+    if (st) {
+        if (out) pair_error(out, SIZE_MAX, SIZE_MAX, st);
+        return st;
+    }
+    if (sb != sa && sb && !cdist__scene_take(sb)) {
+        if (out) pair_error(out, SIZE_MAX, SIZE_MAX, CDIST_ERR_HANDLE_BUSY);
+        return cdist__scene_leave(q, sa, cdist__fail(q, CDIST_ERR_HANDLE_BUSY, "scene: in use by another call"));
+    }
+    const char *what = sb == sa ? "closest_pair" : "closest_pair_between";
+    if (!sb) st = cdist__fail(q, CDIST_ERR_NULL_ARGUMENT, "scene pointer is NULL");
+    else if (!out) st = cdist__fail(q, CDIST_ERR_NULL_ARGUMENT, "scene %s: output pointer is NULL", what);
+    else if (!(st = cdist__scene_prepare(q, sa)) && (sb == sa || !(st = cdist__scene_prepare(q, sb)))) {
+        closest c;
+        memset(&c, 0, sizeof c);
+        c.sa = sa;
+        c.sb = sb;
+        c.self = sa == sb;
+        c.h = q;
+        c.best = INFINITY;
+        c.err.status = CDIST_OK;
+        if (sa->node_n > 0 && sb->node_n > 0) {
+            if (c.self) best_self(&c, 0);
+            else best_cross(&c, 0, 0);
+        }
+        sa->stats.box_pairs = c.box_pairs;
+        sa->stats.screened = c.candidates;
+        sa->stats.candidates = c.candidates;
+        sa->stats.reported = c.have;
+        cdist__begin(q, NULL);
+        if (c.err.status != CDIST_OK) {
+            *out = c.err;
+            st = cdist__fail(q, (cdist_status)c.err.status, "scene %s: pair (%zu, %zu): %s", what, c.err.i, c.err.j,
+                             pair_message((cdist_status)c.err.status));
+        } else if (!c.have) {
+            pair_error(out, SIZE_MAX, SIZE_MAX, CDIST_ERR_BAD_INTERVAL);
+            st = cdist__fail(q, CDIST_ERR_BAD_INTERVAL, "scene %s: no pair of live objects", what);
+        } else {
+            *out = c.rec;
+        }
+    }
+    if (st && out && st != CDIST_ERR_BAD_KIND && st != CDIST_ERR_BAD_INTERVAL && out->status == CDIST_OK)
+        pair_error(out, SIZE_MAX, SIZE_MAX, st);
+    if (sb && sb != sa) cdist__scene_release(sb);
+    return cdist__scene_leave(q, sa, st);
+}
+
+cdist_status cdist_scene_closest_pair(cdist_query *q, cdist_scene *s, cdist_scene_pair *out)
+{
+    return closest_entry(q, s, s, out);
+}
+
+cdist_status cdist_scene_closest_pair_between(cdist_query *q, cdist_scene *a, cdist_scene *b, cdist_scene_pair *out)
+{
+    return closest_entry(q, a, b, out);
+}
+
+/* ---- a query object: nearest k, within delta ---- */
+
+typedef struct near_q {
+    cdist_scene *s;
+    const cdist__scene_obj *qo;
+    cdist__box qbox;
+    cdist_query *h;
+    /* nearest: the k best (distance, id) so far, sorted */
+    cdist_scene_pair *res;
+    size_t k, n;
+    cdist_scene_pair err;
+    /* within: the keys */
+    broad *b;
+} near_q;
+
+static double near_cut(const near_q *c) { return c->n < c->k ? INFINITY : c->res[c->k - 1].distance; }
+
+static void near_obj(near_q *c, uint32_t p)
+{
+    double cut = near_cut(c);
+    if (cdist__box_gap(&c->s->box[p], &c->qbox) > (cut > 0.0 ? cut : 0.0)) return;
+    size_t i = c->s->perm[p];
+    const cdist__scene_obj *o = &c->s->obj[i];
+    if (o->state != CD_SCENE_LIVE || cdist__scene_excluded(o, c->qo, cut, 1)) return;
+    cdist_scene_pair r;
+    answer(c->h, o, c->qo, i, SIZE_MAX, INFINITY, &r);
+    if (r.status != CDIST_OK) {
+        if (c->err.status == CDIST_OK || i < c->err.i) c->err = r;
+        return;
+    }
+    /* insert by (distance, id) */
+    size_t at = c->n < c->k ? c->n : c->k;
+    while (at > 0 && (c->res[at - 1].distance > r.distance ||
+                      (c->res[at - 1].distance == r.distance && c->res[at - 1].i > i))) {
+        if (at < c->k) c->res[at] = c->res[at - 1];
+        at--;
+    }
+    if (at < c->k) {
+        c->res[at] = r;
+        if (c->n < c->k) c->n++;
+    }
+}
+
+static void near_node(near_q *c, uint32_t x)
+{
+    const cdist__node *nx = &c->s->node[x];
+    double cut = near_cut(c);
+    if (cdist__box_gap(&nx->box, &c->qbox) > (cut > 0.0 ? cut : 0.0)) return;
+    if (nx->count) {
+        for (uint32_t p = nx->first; p < nx->first + nx->count; p++) near_obj(c, p);
+        return;
+    }
+    uint32_t a = nx->first, b = nx->first + 1;
+    if (cdist__box_gap(&c->s->node[b].box, &c->qbox) < cdist__box_gap(&c->s->node[a].box, &c->qbox)) a = b, b = nx->first;
+    near_node(c, a);
+    near_node(c, b);
+}
+
+static void within_node(near_q *c, uint32_t x)
+{
+    const cdist__node *nx = &c->s->node[x];
+    if (!cdist__box_near(&nx->box, &c->qbox, c->b->lim)) return;
+    if (nx->count) {
+        for (uint32_t p = nx->first; p < nx->first + nx->count; p++) {
+            if (!cdist__box_near(&c->s->box[p], &c->qbox, c->b->lim)) continue;
+            size_t i = c->s->perm[p];
+            const cdist__scene_obj *o = &c->s->obj[i];
+            if (o->state != CD_SCENE_LIVE) continue;
+            c->b->box_pairs++;
+            if (cdist__scene_excluded(o, c->qo, c->b->delta, 0)) continue;
+            push(c->b, i);
+        }
+        return;
+    }
+    within_node(c, nx->first);
+    within_node(c, nx->first + 1);
+}
+
+static cdist_status query_object(cdist_query *q, cdist_scene_kind kind, const void *object, cdist__scene_obj *o)
+{
+    if (!object) return cdist__fail(q, CDIST_ERR_NULL_ARGUMENT, "scene: query object pointer is NULL");
+    cdist_status st = cdist__scene_make(q, kind, object, o);
+    if (st) return cdist__fail(q, st, "scene: query object: %.200s", cdist_query_last_error(q));
+    return CDIST_OK;
+}
+
+cdist_status cdist_scene_nearest(cdist_query *q, cdist_scene *s, cdist_scene_kind kind, const void *object, size_t k,
+                                 cdist_scene_pair *out, size_t *count)
+{
+    if (count) *count = 0;
+    cdist_status st = cdist__scene_enter(q, s);
+    if (st) return st;
+    cdist__scene_obj qo;
+    if (!out && k > 0) st = cdist__fail(q, CDIST_ERR_NULL_ARGUMENT, "scene nearest: output array is NULL with k = %zu", k);
+    else if (!(st = query_object(q, kind, object, &qo)) && !(st = cdist__scene_prepare(q, s)) && k > 0) {
+        near_q c;
+        memset(&c, 0, sizeof c);
+        c.s = s;
+        c.qo = &qo;
+        cdist__scene_box(&qo, &c.qbox);
+        c.h = q;
+        c.res = out;
+        c.k = k;
+        c.err.status = CDIST_OK;
+        if (s->node_n > 0) near_node(&c, 0);
+        if (count) *count = c.n;
+        cdist__begin(q, NULL);
+        if (c.err.status != CDIST_OK)
+            st = cdist__fail(q, (cdist_status)c.err.status, "scene nearest: object %zu and the query object: %s", c.err.i,
+                             pair_message((cdist_status)c.err.status));
+    }
+    return cdist__scene_leave(q, s, st);
+}
+
+cdist_status cdist_scene_within(cdist_query *q, cdist_scene *s, cdist_scene_kind kind, const void *object, double delta,
+                                cdist_scene_pair *out, size_t capacity, size_t *count)
+{
+    if (count) *count = 0;
+    cdist_status st = cdist__scene_enter(q, s);
+    if (st) return st;
+    cdist__scene_obj qo;
+    if (!(st = check_delta(q, delta, out, capacity)) && !(st = query_object(q, kind, object, &qo)) &&
+        !(st = cdist__scene_prepare(q, s))) {
+        broad b = {s, s, 0, fmax(delta, 0.0), delta, 0, s->cand, 0, s->cand_cap, 0};
+        near_q c;
+        memset(&c, 0, sizeof c);
+        c.s = s;
+        c.qo = &qo;
+        cdist__scene_box(&qo, &c.qbox);
+        c.b = &b;
+        if (s->node_n > 0) within_node(&c, 0);
+        s->cand = b.key;
+        s->cand_cap = b.cap;
+        if (b.oom) {
+            st = cdist__fail(q, CDIST_ERR_NO_MEMORY, "scene within: out of memory for the candidates");
+        } else {
+            if (!(st = sort_keys(q, s->cand, b.n))) {
+                narrow w;
+                memset(&w, 0, sizeof w);
+                w.sa = s;
+                w.qo = &qo;
+                w.key = s->cand;
+                w.n = b.n;
+                w.lim = delta;
+                w.out = out;
+                w.capacity = out ? capacity : 0;
+                cdist_query *handles[256], **screen;
+                pool p;
+                pool_start(&p, call_threads(q, s, handles, &screen));
+                w.h = handles;
+                w.hs = screen;
+                st = run_narrow(q, s, &w, &p);
+                pool_stop(&p);
+                if (!st) {
+                    s->stats.box_pairs = b.box_pairs;
+                    s->stats.screened = b.n;
+                    s->stats.candidates = w.full;
+                    s->stats.reported = w.count;
+                    if (count) *count = w.count;
+                    st = narrow_status(q, &w, "within");
+                }
+            }
+        }
+    }
+    return cdist__scene_leave(q, s, st);
+}

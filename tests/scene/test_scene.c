@@ -1,0 +1,615 @@
+/* SPDX-License-Identifier: MIT */
+/* Scenes against brute force: for random and degenerate scenes (coplanar, concentric, coaxial,
+ * duplicates, mixed kinds, scales 1e-6 .. 1e6 mixed, 1e8 spread) every query equals the O(N^2)
+ * loop over the pair queries: the same pairs, distances and points bit for bit, for 1 and 2
+ * threads, and after random updates, removals and additions. The loop's pair query is the swept
+ * query of the two objects (internal; its agreement with the public single queries is checked
+ * on the side), so what is tested is that the broad phase never loses a pair and the
+ * bookkeeping never mixes them up. Bad input gets its statuses. */
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "check.h"
+#include "test_rand.h"
+#include "scene/scene-priv.h"
+
+/* One object as the caller gives it. */
+typedef struct tobj {
+    cdist_scene_kind kind;
+    union {
+        cdist_vec3 point;
+        cdist_segment segment;
+        cdist_circle circle;
+        cdist_arc arc;
+        cdist_sphere sphere;
+        cdist_capsule capsule;
+        cdist_torus torus;
+        cdist_rounded_disk rdisk;
+    } u;
+    int live; /* 1 live, 0 removed or invalid */
+    unsigned group, chain;
+} tobj;
+
+static double rsym(void) { return 2 * rnd01() - 1; }
+static cdist_vec3 rvec(double s) { return tv(s * rsym(), s * rsym(), s * rsym()); }
+static cdist_vec3 vadd(cdist_vec3 a, cdist_vec3 b) { return tv(a.x + b.x, a.y + b.y, a.z + b.z); }
+
+static tobj make(cdist_scene_kind kind, cdist_vec3 c, double size, cdist_vec3 n)
+{
+    tobj o;
+    memset(&o, 0, sizeof o);
+    o.kind = kind;
+    o.live = 1;
+    double R = size * (0.5 + rnd01()), r = size * 0.2 * rnd01();
+    cdist_vec3 d = rvec(size);
+    switch (kind) {
+    case CDIST_SCENE_POINT: o.u.point = c; break;
+    case CDIST_SCENE_SEGMENT: o.u.segment = (cdist_segment){c, vadd(c, d)}; break;
+    case CDIST_SCENE_CIRCLE:
+    case CDIST_SCENE_DISK: o.u.circle = (cdist_circle){c, n, R}; break;
+    case CDIST_SCENE_ARC: {
+        double a0 = 3 * rsym();
+        o.u.arc = (cdist_arc){{c, n, R}, rnd_unit_vec(), a0, a0 + 6 * rnd01()};
+        break;
+    }
+    case CDIST_SCENE_SPHERE: o.u.sphere = (cdist_sphere){c, r}; break;
+    case CDIST_SCENE_CAPSULE: o.u.capsule = (cdist_capsule){{c, vadd(c, d)}, r}; break;
+    case CDIST_SCENE_TORUS: o.u.torus = (cdist_torus){{c, n, R}, r}; break;
+    case CDIST_SCENE_ROUNDED_DISK: o.u.rdisk = (cdist_rounded_disk){{c, n, R}, r}; break;
+    }
+    return o;
+}
+
+/* ---- the brute-force reference ---- */
+
+typedef struct tpair {
+    size_t i, j;
+    double d;
+    int status, num_pairs, flags;
+    cdist_vec3 p[2][2];
+} tpair;
+
+static cdist_query *Q;
+
+/* The pair query of objects a (first) and b, as the reference answers it. */
+static int ref_pair(const tobj *a, const tobj *b, tpair *t)
+{
+    cdist__scene_obj oa, ob;
+    if (cdist__scene_make(Q, a->kind, &a->u, &oa) || cdist__scene_make(Q, b->kind, &b->u, &ob)) return -1;
+    cdist__core_obj ca = cdist__scene_core(&oa), cb = cdist__scene_core(&ob);
+    if ((ca.type == CD_CORE_POINT && cb.type == CD_CORE_ARC) || (ca.type == CD_CORE_ARC && cb.type == CD_CORE_POINT))
+        return 1; /* no exact query: the scene reports the pair with CDIST_ERR_BAD_KIND or excludes it */
+    cdist_contact c;
+    cdist_status st = cdist__swept_query(Q, &ca, &cb, &c, NULL);
+    if (st) {
+        fprintf(stderr, "reference query failed: %s\n", cdist_query_last_error(Q));
+        return -1;
+    }
+    t->d = c.distance;
+    t->status = 0;
+    t->num_pairs = c.num_pairs;
+    t->flags = (c.equidistant ? 1 : 0) | ((c.flags & 1) ? 2 : 0);
+    for (int k = 0; k < c.num_pairs; k++) {
+        t->p[k][0] = c.pairs[k].point[0];
+        t->p[k][1] = c.pairs[k].point[1];
+    }
+    return 0;
+}
+
+static int skip_ref(const tobj *o, size_t i, size_t j)
+{
+    if (o[i].group && o[i].group == o[j].group) return 1;
+    return j == i + 1 && o[i].chain && o[i].chain == o[j].chain;
+}
+
+static int same_bits(double a, double b) { return memcmp(&a, &b, sizeof a) == 0; }
+static int same_vec(cdist_vec3 a, cdist_vec3 b) { return same_bits(a.x, b.x) && same_bits(a.y, b.y) && same_bits(a.z, b.z); }
+
+static int pair_equal(const cdist_scene_pair *s, const tpair *t)
+{
+    if (s->i != t->i || s->j != t->j || s->status != 0 || !same_bits(s->distance, t->d) ||
+        s->num_pairs != t->num_pairs || s->flags != t->flags)
+        return 0;
+    for (int k = 0; k < t->num_pairs; k++)
+        if (!same_vec(s->point[k][0], t->p[k][0]) || !same_vec(s->point[k][1], t->p[k][1])) return 0;
+    return 1;
+}
+
+/* Compare the scene's pairs (sorted) with the reference list over the same index pairs: every
+ * supported pair equal, unsupported pairs may appear only with CDIST_ERR_BAD_KIND. */
+static int compare(const char *what, const cdist_scene_pair *got, size_t ng, const tpair *want, size_t nw,
+                   const tobj *oa, const tobj *ob)
+{
+    size_t a = 0, b = 0;
+    int bad = 0;
+    while (a < ng || b < nw) {
+        if (a < ng && got[a].status == CDIST_ERR_BAD_KIND) {
+            tpair t;
+            if (ref_pair(&oa[got[a].i], got[a].j == SIZE_MAX ? ob : &ob[got[a].j], &t) != 1) bad++;
+            a++;
+            continue;
+        }
+        if (a < ng && b < nw && pair_equal(&got[a], &want[b])) {
+            a++, b++;
+            continue;
+        }
+        bad++;
+        if (bad <= 5) {
+            if (a < ng && b < nw)
+                fprintf(stderr, "%s: got (%zu,%zu) d=%.17g st=%d, want (%zu,%zu) d=%.17g\n", what, got[a].i, got[a].j,
+                        got[a].distance, got[a].status, want[b].i, want[b].j, want[b].d);
+            else if (a < ng)
+                fprintf(stderr, "%s: extra (%zu,%zu) d=%.17g\n", what, got[a].i, got[a].j, got[a].distance);
+            else
+                fprintf(stderr, "%s: missing (%zu,%zu) d=%.17g\n", what, want[b].i, want[b].j, want[b].d);
+        }
+        /* advance the smaller */
+        if (a < ng && (b >= nw || got[a].i < want[b].i || (got[a].i == want[b].i && got[a].j < want[b].j))) a++;
+        else if (b < nw && (a >= ng || want[b].i < got[a].i || (want[b].i == got[a].i && want[b].j < got[a].j))) b++;
+        else a++, b++;
+    }
+    CHECK(bad == 0, "%s: %d mismatches (%zu got, %zu want)", what, bad, ng, nw);
+    return bad;
+}
+
+/* All distances of the scene's live pairs (for choosing delta) and the pairs within delta. */
+static size_t ref_within(const tobj *o, size_t n, double delta, tpair *out)
+{
+    size_t m = 0;
+    for (size_t i = 0; i < n; i++) {
+        if (!o[i].live) continue;
+        for (size_t j = i + 1; j < n; j++) {
+            if (!o[j].live || skip_ref(o, i, j)) continue;
+            tpair t;
+            if (ref_pair(&o[i], &o[j], &t) == 0 && t.d <= delta) {
+                t.i = i, t.j = j;
+                out[m++] = t;
+            }
+        }
+    }
+    return m;
+}
+
+static int cmp_double(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return x < y ? -1 : x > y;
+}
+
+/* A delta that catches about `frac` of the pairs (exactly one pair's distance: the boundary
+ * case <= is exercised). */
+static double pick_delta(const tobj *o, size_t n, double frac)
+{
+    size_t cap = 20000, m = 0;
+    double *d = malloc(cap * sizeof *d);
+    for (int s = 0; s < 20000; s++) {
+        size_t i = next_rand() % n, j = next_rand() % n;
+        if (i == j || !o[i].live || !o[j].live) continue;
+        tpair t;
+        if (ref_pair(&o[i < j ? i : j], &o[i < j ? j : i], &t) == 0) d[m++] = t.d;
+    }
+    qsort(d, m, sizeof *d, cmp_double);
+    double r = m ? d[(size_t)(frac * (double)(m - 1))] : 0.0;
+    free(d);
+    return r;
+}
+
+static cdist_scene *build_scene(const tobj *o, size_t n)
+{
+    cdist_scene *s = cdist_scene_new();
+    for (size_t i = 0; i < n; i++) {
+        size_t id;
+        cdist_scene_add(Q, s, o[i].kind, 1, &o[i].u, 0, &id, NULL);
+        if (id != i) CHECK(0, "id %zu for object %zu", id, i);
+        if (o[i].group || o[i].chain) cdist_scene_set_groups(Q, s, 1, &id, &o[i].group, &o[i].chain);
+    }
+    return s;
+}
+
+/* pairs_within with 1 and 2 threads and with the callback: all equal the reference. */
+static void check_within(const char *what, cdist_scene *s, const tobj *o, size_t n, double delta)
+{
+    size_t cap = n * (n - 1) / 2 + 1;
+    tpair *want = malloc(cap * sizeof *want);
+    size_t nw = ref_within(o, n, delta, want);
+    cdist_scene_pair *got = malloc(cap * sizeof *got);
+    for (int threads = 1; threads <= 2; threads++) {
+        cdist_query_set_threads(Q, threads);
+        size_t ng = 0;
+        cdist_status st = cdist_scene_pairs_within(Q, s, delta, got, cap, &ng);
+        CHECK(st == CDIST_OK || st == CDIST_ERR_BAD_KIND, "%s: status %d (%s)", what, st, cdist_query_last_error(Q));
+        char label[160];
+        snprintf(label, sizeof label, "%s, %d thread(s), delta %.3g", what, threads, delta);
+        compare(label, got, ng, want, nw, o, o);
+    }
+    cdist_query_set_threads(Q, 1);
+    free(want);
+    free(got);
+}
+
+/* ---- scene generators ---- */
+
+static const cdist_scene_kind all_kinds[] = {CDIST_SCENE_POINT,  CDIST_SCENE_SEGMENT, CDIST_SCENE_CIRCLE,
+                                             CDIST_SCENE_DISK,   CDIST_SCENE_ARC,     CDIST_SCENE_SPHERE,
+                                             CDIST_SCENE_CAPSULE, CDIST_SCENE_TORUS,  CDIST_SCENE_ROUNDED_DISK};
+
+static void gen_random(tobj *o, size_t n, double box, double size, int mixed)
+{
+    for (size_t i = 0; i < n; i++) {
+        cdist_scene_kind k = mixed ? all_kinds[next_rand() % 9] : CDIST_SCENE_TORUS;
+        o[i] = make(k, rvec(box), size, rnd_unit_vec());
+    }
+}
+
+static void gen_coplanar(tobj *o, size_t n)
+{
+    for (size_t i = 0; i < n; i++) {
+        cdist_scene_kind k = (i % 3 == 0) ? CDIST_SCENE_DISK : (i % 3 == 1 ? CDIST_SCENE_CIRCLE : CDIST_SCENE_TORUS);
+        o[i] = make(k, tv(8 * rsym(), 8 * rsym(), 0.0), 1.0, tv(0, 0, (i & 1) ? 1.0 : -1.0));
+    }
+}
+
+static void gen_concentric(tobj *o, size_t n)
+{
+    cdist_vec3 c = tv(0.3, -0.2, 0.1);
+    for (size_t i = 0; i < n; i++) {
+        static const cdist_scene_kind ks[] = {CDIST_SCENE_CIRCLE, CDIST_SCENE_DISK, CDIST_SCENE_TORUS,
+                                               CDIST_SCENE_ROUNDED_DISK, CDIST_SCENE_SPHERE};
+        cdist_scene_kind k = ks[next_rand() % 5];
+        o[i] = make(k, c, 1.0 + (double)(i % 7), (i % 3) ? tv(0, 0, 1) : rnd_unit_vec());
+    }
+}
+
+static void gen_coaxial(tobj *o, size_t n)
+{
+    cdist_vec3 ax = tv(0.6, 0.0, 0.8);
+    for (size_t i = 0; i < n; i++) {
+        double t = 4 * rsym();
+        cdist_scene_kind k = (i % 4 == 0) ? CDIST_SCENE_DISK : (i % 4 == 1 ? CDIST_SCENE_TORUS : CDIST_SCENE_CIRCLE);
+        if (i % 5 == 4) k = CDIST_SCENE_CAPSULE;
+        o[i] = make(k, tv(1 + t * ax.x, 2 + t * ax.y, t * ax.z), 1.0, ax);
+        if (k == CDIST_SCENE_CAPSULE) o[i].u.capsule.segment = (cdist_segment){tv(1 - ax.x, 2, -ax.z), tv(1 + ax.x, 2, ax.z)};
+    }
+}
+
+static void gen_duplicates(tobj *o, size_t n)
+{
+    gen_random(o, n / 3, 3.0, 1.0, 1);
+    for (size_t i = n / 3; i < n; i++) o[i] = o[next_rand() % (n / 3)];
+}
+
+static void gen_scales(tobj *o, size_t n)
+{
+    for (size_t i = 0; i < n; i++) {
+        double size = pow(10.0, -6 + 12 * rnd01());
+        cdist_vec3 c = rvec(pow(10.0, -6 + 14 * rnd01()));
+        /* clusters of tiny objects next to each other and to huge ones */
+        if (i % 4 == 1) c = vadd(o[i - 1].u.point, rvec(size));
+        o[i] = make(all_kinds[next_rand() % 9], c, size, rnd_unit_vec());
+    }
+}
+
+static void scenario(const char *name, size_t n, void (*gen)(tobj *, size_t), double frac)
+{
+    tobj *o = calloc(n, sizeof *o);
+    gen(o, n);
+    cdist_scene *s = build_scene(o, n);
+    double delta = pick_delta(o, n, frac);
+    check_within(name, s, o, n, delta);
+    check_within(name, s, o, n, 0.0);
+    cdist_scene_free(s);
+    free(o);
+}
+
+static void gen_random_mixed(tobj *o, size_t n) { gen_random(o, n, 10.0, 1.0, 1); }
+static void gen_random_tori(tobj *o, size_t n) { gen_random(o, n, 25.0, 1.0, 0); }
+
+/* ---- updates, removals, additions ---- */
+
+static void moving(size_t n, int steps)
+{
+    size_t cap = n + (size_t)steps * 20;
+    tobj *o = calloc(cap, sizeof *o);
+    gen_random(o, n, 8.0, 1.0, 1);
+    for (size_t i = 0; i < n; i++) {
+        if (i < n / 2) o[i].chain = 1 + (unsigned)(i / 5);
+        if (i % 13 == 0) o[i].group = 7;
+    }
+    cdist_scene *s = build_scene(o, n);
+    double delta = pick_delta(o, n, 0.05);
+    for (int step = 0; step < steps; step++) {
+        /* move some a little, some far (out of their boxes) */
+        size_t m = 1 + next_rand() % (n / 8);
+        size_t *ids = malloc(m * sizeof *ids);
+        tobj *no = malloc(m * sizeof *no);
+        size_t k = 0;
+        for (size_t t = 0; t < m; t++) {
+            size_t id = next_rand() % n;
+            if (!o[id].live) continue;
+            tobj x = o[id];
+            cdist_vec3 d = rvec(step % 3 == 0 ? 3.0 : 0.05);
+            switch (x.kind) {
+            case CDIST_SCENE_POINT: x.u.point = vadd(x.u.point, d); break;
+            case CDIST_SCENE_SEGMENT: x.u.segment.p0 = vadd(x.u.segment.p0, d); x.u.segment.p1 = vadd(x.u.segment.p1, d); break;
+            case CDIST_SCENE_SPHERE: x.u.sphere.center = vadd(x.u.sphere.center, d); break;
+            case CDIST_SCENE_CAPSULE:
+                x.u.capsule.segment.p0 = vadd(x.u.capsule.segment.p0, d);
+                x.u.capsule.segment.p1 = vadd(x.u.capsule.segment.p1, d);
+                break;
+            default: x.u.circle.center = vadd(x.u.circle.center, d); x.u.circle.normal = rnd_unit_vec(); break;
+            }
+            ids[k] = id;
+            no[k] = x;
+            k++;
+        }
+        /* one kind per update call */
+        for (size_t t = 0; t < k; t++) {
+            cdist_status st = cdist_scene_update(Q, s, 1, &ids[t], no[t].kind, &no[t].u, 0, NULL);
+            CHECK(st == CDIST_OK, "update: %s", cdist_query_last_error(Q));
+            o[ids[t]] = (tobj){no[t].kind, no[t].u, 1, o[ids[t]].group, o[ids[t]].chain};
+        }
+        /* remove a few, add a few */
+        for (int t = 0; t < 3; t++) {
+            size_t id = next_rand() % n;
+            cdist_scene_remove(Q, s, 1, &id);
+            o[id].live = 0;
+        }
+        for (int t = 0; t < 2 && n < cap && step % 2 == 1; t++) {
+            o[n] = make(all_kinds[next_rand() % 9], rvec(8.0), 1.0, rnd_unit_vec());
+            size_t id;
+            cdist_scene_add(Q, s, o[n].kind, 1, &o[n].u, 0, &id, NULL);
+            CHECK(id == n, "added id %zu, want %zu", id, n);
+            n++;
+        }
+        char name[64];
+        snprintf(name, sizeof name, "moving step %d", step);
+        check_within(name, s, o, n, delta);
+        free(ids);
+        free(no);
+    }
+    cdist_scene_stats st;
+    cdist_scene_get_stats(s, &st);
+    CHECK(st.refits > 0, "moving: no refit happened (%zu rebuilds)", st.rebuilds);
+    cdist_scene_free(s);
+    free(o);
+}
+
+/* ---- closest pair, nearest, within, between ---- */
+
+static void others(size_t n)
+{
+    tobj *o = calloc(n, sizeof *o), *p = calloc(n, sizeof *p);
+    gen_random(o, n, 10.0, 1.0, 1);
+    gen_random(p, n, 10.0, 1.0, 1);
+    /* no point-arc pairs here: closest and nearest need every pair answered */
+    for (size_t i = 0; i < n; i++) {
+        if (o[i].kind == CDIST_SCENE_POINT) o[i] = make(CDIST_SCENE_SPHERE, o[i].u.point, 1.0, rnd_unit_vec());
+        if (p[i].kind == CDIST_SCENE_ARC) p[i] = make(CDIST_SCENE_TORUS, p[i].u.circle.center, 1.0, p[i].u.circle.normal);
+        if (p[i].kind == CDIST_SCENE_POINT) p[i] = make(CDIST_SCENE_SPHERE, p[i].u.point, 1.0, rnd_unit_vec());
+        if (o[i].kind == CDIST_SCENE_ARC) o[i] = make(CDIST_SCENE_TORUS, o[i].u.circle.center, 1.0, o[i].u.circle.normal);
+    }
+    cdist_scene *a = build_scene(o, n), *b = build_scene(p, n);
+    /* closest pair */
+    tpair best = {0};
+    best.d = INFINITY;
+    for (size_t i = 0; i < n; i++)
+        for (size_t j = i + 1; j < n; j++) {
+            tpair t;
+            if (ref_pair(&o[i], &o[j], &t) == 0 && t.d < best.d) best = t, best.i = i, best.j = j;
+        }
+    cdist_scene_pair cp;
+    cdist_status st = cdist_scene_closest_pair(Q, a, &cp);
+    CHECK(st == CDIST_OK && pair_equal(&cp, &best), "closest pair: (%zu,%zu) %.17g vs (%zu,%zu) %.17g", cp.i, cp.j,
+          cp.distance, best.i, best.j, best.d);
+    /* closest between and pairs between */
+    best.d = INFINITY;
+    double delta = 0.5;
+    tpair *want = malloc(n * n * sizeof *want);
+    size_t nw = 0;
+    for (size_t i = 0; i < n; i++)
+        for (size_t j = 0; j < n; j++) {
+            tpair t;
+            if (ref_pair(&o[i], &p[j], &t) != 0) continue;
+            t.i = i, t.j = j;
+            if (t.d < best.d) best = t;
+            if (t.d <= delta) want[nw++] = t;
+        }
+    st = cdist_scene_closest_pair_between(Q, a, b, &cp);
+    CHECK(st == CDIST_OK && pair_equal(&cp, &best), "closest between: (%zu,%zu) %.17g vs (%zu,%zu) %.17g", cp.i, cp.j,
+          cp.distance, best.i, best.j, best.d);
+    cdist_scene_pair *got = malloc(n * n * sizeof *got);
+    size_t ng;
+    for (int threads = 1; threads <= 2; threads++) {
+        cdist_query_set_threads(Q, threads);
+        st = cdist_scene_pairs_between(Q, a, b, delta, got, n * n, &ng);
+        CHECK(st == CDIST_OK, "pairs between: %s", cdist_query_last_error(Q));
+        compare("pairs between", got, ng, want, nw, o, p);
+    }
+    cdist_query_set_threads(Q, 1);
+    /* nearest k and within delta of each kind of query object */
+    for (int t = 0; t < 9; t++) {
+        tobj x = make(all_kinds[t], rvec(10.0), 1.0, rnd_unit_vec());
+        nw = 0;
+        for (size_t i = 0; i < n; i++) {
+            tpair r;
+            if (ref_pair(&o[i], &x, &r) != 0) continue;
+            r.i = i, r.j = SIZE_MAX;
+            want[nw++] = r;
+        }
+        /* within */
+        size_t m = 0;
+        for (size_t k = 0; k < nw; k++)
+            if (want[k].d <= 1.0) want[m++] = want[k];
+        st = cdist_scene_within(Q, a, x.kind, &x.u, 1.0, got, n, &ng);
+        CHECK(st == CDIST_OK || st == CDIST_ERR_BAD_KIND, "within: %s", cdist_query_last_error(Q));
+        compare("within", got, ng, want, m, o, &x);
+        /* nearest 5 */
+        nw = 0;
+        for (size_t i = 0; i < n; i++) {
+            tpair r;
+            if (ref_pair(&o[i], &x, &r) != 0) continue;
+            r.i = i, r.j = SIZE_MAX;
+            size_t at = nw++;
+            while (at > 0 && (want[at - 1].d > r.d || (want[at - 1].d == r.d && want[at - 1].i > i))) {
+                want[at] = want[at - 1];
+                at--;
+            }
+            want[at] = r;
+        }
+        if (all_kinds[t] == CDIST_SCENE_POINT || all_kinds[t] == CDIST_SCENE_ARC) continue;
+        st = cdist_scene_nearest(Q, a, x.kind, &x.u, 5, got, &ng);
+        CHECK(st == CDIST_OK && ng == 5, "nearest: %s (%zu)", cdist_query_last_error(Q), ng);
+        for (size_t k = 0; k < ng && k < 5; k++)
+            CHECK(pair_equal(&got[k], &want[k]), "nearest %zu of kind %d: %zu %.17g vs %zu %.17g", k, t, got[k].i,
+                  got[k].distance, want[k].i, want[k].d);
+    }
+    free(want);
+    free(got);
+    cdist_scene_free(a);
+    cdist_scene_free(b);
+    free(o);
+    free(p);
+}
+
+/* ---- the pair query against the public single queries ---- */
+
+static void public_agreement(void)
+{
+    for (int t = 0; t < 300; t++) {
+        tobj a = make(CDIST_SCENE_TORUS, rvec(2), 1, rnd_unit_vec()), b = make(CDIST_SCENE_TORUS, rvec(2), 1, rnd_unit_vec());
+        tobj c = make(CDIST_SCENE_CAPSULE, rvec(2), 1, rnd_unit_vec()), d = make(CDIST_SCENE_SPHERE, rvec(2), 1, rnd_unit_vec());
+        tobj e = make(CDIST_SCENE_CIRCLE, rvec(2), 1, rnd_unit_vec());
+        tpair r;
+        cdist_contact k;
+        cdist_result res;
+        ref_pair(&a, &b, &r);
+        cdist_torus_torus(Q, &a.u.torus, &b.u.torus, &k);
+        CHECK(same_bits(r.d, k.distance), "torus-torus %.17g vs %.17g", r.d, k.distance);
+        ref_pair(&a, &c, &r);
+        cdist_torus_capsule(Q, &a.u.torus, &c.u.capsule, &k);
+        CHECK(same_bits(r.d, k.distance), "torus-capsule %.17g vs %.17g", r.d, k.distance);
+        ref_pair(&d, &c, &r);
+        cdist_capsule_sphere(Q, &c.u.capsule, &d.u.sphere, &k);
+        CHECK(same_bits(r.d, k.distance), "sphere-capsule %.17g vs %.17g", r.d, k.distance);
+        ref_pair(&e, &a, &r);
+        cdist_circle_circle(Q, &e.u.circle, &a.u.torus.circle, &res);
+        CHECK(same_bits(r.d, res.distance - a.u.torus.tube_radius), "circle-torus %.17g vs %.17g", r.d,
+              res.distance - a.u.torus.tube_radius);
+    }
+}
+
+/* ---- the boundary: delta equal to a pair's distance ---- */
+
+/* Two objects, delta exactly their computed distance: the pair is reported; one ulp below: it
+ * is not. Every bound meets its exact boundary here (axis-aligned and tilted objects, touching
+ * boxes, shared planes), so a bound without its rounding margin loses pairs. */
+static void boundary(int count)
+{
+    int missed = 0, extra = 0;
+    for (int t = 0; t < count; t++) {
+        tobj o[2];
+        double size = pow(10.0, -3 + 6 * rnd01());
+        cdist_vec3 n = (t % 3 == 0) ? tv(0, 0, 1) : rnd_unit_vec();
+        for (int k = 0; k < 2; k++) {
+            cdist_vec3 c = (t % 2 == 0) ? tv(size * (double)(next_rand() % 8), 0.0, 0.0) : rvec(3 * size);
+            o[k] = make(all_kinds[next_rand() % 9], vadd(c, tv(1e3 * size, 0, 0)), size, (t % 3 == 0) ? n : rnd_unit_vec());
+        }
+        tpair r;
+        if (ref_pair(&o[0], &o[1], &r) != 0) continue;
+        cdist_scene *s = build_scene(o, 2);
+        cdist_scene_pair got[2];
+        size_t ng = 0;
+        cdist_scene_pairs_within(Q, s, r.d, got, 2, &ng);
+        missed += ng != 1;
+        cdist_scene_pairs_within(Q, s, nextafter(r.d, -INFINITY), got, 2, &ng);
+        extra += ng != 0;
+        cdist_scene_free(s);
+    }
+    CHECK(missed == 0 && extra == 0, "boundary: %d pairs missed at delta = distance, %d reported below it", missed,
+          extra);
+}
+
+/* ---- bad input ---- */
+
+static void bad_input(void)
+{
+    cdist_scene *s = cdist_scene_new();
+    cdist_torus t[4];
+    for (int i = 0; i < 4; i++) t[i] = (cdist_torus){{tv(3.0 * i, 0, 0), tv(0, 0, 1), 1.0}, 0.1};
+    t[1].circle.normal = tv(0, 0, 0);
+    t[2].tube_radius = -1;
+    cdist_status sts[4];
+    size_t first;
+    cdist_status st = cdist_scene_add(Q, s, CDIST_SCENE_TORUS, 4, t, sizeof t[0], &first, sts);
+    CHECK(st == CDIST_ERR_ZERO_VECTOR && first == 0, "add: %d", st);
+    CHECK(sts[0] == 0 && sts[1] == CDIST_ERR_ZERO_VECTOR && sts[2] == CDIST_ERR_NEGATIVE_RADIUS && sts[3] == 0,
+          "statuses %d %d %d %d", sts[0], sts[1], sts[2], sts[3]);
+    CHECK(strstr(cdist_query_last_error(Q), "entry 1") != NULL, "message: %s", cdist_query_last_error(Q));
+    CHECK(cdist_scene_count(s) == 4 && cdist_scene_object_status(s, 1) == CDIST_ERR_ZERO_VECTOR &&
+              cdist_scene_object_status(s, 3) == CDIST_OK && cdist_scene_object_status(s, 9) == CDIST_ERR_OUT_OF_RANGE,
+          "object statuses");
+    cdist_scene_pair out[8];
+    size_t cnt = 99;
+    CHECK(cdist_scene_pairs_within(Q, s, NAN, out, 8, &cnt) == CDIST_ERR_NOT_FINITE && cnt == 0, "NaN delta");
+    CHECK(cdist_scene_pairs_within(Q, s, 1.0, NULL, 3, &cnt) == CDIST_ERR_NULL_ARGUMENT, "NULL output");
+    CHECK(cdist_scene_pairs_within(Q, s, 10.0, NULL, 0, &cnt) == CDIST_OK && cnt == 1, "count only: %zu", cnt);
+    CHECK(cdist_scene_pairs_within(Q, s, 10.0, out, 8, &cnt) == CDIST_OK && cnt == 1 && out[0].i == 0 && out[0].j == 3,
+          "valid pair kept: %zu", cnt);
+    size_t ids[2] = {0, 17};
+    CHECK(cdist_scene_update(Q, s, 2, ids, CDIST_SCENE_TORUS, t, 0, sts) == CDIST_ERR_OUT_OF_RANGE && sts[0] == 0 &&
+              sts[1] == CDIST_ERR_OUT_OF_RANGE,
+          "update out of range");
+    CHECK(cdist_scene_remove(Q, s, 2, ids) == CDIST_ERR_OUT_OF_RANGE, "remove out of range");
+    CHECK(cdist_scene_object_status(s, 0) == CDIST_ERR_OUT_OF_RANGE, "removed");
+    CHECK(cdist_scene_update(Q, s, 1, ids, CDIST_SCENE_TORUS, t, 0, sts) == CDIST_ERR_OUT_OF_RANGE, "update removed");
+    /* the invalid object made valid */
+    size_t one = 1;
+    t[1].circle.normal = tv(0, 0, 1);
+    CHECK(cdist_scene_update(Q, s, 1, &one, CDIST_SCENE_TORUS, &t[1], 0, NULL) == CDIST_OK, "revive");
+    CHECK(cdist_scene_pairs_within(Q, s, 10.0, out, 8, &cnt) == CDIST_OK && cnt == 1 && out[0].i == 1 && out[0].j == 3,
+          "revived pair: %zu", cnt);
+    CHECK(cdist_scene_add(Q, s, (cdist_scene_kind)42, 1, t, 0, NULL, NULL) == CDIST_ERR_BAD_KIND, "bad kind");
+    CHECK(cdist_scene_pairs_within(NULL, s, 1.0, out, 8, &cnt) == CDIST_ERR_NULL_ARGUMENT, "NULL handle");
+    CHECK(cdist_scene_pairs_within(Q, NULL, 1.0, out, 8, &cnt) == CDIST_ERR_NULL_ARGUMENT, "NULL scene");
+    /* point-arc: reported with its status, never approximated */
+    cdist_scene *u = cdist_scene_new();
+    cdist_vec3 pt = tv(0, 0, 0.5);
+    cdist_arc arc = {{tv(0, 0, 0), tv(0, 0, 1), 1.0}, tv(1, 0, 0), 0.0, 1.0};
+    cdist_scene_add(Q, u, CDIST_SCENE_POINT, 1, &pt, 0, NULL, NULL);
+    cdist_scene_add(Q, u, CDIST_SCENE_ARC, 1, &arc, 0, NULL, NULL);
+    st = cdist_scene_pairs_within(Q, u, 5.0, out, 8, &cnt);
+    CHECK(st == CDIST_ERR_BAD_KIND && cnt == 1 && out[0].status == CDIST_ERR_BAD_KIND && isnan(out[0].distance),
+          "point-arc: %d %zu", st, cnt);
+    /* capacity too small: the count of all, the first ones written */
+    cdist_scene *v = cdist_scene_new();
+    cdist_sphere sp[6];
+    for (int i = 0; i < 6; i++) sp[i] = (cdist_sphere){tv(0.1 * i, 0, 0), 1.0};
+    cdist_scene_add(Q, v, CDIST_SCENE_SPHERE, 6, sp, sizeof sp[0], NULL, NULL);
+    CHECK(cdist_scene_pairs_within(Q, v, 0.0, out, 4, &cnt) == CDIST_OK && cnt == 15, "count %zu", cnt);
+    CHECK(out[0].i == 0 && out[0].j == 1 && out[3].i == 0 && out[3].j == 4, "prefix order");
+    cdist_scene_free(s);
+    cdist_scene_free(u);
+    cdist_scene_free(v);
+}
+
+int main(int argc, char **argv)
+{
+    int big = argc > 1 && strcmp(argv[1], "--big") == 0;
+    Q = cdist_query_new();
+    public_agreement();
+    bad_input();
+    boundary(big ? 100000 : 10000);
+    scenario("random tori", big ? 2000 : 600, gen_random_tori, 0.02);
+    scenario("random mixed", big ? 2000 : 500, gen_random_mixed, 0.05);
+    scenario("coplanar", 300, gen_coplanar, 0.1);
+    scenario("concentric", 120, gen_concentric, 0.3);
+    scenario("coaxial", 200, gen_coaxial, 0.2);
+    scenario("duplicates", 240, gen_duplicates, 0.05);
+    scenario("scales 1e-6..1e6", big ? 2000 : 400, gen_scales, 0.05);
+    moving(300, 8);
+    others(300);
+    cdist_query_free(Q);
+    return check_summary("scene");
+}
