@@ -350,10 +350,31 @@ static void fail_entry(const cdist__job *job, size_t i, cdist_status st)
     if (job->statuses) job->statuses[i] = st;
 }
 
+/* Entries [lo, n) in the error state with status st: each output array in one pass (a
+ * cancelled batch may leave millions of entries, and Ctrl-C waits for this). */
+static void fail_range(const cdist__job *job, size_t lo, cdist_status st)
+{
+    size_t n = job->n;
+    if (lo >= n) return;
+    if (job->distances)
+        for (size_t i = lo; i < n; i++) job->distances[i] = NAN;
+    if (job->statuses)
+        for (size_t i = lo; i < n; i++) job->statuses[i] = st;
+    if (job->grads) {
+        cdist__grad_set_error(&job->grads[lo]);
+        for (size_t i = lo + 1; i < n; i++) job->grads[i] = job->grads[lo];
+    }
+    if (job->results && job->result_size) {
+        char *first = (char *)job->results + lo * job->result_size;
+        fail_entry(job, lo, st);
+        for (size_t i = lo + 1; i < n; i++) memcpy((char *)job->results + i * job->result_size, first, job->result_size);
+    }
+}
+
 /* NULL handle or arrays, bad kind: every writable output says so. */
 static cdist_status fail_all(cdist_query *q, cdist_status st, const cdist__job *job, const char *why)
 {
-    for (size_t i = 0; i < job->n; i++) fail_entry(job, i, st);
+    fail_range(job, 0, st);
     if (!q) return st;
     cdist__begin(q, NULL);
     return cdist__fail(q, st, "batch: %s", why);
@@ -445,7 +466,7 @@ static cdist_status run_locked(cdist_query *q, cdist__job *job)
     size_t answered;
     if (cdist__workers_run(q, job, &first, &answered)) /* another call held the handle while the options were read */
         return fail_all(NULL, CDIST_ERR_HANDLE_BUSY, job, "");
-    for (size_t i = answered; i < job->n; i++) fail_entry(job, i, CDIST_ERR_CANCELLED);
+    fail_range(job, answered, CDIST_ERR_CANCELLED);
     cdist__begin(q, NULL);
     if (answered < job->n) {
         if (first.fail != SIZE_MAX)
