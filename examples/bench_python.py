@@ -4,11 +4,13 @@
 
     python3 examples/bench_python.py [--n 1000000] [--repeats 5] [--threads 1]
 
-"C batch": one cdist_batch / cdist_batch_distance call on ready (N, 7) arrays and result
-buffers (through ctypes: one call, so the binding adds nothing per query). "Python": the whole
-user-level call, circledist.circle_circle(Circle(centers, normals, radii), ...), including
-packing the field arrays into the C layout, allocating the results and wrapping them as numpy
-views. Minimum over repeats (the machine is noisy); random unit-scale circle pairs.
+"C batch": one cdist_batch / cdist_batch_distance / cdist_batch_contact call on ready (N, 7) or
+(N, 8) arrays and result buffers (through ctypes: one call, so the binding adds nothing per
+query). "Python": the whole user-level call, circledist.circle_circle(Circle(centers, normals,
+radii), ...) or circledist.torus_torus(Torus(Circle(...), tube), ...), including packing the
+field arrays into the C layout, allocating the results, the Ctrl-C progress callback of long
+batches and wrapping the results as numpy views. Minimum over repeats (the machine is noisy);
+random unit-scale pairs.
 """
 import argparse
 import time
@@ -73,8 +75,30 @@ def main(argv=None):
     def py_view():
         return q.circle_circle(cd.Circle.from_array(A), cd.Circle.from_array(B), out=reuse)
 
+    tubes = [rng.uniform(0.0, 0.2, n) for _ in range(2)]
+    TA, TB = (cd.Torus(cd.Circle(*f), t).data for f, t in zip(fields, tubes))
+    contacts = np.empty(n, _lib.CONTACT_DTYPE)
+
+    def c_tt():
+        _lib.batch_contact(q._q, 21, n, TA.ctypes.data, 64, TB.ctypes.data, 64, contacts.ctypes.data,
+                           status.ctypes.data)
+
+    def c_tt_fresh():
+        r, s = np.empty(n, _lib.CONTACT_DTYPE), np.empty(n, np.int32)
+        _lib.batch_contact(q._q, 21, n, TA.ctypes.data, 64, TB.ctypes.data, 64, r.ctypes.data, s.ctypes.data)
+
+    def py_tt():
+        return q.torus_torus(cd.Torus(cd.Circle(*fields[0]), tubes[0]), cd.Torus(cd.Circle(*fields[1]), tubes[1]))
+
+    reuse_tt = py_tt()
+
+    def py_tt_out():
+        return q.torus_torus(cd.Torus(cd.Circle(*fields[0]), tubes[0]), cd.Torus(cd.Circle(*fields[1]), tubes[1]),
+                             out=reuse_tt)
+
     rows = [("full, fresh buffers", c_full_fresh, py_full), ("full, reused buffers", c_full, py_full_out),
-            ("full, from_array+out", c_full, py_view), ("distance only", c_dist, py_dist)]
+            ("full, from_array+out", c_full, py_view), ("distance only", c_dist, py_dist),
+            ("torus-torus, fresh", c_tt_fresh, py_tt), ("torus-torus, reused", c_tt, py_tt_out)]
     print("%d circle-circle queries, threads=%d, min of %d (C and Python interleaved)" % (
         n, args.threads, args.repeats))
     print("%-22s %12s %12s %7s" % ("", "C batch", "Python", "ratio"))
@@ -88,8 +112,8 @@ def main(argv=None):
     # Noise-free view of the same thing: inside one Python call, the time spent in the C call
     # against the whole call (everything else is the binding's overhead).
     inner = []
-    saved = (_lib.batch, _lib.batch_distance)
-    for fn_name in ("batch", "batch_distance"):
+    saved = (_lib.batch, _lib.batch_distance, _lib.batch_contact)
+    for fn_name in ("batch", "batch_distance", "batch_contact"):
         real = getattr(_lib, fn_name)
 
         def timed(*a, _real=real):
@@ -99,7 +123,7 @@ def main(argv=None):
             return st
         setattr(_lib, fn_name, timed)
     try:
-        for name, p in (("full results", py_full), ("distance only", py_dist)):
+        for name, p in (("full results", py_full), ("distance only", py_dist), ("torus-torus", py_tt)):
             ratios = []
             for _ in range(args.repeats):
                 inner.clear()
@@ -111,9 +135,10 @@ def main(argv=None):
             print("%-22s overhead outside the C call %.3f us/query, whole call / C call %.3f" % (
                 name, 1e6 * over / n, ratio))
     finally:
-        _lib.batch, _lib.batch_distance = saved
+        _lib.batch, _lib.batch_distance, _lib.batch_contact = saved
     # the Python answer is the C answer
     assert np.array_equal(py_full().distance, (c_full(), raw["distance"])[1])
+    assert py_tt().raw.tobytes() == (c_tt(), contacts)[1].tobytes()
 
 
 if __name__ == "__main__":
