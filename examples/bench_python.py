@@ -2,7 +2,7 @@
 # SPDX-License-Identifier: MIT
 """Per-query cost of the vectorised Python calls against the bare C batch call.
 
-    python3 examples/bench_python.py [--n 1000000] [--repeats 5] [--threads 1]
+    python3 examples/bench_python.py [--n 1000000] [--repeats 5] [--threads 1] [--interrupt]
 
 "C batch": one cdist_batch / cdist_batch_distance / cdist_batch_contact call on ready (N, 7) or
 (N, 8) arrays and result buffers (through ctypes: one call, so the binding adds nothing per
@@ -10,7 +10,8 @@ query). "Python": the whole user-level call, circledist.circle_circle(Circle(cen
 radii), ...) or circledist.torus_torus(Torus(Circle(...), tube), ...), including packing the
 field arrays into the C layout, allocating the results, the Ctrl-C progress callback of long
 batches and wrapping the results as numpy views. Minimum over repeats (the machine is noisy);
-random unit-scale pairs.
+random unit-scale pairs. --interrupt: instead, the time from a SIGINT (sent by a timer 0.3 s
+into a 10^7-entry torus-torus distance batch) to the KeyboardInterrupt, over the repeats.
 """
 import argparse
 import time
@@ -30,12 +31,45 @@ def best(f, repeats):
     return min(t)
 
 
+def interrupt_latency(repeats, threads):
+    """Seconds from SIGINT to KeyboardInterrupt during a long batch, one per repeat."""
+    import os
+    import signal
+    import threading
+    n = 10 ** 7
+    t0 = cd.Torus(((0, 0, 0), (0, 0, 1), 1.0), 0.1)
+    row = cd.Torus(((0.3, 0.8, 0.1), (0.6, 0.0, 0.8), 0.9), 0.05).data
+    tori = cd.Torus.from_array(np.broadcast_to(row, (n, 8)))
+    out = cd.BatchContact(None, np.full(n, -1, np.int32), np.full(n, -1.0))
+    q = cd.Query(threads=threads)
+    latency = []
+    for _ in range(repeats):
+        sent = []
+        timer = threading.Timer(0.3, lambda: (sent.append(time.perf_counter()),
+                                              os.kill(os.getpid(), signal.SIGINT)))
+        timer.start()
+        try:
+            q.torus_torus(tori, t0, distance_only=True, out=out)
+        except KeyboardInterrupt:
+            latency.append(time.perf_counter() - sent[0])
+        finally:
+            timer.cancel()
+    return latency
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--n", type=int, default=1000000)
     ap.add_argument("--repeats", type=int, default=5)
     ap.add_argument("--threads", type=int, default=1)
+    ap.add_argument("--interrupt", action="store_true")
     args = ap.parse_args(argv)
+    if args.interrupt:
+        lat = sorted(interrupt_latency(args.repeats, args.threads))
+        print("Ctrl-C during a 10^7-entry batch: KeyboardInterrupt %s ms after SIGINT (min %.1f, "
+              "median %.1f, max %.1f)" % (", ".join("%.1f" % (1e3 * x) for x in lat), 1e3 * lat[0],
+                                          1e3 * lat[len(lat) // 2], 1e3 * lat[-1]))
+        return
     n = args.n
     rng = np.random.default_rng(1)
 

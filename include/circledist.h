@@ -742,7 +742,8 @@ CDIST_API cdist_status cdist_batch_contact(cdist_query *q, cdist_kind kind, size
  *  cdist_torus_torus_grad()) gives them. results: n ::cdist_result for the kinds of cdist_batch(),
  *  n ::cdist_contact for a contact kind (cdist_kind_result_size() bytes each), or NULL when only
  *  the gradients are wanted. A bad entry gets its status and an all-NaN gradient. Conventions of
- *  cdist_batch(); a kind without a `_grad` query gives ::CDIST_ERR_BAD_KIND. */
+ *  cdist_batch(); a kind without a `_grad` query gives ::CDIST_ERR_BAD_KIND (for a number that
+ *  is not a kind the results, whose type is then unknown, are not written). */
 CDIST_API cdist_status cdist_batch_grad(cdist_query *q, cdist_kind kind, size_t n, const void *a, ptrdiff_t a_stride,
                                         const void *b, ptrdiff_t b_stride, void *results, cdist_grad *grads,
                                         cdist_status *statuses);
@@ -753,8 +754,8 @@ typedef int (*cdist_progress_fn)(void *user, size_t done, size_t total);
 
 /** Asks batch calls on this handle to report progress: fn(user, done, total) is called after
  *  about every `every` answered entries (never more often than once per `every` entries,
- *  rounded up to a multiple of 64; `done` counts the entries of every thread) and once at the
- *  end (done == total). It is called from the thread that called the batch only, never from a
+ *  rounded up to a multiple of 64; `done` counts the entries of every thread, and increases
+ *  from call to call) and, unless stopped, once at the end (done == total). It is called from the thread that called the batch only, never from a
  *  worker thread, and while the handle is in use: fn must not call the library with this
  *  handle (::CDIST_ERR_HANDLE_BUSY). A non-zero return stops the batch: the worker threads
  *  finish the entries they are answering and take no more; the call returns

@@ -217,15 +217,13 @@ class Grad:
     def differentiable(self) -> bool: ...
 
 
-class BatchResult:
+class _Batch:
     raw: npt.NDArray[Any] | None
     status: npt.NDArray[np.int32]
     distance: npt.NDArray[np.float64]
-    sqr_distance: npt.NDArray[np.float64]
     num_pairs: npt.NDArray[np.int32]
     equidistant: npt.NDArray[np.bool_]
     method: npt.NDArray[np.int32]
-    iterations: npt.NDArray[np.int32]
     points: npt.NDArray[np.float64]
     params: npt.NDArray[np.float64]
     def __init__(self, raw: npt.NDArray[Any] | None, status: npt.NDArray[np.int32],
@@ -238,33 +236,20 @@ class BatchResult:
     def shape(self) -> tuple[int, ...]: ...
     def __len__(self) -> int: ...
     def status_names(self) -> npt.NDArray[np.object_]: ...
+
+
+class BatchResult(_Batch):
+    sqr_distance: npt.NDArray[np.float64]
+    iterations: npt.NDArray[np.int32]
     def __getitem__(self, index: Any) -> Result: ...
 
 
-class BatchContact:
-    raw: npt.NDArray[Any] | None
-    status: npt.NDArray[np.int32]
-    distance: npt.NDArray[np.float64]
+class BatchContact(_Batch):
     core_distance: npt.NDArray[np.float64]
-    num_pairs: npt.NDArray[np.int32]
-    equidistant: npt.NDArray[np.bool_]
     flags: npt.NDArray[np.int32]
     core_touch: npt.NDArray[np.bool_]
-    method: npt.NDArray[np.int32]
-    points: npt.NDArray[np.float64]
     core_points: npt.NDArray[np.float64]
     normals: npt.NDArray[np.float64]
-    params: npt.NDArray[np.float64]
-    def __init__(self, raw: npt.NDArray[Any] | None, status: npt.NDArray[np.int32],
-                 distance: npt.NDArray[np.float64] | None = ...) -> None: ...
-    @property
-    def ok(self) -> npt.NDArray[np.bool_]: ...
-    @property
-    def cancelled(self) -> npt.NDArray[np.bool_]: ...
-    @property
-    def shape(self) -> tuple[int, ...]: ...
-    def __len__(self) -> int: ...
-    def status_names(self) -> npt.NDArray[np.object_]: ...
     def __getitem__(self, index: Any) -> Contact: ...
 
 

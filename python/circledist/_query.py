@@ -1,5 +1,6 @@
 # SPDX-License-Identifier: MIT
 """Query handles, results and the query functions (internal module; see the package docs)."""
+import contextlib
 import ctypes
 import enum
 import inspect
@@ -205,6 +206,20 @@ class _Batch:
         codes, inverse = np.unique(self.status, return_inverse=True)
         return np.array([status_name(c) for c in codes], dtype=object)[inverse].reshape(self.shape)
 
+    def __getitem__(self, index):
+        """The answer of one entry (a Result, Contact or Grad; raises CircleDistError for a
+        failed entry)."""
+        st = int(self.status[index])
+        if st != 0:
+            raise CircleDistError(st, "entry %r: %s" % (index, status_string(st)))
+        if self.raw is None:
+            raise TypeError("distance_only batch: index .distance instead")
+        return self._one(self.raw[index])
+
+    def __repr__(self):
+        return "<%s shape=%s, %d failed>" % (type(self).__name__, self.shape,
+                                            int(np.count_nonzero(self.status)))
+
 
 class BatchResult(_Batch):
     """Answers to an array of queries, as numpy arrays of the broadcast batch shape S.
@@ -219,18 +234,7 @@ class BatchResult(_Batch):
     iterations = property(lambda self: self._field("iterations"), doc="iterations (ITERATION)")
     points = property(lambda self: self._field("pairs")["point"], doc="S + (2, 2, 3) points")
     params = property(lambda self: self._field("pairs")["param"], doc="S + (2, 2) parameters")
-
-    def __getitem__(self, index):
-        """Result of one entry (raises CircleDistError for a failed entry)."""
-        st = int(self.status[index])
-        if st != 0:
-            raise CircleDistError(st, "entry %r: %s" % (index, status_string(st)))
-        if self.raw is None:
-            raise TypeError("distance_only batch: index .distance instead")
-        return Result(self.raw[index])
-
-    def __repr__(self):
-        return "<BatchResult shape=%s, %d failed>" % (self.shape, int(np.count_nonzero(self.status)))
+    _one = Result
 
 
 class ContactPair(tuple):
@@ -380,18 +384,7 @@ class BatchContact(_Batch):
                            doc="S + (2, 2, 3) closest points of the cores")
     normals = property(lambda self: self._field("pairs")["normal"], doc="S + (2, 3) contact normals")
     params = property(lambda self: self._field("pairs")["param"], doc="S + (2, 2) core parameters")
-
-    def __getitem__(self, index):
-        """Contact of one entry (raises CircleDistError for a failed entry)."""
-        st = int(self.status[index])
-        if st != 0:
-            raise CircleDistError(st, "entry %r: %s" % (index, status_string(st)))
-        if self.raw is None:
-            raise TypeError("distance_only batch: index .distance instead")
-        return Contact(self.raw[index])
-
-    def __repr__(self):
-        return "<BatchContact shape=%s, %d failed>" % (self.shape, int(np.count_nonzero(self.status)))
+    _one = Contact
 
 
 class BatchGradObject:
@@ -435,15 +428,9 @@ class BatchGrad:
     def __len__(self):
         return len(self.status)
 
-    def __getitem__(self, index):
-        """Grad of one entry (raises CircleDistError for a failed entry)."""
-        st = int(self.status[index])
-        if st != 0:
-            raise CircleDistError(st, "entry %r: %s" % (index, status_string(st)))
-        return Grad(self.raw[index])
-
-    def __repr__(self):
-        return "<BatchGrad shape=%s, %d failed>" % (self.shape, int(np.count_nonzero(self.status)))
+    _one = Grad
+    __getitem__ = _Batch.__getitem__
+    __repr__ = _Batch.__repr__
 
 
 # Status codes that concern the whole call (not one entry): raised as CircleDistError.
@@ -627,22 +614,28 @@ class Query:
         self._check(_lib.query_set_method(q, m))
         return old
 
-    def _run(self, name, kind, a, b, method, threads, distance_only, single_call, out=None,
-             progress=None):
+    @contextlib.contextmanager
+    def _call_options(self, method, threads=None):
+        """The handle under the lock, with `method` for this call only and `threads` (kept)."""
         with self._lock:
             q = self._handle()
             old = self._override_method(q, method)
             try:
                 if threads is not None:
                     self.set_threads(threads)
-                if a.shape == () and b.shape == () and not distance_only and out is None:
-                    self._check(single_call(q, a, b, self._one_addr))
-                    return Result._from_buffer(self._one_buffer)
-                return self._batch(name, kind, a, b, "distance" if distance_only else "result", out,
-                                   progress)
+                yield q
             finally:
                 if old is not None:
                     _lib.query_set_method(q, old)
+
+    def _run(self, name, kind, a, b, method, threads, distance_only, single_call, out=None,
+             progress=None):
+        with self._call_options(method, threads) as q:
+            if a.shape == () and b.shape == () and not distance_only and out is None:
+                self._check(single_call(q, a, b, self._one_addr))
+                return Result._from_buffer(self._one_buffer)
+            return self._batch(name, kind, a, b, "distance" if distance_only else "result", out,
+                               progress)
 
     def _new_outputs(self, mode, contact, shape):
         """Fresh output buffers of a batch: a BatchResult / BatchContact, with a BatchGrad for
@@ -762,35 +755,21 @@ class Query:
         arrays of objects through one batch call."""
         contact, grad = kind >= KIND_FIRST_CONTACT, mode == "grad"
         if a.shape or b.shape or out is not None or mode == "distance":
-            with self._lock:
-                q = self._handle()
-                old = self._override_method(q, method)
-                try:
-                    if threads is not None:
-                        self.set_threads(threads)
-                    return self._batch(name, kind, a, b, mode, out, progress)
-                finally:
-                    if old is not None:
-                        _lib.query_set_method(q, old)
+            with self._call_options(method, threads):
+                return self._batch(name, kind, a, b, mode, out, progress)
         if c_fn is None:
             raise RuntimeError("%s: the loaded libcircledist has no cdist_%s" % (name, name))
-        with self._lock:
-            q = self._handle()
-            old = self._override_method(q, method)
-            try:
-                out_addr = self._contact_addr if contact else self._one_addr
-                if grad:
-                    st = c_fn(q, a.address, b.address, out_addr, self._grad_addr)
-                else:
-                    st = c_fn(q, a.address, b.address, out_addr)
-                if st:
-                    self._check(st)
-                res = Contact._from_buffer(self._contact_buffer) if contact else \
-                    Result._from_buffer(self._one_buffer)
-                return (res, Grad._from_buffer(self._grad_buffer)) if grad else res
-            finally:
-                if old is not None:
-                    _lib.query_set_method(q, old)
+        with self._call_options(method) as q:
+            out_addr = self._contact_addr if contact else self._one_addr
+            if grad:
+                st = c_fn(q, a.address, b.address, out_addr, self._grad_addr)
+            else:
+                st = c_fn(q, a.address, b.address, out_addr)
+            if st:
+                self._check(st)
+            res = Contact._from_buffer(self._contact_buffer) if contact else \
+                Result._from_buffer(self._one_buffer)
+            return (res, Grad._from_buffer(self._grad_buffer)) if grad else res
 
     # ---- curves ----------------------------------------------------------------------------
     def _curve(self, name, kind, f, t0, t1, other, method, threads, distance_only, out):

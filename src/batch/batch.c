@@ -496,54 +496,43 @@ static cdist_status run(cdist_query *q, cdist__job *job)
     return st;
 }
 
-/* A job. Its results' type: fixed by the entry point, or for gradients the kind's (none for a
- * number that is not a kind: result_size 0, those results are never written). */
-static cdist__job make_job(cdist_kind kind, size_t n, const void *a, ptrdiff_t a_stride, const void *b,
-                           ptrdiff_t b_stride, cdist__out out)
+/* One batch call: a job of the given output (its results' type fixed by the entry point, or
+ * for gradients the kind's: none for a number that is not a kind, result_size 0, those results
+ * are never written). */
+static cdist_status batch_call(cdist_query *q, cdist_kind kind, size_t n, const void *a, ptrdiff_t a_stride,
+                               const void *b, ptrdiff_t b_stride, cdist__out out, void *results, double *distances,
+                               cdist_grad *grads, cdist_status *statuses)
 {
-    cdist__job job = {kind, n, a, b, a_stride, b_stride, NULL, NULL, NULL, 0, out, 0, NULL};
-    job.result_size = out == CD_OUT_CONTACT  ? sizeof(cdist_contact)
-                      : out == CD_OUT_RESULT ? sizeof(cdist_result)
-                                             : cdist_kind_result_size(kind);
-    return job;
+    size_t result_size = out == CD_OUT_CONTACT  ? sizeof(cdist_contact)
+                         : out == CD_OUT_RESULT ? sizeof(cdist_result)
+                                                : cdist_kind_result_size(kind);
+    cdist__job job = {kind, n, a, b, a_stride, b_stride, results, distances, statuses, 0, out, result_size, grads};
+    return run(q, &job);
 }
 
 cdist_status cdist_batch(cdist_query *q, cdist_kind kind, size_t n, const void *a, ptrdiff_t a_stride, const void *b,
                          ptrdiff_t b_stride, cdist_result *results, cdist_status *statuses)
 {
-    cdist__job job = make_job(kind, n, a, a_stride, b, b_stride, CD_OUT_RESULT);
-    job.results = results;
-    job.statuses = statuses;
-    return run(q, &job);
+    return batch_call(q, kind, n, a, a_stride, b, b_stride, CD_OUT_RESULT, results, NULL, NULL, statuses);
 }
 
 cdist_status cdist_batch_distance(cdist_query *q, cdist_kind kind, size_t n, const void *a, ptrdiff_t a_stride,
                                   const void *b, ptrdiff_t b_stride, double *distances, cdist_status *statuses)
 {
-    cdist__job job = make_job(kind, n, a, a_stride, b, b_stride, CD_OUT_DISTANCE);
-    job.distances = distances;
-    job.statuses = statuses;
-    return run(q, &job);
+    return batch_call(q, kind, n, a, a_stride, b, b_stride, CD_OUT_DISTANCE, NULL, distances, NULL, statuses);
 }
 
 cdist_status cdist_batch_contact(cdist_query *q, cdist_kind kind, size_t n, const void *a, ptrdiff_t a_stride,
                                  const void *b, ptrdiff_t b_stride, cdist_contact *contacts, cdist_status *statuses)
 {
-    cdist__job job = make_job(kind, n, a, a_stride, b, b_stride, CD_OUT_CONTACT);
-    job.results = contacts;
-    job.statuses = statuses;
-    return run(q, &job);
+    return batch_call(q, kind, n, a, a_stride, b, b_stride, CD_OUT_CONTACT, contacts, NULL, NULL, statuses);
 }
 
 cdist_status cdist_batch_grad(cdist_query *q, cdist_kind kind, size_t n, const void *a, ptrdiff_t a_stride,
                               const void *b, ptrdiff_t b_stride, void *results, cdist_grad *grads,
                               cdist_status *statuses)
 {
-    cdist__job job = make_job(kind, n, a, a_stride, b, b_stride, CD_OUT_GRAD);
-    job.results = results;
-    job.grads = grads;
-    job.statuses = statuses;
-    return run(q, &job);
+    return batch_call(q, kind, n, a, a_stride, b, b_stride, CD_OUT_GRAD, results, NULL, grads, statuses);
 }
 
 cdist_status cdist_circle_circle_batch(cdist_query *q, size_t n, const cdist_circle *c0, const cdist_circle *c1,

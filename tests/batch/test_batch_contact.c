@@ -83,6 +83,23 @@ static double rnd_radius(double scale)
     return k == 0 ? 0.0 : rnd01() * 1.5 * (scale > 0 ? scale : 1.0);
 }
 
+/* The second object from a reference line's circle or disk cb: a sphere at its centre, a
+ * rounded disk on it, or the circle or disk itself. */
+static void second_from_circle(int sphere, int rounded_disk, const cdist_circle *cb, unsigned char *b)
+{
+    if (sphere) {
+        cdist_sphere *s = (cdist_sphere *)b;
+        s->center = cb->center;
+        s->radius = rnd_radius(cb->radius);
+    } else if (rounded_disk) {
+        cdist_rounded_disk *r = (cdist_rounded_disk *)b;
+        r->disk = *cb;
+        r->radius = rnd_radius(cb->radius);
+    } else {
+        memcpy(b, cb, sizeof *cb);
+    }
+}
+
 /* Objects of a contact kind from the two core objects of a reference line (xa, xb). */
 static void build(cdist_kind kind, const unsigned char *xa, const unsigned char *xb, unsigned char *a, unsigned char *b)
 {
@@ -138,16 +155,8 @@ static void build(cdist_kind kind, const unsigned char *xa, const unsigned char 
             m->segment.p1 = (cdist_vec3){cb->center.x + cb->radius * cb->normal.x, cb->center.y + cb->radius * cb->normal.y,
                                          cb->center.z + cb->radius * cb->normal.z};
             m->radius = rnd_radius(scale_b);
-        } else if (kind == CDIST_KIND_CAPSULE_SPHERE) {
-            cdist_sphere *s = (cdist_sphere *)b;
-            s->center = cb->center;
-            s->radius = rnd_radius(scale_b);
-        } else if (kind == CDIST_KIND_CAPSULE_ROUNDED_DISK) {
-            cdist_rounded_disk *r = (cdist_rounded_disk *)b;
-            r->disk = *cb;
-            r->radius = rnd_radius(scale_b);
         } else {
-            memcpy(b, cb, sizeof *cb);
+            second_from_circle(kind == CDIST_KIND_CAPSULE_SPHERE, kind == CDIST_KIND_CAPSULE_ROUNDED_DISK, cb, b);
         }
         break;
     }
@@ -158,17 +167,7 @@ static void build(cdist_kind kind, const unsigned char *xa, const unsigned char 
         cdist_sphere *s = (cdist_sphere *)a;
         s->center = *pa;
         s->radius = rnd_radius(scale_b);
-        if (kind == CDIST_KIND_SPHERE_SPHERE) {
-            cdist_sphere *t = (cdist_sphere *)b;
-            t->center = cb->center;
-            t->radius = rnd_radius(scale_b);
-        } else if (kind == CDIST_KIND_SPHERE_ROUNDED_DISK) {
-            cdist_rounded_disk *r = (cdist_rounded_disk *)b;
-            r->disk = *cb;
-            r->radius = rnd_radius(scale_b);
-        } else {
-            memcpy(b, cb, sizeof *cb);
-        }
+        second_from_circle(kind == CDIST_KIND_SPHERE_SPHERE, kind == CDIST_KIND_SPHERE_ROUNDED_DISK, cb, b);
         break;
     }
     case CDIST_KIND_TORUS_LINE:

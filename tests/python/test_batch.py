@@ -264,8 +264,10 @@ def test_progress_bar_uses_tqdm_when_installed(monkeypatch, capsys):
 
 
 def test_ctrl_c_interrupts_a_long_batch():
-    """SIGINT from a timer during a 10^7-entry batch: KeyboardInterrupt within 0.2 s, the entries
-    answered before it intact in out=, the others CDIST_ERR_CANCELLED, the handler restored."""
+    """SIGINT from a timer during a 10^7-entry batch: KeyboardInterrupt long before the batch
+    would end (the latency itself, a few milliseconds on an idle machine, is measured by
+    examples/bench_python.py --interrupt, not asserted here), the entries answered before it
+    intact in out=, the others CDIST_ERR_CANCELLED, the handler restored."""
     import os
     import signal
     import threading
@@ -289,9 +291,10 @@ def test_ctrl_c_interrupts_a_long_batch():
     finally:
         timer.cancel()
     assert sent, "the batch ended before the signal (%.2f s)" % (raised - start)
-    assert raised - sent[0] <= 0.2, "KeyboardInterrupt %.3f s after SIGINT" % (raised - sent[0])
     assert signal.getsignal(signal.SIGINT) is signal.default_int_handler
     k = int(np.count_nonzero(out.status == 0))
-    assert 0 < k < n
+    # stopped within a chunk of the signal: far fewer entries answered than the batch holds
+    assert 0 < k < n // 2, "%d of %d entries answered, KeyboardInterrupt %.3f s after SIGINT" % (
+        k, n, raised - sent[0])
     assert np.all(out.status[:k] == 0) and np.all(out.status[k:] == 17)
     assert np.all(out.distance[:k] == want) and np.all(np.isnan(out.distance[k:]))
