@@ -752,18 +752,20 @@ CDIST_API cdist_status cdist_batch_grad(cdist_query *q, cdist_kind kind, size_t 
  *  non-zero to stop. */
 typedef int (*cdist_progress_fn)(void *user, size_t done, size_t total);
 
-/** Asks batch calls on this handle to report progress: fn(user, done, total) is called after
- *  about every `every` answered entries (never more often than once per `every` entries,
- *  rounded up to a multiple of 64; `done` counts the entries of every thread, and increases
- *  from call to call) and, unless stopped, once at the end (done == total). It is called from the thread that called the batch only, never from a
- *  worker thread, and while the handle is in use: fn must not call the library with this
- *  handle (::CDIST_ERR_HANDLE_BUSY). A non-zero return stops the batch: the worker threads
- *  finish the entries they are answering and take no more; the call returns
+/** Asks batch calls on this handle to report progress: fn(user, done, total) is called after about
+ *  every `every` answered entries (never more often than once per `every` entries, rounded up to a
+ *  multiple of 64; `done` counts the entries of every thread, and increases from call to call) and,
+ *  unless stopped, once at the end (done == total). It is called from the thread that called the
+ *  batch only, never from a worker thread, while the batch owns the handle: fn must not call the
+ *  library with this handle (its option setters return ::CDIST_ERR_HANDLE_BUSY; its queries would
+ *  change the handle's status and message under the batch). A non-zero return stops the batch: the
+ *  worker threads finish the entries they are answering and take no more; the call returns
  *  ::CDIST_ERR_CANCELLED, the entries answered keep their answers (identical for every thread
- *  count) and statuses, the others get ::CDIST_ERR_CANCELLED and the error state (NaN).
- *  Which entries get answered before the stop depends on timing and the thread count.
- *  fn = NULL switches progress off (the default; `every` is then ignored); with fn, every must be
- *  >= 1 (else ::CDIST_ERR_BAD_OPTION). The option does not change any answer. */
+ *  count) and statuses, the others get ::CDIST_ERR_CANCELLED and the error state (NaN). The
+ *  entries answered are the first k for some k (the message gives k), which depends on timing
+ *  and the thread count. fn = NULL switches
+ *  progress off (the default; `every` is then ignored); with fn, every must be >= 1 (else
+ *  ::CDIST_ERR_BAD_OPTION). The option does not change any answer. */
 CDIST_API cdist_status cdist_query_set_progress(cdist_query *q, cdist_progress_fn fn, void *user, size_t every);
 
 #ifdef __cplusplus
