@@ -35,8 +35,8 @@ BatchGrad) from one C call, e.g.
     contacts = cd.torus_torus(tori, cd.Torus(circle, 0.1))
 
 Long batches report progress (progress=True: a tqdm bar if tqdm is installed, or
-progress=callable(done, total) -> stop) and honour Ctrl-C (KeyboardInterrupt within
-milliseconds; with out= the entries answered before it are kept, the others have status
+progress=callable(done, total) -> stop) and honour Ctrl-C (KeyboardInterrupt well
+within 0.2 s; with out= the entries answered before it are kept, the others have status
 CDIST_ERR_CANCELLED).
 
 Errors: CircleDistError (status, name, message) from the library; ValueError or TypeError

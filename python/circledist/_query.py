@@ -854,8 +854,8 @@ def _make_method(name, kind, cls_a, cls_b):
         allocating new buffers (saves the page faults of fresh memory in repeated calls).
         progress: True for a progress bar (tqdm if installed, else a line on stderr), or a
         callable progress(done, total) -> stop (True stops the batch: the entries not answered
-        get status CDIST_ERR_CANCELLED). Long batches honour Ctrl-C: KeyboardInterrupt within a
-        few milliseconds of the signal; the entries answered before it are in out=, if given.""" % {
+        get status CDIST_ERR_CANCELLED). Long batches honour Ctrl-C: KeyboardInterrupt well within
+        0.2 s of the signal; the entries answered before it are in out=, if given.""" % {
         "A": cls_a.__name__, "B": cls_b.__name__, "name": name}
     return query
 
