@@ -22,7 +22,7 @@ typedef struct cdist__job {
     void *results;          /* cdist_result or cdist_contact array (result_size bytes each), else NULL */
     double *distances;      /* distance-only batch, else NULL */
     cdist_status *statuses; /* may be NULL */
-    size_t chunk;           /* entries taken at a time by a thread (a multiple of 64, the kernels' block; n on one thread) */
+    size_t chunk;           /* entries taken at a time by a thread (a multiple of 64, the kernels' block; at most the progress interval) */
     cdist__out out;
     size_t result_size;
     cdist_grad *grads; /* gradient batch, else NULL */
