@@ -10,7 +10,7 @@ query). "Python": the whole user-level call, circledist.circle_circle(Circle(cen
 radii), ...) or circledist.torus_torus(Torus(Circle(...), tube), ...), including packing the
 field arrays into the C layout, allocating the results, the Ctrl-C progress callback of long
 batches and wrapping the results as numpy views. Minimum over repeats (the machine is noisy);
-random unit-scale pairs. --interrupt: instead, the time from a SIGINT (sent by a timer 0.3 s
+random unit-scale pairs. --cpu: this thread's CPU time instead of wall time. --interrupt: instead, the time from a SIGINT (sent by a timer 0.3 s
 into a 10^7-entry torus-torus distance batch) to the KeyboardInterrupt, over the repeats.
 """
 import argparse
@@ -22,12 +22,17 @@ import circledist as cd
 from circledist import _lib
 
 
+#: the clock of the measurements: wall time, or with --cpu this thread's CPU time (user and
+#: system, so page faults count; steadier on a loaded machine; for threads=1)
+clock = time.perf_counter
+
+
 def best(f, repeats):
     t = []
     for _ in range(repeats):
-        t0 = time.perf_counter()
+        t0 = clock()
         f()
-        t.append(time.perf_counter() - t0)
+        t.append(clock() - t0)
     return min(t)
 
 
@@ -63,7 +68,11 @@ def main(argv=None):
     ap.add_argument("--repeats", type=int, default=5)
     ap.add_argument("--threads", type=int, default=1)
     ap.add_argument("--interrupt", action="store_true")
+    ap.add_argument("--cpu", action="store_true")
     args = ap.parse_args(argv)
+    global clock
+    if args.cpu:
+        clock = time.thread_time
     if args.interrupt:
         lat = sorted(interrupt_latency(args.repeats, args.threads))
         print("Ctrl-C during a 10^7-entry batch: KeyboardInterrupt %s ms after SIGINT (min %.1f, "
@@ -151,19 +160,20 @@ def main(argv=None):
         real = getattr(_lib, fn_name)
 
         def timed(*a, _real=real):
-            t0 = time.perf_counter()
+            t0 = clock()
             st = _real(*a)
-            inner.append(time.perf_counter() - t0)
+            inner.append(clock() - t0)
             return st
         setattr(_lib, fn_name, timed)
     try:
-        for name, p in (("full results", py_full), ("distance only", py_dist), ("torus-torus", py_tt)):
+        for name, p in (("full results", py_full), ("distance only", py_dist), ("torus-torus", py_tt),
+                        ("torus-torus, out=", py_tt_out)):
             ratios = []
             for _ in range(args.repeats):
                 inner.clear()
-                t0 = time.perf_counter()
+                t0 = clock()
                 p()
-                total = time.perf_counter() - t0
+                total = clock() - t0
                 ratios.append((total - inner[0], total / inner[0]))
             over, ratio = min(ratios)
             print("%-22s overhead outside the C call %.3f us/query, whole call / C call %.3f" % (
