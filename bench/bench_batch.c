@@ -3,8 +3,7 @@
  * cdist_batch_grad and the first two with 2 threads, on N queries made by repeating the random
  * reference file of the kind (minimum over repeats; the machine is shared, so the minimum is the
  * honest number). Then the contact kinds whose cores have a reference file (TT from cc, TS from pc,
- * Tl from lc, Sd from pd; tube and sphere radii 0.1): the contact loop, cdist_batch_contact,
- * cdist_batch_distance, cdist_batch_grad, and the first two with T threads.
+ * Tl from lc, Sd from pd; tube and sphere radii 0.1), their batch column cdist_batch_contact.
  *   bench_batch [--n=N] [--reps=R] [--threads=T] [--csv=FILE] [--kinds=pc,lc,TT,...] [--cpu] DIR...  */
 #include <stdio.h>
 #include <stdlib.h>
@@ -97,66 +96,68 @@ static void make_contact_objects(cdist_kind kind, const unsigned char *xa, const
     }
 }
 
-static int bench_contacts(int ndirs, char **dirs, cdist_query *q, size_t n, int reps, int threads, const char *only,
-                          cdist_contact *contacts, double *dist, cdist_grad *grads, cdist_status *st, FILE *out)
+/* The output buffers of a benchmark (n entries each). */
+typedef struct buffers {
+    cdist_result *res;
+    cdist_contact *contacts;
+    double *dist;
+    cdist_grad *grads;
+    cdist_status *st;
+} buffers;
+
+/* One kind on n entries: minimum over reps of the single-query loop, the full batch (results, or
+ * contacts for a contact kind), the distance batch, both on `threads` threads and the gradient
+ * batch (0 without one), in ns/entry, printed as one row (and a CSV line). Returns non-zero when
+ * a call failed. */
+static int measure(cdist_query *q, cdist_kind kind, size_t n, int reps, int threads, const unsigned char *A,
+                   const unsigned char *B, const buffers *o, FILE *out)
 {
-    int rc = 0;
-    printf("\n%-15s %9s %9s %9s %9s %9s %9s\n", "contact kind", "single", "contact", "distance", "grad", "contact-T",
-           "dist-T");
-    for (size_t k = 0; k < sizeof contact_kinds / sizeof contact_kinds[0]; k++) {
-        if (only && !strstr(only, contact_kinds[k].name)) continue;
-        cdist_kind kind = contact_kinds[k].kind;
-        const cdq_kind *core = NULL;
-        for (const cdq_kind *kd = cdq_kinds; kd->name; kd++)
-            if (!strcmp(kd->name, contact_kinds[k].file)) core = kd;
-        cdist_kind ck = (cdist_kind)core->batch_kind;
-        size_t ca = cdist_kind_size_a(ck), cb = cdist_kind_size_b(ck);
-        size_t sa = cdist_kind_size_a(kind), sb = cdist_kind_size_b(kind);
-        unsigned char *XA = malloc(n * ca), *XB = malloc(n * cb), *A = malloc(n * sa), *B = malloc(n * sb);
-        if (!load(ndirs, dirs, core->name, ck, n, XA, XB)) {
-            free(XA);
-            free(XB);
-            free(A);
-            free(B);
-            continue;
-        }
-        for (size_t i = 0; i < n; i++) make_contact_objects(kind, XA + i * ca, XB + i * cb, A + i * sa, B + i * sb);
-        double t[6] = {1e300, 1e300, 1e300, 1e300, 1e300, 1e300}, check = 0.0;
-        for (int r = 0; r < reps; r++) {
-            cdist_query_set_threads(q, 1);
+    size_t sa = cdist_kind_size_a(kind), sb = cdist_kind_size_b(kind);
+    int contact = cdist_kind_result_size(kind) == sizeof(cdist_contact), has_grad = cdist_kind_has_grad(kind), rc = 0;
+    void *full = contact ? (void *)o->contacts : (void *)o->res;
+    double t[6] = {1e300, 1e300, 1e300, 1e300, 1e300, 1e300}, check = 0.0;
+    for (int r = 0; r < reps; r++) {
+        double d[6] = {0};
+        for (int pass = 0; pass < 2; pass++) { /* pass 0: 1 thread, pass 1: T threads */
+            cdist_query_set_threads(q, pass ? threads : 1);
             double t0 = now();
-            for (size_t i = 0; i < n; i++) single_contact(q, kind, A + i * sa, B + i * sb, &contacts[i]);
+            if (!pass) {
+                for (size_t i = 0; i < n; i++) {
+                    if (contact) single_contact(q, kind, A + i * sa, B + i * sb, &o->contacts[i]);
+                    else single(q, kind, A + i * sa, B + i * sb, &o->res[i]);
+                }
+            }
             double t1 = now();
-            if (cdist_batch_contact(q, kind, n, A, (ptrdiff_t)sa, B, (ptrdiff_t)sb, contacts, st)) rc = 1;
+            if (contact ? cdist_batch_contact(q, kind, n, A, (ptrdiff_t)sa, B, (ptrdiff_t)sb, full, o->st)
+                        : cdist_batch(q, kind, n, A, (ptrdiff_t)sa, B, (ptrdiff_t)sb, full, o->st))
+                rc = 1;
             double t2 = now();
-            if (cdist_batch_distance(q, kind, n, A, (ptrdiff_t)sa, B, (ptrdiff_t)sb, dist, st)) rc = 1;
+            if (cdist_batch_distance(q, kind, n, A, (ptrdiff_t)sa, B, (ptrdiff_t)sb, o->dist, o->st)) rc = 1;
             double t3 = now();
-            if (cdist_batch_grad(q, kind, n, A, (ptrdiff_t)sa, B, (ptrdiff_t)sb, contacts, grads, st)) rc = 1;
+            if (!pass && has_grad && cdist_batch_grad(q, kind, n, A, (ptrdiff_t)sa, B, (ptrdiff_t)sb, full, o->grads, o->st))
+                rc = 1;
             double t4 = now();
-            cdist_query_set_threads(q, threads);
-            double t5 = now();
-            if (cdist_batch_contact(q, kind, n, A, (ptrdiff_t)sa, B, (ptrdiff_t)sb, contacts, st)) rc = 1;
-            double t6 = now();
-            if (cdist_batch_distance(q, kind, n, A, (ptrdiff_t)sa, B, (ptrdiff_t)sb, dist, st)) rc = 1;
-            double t7 = now();
-            double d[6] = {t1 - t0, t2 - t1, t3 - t2, t4 - t3, t6 - t5, t7 - t6};
-            for (int j = 0; j < 6; j++)
-                if (d[j] < t[j]) t[j] = d[j];
-            check += dist[n - 1] + contacts[n / 2].distance;
+            if (pass) {
+                d[3] = t2 - t1;
+                d[4] = t3 - t2;
+            } else {
+                d[0] = t1 - t0;
+                d[1] = t2 - t1;
+                d[2] = t3 - t2;
+                d[5] = t4 - t3;
+            }
         }
-        cdist_query_set_threads(q, 1);
-        for (int j = 0; j < 6; j++) t[j] *= 1e9 / (double)n;
-        printf("%-15s %9.1f %9.1f %9.1f %9.1f %9.1f %9.1f\n", cdist_kind_name(kind), t[0], t[1], t[2], t[3], t[4], t[5]);
-        if (out)
-            fprintf(out, "%s,%zu,%.2f,%.2f,%.2f,%.2f,%.2f,%.2f\n", cdist_kind_name(kind), n, t[0], t[1], t[2], t[4], t[5],
-                    t[3]);
-        if (!(check == check)) rc = 1;
-        free(XA);
-        free(XB);
-        free(A);
-        free(B);
+        for (int j = 0; j < 6; j++)
+            if (d[j] < t[j]) t[j] = d[j];
+        check += o->dist[n - 1] + (contact ? o->contacts[n / 2].distance : o->res[n / 2].distance);
     }
-    return rc;
+    cdist_query_set_threads(q, 1);
+    for (int j = 0; j < 6; j++) t[j] *= 1e9 / (double)n;
+    printf("%-15s %9.1f %9.1f %9.1f %9.1f %9.1f %7.2fx %9.1f\n", cdist_kind_name(kind), t[0], t[1], t[2], t[3], t[4],
+           t[1] / t[3], t[5]);
+    if (out)
+        fprintf(out, "%s,%zu,%.2f,%.2f,%.2f,%.2f,%.2f,%.2f\n", cdist_kind_name(kind), n, t[0], t[1], t[2], t[3], t[4], t[5]);
+    return rc || !(check == check);
 }
 
 int main(int argc, char **argv)
@@ -195,66 +196,46 @@ int main(int argc, char **argv)
     printf("%-15s %9s %9s %9s %9s %9s %8s %9s\n", "kind", "single", "batch", "distance", "batch-T", "dist-T", "speedup",
            "grad");
     cdist_query *q = cdist_query_new();
-    cdist_result *res = malloc(n * sizeof *res);
-    double *dist = malloc(n * sizeof *dist);
-    cdist_status *st = malloc(n * sizeof *st);
-    cdist_grad *grads = malloc(n * sizeof *grads);
-    cdist_contact *contacts = malloc(n * sizeof *contacts);
+    buffers o = {malloc(n * sizeof *o.res), malloc(n * sizeof *o.contacts), malloc(n * sizeof *o.dist),
+                 malloc(n * sizeof *o.grads), malloc(n * sizeof *o.st)};
     int rc = 0;
     for (const cdq_kind *kd = cdq_kinds; kd->name; kd++) { /* every kind with a batch kind */
         if (kd->batch_kind < 0 || (only && !strstr(only, kd->name))) continue;
         cdist_kind kind = (cdist_kind)kd->batch_kind;
         size_t sa = cdist_kind_size_a(kind), sb = cdist_kind_size_b(kind);
         unsigned char *A = malloc(n * sa), *B = malloc(n * sb);
-        if (!load(argc - first, argv + first, kd->name, kind, n, A, B)) {
-            free(A);
-            free(B);
-            continue;
-        }
-        double t[6] = {1e300, 1e300, 1e300, 1e300, 1e300, 1e300}, check = 0.0;
-        int has_grad = cdist_kind_has_grad(kind);
-        for (int r = 0; r < reps; r++) {
-            cdist_query_set_threads(q, 1);
-            double t0 = now();
-            for (size_t i = 0; i < n; i++) single(q, kind, A + i * sa, B + i * sb, &res[i]);
-            double t1 = now();
-            if (cdist_batch(q, kind, n, A, (ptrdiff_t)sa, B, (ptrdiff_t)sb, res, st)) rc = 1;
-            double t2 = now();
-            if (cdist_batch_distance(q, kind, n, A, (ptrdiff_t)sa, B, (ptrdiff_t)sb, dist, st)) rc = 1;
-            double t3 = now();
-            cdist_query_set_threads(q, threads);
-            double t4 = now();
-            if (cdist_batch(q, kind, n, A, (ptrdiff_t)sa, B, (ptrdiff_t)sb, res, st)) rc = 1;
-            double t5 = now();
-            if (cdist_batch_distance(q, kind, n, A, (ptrdiff_t)sa, B, (ptrdiff_t)sb, dist, st)) rc = 1;
-            double t6 = now();
-            cdist_query_set_threads(q, 1);
-            double t7 = now();
-            if (has_grad && cdist_batch_grad(q, kind, n, A, (ptrdiff_t)sa, B, (ptrdiff_t)sb, res, grads, st)) rc = 1;
-            double t8 = now();
-            double d[6] = {t1 - t0, t2 - t1, t3 - t2, t5 - t4, t6 - t5, has_grad ? t8 - t7 : 0.0};
-            for (int j = 0; j < 6; j++)
-                if (d[j] < t[j]) t[j] = d[j];
-            check += dist[n - 1] + res[n / 2].distance;
-        }
-        for (int j = 0; j < 6; j++) t[j] *= 1e9 / (double)n;
-        printf("%-15s %9.1f %9.1f %9.1f %9.1f %9.1f %7.2fx %9.1f\n", cdist_kind_name(kind), t[0], t[1], t[2], t[3], t[4],
-               t[1] / t[3], t[5]);
-        if (out)
-            fprintf(out, "%s,%zu,%.2f,%.2f,%.2f,%.2f,%.2f,%.2f\n", cdist_kind_name(kind), n, t[0], t[1], t[2], t[3], t[4],
-                    t[5]);
-        if (!(check == check)) rc = 1;
+        if (load(argc - first, argv + first, kd->name, kind, n, A, B)) rc |= measure(q, kind, n, reps, threads, A, B, &o, out);
         free(A);
         free(B);
     }
-    printf("(speedup: batch 1 thread / batch %d threads; grad: cdist_batch_grad, 1 thread)\n", threads);
-    rc |= bench_contacts(argc - first, argv + first, q, n, reps, threads, only, contacts, dist, grads, st, out);
+    /* the contact kinds, their objects built from their cores' reference files */
+    for (size_t k = 0; k < sizeof contact_kinds / sizeof contact_kinds[0]; k++) {
+        if (only && !strstr(only, contact_kinds[k].name)) continue;
+        cdist_kind kind = contact_kinds[k].kind;
+        const cdq_kind *core = NULL;
+        for (const cdq_kind *kd = cdq_kinds; kd->name; kd++)
+            if (!strcmp(kd->name, contact_kinds[k].file)) core = kd;
+        cdist_kind ck = (cdist_kind)core->batch_kind;
+        size_t ca = cdist_kind_size_a(ck), cb = cdist_kind_size_b(ck);
+        size_t sa = cdist_kind_size_a(kind), sb = cdist_kind_size_b(kind);
+        unsigned char *XA = malloc(n * ca), *XB = malloc(n * cb), *A = malloc(n * sa), *B = malloc(n * sb);
+        if (load(argc - first, argv + first, core->name, ck, n, XA, XB)) {
+            for (size_t i = 0; i < n; i++) make_contact_objects(kind, XA + i * ca, XB + i * cb, A + i * sa, B + i * sb);
+            rc |= measure(q, kind, n, reps, threads, A, B, &o, out);
+        }
+        free(XA);
+        free(XB);
+        free(A);
+        free(B);
+    }
+    printf("(speedup: batch 1 thread / batch %d threads; batch: cdist_batch, or cdist_batch_contact for a contact "
+           "kind; grad: cdist_batch_grad, 1 thread)\n", threads);
     cdist_query_free(q);
-    free(res);
-    free(dist);
-    free(st);
-    free(grads);
-    free(contacts);
+    free(o.res);
+    free(o.contacts);
+    free(o.dist);
+    free(o.grads);
+    free(o.st);
     if (out) fclose(out);
     return rc;
 }
