@@ -298,3 +298,29 @@ def test_ctrl_c_interrupts_a_long_batch():
         k, n, raised - sent[0])
     assert np.all(out.status[:k] == 0) and np.all(out.status[k:] == 17)
     assert np.all(out.distance[:k] == want) and np.all(np.isnan(out.distance[k:]))
+
+
+def test_batches_release_the_gil_and_report_for_every_kind():
+    """Another Python thread runs while a batch is in C (ctypes releases the GIL), and the plain
+    kinds take progress= too."""
+    import threading
+    C = _circles(200000)
+    c0 = cd.Circle((0, 0, 0), (0, 0, 1), 1.0)
+    ticks, stop = [0], threading.Event()
+
+    def count():
+        while not stop.is_set():
+            ticks[0] += 1
+    t = threading.Thread(target=count)
+    t.start()
+    try:
+        seen, at = [], []
+        r = cd.circle_circle(C, c0, progress=lambda d, n: seen.append(d) or at.append(ticks[0]))
+    finally:
+        stop.set()
+        t.join()
+    assert np.all(r.ok) and seen[-1] == 200000 and len(seen) > 10
+    # between two reports the C code answered a chunk of entries; the counting thread ran
+    # meanwhile only if the GIL was released (a report itself is too short to switch threads)
+    steps = np.diff(at)
+    assert np.median(steps) > 0, "the other thread did not run during the batch: %s" % steps
