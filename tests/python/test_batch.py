@@ -225,10 +225,16 @@ def test_progress_callback_stops_the_batch_and_keeps_the_answers():
         seen = []
         out = cd.torus_torus(T, t0, threads=threads, progress=lambda done, total: seen.append((done, total)))
         assert out.raw.tobytes() == full.raw.tobytes() and np.all(out.status == 0)
-        assert seen[-1] == (30000, 30000) and len(seen) >= 3
+        # one thread reports every 4096 entries; with two, the calling thread reports between its
+        # own chunks (maybe only at the end, if the other thread was faster)
+        assert seen[-1] == (30000, 30000) and len(seen) >= (8 if threads == 1 else 1)
         assert all(d1 < d2 for (d1, _), (d2, _) in zip(seen, seen[1:]))
-        calls = []
-        stopped = cd.torus_torus(T, t0, threads=threads, progress=lambda d, t: calls.append(d) or len(calls) >= 2)
+        for _attempt in range(20):   # two threads: stopped unless the other thread was faster
+            calls = []
+            stopped = cd.torus_torus(T, t0, threads=threads, progress=lambda d, t: calls.append(d) or len(calls) >= 2)
+            if np.any(stopped.cancelled):
+                break
+            assert threads > 1
         k = int(np.count_nonzero(stopped.status == 0))
         assert 0 < k < 30000 and len(calls) == 2
         assert np.all(stopped.status[:k] == 0) and np.all(stopped.cancelled[k:])
