@@ -307,26 +307,35 @@ def test_ctrl_c_interrupts_a_long_batch():
 
 
 def test_batches_release_the_gil_and_report_for_every_kind():
-    """Another Python thread runs while a batch is in C (ctypes releases the GIL), and the plain
-    kinds take progress= too."""
+    """Another Python thread runs while a batch is in C (the library is a ctypes.CDLL, whose calls
+    release the GIL), and the plain kinds take progress= too."""
+    import ctypes
+    import sys
     import threading
-    C = _circles(200000)
-    c0 = cd.Circle((0, 0, 0), (0, 0, 1), 1.0)
+    import time
+    from circledist import _lib
+    assert type(_lib.lib) is ctypes.CDLL                # not PyDLL: calls release the GIL
+    D = cd.Disk(RNG.uniform(-1, 1, (100000, 3)), _unit(100000), RNG.uniform(0.2, 1.5, 100000))
+    d0 = cd.Disk((0, 0, 0), (0, 0, 1), 1.0)
     ticks, stop = [0], threading.Event()
 
-    def count():
+    def count():        # gives the GIL back at every step (sleep(0)): never the one holding it up
         while not stop.is_set():
             ticks[0] += 1
+            time.sleep(0)
+    # a thread switch forced inside a report would take a second: the counting thread can only
+    # run while the batch is in C, and only if the call released the GIL
+    interval = sys.getswitchinterval()
+    sys.setswitchinterval(1.0)
     t = threading.Thread(target=count)
     t.start()
     try:
         seen, at = [], []
-        r = cd.circle_circle(C, c0, progress=lambda d, n: seen.append(d) or at.append(ticks[0]))
+        r = cd.disk_disk(D, d0, progress=lambda d, n: seen.append(d) or at.append(ticks[0]))
     finally:
         stop.set()
         t.join()
-    assert np.all(r.ok) and seen[-1] == 200000 and len(seen) > 10
-    # between two reports the C code answered a chunk of entries; the counting thread ran
-    # meanwhile only if the GIL was released (a report itself is too short to switch threads)
+        sys.setswitchinterval(interval)
+    assert np.all(r.ok) and seen[-1] == 100000 and len(seen) > 10
     steps = np.diff(at)
-    assert np.median(steps) > 0, "the other thread did not run during the batch: %s" % steps
+    assert steps.sum() > 0, "the other thread did not run while the batch was in C"
