@@ -11,82 +11,29 @@ N coils (circles: centre, unit normal, radius) start at target poses that are to
 moves centres and normals (normals stay unit: their gradient is tangent to the sphere, the
 step is followed by a renormalisation) until every coil-coil distance D_ij is at least about
 d_min while staying near the targets. D_ij and its gradient come from
-cdist_circle_circle_grad() (closest pair + envelope theorem). Writes a plot of the smallest
-coil-coil distance per step (matplotlib, Agg backend, PNG).
-
-This uses ctypes directly on the built library (a minimal binding for this example; the
-package in python/ is the full one):
+cdist_circle_circle_grad() (closest pair + envelope theorem), all pairs of a step in one
+batched call (circledist.circle_circle_grad on arrays: cdist_batch_grad). Writes a plot of the
+smallest coil-coil distance per step (matplotlib, Agg backend, PNG).
 
     CIRCLEDIST_LIBRARY=build/libcircledist.so python3 examples/coil_repel.py --out coil.png
+
+(the package is taken from python/ next to this file when it is not installed).
 """
 import argparse
-import ctypes
-import math
 import os
-import random
 import sys
 
+import numpy as np
 
-class Vec3(ctypes.Structure):
-    _fields_ = [("x", ctypes.c_double), ("y", ctypes.c_double), ("z", ctypes.c_double)]
-
-
-class Circle(ctypes.Structure):
-    _fields_ = [("center", Vec3), ("normal", Vec3), ("radius", ctypes.c_double)]
-
-
-class Pair(ctypes.Structure):
-    _fields_ = [("point", Vec3 * 2), ("param", ctypes.c_double * 2)]
+try:
+    import circledist as cd
+except ImportError:
+    sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "python"))
+    import circledist as cd
 
 
-class Result(ctypes.Structure):
-    _fields_ = [("distance", ctypes.c_double), ("sqr_distance", ctypes.c_double),
-                ("num_pairs", ctypes.c_int), ("equidistant", ctypes.c_int),
-                ("pairs", Pair * 2), ("method", ctypes.c_int), ("iterations", ctypes.c_int),
-                ("reserved", ctypes.c_double * 8)]
-
-
-class GradObject(ctypes.Structure):
-    _fields_ = [("d_center", Vec3), ("d_normal", Vec3), ("d_origin", Vec3), ("d_direction", Vec3),
-                ("d_p0", Vec3), ("d_p1", Vec3), ("d_zero_direction", Vec3),
-                ("d_radius", ctypes.c_double), ("d_radius_swept", ctypes.c_double),
-                ("d_start", ctypes.c_double), ("d_end", ctypes.c_double),
-                ("reserved", ctypes.c_double * 8)]
-
-
-class Grad(ctypes.Structure):
-    _fields_ = [("obj", GradObject * 2), ("flags", ctypes.c_int), ("reserved_int", ctypes.c_int),
-                ("reserved", ctypes.c_double * 8)]
-
-
-def load():
-    path = os.environ.get("CIRCLEDIST_LIBRARY")
-    if not path:
-        here = os.path.dirname(os.path.abspath(__file__))
-        path = os.path.join(here, "..", "build", "libcircledist.so")
-    lib = ctypes.CDLL(path)
-    lib.cdist_query_new.restype = ctypes.c_void_p
-    lib.cdist_query_free.argtypes = [ctypes.c_void_p]
-    lib.cdist_result_size.restype = ctypes.c_size_t
-    lib.cdist_grad_size.restype = ctypes.c_size_t
-    lib.cdist_query_last_error.restype = ctypes.c_char_p
-    lib.cdist_query_last_error.argtypes = [ctypes.c_void_p]
-    lib.cdist_circle_circle_grad.argtypes = [ctypes.c_void_p, ctypes.POINTER(Circle), ctypes.POINTER(Circle),
-                                             ctypes.POINTER(Result), ctypes.POINTER(Grad)]
-    lib.cdist_circle_circle_grad.restype = ctypes.c_int
-    # the layouts above must match the library's
-    assert lib.cdist_result_size() == ctypes.sizeof(Result)
-    assert lib.cdist_grad_size() == ctypes.sizeof(Grad)
-    return lib
-
-
-def vec(v):
-    return Vec3(*v)
-
-
-def unit(v):
-    n = math.sqrt(sum(x * x for x in v))
-    return [x / n for x in v]
+def unit_rows(v):
+    return v / np.linalg.norm(v, axis=-1, keepdims=True)
 
 
 def main():
@@ -98,57 +45,45 @@ def main():
     ap.add_argument("--seed", type=int, default=3)
     args = ap.parse_args()
 
-    lib = load()
-    q = ctypes.c_void_p(lib.cdist_query_new())
-    rnd = random.Random(args.seed)
+    rng = np.random.default_rng(args.seed)
     n = args.coils
     # targets: coils of radius 1 on a ring of radius 1.2 (neighbours overlap), random tilts
-    target_c = [[1.2 * math.cos(2 * math.pi * i / n), 1.2 * math.sin(2 * math.pi * i / n), 0.1 * rnd.uniform(-1, 1)]
-                for i in range(n)]
-    target_n = [unit([rnd.uniform(-0.5, 0.5), rnd.uniform(-0.5, 0.5), 1.0]) for _ in range(n)]
-    radius = [1.0] * n
-    c = [list(t) for t in target_c]
-    nn = [list(t) for t in target_n]
+    angle = 2 * np.pi * np.arange(n) / n
+    target_c = np.stack([1.2 * np.cos(angle), 1.2 * np.sin(angle), 0.1 * rng.uniform(-1, 1, n)], axis=1)
+    target_n = unit_rows(np.concatenate([rng.uniform(-0.5, 0.5, (n, 2)), np.ones((n, 1))], axis=1))
+    radius = np.ones(n)
+    c, nn = target_c.copy(), target_n.copy()
+    i, j = np.triu_indices(n, 1)                    # every pair of coils, one batch entry each
     k, lr = 20.0, 0.005
     history = []
-    res, grad = Result(), Grad()
+    out = None
     for step in range(args.steps):
-        gc = [[2 * (c[i][a] - target_c[i][a]) for a in range(3)] for i in range(n)]
-        gn = [[(nn[i][a] - target_n[i][a]) for a in range(3)] for i in range(n)]
-        dmin_now = math.inf
-        for i in range(n):
-            for j in range(i + 1, n):
-                ci = Circle(vec(c[i]), vec(nn[i]), radius[i])
-                cj = Circle(vec(c[j]), vec(nn[j]), radius[j])
-                st = lib.cdist_circle_circle_grad(q, ctypes.byref(ci), ctypes.byref(cj), ctypes.byref(res),
-                                                  ctypes.byref(grad))
-                if st != 0:
-                    sys.exit("query failed: " + lib.cdist_query_last_error(q).decode())
-                d = res.distance
-                dmin_now = min(dmin_now, d)
-                if d < args.dmin:
-                    # d/dx of k (dmin - D)^2 = -2 k (dmin - D) dD/dx; at D = 0 (linked coils
-                    # crossing) the library returns the zero subgradient, so push along the
-                    # centre difference instead
-                    f = -2 * k * (args.dmin - d)
-                    for s, idx in ((0, i), (1, j)):
-                        g = grad.obj[s]
-                        dc = [g.d_center.x, g.d_center.y, g.d_center.z]
-                        if d == 0 or all(x == 0 for x in dc):
-                            sgn = -1 if s == 0 else 1
-                            dc = unit([sgn * (c[j][a] - c[i][a]) for a in range(3)])
-                        gc[idx] = [gc[idx][a] + f * dc[a] for a in range(3)]
-                        dn = [g.d_normal.x, g.d_normal.y, g.d_normal.z]
-                        gn[idx] = [gn[idx][a] + f * dn[a] for a in range(3)]
-        history.append(dmin_now)
-        for i in range(n):
-            c[i] = [c[i][a] - lr * gc[i][a] for a in range(3)]
-            # tangent step on the unit sphere, then back onto it
-            nd = sum(gn[i][a] * nn[i][a] for a in range(3))
-            tang = [gn[i][a] - nd * nn[i][a] for a in range(3)]
-            nn[i] = unit([nn[i][a] - lr * tang[a] for a in range(3)])
-    lib.cdist_query_free(q)
-    drift = max(math.dist(c[i], target_c[i]) for i in range(n))
+        gc = 2 * (c - target_c)
+        gn = nn - target_n
+        coils = cd.Circle(c, nn, radius)
+        out = cd.circle_circle_grad(cd.Circle.from_array(coils.data[i]), cd.Circle.from_array(coils.data[j]),
+                                    out=out)
+        res, grad = out
+        if not np.all(res.ok):
+            sys.exit("query failed: %s" % res.status_names()[~res.ok][0])
+        d = res.distance
+        history.append(d.min())
+        close = d < args.dmin
+        # d/dx of k (dmin - D)^2 = -2 k (dmin - D) dD/dx; at D = 0 (linked coils crossing) the
+        # library returns the zero subgradient, so push along the centre difference instead
+        f = np.where(close, -2 * k * (args.dmin - d), 0.0)[:, None]
+        for s, idx in ((0, i), (1, j)):
+            dc = grad.obj[s].d_center
+            stuck = (d == 0) | np.all(dc == 0, axis=1)
+            sgn = -1.0 if s == 0 else 1.0
+            dc = np.where(stuck[:, None], sgn * unit_rows(c[j] - c[i]), dc)
+            np.add.at(gc, idx, f * dc)
+            np.add.at(gn, idx, f * grad.obj[s].d_normal)
+        c = c - lr * gc
+        # tangent step on the unit sphere, then back onto it
+        tang = gn - np.sum(gn * nn, axis=1, keepdims=True) * nn
+        nn = unit_rows(nn - lr * tang)
+    drift = np.max(np.linalg.norm(c - target_c, axis=1))
     print(f"smallest coil-coil distance: start {history[0]:.4f}, end {history[-1]:.4f} (target {args.dmin}); "
           f"largest centre drift {drift:.4f}")
 
@@ -160,7 +95,7 @@ def main():
     ax.axhline(args.dmin, color="gray", linestyle="--", label="d_min")
     ax.set_xlabel("gradient step")
     ax.set_ylabel("distance")
-    ax.set_title(f"{n} coils pushed apart (cdist_circle_circle_grad)")
+    ax.set_title(f"{n} coils pushed apart (batched circle_circle_grad)")
     ax.legend()
     fig.tight_layout()
     fig.savefig(args.out, dpi=100)

@@ -158,7 +158,9 @@ typedef enum cdist_status {
     CDIST_ERR_HANDLE_BUSY = 13,        /**< the handle was already in use by another call (one thread per handle) */
     CDIST_ERR_COST_LIMIT = 14,         /**< the query would exceed the documented cost limit */
     CDIST_ERR_THREAD = 15,             /**< a worker thread could not be started */
-    CDIST_ERR_BAD_KIND = 16            /**< a query kind number was not a ::cdist_kind */
+    CDIST_ERR_BAD_KIND = 16,           /**< a query kind number was not a ::cdist_kind (or not one the call answers) */
+    CDIST_ERR_CANCELLED = 17,          /**< a batch entry was not answered: the progress callback stopped the batch (1.1) */
+    CDIST_ERR_OVERLAP = 18             /**< a batch output array overlapped an input or another output array (1.1) */
 } cdist_status;
 
 /** Algorithms. A method that a query does not have is answered by ::CDIST_METHOD_AUTO;
@@ -359,8 +361,27 @@ typedef enum cdist_kind {
     CDIST_KIND_HELIX_CIRCLE = 17,   /**< a: cdist_helix,    b: cdist_circle */
     CDIST_KIND_HELIX_DISK = 18,     /**< a: cdist_helix,    b: cdist_circle as a disk */
     CDIST_KIND_BEZIER3_CIRCLE = 19, /**< a: cdist_bezier3,  b: cdist_circle */
-    CDIST_KIND_BEZIER3_DISK = 20    /**< a: cdist_bezier3,  b: cdist_circle as a disk */
-    /* swept objects (torus, capsule, sphere, rounded disk) are appended from 21 on */
+    CDIST_KIND_BEZIER3_DISK = 20,   /**< a: cdist_bezier3,  b: cdist_circle as a disk */
+    /* Contact kinds (1.1): the swept-object queries, results in ::cdist_contact
+     * (cdist_batch_contact(), cdist_batch_grad(); cdist_batch_distance() gives the signed
+     * distance). A torus is a ::cdist_torus, a capsule a ::cdist_capsule, ... */
+    CDIST_KIND_TORUS_TORUS = 21,               /**< cdist_torus_torus() */
+    CDIST_KIND_TORUS_CAPSULE = 22,             /**< cdist_torus_capsule() */
+    CDIST_KIND_TORUS_SPHERE = 23,              /**< cdist_torus_sphere() */
+    CDIST_KIND_TORUS_ROUNDED_DISK = 24,        /**< cdist_torus_rounded_disk() */
+    CDIST_KIND_CAPSULE_CAPSULE = 25,           /**< cdist_capsule_capsule() */
+    CDIST_KIND_CAPSULE_SPHERE = 26,            /**< cdist_capsule_sphere() */
+    CDIST_KIND_CAPSULE_ROUNDED_DISK = 27,      /**< cdist_capsule_rounded_disk() */
+    CDIST_KIND_SPHERE_SPHERE = 28,             /**< cdist_sphere_sphere() */
+    CDIST_KIND_SPHERE_ROUNDED_DISK = 29,       /**< cdist_sphere_rounded_disk() */
+    CDIST_KIND_ROUNDED_DISK_ROUNDED_DISK = 30, /**< cdist_rounded_disk_rounded_disk() */
+    CDIST_KIND_TORUS_LINE = 31,                /**< cdist_torus_line() */
+    CDIST_KIND_TORUS_RAY = 32,                 /**< cdist_torus_ray() */
+    CDIST_KIND_TORUS_SEGMENT = 33,             /**< cdist_torus_segment() */
+    CDIST_KIND_CAPSULE_CIRCLE = 34,            /**< cdist_capsule_circle() */
+    CDIST_KIND_CAPSULE_DISK = 35,              /**< cdist_capsule_disk(), b: cdist_circle as a disk */
+    CDIST_KIND_SPHERE_CIRCLE = 36,             /**< cdist_sphere_circle() */
+    CDIST_KIND_SPHERE_DISK = 37                /**< cdist_sphere_disk(), b: cdist_circle as a disk */
 } cdist_kind;
 
 /** A callback curve as one value, for batches: fn(user, t, ...) for t in [t0, t1], the
@@ -382,7 +403,8 @@ CDIST_API size_t cdist_kind_size_a(cdist_kind kind);
 /** sizeof the second object type of a kind (0 for a number that is not a kind). */
 CDIST_API size_t cdist_kind_size_b(cdist_kind kind);
 
-/** Full results for n queries of one kind. Object i of the first array is at
+/** Full results for n queries of one kind (not a contact kind: ::CDIST_ERR_BAD_KIND, use
+ *  cdist_batch_contact()). Object i of the first array is at
  *  (const char *)a + i * a_stride (bytes; 0 repeats one object = broadcast, negative allowed),
  *  likewise b. results[i] (contiguous, n entries) and statuses[i] (may be NULL) are written for
  *  every i; a bad entry gets its status and a NaN result with no pairs, the others are answered,
@@ -400,10 +422,22 @@ CDIST_API cdist_status cdist_batch(cdist_query *q, cdist_kind kind, size_t n, co
 /** Distance only (no pairs, params or flags), for screening: distances[i] equals the full
  *  query's distance to <= 2 ulps of the problem scale; NaN for a bad entry. May use SIMD kernels
  *  with a certified screen (uncertain entries go to the scalar path). Same conventions as
- *  cdist_batch(). */
+ *  cdist_batch(). Every kind, contact kinds included (1.1): their signed distance, the core's
+ *  distance (from the core kind's kernel where it has one) minus the radii. */
 CDIST_API cdist_status cdist_batch_distance(cdist_query *q, cdist_kind kind, size_t n, const void *a,
                                             ptrdiff_t a_stride, const void *b, ptrdiff_t b_stride,
                                             double *distances, cdist_status *statuses);
+
+/* Batch conventions shared by every batch entry (cdist_batch(), cdist_batch_distance(),
+ * cdist_batch_contact(), cdist_batch_grad()):
+ * - The output arrays (results, contacts, gradients, distances, statuses) must not overlap the
+ *   input objects (the n strided entries of a and of b) nor each other: an entry's outputs are
+ *   written while later entries are still to be read. From 1.1 such a call is refused before
+ *   anything is read or written: ::CDIST_ERR_OVERLAP (the message names the arrays), outputs
+ *   untouched. (The check compares address ranges; a callback curve's user data is not checked.)
+ * - Progress and cancel (1.1): see cdist_query_set_progress(). A cancelled batch returns
+ *   ::CDIST_ERR_CANCELLED; every entry answered before the stop keeps its answer and status,
+ *   every other entry gets status ::CDIST_ERR_CANCELLED and the error state (NaN). */
 
 /** Worker threads used by the batch calls (default 1; 1..256; the calling thread is one of
  *  them). Workers and their workspaces are created here and live in the handle (they are
@@ -1034,6 +1068,53 @@ CDIST_API cdist_status cdist_scene_nearest(cdist_query *q, cdist_scene *s, cdist
  *  cdist_scene_nearest() and of cdist_scene_pairs_within() for capacity and count). */
 CDIST_API cdist_status cdist_scene_within(cdist_query *q, cdist_scene *s, cdist_scene_kind kind, const void *object,
                                           double delta, cdist_scene_pair *out, size_t capacity, size_t *count);
+/* ---- batches of contacts and gradients, progress (1.1) ---------------------------------- */
+
+/** sizeof the result type of a kind: sizeof(cdist_result), or sizeof(cdist_contact) for a
+ *  contact kind (::CDIST_KIND_TORUS_TORUS and after); 0 for a number that is not a kind. */
+CDIST_API size_t cdist_kind_result_size(cdist_kind kind);
+/** 1 when the kind has a `_grad` query (so cdist_batch_grad() answers it), else 0. The kinds
+ *  without one: callback curves, helices and Bezier curves. */
+CDIST_API int cdist_kind_has_grad(cdist_kind kind);
+
+/** Contact results for n queries of a contact kind: contacts[i] and statuses[i] for the
+ *  single query (e.g. cdist_torus_torus()) on the strided entries, bit for bit. Conventions of
+ *  cdist_batch() (strides, broadcast, statuses, return value, threads, no allocation); a kind
+ *  that is not a contact kind gives ::CDIST_ERR_BAD_KIND. */
+CDIST_API cdist_status cdist_batch_contact(cdist_query *q, cdist_kind kind, size_t n, const void *a,
+                                           ptrdiff_t a_stride, const void *b, ptrdiff_t b_stride,
+                                           cdist_contact *contacts, cdist_status *statuses);
+
+/** Gradients for n queries of any kind with a `_grad` query (cdist_kind_has_grad()): grads[i],
+ *  results[i] and statuses[i] exactly as the single `_grad` query (e.g. cdist_circle_circle_grad(),
+ *  cdist_torus_torus_grad()) gives them. results: n ::cdist_result for the kinds of cdist_batch(),
+ *  n ::cdist_contact for a contact kind (cdist_kind_result_size() bytes each), or NULL when only
+ *  the gradients are wanted. A bad entry gets its status and an all-NaN gradient. Conventions of
+ *  cdist_batch(); a kind without a `_grad` query gives ::CDIST_ERR_BAD_KIND (for a number that
+ *  is not a kind the results, whose type is then unknown, are not written). */
+CDIST_API cdist_status cdist_batch_grad(cdist_query *q, cdist_kind kind, size_t n, const void *a, ptrdiff_t a_stride,
+                                        const void *b, ptrdiff_t b_stride, void *results, cdist_grad *grads,
+                                        cdist_status *statuses);
+
+/** Progress callback of long calls: `done` of `total` entries are answered. Return 0 to go on,
+ *  non-zero to stop. */
+typedef int (*cdist_progress_fn)(void *user, size_t done, size_t total);
+
+/** Asks batch calls on this handle to report progress: fn(user, done, total) is called after about
+ *  every `every` answered entries (never more often than once per `every` entries, rounded up to a
+ *  multiple of 64; `done` counts the entries of every thread, and increases from call to call) and,
+ *  unless stopped, once at the end (done == total). It is called from the thread that called the
+ *  batch only, never from a worker thread, while the batch owns the handle: fn must not call the
+ *  library with this handle (its option setters return ::CDIST_ERR_HANDLE_BUSY; its queries would
+ *  change the handle's status and message under the batch). A non-zero return stops the batch: the
+ *  worker threads finish the entries they are answering and take no more; the call returns
+ *  ::CDIST_ERR_CANCELLED, the entries answered keep their answers (identical for every thread
+ *  count) and statuses, the others get ::CDIST_ERR_CANCELLED and the error state (NaN). The
+ *  entries answered are the first k for some k (the message gives k), which depends on timing
+ *  and the thread count. fn = NULL switches
+ *  progress off (the default; `every` is then ignored); with fn, every must be >= 1 (else
+ *  ::CDIST_ERR_BAD_OPTION). The option does not change any answer. */
+CDIST_API cdist_status cdist_query_set_progress(cdist_query *q, cdist_progress_fn fn, void *user, size_t every);
 
 #ifdef __cplusplus
 }

@@ -25,10 +25,19 @@ Swept objects (a core swept by a ball): Sphere, Capsule, Torus, RoundedDisk. The
 (torus_torus, torus_capsule, torus_sphere, torus_rounded_disk, capsule_capsule,
 capsule_sphere, capsule_rounded_disk, sphere_sphere, sphere_rounded_disk,
 rounded_disk_rounded_disk, torus_line, torus_ray, torus_segment, capsule_circle, capsule_disk,
-sphere_circle, sphere_disk) take one object each and return a Contact (signed distance,
-witness points, normals). Gradients: <query>_grad(a, b) for every swept query and for
-point/line/ray/segment/circle/disk/arc queries with a C _grad variant returns (result, Grad),
-Grad.obj[k].d_center etc. as in cdist_grad_object.
+sphere_circle, sphere_disk) return a Contact (signed distance, witness points, normals) for one
+object each, a BatchContact for arrays. Gradients: <query>_grad(a, b) for every swept query and
+for point/line/ray/segment/circle/disk/arc queries with a C _grad variant returns (result, Grad),
+Grad.obj[k].d_center etc. as in cdist_grad_object; for arrays (BatchResult or BatchContact,
+BatchGrad) from one C call, e.g.
+
+    res, grads = cd.circle_circle_grad(rings, other)      # grads.obj[0].d_center: (N, 3)
+    contacts = cd.torus_torus(tori, cd.Torus(circle, 0.1))
+
+Long batches report progress (progress=True: a tqdm bar if tqdm is installed, or
+progress=callable(done, total) -> stop) and honour Ctrl-C (KeyboardInterrupt well
+within 0.2 s; with out= the entries answered before it are kept, the others have status
+CDIST_ERR_CANCELLED).
 
 Errors: CircleDistError (status, name, message) from the library; ValueError or TypeError
 naming the argument for malformed Python input.
@@ -39,9 +48,10 @@ this package by meson, else the system loader (libcircledist.so.1).
 from ._lib import CONTACT_DTYPE, GRAD_DTYPE, RESULT_DTYPE
 from ._objects import (Arc, Bezier3, Capsule, Circle, Disk, GeometricObject, Helix, Line, Point,
                        Ray, RoundedDisk, Segment, Sphere, Torus)
-from ._query import (FUNCTIONS as _FUNCTIONS, BatchResult, CircleDistError, Contact, ContactPair,
-                     Grad, GradObject, Method, Pair, Query, Result, circle_basis, circle_point,
-                     default_query, status_name, status_string, version)
+from ._query import (FUNCTIONS as _FUNCTIONS, BatchContact, BatchGrad, BatchGradObject,
+                     BatchResult, CircleDistError, Contact, ContactPair, Grad, GradObject, Method,
+                     Pair, Query, Result, circle_basis, circle_point, default_query, status_name,
+                     status_string, version)
 
 from ._scene import Scene, ScenePairs  # noqa: E402  (scenes: many objects at once)
 from ._topology import (LINK_DTYPE, LINK_ERROR, LINK_FLAG_EXTENDED, LINK_FLAG_UNRESOLVED, LINK_OVERLAP,
@@ -59,7 +69,7 @@ __version__ = "1.0.0"
 __all__ = ["Point", "Circle", "Disk", "Line", "Ray", "Segment", "Arc", "Helix", "Bezier3",
            "Sphere", "Capsule", "Torus", "RoundedDisk",
            "GeometricObject", "Query", "Result", "BatchResult", "Pair", "Contact", "ContactPair",
-           "Grad", "GradObject", "Method",
+           "Grad", "GradObject", "BatchContact", "BatchGrad", "BatchGradObject", "Method",
            "CircleDistError", "circle_basis", "circle_point", "default_query", "status_name",
            "status_string", "version", "RESULT_DTYPE", "CONTACT_DTYPE", "GRAD_DTYPE", "METHOD_AUTO", "METHOD_POLYNOMIAL",
            "METHOD_ROBUST", "METHOD_ITERATION", "Scene", "ScenePairs", "linking", "link_details", "LINK_DTYPE", "LINK_TOUCHING",

@@ -193,6 +193,22 @@ GRAD_NOT_DIFFERENTIABLE = (grad_flag_not_differentiable()
                            if grad_flag_not_differentiable is not None else 1)
 
 
+# Contact and gradient batches, progress and cancel (ABI 1.1; missing from a 1.0 library: the
+# array forms of the swept and gradient queries then say so).
+batch_contact = _decl("cdist_batch_contact", _ST, _P, _c.c_int, _c.c_size_t, _P, _c.c_ssize_t, _P,
+                      _c.c_ssize_t, _P, _P, required=False)
+batch_grad = _decl("cdist_batch_grad", _ST, _P, _c.c_int, _c.c_size_t, _P, _c.c_ssize_t, _P,
+                   _c.c_ssize_t, _P, _P, _P, required=False)
+kind_result_size = _decl("cdist_kind_result_size", _c.c_size_t, _c.c_int, required=False)
+kind_has_grad = _decl("cdist_kind_has_grad", _c.c_int, _c.c_int, required=False)
+PROGRESS_FN = _c.CFUNCTYPE(_c.c_int, _P, _c.c_size_t, _c.c_size_t)
+query_set_progress = _decl("cdist_query_set_progress", _ST, _P, PROGRESS_FN, _P, _c.c_size_t,
+                           required=False)
+#: cdist_status values the package names (appended in ABI 1.1).
+STATUS_CANCELLED = 17
+STATUS_OVERLAP = 18
+
+
 def single_query(name):
     """The C function cdist_<name>(q, a, b, result) for one query, with pointer arguments."""
     return _decl("cdist_" + name, _ST, _P, _P, _P, _P)

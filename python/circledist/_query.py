@@ -1,10 +1,13 @@
 # SPDX-License-Identifier: MIT
 """Query handles, results and the query functions (internal module; see the package docs)."""
+import contextlib
 import ctypes
 import enum
 import inspect
 import math
+import signal
 import struct
+import sys
 import threading
 
 import numpy as np
@@ -165,14 +168,9 @@ class Result:
             self.distance, self.num_pairs, self.equidistant, self.method.name)
 
 
-class BatchResult:
-    """Answers to an array of queries, as numpy arrays of the broadcast batch shape S.
-
-    distance (S), status (S, int32 cdist_status, 0 = OK; a bad entry has its status and NaN),
-    and unless distance_only was asked: sqr_distance (S), num_pairs (S), equidistant (S, bool),
-    points (S + (2, 2, 3): [..., i, j] is pair i's point on object j; only pairs
-    i < num_pairs are meaningful), params (S + (2, 2)), method (S). The arrays are views of one buffer of C result
-    structs (raw, numpy dtype RESULT_DTYPE), not copies."""
+class _Batch:
+    """What every batch answer has: status (S, int32 cdist_status), distance (S), raw (the C
+    structs, None for distance_only)."""
 
     def __init__(self, raw, status, distance=None):
         self.raw = raw
@@ -184,18 +182,20 @@ class BatchResult:
             raise AttributeError("%s: not computed (distance_only=True)" % name)
         return self.raw[name]
 
-    sqr_distance = property(lambda self: self._field("sqr_distance"), doc="squared distances")
     num_pairs = property(lambda self: self._field("num_pairs"), doc="pairs given (0 on error)")
     equidistant = property(lambda self: self._field("equidistant") != 0, doc="infinitely many pairs")
     method = property(lambda self: self._field("method"), doc="Method that answered")
-    iterations = property(lambda self: self._field("iterations"), doc="iterations (ITERATION)")
-    points = property(lambda self: self._field("pairs")["point"], doc="S + (2, 2, 3) points")
-    params = property(lambda self: self._field("pairs")["param"], doc="S + (2, 2) parameters")
 
     @property
     def ok(self):
         """Boolean mask of the entries answered without error."""
         return self.status == 0
+
+    @property
+    def cancelled(self):
+        """Boolean mask of the entries not answered because the batch was stopped
+        (CDIST_ERR_CANCELLED: progress= returned True, or Ctrl-C with out=)."""
+        return self.status == _lib.STATUS_CANCELLED
 
     @property
     def shape(self):
@@ -211,16 +211,34 @@ class BatchResult:
         return np.array([status_name(c) for c in codes], dtype=object)[inverse].reshape(self.shape)
 
     def __getitem__(self, index):
-        """Result of one entry (raises CircleDistError for a failed entry)."""
+        """The answer of one entry (a Result, Contact or Grad; raises CircleDistError for a
+        failed entry)."""
         st = int(self.status[index])
         if st != 0:
             raise CircleDistError(st, "entry %r: %s" % (index, status_string(st)))
         if self.raw is None:
             raise TypeError("distance_only batch: index .distance instead")
-        return Result(self.raw[index])
+        return self._one(self.raw[index])
 
     def __repr__(self):
-        return "<BatchResult shape=%s, %d failed>" % (self.shape, int(np.count_nonzero(self.status)))
+        return "<%s shape=%s, %d failed>" % (type(self).__name__, self.shape,
+                                            int(np.count_nonzero(self.status)))
+
+
+class BatchResult(_Batch):
+    """Answers to an array of queries, as numpy arrays of the broadcast batch shape S.
+
+    distance (S), status (S, int32 cdist_status, 0 = OK; a bad entry has its status and NaN),
+    and unless distance_only was asked: sqr_distance (S), num_pairs (S), equidistant (S, bool),
+    points (S + (2, 2, 3): [..., i, j] is pair i's point on object j; only pairs
+    i < num_pairs are meaningful), params (S + (2, 2)), method (S). The arrays are views of one buffer of C result
+    structs (raw, numpy dtype RESULT_DTYPE), not copies."""
+
+    sqr_distance = property(lambda self: self._field("sqr_distance"), doc="squared distances")
+    iterations = property(lambda self: self._field("iterations"), doc="iterations (ITERATION)")
+    points = property(lambda self: self._field("pairs")["point"], doc="S + (2, 2, 3) points")
+    params = property(lambda self: self._field("pairs")["param"], doc="S + (2, 2) parameters")
+    _one = Result
 
 
 class ContactPair(tuple):
@@ -352,8 +370,79 @@ class Grad:
     def __repr__(self):
         return "Grad(differentiable=%r, obj=(%r, %r))" % (self.differentiable, *self.obj)
 
+class BatchContact(_Batch):
+    """Answers to an array of contact (swept-object) queries, as numpy arrays of the broadcast
+    batch shape S: distance (S, signed), core_distance (S), status (S, int32 cdist_status; a bad
+    entry has its status and NaN), num_pairs, equidistant (bool), flags, core_touch (bool),
+    method (S), points and core_points (S + (2, 2, 3): [..., i, j] is pair i's point on object
+    j), normals (S + (2, 3)), params (S + (2, 2)); only pairs i < num_pairs are meaningful.
+    Views of one buffer of C contact structs (raw, numpy dtype CONTACT_DTYPE). With
+    distance_only=True only distance and status exist."""
+
+    core_distance = property(lambda self: self._field("core_distance"), doc="core distances")
+    flags = property(lambda self: self._field("flags"), doc="bits of cdist_contact_flag")
+    core_touch = property(lambda self: (self._field("flags") & _lib.CONTACT_CORE_TOUCH) != 0,
+                          doc="the cores touch or cross")
+    points = property(lambda self: self._field("pairs")["point"], doc="S + (2, 2, 3) witness points")
+    core_points = property(lambda self: self._field("pairs")["core_point"],
+                           doc="S + (2, 2, 3) closest points of the cores")
+    normals = property(lambda self: self._field("pairs")["normal"], doc="S + (2, 3) contact normals")
+    params = property(lambda self: self._field("pairs")["param"], doc="S + (2, 2) core parameters")
+    _one = Contact
+
+
+class BatchGradObject:
+    """The derivatives with respect to one object of every entry (fields of cdist_grad_object as
+    arrays: d_center etc. S + (3,), d_radius etc. S); views of the BatchGrad's buffer."""
+
+    __slots__ = ("_raw",)
+
+    def __init__(self, raw):
+        self._raw = raw
+
+    def __getattr__(self, name):
+        if name in _lib.GRAD_OBJECT_FIELDS:
+            return self._raw[name]
+        raise AttributeError(name)
+
+    def __dir__(self):
+        return list(_lib.GRAD_OBJECT_FIELDS)
+
+    def __repr__(self):
+        return "<BatchGradObject shape=%s>" % (self._raw.shape,)
+
+
+class BatchGrad:
+    """Gradients of an array of queries (struct cdist_grad per entry): obj[0], obj[1]
+    (BatchGradObject: obj[k].d_center is S + (3,), obj[k].d_radius is S, ...), flags (S),
+    differentiable (S, bool), status (S); a bad entry's gradient is NaN. raw: the buffer
+    (numpy dtype GRAD_DTYPE)."""
+
+    def __init__(self, raw, status):
+        self.raw = raw
+        self.status = status
+        self.obj = (BatchGradObject(raw["obj"][..., 0]), BatchGradObject(raw["obj"][..., 1]))
+
+    flags = property(lambda self: self.raw["flags"], doc="bits of cdist_grad_flag")
+    differentiable = property(lambda self: (self.raw["flags"] & _lib.GRAD_NOT_DIFFERENTIABLE) == 0,
+                              doc="False where CDIST_GRAD_NOT_DIFFERENTIABLE is set")
+    ok = property(lambda self: self.status == 0, doc="entries answered without error")
+    shape = property(lambda self: self.status.shape, doc="the batch shape")
+
+    def __len__(self):
+        return len(self.status)
+
+    _one = Grad
+    __getitem__ = _Batch.__getitem__
+    __repr__ = _Batch.__repr__
+
+
 # Status codes that concern the whole call (not one entry): raised as CircleDistError.
-_CALL_ERRORS = {1, 11, 13, 15, 16}
+_CALL_ERRORS = {1, 11, 13, 15, 16, _lib.STATUS_OVERLAP}
+#: Batches of at least this many entries report progress (Ctrl-C, progress=); the C library
+#: reports after every _PROGRESS_EVERY entries, a few milliseconds of the fast kinds.
+_PROGRESS_MIN = 8192
+_PROGRESS_EVERY = 4096
 
 # name, kind number (cdist_kind), first and second object class, C function of one query
 _KINDS = [
@@ -390,6 +479,33 @@ def _rows(data, shape, n, width):
     if a.strides[1] != 8:
         a = np.ascontiguousarray(a)
     return a.ctypes.data, a.strides[0], a
+
+
+class _TextBar:
+    """A minimal progress line on stderr, when tqdm is not installed."""
+
+    def __init__(self, total):
+        self.total, self.done, self.shown = total, 0, -1
+
+    def update(self, k):
+        self.done += k
+        pct = 100 * self.done // max(self.total, 1)
+        if pct != self.shown:
+            self.shown = pct
+            sys.stderr.write("\rcircledist: %3d%% of %d entries" % (pct, self.total))
+            sys.stderr.flush()
+
+    def close(self):
+        sys.stderr.write("\n")
+
+
+def _progress_bar(total):
+    """A tqdm bar when tqdm is importable (never a dependency), else a line on stderr."""
+    try:
+        from tqdm import tqdm
+    except ImportError:
+        return _TextBar(total)
+    return tqdm(total=total, unit="entries", unit_scale=True)
 
 
 class Query:
@@ -502,25 +618,65 @@ class Query:
         self._check(_lib.query_set_method(q, m))
         return old
 
-    def _run(self, name, kind, a, b, method, threads, distance_only, single_call, out=None):
+    @contextlib.contextmanager
+    def _call_options(self, method, threads=None):
+        """The handle under the lock, with `method` for this call only and `threads` (kept)."""
         with self._lock:
             q = self._handle()
             old = self._override_method(q, method)
             try:
                 if threads is not None:
                     self.set_threads(threads)
-                if a.shape == () and b.shape == () and not distance_only and out is None:
-                    self._check(single_call(q, a, b, self._one_addr))
-                    return Result._from_buffer(self._one_buffer)
-                return self._batch(name, kind, a, b, distance_only, out)
+                yield q
             finally:
                 if old is not None:
                     _lib.query_set_method(q, old)
 
-    def _batch(self, name, kind, a, b, distance_only, out=None):
-        if _lib.batch is None:
-            raise RuntimeError("%s: the loaded libcircledist has no batch API (cdist_batch); "
-                               "arrays of objects need a library with it" % name)
+    def _run(self, name, kind, a, b, method, threads, distance_only, single_call, out=None,
+             progress=None):
+        with self._call_options(method, threads) as q:
+            if a.shape == () and b.shape == () and not distance_only and out is None:
+                self._check(single_call(q, a, b, self._one_addr))
+                return Result._from_buffer(self._one_buffer)
+            return self._batch(name, kind, a, b, "distance" if distance_only else "result", out,
+                               progress)
+
+    def _new_outputs(self, mode, contact, shape):
+        """Fresh output buffers of a batch: a BatchResult / BatchContact, with a BatchGrad for
+        mode "grad"."""
+        status = np.empty(shape, np.int32)
+        if mode == "distance":
+            return (BatchContact if contact else BatchResult)(None, status, np.empty(shape, np.float64))
+        res = BatchContact(np.empty(shape, _lib.CONTACT_DTYPE), status) if contact else \
+            BatchResult(np.empty(shape, _lib.RESULT_DTYPE), status)
+        return (res, BatchGrad(np.empty(shape, _lib.GRAD_DTYPE), status)) if mode == "grad" else res
+
+    @staticmethod
+    def _check_out(name, mode, contact, shape, out):
+        """out= of a batch: the type, shape and distance_only of what the call would return."""
+        cls = BatchContact if contact else BatchResult
+        res, grad = out if mode == "grad" and isinstance(out, tuple) and len(out) == 2 else (out, None)
+        ok = isinstance(res, cls) and res.shape == shape and (res.raw is None) == (mode == "distance")
+        if mode == "grad":
+            ok = ok and isinstance(grad, BatchGrad) and grad.shape == shape and grad.status is res.status
+        if not ok:
+            raise ValueError("%s: out must be %s of shape %s from a call like this one%s"
+                             % (name, "the (%s, BatchGrad) pair" % cls.__name__ if mode == "grad"
+                                else "a " + cls.__name__, shape,
+                                "" if mode == "grad" else " (distance_only=%s)" % (mode == "distance")))
+        return out
+
+    def _batch(self, name, kind, a, b, mode, out=None, progress=None):
+        """One C call for the broadcast batch of a and b. mode: "result" (cdist_batch),
+        "distance", "contact" (cdist_batch_contact) or "grad" (cdist_batch_grad)."""
+        needed = {"result": _lib.batch, "distance": _lib.batch_distance,
+                  "contact": _lib.batch_contact, "grad": _lib.batch_grad}[mode]
+        if needed is None:
+            raise RuntimeError("%s: the loaded libcircledist has no %s; arrays of objects need a "
+                               "library with it" % (name, {"result": "batch API (cdist_batch)",
+                                                          "distance": "cdist_batch_distance",
+                                                          "contact": "cdist_batch_contact (1.1)",
+                                                          "grad": "cdist_batch_grad (1.1)"}[mode]))
         try:
             shape = np.broadcast_shapes(a.shape, b.shape)
         except ValueError:
@@ -529,54 +685,95 @@ class Query:
         n = math.prod(shape)
         pa, sa, keep_a = a.rows(shape, n) if isinstance(a, _CurveArg) else _rows(a.data, shape, n, a.WIDTH)
         pb, sb, keep_b = _rows(b.data, shape, n, b.WIDTH)
+        contact = kind >= KIND_FIRST_CONTACT
         if out is not None:
-            if not isinstance(out, BatchResult) or out.shape != shape or \
-                    (out.raw is None) != bool(distance_only):
-                raise ValueError("%s: out must be a BatchResult of shape %s from a call with "
-                                 "distance_only=%s" % (name, shape, bool(distance_only)))
-            res = out
-        elif distance_only:
-            res = BatchResult(None, np.empty(shape, np.int32), np.empty(shape, np.float64))
+            res = self._check_out(name, mode, contact, shape, out)
         else:
-            res = BatchResult(np.empty(shape, _lib.RESULT_DTYPE), np.empty(shape, np.int32))
-        status = res.status
-        if distance_only:
-            st = _lib.batch_distance(self._q, kind, n, pa, sa, pb, sb, res.distance.ctypes.data,
-                                     status.ctypes.data) if n else 0
+            res = self._new_outputs(mode, contact, shape)
+        first = res[0] if mode == "grad" else res
+        status = first.status.ctypes.data
+        q = self._q
+        if mode == "distance":
+            args = (first.distance.ctypes.data, status)
+        elif mode == "grad":
+            args = (first.raw.ctypes.data, res[1].raw.ctypes.data, status)
         else:
-            st = _lib.batch(self._q, kind, n, pa, sa, pb, sb, res.raw.ctypes.data,
-                            status.ctypes.data) if n else 0
+            args = (first.raw.ctypes.data, status)
+        st = self._call(n, lambda: needed(q, kind, n, pa, sa, pb, sb, *args), progress) if n else 0
         del keep_a, keep_b
         if st in _CALL_ERRORS:
             self._check(st)
         return res
 
-    # ---- swept objects and gradients: one object each (the batch API has no such kinds) ----
-    def _single(self, name, c_fn, a, b, method, contact, grad):
-        if c_fn is None:
-            raise RuntimeError("%s: the loaded libcircledist has no cdist_%s%s"
-                               % (name, name.replace("_grad", ""), "_grad" if grad else ""))
-        if a.shape or b.shape:
-            raise ValueError("%s: takes one object each (cdist_batch has no swept or gradient "
-                             "kinds; loop over the entries in Python), got batch shapes %s and %s"
-                             % (name, a.shape, b.shape))
-        with self._lock:
-            q = self._handle()
-            old = self._override_method(q, method)
+    def _call(self, n, c_call, progress):
+        """Run one batch call: with progress reports (progress=, a tqdm bar) and Ctrl-C when the
+        batch is long enough. While the C call runs (GIL released) a SIGINT only sets a flag
+        here (a temporary handler in the main thread); the library's progress callback, run in
+        this thread between chunks of entries, returns non-zero when it is set, so the batch
+        stops within a chunk and KeyboardInterrupt is raised after the call (the entries
+        answered are in the outputs, e.g. an out= buffer; the others have CDIST_ERR_CANCELLED)."""
+        on_main = threading.current_thread() is threading.main_thread()
+        old_handler = signal.getsignal(signal.SIGINT) if on_main else None
+        catch = callable(old_handler)     # not SIG_IGN / SIG_DFL / a handler set outside Python
+        if _lib.query_set_progress is None or not (progress or (catch and n >= _PROGRESS_MIN)):
+            return c_call()
+        interrupted = []
+        bar = _progress_bar(n) if progress is True else None
+        user_fn = progress if callable(progress) else None
+        seen, errors = [0], []
+
+        def report(_user, done, total):
             try:
-                out = self._contact_addr if contact else self._one_addr
-                if grad:
-                    st = c_fn(q, a.address, b.address, out, self._grad_addr)
-                else:
-                    st = c_fn(q, a.address, b.address, out)
-                if st:
-                    self._check(st)
-                res = Contact._from_buffer(self._contact_buffer) if contact else \
-                    Result._from_buffer(self._one_buffer)
-                return (res, Grad._from_buffer(self._grad_buffer)) if grad else res
-            finally:
-                if old is not None:
-                    _lib.query_set_method(q, old)
+                if bar is not None:
+                    bar.update(done - seen[0])
+                    seen[0] = done
+                stop = bool(user_fn(done, total)) if user_fn is not None else False
+            except BaseException as e:  # noqa: B036 - re-raised after the C call returns
+                errors.append(e)
+                return 1
+            return 1 if stop or interrupted else 0
+
+        c_report = _lib.PROGRESS_FN(report)
+        self._check(_lib.query_set_progress(self._q, c_report, None, _PROGRESS_EVERY))
+        if catch:
+            signal.signal(signal.SIGINT, lambda signum, frame: interrupted.append(signum))
+        try:
+            st = c_call()
+        finally:
+            if catch:
+                signal.signal(signal.SIGINT, old_handler)
+            _lib.query_set_progress(self._q, _lib.PROGRESS_FN(), None, 0)
+            if bar is not None:
+                bar.close()
+        if errors:
+            raise errors[0]
+        if interrupted:
+            if old_handler is signal.default_int_handler:
+                raise KeyboardInterrupt
+            old_handler(signal.SIGINT, None)
+        return st
+
+    # ---- swept objects and gradients -------------------------------------------------------
+    def _swept(self, name, kind, c_fn, a, b, method, threads, mode, out, progress):
+        """A contact or gradient query: one object each through the single C query (fast path),
+        arrays of objects through one batch call."""
+        contact, grad = kind >= KIND_FIRST_CONTACT, mode == "grad"
+        if a.shape or b.shape or out is not None or mode == "distance":
+            with self._call_options(method, threads):
+                return self._batch(name, kind, a, b, mode, out, progress)
+        if c_fn is None:
+            raise RuntimeError("%s: the loaded libcircledist has no cdist_%s" % (name, name))
+        with self._call_options(method) as q:
+            out_addr = self._contact_addr if contact else self._one_addr
+            if grad:
+                st = c_fn(q, a.address, b.address, out_addr, self._grad_addr)
+            else:
+                st = c_fn(q, a.address, b.address, out_addr)
+            if st:
+                self._check(st)
+            res = Contact._from_buffer(self._contact_buffer) if contact else \
+                Result._from_buffer(self._one_buffer)
+            return (res, Grad._from_buffer(self._grad_buffer)) if grad else res
 
     # ---- curves ----------------------------------------------------------------------------
     def _curve(self, name, kind, f, t0, t1, other, method, threads, distance_only, out):
@@ -632,7 +829,8 @@ def _make_method(name, kind, cls_a, cls_b):
     def single(q, a, b, r):
         return c_fn(q, a.address, b.address, r)
 
-    def query(self, a, b, *, method=None, threads=None, distance_only=False, out=None):
+    def query(self, a, b, *, method=None, threads=None, distance_only=False, out=None,
+              progress=None):
         if type(a) is not cls_a:
             a = coerce(a, cls_a, "%s: argument a (the %s)" % (name, na))
         if type(b) is not cls_b:
@@ -644,7 +842,7 @@ def _make_method(name, kind, cls_a, cls_b):
                 if st:
                     self._check(st)
                 return Result._from_buffer(self._one_buffer)
-        return self._run(name, kind, a, b, method, threads, distance_only, single, out)
+        return self._run(name, kind, a, b, method, threads, distance_only, single, out, progress)
 
     query.__name__ = name
     query.__doc__ = """Minimum distance from a %(A)s (a) to a %(B)s (b): cdist_%(name)s.
@@ -657,7 +855,11 @@ def _make_method(name, kind, cls_a, cls_b):
         vectorised call (kept on the handle); distance_only: only distances (and statuses),
         through cdist_batch_distance (SIMD screening path); always returns a BatchResult.
         out: a BatchResult of the same shape (and distance_only) to write into instead of
-        allocating new buffers (saves the page faults of fresh memory in repeated calls).""" % {
+        allocating new buffers (saves the page faults of fresh memory in repeated calls).
+        progress: True for a progress bar (tqdm if installed, else a line on stderr), or a
+        callable progress(done, total) -> stop (True stops the batch: the entries not answered
+        get status CDIST_ERR_CANCELLED). Long batches honour Ctrl-C: KeyboardInterrupt well within
+        0.2 s of the signal; the entries answered before it are in out=, if given.""" % {
         "A": cls_a.__name__, "B": cls_b.__name__, "name": name}
     return query
 
@@ -666,7 +868,8 @@ for _name, _kind, _ca, _cb in _KINDS:
     setattr(Query, _name, _make_method(_name, _kind, _ca, _cb))
 
 
-# Swept queries: name, first and second object class (one object each; cdist_<name>).
+# Contact (swept) kinds: name, first and second object class; kind numbers 21.. in this order.
+KIND_FIRST_CONTACT = 21
 _SWEPT_KINDS = [
     ("torus_torus", Torus, Torus), ("torus_capsule", Torus, Capsule),
     ("torus_sphere", Torus, Sphere), ("torus_rounded_disk", Torus, RoundedDisk),
@@ -687,51 +890,80 @@ if _lib.swept_size is not None:  # the swept structs must be the C library's
         if _lib.swept_size(_i) != 8 * _cls.WIDTH:
             raise ImportError("circledist: the library's %s is %d bytes, this package expects %d"
                               % (_cls.__name__, _lib.swept_size(_i), 8 * _cls.WIDTH))
+if _lib.batch_contact is not None:  # the contact kinds must be the library's
+    for _i, (_name, _ca, _cb) in enumerate(_SWEPT_KINDS):
+        _kind = KIND_FIRST_CONTACT + _i
+        if (_lib.kind_name(_kind) or b"").decode() != _name or \
+                (_lib.kind_size_a(_kind), _lib.kind_size_b(_kind)) != (8 * _ca.WIDTH, 8 * _cb.WIDTH):
+            raise ImportError("circledist: the library's batch kind %d is not %s(%s, %s)"
+                              % (_kind, _name, _ca.__name__, _cb.__name__))
 
 
-def _make_single_method(name, cls_a, cls_b, contact, grad):
+def _make_swept_method(name, kind, cls_a, cls_b, grad):
+    contact = kind >= KIND_FIRST_CONTACT
     c_name = name + "_grad" if grad else name
     c_fn = _lib.grad_query(name) if grad else _lib.contact_query(name)
 
-    def query(self, a, b, *, method=None):
+    def coerce_both(a, b):
         if type(a) is not cls_a:
             a = coerce(a, cls_a, "%s: argument a (the %s)" % (c_name, cls_a.__name__))
         if type(b) is not cls_b:
             b = coerce(b, cls_b, "%s: argument b (the %s)" % (c_name, cls_b.__name__))
-        return self._single(c_name, c_fn, a, b, method, contact, grad)
+        return a, b
+
+    if grad:
+        def query(self, a, b, *, method=None, threads=None, out=None, progress=None):
+            a, b = coerce_both(a, b)
+            return self._swept(c_name, kind, c_fn, a, b, method, threads, "grad", out, progress)
+    else:
+        def query(self, a, b, *, method=None, threads=None, distance_only=False, out=None,
+                  progress=None):
+            a, b = coerce_both(a, b)
+            return self._swept(c_name, kind, c_fn, a, b, method, threads,
+                               "distance" if distance_only else "contact", out, progress)
 
     query.__name__ = c_name
     what = {"A": cls_a.__name__, "B": cls_b.__name__, "name": c_name}
-    if contact:
-        doc = """Signed distance from a %(A)s (a) to a %(B)s (b)%(G)s: cdist_%(name)s.
+    arrays = """a: %(A)s, b: %(B)s -- one object each, or arrays of objects whose batch shapes
+        broadcast (one C call, %(BATCH)s; a bad entry gets its status and NaN, the others are
+        answered, bit-identical to the single query). method: a Method (or its name) for this
+        call only; threads: worker threads of the vectorised call (kept on the handle);
+        out: the return value of an earlier call of the same shape to write into; progress:
+        True (a bar: tqdm if installed) or progress(done, total) -> stop, as for the other
+        queries (long batches honour Ctrl-C)."""
+    if contact and not grad:
+        doc = """Signed distance from a %(A)s (a) to a %(B)s (b): cdist_%(name)s.
 
-        a: %(A)s, b: %(B)s -- one object each (arrays are refused: the C batch API has no
-        swept kinds; loop in Python, one C call per entry). Contact.distance =
-        core_distance - (r0 + r1), negative when the solids overlap; witness points, core
-        points, normals. Raises CircleDistError on bad input (e.g. a negative radius).
-        method: a Method (or its name) for the core query of this call only.
-        Returns %(R)s."""
-        what.update(G=" with its gradient" if grad else "",
-                    R="(Contact, Grad); Grad holds the derivatives of the signed distance\n"
-                    "        (d_radius_swept = -1 for each swept object)" if grad else "a Contact")
+        """ + arrays + """ distance_only: only the signed distances (cdist_batch_distance).
+        Contact.distance = core_distance - (r0 + r1), negative when the solids overlap; witness
+        points, core points, normals. One object each: a Contact, CircleDistError on bad input
+        (e.g. a negative radius); arrays: a BatchContact."""
+        what["BATCH"] = "cdist_batch_contact"
+    elif contact:
+        doc = """Signed distance from a %(A)s (a) to a %(B)s (b) with its gradient: cdist_%(name)s.
+
+        """ + arrays + """ One object each: (Contact, Grad), the derivatives of the signed
+        distance (d_radius_swept = -1 for each swept object); arrays: (BatchContact, BatchGrad)."""
+        what["BATCH"] = "cdist_batch_grad"
     else:
         doc = """Minimum distance from a %(A)s (a) to a %(B)s (b) with its gradient: cdist_%(name)s.
 
-        a: %(A)s, b: %(B)s -- one object each (arrays are refused: the C batch API has no
-        gradient kinds; loop in Python, one C call per entry). Returns (Result, Grad).
-        Raises CircleDistError on bad input. method: a Method (or its name) for this call only."""
+        """ + arrays + """ One object each: (Result, Grad); arrays: (BatchResult, BatchGrad),
+        e.g. grads.obj[0].d_center of shape S + (3,)."""
+        what["BATCH"] = "cdist_batch_grad"
     query.__doc__ = doc % what
     return query
 
 
 SINGLE_NAMES = []
-for _name, _ca, _cb in _SWEPT_KINDS:
+for _i, (_name, _ca, _cb) in enumerate(_SWEPT_KINDS):
     for _grad in (False, True):
-        setattr(Query, _name + "_grad" * _grad, _make_single_method(_name, _ca, _cb, True, _grad))
+        setattr(Query, _name + "_grad" * _grad,
+                _make_swept_method(_name, KIND_FIRST_CONTACT + _i, _ca, _cb, _grad))
         SINGLE_NAMES.append(_name + "_grad" * _grad)
 for _name, _kind, _ca, _cb in _KINDS:
     if _name in _GRAD_CORE:
-        setattr(Query, _name + "_grad", _make_single_method(_name, _ca, _cb, False, True))
+        setattr(Query, _name + "_grad", _make_swept_method(_name, _kind, _ca, _cb, True))
         SINGLE_NAMES.append(_name + "_grad")
 
 
@@ -803,15 +1035,17 @@ def default_query():
 
 
 def _module_function(name):
+    """The module-level form of Query.<name>: this thread's default Query unless query= is
+    given; threads defaults to 1 here."""
     unbound = getattr(Query, name)
-
-    def query(*args, method=None, threads=1, distance_only=False, out=None, query=None):
-        h = query if query is not None else default_query()
-        return getattr(h, name)(*args, method=method, threads=threads, distance_only=distance_only,
-                                out=out)
     sig = inspect.signature(unbound)
     params = [p for p in sig.parameters.values() if p.name != "self"]
     params = [p.replace(default=1) if p.name == "threads" else p for p in params]
+
+    def query(*args, query=None, **kwargs):
+        h = query if query is not None else default_query()
+        kwargs.setdefault("threads", 1)
+        return getattr(h, name)(*args, **kwargs)
     query.__signature__ = sig.replace(parameters=params + [
         inspect.Parameter("query", inspect.Parameter.KEYWORD_ONLY, default=None)])
     query.__name__ = name
@@ -822,23 +1056,6 @@ def _module_function(name):
     return query
 
 
-def _single_module_function(name):
-    unbound = getattr(Query, name)
-
-    def query(a, b, *, method=None, query=None):
-        h = query if query is not None else default_query()
-        return getattr(h, name)(a, b, method=method)
-    sig = inspect.signature(unbound)
-    query.__signature__ = sig.replace(parameters=[
-        p for p in sig.parameters.values() if p.name != "self"] + [
-        inspect.Parameter("query", inspect.Parameter.KEYWORD_ONLY, default=None)])
-    query.__name__ = name
-    query.__doc__ = unbound.__doc__ + """
-
-        Module-level form: uses this thread's default Query unless query= is given."""
-    return query
-
-
 QUERY_NAMES = [k[0] for k in _KINDS] + ["curve_circle", "curve_disk"]
 FUNCTIONS = {name: _module_function(name) for name in QUERY_NAMES}
-FUNCTIONS.update({name: _single_module_function(name) for name in SINGLE_NAMES})
+FUNCTIONS.update({name: _module_function(name) for name in SINGLE_NAMES})

@@ -37,7 +37,19 @@ struct cdist_query {
      * cdist_query_set_threads refuse while it is set. */
     atomic_int batch_busy;
     struct cdist__workers *workers; /* batch worker threads and their handles (src/batch); NULL = 1 thread */
+    /* Progress reporting of long calls (cdist_query_set_progress): kept on the calling handle
+     * only (worker handles never report), so it is not copied to the workers. */
+    cdist_progress_fn progress_fn;
+    void *progress_user;
+    size_t progress_every; /* entries between reports, a multiple of 64 (0: no progress) */
 };
+
+/* Progress of a long call on q's calling thread: calls the handle's progress callback when one
+ * is set (the caller rate-limits with q->progress_every); non-zero asks the call to stop. */
+static inline int cdist__progress_report(const cdist_query *q, size_t done, size_t total)
+{
+    return q->progress_fn ? q->progress_fn(q->progress_user, done, total) != 0 : 0;
+}
 
 /* Batch workers (src/batch/workers.c). cdist__workers_free joins the threads and frees their handles
  * (NULL allowed). cdist__workers_sync gives every worker handle the options of q, sizing their

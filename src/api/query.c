@@ -2,6 +2,7 @@
 /* The query handle, options, status strings, version, status recording, circle frames. */
 #include <math.h>
 #include <stdarg.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -38,6 +39,8 @@ static const struct {
     {"CDIST_ERR_COST_LIMIT", "the query would exceed the cost limit"},
     {"CDIST_ERR_THREAD", "a worker thread could not be started"},
     {"CDIST_ERR_BAD_KIND", "the query kind was not valid"},
+    {"CDIST_ERR_CANCELLED", "the entry was not answered: the progress callback stopped the batch"},
+    {"CDIST_ERR_OVERLAP", "an output array overlapped an input or another output array"},
 };
 #define STATUS_COUNT (sizeof status_table / sizeof status_table[0])
 
@@ -181,6 +184,34 @@ static cdist_status query_set_max_iterations_locked(cdist_query *q, int max_iter
 OPTION_SETTER(cdist_query_set_max_iterations, int, query_set_max_iterations_locked)
 
 int cdist_query_get_max_iterations(const cdist_query *q) { return q ? q->max_iterations : CD_DEFAULT_MAX_ITERATIONS; }
+
+/* Entries between progress reports: rounded up to the batches' block of 64 entries. */
+#define CD_PROGRESS_BLOCK 64
+
+static cdist_status query_set_progress_locked(cdist_query *q, cdist_progress_fn fn, void *user, size_t every)
+{
+    if (fn && every == 0) return cdist__fail(q, CDIST_ERR_BAD_OPTION, "progress: every must be >= 1 with a callback");
+    q->progress_fn = fn;
+    q->progress_user = fn ? user : NULL;
+    q->progress_every = 0;
+    if (fn) {
+        size_t blocks = every / CD_PROGRESS_BLOCK + (every % CD_PROGRESS_BLOCK != 0);
+        q->progress_every = blocks <= SIZE_MAX / CD_PROGRESS_BLOCK ? blocks * CD_PROGRESS_BLOCK
+                                                                    : SIZE_MAX / CD_PROGRESS_BLOCK * CD_PROGRESS_BLOCK;
+    }
+    q->last_status = CDIST_OK;
+    q->message[0] = '\0';
+    return CDIST_OK;
+}
+
+cdist_status cdist_query_set_progress(cdist_query *q, cdist_progress_fn fn, void *user, size_t every)
+{
+    cdist_status st = enter_option_setter(q);
+    if (st) return st;
+    st = query_set_progress_locked(q, fn, user, every);
+    cdist__leave_setter(q);
+    return st;
+}
 
 cdist_status cdist_query_last_status(const cdist_query *q) { return q ? q->last_status : CDIST_ERR_NULL_ARGUMENT; }
 

@@ -9,16 +9,23 @@
 
 #include "internal.h"
 
-/* One batch call: n entries of one kind; a full result or a distance per entry. */
+/* What a batch writes per entry. */
+typedef enum cdist__out { CD_OUT_RESULT, CD_OUT_DISTANCE, CD_OUT_CONTACT, CD_OUT_GRAD } cdist__out;
+
+/* One batch call: n entries of one kind; a full result, a contact, a gradient (with its result
+ * or contact) or a distance per entry. */
 typedef struct cdist__job {
     cdist_kind kind;
     size_t n;
     const char *a, *b;
     ptrdiff_t a_stride, b_stride;
-    cdist_result *results; /* full batch, else NULL */
-    double *distances;     /* distance-only batch, else NULL */
+    void *results;          /* cdist_result or cdist_contact array (result_size bytes each), else NULL */
+    double *distances;      /* distance-only batch, else NULL */
     cdist_status *statuses; /* may be NULL */
-    size_t chunk;           /* entries taken at a time by a thread (a multiple of 64, the kernels' block; n on one thread) */
+    size_t chunk;           /* entries taken at a time by a thread (a multiple of 64, the kernels' block; at most the progress interval) */
+    cdist__out out;
+    size_t result_size;
+    cdist_grad *grads; /* gradient batch, else NULL */
 } cdist__job;
 
 static inline const void *cdist__job_a(const cdist__job *j, size_t i) { return j->a + (ptrdiff_t)i * j->a_stride; }
@@ -39,8 +46,10 @@ void cdist__batch_range(cdist_query *h, const cdist__job *job, size_t lo, size_t
 /* Run the whole job with q's worker threads (or on the calling thread alone); *first gets the
  * lowest failing entry of all threads. The caller holds q's batch flag. Returns
  * CDIST_ERR_HANDLE_BUSY (and runs nothing) when another call held q while its options were to be
- * copied to the workers. */
-cdist_status cdist__workers_run(cdist_query *q, const cdist__job *job, cdist__slot *first);
+ * copied to the workers. With a progress callback on q (cdist_query_set_progress), the calling
+ * thread reports between chunks and a non-zero return stops the job: *answered is the number of
+ * entries answered, always the first ones, [0, *answered) (n when it ran to the end). */
+cdist_status cdist__workers_run(cdist_query *q, const cdist__job *job, cdist__slot *first, size_t *answered);
 
 /* A distance kernel variant: entries [lo, lo + count) of job, an int selecting the kind's shape,
  * the unit tolerance; returns the mask of the entries left for the scalar path. */

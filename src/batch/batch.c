@@ -8,42 +8,70 @@
 #include <string.h>
 
 #include "batch-priv.h"
+#include "swept/swept-priv.h"
 
-typedef cdist_status (*kind_fn)(cdist_query *q, const void *a, const void *b, cdist_result *r);
+/* The single query of a kind (r: cdist_result, or cdist_contact for a contact kind) and its
+ * _grad query. */
+typedef cdist_status (*kind_fn)(cdist_query *q, const void *a, const void *b, void *r);
+typedef cdist_status (*grad_fn)(cdist_query *q, const void *a, const void *b, void *r, cdist_grad *g);
 
-#define WRAP(fn, TA, TB)                                                                                      \
-    static cdist_status k_##fn(cdist_query *q, const void *a, const void *b, cdist_result *r)                \
+#define WRAP(fn, TA, TB, TR)                                                                                  \
+    static cdist_status k_##fn(cdist_query *q, const void *a, const void *b, void *r)                        \
     {                                                                                                         \
-        return cdist_##fn(q, (const TA *)a, (const TB *)b, r);                                               \
+        return cdist_##fn(q, (const TA *)a, (const TB *)b, (TR *)r);                                         \
     }
-WRAP(point_circle, cdist_vec3, cdist_circle)
-WRAP(point_disk, cdist_vec3, cdist_circle)
-WRAP(line_circle, cdist_line, cdist_circle)
-WRAP(ray_circle, cdist_ray, cdist_circle)
-WRAP(segment_circle, cdist_segment, cdist_circle)
-WRAP(circle_circle, cdist_circle, cdist_circle)
-WRAP(line_disk, cdist_line, cdist_circle)
-WRAP(ray_disk, cdist_ray, cdist_circle)
-WRAP(segment_disk, cdist_segment, cdist_circle)
-WRAP(circle_disk, cdist_circle, cdist_circle)
-WRAP(disk_disk, cdist_circle, cdist_circle)
-WRAP(arc_circle, cdist_arc, cdist_circle)
-WRAP(arc_arc, cdist_arc, cdist_arc)
-WRAP(segment_arc, cdist_segment, cdist_arc)
-WRAP(arc_disk, cdist_arc, cdist_circle)
-WRAP(helix_circle, cdist_helix, cdist_circle)
-WRAP(helix_disk, cdist_helix, cdist_circle)
-WRAP(bezier3_circle, cdist_bezier3, cdist_circle)
-WRAP(bezier3_disk, cdist_bezier3, cdist_circle)
+#define WRAP_GRAD(fn, TA, TB, TR)                                                                             \
+    WRAP(fn, TA, TB, TR)                                                                                      \
+    static cdist_status g_##fn(cdist_query *q, const void *a, const void *b, void *r, cdist_grad *g)         \
+    {                                                                                                         \
+        return cdist_##fn##_grad(q, (const TA *)a, (const TB *)b, (TR *)r, g);                               \
+    }
+WRAP_GRAD(point_circle, cdist_vec3, cdist_circle, cdist_result)
+WRAP_GRAD(point_disk, cdist_vec3, cdist_circle, cdist_result)
+WRAP_GRAD(line_circle, cdist_line, cdist_circle, cdist_result)
+WRAP_GRAD(ray_circle, cdist_ray, cdist_circle, cdist_result)
+WRAP_GRAD(segment_circle, cdist_segment, cdist_circle, cdist_result)
+WRAP_GRAD(circle_circle, cdist_circle, cdist_circle, cdist_result)
+WRAP_GRAD(line_disk, cdist_line, cdist_circle, cdist_result)
+WRAP_GRAD(ray_disk, cdist_ray, cdist_circle, cdist_result)
+WRAP_GRAD(segment_disk, cdist_segment, cdist_circle, cdist_result)
+WRAP_GRAD(circle_disk, cdist_circle, cdist_circle, cdist_result)
+WRAP_GRAD(disk_disk, cdist_circle, cdist_circle, cdist_result)
+WRAP_GRAD(arc_circle, cdist_arc, cdist_circle, cdist_result)
+WRAP_GRAD(arc_arc, cdist_arc, cdist_arc, cdist_result)
+WRAP_GRAD(segment_arc, cdist_segment, cdist_arc, cdist_result)
+WRAP_GRAD(arc_disk, cdist_arc, cdist_circle, cdist_result)
+WRAP(helix_circle, cdist_helix, cdist_circle, cdist_result)
+WRAP(helix_disk, cdist_helix, cdist_circle, cdist_result)
+WRAP(bezier3_circle, cdist_bezier3, cdist_circle, cdist_result)
+WRAP(bezier3_disk, cdist_bezier3, cdist_circle, cdist_result)
+WRAP_GRAD(torus_torus, cdist_torus, cdist_torus, cdist_contact)
+WRAP_GRAD(torus_capsule, cdist_torus, cdist_capsule, cdist_contact)
+WRAP_GRAD(torus_sphere, cdist_torus, cdist_sphere, cdist_contact)
+WRAP_GRAD(torus_rounded_disk, cdist_torus, cdist_rounded_disk, cdist_contact)
+WRAP_GRAD(capsule_capsule, cdist_capsule, cdist_capsule, cdist_contact)
+WRAP_GRAD(capsule_sphere, cdist_capsule, cdist_sphere, cdist_contact)
+WRAP_GRAD(capsule_rounded_disk, cdist_capsule, cdist_rounded_disk, cdist_contact)
+WRAP_GRAD(sphere_sphere, cdist_sphere, cdist_sphere, cdist_contact)
+WRAP_GRAD(sphere_rounded_disk, cdist_sphere, cdist_rounded_disk, cdist_contact)
+WRAP_GRAD(rounded_disk_rounded_disk, cdist_rounded_disk, cdist_rounded_disk, cdist_contact)
+WRAP_GRAD(torus_line, cdist_torus, cdist_line, cdist_contact)
+WRAP_GRAD(torus_ray, cdist_torus, cdist_ray, cdist_contact)
+WRAP_GRAD(torus_segment, cdist_torus, cdist_segment, cdist_contact)
+WRAP_GRAD(capsule_circle, cdist_capsule, cdist_circle, cdist_contact)
+WRAP_GRAD(capsule_disk, cdist_capsule, cdist_circle, cdist_contact)
+WRAP_GRAD(sphere_circle, cdist_sphere, cdist_circle, cdist_contact)
+WRAP_GRAD(sphere_disk, cdist_sphere, cdist_circle, cdist_contact)
+#undef WRAP_GRAD
 #undef WRAP
 
-static cdist_status k_curve_circle(cdist_query *q, const void *a, const void *b, cdist_result *r)
+static cdist_status k_curve_circle(cdist_query *q, const void *a, const void *b, void *r)
 {
     const cdist_curve *c = a;
     return cdist_curve_circle(q, c->fn, c->user, c->t0, c->t1, b, r);
 }
 
-static cdist_status k_curve_disk(cdist_query *q, const void *a, const void *b, cdist_result *r)
+static cdist_status k_curve_disk(cdist_query *q, const void *a, const void *b, void *r)
 {
     const cdist_curve *c = a;
     return cdist_curve_disk(q, c->fn, c->user, c->t0, c->t1, b, r);
@@ -60,39 +88,85 @@ enum {
     CIRCLE_CIRCLE_KERNEL
 };
 
-/* A kind's name is its family's (cdist__family_table): the kind and family numbers agree. */
-static const struct {
+/* Byte offset of a swept object's radius; a plain object (radius 0) has none. Each swept struct
+ * starts with its core object, so a kernel of the core kind reads the swept array as it is. */
+enum { PLAIN = -1 };
+#define R_TORUS ((int)offsetof(cdist_torus, tube_radius))
+#define R_CAPSULE ((int)offsetof(cdist_capsule, radius))
+#define R_SPHERE ((int)offsetof(cdist_sphere, radius))
+#define R_RDISK ((int)offsetof(cdist_rounded_disk, radius))
+_Static_assert(offsetof(cdist_torus, circle) == 0 && offsetof(cdist_capsule, segment) == 0 &&
+                   offsetof(cdist_sphere, center) == 0 && offsetof(cdist_rounded_disk, disk) == 0,
+               "a swept object starts with its core");
+
+/* A kind's name is its family's (cdist__family_table: the kind and family numbers agree) or, for
+ * a contact kind, its own. A contact kind's kernel is its core kind's, `swap` when the core
+ * kernel takes the objects in the other order (the torus is the circle, the second object). */
+typedef struct kind_row {
+    const char *name;
     size_t size_a, size_b;
     kind_fn full;
+    grad_fn grad;
     int kernel;
-} kinds[] = {
-    [CDIST_KIND_POINT_CIRCLE] = {sizeof(cdist_vec3), sizeof(cdist_circle), k_point_circle,
-                                 .kernel = POINT_CIRCLE_KERNEL},
-    [CDIST_KIND_POINT_DISK] = {sizeof(cdist_vec3), sizeof(cdist_circle), k_point_disk,
-                               .kernel = POINT_DISK_KERNEL},
-    [CDIST_KIND_LINE_CIRCLE] = {sizeof(cdist_line), sizeof(cdist_circle), k_line_circle, .kernel = LINE_CIRCLE_KERNEL},
-    [CDIST_KIND_RAY_CIRCLE] = {sizeof(cdist_ray), sizeof(cdist_circle), k_ray_circle, .kernel = RAY_CIRCLE_KERNEL},
-    [CDIST_KIND_SEGMENT_CIRCLE] = {sizeof(cdist_segment), sizeof(cdist_circle), k_segment_circle,
-                                   .kernel = SEGMENT_CIRCLE_KERNEL},
-    [CDIST_KIND_CIRCLE_CIRCLE] = {sizeof(cdist_circle), sizeof(cdist_circle), k_circle_circle,
-                                  .kernel = CIRCLE_CIRCLE_KERNEL},
-    [CDIST_KIND_LINE_DISK] = {sizeof(cdist_line), sizeof(cdist_circle), k_line_disk},
-    [CDIST_KIND_RAY_DISK] = {sizeof(cdist_ray), sizeof(cdist_circle), k_ray_disk},
-    [CDIST_KIND_SEGMENT_DISK] = {sizeof(cdist_segment), sizeof(cdist_circle), k_segment_disk},
-    [CDIST_KIND_CIRCLE_DISK] = {sizeof(cdist_circle), sizeof(cdist_circle), k_circle_disk},
-    [CDIST_KIND_DISK_DISK] = {sizeof(cdist_circle), sizeof(cdist_circle), k_disk_disk},
-    [CDIST_KIND_CURVE_CIRCLE] = {sizeof(cdist_curve), sizeof(cdist_circle), k_curve_circle},
-    [CDIST_KIND_CURVE_DISK] = {sizeof(cdist_curve), sizeof(cdist_circle), k_curve_disk},
-    [CDIST_KIND_ARC_CIRCLE] = {sizeof(cdist_arc), sizeof(cdist_circle), k_arc_circle},
-    [CDIST_KIND_ARC_ARC] = {sizeof(cdist_arc), sizeof(cdist_arc), k_arc_arc},
-    [CDIST_KIND_SEGMENT_ARC] = {sizeof(cdist_segment), sizeof(cdist_arc), k_segment_arc},
-    [CDIST_KIND_ARC_DISK] = {sizeof(cdist_arc), sizeof(cdist_circle), k_arc_disk},
-    [CDIST_KIND_HELIX_CIRCLE] = {sizeof(cdist_helix), sizeof(cdist_circle), k_helix_circle},
-    [CDIST_KIND_HELIX_DISK] = {sizeof(cdist_helix), sizeof(cdist_circle), k_helix_disk},
-    [CDIST_KIND_BEZIER3_CIRCLE] = {sizeof(cdist_bezier3), sizeof(cdist_circle), k_bezier3_circle},
-    [CDIST_KIND_BEZIER3_DISK] = {sizeof(cdist_bezier3), sizeof(cdist_circle), k_bezier3_disk},
+    int contact;
+    int swap;
+    int radius_a, radius_b;
+} kind_row;
+
+#define PLAIN_ROW(K, TA, TB, fn, ...) [CDIST_KIND_##K] = {NULL, sizeof(TA), sizeof(TB), k_##fn, __VA_ARGS__}
+#define CONTACT_ROW(K, name_, TA, TB, kernel_, swap_, ra, rb)                                                  \
+    [CDIST_KIND_##K] = {#name_, sizeof(TA), sizeof(TB), k_##name_, g_##name_, kernel_, 1, swap_, ra, rb}
+static const kind_row kinds[] = {
+    PLAIN_ROW(POINT_CIRCLE, cdist_vec3, cdist_circle, point_circle, g_point_circle, POINT_CIRCLE_KERNEL),
+    PLAIN_ROW(POINT_DISK, cdist_vec3, cdist_circle, point_disk, g_point_disk, POINT_DISK_KERNEL),
+    PLAIN_ROW(LINE_CIRCLE, cdist_line, cdist_circle, line_circle, g_line_circle, LINE_CIRCLE_KERNEL),
+    PLAIN_ROW(RAY_CIRCLE, cdist_ray, cdist_circle, ray_circle, g_ray_circle, RAY_CIRCLE_KERNEL),
+    PLAIN_ROW(SEGMENT_CIRCLE, cdist_segment, cdist_circle, segment_circle, g_segment_circle, SEGMENT_CIRCLE_KERNEL),
+    PLAIN_ROW(CIRCLE_CIRCLE, cdist_circle, cdist_circle, circle_circle, g_circle_circle, CIRCLE_CIRCLE_KERNEL),
+    PLAIN_ROW(LINE_DISK, cdist_line, cdist_circle, line_disk, g_line_disk),
+    PLAIN_ROW(RAY_DISK, cdist_ray, cdist_circle, ray_disk, g_ray_disk),
+    PLAIN_ROW(SEGMENT_DISK, cdist_segment, cdist_circle, segment_disk, g_segment_disk),
+    PLAIN_ROW(CIRCLE_DISK, cdist_circle, cdist_circle, circle_disk, g_circle_disk),
+    PLAIN_ROW(DISK_DISK, cdist_circle, cdist_circle, disk_disk, g_disk_disk),
+    PLAIN_ROW(CURVE_CIRCLE, cdist_curve, cdist_circle, curve_circle, NULL),
+    PLAIN_ROW(CURVE_DISK, cdist_curve, cdist_circle, curve_disk, NULL),
+    PLAIN_ROW(ARC_CIRCLE, cdist_arc, cdist_circle, arc_circle, g_arc_circle),
+    PLAIN_ROW(ARC_ARC, cdist_arc, cdist_arc, arc_arc, g_arc_arc),
+    PLAIN_ROW(SEGMENT_ARC, cdist_segment, cdist_arc, segment_arc, g_segment_arc),
+    PLAIN_ROW(ARC_DISK, cdist_arc, cdist_circle, arc_disk, g_arc_disk),
+    PLAIN_ROW(HELIX_CIRCLE, cdist_helix, cdist_circle, helix_circle, NULL),
+    PLAIN_ROW(HELIX_DISK, cdist_helix, cdist_circle, helix_disk, NULL),
+    PLAIN_ROW(BEZIER3_CIRCLE, cdist_bezier3, cdist_circle, bezier3_circle, NULL),
+    PLAIN_ROW(BEZIER3_DISK, cdist_bezier3, cdist_circle, bezier3_disk, NULL),
+    /* Contact kinds. Cores without a kernel (circle-disk, disk-disk, segment-disk and the
+     * closed forms point-point, point-segment, segment-segment) take the scalar path. */
+    CONTACT_ROW(TORUS_TORUS, torus_torus, cdist_torus, cdist_torus, CIRCLE_CIRCLE_KERNEL, 0, R_TORUS, R_TORUS),
+    CONTACT_ROW(TORUS_CAPSULE, torus_capsule, cdist_torus, cdist_capsule, SEGMENT_CIRCLE_KERNEL, 1, R_TORUS, R_CAPSULE),
+    CONTACT_ROW(TORUS_SPHERE, torus_sphere, cdist_torus, cdist_sphere, POINT_CIRCLE_KERNEL, 1, R_TORUS, R_SPHERE),
+    CONTACT_ROW(TORUS_ROUNDED_DISK, torus_rounded_disk, cdist_torus, cdist_rounded_disk, NO_KERNEL, 0, R_TORUS,
+                R_RDISK),
+    CONTACT_ROW(CAPSULE_CAPSULE, capsule_capsule, cdist_capsule, cdist_capsule, NO_KERNEL, 0, R_CAPSULE, R_CAPSULE),
+    CONTACT_ROW(CAPSULE_SPHERE, capsule_sphere, cdist_capsule, cdist_sphere, NO_KERNEL, 0, R_CAPSULE, R_SPHERE),
+    CONTACT_ROW(CAPSULE_ROUNDED_DISK, capsule_rounded_disk, cdist_capsule, cdist_rounded_disk, NO_KERNEL, 0,
+                R_CAPSULE, R_RDISK),
+    CONTACT_ROW(SPHERE_SPHERE, sphere_sphere, cdist_sphere, cdist_sphere, NO_KERNEL, 0, R_SPHERE, R_SPHERE),
+    CONTACT_ROW(SPHERE_ROUNDED_DISK, sphere_rounded_disk, cdist_sphere, cdist_rounded_disk, POINT_DISK_KERNEL, 0,
+                R_SPHERE, R_RDISK),
+    CONTACT_ROW(ROUNDED_DISK_ROUNDED_DISK, rounded_disk_rounded_disk, cdist_rounded_disk, cdist_rounded_disk,
+                NO_KERNEL, 0, R_RDISK, R_RDISK),
+    CONTACT_ROW(TORUS_LINE, torus_line, cdist_torus, cdist_line, LINE_CIRCLE_KERNEL, 1, R_TORUS, PLAIN),
+    CONTACT_ROW(TORUS_RAY, torus_ray, cdist_torus, cdist_ray, RAY_CIRCLE_KERNEL, 1, R_TORUS, PLAIN),
+    CONTACT_ROW(TORUS_SEGMENT, torus_segment, cdist_torus, cdist_segment, SEGMENT_CIRCLE_KERNEL, 1, R_TORUS, PLAIN),
+    CONTACT_ROW(CAPSULE_CIRCLE, capsule_circle, cdist_capsule, cdist_circle, SEGMENT_CIRCLE_KERNEL, 0, R_CAPSULE,
+                PLAIN),
+    CONTACT_ROW(CAPSULE_DISK, capsule_disk, cdist_capsule, cdist_circle, NO_KERNEL, 0, R_CAPSULE, PLAIN),
+    CONTACT_ROW(SPHERE_CIRCLE, sphere_circle, cdist_sphere, cdist_circle, POINT_CIRCLE_KERNEL, 0, R_SPHERE, PLAIN),
+    CONTACT_ROW(SPHERE_DISK, sphere_disk, cdist_sphere, cdist_circle, POINT_DISK_KERNEL, 0, R_SPHERE, PLAIN),
 };
+#undef PLAIN_ROW
+#undef CONTACT_ROW
 #define KIND_COUNT ((int)(sizeof kinds / sizeof kinds[0]))
+#define FIRST_CONTACT_KIND CDIST_KIND_TORUS_TORUS
 #define SAME_NUMBER(K) _Static_assert((int)CDIST_KIND_##K == (int)CD_FAM_##K, "cdist_kind and family of " #K)
 SAME_NUMBER(POINT_CIRCLE);
 SAME_NUMBER(POINT_DISK);
@@ -116,14 +190,23 @@ SAME_NUMBER(HELIX_DISK);
 SAME_NUMBER(BEZIER3_CIRCLE);
 SAME_NUMBER(BEZIER3_DISK);
 #undef SAME_NUMBER
-_Static_assert(KIND_COUNT == CD_FAM_COUNT, "one family per cdist_kind");
+_Static_assert((int)FIRST_CONTACT_KIND == CD_FAM_COUNT, "one family per cdist_kind before the contact kinds");
 
 static int kind_ok(cdist_kind k) { return (unsigned)k < (unsigned)KIND_COUNT && kinds[k].full; }
 
 int cdist_kind_count(void) { return KIND_COUNT; }
-const char *cdist_kind_name(cdist_kind k) { return kind_ok(k) ? cdist__family_table[k].name : NULL; }
+const char *cdist_kind_name(cdist_kind k)
+{
+    if (!kind_ok(k)) return NULL;
+    return kinds[k].contact ? kinds[k].name : cdist__family_table[k].name;
+}
 size_t cdist_kind_size_a(cdist_kind k) { return kind_ok(k) ? kinds[k].size_a : 0; }
 size_t cdist_kind_size_b(cdist_kind k) { return kind_ok(k) ? kinds[k].size_b : 0; }
+size_t cdist_kind_result_size(cdist_kind k)
+{
+    return kind_ok(k) ? (kinds[k].contact ? sizeof(cdist_contact) : sizeof(cdist_result)) : 0;
+}
+int cdist_kind_has_grad(cdist_kind k) { return kind_ok(k) && kinds[k].grad != NULL; }
 
 /* ---- one range of entries ---- */
 
@@ -135,17 +218,32 @@ static void record(cdist__slot *slot, cdist_query *h, size_t i, cdist_status st)
     memcpy(slot->message, h->message, sizeof slot->message);
 }
 
+/* Room for the result of any kind, for the entries whose result the caller does not keep. */
+typedef union any_result {
+    cdist_result result;
+    cdist_contact contact;
+} any_result;
+
+static double any_distance(const kind_row *row, const any_result *r)
+{
+    return row->contact ? r->contact.distance : r->result.distance;
+}
+
 /* The scalar path of one entry: the single query itself. */
 static void entry(cdist_query *h, const cdist__job *job, size_t i, cdist__slot *slot)
 {
-    kind_fn f = kinds[job->kind].full;
+    const kind_row *row = &kinds[job->kind];
+    const void *a = cdist__job_a(job, i), *b = cdist__job_b(job, i);
+    void *kept = job->results ? (char *)job->results + i * job->result_size : NULL;
+    any_result local;
     cdist_status st;
-    if (job->results) {
-        st = f(h, cdist__job_a(job, i), cdist__job_b(job, i), &job->results[i]);
-    } else {
-        cdist_result r;
-        st = f(h, cdist__job_a(job, i), cdist__job_b(job, i), &r);
-        job->distances[i] = r.distance;
+    switch (job->out) {
+    case CD_OUT_GRAD: st = row->grad(h, a, b, kept ? kept : &local, &job->grads[i]); break;
+    case CD_OUT_DISTANCE:
+        st = row->full(h, a, b, &local);
+        job->distances[i] = any_distance(row, &local);
+        break;
+    default: st = row->full(h, a, b, kept); break;
     }
     if (job->statuses) job->statuses[i] = st;
     record(slot, h, i, st);
@@ -167,7 +265,7 @@ static inline size_t lowest_bit(uint64_t x)
  * method). */
 static int job_kernel(const cdist_query *h, const cdist__job *job)
 {
-    int kernel = job->distances ? kinds[job->kind].kernel : NO_KERNEL;
+    int kernel = job->out == CD_OUT_DISTANCE ? kinds[job->kind].kernel : NO_KERNEL;
     if (kernel >= LINE_CIRCLE_KERNEL && kernel <= SEGMENT_CIRCLE_KERNEL &&
         cdist__family_method(h, CD_FAM_LINE_CIRCLE) == CDIST_METHOD_POLYNOMIAL)
         return NO_KERNEL;
@@ -185,13 +283,47 @@ static uint64_t run_kernel(int kernel, const cdist_query *h, const cdist__job *j
     return cdist__point_distance_kernel(job, kernel == POINT_DISK_KERNEL, h->unit_tol, lo, count);
 }
 
+static double radius_at(const char *obj, int offset)
+{
+    double r = 0.0;
+    if (offset != PLAIN) memcpy(&r, obj + offset, sizeof r);
+    return r;
+}
+
+/* A contact kind through its core's kernel: the core distances of the block, then the radii
+ * subtracted as the single query does (core_distance - (r0 + r1)). An entry whose radius the
+ * single query would reject is left to the scalar path, which reports it. */
+static uint64_t run_contact_kernel(int kernel, const cdist_query *h, const cdist__job *job, size_t lo, size_t count)
+{
+    const kind_row *row = &kinds[job->kind];
+    cdist__job core = *job;
+    if (row->swap) {
+        core.a = job->b;
+        core.b = job->a;
+        core.a_stride = job->b_stride;
+        core.b_stride = job->a_stride;
+    }
+    uint64_t left = run_kernel(kernel, h, &core, lo, count);
+    for (size_t k = 0; k < count; k++) {
+        if (left >> k & 1) continue;
+        size_t i = lo + k;
+        double ra = radius_at(cdist__job_a(job, i), row->radius_a), rb = radius_at(cdist__job_b(job, i), row->radius_b);
+        if (ra >= 0.0 && ra <= CD_MAX_ABS && rb >= 0.0 && rb <= CD_MAX_ABS)
+            job->distances[i] -= ra + rb;
+        else
+            left |= (uint64_t)1 << k;
+    }
+    return left;
+}
+
 void cdist__batch_range(cdist_query *h, const cdist__job *job, size_t lo, size_t hi, cdist__slot *slot)
 {
     int kernel = job_kernel(h, job);
     if (kernel != NO_KERNEL) {
+        int contact = kinds[job->kind].contact;
         for (size_t i = lo; i < hi; i += 64) {
             size_t cnt = hi - i < 64 ? hi - i : 64;
-            uint64_t left = run_kernel(kernel, h, job, i, cnt);
+            uint64_t left = contact ? run_contact_kernel(kernel, h, job, i, cnt) : run_kernel(kernel, h, job, i, cnt);
             if (job->statuses)
                 for (size_t k = 0; k < cnt; k++) job->statuses[i + k] = CDIST_OK;
             for (; left; left &= left - 1) entry(h, job, i + lowest_bit(left), slot);
@@ -203,67 +335,204 @@ void cdist__batch_range(cdist_query *h, const cdist__job *job, size_t lo, size_t
 
 /* ---- the entry points ---- */
 
-/* NULL handle or arrays, bad kind: every writable output says so. */
-static cdist_status fail_all(cdist_query *q, cdist_status st, size_t n, cdist_result *results, double *distances,
-                             cdist_status *statuses, const char *why)
+/* Entry i's outputs in the error state with status st. */
+static void fail_entry(const cdist__job *job, size_t i, cdist_status st)
 {
-    for (size_t i = 0; i < n; i++) {
-        if (results) cdist__begin(NULL, &results[i]);
-        if (distances) distances[i] = NAN;
-        if (statuses) statuses[i] = st;
+    if (job->results && job->result_size) {
+        char *r = (char *)job->results + i * job->result_size;
+        if (job->result_size == sizeof(cdist_contact))
+            cdist__contact_set_error((cdist_contact *)r);
+        else
+            cdist__result_set_error((cdist_result *)r);
     }
+    if (job->distances) job->distances[i] = NAN;
+    if (job->grads) cdist__grad_set_error(&job->grads[i]);
+    if (job->statuses) job->statuses[i] = st;
+}
+
+/* Entries [lo, n) in the error state with status st: each output array in one pass (a
+ * cancelled batch may leave millions of entries, and Ctrl-C waits for this). */
+static void fail_range(const cdist__job *job, size_t lo, cdist_status st)
+{
+    size_t n = job->n;
+    if (lo >= n) return;
+    if (job->distances)
+        for (size_t i = lo; i < n; i++) job->distances[i] = NAN;
+    if (job->statuses)
+        for (size_t i = lo; i < n; i++) job->statuses[i] = st;
+    if (job->grads) {
+        cdist__grad_set_error(&job->grads[lo]);
+        for (size_t i = lo + 1; i < n; i++) job->grads[i] = job->grads[lo];
+    }
+    if (job->results && job->result_size) {
+        char *first = (char *)job->results + lo * job->result_size;
+        fail_entry(job, lo, st);
+        for (size_t i = lo + 1; i < n; i++) memcpy((char *)job->results + i * job->result_size, first, job->result_size);
+    }
+}
+
+/* NULL handle or arrays, bad kind: every writable output says so. */
+static cdist_status fail_all(cdist_query *q, cdist_status st, const cdist__job *job, const char *why)
+{
+    fail_range(job, 0, st);
     if (!q) return st;
     cdist__begin(q, NULL);
     return cdist__fail(q, st, "batch: %s", why);
 }
 
-static cdist_status run_locked(cdist_query *q, cdist_kind kind, size_t n, const void *a, ptrdiff_t a_stride,
-                               const void *b, ptrdiff_t b_stride, cdist_result *results, double *distances,
-                               cdist_status *statuses)
+/* The bytes [lo, hi) spanned by n strided items of `size` bytes from p. */
+typedef struct span {
+    uintptr_t lo, hi;
+    const char *what;
+} span;
+
+static span span_of(const void *p, size_t n, ptrdiff_t stride, size_t size, const char *what)
 {
-    if (!kind_ok(kind)) {
-        fail_all(q, CDIST_ERR_BAD_KIND, n, results, distances, statuses, "");
-        return cdist__fail(q, CDIST_ERR_BAD_KIND, "batch: %d is not a cdist_kind (0..%d)", (int)kind, KIND_COUNT - 1);
+    uintptr_t base = (uintptr_t)p;
+    uintptr_t last = base + (uintptr_t)((ptrdiff_t)(n - 1) * stride); /* wraps back for a negative stride */
+    span s = {stride < 0 ? last : base, (stride < 0 ? base : last) + size, what};
+    return s;
+}
+
+/* The name of the first pair of an output and another array that overlap (NULL: none). Checked
+ * before any entry is read or written: an output written over a later entry's input would
+ * change that entry's answer. */
+static int overlap(const span *s, int count, const char **x, const char **y)
+{
+    for (int i = 0; i < count; i++) {
+        if (!s[i].what || i < 2) continue; /* the inputs (0, 1) may overlap each other */
+        for (int j = 0; j < i; j++) {
+            if (!s[j].what || !(s[i].lo < s[j].hi && s[j].lo < s[i].hi)) continue;
+            *x = s[i].what;
+            *y = s[j].what;
+            return 1;
+        }
     }
-    if (!a || !b || !(results || distances))
-        return fail_all(q, CDIST_ERR_NULL_ARGUMENT, n, results, distances, statuses,
-                        !a ? "first object array is NULL" : !b ? "second object array is NULL" : "output array is NULL");
-    cdist__job job = {kind, n, a, b, a_stride, b_stride, results, distances, statuses, 0};
-    cdist__slot first;
-    if (cdist__workers_run(q, &job, &first)) /* another call held the handle while the options were read */
-        return fail_all(NULL, CDIST_ERR_HANDLE_BUSY, n, results, distances, statuses, "");
+    return 0;
+}
+
+static cdist_status check_overlap(cdist_query *q, const cdist__job *job)
+{
+    size_t n = job->n;
+    span s[6] = {
+        span_of(job->a, n, job->a_stride, kinds[job->kind].size_a, "first object array"),
+        span_of(job->b, n, job->b_stride, kinds[job->kind].size_b, "second object array"),
+    };
+    int k = 2;
+    if (job->results) s[k++] = span_of(job->results, n, (ptrdiff_t)job->result_size, job->result_size, "results");
+    if (job->distances) s[k++] = span_of(job->distances, n, sizeof(double), sizeof(double), "distances");
+    if (job->grads) s[k++] = span_of(job->grads, n, sizeof(cdist_grad), sizeof(cdist_grad), "gradients");
+    if (job->statuses) s[k++] = span_of(job->statuses, n, sizeof(cdist_status), sizeof(cdist_status), "statuses");
+    const char *x, *y;
+    if (!overlap(s, k, &x, &y)) return CDIST_OK;
     cdist__begin(q, NULL);
+    return cdist__fail(q, CDIST_ERR_OVERLAP, "batch: the %s overlap the %s (outputs must not overlap the inputs or "
+                       "each other); nothing was written", x, y);
+}
+
+/* The kinds an output answers: full results the plain kinds, contacts the contact kinds,
+ * gradients the kinds with a _grad query, distances every kind. */
+static const char *kind_refused(cdist_kind kind, cdist__out out)
+{
+    switch (out) {
+    case CD_OUT_RESULT: return kinds[kind].contact ? "has contact results: use cdist_batch_contact()" : NULL;
+    case CD_OUT_CONTACT: return kinds[kind].contact ? NULL : "is not a contact kind: use cdist_batch()";
+    case CD_OUT_GRAD: return kinds[kind].grad ? NULL : "has no gradient query";
+    default: return NULL;
+    }
+}
+
+static cdist_status run_locked(cdist_query *q, cdist__job *job)
+{
+    if (!kind_ok(job->kind) || kind_refused(job->kind, job->out)) {
+        fail_all(q, CDIST_ERR_BAD_KIND, job, "");
+        if (!kind_ok(job->kind))
+            return cdist__fail(q, CDIST_ERR_BAD_KIND, "batch: %d is not a cdist_kind (0..%d)", (int)job->kind,
+                               KIND_COUNT - 1);
+        return cdist__fail(q, CDIST_ERR_BAD_KIND, "batch: kind %s %s", cdist_kind_name(job->kind),
+                           kind_refused(job->kind, job->out));
+    }
+    const char *missing = !job->a ? "first object array is NULL"
+                          : !job->b ? "second object array is NULL"
+                          : (job->out == CD_OUT_GRAD ? !job->grads
+                             : job->out == CD_OUT_DISTANCE ? !job->distances
+                                                           : !job->results)
+                              ? "output array is NULL"
+                              : NULL;
+    if (missing) return fail_all(q, CDIST_ERR_NULL_ARGUMENT, job, missing);
+    cdist_status st = check_overlap(q, job);
+    if (st) return st;
+    cdist__slot first;
+    size_t answered;
+    if (cdist__workers_run(q, job, &first, &answered)) /* another call held the handle while the options were read */
+        return fail_all(NULL, CDIST_ERR_HANDLE_BUSY, job, "");
+    fail_range(job, answered, CDIST_ERR_CANCELLED);
+    cdist__begin(q, NULL);
+    if (answered < job->n) {
+        if (first.fail != SIZE_MAX)
+            return cdist__fail(q, CDIST_ERR_CANCELLED,
+                               "batch cancelled by the progress callback: %zu of %zu entries answered (entry %zu: %.160s)",
+                               answered, job->n, first.fail, first.message);
+        return cdist__fail(q, CDIST_ERR_CANCELLED, "batch cancelled by the progress callback: %zu of %zu entries answered",
+                           answered, job->n);
+    }
     if (first.fail == SIZE_MAX) return CDIST_OK;
     return cdist__fail(q, first.status, "batch entry %zu: %.200s", first.fail, first.message);
 }
 
-static cdist_status run(cdist_query *q, cdist_kind kind, size_t n, const void *a, ptrdiff_t a_stride, const void *b,
-                        ptrdiff_t b_stride, cdist_result *results, double *distances, cdist_status *statuses)
+static cdist_status run(cdist_query *q, cdist__job *job)
 {
-    if (!q) return n ? fail_all(q, CDIST_ERR_NULL_ARGUMENT, n, results, distances, statuses, "") : CDIST_ERR_NULL_ARGUMENT;
+    if (!q) return job->n ? fail_all(q, CDIST_ERR_NULL_ARGUMENT, job, "") : CDIST_ERR_NULL_ARGUMENT;
     /* One batch at a time per handle (it owns the worker pool and the worker handles); a second
      * one fails every entry without touching the handle. */
     if (atomic_exchange_explicit(&q->batch_busy, 1, memory_order_acquire))
-        return fail_all(NULL, CDIST_ERR_HANDLE_BUSY, n, results, distances, statuses, "");
+        return fail_all(NULL, CDIST_ERR_HANDLE_BUSY, job, "");
     cdist_status st = CDIST_OK;
-    if (n == 0)
+    if (job->n == 0)
         cdist__begin(q, NULL);
     else
-        st = run_locked(q, kind, n, a, a_stride, b, b_stride, results, distances, statuses);
+        st = run_locked(q, job);
     atomic_store_explicit(&q->batch_busy, 0, memory_order_release);
     return st;
+}
+
+/* One batch call: a job of the given output (its results' type fixed by the entry point, or
+ * for gradients the kind's: none for a number that is not a kind, result_size 0, those results
+ * are never written). */
+static cdist_status batch_call(cdist_query *q, cdist_kind kind, size_t n, const void *a, ptrdiff_t a_stride,
+                               const void *b, ptrdiff_t b_stride, cdist__out out, void *results, double *distances,
+                               cdist_grad *grads, cdist_status *statuses)
+{
+    size_t result_size = out == CD_OUT_CONTACT  ? sizeof(cdist_contact)
+                         : out == CD_OUT_RESULT ? sizeof(cdist_result)
+                                                : cdist_kind_result_size(kind);
+    cdist__job job = {kind, n, a, b, a_stride, b_stride, results, distances, statuses, 0, out, result_size, grads};
+    return run(q, &job);
 }
 
 cdist_status cdist_batch(cdist_query *q, cdist_kind kind, size_t n, const void *a, ptrdiff_t a_stride, const void *b,
                          ptrdiff_t b_stride, cdist_result *results, cdist_status *statuses)
 {
-    return run(q, kind, n, a, a_stride, b, b_stride, results, NULL, statuses);
+    return batch_call(q, kind, n, a, a_stride, b, b_stride, CD_OUT_RESULT, results, NULL, NULL, statuses);
 }
 
 cdist_status cdist_batch_distance(cdist_query *q, cdist_kind kind, size_t n, const void *a, ptrdiff_t a_stride,
                                   const void *b, ptrdiff_t b_stride, double *distances, cdist_status *statuses)
 {
-    return run(q, kind, n, a, a_stride, b, b_stride, NULL, distances, statuses);
+    return batch_call(q, kind, n, a, a_stride, b, b_stride, CD_OUT_DISTANCE, NULL, distances, NULL, statuses);
+}
+
+cdist_status cdist_batch_contact(cdist_query *q, cdist_kind kind, size_t n, const void *a, ptrdiff_t a_stride,
+                                 const void *b, ptrdiff_t b_stride, cdist_contact *contacts, cdist_status *statuses)
+{
+    return batch_call(q, kind, n, a, a_stride, b, b_stride, CD_OUT_CONTACT, contacts, NULL, NULL, statuses);
+}
+
+cdist_status cdist_batch_grad(cdist_query *q, cdist_kind kind, size_t n, const void *a, ptrdiff_t a_stride,
+                              const void *b, ptrdiff_t b_stride, void *results, cdist_grad *grads,
+                              cdist_status *statuses)
+{
+    return batch_call(q, kind, n, a, a_stride, b, b_stride, CD_OUT_GRAD, results, NULL, grads, statuses);
 }
 
 cdist_status cdist_circle_circle_batch(cdist_query *q, size_t n, const cdist_circle *c0, const cdist_circle *c1,

@@ -33,6 +33,15 @@ typedef struct cdist__worker {
     cdist__slot slot;
 } cdist__worker;
 
+/* The hand-out state of one batch: chunks are taken in order from `next`, so the entries handed
+ * out are always [0, min(next, n)) and each is answered in full (a stop only keeps threads from
+ * taking more). `done` counts the entries answered, for the progress reports. */
+typedef struct cdist__run {
+    atomic_size_t next;
+    atomic_size_t done;
+    atomic_int stop;
+} cdist__run;
+
 struct cdist__workers {
     int threads; /* including the calling thread */
     int started; /* pthreads running */
@@ -42,18 +51,26 @@ struct cdist__workers {
     int pending;              /* workers still busy with the current batch */
     int quit;
     const cdist__job *job;
-    atomic_size_t next; /* first entry not yet handed out */
-    cdist__worker w[];      /* threads - 1 */
+    cdist__run *run;
+    cdist__worker w[]; /* threads - 1 */
 };
 
-/* Take chunks until none is left. */
-static void drain(struct cdist__workers *p, const cdist__job *job, cdist_query *h, cdist__slot *slot)
+/* Take chunks until none is left or the batch is stopped. The calling thread (caller = q, the
+ * handle with the progress option; NULL for a worker) reports progress between its chunks. */
+static void drain(cdist__run *run, const cdist__job *job, cdist_query *h, cdist__slot *slot, const cdist_query *caller)
 {
+    size_t report_at = caller ? caller->progress_every : 0;
     for (;;) {
-        size_t lo = atomic_fetch_add_explicit(&p->next, job->chunk, memory_order_relaxed);
+        if (atomic_load_explicit(&run->stop, memory_order_relaxed)) return;
+        size_t lo = atomic_fetch_add_explicit(&run->next, job->chunk, memory_order_relaxed);
         if (lo >= job->n) return;
         size_t hi = job->n - lo < job->chunk ? job->n : lo + job->chunk;
         cdist__batch_range(h, job, lo, hi, slot);
+        size_t done = atomic_fetch_add_explicit(&run->done, hi - lo, memory_order_relaxed) + (hi - lo);
+        if (report_at && done >= report_at && done < job->n) {
+            if (cdist__progress_report(caller, done, job->n)) atomic_store_explicit(&run->stop, 1, memory_order_relaxed);
+            report_at = done + caller->progress_every;
+        }
     }
 }
 
@@ -74,9 +91,10 @@ static void *worker_main(void *arg)
         }
         seen = atomic_load_explicit(&p->generation, memory_order_relaxed);
         const cdist__job *job = p->job;
+        cdist__run *run = p->run;
         pthread_mutex_unlock(&p->mutex);
         w->slot.fail = SIZE_MAX;
-        drain(p, job, w->handle, &w->slot);
+        drain(run, job, w->handle, &w->slot, NULL);
         pthread_mutex_lock(&p->mutex);
         if (--p->pending == 0) pthread_cond_signal(&p->done);
         pthread_mutex_unlock(&p->mutex);
@@ -140,7 +158,6 @@ static cdist_status set_threads_locked(cdist_query *q, int threads)
     pthread_mutex_init(&p->mutex, NULL);
     pthread_cond_init(&p->start, NULL);
     pthread_cond_init(&p->done, NULL);
-    atomic_init(&p->next, 0);
     atomic_init(&p->generation, 0);
     for (int i = 0; i < threads - 1; i++) {
         p->w[i].pool = p;
@@ -189,7 +206,19 @@ static void take_lower(cdist__slot *first, const cdist__slot *s)
     if (s->fail < first->fail) *first = *s;
 }
 
-cdist_status cdist__workers_run(cdist_query *q, const cdist__job *job_in, cdist__slot *first)
+/* Entries per chunk: about 16 per thread (load balance), a multiple of the kernels' 64 entries,
+ * and with progress reports at most the report interval (the calling thread reports between its
+ * chunks, and a stop waits for the chunks being answered). */
+static size_t chunk_size(const cdist_query *q, size_t n, int threads)
+{
+    size_t chunk = threads == 1 ? n : n / ((size_t)threads * 16);
+    chunk = (chunk + 63) / 64 * 64;
+    if (chunk == 0) chunk = 64;
+    if (q->progress_fn && chunk > q->progress_every) chunk = q->progress_every;
+    return chunk;
+}
+
+cdist_status cdist__workers_run(cdist_query *q, const cdist__job *job_in, cdist__slot *first, size_t *answered)
 {
     cdist__job job = *job_in;
     first->fail = SIZE_MAX;
@@ -201,27 +230,29 @@ cdist_status cdist__workers_run(cdist_query *q, const cdist__job *job_in, cdist_
     if (threads > 1 && job.n < (size_t)threads * CD_MIN_ENTRIES_PER_THREAD) threads = 1;
     if (threads > 1 && cdist__workers_sync(q)) threads = 1;
     cdist__leave_setter(q);
+    job.chunk = chunk_size(q, job.n, threads);
+    cdist__run run;
+    atomic_init(&run.next, 0);
+    atomic_init(&run.done, 0);
+    atomic_init(&run.stop, 0);
     if (threads == 1) {
-        job.chunk = job.n;
-        cdist__batch_range(q, &job, 0, job.n, first);
-        return CDIST_OK;
+        drain(&run, &job, q, first, q);
+    } else {
+        pthread_mutex_lock(&p->mutex);
+        p->job = &job;
+        p->run = &run;
+        p->pending = p->threads - 1;
+        atomic_fetch_add(&p->generation, 1);
+        pthread_cond_broadcast(&p->start);
+        pthread_mutex_unlock(&p->mutex);
+        drain(&run, &job, q, first, q);
+        pthread_mutex_lock(&p->mutex);
+        while (p->pending > 0) pthread_cond_wait(&p->done, &p->mutex);
+        pthread_mutex_unlock(&p->mutex);
+        for (int i = 0; i < p->threads - 1; i++) take_lower(first, &p->w[i].slot);
     }
-    /* Chunks: about 16 per thread (load balance), a multiple of the kernels' 64 entries. */
-    size_t chunk = job.n / ((size_t)threads * 16);
-    chunk = (chunk + 63) / 64 * 64;
-    if (chunk == 0) chunk = 64;
-    job.chunk = chunk;
-    pthread_mutex_lock(&p->mutex);
-    p->job = &job;
-    atomic_store_explicit(&p->next, 0, memory_order_relaxed);
-    p->pending = p->threads - 1;
-    atomic_fetch_add(&p->generation, 1);
-    pthread_cond_broadcast(&p->start);
-    pthread_mutex_unlock(&p->mutex);
-    drain(p, &job, q, first);
-    pthread_mutex_lock(&p->mutex);
-    while (p->pending > 0) pthread_cond_wait(&p->done, &p->mutex);
-    pthread_mutex_unlock(&p->mutex);
-    for (int i = 0; i < p->threads - 1; i++) take_lower(first, &p->w[i].slot);
+    size_t next = atomic_load_explicit(&run.next, memory_order_relaxed);
+    *answered = next < job.n ? next : job.n;
+    if (*answered == job.n && q->progress_fn) cdist__progress_report(q, job.n, job.n);
     return CDIST_OK;
 }

@@ -188,19 +188,23 @@ cdist_status cdist__core_query(cdist_query *q, const cdist__core_obj *a, const c
 
 /* ---- contact ---- */
 
+/* A pair that is not given: NaN throughout. */
+static void contact_pair_unset(cdist_contact_pair *p)
+{
+    for (int k = 0; k < 2; k++) {
+        p->point[k] = v3(NAN, NAN, NAN);
+        p->core_point[k] = v3(NAN, NAN, NAN);
+        p->param[k] = NAN;
+    }
+    p->normal = v3(NAN, NAN, NAN);
+}
+
 void cdist__contact_set_error(cdist_contact *c)
 {
     memset(c, 0, sizeof *c);
     c->distance = NAN;
     c->core_distance = NAN;
-    for (int i = 0; i < 2; i++) {
-        for (int k = 0; k < 2; k++) {
-            c->pairs[i].point[k] = v3(NAN, NAN, NAN);
-            c->pairs[i].core_point[k] = v3(NAN, NAN, NAN);
-            c->pairs[i].param[k] = NAN;
-        }
-        c->pairs[i].normal = v3(NAN, NAN, NAN);
-    }
+    for (int i = 0; i < 2; i++) contact_pair_unset(&c->pairs[i]);
 }
 
 /* Reference point of a core (for the orientation of a touch normal). */
@@ -289,28 +293,41 @@ static cdist_status check_radius(cdist_query *q, const cdist__core_obj *o, const
     return CDIST_OK;
 }
 
+/* The radius passes check_radius (finite, >= 0, <= CD_MAX_ABS; one comparison each, false for
+ * NaN), or the object has none. */
+static int radius_valid(const cdist__core_obj *o) { return !o->swept || (o->radius >= 0.0 && o->radius <= CD_MAX_ABS); }
+
 cdist_status cdist__swept_query(cdist_query *q, const cdist__core_obj *a, const cdist__core_obj *b, cdist_contact *c,
                             cdist_result *core)
 {
     cdist_result local;
     cdist_result *r = core ? core : &local;
-    if (c) cdist__contact_set_error(c);
-    /* Own validation under the handle's in-use flag (a busy handle is left untouched), released
-     * before the core query, which takes the flag itself; afterwards only c is written. */
-    cdist_status st = cdist__enter(q, r);
-    if (st) return st;
-    if (!c) st = cdist__fail(q, CDIST_ERR_NULL_ARGUMENT, "contact pointer is NULL");
-    else if (!a->obj) st = cdist__fail(q, CDIST_ERR_NULL_ARGUMENT, "first object pointer is NULL");
-    else if (!b->obj) st = cdist__fail(q, CDIST_ERR_NULL_ARGUMENT, "second object pointer is NULL");
-    else if (!(st = check_radius(q, a, "first object's radius"))) st = check_radius(q, b, "second object's radius");
-    if (st) return cdist__leave(q, r, st, CDIST_METHOD_AUTO);
-    cdist__leave_setter(q); /* releases the flag only: r is written by the core query */
-    if ((st = cdist__core_query(q, a, b, r))) return st;
+    cdist_status st;
+    /* Valid arguments go straight to the core query (which takes the handle's in-use flag
+     * itself). Otherwise the failure is reported under the flag (a busy handle is left
+     * untouched); afterwards only c is written: every field, in the error state on failure. */
+    if (!(c && a->obj && b->obj && radius_valid(a) && radius_valid(b))) {
+        if (c) cdist__contact_set_error(c);
+        if ((st = cdist__enter(q, r))) return st;
+        if (!c) st = cdist__fail(q, CDIST_ERR_NULL_ARGUMENT, "contact pointer is NULL");
+        else if (!a->obj) st = cdist__fail(q, CDIST_ERR_NULL_ARGUMENT, "first object pointer is NULL");
+        else if (!b->obj) st = cdist__fail(q, CDIST_ERR_NULL_ARGUMENT, "second object pointer is NULL");
+        else if (!(st = check_radius(q, a, "first object's radius"))) st = check_radius(q, b, "second object's radius");
+        if (st) return cdist__leave(q, r, st, CDIST_METHOD_AUTO);
+        cdist__leave_setter(q); /* releases the flag only: r is written by the core query */
+    }
+    if ((st = cdist__core_query(q, a, b, r))) {
+        cdist__contact_set_error(c);
+        return st;
+    }
     c->core_distance = r->distance;
     c->distance = r->distance - (a->radius + b->radius);
     c->num_pairs = r->num_pairs;
     c->equidistant = r->equidistant;
     c->method = r->method;
+    c->flags = 0;
+    memset(c->reserved, 0, sizeof c->reserved);
+    for (int i = r->num_pairs; i < 2; i++) contact_pair_unset(&c->pairs[i]);
     for (int i = 0; i < r->num_pairs; i++) {
         cdist_contact_pair *cp = &c->pairs[i];
         vec3 pa = r->pairs[i].point[0], pb = r->pairs[i].point[1];

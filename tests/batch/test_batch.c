@@ -345,10 +345,10 @@ static void concurrency(cdist_query *q)
 
 static void conventions(cdist_query *q)
 {
-    CHECK(cdist_kind_count() == 21, "kind count %d", cdist_kind_count());
+    CHECK(cdist_kind_count() == 38, "kind count %d", cdist_kind_count());
     CHECK(!strcmp(cdist_kind_name(CDIST_KIND_CIRCLE_CIRCLE), "circle_circle"), "kind name");
     CHECK(!strcmp(cdist_kind_name(CDIST_KIND_BEZIER3_DISK), "bezier3_disk"), "kind name");
-    CHECK(cdist_kind_name((cdist_kind)21) == NULL && cdist_kind_name((cdist_kind)-1) == NULL, "bad kind name");
+    CHECK(cdist_kind_name((cdist_kind)38) == NULL && cdist_kind_name((cdist_kind)-1) == NULL, "bad kind name");
     CHECK(cdist_kind_size_a(CDIST_KIND_CURVE_CIRCLE) == sizeof(cdist_curve), "size a");
     CHECK(cdist_kind_size_b(CDIST_KIND_SEGMENT_ARC) == sizeof(cdist_arc), "size b");
     CHECK(cdist_kind_size_a((cdist_kind)99) == 0 && cdist_kind_size_b((cdist_kind)99) == 0, "bad kind sizes");

@@ -66,6 +66,16 @@ static circ_curve cc[N];
 static cdist_result res[N];
 static double dist[N];
 static cdist_status st[N];
+static cdist_torus tori[N];
+static cdist_contact contacts[N];
+static cdist_grad grads[N];
+
+static int on_progress(void *user, size_t done, size_t total)
+{
+    (void)total;
+    *(size_t *)user = done;
+    return 0;
+}
 
 static void batches(cdist_query *q, const char *what)
 {
@@ -93,6 +103,19 @@ static void batches(cdist_query *q, const char *what)
         CHECK(s1 == CDIST_OK && s2 == CDIST_OK && isfinite(res[N - 1].distance) && isfinite(dist[N - 2]),
               "%s, %s: %s %s", what, cdist_kind_name(runs[i].k), cdist_status_name(s1), cdist_status_name(s2));
     }
+    /* contacts, gradients, signed distances, with progress reports */
+    size_t reported = 0;
+    cdist_query_set_progress(q, on_progress, &reported, 100);
+    long before_c = atomic_load(&allocations);
+    cdist_status c1 = cdist_batch_contact(q, CDIST_KIND_TORUS_TORUS, N, tori, sizeof tori[0], tori + 1, 0, contacts, st);
+    cdist_status c2 = cdist_batch_grad(q, CDIST_KIND_TORUS_TORUS, N, tori, sizeof tori[0], tori + 1, 0, contacts, grads, st);
+    cdist_status c3 = cdist_batch_grad(q, CDIST_KIND_CIRCLE_DISK, N, circ, sizeof circ[0], circ + 1, 0, res, grads, st);
+    cdist_status c4 = cdist_batch_distance(q, CDIST_KIND_TORUS_TORUS, N, tori, sizeof tori[0], tori + 1, 0, dist, st);
+    CHECK(atomic_load(&allocations) == before_c, "%s, contact and gradient batches: %ld allocations", what,
+          atomic_load(&allocations) - before_c);
+    CHECK(!c1 && !c2 && !c3 && !c4 && reported == N && isfinite(contacts[N - 1].distance), "%s: %s %s %s %s, %zu reported",
+          what, cdist_status_name(c1), cdist_status_name(c2), cdist_status_name(c3), cdist_status_name(c4), reported);
+    cdist_query_set_progress(q, NULL, NULL, 0);
     /* a batch with bad entries formats messages: still no allocation */
     circ[5].radius = -1.0;
     long before = atomic_load(&allocations);
@@ -112,6 +135,7 @@ int main(void)
         lin[i] = (cdist_line){{sin(t), 0.5, cos(t)}, {0.6, 0.0, 0.8}};
         arcs[i] = (cdist_arc){circ[i], {1, 0, 0}, -1.0, 0.5 + 0.001 * i};
         hel[i] = (cdist_helix){{0, 0, 0}, {0, 0, 1}, {1, 0, 0}, 0.5, 0.3, 0.0, 6.0};
+        tori[i] = (cdist_torus){circ[i], 0.05};
     }
     for (int i = 0; i < N; i++) { /* after every circle is set (circ[i + 3] is read) */
         cc[i] = circ_curve_of(&circ[(i + 3) % N]);

@@ -161,7 +161,7 @@ static int check_kernel(const char *name, kfn k, cdist_query *q, size_t n, const
                         unsigned char *left_map)
 {
     cdist__job job = {CDIST_KIND_CIRCLE_CIRCLE, n, (const char *)A, (const char *)B, sizeof A[0], sizeof B[0],
-                      NULL, D, NULL, 64};
+                      NULL, D, NULL, 64, CD_OUT_DISTANCE, 0, NULL};
     int bad = 0, badref = 0, wrong_left = 0, left_valid = 0, answered = 0, identical = 0;
     double worst = 0;
     *left_file = 0;
@@ -236,7 +236,7 @@ typedef void (*ffn)(ck_block *, int);
 static void check_setup(const char *name, sfn setup, ffn final, int lanes, cdist_query *q, size_t n)
 {
     cdist__job job = {CDIST_KIND_CIRCLE_CIRCLE, n, (const char *)A, (const char *)B, sizeof A[0], sizeof B[0],
-                      NULL, D, NULL, 64};
+                      NULL, D, NULL, 64, CD_OUT_DISTANCE, 0, NULL};
     static ck_block blk;
     int differ = 0, accept_bad = 0, checked = 0, dist_differ = 0;
     for (size_t lo = 0; lo < n; lo += 64) {

@@ -76,7 +76,7 @@ if os.environ.get("CIRCLEDIST_LIBRARY") and os.path.isdir(python_dir):
     import circledist  # noqa: E402
     for line in table.splitlines():
         py = line.rstrip(" |").rsplit(" | ", 1)[-1]
-        for name in re.findall(r"`(\w+)`", py):
+        for name in re.findall(r"`([a-z]\w*)`", py):
             check(hasattr(circledist, name), "README names Python function %s, which the package lacks" % name)
         check("—" not in py, "README row gives no Python name: " + line[:80])
 

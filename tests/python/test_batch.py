@@ -210,3 +210,132 @@ def test_python_threads_share_a_query_safely():
 def test_plain_nested_lists_are_points():
     res = cd.point_disk([[0, 0, 2], [3, 0, 0]], cd.Disk((0, 0, 0), (0, 0, 1), 1))
     assert res.distance.tolist() == [2.0, 2.0]
+
+
+# ---- progress, cancel and Ctrl-C ---------------------------------------------------------
+
+def _tori(n):
+    return cd.Torus(_circles(n), RNG.uniform(0.0, 0.2, n))
+
+
+def test_progress_callback_stops_the_batch_and_keeps_the_answers():
+    T, t0 = _tori(30000), cd.Torus(((0, 0, 0), (0, 0, 1), 1.0), 0.1)
+    full = cd.torus_torus(T, t0)
+    for threads in (1, 2):
+        seen = []
+        out = cd.torus_torus(T, t0, threads=threads, progress=lambda done, total: seen.append((done, total)))
+        assert out.raw.tobytes() == full.raw.tobytes() and np.all(out.status == 0)
+        # one thread reports every 4096 entries; with two, the calling thread reports between its
+        # own chunks (maybe only at the end, if the other thread was faster)
+        assert seen[-1] == (30000, 30000) and len(seen) >= (8 if threads == 1 else 1)
+        assert all(d1 < d2 for (d1, _), (d2, _) in zip(seen, seen[1:]))
+        for _attempt in range(20):   # two threads: stopped unless the other thread was faster
+            calls = []
+            stopped = cd.torus_torus(T, t0, threads=threads, progress=lambda d, t: calls.append(d) or len(calls) >= 2)
+            if np.any(stopped.cancelled):
+                break
+            assert threads > 1
+        k = int(np.count_nonzero(stopped.status == 0))
+        assert 0 < k < 30000 and len(calls) == 2
+        assert np.all(stopped.status[:k] == 0) and np.all(stopped.cancelled[k:])
+        assert stopped.raw[:k].tobytes() == full.raw[:k].tobytes()
+        assert np.all(np.isnan(stopped.distance[k:])) and np.all(stopped.num_pairs[k:] == 0)
+    # an exception in the callback stops the batch and is raised
+    with pytest.raises(ZeroDivisionError):
+        cd.torus_torus(T, t0, progress=lambda d, t: 1 / 0)
+
+
+def test_progress_bar_uses_tqdm_when_installed(monkeypatch, capsys):
+    import sys
+    import types
+    updates = []
+
+    class FakeTqdm:
+        def __init__(self, total, **kw):
+            updates.append(("total", total))
+
+        def update(self, k):
+            updates.append(k)
+
+        def close(self):
+            updates.append("closed")
+    monkeypatch.setitem(sys.modules, "tqdm", types.SimpleNamespace(tqdm=FakeTqdm))
+    T, t0 = _tori(20000), cd.Torus(((0, 0, 0), (0, 0, 1), 1.0), 0.1)
+    cd.torus_torus(T, t0, distance_only=True, progress=True)
+    assert updates[0] == ("total", 20000) and updates[-1] == "closed"
+    assert sum(u for u in updates[1:-1]) == 20000
+    monkeypatch.setitem(sys.modules, "tqdm", None)      # not installed: a line on stderr
+    cd.torus_torus(T, t0, distance_only=True, progress=True)
+    assert "100% of 20000 entries" in capsys.readouterr().err
+
+
+def test_ctrl_c_interrupts_a_long_batch():
+    """SIGINT from a timer during a 10^7-entry batch: KeyboardInterrupt long before the batch
+    would end (the latency itself, a few milliseconds on an idle machine, is measured by
+    examples/bench_python.py --interrupt, not asserted here), the entries answered before it
+    intact in out=, the others CDIST_ERR_CANCELLED, the handler restored."""
+    import os
+    import signal
+    import threading
+    import time
+    n = 10 ** 7
+    t0 = cd.Torus(((0, 0, 0), (0, 0, 1), 1.0), 0.1)
+    row = cd.Torus(((0.3, 0.8, 0.1), (0.6, 0.0, 0.8), 0.9), 0.05).data
+    T = cd.Torus.from_array(np.broadcast_to(row, (n, 8)))  # one torus repeated (stride 0)
+    want = cd.torus_torus(cd.Torus.from_array(np.broadcast_to(row, (64, 8))), t0, distance_only=True).distance[0]
+    # memory already written, as in a reused out= (writing the cancelled entries into fresh memory
+    # adds its page faults, about 0.1 s for these 120 MB)
+    out = cd.BatchContact(None, np.full(n, -1, np.int32), np.full(n, -1.0))
+    sent = []
+    timer = threading.Timer(0.3, lambda: (sent.append(time.monotonic()), os.kill(os.getpid(), signal.SIGINT)))
+    start = time.monotonic()
+    timer.start()
+    try:
+        with pytest.raises(KeyboardInterrupt):
+            cd.torus_torus(T, t0, distance_only=True, out=out)
+        raised = time.monotonic()
+    finally:
+        timer.cancel()
+    assert sent, "the batch ended before the signal (%.2f s)" % (raised - start)
+    assert signal.getsignal(signal.SIGINT) is signal.default_int_handler
+    k = int(np.count_nonzero(out.status == 0))
+    # stopped within a chunk of the signal: far fewer entries answered than the batch holds
+    assert 0 < k < n // 2, "%d of %d entries answered, KeyboardInterrupt %.3f s after SIGINT" % (
+        k, n, raised - sent[0])
+    assert np.all(out.status[:k] == 0) and np.all(out.status[k:] == 17)
+    assert np.all(out.distance[:k] == want) and np.all(np.isnan(out.distance[k:]))
+
+
+def test_batches_release_the_gil_and_report_for_every_kind():
+    """Another Python thread runs while a batch is in C (the library is a ctypes.CDLL, whose calls
+    release the GIL), and the plain kinds take progress= too."""
+    import ctypes
+    import sys
+    import threading
+    import time
+    from circledist import _lib
+    assert type(_lib.lib) is ctypes.CDLL                # not PyDLL: calls release the GIL
+    D = cd.Disk(RNG.uniform(-1, 1, (100000, 3)), _unit(100000), RNG.uniform(0.2, 1.5, 100000))
+    d0 = cd.Disk((0, 0, 0), (0, 0, 1), 1.0)
+    ticks, stop = [0], threading.Event()
+
+    def count():        # gives the GIL back at every step (sleep(0)): never the one holding it up
+        while not stop.is_set():
+            ticks[0] += 1
+            time.sleep(0)
+    # a thread switch forced inside a report would take a second: the counting thread can only
+    # run while the batch is in C, and only if the call released the GIL
+    interval = sys.getswitchinterval()
+    sys.setswitchinterval(1.0)
+    t = threading.Thread(target=count)
+    t.start()
+    try:
+        seen, at = [], []
+        r = cd.disk_disk(D, d0, progress=lambda d, n: seen.append(d) or at.append(ticks[0]))
+    finally:
+        stop.set()
+        t.join()
+        sys.setswitchinterval(interval)
+    assert np.all(r.ok) and seen[-1] == 100000 and len(seen) > 10
+    steps = np.diff(at)
+    assert steps.sum() > 0, "the other thread did not run while the batch was in C"

@@ -320,10 +320,10 @@ def test_errors():
         cd.circle_circle_grad(((0, 0, 0), (0, 0, 1), -1), ((0, 0, 0), (0, 0, 1), 1))
     # the handle still answers after an error
     assert cd.torus_sphere(t, cd.Sphere((0, 0, 3), 1)).distance > 0
-    with pytest.raises(ValueError, match="one object each"):
-        cd.sphere_sphere(cd.Sphere(np.zeros((3, 3)), 1.0), cd.Sphere((0, 0, 0), 1))
-    with pytest.raises(ValueError, match="one object each"):
-        cd.point_circle_grad(np.zeros((2, 3)), ((0, 0, 0), (0, 0, 1), 1))
+    with pytest.raises(ValueError, match="do not broadcast"):
+        cd.sphere_sphere(cd.Sphere(np.zeros((3, 3)), 1.0), cd.Sphere(np.zeros((2, 3)), 1))
+    with pytest.raises(ValueError, match="do not broadcast"):
+        cd.point_circle_grad(np.zeros((2, 3)), cd.Circle(np.zeros((3, 3)), (0, 0, 1), 1))
     with pytest.raises(TypeError, match="torus_sphere: argument b"):
         cd.torus_sphere(t, t)
     with pytest.raises(TypeError, match="capsule_capsule_grad: argument a"):
@@ -334,3 +334,85 @@ def test_errors():
     q.close()
     with pytest.raises(ValueError, match="closed"):
         q.sphere_sphere(((0, 0, 0), 1), ((1, 0, 0), 1))
+
+
+# ---- arrays: one C call (cdist_batch_contact / cdist_batch_grad) ----------------------------
+
+def stack(objs):
+    """An array object of the objects' class holding every object of objs."""
+    return type(objs[0]).from_array(np.stack([o.data for o in objs]))
+
+
+@pytest.mark.parametrize("name", SWEPT + [n + "_grad" for n in SWEPT + CORE_GRAD])
+def test_arrays_are_the_single_queries(name):
+    """Every entry of an array call is the single query's answer, bit for bit (gradient and
+    contact/result), a bad entry gets its status and NaN, broadcasting an object works."""
+    base = name[:-5] if name.endswith("_grad") else name
+    ka, kb = split(base)
+    rng = np.random.default_rng(sum(map(ord, name)) + 7)
+    n = 12
+    A = [make(ka, rng) for _ in range(n)]
+    B = [make(kb, rng, offset=0.8) for _ in range(n)]
+    a, b = stack(A), stack(B)
+    a.data[5, 0] = np.nan                        # a bad entry
+    fn = getattr(cd, name)
+    grad = name.endswith("_grad")
+    for threads in (1, 2):
+        out = fn(a, b, threads=threads)
+        res, g = out if grad else (out, None)
+        assert res.shape == (n,) and res.status[5] == 2 and np.isnan(res.distance[5])
+        for i in range(n):
+            if i == 5:
+                with pytest.raises(cd.CircleDistError):
+                    fn(type(a).from_array(a.data[i]), B[i])
+                continue
+            one = fn(type(a).from_array(a.data[i]), B[i])
+            one_res, one_g = one if grad else (one, None)
+            assert res.status[i] == 0
+            assert res.distance[i] == one_res.distance and res.num_pairs[i] == one_res.num_pairs
+            assert np.array_equal(res.points[i, :one_res.num_pairs], one_res.points)
+            if grad:
+                assert g.flags[i] == one_g.flags and g.differentiable[i] == one_g.differentiable
+                for k in range(2):
+                    for f in _lib.GRAD_OBJECT_FIELDS:
+                        assert np.array_equal(getattr(g.obj[k], f)[i], getattr(one_g.obj[k], f)), (k, f)
+                assert g[i].flags == one_g.flags
+        if grad:
+            assert np.all(np.isnan(g.obj[0].d_center[5]))
+        # broadcast: one second object for every first
+        bc = fn(a, B[3], threads=threads)
+        bres = bc[0] if grad else bc
+        one = fn(type(a).from_array(a.data[3]), B[3])
+        assert bres.distance[3] == (one[0] if grad else one).distance
+
+
+@pytest.mark.parametrize("name", SWEPT)
+def test_distance_only_is_the_signed_distance(name):
+    ka, kb = split(name)
+    rng = np.random.default_rng(sum(map(ord, name)) + 11)
+    a = stack([make(ka, rng) for _ in range(100)])
+    b = stack([make(kb, rng, offset=0.8) for _ in range(100)])
+    full = getattr(cd, name)(a, b)
+    d = getattr(cd, name)(a, b, distance_only=True)
+    scale = 1 + np.abs(a.data).max() + np.abs(b.data).max()
+    assert np.all(d.status == 0) and d.raw is None
+    assert np.allclose(d.distance, full.distance, rtol=0, atol=4 * np.finfo(float).eps * scale)
+
+
+def test_batch_out_buffers_and_shapes():
+    rng = np.random.default_rng(3)
+    T = stack([make("torus", rng) for _ in range(6)])
+    T2 = cd.Torus.from_array(T.data.reshape(2, 3, 8))
+    t0 = make("torus", rng)
+    c, g = cd.torus_torus_grad(T2, t0)
+    assert c.shape == g.shape == (2, 3) and g.obj[1].d_center.shape == (2, 3, 3)
+    assert c.normals.shape == (2, 3, 2, 3) and c.core_points.shape == (2, 3, 2, 2, 3)
+    again = cd.torus_torus_grad(T2, t0, out=(c, g))
+    assert again[0] is c and again[1] is g
+    with pytest.raises(ValueError):
+        cd.torus_torus_grad(T2, t0, out=c)
+    cc = cd.torus_torus(T2, t0)
+    assert cd.torus_torus(T2, t0, out=cc) is cc
+    with pytest.raises(ValueError):
+        cd.torus_torus(T2, t0, out=cd.circle_circle(T2.circle, t0.circle))
+    assert isinstance(cc[1, 2], cd.Contact) and cc[1, 2].distance == cc.distance[1, 2]
