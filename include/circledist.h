@@ -80,7 +80,10 @@ typedef struct cdist_segment {
 
 /** A circular arc: the points C + r (cos a U + sin a V) of `circle` for a in [start, end],
  * where U = `zero_direction` (projected onto the circle's plane and normalised) and
- * V = N x U. Requires start <= end <= start + 2 pi.
+ * V = N x U. Requires start <= end <= start + 2 pi, checked exactly: end must not exceed the
+ * exact sum start + 2 pi rounded up to a double (so an end computed in double as
+ * start + 2 * M_PI is accepted, and nothing longer whatever |start|), else
+ * ::CDIST_ERR_BAD_INTERVAL.
  */
 typedef struct cdist_arc {
     cdist_circle circle;       /**< the supporting circle */

@@ -120,10 +120,8 @@
 #define CD_CURVE_HELIX_SKIP_REL 1e-9
 #define CD_CURVE_HELIX_SKIP_ABS 1e-12
 #define CD_CURVE_HELIX_MAX_SAMPLES 2097152.0
-/* Arcs: end - start may exceed 2 pi by CD_ARC_SPAN_ULPS * eps * max(2 pi, |start|, |end|)
- * (an end computed as start + 2 pi); the height over a disk's plane is constant (parallel
- * planes) when its amplitude is below CD_ARC_PARALLEL_ULPS * eps * r. */
-#define CD_ARC_SPAN_ULPS 8.0
+/* Arcs: the height over a disk's plane is constant (parallel planes) when its amplitude is
+ * below CD_ARC_PARALLEL_ULPS * eps * r. */
 #define CD_ARC_PARALLEL_ULPS 4.0
 /* Segment-arc: the interior minima lie within r / |M| of the foot of the perpendicular; the
  * window is widened by CD_SEG_ARC_WINDOW_REL of itself and CD_SEG_ARC_WINDOW_ULPS * eps *

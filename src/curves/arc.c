@@ -47,6 +47,20 @@ typedef struct arcx {
     double phi0; /* library-basis angle of U: library angle = arc angle + phi0 */
 } arcx;
 
+/* The span rule: end <= RU(start + 2 pi), RU rounding the exact sum up to a double (2 pi itself
+ * rounded up). Exact, with a slack below one ulp of the end whatever |start|: an end computed in
+ * double as start + 2 * M_PI is always accepted, a longer span never. The exact sum is s + err
+ * (two-sum, round to nearest). */
+static int arc_span_ok(double start, double end)
+{
+    const double two_pi_up = 0x1.921fb54442d19p+2; /* the double just above 2 pi */
+    double s = start + two_pi_up;
+    double bb = s - start;
+    double err = (start - (s - bb)) + (two_pi_up - bb);
+    double up = err > 0.0 ? nextafter(s, INFINITY) : s;
+    return end <= up;
+}
+
 static cdist_status check_arc(cdist_query *q, const cdist_arc *a, const char *what, arcx *x)
 {
     char buf[64];
@@ -59,9 +73,9 @@ static cdist_status check_arc(cdist_query *q, const cdist_arc *a, const char *wh
         return cdist__fail(q, CDIST_ERR_NOT_FINITE, "%s angles [%g, %g] are not finite", what, a->start, a->end);
     if (a->start > a->end)
         return cdist__fail(q, CDIST_ERR_BAD_INTERVAL, "%s start %.17g > end %.17g", what, a->start, a->end);
-    double slack = CD_ARC_SPAN_ULPS * DBL_EPSILON * fmax(TWO_PI, fmax(fabs(a->start), fabs(a->end)));
-    if (!(a->end - a->start <= TWO_PI + slack))
-        return cdist__fail(q, CDIST_ERR_BAD_INTERVAL, "%s spans %.17g > 2 pi", what, a->end - a->start);
+    if (!arc_span_ok(a->start, a->end))
+        return cdist__fail(q, CDIST_ERR_BAD_INTERVAL, "%s end %.17g exceeds start %.17g + 2 pi (rounded up)", what,
+                           a->end, a->start);
     x->start = a->start;
     x->end = a->end;
     x->phi0 = atan2(v_dot(x->U, x->c.v), v_dot(x->U, x->c.u));

@@ -3,6 +3,7 @@
  * of brute.h: random configurations, constructed degenerate ones (closest point at an endpoint,
  * the other circle's closest pair cut out of the arc, coplanar, concentric, coaxial, full and
  * zero-length arcs), symmetry, params and pairs, and bad input. */
+#include <fenv.h>
 #include <float.h>
 #include <stdlib.h>
 #include <string.h>
@@ -433,6 +434,39 @@ static void scale_invariance(void)
     }
 }
 
+/* The span rule end <= RU(start + RU(2 pi)), with the upper bound computed here under the
+ * upward rounding mode: every end up to it is accepted (in particular start + 2 * M_PI in
+ * double), the next double is refused, at any |start|. */
+static void span_rule(void)
+{
+    cdist_result r;
+    cdist_circle c = {tv(3, 0, 0), tv(0, 0, 1), 1};
+    const double two_pi_up = nextafter(2 * M_PI, INFINITY);
+    double starts[] = {0.0, -M_PI, 1.0, 100.5, -3e3, 1e6 + 0.3, -7.7e12, 1e17, -1e17, 0x1p60};
+    srand(77);
+    for (int i = 0; i < 2000; i++) {
+        double st = i < (int)(sizeof starts / sizeof starts[0])
+                        ? starts[i]
+                        : ldexp((double)rand() / RAND_MAX - 0.5, rand() % 130 - 20);
+        volatile double sum = 0;
+        fesetround(FE_UPWARD);
+        sum = st + two_pi_up;
+        fesetround(FE_TONEAREST);
+        double up = sum;
+        cdist_arc a = {{tv(0, 0, 0), tv(0, 0, 1), 1}, tv(1, 0, 0), st, st + 2 * M_PI};
+        CHECK(cdist_arc_circle(q, &a, &c, &r) == CDIST_OK, "start %.17g, end = start + 2 pi in double accepted", st);
+        a.end = up;
+        CHECK(cdist_arc_circle(q, &a, &c, &r) == CDIST_OK, "start %.17g, end at the rounded-up bound accepted", st);
+        a.end = nextafter(up, INFINITY);
+        CHECK(cdist_arc_circle(q, &a, &c, &r) == CDIST_ERR_BAD_INTERVAL && r.num_pairs == 0,
+              "start %.17g, end one double past the bound refused", st);
+    }
+    /* The reported case: 64 past a start of 1e17 was answered as a full circle. */
+    cdist_arc big = {{tv(0, 0, 0), tv(0, 0, 1), 1}, tv(1, 0, 0), 1e17, 1e17 + 64};
+    CHECK(cdist_arc_circle(q, &big, &c, &r) == CDIST_ERR_BAD_INTERVAL, "start 1e17, end 1e17 + 64 refused");
+    CHECK(cdist_arc_arc(q, &big, &big, &r) == CDIST_ERR_BAD_INTERVAL, "arc-arc: start 1e17, end 1e17 + 64 refused");
+}
+
 static void bad_input(void)
 {
     cdist_result r;
@@ -498,6 +532,7 @@ int main(int argc, char **argv)
     exact_cases();
     scale_invariance();
     bad_input();
+    span_rule();
     for (int k = 0; k < 4; k++) printf("%s: max error %.3g of scale (case %d)\n", kind_name[k], worst_err[k], worst_id[k]);
     cdist_query_free(q);
     return check_summary("arc");
