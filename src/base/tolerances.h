@@ -107,6 +107,17 @@
  * CD_CURVE_POLISH_STEPS times (4^40 covers any span). */
 #define CD_CURVE_POLISH_STEP_REL 1e-10
 #define CD_CURVE_POLISH_STEPS 40
+/* Certification of the sampled curve queries (helix, Bezier, arcs' sampled fallback): the
+ * answer is within tau = CD_CURVE_CERT_ULPS * eps * L of the global minimum (every excluded
+ * interval's lower bound is at least the answer minus tau; tau must exceed the rounding of the
+ * bounds: CD_CURVE_CERT_EVAL_ULPS * eps * (2 L + r + frame magnitude) for a sampled distance,
+ * the helix bound's ranges). The certification's explicit stack holds CD_CURVE_CERT_DEPTH
+ * nodes (deeper splits recurse); more than CD_CURVE_CERT_MAX_NODES split nodes in one query
+ * is CDIST_ERR_COST_LIMIT. */
+#define CD_CURVE_CERT_ULPS 512.0
+#define CD_CURVE_CERT_EVAL_ULPS 16.0
+#define CD_CURVE_CERT_DEPTH 80
+#define CD_CURVE_CERT_MAX_NODES 200000L
 /* Callback curves: positions sampled to choose the frame's power-of-two scale. */
 #define CD_CURVE_SCALE_PROBES 8
 /* Helix: at most 10^6 turns (a longer one is BAD_INTERVAL); the turn lower bound's ranges are
@@ -120,6 +131,10 @@
 #define CD_CURVE_HELIX_SKIP_REL 1e-9
 #define CD_CURVE_HELIX_SKIP_ABS 1e-12
 #define CD_CURVE_HELIX_MAX_SAMPLES 2097152.0
+/* Helix pieces that the certification does not need but whose bound is within the skip margin
+ * above (a possible second closest pair, e.g. the next crossing of a disk) are scanned up to
+ * this many per query. */
+#define CD_CURVE_HELIX_TIE_PIECES 6
 /* Arcs: the height over a disk's plane is constant (parallel planes) when its amplitude is
  * below CD_ARC_PARALLEL_ULPS * eps * r. */
 #define CD_ARC_PARALLEL_ULPS 4.0

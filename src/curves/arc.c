@@ -182,6 +182,30 @@ static cdist_status polish_in_range(cdist__cs_scan *s, const arcx *X, double a)
     return cdist__cs_polish(s, m, X->start, X->end);
 }
 
+/* Lower bound of the distance from any point of X's circle to Y (circle or disk): from the
+ * ranges of X's heights over Y's plane and distances from Y's axis. Exact on a coaxial arc,
+ * where the distance is constant. */
+typedef struct arc_lb_ctx {
+    const arcx *X;
+    double lb;
+} arc_lb_ctx;
+
+static double arc_lb(const cdist__cs_scan *s, double a, double b)
+{
+    (void)a;
+    (void)b;
+    return ((const arc_lb_ctx *)s->lb_ctx)->lb;
+}
+
+static double arc_whole_lb(const arcx *X, const cdist__circle *Y, int disk)
+{
+    cdist__cs_ranges g = cdist__cs_circle_ranges(v_sub(X->c.c, Y->c), Y->n, X->U, X->V, X->c.r, 0);
+    double hg = g.zlo > 0.0 ? g.zlo : (g.zhi < 0.0 ? -g.zhi : 0.0);
+    double rg = fmax(0.0, g.rlo - Y->r);
+    if (!disk) rg = fmax(rg, Y->r - g.rhi);
+    return hypot(hg, rg);
+}
+
 /* Every minimum of theta -> dist^2(X(theta), circle or disk Y) over X's range, handed to the
  * scan's candidate callback (s->cand, or the default offer). Uses the circle-circle critical
  * angles when available, else samples. *exact says which.
@@ -237,7 +261,19 @@ static cdist_status arc_minima(cdist__cs_scan *s, const arcx *X, const cdist__ci
     }
     s->k->flat_ties = 1;
     if (n_const) *n_const = !s->disk && n == -1;
-    return cdist__cs_scan_run(s, X->start, X->end, q->curve_samples);
+    /* Certified unless the distance is known constant (n == -1, circle) or the candidates go
+     * through a callback (whose collector holds another function's minimum). */
+    s->certify = !s->cand && (s->disk || n != -1);
+    s->speed_max = X->c.r;
+    s->accel_max = X->c.r;
+    s->accel_normal_max = X->c.r * v_norm(v_cross(Y->n, X->c.n));
+    s->accel_plane_max = X->c.r;
+    arc_lb_ctx lbc = {X, arc_whole_lb(X, Y, s->disk)};
+    s->lb = arc_lb;
+    s->lb_ctx = &lbc;
+    st = cdist__cs_scan_run(s, X->start, X->end, q->curve_samples);
+    s->lb = NULL; /* lbc goes out of scope */
+    return st;
 }
 
 static double arc_scale(const arcx *a, const cdist__circle *c)
@@ -266,7 +302,7 @@ static cdist_status arc_target(cdist_query *q, const cdist_arc *a, const cdist_c
     if (A.c.r == 0.0) {
         cdist__cs_offer_point(&k, A.c.c, NAN, &C, disk, 0);
     } else {
-        cdist__cs_scan s = {q, arc_eval, &A, &C, disk, &k, NULL, NULL, 0, 0.0, 0.0};
+        cdist__cs_scan s = {.q = q, .ev = arc_eval, .ctx = &A, .c = &C, .disk = disk, .k = &k};
         /* Endpoints always; then the interior minima. */
         cdist__cs_offer_point(&k, arc_point(&A, A.start), A.start, &C, disk, 0);
         cdist__cs_offer_point(&k, arc_point(&A, A.end), A.end, &C, disk, 0);
@@ -327,9 +363,9 @@ static cdist_status arc_arc(cdist_query *q, const cdist_arc *a0, const cdist_arc
     if (A.c.r > 0.0 && B.c.r > 0.0) {
         int exact;
         cand_arc_ctx ca = {&B, 1}, cb = {&A, 0};
-        cdist__cs_scan s = {q, arc_eval, &A, &B.c, 0, &k, cand_arc, &ca, 0, 0.0, 0.0};
+        cdist__cs_scan s = {.q = q, .ev = arc_eval, .ctx = &A, .c = &B.c, .k = &k, .cand = cand_arc, .cand_ctx = &ca};
         if ((st = arc_minima(&s, &A, &B.c, &exact, NULL))) return st;
-        cdist__cs_scan t = {q, arc_eval, &B, &A.c, 0, &k, cand_arc, &cb, 0, 0.0, 0.0};
+        cdist__cs_scan t = {.q = q, .ev = arc_eval, .ctx = &B, .c = &A.c, .k = &k, .cand = cand_arc, .cand_ctx = &cb};
         if ((st = arc_minima(&t, &B, &A.c, &exact, NULL))) return st;
     }
     cdist__cs_coll_result(&k, cdist__pow2(e), origin, r);
@@ -392,7 +428,7 @@ static cdist_status segment_arc(cdist_query *q, const cdist_segment *sg, const c
         double lo = fmax(0.0, foot - half), hi = fmin(1.0, foot + half);
         if (lo <= hi) {
             cand_arc_ctx ca = {&A, 1};
-            cdist__cs_scan s = {q, seg_eval, &S, &A.c, 0, &k, cand_arc, &ca, 0, 0.0, fmax(v_norm(S.p0), v_norm(S1))};
+            cdist__cs_scan s = {.q = q, .ev = seg_eval, .ctx = &S, .c = &A.c, .k = &k, .cand = cand_arc, .cand_ctx = &ca, .frame_mag = fmax(v_norm(S.p0), v_norm(S1))};
             /* The local minima of the segment's distance to the full circle in the window, from
              * the lines family's robust (GSL-free) core on the line through the foot, each
              * polished on the true derivative and offered when its circle point is in range. */
