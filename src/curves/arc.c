@@ -182,27 +182,51 @@ static cdist_status polish_in_range(cdist__cs_scan *s, const arcx *X, double a)
     return cdist__cs_polish(s, m, X->start, X->end);
 }
 
-/* Lower bound of the distance from any point of X's circle to Y (circle or disk): from the
- * ranges of X's heights over Y's plane and distances from Y's axis. Exact on a coaxial arc,
- * where the distance is constant. */
+/* Lower bound of the distance from the points X(theta), theta in [a, b], to Y (circle or disk),
+ * from X's heights over Y's plane, h = hc + A cos + B sin, and squared distances from Y's axis,
+ * rho^2 = |Cp + cos Up + sin Vp|^2, at the middle angle, widened by their derivative bounds
+ * (hypot(A, B), and m1 + 2 m2 for rho^2, m1 and m2 the amplitudes of its first and second
+ * harmonics) times the half width, and by their rounding. First order in the width, but with
+ * the geometry's own amplitudes: exact where the distance is constant (coaxial arcs, an arc
+ * parallel to a disk) and tight where it nearly is (concentric coplanar arcs), where the
+ * chord bounds would need tiny intervals. */
 typedef struct arc_lb_ctx {
-    const arcx *X;
-    double lb;
+    vec3 Cp, Up, Vp;
+    double hc, A, B, dh, drho2, sq, slack, r;
+    int disk;
 } arc_lb_ctx;
+
+static arc_lb_ctx arc_lb_init(const arcx *X, const cdist__circle *Y, int disk)
+{
+    arc_lb_ctx c;
+    vec3 n = Y->n, C = v_sub(X->c.c, Y->c), U = v_scale(X->c.r, X->U), V = v_scale(X->c.r, X->V);
+    c.hc = v_dot(n, C);
+    c.A = v_dot(n, U);
+    c.B = v_dot(n, V);
+    c.Cp = v_sub(C, v_scale(c.hc, n));
+    c.Up = v_sub(U, v_scale(c.A, n));
+    c.Vp = v_sub(V, v_scale(c.B, n));
+    c.dh = hypot(c.A, c.B);
+    double m1 = 2.0 * hypot(v_dot(c.Cp, c.Up), v_dot(c.Cp, c.Vp));
+    double m2 = hypot(0.5 * (v_sqr(c.Up) - v_sqr(c.Vp)), v_dot(c.Up, c.Vp));
+    c.drho2 = m1 + 2.0 * m2;
+    double mag = v_norm(C) + X->c.r;
+    c.sq = CD_CURVE_HELIX_BOUND_ULPS * DBL_EPSILON * mag * mag;
+    c.slack = CD_CURVE_HELIX_BOUND_ULPS * DBL_EPSILON * mag;
+    c.r = Y->r;
+    c.disk = disk;
+    return c;
+}
 
 static double arc_lb(const cdist__cs_scan *s, double a, double b)
 {
-    (void)a;
-    (void)b;
-    return ((const arc_lb_ctx *)s->lb_ctx)->lb;
-}
-
-static double arc_whole_lb(const arcx *X, const cdist__circle *Y, int disk)
-{
-    cdist__cs_ranges g = cdist__cs_circle_ranges(v_sub(X->c.c, Y->c), Y->n, X->U, X->V, X->c.r, 0);
-    double hg = g.zlo > 0.0 ? g.zlo : (g.zhi < 0.0 ? -g.zhi : 0.0);
-    double rg = fmax(0.0, g.rlo - Y->r);
-    if (!disk) rg = fmax(rg, Y->r - g.rhi);
+    const arc_lb_ctx *c = s->lb_ctx;
+    double m = 0.5 * (a + b), hw = 0.5 * (b - a), cm = cos(m), sm = sin(m);
+    double h = c->hc + c->A * cm + c->B * sm, dh = c->dh * hw + c->slack;
+    double hg = h - dh > 0.0 ? h - dh : (h + dh < 0.0 ? -(h + dh) : 0.0);
+    double rho2 = v_sqr(v_axpy(v_axpy(c->Cp, cm, c->Up), sm, c->Vp)), d2 = c->drho2 * hw + c->sq;
+    double rg = fmax(0.0, sqrt(fmax(0.0, rho2 - d2)) - c->r);
+    if (!c->disk) rg = fmax(rg, c->r - sqrt(rho2 + d2));
     return hypot(hg, rg);
 }
 
@@ -268,7 +292,7 @@ static cdist_status arc_minima(cdist__cs_scan *s, const arcx *X, const cdist__ci
     s->accel_max = X->c.r;
     s->accel_normal_max = X->c.r * v_norm(v_cross(Y->n, X->c.n));
     s->accel_plane_max = X->c.r;
-    arc_lb_ctx lbc = {X, arc_whole_lb(X, Y, s->disk)};
+    arc_lb_ctx lbc = arc_lb_init(X, Y, s->disk);
     s->lb = arc_lb;
     s->lb_ctx = &lbc;
     st = cdist__cs_scan_run(s, X->start, X->end, q->curve_samples);

@@ -329,15 +329,18 @@ static int cert_excluded(const cdist__cs_scan *s, const cert_node *nd, double be
     double hl = 0.0;
     if ((nd->ha > 0.0 && nd->hb > 0.0) || (nd->ha < 0.0 && nd->hb < 0.0))
         hl = fmax(0.0, fmin(fabs(nd->ha), fabs(nd->hb)) - mu - s->accel_normal_max * w * w * 0.125);
+    /* (plain squares: the scan's frame is scaled to L ~ 1) */
     double dx = nd->xb - nd->xa, dy = nd->yb - nd->ya, ll = dx * dx + dy * dy;
     double u = ll > 0.0 ? -(nd->xa * dx + nd->ya * dy) / ll : 0.0;
     u = u < 0.0 ? 0.0 : (u > 1.0 ? 1.0 : u);
-    double sag = s->accel_plane_max * w * w * 0.125 + 2.0 * mu;
-    double rlo = hypot(nd->xa + u * dx, nd->ya + u * dy) - sag;
-    double rhi = fmax(hypot(nd->xa, nd->ya), hypot(nd->xb, nd->yb)) + sag, r = s->c->r;
-    double rl = fmax(0.0, rlo - r);
-    if (!s->disk) rl = fmax(rl, r - rhi);
-    if (hypot(hl, rl) >= lim) return 1;
+    double sag = s->accel_plane_max * w * w * 0.125 + 2.0 * mu, r = s->c->r;
+    double cx = nd->xa + u * dx, cy = nd->ya + u * dy;
+    double rl = fmax(0.0, sqrt(cx * cx + cy * cy) - sag - r);
+    if (!s->disk) {
+        double ra2 = nd->xa * nd->xa + nd->ya * nd->ya, rb2 = nd->xb * nd->xb + nd->yb * nd->yb;
+        rl = fmax(rl, r - sqrt(fmax(ra2, rb2)) - sag);
+    }
+    if (hl * hl + rl * rl >= lim * lim) return 1;
     return s->lb && s->lb(s, nd->a, nd->b) >= lim;
 }
 
@@ -386,6 +389,30 @@ static double t_at(double t0, double t1, int i, int n)
 {
     if (i == n) return t1;
     return t0 + (t1 - t0) * ((double)i / n);
+}
+
+/* Certify the sample intervals i..j-1 of a scan (arr: F, h, in-plane x and y per sample): where
+ * the curve has its own bound, blocks of intervals are tried whole first (halving), so that a
+ * bound that is tight over long ranges (coaxial and concentric configurations) settles them in
+ * a few calls. */
+static cdist_status certify_samples(cdist__cs_scan *s, double t0, double t1, int n, int i, int j, const double *arr[4])
+{
+    if (j - i > 1 && s->lb && s->k->b.n && s->lb(s, t_at(t0, t1, i, n), t_at(t0, t1, j, n)) >=
+                                               sqrt(s->k->b.c[0].d2) - cert_tol(s))
+        return CDIST_OK;
+    if (j - i > 1 && s->lb) {
+        int k = i + (j - i) / 2;
+        cdist_status st = certify_samples(s, t0, t1, n, i, k, arr);
+        return st ? st : certify_samples(s, t0, t1, n, k, j, arr);
+    }
+    for (int m = i; m < j; m++) {
+        const double *F = arr[0], *H = arr[1], *X = arr[2], *Y = arr[3];
+        cert_node nd = {t_at(t0, t1, m, n), t_at(t0, t1, m + 1, n), F[m], F[m + 1], H[m], H[m + 1],
+                        X[m],           Y[m],                   X[m + 1], Y[m + 1]};
+        cdist_status st = certify(s, nd);
+        if (st) return st;
+    }
+    return CDIST_OK;
 }
 
 cdist_status cdist__cs_scan_run(cdist__cs_scan *s, double t0, double t1, int n)
@@ -467,12 +494,8 @@ cdist_status cdist__cs_scan_run(cdist__cs_scan *s, double t0, double t1, int n)
         if (i > 0 && i < n && Fv[i] <= Fv[i - 1] && Fv[i] <= Fv[i + 1] && (st = offer_at(s, t))) return st;
     }
     if (!s->certify) return CDIST_OK;
-    for (int i = 0; i < n; i++) {
-        cert_node nd = {t_at(t0, t1, i, n), t_at(t0, t1, i + 1, n), Fv[i], Fv[i + 1], H[i], H[i + 1],
-                        X[i],           Y[i],                   X[i + 1], Y[i + 1]};
-        if ((st = certify(s, nd))) return st;
-    }
-    return CDIST_OK;
+    const double *arr[4] = {Fv, H, X, Y};
+    return certify_samples(s, t0, t1, n, 0, n, arr);
 }
 
 cdist_status cdist__cs_flat_check(cdist__cs_scan *s, double t0, double t1, double delta)
