@@ -263,6 +263,15 @@ static cdist_status arc_minima(cdist__cs_scan *s, const arcx *X, const cdist__ci
             hc = v_dot(Y->n, v_sub(X->c.c, Y->c));
             R = hypot(A, B);
         }
+        /* A constant function with a candidate callback (arc-arc): every interior pair is a
+         * global minimum of the two circles, and the set of X's angles whose closest point lies
+         * in Y's range is bounded by angles where X or Y is at an endpoint; so the endpoint
+         * candidates already hold its ends, and the caller decides the continuum (no scan). */
+        if (n == -1 && s->cand && !s->disk) {
+            if (n_const) *n_const = 1;
+            *exact = 1;
+            return CDIST_OK;
+        }
         /* n == 0 (unavailable) or -1 (constant: the sampled scan sees a flat function, offers
          * it everywhere and the ties mark the continuum); for the disk also parallel planes
          * (h constant). */
@@ -357,6 +366,46 @@ cdist_status cdist_arc_disk(cdist_query *q, const cdist_arc *a, const cdist_circ
 
 /* ---- arc to arc ---- */
 
+/* Arcs on coaxial circles (parallel normals, centres on one axis, within the axis rounding):
+ * the distance between the circles is constant, every pair at one azimuth is closest. Offers
+ * the pair at the first azimuth the two ranges share (the distance in closed form when the
+ * circles are exactly coaxial, 0 for the same circle) and flags the continuum when they share
+ * an interval. Returns 0 when the circles are not coaxial. */
+static int coaxial_offer(cdist__cs_coll *k, const arcx *A, const arcx *B)
+{
+    vec3 n = A->c.n, d = v_sub(B->c.c, A->c.c);
+    double sn = v_norm(v_cross(n, B->c.n)), h = v_dot(n, d);
+    double e = v_norm(v_sub(d, v_scale(h, n)));
+    double tol = CD_CURVE_AXIS_ULPS * DBL_EPSILON * k->b.scale;
+    if (!(sn <= CD_CURVE_AXIS_ULPS * DBL_EPSILON && e <= tol)) return 0;
+    double sg = v_dot(n, B->c.n) > 0.0 ? 1.0 : -1.0;
+    /* B's angle phi is A's angle delta + sg phi. */
+    double delta = atan2(v_dot(A->V, B->U), v_dot(A->U, B->U));
+    double y0 = sg > 0 ? delta + B->start : delta - B->end, len = B->end - B->start;
+    double a = A->start + fmod(y0 - A->start, TWO_PI);
+    if (a < A->start) a += TWO_PI;
+    double th = NAN, shared = 0.0;
+    if (a <= A->end) {
+        th = a;
+        shared += fmin(a + len, A->end) - a;
+    }
+    if (a + len - TWO_PI >= A->start) {
+        th = A->start;
+        shared += fmin(a + len - TWO_PI, A->end) - A->start;
+    }
+    if (th != th) return 1; /* no shared azimuth: the endpoints hold the minimum */
+    double ct = cos(th), st = sin(th);
+    vec3 radial = v_axpy(v_scale(ct, A->U), st, A->V);
+    vec3 P = v_axpy(A->c.c, A->c.r, radial), Q = v_axpy(B->c.c, B->c.r, radial);
+    double phi = sg * (th - delta);
+    phi = B->start + fmod(phi - B->start, TWO_PI);
+    if (phi < B->start) phi += TWO_PI;
+    double dr = B->c.r - A->c.r;
+    double d2 = (sn == 0.0 && e == 0.0) ? h * h + dr * dr : v_sqr(v_sub(Q, P));
+    cdist__cs_coll_offer(k, d2, P, Q, th, fmin(phi, B->end), shared > 0.0);
+    return 1;
+}
+
 static cdist_status arc_arc(cdist_query *q, const cdist_arc *a0, const cdist_arc *a1, cdist_result *r)
 {
     cdist_status st;
@@ -385,12 +434,19 @@ static cdist_status arc_arc(cdist_query *q, const cdist_arc *a0, const cdist_arc
     }
     /* Interior pairs, from both sides. */
     if (A.c.r > 0.0 && B.c.r > 0.0) {
-        int exact;
+        int exact, const_a, const_b;
         cand_arc_ctx ca = {&B, 1}, cb = {&A, 0};
         cdist__cs_scan s = {.q = q, .ev = arc_eval, .ctx = &A, .c = &B.c, .k = &k, .cand = cand_arc, .cand_ctx = &ca};
-        if ((st = arc_minima(&s, &A, &B.c, &exact, NULL))) return st;
+        if ((st = arc_minima(&s, &A, &B.c, &exact, &const_a))) return st;
         cdist__cs_scan t = {.q = q, .ev = arc_eval, .ctx = &B, .c = &A.c, .k = &k, .cand = cand_arc, .cand_ctx = &cb};
-        if ((st = arc_minima(&t, &B, &A.c, &exact, NULL))) return st;
+        if ((st = arc_minima(&t, &B, &A.c, &exact, &const_b))) return st;
+        if ((const_a || const_b) && !coaxial_offer(&k, &A, &B)) {
+            /* constant but not coaxial (a circle through the other's centre, linked): sample */
+            k.flat_ties = 1;
+            if ((st = cdist__cs_scan_run(&s, A.start, A.end, q->curve_samples)) ||
+                (st = cdist__cs_scan_run(&t, B.start, B.end, q->curve_samples)))
+                return st;
+        }
     }
     cdist__cs_coll_result(&k, cdist__pow2(e), origin, r);
     return CDIST_OK;

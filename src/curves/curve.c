@@ -306,7 +306,7 @@ static cdist_status axis_offer(const cdist__cs_scan *s, double a, double b)
  * The answer is then within tau of the global minimum (plus the rounding of the final
  * candidate). Intervals at the resolution of t are not split further. */
 typedef struct cert_node {
-    double a, b, fa, fb, ha, hb;
+    double a, b, da, db, ha, hb; /* da, db: the sampled distances at a and b */
     double xa, ya, xb, yb; /* in-plane coordinates at a and b */
 } cert_node;
 
@@ -322,7 +322,7 @@ static double cert_mu(const cdist__cs_scan *s)
 static int cert_excluded(const cdist__cs_scan *s, const cert_node *nd, double best, double lim)
 {
     double mu = cert_mu(s), w = nd->b - nd->a, S = s->speed_max, K = s->accel_max;
-    double da = sqrt(nd->fa) - mu, db = sqrt(nd->fb) - mu;
+    double da = nd->da - mu, db = nd->db - mu;
     if (0.5 * (da + db - S * w) >= lim) return 1;
     double dm = fmin(da, db);
     if (dm > 0.0 && dm * dm - (S * S + (best + S * w) * K) * w * w * 0.25 >= lim * lim) return 1;
@@ -367,9 +367,10 @@ static cdist_status certify(cdist__cs_scan *s, cert_node nd)
                 s->span = span;
                 if (st) return st;
             }
-            cert_node right = {m, nd.b, x.f, nd.fb, x.h, nd.hb, x.px, x.py, nd.xb, nd.yb};
+            double dm = sqrt(x.f);
+            cert_node right = {m, nd.b, dm, nd.db, x.h, nd.hb, x.px, x.py, nd.xb, nd.yb};
             nd.b = m;
-            nd.fb = x.f;
+            nd.db = dm;
             nd.hb = x.h;
             nd.xb = x.px;
             nd.yb = x.py;
@@ -391,7 +392,7 @@ static double t_at(double t0, double t1, int i, int n)
     return t0 + (t1 - t0) * ((double)i / n);
 }
 
-/* Certify the sample intervals i..j-1 of a scan (arr: F, h, in-plane x and y per sample): where
+/* Certify the sample intervals i..j-1 of a scan (arr: d, h, in-plane x and y per sample): where
  * the curve has its own bound, blocks of intervals are tried whole first (halving), so that a
  * bound that is tight over long ranges (coaxial and concentric configurations) settles them in
  * a few calls. */
@@ -405,9 +406,14 @@ static cdist_status certify_samples(cdist__cs_scan *s, double t0, double t1, int
         cdist_status st = certify_samples(s, t0, t1, n, i, k, arr);
         return st ? st : certify_samples(s, t0, t1, n, k, j, arr);
     }
+    const double *D = arr[0], *H = arr[1], *X = arr[2], *Y = arr[3];
+    /* Lipschitz screen first (the bound of cert_excluded, for the longest interval of the scan:
+     * t_at's widths differ by rounding only, covered by the 1 + 2^-40 factor). */
+    double best = s->k->b.n ? sqrt(s->k->b.c[0].d2) : INFINITY;
+    double screen = 2.0 * (best - cert_tol(s) + cert_mu(s)) + s->speed_max * ((t1 - t0) / n) * (1.0 + 0x1p-40);
     for (int m = i; m < j; m++) {
-        const double *F = arr[0], *H = arr[1], *X = arr[2], *Y = arr[3];
-        cert_node nd = {t_at(t0, t1, m, n), t_at(t0, t1, m + 1, n), F[m], F[m + 1], H[m], H[m + 1],
+        if (D[m] + D[m + 1] >= screen) continue;
+        cert_node nd = {t_at(t0, t1, m, n), t_at(t0, t1, m + 1, n), D[m], D[m + 1], H[m], H[m + 1],
                         X[m],           Y[m],                   X[m + 1], Y[m + 1]};
         cdist_status st = certify(s, nd);
         if (st) return st;
@@ -494,7 +500,8 @@ cdist_status cdist__cs_scan_run(cdist__cs_scan *s, double t0, double t1, int n)
         if (i > 0 && i < n && Fv[i] <= Fv[i - 1] && Fv[i] <= Fv[i + 1] && (st = offer_at(s, t))) return st;
     }
     if (!s->certify) return CDIST_OK;
-    const double *arr[4] = {Fv, H, X, Y};
+    for (int i = 0; i <= n; i++) T[i] = sqrt(Fv[i]); /* the distances, in place of g's rounding level */
+    const double *arr[4] = {T, H, X, Y};
     return certify_samples(s, t0, t1, n, 0, n, arr);
 }
 

@@ -434,6 +434,56 @@ static void scale_invariance(void)
     }
 }
 
+/* Arcs on coaxial circles: the distance between the circles is constant, so where the ranges
+ * share an azimuth the answer is that constant (closed form: 0 on the same circle, |r1 - r0|
+ * for concentric coplanar circles, hypot(h, r1 - r0) at axial offset h), flagged as a
+ * continuum when they share an interval; else the nearest ends (long double reference). The
+ * sampled scan answered these with rounding noise (3e-20 to 3e-16 on the same circle). */
+static void coaxial_arcs(void)
+{
+    for (int i = 0; i < 400; i++) {
+        cdist_vec3 n = rand_unit(), z = rand_unit(), c = tv(10 * srand1(), 10 * srand1(), 10 * srand1());
+        double r0 = 0.1 + 2 * urand(), h = 0.0, r1 = r0;
+        if (i % 3 == 1) r1 = 0.1 + 2 * urand();
+        if (i % 3 == 2) h = srand1(), r1 = 0.1 + 2 * urand();
+        cdist_vec3 c1 = tv(c.x + h * n.x, c.y + h * n.y, c.z + h * n.z);
+        double sg = i % 2 ? -1.0 : 1.0;
+        cdist_vec3 z1 = i % 4 < 2 ? z : rand_unit();
+        double s0 = 4 * srand1(), s1 = 4 * srand1();
+        cdist_arc a = {{c, n, r0}, z, s0, s0 + 2 * M_PI * urand()};
+        cdist_arc b = {{c1, tv(sg * n.x, sg * n.y, sg * n.z), r1}, z1, s1, s1 + 2 * M_PI * urand()};
+        if (i % 5 == 0) b.end = b.start;
+        bf_arc A = bf_arc_of(&a), B = bf_arc_of(&b);
+        /* shared azimuth: B's point at angle phi is at A's angle of the same direction */
+        int shared = 0, interval = 0;
+        ld best = INFINITY;
+        for (int k = 0; k <= 4000; k++) {
+            ld phi = B.a0 + (B.a1 - B.a0) * k / 4000;
+            lv d = lv_sub(bf_arc_point(&B, phi), B.c.c);
+            lv in = lv_sub(d, lv_scale(lv_dot(d, A.c.n), A.c.n));
+            ld ang = atan2l(lv_dot(A.v, in), lv_dot(A.u, in));
+            ld kk = fmodl(ang - A.a0, 2 * 3.14159265358979323846264338327950288L);
+            if (kk < 0) kk += 2 * 3.14159265358979323846264338327950288L;
+            if (A.a0 + kk <= A.a1 + 1e-12L) shared++;
+        }
+        interval = shared > 2 && b.end > b.start;
+        ld cst = sqrtl((ld)h * h + ((ld)r1 - r0) * ((ld)r1 - r0));
+        for (int e = 0; e < 2; e++) {
+            best = fminl(best, bf_point_arc(bf_arc_point(&A, e ? A.a1 : A.a0), &B));
+            best = fminl(best, bf_point_arc(bf_arc_point(&B, e ? B.a1 : B.a0), &A));
+        }
+        if (shared) best = fminl(best, cst);
+        cdist_result r;
+        CHECK(cdist_arc_arc(q, &a, &b, &r) == CDIST_OK, "coaxial %d: %s", i, cdist_query_last_error(q));
+        double L = fmax(fmax(r0, r1), fmax(fabs(h), 1.0));
+        CHECK(fabsl((ld)r.distance - best) <= 1e-13 * L, "coaxial %d: %.17g vs %.20Lg", i, r.distance, best);
+        if (shared && i % 3 == 0 && sg > 0 && i % 4 < 2)
+            CHECK(r.distance == 0.0, "same circle %d: distance %.3g, not exactly 0", i, r.distance);
+        if (interval && r.distance <= (double)cst + 1e-13 * L)
+            CHECK(r.equidistant, "coaxial %d: shared interval not flagged as a continuum", i);
+    }
+}
+
 /* The span rule end <= RU(start + RU(2 pi)), with the upper bound computed here under the
  * upward rounding mode: every end up to it is accepted (in particular start + 2 * M_PI in
  * double), the next double is refused, at any |start|. */
@@ -533,6 +583,7 @@ int main(int argc, char **argv)
     scale_invariance();
     bad_input();
     span_rule();
+    coaxial_arcs();
     for (int k = 0; k < 4; k++) printf("%s: max error %.3g of scale (case %d)\n", kind_name[k], worst_err[k], worst_id[k]);
     cdist_query_free(q);
     return check_summary("arc");
