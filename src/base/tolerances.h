@@ -136,7 +136,12 @@
  * this many per query. */
 #define CD_CURVE_HELIX_TIE_PIECES 6
 /* Arcs: the height over a disk's plane is constant (parallel planes) when its amplitude is
- * below CD_ARC_PARALLEL_ULPS * eps * r. */
+ * below CD_ARC_PARALLEL_ULPS * eps * r. Arc-arc whose circles' distance is constant (as the
+ * circle-circle analysis decides it, within its 32 eps L) is answered in closed form as coaxial
+ * when the normals' cross product is below CD_ARC_COAXIAL_ULPS * eps and the centres' offset
+ * from the axis below CD_ARC_COAXIAL_ULPS * eps * L (rounding of generated coaxial inputs, far
+ * below the other constant configuration, a circle through the other's centre, offset ~ r). */
+#define CD_ARC_COAXIAL_ULPS 1024.0
 #define CD_ARC_PARALLEL_ULPS 4.0
 /* Segment-arc: the interior minima lie within r / |M| of the foot of the perpendicular; the
  * window is widened by CD_SEG_ARC_WINDOW_REL of itself and CD_SEG_ARC_WINDOW_ULPS * eps *

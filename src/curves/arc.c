@@ -366,7 +366,7 @@ cdist_status cdist_arc_disk(cdist_query *q, const cdist_arc *a, const cdist_circ
 
 /* ---- arc to arc ---- */
 
-/* Arcs on coaxial circles (parallel normals, centres on one axis, within the axis rounding):
+/* Arcs on coaxial circles (parallel normals, centres on one axis, within CD_ARC_COAXIAL_ULPS):
  * the distance between the circles is constant, every pair at one azimuth is closest. Offers
  * the pair at the first azimuth the two ranges share (the distance in closed form when the
  * circles are exactly coaxial, 0 for the same circle) and flags the continuum when they share
@@ -376,8 +376,7 @@ static int coaxial_offer(cdist__cs_coll *k, const arcx *A, const arcx *B)
     vec3 n = A->c.n, d = v_sub(B->c.c, A->c.c);
     double sn = v_norm(v_cross(n, B->c.n)), h = v_dot(n, d);
     double e = v_norm(v_sub(d, v_scale(h, n)));
-    double tol = CD_CURVE_AXIS_ULPS * DBL_EPSILON * k->b.scale;
-    if (!(sn <= CD_CURVE_AXIS_ULPS * DBL_EPSILON && e <= tol)) return 0;
+    if (!(sn <= CD_ARC_COAXIAL_ULPS * DBL_EPSILON && e <= CD_ARC_COAXIAL_ULPS * DBL_EPSILON * k->b.scale)) return 0;
     double sg = v_dot(n, B->c.n) > 0.0 ? 1.0 : -1.0;
     /* B's angle phi is A's angle delta + sg phi. */
     double delta = atan2(v_dot(A->V, B->U), v_dot(A->U, B->U));

@@ -119,26 +119,6 @@ static cdist_status run_bez(const void *p, cdist_result *r)
     return (x->disk ? cdist_bezier3_disk : cdist_bezier3_circle)(q, &x->b, &x->c, r);
 }
 
-typedef struct bf_bez {
-    lv p[4];
-    bf_circle k;
-    int disk;
-} bf_bez;
-
-static lv bez_point(const bf_bez *b, ld t)
-{
-    ld m = 1 - t;
-    return lv_add(lv_add(lv_scale(m * m * m, b->p[0]), lv_scale(3 * m * m * t, b->p[1])),
-                  lv_add(lv_scale(3 * m * t * t, b->p[2]), lv_scale(t * t * t, b->p[3])));
-}
-
-static ld f_bez(const void *p, ld t)
-{
-    const bf_bez *b = p;
-    lv pt = bez_point(b, t);
-    return b->disk ? bf_point_disk(pt, &b->k) : bf_point_circle(pt, &b->k);
-}
-
 static void random_beziers(int count)
 {
     for (long id = 0; id < count; id++) {
@@ -149,7 +129,7 @@ static void random_beziers(int count)
         bf_bez b;
         for (int i = 0; i < 4; i++) b.p[i] = lv_of(x.b.p[i]);
         if (id % 3 == 0) { /* a small circle centred near a curve point */
-            lv p = bez_point(&b, urand());
+            lv p = bf_bez_point(&b, urand());
             x.c = (cdist_circle){tv((double)p.x + 0.02 * srand1(), (double)p.y + 0.02 * srand1(), (double)p.z + 0.02 * srand1()),
                                  rand_unit(), 0.01 + 0.3 * urand()};
         } else if (id % 3 == 1 && x.disk) { /* lying flat over the disk: constant distance */
@@ -161,7 +141,7 @@ static void random_beziers(int count)
         }
         b.k = bf_circ(x.c);
         b.disk = x.disk;
-        ld ref = bf_min1d(f_bez, &b, 0, 1, 16384);
+        ld ref = bf_min1d(bf_f_bez, &b, 0, 1, 16384);
         double L = fmax(x.c.radius, (double)ref);
         for (int i = 0; i < 4; i++) L = fmax(L, tdist(x.b.p[i], x.c.center));
         judge(x.disk ? "bezier-disk" : "bezier-circle", id, run_bez, &x, ref, L);
