@@ -120,21 +120,23 @@
 #define CD_CURVE_CERT_MAX_NODES 200000L
 /* Callback curves: positions sampled to choose the frame's power-of-two scale. */
 #define CD_CURVE_SCALE_PROBES 8
-/* Helix: at most 10^6 turns (a longer one is BAD_INTERVAL); the turn lower bound's ranges are
- * widened by CD_CURVE_HELIX_BOUND_ULPS * eps * (R + |centre| + r) (their rounding); a turn is
- * skipped when its bound exceeds best * (1 + CD_CURVE_HELIX_SKIP_REL) + CD_CURVE_HELIX_SKIP_ABS * L
- * (far above the rounding of both); cost limit: CD_CURVE_HELIX_MAX_SAMPLES samples over the
- * turns that cannot be skipped (2^21: 4096 turns at 512 samples, about 0.6 s; a threaded coil
- * costs about 0.15 ms per turn in a release build). */
+/* Helix: at most 10^6 turns (a longer one is BAD_INTERVAL); the turn lower bound's ranges (and
+ * the arcs' bound's) are widened by CD_CURVE_HELIX_BOUND_ULPS * eps times the magnitude of the
+ * geometry (squares before their square roots: their rounding); a turn must be scanned when its
+ * bound is below best - tau (the certification tolerance), and may hold a tie when its bound is
+ * below best * (1 + CD_CURVE_HELIX_SKIP_REL) + CD_CURVE_HELIX_SKIP_ABS * L (far above the
+ * rounding of both); cost limit: CD_CURVE_HELIX_MAX_SAMPLES samples over the turns that must be
+ * scanned (2^21: 4096 turns at 512 samples, about 0.6 s; a threaded coil costs about 0.15 ms per
+ * turn at 512 samples in a release build). */
 #define CD_CURVE_HELIX_MAX_TURNS 1e6
 #define CD_CURVE_HELIX_BOUND_ULPS 64.0
 #define CD_CURVE_HELIX_SKIP_REL 1e-9
 #define CD_CURVE_HELIX_SKIP_ABS 1e-12
 #define CD_CURVE_HELIX_MAX_SAMPLES 2097152.0
 /* Helix pieces that the certification does not need but whose bound is within the skip margin
- * above (a possible second closest pair, e.g. the next crossing of a disk) are scanned up to
- * this many per query. */
-#define CD_CURVE_HELIX_TIE_PIECES 6
+ * above (a possible second closest pair, e.g. the next crossing of a disk) are scanned within
+ * this many samples per query (6 pieces at the default 512 samples). */
+#define CD_CURVE_HELIX_TIE_SAMPLES 3072.0
 /* Arcs: the height over a disk's plane is constant (parallel planes) when its amplitude is
  * below CD_ARC_PARALLEL_ULPS * eps * r. Arc-arc whose circles' distance is constant (as the
  * circle-circle analysis decides it, within its 32 eps L) is answered in closed form as coaxial

@@ -828,10 +828,10 @@ static cdist_status helix_pieces(cdist__cs_scan *s, const helix_x *hx, double t0
             double best = s->k->b.n ? sqrt(s->k->b.c[0].d2) : INFINITY;
             /* A piece must be scanned when its bound is below the best minus the certification
              * tolerance; one whose bound is within the tie margin of the best may hold a second
-             * closest pair: the first CD_CURVE_HELIX_TIE_PIECES of these are scanned too. */
+             * closest pair: these are scanned too, within CD_CURVE_HELIX_TIE_SAMPLES samples. */
             double need = best - cert_tol(s);
             double tie = best * (1.0 + CD_CURVE_HELIX_SKIP_REL) + CD_CURVE_HELIX_SKIP_ABS * s->k->b.scale;
-            int tie_ok = ties < CD_CURVE_HELIX_TIE_PIECES;
+            int tie_ok = (double)(ties + 1) * q->curve_samples <= CD_CURVE_HELIX_TIE_SAMPLES;
             if (!(blo < need || (tie_ok && blo <= tie))) done_lo = 1;
             if (!(bhi < need || (tie_ok && bhi <= tie))) done_hi = 1;
             if (done_lo && done_hi) break;
