@@ -713,9 +713,17 @@ typedef struct helix_bound {
     double rgap;     /* distance from the helix radius to the target's radial range */
 } helix_bound;
 
-cdist__cs_ranges cdist__cs_circle_ranges(vec3 C, vec3 n, vec3 u, vec3 v, double R, int filled)
+/* Axial and radial ranges of a circle (or, filled, a disk) relative to an axis: for the circle
+ * C + R (cos f u + sin f v) (C relative to a point of the axis, unit direction n), every point's
+ * coordinate along n lies in [zlo, zhi] and its distance from the axis in [rlo, rhi], rounding
+ * included. */
+typedef struct circle_ranges {
+    double zlo, zhi, rlo, rhi;
+} circle_ranges;
+
+static circle_ranges circle_axis_ranges(vec3 C, vec3 n, vec3 u, vec3 v, double R, int filled)
 {
-    cdist__cs_ranges g;
+    circle_ranges g;
     double zc = v_dot(C, n), za = hypot(v_dot(u, n), v_dot(v, n));
     /* The offset from the axis: Y_perp = C_p + R (cos f u_p + sin f v_p), whose square is
      * a0 + a1 cos f + b1 sin f + a2 cos 2f + b2 sin 2f. */
@@ -737,12 +745,14 @@ cdist__cs_ranges cdist__cs_circle_ranges(vec3 C, vec3 n, vec3 u, vec3 v, double 
     return g;
 }
 
-static helix_bound helix_bound_init(const helix_x *hx, const cdist__circle *c, int disk)
+/* zext: the helix's largest |axial coordinate| (rise times the largest |t|), whose rounding the
+ * pieces' axial ranges carry. */
+static helix_bound helix_bound_init(const helix_x *hx, const cdist__circle *c, int disk, double zext)
 {
     helix_bound hb;
     /* The helix axis through the helix centre; the target relative to it. */
-    cdist__cs_ranges g = cdist__cs_circle_ranges(v_scale(-1.0, hx->c), hx->n, c->u, c->v, c->r, disk);
-    double slack = CD_CURVE_HELIX_BOUND_ULPS * DBL_EPSILON * hx->r;
+    circle_ranges g = circle_axis_ranges(v_scale(-1.0, hx->c), hx->n, c->u, c->v, c->r, disk);
+    double slack = CD_CURVE_HELIX_BOUND_ULPS * DBL_EPSILON * (hx->r + zext);
     hb.zlo = g.zlo - slack;
     hb.zhi = g.zhi + slack;
     double rlo = fmax(0.0, g.rlo - slack), rhi = g.rhi + slack;
@@ -797,11 +807,12 @@ static cdist_status helix_cost_check(const cdist__cs_scan *s, const helix_x *hx,
 /* Scan the pieces [t0 + i plen, t0 + (i+1) plen] (the last ending at t1) in order of increasing
  * lower bound, from the piece nearest the target axially outwards (the bound is unimodal in i:
  * the axial gap shrinks, stays 0 while the pieces overlap the target's range, then grows),
- * stopping on each side at the first piece whose bound exceeds the best distance so far. */
+ * stopping on each side at the first piece that neither the certification nor a possible tie
+ * needs. */
 static cdist_status helix_pieces(cdist__cs_scan *s, const helix_x *hx, double t0, double plen, long pieces, double t1)
 {
     cdist_query *q = s->q;
-    helix_bound hb = helix_bound_init(hx, s->c, s->disk);
+    const helix_bound hb = ((const helix_lb_ctx *)s->lb_ctx)->hb;
     /* The piece whose axis range is nearest the middle of the target's axial range. */
     long mid = 0;
     if (hx->rise != 0.0) {
@@ -891,7 +902,7 @@ static cdist_status helix_query(cdist_query *q, const cdist_helix *h, const cdis
     cdist__cs_coll k;
     cdist__cs_coll_init(&k, fmax(cc.r, v_norm(hx.c)));
     cdist__cs_scan s = {.q = q, .ev = helix_eval, .ctx = &hx, .c = &cc, .disk = disk, .k = &k, .update_scale = 1};
-    helix_lb_ctx lbc = {helix_bound_init(&hx, &cc, disk), &hx};
+    helix_lb_ctx lbc = {helix_bound_init(&hx, &cc, disk, fabs(hx.rise) * fmax(fabs(t0), fabs(t1))), &hx};
     s.certify = 1;
     s.speed_max = hypot(hx.r, hx.rise);
     s.accel_max = hx.r;

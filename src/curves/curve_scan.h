@@ -76,15 +76,6 @@ cdist_status cdist__cs_polish(cdist__cs_scan *s, double t, double lo, double hi)
 /* After the scans: flag equidistance when the distance is flat (within the tie tolerance)
  * at t* +- delta around the best parameter (a curve lying on a continuum of minima). */
 cdist_status cdist__cs_flat_check(cdist__cs_scan *s, double t0, double t1, double delta);
-/* Axial and radial ranges of a circle (or, filled, a disk) relative to an axis: for the
- * circle C + R (cos f u + sin f v) (C relative to a point of the axis, unit direction n), every
- * point's coordinate along n lies in [zlo, zhi] and its distance from the axis in [rlo, rhi],
- * rounding included. */
-typedef struct cdist__cs_ranges {
-    double zlo, zhi, rlo, rhi;
-} cdist__cs_ranges;
-cdist__cs_ranges cdist__cs_circle_ranges(vec3 C, vec3 n, vec3 u, vec3 v, double R, int filled);
-
 /* t0, t1 finite (NOT_FINITE), t0 <= t1 and t1 - t0 finite (BAD_INTERVAL). */
 cdist_status cdist__cs_check_interval(cdist_query *q, double t0, double t1, const char *what);
 /* U = zd projected onto the plane of unit normal n, normalised; V = n x U. ZERO_VECTOR when zd
