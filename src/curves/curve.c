@@ -131,8 +131,17 @@ typedef struct sample {
     double rho;   /* distance from the axis */
     double tol;   /* rounding level of g */
     double speed; /* |P'| (1-norm) */
-    double px, py; /* in-plane coordinates relative to the centre (along the circle's u, v) */
 } sample;
+
+/* In-plane coordinates of the sample's point relative to the centre (along the circle's u, v):
+ * the certification's chord bound (only there, not in every solver step). */
+static void in_plane(const cdist__cs_scan *s, const sample *x, double *px, double *py)
+{
+    const cdist__circle *c = s->c;
+    vec3 rel = v_sub(x->p, c->c);
+    *px = c->u.x * rel.x + c->u.y * rel.y + c->u.z * rel.z;
+    *py = c->v.x * rel.x + c->v.y * rel.y + c->v.z * rel.z;
+}
 
 static cdist_status eval(const cdist__cs_scan *s, double t, sample *o)
 {
@@ -160,8 +169,6 @@ static cdist_status eval(const cdist__cs_scan *s, double t, sample *o)
         o->f = dr * dr + h * h;
     }
     o->p = P;
-    o->px = c->u.x * rel.x + c->u.y * rel.y + c->u.z * rel.z;
-    o->py = c->v.x * rel.x + c->v.y * rel.y + c->v.z * rel.z;
     o->h = h;
     o->rho = rho;
     double rn = fabs(rel.x) + fabs(rel.y) + fabs(rel.z), dn = fabs(D.x) + fabs(D.y) + fabs(D.z);
@@ -367,13 +374,14 @@ static cdist_status certify(cdist__cs_scan *s, cert_node nd)
                 s->span = span;
                 if (st) return st;
             }
-            double dm = sqrt(x.f);
-            cert_node right = {m, nd.b, dm, nd.db, x.h, nd.hb, x.px, x.py, nd.xb, nd.yb};
+            double dm = sqrt(x.f), px, py;
+            in_plane(s, &x, &px, &py);
+            cert_node right = {m, nd.b, dm, nd.db, x.h, nd.hb, px, py, nd.xb, nd.yb};
             nd.b = m;
             nd.db = dm;
             nd.hb = x.h;
-            nd.xb = x.px;
-            nd.yb = x.py;
+            nd.xb = px;
+            nd.yb = py;
             if (top < CD_CURVE_CERT_DEPTH) {
                 stack[top++] = right;
             } else if ((st = certify(s, right))) {
@@ -447,8 +455,7 @@ cdist_status cdist__cs_scan_run(cdist__cs_scan *s, double t0, double t1, int n)
         R[i] = x.rho - s->c->r;
         T[i] = x.tol;
         H[i] = x.h;
-        X[i] = x.px;
-        Y[i] = x.py;
+        if (s->certify) in_plane(s, &x, &X[i], &Y[i]);
         ext = fmax(ext, v_dist(x.p, s->c->c));
     }
     if (s->update_scale) s->k->b.scale = fmax(s->k->b.scale, ext);
