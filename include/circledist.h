@@ -307,8 +307,9 @@ CDIST_API cdist_status cdist_disk_disk(cdist_query *q, const cdist_circle *d0, c
  * minus tau = 512 eps L (about 1.1e-13 of the problem scale L, rounding included) is split and
  * searched; so the distance is within tau of the global minimum at every sample count (the
  * count trades speed only). A second closest pair less than tau from the answer may go
- * unreported when the bound excluded its region. The arcs' sampled fallback (constant or
- * parallel configurations) is certified the same way.
+ * unreported when the bound excluded its region. The sampled fallback of arc-circle and
+ * arc-disk (parallel configurations) is certified the same way; the other fallbacks sample a
+ * function known to be constant, or (segment-arc, when the lines core fails) are not certified.
  * Callback curves (cdist_curve_circle, cdist_curve_disk) are NOT certified: no bound of the
  * callback's derivatives is known. A minimum is found when g = F'/2 changes sign between two
  * samples, or dips to zero between samples of one sign where the golden-section search finds

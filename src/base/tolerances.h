@@ -107,13 +107,13 @@
  * CD_CURVE_POLISH_STEPS times (4^40 covers any span). */
 #define CD_CURVE_POLISH_STEP_REL 1e-10
 #define CD_CURVE_POLISH_STEPS 40
-/* Certification of the sampled curve queries (helix, Bezier, arcs' sampled fallback): the
- * answer is within tau = CD_CURVE_CERT_ULPS * eps * L of the global minimum (every excluded
- * interval's lower bound is at least the answer minus tau; tau must exceed the rounding of the
- * bounds: CD_CURVE_CERT_EVAL_ULPS * eps * (2 L + r + frame magnitude) for a sampled distance,
- * the helix bound's ranges). The certification's explicit stack holds CD_CURVE_CERT_DEPTH
- * nodes (deeper splits recurse); more than CD_CURVE_CERT_MAX_NODES split nodes in one query
- * is CDIST_ERR_COST_LIMIT. */
+/* Certification of the sampled curve queries (helix, Bezier, the sampled fallback of arc-circle
+ * and arc-disk): the answer is within tau = CD_CURVE_CERT_ULPS * eps * L of the global minimum
+ * (every excluded interval's lower bound is at least the answer minus tau; tau must exceed the
+ * rounding of the bounds: CD_CURVE_CERT_EVAL_ULPS * eps * (2 L + r + frame magnitude) for a
+ * sampled distance, the helix's and arcs' bound ranges). The certification's explicit stack
+ * holds CD_CURVE_CERT_DEPTH nodes (deeper splits recurse); more than CD_CURVE_CERT_MAX_NODES
+ * split nodes in one query is CDIST_ERR_COST_LIMIT. */
 #define CD_CURVE_CERT_ULPS 512.0
 #define CD_CURVE_CERT_EVAL_ULPS 16.0
 #define CD_CURVE_CERT_DEPTH 80

@@ -507,7 +507,8 @@ static cdist_status segment_arc(cdist_query *q, const cdist_segment *sg, const c
         double lo = fmax(0.0, foot - half), hi = fmin(1.0, foot + half);
         if (lo <= hi) {
             cand_arc_ctx ca = {&A, 1};
-            cdist__cs_scan s = {.q = q, .ev = seg_eval, .ctx = &S, .c = &A.c, .k = &k, .cand = cand_arc, .cand_ctx = &ca, .frame_mag = fmax(v_norm(S.p0), v_norm(S1))};
+            cdist__cs_scan s = {.q = q, .ev = seg_eval, .ctx = &S, .c = &A.c, .k = &k, .cand = cand_arc,
+                                .cand_ctx = &ca, .frame_mag = fmax(v_norm(S.p0), v_norm(S1))};
             /* The local minima of the segment's distance to the full circle in the window, from
              * the lines family's robust (GSL-free) core on the line through the foot, each
              * polished on the true derivative and offered when its circle point is in range. */

@@ -614,7 +614,8 @@ static cdist_status run_curve(cdist_query *q, cdist__cs_eval_fn ev, const void *
 {
     cdist__cs_coll k;
     cdist__cs_coll_init(&k, scale);
-    cdist__cs_scan s = {.q = q, .ev = ev, .ctx = ctx, .c = cc, .disk = disk, .k = &k, .update_scale = 1, .frame_mag = frame_mag};
+    cdist__cs_scan s = {.q = q, .ev = ev, .ctx = ctx, .c = cc, .disk = disk, .k = &k, .update_scale = 1,
+                        .frame_mag = frame_mag};
     if (bounds) {
         s.certify = 1;
         s.speed_max = bounds[0];

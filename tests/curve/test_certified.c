@@ -56,7 +56,8 @@ static cdist_status run_helix(const void *p, cdist_result *r)
 static cdist_vec3 helix_point(const cdist_helix *h, double t)
 {
     bf_helix b = bf_helix_of(h, &(cdist_circle){tv(0, 0, 0), tv(0, 0, 1), 1}, 0);
-    lv p = lv_add(b.c, lv_add(lv_scale(b.r * cosl(t), b.u), lv_add(lv_scale(b.r * sinl(t), b.v), lv_scale(b.rise * t, b.n))));
+    lv p = lv_add(b.c, lv_add(lv_scale(b.r * cosl(t), b.u),
+                              lv_add(lv_scale(b.r * sinl(t), b.v), lv_scale(b.rise * t, b.n))));
     return tv((double)p.x, (double)p.y, (double)p.z);
 }
 
@@ -130,14 +131,15 @@ static void random_beziers(int count)
         for (int i = 0; i < 4; i++) b.p[i] = lv_of(x.b.p[i]);
         if (id % 3 == 0) { /* a small circle centred near a curve point */
             lv p = bf_bez_point(&b, urand());
-            x.c = (cdist_circle){tv((double)p.x + 0.02 * srand1(), (double)p.y + 0.02 * srand1(), (double)p.z + 0.02 * srand1()),
-                                 rand_unit(), 0.01 + 0.3 * urand()};
+            cdist_vec3 o = tv((double)p.x + 0.02 * srand1(), (double)p.y + 0.02 * srand1(), (double)p.z + 0.02 * srand1());
+            x.c = (cdist_circle){o, rand_unit(), 0.01 + 0.3 * urand()};
         } else if (id % 3 == 1 && x.disk) { /* lying flat over the disk: constant distance */
             for (int i = 0; i < 4; i++) x.b.p[i].z = far.z + 0.25;
             for (int i = 0; i < 4; i++) b.p[i] = lv_of(x.b.p[i]);
             x.c = (cdist_circle){tv(far.x, far.y, far.z), tv(0, 0, 1), 1 + 3 * urand()};
         } else {
-            x.c = (cdist_circle){tv(far.x + srand1(), far.y + srand1(), far.z + srand1()), rand_unit(), 0.1 + 1.5 * urand()};
+            x.c = (cdist_circle){tv(far.x + srand1(), far.y + srand1(), far.z + srand1()), rand_unit(),
+                                 0.1 + 1.5 * urand()};
         }
         b.k = bf_circ(x.c);
         b.disk = x.disk;
