@@ -118,6 +118,9 @@
 #define CD_CURVE_CERT_EVAL_ULPS 16.0
 #define CD_CURVE_CERT_DEPTH 80
 #define CD_CURVE_CERT_MAX_NODES 200000L
+/* Blocks of sample intervals tried whole with a curve's own bound are halved down to this many
+ * intervals (a cost choice, not a tolerance). */
+#define CD_CURVE_CERT_BLOCK 16
 /* Callback curves: positions sampled to choose the frame's power-of-two scale. */
 #define CD_CURVE_SCALE_PROBES 8
 /* Helix: at most 10^6 turns (a longer one is BAD_INTERVAL); the turn lower bound's ranges (and

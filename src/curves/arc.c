@@ -184,15 +184,15 @@ static cdist_status polish_in_range(cdist__cs_scan *s, const arcx *X, double a)
 
 /* Lower bound of the distance from the points X(theta), theta in [a, b], to Y (circle or disk),
  * from X's heights over Y's plane, h = hc + A cos + B sin, and squared distances from Y's axis,
- * rho^2 = |Cp + cos Up + sin Vp|^2, at the middle angle, widened by their derivative bounds
- * (hypot(A, B), and m1 + 2 m2 for rho^2, m1 and m2 the amplitudes of its first and second
- * harmonics) times the half width, and by their rounding. First order in the width, but with
- * the geometry's own amplitudes: exact where the distance is constant (coaxial arcs, an arc
- * parallel to a disk) and tight where it nearly is (concentric coplanar arcs), where the
- * chord bounds would need tiny intervals. */
+ * rho^2 = |Cp + cos Up + sin Vp|^2 (first and second harmonics of amplitudes m1, m2): each lies
+ * above its chord over [a, b] minus its second derivative's bound (hypot(A, B), m1 + 4 m2)
+ * times w^2 / 8, and rho^2 below its chord plus as much; widened by their rounding. Second
+ * order in the width with the geometry's own amplitudes: exact where the distance is constant
+ * (coaxial arcs, an arc parallel to a disk) and tight where it nearly is (nearly coaxial or
+ * concentric arcs), where the chord bounds of the certification would need tiny intervals. */
 typedef struct arc_lb_ctx {
     vec3 Cp, Up, Vp;
-    double hc, A, B, dh, drho2, sq, slack, r;
+    double hc, A, B, dh2, drho2, sq, slack, r;
     int disk;
 } arc_lb_ctx;
 
@@ -206,10 +206,10 @@ static arc_lb_ctx arc_lb_init(const arcx *X, const cdist__circle *Y, int disk)
     c.Cp = v_sub(C, v_scale(c.hc, n));
     c.Up = v_sub(U, v_scale(c.A, n));
     c.Vp = v_sub(V, v_scale(c.B, n));
-    c.dh = hypot(c.A, c.B);
+    c.dh2 = hypot(c.A, c.B);
     double m1 = 2.0 * hypot(v_dot(c.Cp, c.Up), v_dot(c.Cp, c.Vp));
     double m2 = hypot(0.5 * (v_sqr(c.Up) - v_sqr(c.Vp)), v_dot(c.Up, c.Vp));
-    c.drho2 = m1 + 2.0 * m2;
+    c.drho2 = m1 + 4.0 * m2;
     double mag = v_norm(C) + X->c.r;
     c.sq = CD_CURVE_HELIX_BOUND_ULPS * DBL_EPSILON * mag * mag;
     c.slack = CD_CURVE_HELIX_BOUND_ULPS * DBL_EPSILON * mag;
@@ -221,13 +221,16 @@ static arc_lb_ctx arc_lb_init(const arcx *X, const cdist__circle *Y, int disk)
 static double arc_lb(const cdist__cs_scan *s, double a, double b)
 {
     const arc_lb_ctx *c = s->lb_ctx;
-    double m = 0.5 * (a + b), hw = 0.5 * (b - a), cm = cos(m), sm = sin(m);
-    double h = c->hc + c->A * cm + c->B * sm, dh = c->dh * hw + c->slack;
-    double hg = h - dh > 0.0 ? h - dh : (h + dh < 0.0 ? -(h + dh) : 0.0);
-    double rho2 = v_sqr(v_axpy(v_axpy(c->Cp, cm, c->Up), sm, c->Vp)), d2 = c->drho2 * hw + c->sq;
-    double rg = fmax(0.0, sqrt(fmax(0.0, rho2 - d2)) - c->r);
-    if (!c->disk) rg = fmax(rg, c->r - sqrt(rho2 + d2));
-    return hypot(hg, rg);
+    double ca = cos(a), sa = sin(a), cb = cos(b), sb = sin(b), w2 = 0.125 * (b - a) * (b - a);
+    double ha = c->hc + c->A * ca + c->B * sa, hb = c->hc + c->A * cb + c->B * sb;
+    double hg = 0.0;
+    if ((ha > 0.0 && hb > 0.0) || (ha < 0.0 && hb < 0.0))
+        hg = fmax(0.0, fmin(fabs(ha), fabs(hb)) - c->dh2 * w2 - c->slack);
+    double ra = v_sqr(v_axpy(v_axpy(c->Cp, ca, c->Up), sa, c->Vp));
+    double rb = v_sqr(v_axpy(v_axpy(c->Cp, cb, c->Up), sb, c->Vp)), d2 = c->drho2 * w2 + c->sq;
+    double rg = fmax(0.0, sqrt(fmax(0.0, fmin(ra, rb) - d2)) - c->r);
+    if (!c->disk) rg = fmax(rg, c->r - sqrt(fmax(ra, rb) + d2));
+    return sqrt(hg * hg + rg * rg);
 }
 
 /* Every minimum of theta -> dist^2(X(theta), circle or disk Y) over X's range, handed to the

@@ -401,15 +401,15 @@ static double t_at(double t0, double t1, int i, int n)
 }
 
 /* Certify the sample intervals i..j-1 of a scan (arr: d, h, in-plane x and y per sample): where
- * the curve has its own bound, blocks of intervals are tried whole first (halving), so that a
- * bound that is tight over long ranges (coaxial and concentric configurations) settles them in
- * a few calls. */
+ * the curve has its own bound, blocks of intervals are tried whole first (halving down to
+ * CD_CURVE_CERT_BLOCK intervals), so that a bound that is tight over long ranges (coaxial and
+ * concentric configurations) settles them in a few calls. */
 static cdist_status certify_samples(cdist__cs_scan *s, double t0, double t1, int n, int i, int j, const double *arr[4])
 {
     if (j - i > 1 && s->lb && s->k->b.n && s->lb(s, t_at(t0, t1, i, n), t_at(t0, t1, j, n)) >=
                                                sqrt(s->k->b.c[0].d2) - cert_tol(s))
         return CDIST_OK;
-    if (j - i > 1 && s->lb) {
+    if (j - i > CD_CURVE_CERT_BLOCK && s->lb) {
         int k = i + (j - i) / 2;
         cdist_status st = certify_samples(s, t0, t1, n, i, k, arr);
         return st ? st : certify_samples(s, t0, t1, n, k, j, arr);
