@@ -400,7 +400,7 @@ static double t_at(double t0, double t1, int i, int n)
     return t0 + (t1 - t0) * ((double)i / n);
 }
 
-/* Certify the sample intervals i..j-1 of a scan (arr: d, h, in-plane x and y per sample): where
+/* Certify the sample intervals i..j-1 of a scan (arr: d^2, h, in-plane x and y per sample): where
  * the curve has its own bound, blocks of intervals are tried whole first (halving down to
  * CD_CURVE_CERT_BLOCK intervals), so that a bound that is tight over long ranges (coaxial and
  * concentric configurations) settles them in a few calls. */
@@ -414,14 +414,18 @@ static cdist_status certify_samples(cdist__cs_scan *s, double t0, double t1, int
         cdist_status st = certify_samples(s, t0, t1, n, i, k, arr);
         return st ? st : certify_samples(s, t0, t1, n, k, j, arr);
     }
-    const double *D = arr[0], *H = arr[1], *X = arr[2], *Y = arr[3];
+    const double *F = arr[0], *H = arr[1], *X = arr[2], *Y = arr[3];
     /* Lipschitz screen first (the bound of cert_excluded, for the longest interval of the scan:
-     * t_at's widths differ by rounding only, covered by the 1 + 2^-40 factor). */
+     * t_at's widths differ by rounding only, covered by the 1 + 2^-40 factor), on the squares
+     * where both ends clear half of it. */
     double best = s->k->b.n ? sqrt(s->k->b.c[0].d2) : INFINITY;
     double screen = 2.0 * (best - cert_tol(s) + cert_mu(s)) + s->speed_max * ((t1 - t0) / n) * (1.0 + 0x1p-40);
+    double half2 = screen > 0.0 ? 0.25 * screen * screen * (1.0 + 0x1p-40) : 0.0;
     for (int m = i; m < j; m++) {
-        if (D[m] + D[m + 1] >= screen) continue;
-        cert_node nd = {t_at(t0, t1, m, n), t_at(t0, t1, m + 1, n), D[m], D[m + 1], H[m], H[m + 1],
+        if (fmin(F[m], F[m + 1]) >= half2) continue;
+        double da = sqrt(F[m]), db = sqrt(F[m + 1]);
+        if (da + db >= screen) continue;
+        cert_node nd = {t_at(t0, t1, m, n), t_at(t0, t1, m + 1, n), da, db, H[m], H[m + 1],
                         X[m],           Y[m],                   X[m + 1], Y[m + 1]};
         cdist_status st = certify(s, nd);
         if (st) return st;
@@ -507,8 +511,7 @@ cdist_status cdist__cs_scan_run(cdist__cs_scan *s, double t0, double t1, int n)
         if (i > 0 && i < n && Fv[i] <= Fv[i - 1] && Fv[i] <= Fv[i + 1] && (st = offer_at(s, t))) return st;
     }
     if (!s->certify) return CDIST_OK;
-    for (int i = 0; i <= n; i++) T[i] = sqrt(Fv[i]); /* the distances, in place of g's rounding level */
-    const double *arr[4] = {T, H, X, Y};
+    const double *arr[4] = {Fv, H, X, Y};
     return certify_samples(s, t0, t1, n, 0, n, arr);
 }
 
