@@ -21,9 +21,27 @@ static const int settings_short[] = {8, 13, 64, 512};
 static const int *settings;
 static int n_settings;
 
+/* One query: a helix, Bezier curve or arc against circle or disk c. */
+enum { HELIX, BEZIER, ARC };
+typedef struct curve_case {
+    int kind, disk;
+    cdist_helix h;
+    cdist_bezier3 b;
+    cdist_arc a;
+    cdist_circle c;
+} curve_case;
+
+static cdist_status run(const curve_case *x, cdist_result *r)
+{
+    switch (x->kind) {
+    case HELIX: return (x->disk ? cdist_helix_disk : cdist_helix_circle)(q, &x->h, &x->c, r);
+    case BEZIER: return (x->disk ? cdist_bezier3_disk : cdist_bezier3_circle)(q, &x->b, &x->c, r);
+    default: return (x->disk ? cdist_arc_disk : cdist_arc_circle)(q, &x->a, &x->c, r);
+    }
+}
+
 /* The library's answer at every setting against ref (long double), scale L. */
-static void judge(const char *what, long id, cdist_status (*run)(const void *, cdist_result *), const void *obj, ld ref,
-                  double L)
+static void judge(const char *what, long id, const curve_case *obj, ld ref, double L)
 {
     for (int k = 0; k < n_settings; k++) {
         CHECK(cdist_query_set_curve_samples(q, settings[k]) == CDIST_OK, "set samples %d", settings[k]);
@@ -41,17 +59,6 @@ static void judge(const char *what, long id, cdist_status (*run)(const void *, c
     cdist_query_set_curve_samples(q, 512);
 }
 
-typedef struct helix_case {
-    cdist_helix h;
-    cdist_circle c;
-    int disk;
-} helix_case;
-
-static cdist_status run_helix(const void *p, cdist_result *r)
-{
-    const helix_case *x = p;
-    return (x->disk ? cdist_helix_disk : cdist_helix_circle)(q, &x->h, &x->c, r);
-}
 
 static cdist_vec3 helix_point(const cdist_helix *h, double t)
 {
@@ -61,7 +68,7 @@ static cdist_vec3 helix_point(const cdist_helix *h, double t)
     return tv((double)p.x, (double)p.y, (double)p.z);
 }
 
-static void helix_check(long id, const helix_case *x)
+static void helix_check(long id, const curve_case *x)
 {
     bf_helix b = bf_helix_of(&x->h, &x->c, x->disk);
     double turns = (x->h.t1 - x->h.t0) / (2 * M_PI);
@@ -69,13 +76,13 @@ static void helix_check(long id, const helix_case *x)
     ld ref = bf_min1d(bf_f_helix, &b, x->h.t0, x->h.t1, ns);
     double ext = fabs(x->h.pitch) * fmax(fabs(x->h.t0), fabs(x->h.t1)) / (2 * M_PI);
     double L = fmax(fmax(fmax(x->h.radius, x->c.radius), tdist(x->h.center, x->c.center) + ext), (double)ref);
-    judge(x->disk ? "helix-disk" : "helix-circle", id, run_helix, x, ref, L);
+    judge(x->disk ? "helix-disk" : "helix-circle", id, x, ref, L);
 }
 
 static void random_helices(int count)
 {
     for (long id = 0; id < count; id++) {
-        helix_case x;
+        curve_case x = {.kind = HELIX};
         int turns = 1 + (int)(12 * urand());
         double pitch = pow(10.0, -9 + 8.5 * urand()) * (id % 3 == 0 ? -1 : 1);
         cdist_vec3 far = id % 4 == 0 ? tv(1e3 * srand1(), 1e3 * srand1(), 1e3 * srand1()) : tv(0, 0, 0);
@@ -108,22 +115,11 @@ static void random_helices(int count)
     }
 }
 
-typedef struct bez_case {
-    cdist_bezier3 b;
-    cdist_circle c;
-    int disk;
-} bez_case;
-
-static cdist_status run_bez(const void *p, cdist_result *r)
-{
-    const bez_case *x = p;
-    return (x->disk ? cdist_bezier3_disk : cdist_bezier3_circle)(q, &x->b, &x->c, r);
-}
 
 static void random_beziers(int count)
 {
     for (long id = 0; id < count; id++) {
-        bez_case x;
+        curve_case x = {.kind = BEZIER};
         cdist_vec3 far = id % 4 == 0 ? tv(1e3 * srand1(), 1e3 * srand1(), 1e3 * srand1()) : tv(0, 0, 0);
         for (int i = 0; i < 4; i++) x.b.p[i] = tv(far.x + 2 * srand1(), far.y + 2 * srand1(), far.z + 2 * srand1());
         x.disk = (int)(id % 2);
@@ -146,21 +142,10 @@ static void random_beziers(int count)
         ld ref = bf_min1d(bf_f_bez, &b, 0, 1, 16384);
         double L = fmax(x.c.radius, (double)ref);
         for (int i = 0; i < 4; i++) L = fmax(L, tdist(x.b.p[i], x.c.center));
-        judge(x.disk ? "bezier-disk" : "bezier-circle", id, run_bez, &x, ref, L);
+        judge(x.disk ? "bezier-disk" : "bezier-circle", id, &x, ref, L);
     }
 }
 
-typedef struct arc_case {
-    cdist_arc a;
-    cdist_circle c;
-    int disk;
-} arc_case;
-
-static cdist_status run_arc(const void *p, cdist_result *r)
-{
-    const arc_case *x = p;
-    return (x->disk ? cdist_arc_disk : cdist_arc_circle)(q, &x->a, &x->c, r);
-}
 
 typedef struct bf_arc_t {
     bf_arc a;
@@ -178,7 +163,7 @@ static ld f_arc(const void *p, ld t)
 static void random_arcs(int count)
 {
     for (long id = 0; id < count; id++) {
-        arc_case x;
+        curve_case x = {.kind = ARC};
         cdist_vec3 far = id % 4 == 0 ? tv(1e3 * srand1(), 1e3 * srand1(), 1e3 * srand1()) : tv(0, 0, 0);
         double s0 = 4 * srand1();
         x.a = (cdist_arc){{far, rand_unit(), 0.2 + urand()}, rand_unit(), s0, s0 + 2 * M_PI * urand()};
@@ -195,7 +180,7 @@ static void random_arcs(int count)
         bf_arc_t b = {bf_arc_of(&x.a), bf_circ(x.c), x.disk};
         ld ref = bf_min1d(f_arc, &b, x.a.start, x.a.end, 8192);
         double L = fmax(fmax(x.a.circle.radius, x.c.radius), fmax(tdist(x.a.circle.center, x.c.center), (double)ref));
-        judge(x.disk ? "arc-disk" : "arc-circle", id, run_arc, &x, ref, L);
+        judge(x.disk ? "arc-disk" : "arc-circle", id, &x, ref, L);
     }
 }
 
@@ -204,12 +189,12 @@ static void reported_cases(void)
     /* The basin at t = 37.704 (distance 0.060175777123367480, closed to the digits by the
      * long double scan below) was stepped over at 512 samples: 0.060181571180885587 at
      * t = 31.421 came back with status OK. */
-    helix_case x = {{tv(0, 0, 0), tv(0.12713528112406569, 0.72235514668474465, 0.67973499420845329),
-                     tv(0.88764416518506173, 0.22295885816590461, -0.4029605235978716), 1, 8.1110380473151297e-06,
-                     -2.6739032527197715, 38.002800815063324},
-                    {tv(0.88764416518461076, 0.22295885816674854, -0.40296052359735768),
-                     tv(-0.39536083285874024, 0.62633915544033258, -0.67185495027091557), 0.060415434432673422},
-                    0};
+    curve_case x = {.kind = HELIX,
+                    .h = {tv(0, 0, 0), tv(0.12713528112406569, 0.72235514668474465, 0.67973499420845329),
+                          tv(0.88764416518506173, 0.22295885816590461, -0.4029605235978716), 1,
+                          8.1110380473151297e-06, -2.6739032527197715, 38.002800815063324},
+                    .c = {tv(0.88764416518461076, 0.22295885816674854, -0.40296052359735768),
+                          tv(-0.39536083285874024, 0.62633915544033258, -0.67185495027091557), 0.060415434432673422}};
     helix_check(-1, &x);
     /* 4000 turns of pitch 1e-9 around a coaxial circle: every turn is within rounding of the
      * answer 0.5 (closed form: the helix radius 1 minus the circle's 0.5 at height 0). Turns
