@@ -510,7 +510,7 @@ cdist_status cdist__cs_scan_run(cdist__cs_scan *s, double t0, double t1, int n)
         /* Safety net: a sampled local minimum of F. */
         if (i > 0 && i < n && Fv[i] <= Fv[i - 1] && Fv[i] <= Fv[i + 1] && (st = offer_at(s, t))) return st;
     }
-    if (!s->certify) return CDIST_OK;
+    if (!s->certify || !s->k->b.n) return CDIST_OK; /* (both ends were offered: n >= 1) */
     const double *arr[4] = {Fv, H, X, Y};
     return certify_samples(s, t0, t1, n, 0, n, arr);
 }
