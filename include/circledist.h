@@ -80,7 +80,10 @@ typedef struct cdist_segment {
 
 /** A circular arc: the points C + r (cos a U + sin a V) of `circle` for a in [start, end],
  * where U = `zero_direction` (projected onto the circle's plane and normalised) and
- * V = N x U. Requires start <= end <= start + 2 pi.
+ * V = N x U. Requires start <= end <= start + 2 pi, checked exactly: end must not exceed the
+ * exact sum start + 2 pi rounded up to a double (so an end computed in double as
+ * start + 2 * M_PI is accepted, and nothing longer whatever |start|), else
+ * ::CDIST_ERR_BAD_INTERVAL.
  */
 typedef struct cdist_arc {
     cdist_circle circle;       /**< the supporting circle */
@@ -301,13 +304,28 @@ CDIST_API cdist_status cdist_disk_disk(cdist_query *q, const cdist_circle *d0, c
 /* ---- curves and arcs ---------------------------------------------------------------- */
 /* These queries have one method (root bounding and bisection, answered as
  * ::CDIST_METHOD_ROBUST whatever the handle's method). Arcs are exact: their candidates are the
- * circle-circle critical points inside the range plus the end points. Callback curves, helices
- * and Bezier curves are sampled at cdist_query_get_curve_samples() intervals (per turn for a
- * helix) to bracket critical points, so two minima closer than the sample spacing may merge.
- * Cost limit: a helix's turns are skipped when a lower bound (from the axial and radial
- * geometry) shows they cannot beat the distance found; when more than
- * 2^21 / cdist_query_get_curve_samples() turns (4096 by default) cannot be skipped (a target
- * threading a long, tight coil), the helix queries return ::CDIST_ERR_COST_LIMIT. */
+ * circle-circle critical points inside the range plus the end points (closed form for arcs on
+ * coaxial circles). Helices and Bezier curves are sampled at cdist_query_get_curve_samples()
+ * intervals (per turn for a helix) to bracket critical points, and the answer is then
+ * certified: every interval is bounded below (from bounds of the curve's first and second
+ * derivatives, and for a helix its cylinder and slab), and one whose bound is below the answer
+ * minus tau = 512 eps L (about 1.1e-13 of the problem scale L, rounding included) is split and
+ * searched; so the distance is within tau of the global minimum at every sample count (the
+ * count trades speed only). A second closest pair less than tau from the answer may go
+ * unreported when the bound excluded its region. The sampled fallback of arc-circle and
+ * arc-disk (parallel configurations) is certified the same way; the other fallbacks sample a
+ * function known to be constant, or (segment-arc, when the lines core fails) are not certified.
+ * Callback curves (cdist_curve_circle, cdist_curve_disk) are NOT certified: no bound of the
+ * callback's derivatives is known. A minimum is found when g = F'/2 changes sign between two
+ * samples, or dips to zero between samples of one sign where the golden-section search finds
+ * it; a basin narrower than the sample spacing can be missed, and the answer is then the
+ * distance of another local minimum or an end point (a true distance, above the minimum).
+ * Raise the sample count for curves with fine detail.
+ * Cost limits (::CDIST_ERR_COST_LIMIT): a helix's turns are skipped when a lower bound (from the
+ * axial and radial geometry) shows they cannot beat the distance found by more than tau; when
+ * more than 2^21 / cdist_query_get_curve_samples() turns (4096 by default) cannot be skipped (a
+ * target threading a long, tight coil), the helix queries refuse before scanning them; and a
+ * certification that needs more than 200000 interval splits stops. */
 
 /** Distance from the curve f(t), t in [t0, t1], to a circle; param[0] is the curve parameter.
  * The curve must be continuously differentiable and f must give its exact derivative.

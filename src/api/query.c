@@ -75,7 +75,7 @@ cdist_query *cdist_query_new(void)
     q->max_iterations = CD_DEFAULT_MAX_ITERATIONS;
     q->last_status = CDIST_OK;
     q->poly = cdist__poly_ws_new();
-    q->scratch_len = 4 * ((size_t)CD_DEFAULT_CURVE_SAMPLES + 1);
+    q->scratch_len = CD_CURVE_SCRATCH_ARRAYS * ((size_t)CD_DEFAULT_CURVE_SAMPLES + 1);
     q->scratch = malloc(q->scratch_len * sizeof(double));
     if (!q->poly || !q->scratch) {
         cdist_query_free(q);
@@ -157,7 +157,7 @@ static cdist_status query_set_curve_samples_locked(cdist_query *q, int samples)
     if (samples < 8 || samples > CD_MAX_CURVE_SAMPLES)
         return cdist__fail(q, CDIST_ERR_BAD_OPTION, "curve samples must be in [8, %d] (got %d)", CD_MAX_CURVE_SAMPLES,
                        samples);
-    size_t need = 4 * ((size_t)samples + 1);
+    size_t need = CD_CURVE_SCRATCH_ARRAYS * ((size_t)samples + 1);
     if (need > q->scratch_len) {
         double *s = realloc(q->scratch, need * sizeof(double));
         if (!s) return cdist__fail(q, CDIST_ERR_NO_MEMORY, "out of memory for %d curve samples", samples);

@@ -107,23 +107,46 @@
  * CD_CURVE_POLISH_STEPS times (4^40 covers any span). */
 #define CD_CURVE_POLISH_STEP_REL 1e-10
 #define CD_CURVE_POLISH_STEPS 40
+/* Certification of the sampled curve queries (helix, Bezier, the sampled fallback of arc-circle
+ * and arc-disk): the answer is within tau = CD_CURVE_CERT_ULPS * eps * L of the global minimum
+ * (every excluded interval's lower bound is at least the answer minus tau; tau must exceed the
+ * rounding of the bounds: CD_CURVE_CERT_EVAL_ULPS * eps * (2 L + r + frame magnitude) for a
+ * sampled distance, the helix's and arcs' bound ranges). The certification's explicit stack
+ * holds CD_CURVE_CERT_DEPTH nodes (deeper splits recurse); more than CD_CURVE_CERT_MAX_NODES
+ * split nodes in one query is CDIST_ERR_COST_LIMIT. */
+#define CD_CURVE_CERT_ULPS 512.0
+#define CD_CURVE_CERT_EVAL_ULPS 16.0
+#define CD_CURVE_CERT_DEPTH 80
+#define CD_CURVE_CERT_MAX_NODES 200000L
+/* Blocks of sample intervals tried whole with a curve's own bound are halved down to this many
+ * intervals (a cost choice, not a tolerance). */
+#define CD_CURVE_CERT_BLOCK 16
 /* Callback curves: positions sampled to choose the frame's power-of-two scale. */
 #define CD_CURVE_SCALE_PROBES 8
-/* Helix: at most 10^6 turns (a longer one is BAD_INTERVAL); the turn lower bound's ranges are
- * widened by CD_CURVE_HELIX_BOUND_ULPS * eps * (R + |centre| + r) (their rounding); a turn is
- * skipped when its bound exceeds best * (1 + CD_CURVE_HELIX_SKIP_REL) + CD_CURVE_HELIX_SKIP_ABS * L
- * (far above the rounding of both); cost limit: CD_CURVE_HELIX_MAX_SAMPLES samples over the
- * turns that cannot be skipped (2^21: 4096 turns at 512 samples, about 0.6 s; a threaded coil
- * costs about 0.15 ms per turn in a release build). */
+/* Helix: at most 10^6 turns (a longer one is BAD_INTERVAL); the turn lower bound's ranges (and
+ * the arcs' bound's) are widened by CD_CURVE_HELIX_BOUND_ULPS * eps times the magnitude of the
+ * geometry (squares before their square roots: their rounding); a turn must be scanned when its
+ * bound is below best - tau (the certification tolerance), and may hold a tie when its bound is
+ * below best * (1 + CD_CURVE_HELIX_SKIP_REL) + CD_CURVE_HELIX_SKIP_ABS * L (far above the
+ * rounding of both); cost limit: CD_CURVE_HELIX_MAX_SAMPLES samples over the turns that must be
+ * scanned (2^21: 4096 turns at 512 samples, about 0.6 s; a threaded coil costs about 0.15 ms per
+ * turn at 512 samples in a release build). */
 #define CD_CURVE_HELIX_MAX_TURNS 1e6
 #define CD_CURVE_HELIX_BOUND_ULPS 64.0
 #define CD_CURVE_HELIX_SKIP_REL 1e-9
 #define CD_CURVE_HELIX_SKIP_ABS 1e-12
 #define CD_CURVE_HELIX_MAX_SAMPLES 2097152.0
-/* Arcs: end - start may exceed 2 pi by CD_ARC_SPAN_ULPS * eps * max(2 pi, |start|, |end|)
- * (an end computed as start + 2 pi); the height over a disk's plane is constant (parallel
- * planes) when its amplitude is below CD_ARC_PARALLEL_ULPS * eps * r. */
-#define CD_ARC_SPAN_ULPS 8.0
+/* Helix pieces that the certification does not need but whose bound is within the skip margin
+ * above (a possible second closest pair, e.g. the next crossing of a disk) are scanned within
+ * this many samples per query (6 pieces at the default 512 samples). */
+#define CD_CURVE_HELIX_TIE_SAMPLES 3072.0
+/* Arcs: the height over a disk's plane is constant (parallel planes) when its amplitude is
+ * below CD_ARC_PARALLEL_ULPS * eps * r. Arc-arc whose circles' distance is constant (as the
+ * circle-circle analysis decides it, within its 32 eps L) is answered in closed form as coaxial
+ * when the normals' cross product is below CD_ARC_COAXIAL_ULPS * eps and the centres' offset
+ * from the axis below CD_ARC_COAXIAL_ULPS * eps * L (rounding of generated coaxial inputs, far
+ * below the other constant configuration, a circle through the other's centre, offset ~ r). */
+#define CD_ARC_COAXIAL_ULPS 1024.0
 #define CD_ARC_PARALLEL_ULPS 4.0
 /* Segment-arc: the interior minima lie within r / |M| of the foot of the perpendicular; the
  * window is widened by CD_SEG_ARC_WINDOW_REL of itself and CD_SEG_ARC_WINDOW_ULPS * eps *

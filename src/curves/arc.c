@@ -47,6 +47,20 @@ typedef struct arcx {
     double phi0; /* library-basis angle of U: library angle = arc angle + phi0 */
 } arcx;
 
+/* The span rule: end <= RU(start + 2 pi), RU rounding the exact sum up to a double (2 pi itself
+ * rounded up). Exact, with a slack below one ulp of the end whatever |start|: an end computed in
+ * double as start + 2 * M_PI is always accepted, a longer span never. The exact sum is s + err
+ * (two-sum, round to nearest). */
+static int arc_span_ok(double start, double end)
+{
+    const double two_pi_up = 0x1.921fb54442d19p+2; /* the double just above 2 pi */
+    double s = start + two_pi_up;
+    double bb = s - start;
+    double err = (start - (s - bb)) + (two_pi_up - bb);
+    double up = err > 0.0 ? nextafter(s, INFINITY) : s;
+    return end <= up;
+}
+
 static cdist_status check_arc(cdist_query *q, const cdist_arc *a, const char *what, arcx *x)
 {
     char buf[64];
@@ -59,9 +73,9 @@ static cdist_status check_arc(cdist_query *q, const cdist_arc *a, const char *wh
         return cdist__fail(q, CDIST_ERR_NOT_FINITE, "%s angles [%g, %g] are not finite", what, a->start, a->end);
     if (a->start > a->end)
         return cdist__fail(q, CDIST_ERR_BAD_INTERVAL, "%s start %.17g > end %.17g", what, a->start, a->end);
-    double slack = CD_ARC_SPAN_ULPS * DBL_EPSILON * fmax(TWO_PI, fmax(fabs(a->start), fabs(a->end)));
-    if (!(a->end - a->start <= TWO_PI + slack))
-        return cdist__fail(q, CDIST_ERR_BAD_INTERVAL, "%s spans %.17g > 2 pi", what, a->end - a->start);
+    if (!arc_span_ok(a->start, a->end))
+        return cdist__fail(q, CDIST_ERR_BAD_INTERVAL, "%s end %.17g exceeds start %.17g + 2 pi (rounded up)", what,
+                           a->end, a->start);
     x->start = a->start;
     x->end = a->end;
     x->phi0 = atan2(v_dot(x->U, x->c.v), v_dot(x->U, x->c.u));
@@ -168,6 +182,57 @@ static cdist_status polish_in_range(cdist__cs_scan *s, const arcx *X, double a)
     return cdist__cs_polish(s, m, X->start, X->end);
 }
 
+/* Lower bound of the distance from the points X(theta), theta in [a, b], to Y (circle or disk),
+ * from X's heights over Y's plane, h = hc + A cos + B sin, and squared distances from Y's axis,
+ * rho^2 = |Cp + cos Up + sin Vp|^2 (first and second harmonics of amplitudes m1, m2): each lies
+ * above its chord over [a, b] minus its second derivative's bound (hypot(A, B), m1 + 4 m2)
+ * times w^2 / 8, and rho^2 below its chord plus as much; widened by their rounding. Second
+ * order in the width with the geometry's own amplitudes: exact where the distance is constant
+ * (coaxial arcs, an arc parallel to a disk) and tight where it nearly is (nearly coaxial or
+ * concentric arcs), where the chord bounds of the certification would need tiny intervals. */
+typedef struct arc_lb_ctx {
+    vec3 Cp, Up, Vp;
+    double hc, A, B, dh2, drho2, sq, slack, r;
+    int disk;
+} arc_lb_ctx;
+
+static arc_lb_ctx arc_lb_init(const arcx *X, const cdist__circle *Y, int disk)
+{
+    arc_lb_ctx c;
+    vec3 n = Y->n, C = v_sub(X->c.c, Y->c), U = v_scale(X->c.r, X->U), V = v_scale(X->c.r, X->V);
+    c.hc = v_dot(n, C);
+    c.A = v_dot(n, U);
+    c.B = v_dot(n, V);
+    c.Cp = v_sub(C, v_scale(c.hc, n));
+    c.Up = v_sub(U, v_scale(c.A, n));
+    c.Vp = v_sub(V, v_scale(c.B, n));
+    c.dh2 = hypot(c.A, c.B);
+    double m1 = 2.0 * hypot(v_dot(c.Cp, c.Up), v_dot(c.Cp, c.Vp));
+    double m2 = hypot(0.5 * (v_sqr(c.Up) - v_sqr(c.Vp)), v_dot(c.Up, c.Vp));
+    c.drho2 = m1 + 4.0 * m2;
+    double mag = v_norm(C) + X->c.r;
+    c.sq = CD_CURVE_HELIX_BOUND_ULPS * DBL_EPSILON * mag * mag;
+    c.slack = CD_CURVE_HELIX_BOUND_ULPS * DBL_EPSILON * mag;
+    c.r = Y->r;
+    c.disk = disk;
+    return c;
+}
+
+static double arc_lb(const cdist__cs_scan *s, double a, double b)
+{
+    const arc_lb_ctx *c = s->lb_ctx;
+    double ca = cos(a), sa = sin(a), cb = cos(b), sb = sin(b), w2 = 0.125 * (b - a) * (b - a);
+    double ha = c->hc + c->A * ca + c->B * sa, hb = c->hc + c->A * cb + c->B * sb;
+    double hg = 0.0;
+    if ((ha > 0.0 && hb > 0.0) || (ha < 0.0 && hb < 0.0))
+        hg = fmax(0.0, fmin(fabs(ha), fabs(hb)) - c->dh2 * w2 - c->slack);
+    double ra = v_sqr(v_axpy(v_axpy(c->Cp, ca, c->Up), sa, c->Vp));
+    double rb = v_sqr(v_axpy(v_axpy(c->Cp, cb, c->Up), sb, c->Vp)), d2 = c->drho2 * w2 + c->sq;
+    double rg = fmax(0.0, sqrt(fmax(0.0, fmin(ra, rb) - d2)) - c->r);
+    if (!c->disk) rg = fmax(rg, c->r - sqrt(fmax(ra, rb) + d2));
+    return sqrt(hg * hg + rg * rg);
+}
+
 /* Every minimum of theta -> dist^2(X(theta), circle or disk Y) over X's range, handed to the
  * scan's candidate callback (s->cand, or the default offer). Uses the circle-circle critical
  * angles when available, else samples. *exact says which.
@@ -201,6 +266,15 @@ static cdist_status arc_minima(cdist__cs_scan *s, const arcx *X, const cdist__ci
             hc = v_dot(Y->n, v_sub(X->c.c, Y->c));
             R = hypot(A, B);
         }
+        /* A constant function with a candidate callback (arc-arc): every interior pair is a
+         * global minimum of the two circles, and the set of X's angles whose closest point lies
+         * in Y's range is bounded by angles where X or Y is at an endpoint; so the endpoint
+         * candidates already hold its ends, and the caller decides the continuum (no scan). */
+        if (n == -1 && s->cand && !s->disk) {
+            if (n_const) *n_const = 1;
+            *exact = 1;
+            return CDIST_OK;
+        }
         /* n == 0 (unavailable) or -1 (constant: the sampled scan sees a flat function, offers
          * it everywhere and the ties mark the continuum); for the disk also parallel planes
          * (h constant). */
@@ -223,7 +297,19 @@ static cdist_status arc_minima(cdist__cs_scan *s, const arcx *X, const cdist__ci
     }
     s->k->flat_ties = 1;
     if (n_const) *n_const = !s->disk && n == -1;
-    return cdist__cs_scan_run(s, X->start, X->end, q->curve_samples);
+    /* Certified unless the distance is known constant (n == -1, circle) or the candidates go
+     * through a callback (whose collector holds another function's minimum). */
+    s->certify = !s->cand && (s->disk || n != -1);
+    s->speed_max = X->c.r;
+    s->accel_max = X->c.r;
+    s->accel_normal_max = X->c.r * v_norm(v_cross(Y->n, X->c.n));
+    s->accel_plane_max = X->c.r;
+    arc_lb_ctx lbc = arc_lb_init(X, Y, s->disk);
+    s->lb = arc_lb;
+    s->lb_ctx = &lbc;
+    st = cdist__cs_scan_run(s, X->start, X->end, q->curve_samples);
+    s->lb = NULL; /* lbc goes out of scope */
+    return st;
 }
 
 static double arc_scale(const arcx *a, const cdist__circle *c)
@@ -252,7 +338,7 @@ static cdist_status arc_target(cdist_query *q, const cdist_arc *a, const cdist_c
     if (A.c.r == 0.0) {
         cdist__cs_offer_point(&k, A.c.c, NAN, &C, disk, 0);
     } else {
-        cdist__cs_scan s = {q, arc_eval, &A, &C, disk, &k, NULL, NULL, 0, 0.0, 0.0};
+        cdist__cs_scan s = {.q = q, .ev = arc_eval, .ctx = &A, .c = &C, .disk = disk, .k = &k};
         /* Endpoints always; then the interior minima. */
         cdist__cs_offer_point(&k, arc_point(&A, A.start), A.start, &C, disk, 0);
         cdist__cs_offer_point(&k, arc_point(&A, A.end), A.end, &C, disk, 0);
@@ -283,6 +369,45 @@ cdist_status cdist_arc_disk(cdist_query *q, const cdist_arc *a, const cdist_circ
 
 /* ---- arc to arc ---- */
 
+/* Arcs on coaxial circles (parallel normals, centres on one axis, within CD_ARC_COAXIAL_ULPS):
+ * the distance between the circles is constant, every pair at one azimuth is closest. Offers
+ * the pair at the first azimuth the two ranges share (the distance in closed form when the
+ * circles are exactly coaxial, 0 for the same circle) and flags the continuum when they share
+ * an interval. Returns 0 when the circles are not coaxial. */
+static int coaxial_offer(cdist__cs_coll *k, const arcx *A, const arcx *B)
+{
+    vec3 n = A->c.n, d = v_sub(B->c.c, A->c.c);
+    double sn = v_norm(v_cross(n, B->c.n)), h = v_dot(n, d);
+    double e = v_norm(v_sub(d, v_scale(h, n)));
+    if (!(sn <= CD_ARC_COAXIAL_ULPS * DBL_EPSILON && e <= CD_ARC_COAXIAL_ULPS * DBL_EPSILON * k->b.scale)) return 0;
+    double sg = v_dot(n, B->c.n) > 0.0 ? 1.0 : -1.0;
+    /* B's angle phi is A's angle delta + sg phi. */
+    double delta = atan2(v_dot(A->V, B->U), v_dot(A->U, B->U));
+    double y0 = sg > 0 ? delta + B->start : delta - B->end, len = B->end - B->start;
+    double a = A->start + fmod(y0 - A->start, TWO_PI);
+    if (a < A->start) a += TWO_PI;
+    double th = NAN, shared = 0.0;
+    if (a <= A->end) {
+        th = a;
+        shared += fmin(a + len, A->end) - a;
+    }
+    if (a + len - TWO_PI >= A->start) {
+        th = A->start;
+        shared += fmin(a + len - TWO_PI, A->end) - A->start;
+    }
+    if (th != th) return 1; /* no shared azimuth: the endpoints hold the minimum */
+    double ct = cos(th), st = sin(th);
+    vec3 radial = v_axpy(v_scale(ct, A->U), st, A->V);
+    vec3 P = v_axpy(A->c.c, A->c.r, radial), Q = v_axpy(B->c.c, B->c.r, radial);
+    double phi = sg * (th - delta);
+    phi = B->start + fmod(phi - B->start, TWO_PI);
+    if (phi < B->start) phi += TWO_PI;
+    double dr = B->c.r - A->c.r;
+    double d2 = (sn == 0.0 && e == 0.0) ? h * h + dr * dr : v_sqr(v_sub(Q, P));
+    cdist__cs_coll_offer(k, d2, P, Q, th, fmin(phi, B->end), shared > 0.0);
+    return 1;
+}
+
 static cdist_status arc_arc(cdist_query *q, const cdist_arc *a0, const cdist_arc *a1, cdist_result *r)
 {
     cdist_status st;
@@ -311,12 +436,19 @@ static cdist_status arc_arc(cdist_query *q, const cdist_arc *a0, const cdist_arc
     }
     /* Interior pairs, from both sides. */
     if (A.c.r > 0.0 && B.c.r > 0.0) {
-        int exact;
+        int exact, const_a, const_b;
         cand_arc_ctx ca = {&B, 1}, cb = {&A, 0};
-        cdist__cs_scan s = {q, arc_eval, &A, &B.c, 0, &k, cand_arc, &ca, 0, 0.0, 0.0};
-        if ((st = arc_minima(&s, &A, &B.c, &exact, NULL))) return st;
-        cdist__cs_scan t = {q, arc_eval, &B, &A.c, 0, &k, cand_arc, &cb, 0, 0.0, 0.0};
-        if ((st = arc_minima(&t, &B, &A.c, &exact, NULL))) return st;
+        cdist__cs_scan s = {.q = q, .ev = arc_eval, .ctx = &A, .c = &B.c, .k = &k, .cand = cand_arc, .cand_ctx = &ca};
+        if ((st = arc_minima(&s, &A, &B.c, &exact, &const_a))) return st;
+        cdist__cs_scan t = {.q = q, .ev = arc_eval, .ctx = &B, .c = &A.c, .k = &k, .cand = cand_arc, .cand_ctx = &cb};
+        if ((st = arc_minima(&t, &B, &A.c, &exact, &const_b))) return st;
+        if ((const_a || const_b) && !coaxial_offer(&k, &A, &B)) {
+            /* constant but not coaxial (a circle through the other's centre, linked): sample */
+            k.flat_ties = 1;
+            if ((st = cdist__cs_scan_run(&s, A.start, A.end, q->curve_samples)) ||
+                (st = cdist__cs_scan_run(&t, B.start, B.end, q->curve_samples)))
+                return st;
+        }
     }
     cdist__cs_coll_result(&k, cdist__pow2(e), origin, r);
     return CDIST_OK;
@@ -378,7 +510,8 @@ static cdist_status segment_arc(cdist_query *q, const cdist_segment *sg, const c
         double lo = fmax(0.0, foot - half), hi = fmin(1.0, foot + half);
         if (lo <= hi) {
             cand_arc_ctx ca = {&A, 1};
-            cdist__cs_scan s = {q, seg_eval, &S, &A.c, 0, &k, cand_arc, &ca, 0, 0.0, fmax(v_norm(S.p0), v_norm(S1))};
+            cdist__cs_scan s = {.q = q, .ev = seg_eval, .ctx = &S, .c = &A.c, .k = &k, .cand = cand_arc,
+                                .cand_ctx = &ca, .frame_mag = fmax(v_norm(S.p0), v_norm(S1))};
             /* The local minima of the segment's distance to the full circle in the window, from
              * the lines family's robust (GSL-free) core on the line through the foot, each
              * polished on the true derivative and offered when its circle point is in range. */

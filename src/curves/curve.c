@@ -133,6 +133,16 @@ typedef struct sample {
     double speed; /* |P'| (1-norm) */
 } sample;
 
+/* In-plane coordinates of the sample's point relative to the centre (along the circle's u, v):
+ * the certification's chord bound (only there, not in every solver step). */
+static void in_plane(const cdist__cs_scan *s, const sample *x, double *px, double *py)
+{
+    const cdist__circle *c = s->c;
+    vec3 rel = v_sub(x->p, c->c);
+    *px = c->u.x * rel.x + c->u.y * rel.y + c->u.z * rel.z;
+    *py = c->v.x * rel.x + c->v.y * rel.y + c->v.z * rel.z;
+}
+
 static cdist_status eval(const cdist__cs_scan *s, double t, sample *o)
 {
     vec3 P, D;
@@ -278,10 +288,149 @@ static cdist_status axis_offer(const cdist__cs_scan *s, double a, double b)
     return offer_at(s, t);
 }
 
+/* ---- certification ----
+ * Every interval [a, b] of the samples is bounded below; an interval whose bound is below the
+ * answer minus tau (the certification tolerance) is split at its midpoint, and a midpoint
+ * below that level starts a descent (cdist__cs_polish) to its basin's minimum, offered. Bounds
+ * (d the distance to the target, f = d^2 sampled at a and b, w = b - a, S >= |P'|,
+ * K >= |P''|, Kn >= |n . P''| over the interval, mu the rounding of a sampled distance):
+ *  - Lipschitz: d is S-Lipschitz (the distance to a set is 1-Lipschitz in the point), so
+ *    d >= (d(a) + d(b) - S w) / 2;
+ *  - second order: f(t) = min over target points Y of |P(t) - Y|^2, and each of these has second
+ *    derivative 2 |P'|^2 + 2 (P - Y).P'' <= 2 S^2 + 2 |P - Y| K; where d(t) < best, the Y that
+ *    is closest at t is within best + S w of every P(s), so f(t) >= min(f(a), f(b)) - (S^2 +
+ *    (best + S w) K) w^2 / 4 (a function whose second derivative is at most M lies above its
+ *    chord minus M w^2 / 8): if that is at least (best - tau)^2, no t of [a, b] has
+ *    d(t) < best - tau;
+ *  - components: d^2 = h^2 + (rho - r)^2 (circle), h^2 + max(rho - r, 0)^2 (disk). Where h keeps
+ *    its sign, |h| >= min(|h(a)|, |h(b)|) - Kn w^2 / 8 (the chord argument on h, whose second
+ *    derivative is n . P'', |n . P''| <= Kn); the in-plane offset q(t) (|q| = rho) stays within
+ *    Kp w^2 / 8 of its chord (|q''| <= Kp), so rho lies between the chord's distance from the
+ *    centre minus that and max(rho(a), rho(b)) plus that (the norm is convex along the chord).
+ *    Second order in w whatever the distance (a near touch of the circle, a curve lying flat
+ *    over a disk, where the distance is constant, exactly);
+ *  - the curve's own bound s->lb (the helix's cylinder and slab bound).
+ * The answer is then within tau of the global minimum (plus the rounding of the final
+ * candidate). Intervals at the resolution of t are not split further. */
+typedef struct cert_node {
+    double a, b, da, db, ha, hb; /* da, db: the sampled distances at a and b */
+    double xa, ya, xb, yb; /* in-plane coordinates at a and b */
+} cert_node;
+
+static double cert_tol(const cdist__cs_scan *s) { return CD_CURVE_CERT_ULPS * DBL_EPSILON * s->k->b.scale; }
+
+/* Rounding of a sampled distance (positions, h, rho and F in plain arithmetic). */
+static double cert_mu(const cdist__cs_scan *s)
+{
+    return CD_CURVE_CERT_EVAL_ULPS * DBL_EPSILON * (2.0 * s->k->b.scale + s->c->r + s->frame_mag);
+}
+
+/* The interval cannot hold a distance below lim (> 0). */
+static int cert_excluded(const cdist__cs_scan *s, const cert_node *nd, double best, double lim)
+{
+    double mu = cert_mu(s), w = nd->b - nd->a, S = s->speed_max, K = s->accel_max;
+    double da = nd->da - mu, db = nd->db - mu;
+    if (0.5 * (da + db - S * w) >= lim) return 1;
+    double dm = fmin(da, db);
+    if (dm > 0.0 && dm * dm - (S * S + (best + S * w) * K) * w * w * 0.25 >= lim * lim) return 1;
+    double hl = 0.0;
+    if ((nd->ha > 0.0 && nd->hb > 0.0) || (nd->ha < 0.0 && nd->hb < 0.0))
+        hl = fmax(0.0, fmin(fabs(nd->ha), fabs(nd->hb)) - mu - s->accel_normal_max * w * w * 0.125);
+    /* (plain squares: the scan's frame is scaled to L ~ 1) */
+    double dx = nd->xb - nd->xa, dy = nd->yb - nd->ya, ll = dx * dx + dy * dy;
+    double u = ll > 0.0 ? -(nd->xa * dx + nd->ya * dy) / ll : 0.0;
+    u = u < 0.0 ? 0.0 : (u > 1.0 ? 1.0 : u);
+    double sag = s->accel_plane_max * w * w * 0.125 + 2.0 * mu, r = s->c->r;
+    double cx = nd->xa + u * dx, cy = nd->ya + u * dy;
+    double rl = fmax(0.0, sqrt(cx * cx + cy * cy) - sag - r);
+    if (!s->disk) {
+        double ra2 = nd->xa * nd->xa + nd->ya * nd->ya, rb2 = nd->xb * nd->xb + nd->yb * nd->yb;
+        rl = fmax(rl, r - sqrt(fmax(ra2, rb2)) - sag);
+    }
+    if (hl * hl + rl * rl >= lim * lim) return 1;
+    return s->lb && s->lb(s, nd->a, nd->b) >= lim;
+}
+
+static cdist_status certify(cdist__cs_scan *s, cert_node nd)
+{
+    cert_node stack[CD_CURVE_CERT_DEPTH];
+    int top = 0;
+    cdist_status st;
+    for (;;) {
+        double best = s->k->b.n ? sqrt(s->k->b.c[0].d2) : INFINITY;
+        double lim = best - cert_tol(s);
+        double m = 0.5 * (nd.a + nd.b);
+        if (lim > 0.0 && !cert_excluded(s, &nd, best, lim) && m > nd.a && m < nd.b) {
+            if (++s->cert_nodes > CD_CURVE_CERT_MAX_NODES)
+                return cdist__fail(s->q, CDIST_ERR_COST_LIMIT,
+                                   "curve: certifying the minimum needs more than %ld bound evaluations",
+                                   (long)CD_CURVE_CERT_MAX_NODES);
+            sample x;
+            if ((st = eval(s, m, &x))) return st;
+            if (x.f < lim * lim) {
+                /* A point below the answer: descend to its basin's minimum. */
+                double span = s->span;
+                st = cdist__cs_polish(s, m, nd.a, nd.b);
+                s->span = span;
+                if (st) return st;
+            }
+            double dm = sqrt(x.f), px, py;
+            in_plane(s, &x, &px, &py);
+            cert_node right = {m, nd.b, dm, nd.db, x.h, nd.hb, px, py, nd.xb, nd.yb};
+            nd.b = m;
+            nd.db = dm;
+            nd.hb = x.h;
+            nd.xb = px;
+            nd.yb = py;
+            if (top < CD_CURVE_CERT_DEPTH) {
+                stack[top++] = right;
+            } else if ((st = certify(s, right))) {
+                return st;
+            }
+            continue;
+        }
+        if (top == 0) return CDIST_OK;
+        nd = stack[--top];
+    }
+}
+
 static double t_at(double t0, double t1, int i, int n)
 {
     if (i == n) return t1;
     return t0 + (t1 - t0) * ((double)i / n);
+}
+
+/* Certify the sample intervals i..j-1 of a scan (arr: d^2, h, in-plane x and y per sample): where
+ * the curve has its own bound, blocks of intervals are tried whole first (halving down to
+ * CD_CURVE_CERT_BLOCK intervals), so that a bound that is tight over long ranges (coaxial and
+ * concentric configurations) settles them in a few calls. */
+static cdist_status certify_samples(cdist__cs_scan *s, double t0, double t1, int n, int i, int j, const double *arr[4])
+{
+    if (j - i > 1 && s->lb && s->k->b.n && s->lb(s, t_at(t0, t1, i, n), t_at(t0, t1, j, n)) >=
+                                               sqrt(s->k->b.c[0].d2) - cert_tol(s))
+        return CDIST_OK;
+    if (j - i > CD_CURVE_CERT_BLOCK && s->lb) {
+        int k = i + (j - i) / 2;
+        cdist_status st = certify_samples(s, t0, t1, n, i, k, arr);
+        return st ? st : certify_samples(s, t0, t1, n, k, j, arr);
+    }
+    const double *F = arr[0], *H = arr[1], *X = arr[2], *Y = arr[3];
+    /* Lipschitz screen first (the bound of cert_excluded, for the longest interval of the scan:
+     * t_at's widths differ by rounding only, covered by the 1 + 2^-40 factor), on the squares
+     * where both ends clear half of it. */
+    double best = s->k->b.n ? sqrt(s->k->b.c[0].d2) : INFINITY;
+    double screen = 2.0 * (best - cert_tol(s) + cert_mu(s)) + s->speed_max * ((t1 - t0) / n) * (1.0 + 0x1p-40);
+    double half2 = screen > 0.0 ? 0.25 * screen * screen * (1.0 + 0x1p-40) : 0.0;
+    for (int m = i; m < j; m++) {
+        if (fmin(F[m], F[m + 1]) >= half2) continue;
+        double da = sqrt(F[m]), db = sqrt(F[m + 1]);
+        if (da + db >= screen) continue;
+        cert_node nd = {t_at(t0, t1, m, n), t_at(t0, t1, m + 1, n), da, db, H[m], H[m + 1],
+                        X[m],           Y[m],                   X[m + 1], Y[m + 1]};
+        cdist_status st = certify(s, nd);
+        if (st) return st;
+    }
+    return CDIST_OK;
 }
 
 cdist_status cdist__cs_scan_run(cdist__cs_scan *s, double t0, double t1, int n)
@@ -290,7 +439,8 @@ cdist_status cdist__cs_scan_run(cdist__cs_scan *s, double t0, double t1, int n)
     cdist_status st;
     if (!(t0 < t1)) return offer_at(s, t0);
     if (n > q->curve_samples) n = q->curve_samples;
-    double *G = q->scratch, *Fv = G + (n + 1), *R = Fv + (n + 1), *T = R + (n + 1);
+    double *G = q->scratch, *Fv = G + (n + 1), *R = Fv + (n + 1), *T = R + (n + 1), *H = T + (n + 1);
+    double *X = H + (n + 1), *Y = X + (n + 1);
     s->span = t1 - t0;
     double ext = 0.0, h_prev = 0.0;
     for (int i = 0; i <= n; i++) {
@@ -308,6 +458,8 @@ cdist_status cdist__cs_scan_run(cdist__cs_scan *s, double t0, double t1, int n)
         Fv[i] = x.f;
         R[i] = x.rho - s->c->r;
         T[i] = x.tol;
+        H[i] = x.h;
+        if (s->certify) in_plane(s, &x, &X[i], &Y[i]);
         ext = fmax(ext, v_dist(x.p, s->c->c));
     }
     if (s->update_scale) s->k->b.scale = fmax(s->k->b.scale, ext);
@@ -358,7 +510,9 @@ cdist_status cdist__cs_scan_run(cdist__cs_scan *s, double t0, double t1, int n)
         /* Safety net: a sampled local minimum of F. */
         if (i > 0 && i < n && Fv[i] <= Fv[i - 1] && Fv[i] <= Fv[i + 1] && (st = offer_at(s, t))) return st;
     }
-    return CDIST_OK;
+    if (!s->certify || !s->k->b.n) return CDIST_OK; /* (both ends were offered: n >= 1) */
+    const double *arr[4] = {Fv, H, X, Y};
+    return certify_samples(s, t0, t1, n, 0, n, arr);
 }
 
 cdist_status cdist__cs_flat_check(cdist__cs_scan *s, double t0, double t1, double delta)
@@ -455,14 +609,23 @@ cdist_status cdist__cs_check_interval(cdist_query *q, double t0, double t1, cons
 }
 
 /* Run a curve (evaluated in the frame whose origin is `origin`) against circle or disk cc
- * (its centre already relative to that frame) and write the result. */
+ * (its centre already relative to that frame) and write the result. bounds: |P'|, |P''|,
+ * |n . P''| and |n x P''| over [t0, t1] (certified search), or NULL (sampling only). */
 static cdist_status run_curve(cdist_query *q, cdist__cs_eval_fn ev, const void *ctx, double t0, double t1,
                               const cdist__circle *cc, int disk, vec3 origin, double scale, double frame_mag,
-                              double up, cdist_result *r)
+                              double up, const double *bounds, cdist_result *r)
 {
     cdist__cs_coll k;
     cdist__cs_coll_init(&k, scale);
-    cdist__cs_scan s = {q, ev, ctx, cc, disk, &k, NULL, NULL, 1, 0.0, frame_mag};
+    cdist__cs_scan s = {.q = q, .ev = ev, .ctx = ctx, .c = cc, .disk = disk, .k = &k, .update_scale = 1,
+                        .frame_mag = frame_mag};
+    if (bounds) {
+        s.certify = 1;
+        s.speed_max = bounds[0];
+        s.accel_max = bounds[1];
+        s.accel_normal_max = bounds[2];
+        s.accel_plane_max = bounds[3];
+    }
     cdist_status st = cdist__cs_scan_run(&s, t0, t1, q->curve_samples);
     if (!st) st = cdist__cs_flat_check(&s, t0, t1, (t1 - t0) / q->curve_samples);
     if (st) return st;
@@ -495,7 +658,8 @@ static cdist_status curve_query(cdist_query *q, cdist_curve_fn f, void *user, do
     u.down = cdist__pow2(-e);
     cc.r *= u.down;
     /* The callback's positions are absolute: their rounding is relative to |origin| too. */
-    return run_curve(q, user_eval, &u, t0, t1, &cc, disk, origin, cc.r, v_maxabs(origin) * u.down, cdist__pow2(e), r);
+    return run_curve(q, user_eval, &u, t0, t1, &cc, disk, origin, cc.r, v_maxabs(origin) * u.down, cdist__pow2(e), NULL,
+                     r);
 }
 
 cdist_status cdist_curve_circle(cdist_query *q, cdist_curve_fn f, void *user, double t0, double t1,
@@ -560,29 +724,49 @@ typedef struct helix_bound {
     double rgap;     /* distance from the helix radius to the target's radial range */
 } helix_bound;
 
-static helix_bound helix_bound_init(const helix_x *hx, const cdist__circle *c, int disk)
+/* Axial and radial ranges of a circle (or, filled, a disk) relative to an axis: for the circle
+ * C + R (cos f u + sin f v) (C relative to a point of the axis, unit direction n), every point's
+ * coordinate along n lies in [zlo, zhi] and its distance from the axis in [rlo, rhi], rounding
+ * included. */
+typedef struct circle_ranges {
+    double zlo, zhi, rlo, rhi;
+} circle_ranges;
+
+static circle_ranges circle_axis_ranges(vec3 C, vec3 n, vec3 u, vec3 v, double R, int filled)
 {
-    helix_bound hb;
-    vec3 n = hx->n;
-    double R = c->r;
-    double zc = -v_dot(hx->c, n), za = hypot(v_dot(c->u, n), v_dot(c->v, n));
-    hb.zlo = zc - R * za;
-    hb.zhi = zc + R * za;
-    /* The target's offset from the axis: Y_perp = C_p + R (cos f u_p + sin f v_p), whose square
-     * is a0 + a1 cos f + b1 sin f + a2 cos 2f + b2 sin 2f. */
-    vec3 Cp = v_sub(v_scale(-1.0, hx->c), v_scale(-v_dot(hx->c, n), n));
-    vec3 up = v_sub(c->u, v_scale(v_dot(c->u, n), n)), vp = v_sub(c->v, v_scale(v_dot(c->v, n), n));
+    circle_ranges g;
+    double zc = v_dot(C, n), za = hypot(v_dot(u, n), v_dot(v, n));
+    /* The offset from the axis: Y_perp = C_p + R (cos f u_p + sin f v_p), whose square is
+     * a0 + a1 cos f + b1 sin f + a2 cos 2f + b2 sin 2f. */
+    vec3 Cp = v_sub(C, v_scale(zc, n));
+    vec3 up = v_sub(u, v_scale(v_dot(u, n), n)), vp = v_sub(v, v_scale(v_dot(v, n), n));
     double a0 = v_sqr(Cp) + 0.5 * R * R * (v_sqr(up) + v_sqr(vp));
     double m1 = 2.0 * R * hypot(v_dot(Cp, up), v_dot(Cp, vp));
     double m2 = R * R * hypot(0.5 * (v_sqr(up) - v_sqr(vp)), v_dot(up, vp));
-    double rhi = sqrt(fmax(0.0, a0 + m1 + m2)), rlo = sqrt(fmax(0.0, a0 - m1 - m2));
-    if (disk) rlo = fmax(0.0, v_norm(Cp) - R); /* the filled ellipse around C_p */
-    /* Rounding: the ranges are widened by a few ulps of the problem's magnitude. */
-    double slack = CD_CURVE_HELIX_BOUND_ULPS * DBL_EPSILON * (R + v_norm(hx->c) + hx->r);
-    hb.zlo -= slack;
-    hb.zhi += slack;
-    rlo = fmax(0.0, rlo - slack);
-    rhi += slack;
+    /* Rounding: the squares' range is widened by a few ulps of their magnitude (before the
+     * square roots, which would amplify it near 0), the lengths by a few ulps of the problem's. */
+    double mag = v_norm(C) + R;
+    double sq = CD_CURVE_HELIX_BOUND_ULPS * DBL_EPSILON * mag * mag;
+    double slack = CD_CURVE_HELIX_BOUND_ULPS * DBL_EPSILON * mag;
+    g.rhi = sqrt(fmax(0.0, a0 + m1 + m2 + sq)) + slack;
+    g.rlo = fmax(0.0, sqrt(fmax(0.0, a0 - m1 - m2 - sq)) - slack);
+    if (filled) g.rlo = fmax(0.0, v_norm(Cp) - R - slack); /* the filled ellipse around C_p */
+    g.zlo = zc - R * za - slack;
+    g.zhi = zc + R * za + slack;
+    return g;
+}
+
+/* zext: the helix's largest |axial coordinate| (rise times the largest |t|), whose rounding the
+ * pieces' axial ranges carry. */
+static helix_bound helix_bound_init(const helix_x *hx, const cdist__circle *c, int disk, double zext)
+{
+    helix_bound hb;
+    /* The helix axis through the helix centre; the target relative to it. */
+    circle_ranges g = circle_axis_ranges(v_scale(-1.0, hx->c), hx->n, c->u, c->v, c->r, disk);
+    double slack = CD_CURVE_HELIX_BOUND_ULPS * DBL_EPSILON * (hx->r + zext);
+    hb.zlo = g.zlo - slack;
+    hb.zhi = g.zhi + slack;
+    double rlo = fmax(0.0, g.rlo - slack), rhi = g.rhi + slack;
     hb.rgap = hx->r < rlo ? rlo - hx->r : (hx->r > rhi ? hx->r - rhi : 0.0);
     return hb;
 }
@@ -593,6 +777,17 @@ static double helix_piece_lb(const helix_bound *hb, const helix_x *hx, double a,
     double za = fmin(z0, z1), zb = fmax(z0, z1);
     double gap = za > hb->zhi ? za - hb->zhi : (zb < hb->zlo ? hb->zlo - zb : 0.0);
     return hypot(gap, hb->rgap);
+}
+
+typedef struct helix_lb_ctx {
+    helix_bound hb;
+    const helix_x *hx;
+} helix_lb_ctx;
+
+static double helix_lb(const cdist__cs_scan *s, double a, double b)
+{
+    const helix_lb_ctx *c = s->lb_ctx;
+    return helix_piece_lb(&c->hb, c->hx, a, b);
 }
 
 /* Cost limit of one helix query (CD_CURVE_HELIX_MAX_SAMPLES samples over the pieces that cannot
@@ -606,12 +801,12 @@ static cdist_status helix_cost_check(const cdist__cs_scan *s, const helix_x *hx,
                                      double plen, long pieces, long mid)
 {
     double best = s->k->b.n ? sqrt(s->k->b.c[0].d2) : INFINITY;
-    double margin = best * (1.0 + CD_CURVE_HELIX_SKIP_REL) + CD_CURVE_HELIX_SKIP_ABS * s->k->b.scale;
+    double margin = best - cert_tol(s);
     long limit = (long)(CD_CURVE_HELIX_MAX_SAMPLES / s->q->curve_samples), count = 1;
     for (long i = mid - 1; i >= 0 && count <= limit; i--, count++)
-        if (helix_piece_lb(hb, hx, t0 + (double)i * plen, t0 + (double)(i + 1) * plen) > margin) break;
+        if (helix_piece_lb(hb, hx, t0 + (double)i * plen, t0 + (double)(i + 1) * plen) >= margin) break;
     for (long i = mid + 1; i < pieces && count <= limit; i++, count++)
-        if (helix_piece_lb(hb, hx, t0 + (double)i * plen, t0 + (double)(i + 1) * plen) > margin) break;
+        if (helix_piece_lb(hb, hx, t0 + (double)i * plen, t0 + (double)(i + 1) * plen) >= margin) break;
     if (count > limit)
         return cdist__fail(s->q, CDIST_ERR_COST_LIMIT,
                        "helix: more than %ld turns are about equally close to the target (cost limit: %.0f "
@@ -623,11 +818,12 @@ static cdist_status helix_cost_check(const cdist__cs_scan *s, const helix_x *hx,
 /* Scan the pieces [t0 + i plen, t0 + (i+1) plen] (the last ending at t1) in order of increasing
  * lower bound, from the piece nearest the target axially outwards (the bound is unimodal in i:
  * the axial gap shrinks, stays 0 while the pieces overlap the target's range, then grows),
- * stopping on each side at the first piece whose bound exceeds the best distance so far. */
+ * stopping on each side at the first piece that neither the certification nor a possible tie
+ * needs. */
 static cdist_status helix_pieces(cdist__cs_scan *s, const helix_x *hx, double t0, double plen, long pieces, double t1)
 {
     cdist_query *q = s->q;
-    helix_bound hb = helix_bound_init(hx, s->c, s->disk);
+    const helix_bound hb = ((const helix_lb_ctx *)s->lb_ctx)->hb;
     /* The piece whose axis range is nearest the middle of the target's axial range. */
     long mid = 0;
     if (hx->rise != 0.0) {
@@ -637,6 +833,7 @@ static cdist_status helix_pieces(cdist__cs_scan *s, const helix_x *hx, double t0
     }
     long lo = mid, hi = mid; /* next candidates: lo - 1 and hi + 1 (mid first) */
     int first = 1, done_lo = 0, done_hi = 0;
+    long ties = 0; /* pieces scanned only for a possible tie */
     cdist_status st;
     while (first || !done_lo || !done_hi) {
         long i;
@@ -651,13 +848,18 @@ static cdist_status helix_pieces(cdist__cs_scan *s, const helix_x *hx, double t0
                 bhi = helix_piece_lb(&hb, hx, t0 + (double)(hi + 1) * plen, t0 + (double)(hi + 2) * plen);
             else done_hi = 1;
             double best = s->k->b.n ? sqrt(s->k->b.c[0].d2) : INFINITY;
-            /* The bound must beat the best clearly (rounding of both): else the piece is scanned. */
-            double margin = best * (1.0 + CD_CURVE_HELIX_SKIP_REL) + CD_CURVE_HELIX_SKIP_ABS * s->k->b.scale;
-            if (blo > margin) done_lo = 1;
-            if (bhi > margin) done_hi = 1;
+            /* A piece must be scanned when its bound is below the best minus the certification
+             * tolerance; one whose bound is within the tie margin of the best may hold a second
+             * closest pair: these are scanned too, within CD_CURVE_HELIX_TIE_SAMPLES samples. */
+            double need = best - cert_tol(s);
+            double tie = best * (1.0 + CD_CURVE_HELIX_SKIP_REL) + CD_CURVE_HELIX_SKIP_ABS * s->k->b.scale;
+            int tie_ok = (double)(ties + 1) * q->curve_samples <= CD_CURVE_HELIX_TIE_SAMPLES;
+            if (!(blo < need || (tie_ok && blo <= tie))) done_lo = 1;
+            if (!(bhi < need || (tie_ok && bhi <= tie))) done_hi = 1;
             if (done_lo && done_hi) break;
             if (!done_lo && (done_hi || blo <= bhi)) i = --lo;
             else i = ++hi;
+            if ((i == lo ? blo : bhi) >= need) ties++;
         }
         double a = t0 + (double)i * plen, b = (i == pieces - 1) ? t1 : t0 + (double)(i + 1) * plen;
         if ((st = cdist__cs_scan_run(s, a, b, q->curve_samples))) return st;
@@ -710,7 +912,15 @@ static cdist_status helix_query(cdist_query *q, const cdist_helix *h, const cdis
     double plen = len / (double)pieces;
     cdist__cs_coll k;
     cdist__cs_coll_init(&k, fmax(cc.r, v_norm(hx.c)));
-    cdist__cs_scan s = {q, helix_eval, &hx, &cc, disk, &k, NULL, NULL, 1, 0.0, 0.0};
+    cdist__cs_scan s = {.q = q, .ev = helix_eval, .ctx = &hx, .c = &cc, .disk = disk, .k = &k, .update_scale = 1};
+    helix_lb_ctx lbc = {helix_bound_init(&hx, &cc, disk, fabs(hx.rise) * fmax(fabs(t0), fabs(t1))), &hx};
+    s.certify = 1;
+    s.speed_max = hypot(hx.r, hx.rise);
+    s.accel_max = hx.r;
+    s.accel_normal_max = hx.r * v_norm(v_cross(cc.n, hx.n));
+    s.accel_plane_max = hx.r;
+    s.lb = helix_lb;
+    s.lb_ctx = &lbc;
     if (pieces == 1) {
         if ((st = cdist__cs_scan_run(&s, t0, t1, q->curve_samples))) return st;
     } else if ((st = helix_pieces(&s, &hx, t0, plen, pieces, t1))) {
@@ -776,7 +986,17 @@ static cdist_status bezier_query(cdist_query *q, const cdist_bezier3 *bz, const 
     for (int i = 0; i < 4; i++) bx.p[i] = v_scale(down, bx.p[i]);
     cc.r *= down;
     cc.c = v3(0, 0, 0);
-    return run_curve(q, bez_eval, &bx, 0.0, 1.0, &cc, disk, origin, scale * down, 0.0, cdist__pow2(e), r);
+    /* Bounds of P' and P'' from their control points (the hodographs' convex hulls). */
+    double S = 0.0, K = 0.0, Kn = 0.0, Kp = 0.0;
+    for (int i = 0; i < 3; i++) S = fmax(S, 3.0 * v_norm(v_sub(bx.p[i + 1], bx.p[i])));
+    for (int i = 0; i < 2; i++) {
+        vec3 a2 = v_scale(6.0, v_add(v_sub(bx.p[i + 2], v_scale(2.0, bx.p[i + 1])), bx.p[i]));
+        K = fmax(K, v_norm(a2));
+        Kn = fmax(Kn, fabs(v_dot(cc.n, a2)));
+        Kp = fmax(Kp, v_norm(v_cross(cc.n, a2)));
+    }
+    double bounds[4] = {S, K, Kn, Kp};
+    return run_curve(q, bez_eval, &bx, 0.0, 1.0, &cc, disk, origin, scale * down, 0.0, cdist__pow2(e), bounds, r);
 }
 
 cdist_status cdist_bezier3_circle(cdist_query *q, const cdist_bezier3 *b, const cdist_circle *c, cdist_result *r)

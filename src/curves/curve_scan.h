@@ -39,6 +39,9 @@ typedef cdist_status (*cdist__cs_eval_fn)(cdist_query *q, const void *ctx, doubl
 typedef struct cdist__cs_scan cdist__cs_scan;
 /* Receives each candidate parameter t (and its point p) instead of the default point offer. */
 typedef void (*cdist__cs_cand_fn)(const cdist__cs_scan *s, double t, vec3 p);
+/* A curve-specific rigorous lower bound of the distance from the curve's points over [a, b] to
+ * the target (rounding included), or 0. */
+typedef double (*cdist__cs_lb_fn)(const cdist__cs_scan *s, double a, double b);
 
 struct cdist__cs_scan {
     cdist_query *q;
@@ -52,10 +55,20 @@ struct cdist__cs_scan {
     int update_scale;   /* raise k->b.scale to the sampled extent */
     double span;        /* set by cdist__cs_scan_run */
     double frame_mag;   /* magnitude of the frame's coordinates (rounding level of positions) */
+    /* Certification (see cdist__cs_scan_run): bounds over the whole parameter range of |P'|,
+     * |P''| and |n . P''| (n the target's normal), in the scan's frame. certify = 0 (callback
+     * curves, candidate callbacks, a function known constant): no certification. */
+    int certify;
+    double speed_max, accel_max, accel_normal_max, accel_plane_max; /* |n x P''| last */
+    cdist__cs_lb_fn lb; /* optional extra bound (NULL) */
+    const void *lb_ctx;
+    long cert_nodes;    /* nodes of the certification spent so far (the cost limit) */
 };
 
 /* Bound, refine and offer every minimum of the distance over [t0, t1] with n samples
- * (at most the handle's curve sample count). */
+ * (at most the handle's curve sample count); with s->certify, then certify the answer
+ * (every part of [t0, t1] bounded below by the answer minus the certification tolerance, or
+ * searched). CDIST_ERR_COST_LIMIT when the certification exceeds its node budget. */
 cdist_status cdist__cs_scan_run(cdist__cs_scan *s, double t0, double t1, int n);
 /* Polish a candidate minimum near t (from another method) within [lo, hi]: walk to the nearest
  * sign change of g in the direction of descent, refine, and offer the result. */

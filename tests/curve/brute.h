@@ -196,4 +196,25 @@ static inline ld bf_f_helix(const void *p, ld t)
     return h->disk ? bf_point_disk(pt, &h->k) : bf_point_circle(pt, &h->k);
 }
 
+/* A cubic Bezier curve against a circle or disk, in long double (the function bf_min1d minimises). */
+typedef struct bf_bez {
+    lv p[4];
+    bf_circle k;
+    int disk;
+} bf_bez;
+
+static inline lv bf_bez_point(const bf_bez *b, ld t)
+{
+    ld m = 1 - t;
+    return lv_add(lv_add(lv_scale(m * m * m, b->p[0]), lv_scale(3 * m * m * t, b->p[1])),
+                  lv_add(lv_scale(3 * m * t * t, b->p[2]), lv_scale(t * t * t, b->p[3])));
+}
+
+static inline ld bf_f_bez(const void *p, ld t)
+{
+    const bf_bez *b = p;
+    lv pt = bf_bez_point(b, t);
+    return b->disk ? bf_point_disk(pt, &b->k) : bf_point_circle(pt, &b->k);
+}
+
 #endif

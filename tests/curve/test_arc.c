@@ -3,6 +3,7 @@
  * of brute.h: random configurations, constructed degenerate ones (closest point at an endpoint,
  * the other circle's closest pair cut out of the arc, coplanar, concentric, coaxial, full and
  * zero-length arcs), symmetry, params and pairs, and bad input. */
+#include <fenv.h>
 #include <float.h>
 #include <stdlib.h>
 #include <string.h>
@@ -433,6 +434,89 @@ static void scale_invariance(void)
     }
 }
 
+/* Arcs on coaxial circles: the distance between the circles is constant, so where the ranges
+ * share an azimuth the answer is that constant (closed form: 0 on the same circle, |r1 - r0|
+ * for concentric coplanar circles, hypot(h, r1 - r0) at axial offset h), flagged as a
+ * continuum when they share an interval; else the nearest ends (long double reference). The
+ * sampled scan answered these with rounding noise (3e-20 to 3e-16 on the same circle). */
+static void coaxial_arcs(void)
+{
+    for (int i = 0; i < 400; i++) {
+        cdist_vec3 n = rand_unit(), z = rand_unit(), c = tv(10 * srand1(), 10 * srand1(), 10 * srand1());
+        double r0 = 0.1 + 2 * urand(), h = 0.0, r1 = r0;
+        if (i % 3 == 1) r1 = 0.1 + 2 * urand();
+        if (i % 3 == 2) h = srand1(), r1 = 0.1 + 2 * urand();
+        cdist_vec3 c1 = tv(c.x + h * n.x, c.y + h * n.y, c.z + h * n.z);
+        double sg = i % 2 ? -1.0 : 1.0;
+        cdist_vec3 z1 = i % 4 < 2 ? z : rand_unit();
+        double s0 = 4 * srand1(), s1 = 4 * srand1();
+        cdist_arc a = {{c, n, r0}, z, s0, s0 + 2 * M_PI * urand()};
+        cdist_arc b = {{c1, tv(sg * n.x, sg * n.y, sg * n.z), r1}, z1, s1, s1 + 2 * M_PI * urand()};
+        if (i % 5 == 0) b.end = b.start;
+        bf_arc A = bf_arc_of(&a), B = bf_arc_of(&b);
+        /* shared azimuth: B's point at angle phi is at A's angle of the same direction */
+        int shared = 0, interval = 0;
+        ld best = INFINITY;
+        for (int k = 0; k <= 4000; k++) {
+            ld phi = B.a0 + (B.a1 - B.a0) * k / 4000;
+            lv d = lv_sub(bf_arc_point(&B, phi), B.c.c);
+            lv in = lv_sub(d, lv_scale(lv_dot(d, A.c.n), A.c.n));
+            ld ang = atan2l(lv_dot(A.v, in), lv_dot(A.u, in));
+            ld kk = fmodl(ang - A.a0, 2 * 3.14159265358979323846264338327950288L);
+            if (kk < 0) kk += 2 * 3.14159265358979323846264338327950288L;
+            if (A.a0 + kk <= A.a1 + 1e-12L) shared++;
+        }
+        interval = shared > 2 && b.end > b.start;
+        ld cst = sqrtl((ld)h * h + ((ld)r1 - r0) * ((ld)r1 - r0));
+        for (int e = 0; e < 2; e++) {
+            best = fminl(best, bf_point_arc(bf_arc_point(&A, e ? A.a1 : A.a0), &B));
+            best = fminl(best, bf_point_arc(bf_arc_point(&B, e ? B.a1 : B.a0), &A));
+        }
+        if (shared) best = fminl(best, cst);
+        cdist_result r;
+        CHECK(cdist_arc_arc(q, &a, &b, &r) == CDIST_OK, "coaxial %d: %s", i, cdist_query_last_error(q));
+        double L = fmax(fmax(r0, r1), fmax(fabs(h), 1.0));
+        CHECK(fabsl((ld)r.distance - best) <= 1e-13 * L, "coaxial %d: %.17g vs %.20Lg", i, r.distance, best);
+        if (shared && i % 3 == 0 && sg > 0 && i % 4 < 2)
+            CHECK(r.distance == 0.0, "same circle %d: distance %.3g, not exactly 0", i, r.distance);
+        if (interval && r.distance <= (double)cst + 1e-13 * L)
+            CHECK(r.equidistant, "coaxial %d: shared interval not flagged as a continuum", i);
+    }
+}
+
+/* The span rule end <= RU(start + RU(2 pi)), with the upper bound computed here under the
+ * upward rounding mode: every end up to it is accepted (in particular start + 2 * M_PI in
+ * double), the next double is refused, at any |start|. */
+static void span_rule(void)
+{
+    cdist_result r;
+    cdist_circle c = {tv(3, 0, 0), tv(0, 0, 1), 1};
+    const double two_pi_up = nextafter(2 * M_PI, INFINITY);
+    double starts[] = {0.0, -M_PI, 1.0, 100.5, -3e3, 1e6 + 0.3, -7.7e12, 1e17, -1e17, 0x1p60};
+    srand(77);
+    for (int i = 0; i < 2000; i++) {
+        double st = i < (int)(sizeof starts / sizeof starts[0])
+                        ? starts[i]
+                        : ldexp((double)rand() / RAND_MAX - 0.5, rand() % 130 - 20);
+        volatile double sum = 0;
+        fesetround(FE_UPWARD);
+        sum = st + two_pi_up;
+        fesetround(FE_TONEAREST);
+        double up = sum;
+        cdist_arc a = {{tv(0, 0, 0), tv(0, 0, 1), 1}, tv(1, 0, 0), st, st + 2 * M_PI};
+        CHECK(cdist_arc_circle(q, &a, &c, &r) == CDIST_OK, "start %.17g, end = start + 2 pi in double accepted", st);
+        a.end = up;
+        CHECK(cdist_arc_circle(q, &a, &c, &r) == CDIST_OK, "start %.17g, end at the rounded-up bound accepted", st);
+        a.end = nextafter(up, INFINITY);
+        CHECK(cdist_arc_circle(q, &a, &c, &r) == CDIST_ERR_BAD_INTERVAL && r.num_pairs == 0,
+              "start %.17g, end one double past the bound refused", st);
+    }
+    /* The reported case: 64 past a start of 1e17 was answered as a full circle. */
+    cdist_arc big = {{tv(0, 0, 0), tv(0, 0, 1), 1}, tv(1, 0, 0), 1e17, 1e17 + 64};
+    CHECK(cdist_arc_circle(q, &big, &c, &r) == CDIST_ERR_BAD_INTERVAL, "start 1e17, end 1e17 + 64 refused");
+    CHECK(cdist_arc_arc(q, &big, &big, &r) == CDIST_ERR_BAD_INTERVAL, "arc-arc: start 1e17, end 1e17 + 64 refused");
+}
+
 static void bad_input(void)
 {
     cdist_result r;
@@ -498,6 +582,8 @@ int main(int argc, char **argv)
     exact_cases();
     scale_invariance();
     bad_input();
+    span_rule();
+    coaxial_arcs();
     for (int k = 0; k < 4; k++) printf("%s: max error %.3g of scale (case %d)\n", kind_name[k], worst_err[k], worst_id[k]);
     cdist_query_free(q);
     return check_summary("arc");

@@ -290,28 +290,13 @@ static void helix_case(long id, const cdist_helix *h, const cdist_circle *c, int
     }
 }
 
-typedef struct bf_bez {
-    lv p[4];
-    bf_circle k;
-    int disk;
-} bf_bez;
-
-static ld f_bez(const void *p, ld t)
-{
-    const bf_bez *b = p;
-    ld m = 1 - t;
-    lv pt = lv_add(lv_add(lv_scale(m * m * m, b->p[0]), lv_scale(3 * m * m * t, b->p[1])),
-                   lv_add(lv_scale(3 * m * t * t, b->p[2]), lv_scale(t * t * t, b->p[3])));
-    return b->disk ? bf_point_disk(pt, &b->k) : bf_point_circle(pt, &b->k);
-}
-
 static void bezier_case(long id, const cdist_bezier3 *bz, const cdist_circle *c, int disk)
 {
     bf_bez x;
     for (int i = 0; i < 4; i++) x.p[i] = lv_of(bz->p[i]);
     x.k = bf_circ(*c);
     x.disk = disk;
-    ld ref = bf_min1d(f_bez, &x, 0, 1, 16384);
+    ld ref = bf_min1d(bf_f_bez, &x, 0, 1, 16384);
     cdist_result r;
     cdist_status st = (disk ? cdist_bezier3_disk : cdist_bezier3_circle)(q, bz, c, &r);
     CHECK(st == CDIST_OK, "bezier %ld: %s", id, cdist_query_last_error(q));
@@ -324,7 +309,7 @@ static void bezier_case(long id, const cdist_bezier3 *bz, const cdist_circle *c,
     check_pairs(&r, c, disk, 1e-12 * L, "bezier", id);
     for (int k = 0; k < r.num_pairs; k++)
         CHECK(r.pairs[k].param[0] >= 0 && r.pairs[k].param[0] <= 1 &&
-                  (double)fabsl(f_bez(&(bf_bez){{x.p[0], x.p[1], x.p[2], x.p[3]}, bf_circ(*c), disk}, r.pairs[k].param[0]) -
+                  (double)fabsl(bf_f_bez(&(bf_bez){{x.p[0], x.p[1], x.p[2], x.p[3]}, bf_circ(*c), disk}, r.pairs[k].param[0]) -
                                 (ld)r.distance) <= 1e-12 * L,
               "bezier %ld: param does not give the distance", id);
 }
