@@ -46,8 +46,8 @@ The C library is found through $CIRCLEDIST_LIBRARY (a path), else the library in
 this package by meson, else the system loader (libcircledist.so.1).
 """
 from ._lib import CONTACT_DTYPE, GRAD_DTYPE, RESULT_DTYPE
-from ._objects import (Arc, Bezier3, Capsule, Circle, Disk, GeometricObject, Helix, Line, Point,
-                       Ray, RoundedDisk, Segment, Sphere, Torus)
+from ._objects import (Arc, Bezier3, Capsule, Circle, Disk, GeometricObject, Helix, Line, Many,
+                       One, Point, Ray, RoundedDisk, Segment, Sphere, Torus)
 from ._query import (FUNCTIONS as _FUNCTIONS, BatchContact, BatchGrad, BatchGradObject,
                      BatchResult, CircleDistError, Contact, ContactPair, Grad, GradObject, Method,
                      Pair, Query, Result, circle_basis, circle_point, default_query, status_name,
@@ -68,7 +68,7 @@ __version__ = "1.0.0"
 
 __all__ = ["Point", "Circle", "Disk", "Line", "Ray", "Segment", "Arc", "Helix", "Bezier3",
            "Sphere", "Capsule", "Torus", "RoundedDisk",
-           "GeometricObject", "Query", "Result", "BatchResult", "Pair", "Contact", "ContactPair",
+           "GeometricObject", "One", "Many", "Query", "Result", "BatchResult", "Pair", "Contact", "ContactPair",
            "Grad", "GradObject", "BatchContact", "BatchGrad", "BatchGradObject", "Method",
            "CircleDistError", "circle_basis", "circle_point", "default_query", "status_name",
            "status_string", "version", "RESULT_DTYPE", "CONTACT_DTYPE", "GRAD_DTYPE", "METHOD_AUTO", "METHOD_POLYNOMIAL",

@@ -6,7 +6,42 @@ is the C struct's fields in order (all C object structs are plain doubles). A si
 ``batch_shape == ()``; an array of objects comes from array-valued fields, which broadcast
 against each other with numpy's rules. ``from_array`` wraps an existing array without copying.
 """
+import inspect
+import types
+
 import numpy as np
+
+
+class One:
+    """Shape marker for type annotations: a single object (batch shape ``()``).
+
+    ``Circle[One]`` is a Circle built from plain numbers and tuples; queries on such objects
+    return a ``Result`` (``Contact``, ``(Result, Grad)``, ...). The marker exists at runtime so
+    annotations evaluate; it has no instances.
+
+    Examples
+    --------
+    >>> import circledist as cd
+    >>> ring: cd.Circle[cd.One] = cd.Circle((0, 0, 0), (0, 0, 1), 1.0)
+    >>> ring.shape
+    ()
+    """
+
+
+class Many:
+    """Shape marker for type annotations: an array of objects (any batch shape).
+
+    ``Circle[Many]`` is a Circle built from numpy arrays (or ``from_array``); queries involving
+    one return a ``BatchResult`` (``BatchContact``, ``(BatchResult, BatchGrad)``, ...).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import circledist as cd
+    >>> rings: cd.Circle[cd.Many] = cd.Circle(np.zeros((4, 3)), (0, 0, 1), 1.0)
+    >>> rings.shape
+    (4,)
+    """
 
 
 def as_float_array(value, what, width=None):
@@ -34,6 +69,10 @@ class GeometricObject:
     #: (name, width, object class or None); width None is a scalar field.
     FIELDS = ()
     WIDTH = 0
+
+    def __class_getitem__(cls, shape):
+        """``Circle[One]`` / ``Circle[Many]`` in annotations (a typing alias; see One, Many)."""
+        return types.GenericAlias(cls, shape)
 
     def __init__(self, *values):
         name = type(self).__name__
@@ -167,6 +206,9 @@ def _define(cls):
         col += w
     cls.FIELDS = tuple((f, w if s is None else s.WIDTH, s) for f, w, s, _ in cls._SPEC)
     cls.WIDTH = col
+    # help() and inspect show the fields instead of the generic ``*values``.
+    cls.__signature__ = inspect.Signature([
+        inspect.Parameter(f, inspect.Parameter.POSITIONAL_ONLY) for f, _, _ in cls.FIELDS])
     return cls
 
 
