@@ -3,6 +3,7 @@
 import contextlib
 import ctypes
 import enum
+import functools
 import inspect
 import math
 import signal
@@ -12,7 +13,7 @@ import threading
 
 import numpy as np
 
-from . import _lib
+from . import _docs, _lib
 from ._objects import (Arc, Bezier3, Capsule, Circle, Disk, Helix, Line, Point, Ray,
                        RoundedDisk, Segment, Sphere, Torus, _plain, as_float_array, coerce)
 
@@ -465,6 +466,8 @@ if _lib.kind_name is not None:  # the batch kinds must be the C library's, with 
     if _lib.kind_size_a(KIND_CURVE_CIRCLE) != ctypes.sizeof(_lib.Curve):
         raise ImportError("circledist: the library's cdist_curve does not match this package")
 _SINGLE = {name: _lib.single_query(name) for name, _, _, _ in _KINDS}
+#: name -> docstring maker of each generated query (module=False: the Query method).
+_DOCS = {}
 
 
 def _rows(data, shape, n, width):
@@ -845,22 +848,8 @@ def _make_method(name, kind, cls_a, cls_b):
         return self._run(name, kind, a, b, method, threads, distance_only, single, out, progress)
 
     query.__name__ = name
-    query.__doc__ = """Minimum distance from a %(A)s (a) to a %(B)s (b): cdist_%(name)s.
-
-        a: %(A)s, b: %(B)s -- one object each, or arrays of objects (see the classes), whose
-        batch shapes broadcast. One object each: returns a Result and raises CircleDistError
-        on bad input. Arrays: one C call (cdist_batch) answers all entries and returns a
-        BatchResult; a bad entry gets its status and NaN, the others are answered.
-        method: a Method (or its name) for this call only; threads: worker threads for the
-        vectorised call (kept on the handle); distance_only: only distances (and statuses),
-        through cdist_batch_distance (SIMD screening path); always returns a BatchResult.
-        out: a BatchResult of the same shape (and distance_only) to write into instead of
-        allocating new buffers (saves the page faults of fresh memory in repeated calls).
-        progress: True for a progress bar (tqdm if installed, else a line on stderr), or a
-        callable progress(done, total) -> stop (True stops the batch: the entries not answered
-        get status CDIST_ERR_CANCELLED). Long batches honour Ctrl-C: KeyboardInterrupt well within
-        0.2 s of the signal; the entries answered before it are in out=, if given.""" % {
-        "A": cls_a.__name__, "B": cls_b.__name__, "name": name}
+    _DOCS[name] = functools.partial(_docs.query_doc, name, cls_a.__name__, cls_b.__name__, "result")
+    query.__doc__ = _DOCS[name](module=False)
     return query
 
 
@@ -923,35 +912,9 @@ def _make_swept_method(name, kind, cls_a, cls_b, grad):
                                "distance" if distance_only else "contact", out, progress)
 
     query.__name__ = c_name
-    what = {"A": cls_a.__name__, "B": cls_b.__name__, "name": c_name}
-    arrays = """a: %(A)s, b: %(B)s -- one object each, or arrays of objects whose batch shapes
-        broadcast (one C call, %(BATCH)s; a bad entry gets its status and NaN, the others are
-        answered, bit-identical to the single query). method: a Method (or its name) for this
-        call only; threads: worker threads of the vectorised call (kept on the handle);
-        out: the return value of an earlier call of the same shape to write into; progress:
-        True (a bar: tqdm if installed) or progress(done, total) -> stop, as for the other
-        queries (long batches honour Ctrl-C)."""
-    if contact and not grad:
-        doc = """Signed distance from a %(A)s (a) to a %(B)s (b): cdist_%(name)s.
-
-        """ + arrays + """ distance_only: only the signed distances (cdist_batch_distance).
-        Contact.distance = core_distance - (r0 + r1), negative when the solids overlap; witness
-        points, core points, normals. One object each: a Contact, CircleDistError on bad input
-        (e.g. a negative radius); arrays: a BatchContact."""
-        what["BATCH"] = "cdist_batch_contact"
-    elif contact:
-        doc = """Signed distance from a %(A)s (a) to a %(B)s (b) with its gradient: cdist_%(name)s.
-
-        """ + arrays + """ One object each: (Contact, Grad), the derivatives of the signed
-        distance (d_radius_swept = -1 for each swept object); arrays: (BatchContact, BatchGrad)."""
-        what["BATCH"] = "cdist_batch_grad"
-    else:
-        doc = """Minimum distance from a %(A)s (a) to a %(B)s (b) with its gradient: cdist_%(name)s.
-
-        """ + arrays + """ One object each: (Result, Grad); arrays: (BatchResult, BatchGrad),
-        e.g. grads.obj[0].d_center of shape S + (3,)."""
-        what["BATCH"] = "cdist_batch_grad"
-    query.__doc__ = doc % what
+    _DOCS[c_name] = functools.partial(_docs.query_doc, c_name, cls_a.__name__, cls_b.__name__,
+                                      ("contact" if contact else "result") + ("_grad" if grad else ""))
+    query.__doc__ = _DOCS[c_name](module=False)
     return query
 
 
@@ -972,20 +935,9 @@ def _curve_method(name, kind):
         other = coerce(other, Circle if kind == KIND_CURVE_CIRCLE else Disk, "%s: argument other" % name)
         return self._curve(name, kind, f, t0, t1, other, method, threads, distance_only, out)
     query.__name__ = name
-    query.__doc__ = """Minimum distance from the curve f(t), t in [t0, t1], to a %s: cdist_%s.
-
-        f(t) -> (position, derivative): two length-3 sequences, the point of the curve and its
-        exact derivative at t (the curve must be continuously differentiable). other may be an
-        array of objects (one vectorised call; the same curve for every entry).
-        Cost: the library samples the curve (curve_samples intervals, default 512) and refines
-        each bracketed minimum, so one query calls f hundreds of times (829 for 1.4 turns of a
-        helix); each call from C into Python costs several microseconds (the ctypes callback
-        and conversions, against 0.2 us for f itself), which dominates: that query took ~7 ms,
-        about 7x the same curve as a built-in Helix (use Helix, Bezier3, Arc or Segment when the
-        curve is one of them). With threads > 1 the callbacks still run one at a time (GIL). An exception raised by f aborts the query and is re-raised
-        (chained to the CircleDistError CDIST_ERR_CALLBACK_FAILED); in the vectorised form the
-        first exception is re-raised after the call and the other answers are discarded.""" % (
-        "circle" if kind == KIND_CURVE_CIRCLE else "disk", name)
+    _DOCS[name] = functools.partial(_docs.curve_doc, name,
+                                    "Circle" if kind == KIND_CURVE_CIRCLE else "Disk")
+    query.__doc__ = _DOCS[name](module=False)
     return query
 
 
@@ -1049,10 +1001,7 @@ def _module_function(name):
     query.__signature__ = sig.replace(parameters=params + [
         inspect.Parameter("query", inspect.Parameter.KEYWORD_ONLY, default=None)])
     query.__name__ = name
-    query.__doc__ = unbound.__doc__ + """
-
-        Module-level form: uses this thread's default Query unless query= is given; threads
-        defaults to 1 here."""
+    query.__doc__ = _DOCS[name](module=True)
     return query
 
 
