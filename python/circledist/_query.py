@@ -19,8 +19,24 @@ from ._objects import (Arc, Bezier3, Capsule, Circle, Disk, Helix, Line, Point, 
 
 
 class Method(enum.IntEnum):
-    """Algorithms (cdist_method). A query without the chosen method answers with AUTO;
-    Result.method says which one answered."""
+    """Algorithms of the library (cdist_method).
+
+    A query kind without the chosen method answers with AUTO; Result.method says which one
+    answered. ``str(m)`` is the lower-case name the tool prints.
+
+    Parameters
+    ----------
+    value : int or str
+        The number (0..3); ``Method["ROBUST"]`` looks up a name.
+
+    Examples
+    --------
+    >>> import circledist as cd
+    >>> cd.Method.ROBUST, int(cd.Method.ROBUST), str(cd.Method.ROBUST)
+    (<Method.ROBUST: 2>, 2, 'robust')
+    >>> cd.Method(1)
+    <Method.POLYNOMIAL: 1>
+    """
     AUTO = 0
     POLYNOMIAL = 1
     ROBUST = 2
@@ -34,8 +50,33 @@ class Method(enum.IntEnum):
 class CircleDistError(Exception):
     """A query or option was rejected by the library.
 
-    Attributes: status (int, a cdist_status), name (e.g. "CDIST_ERR_NOT_UNIT"), message (the
-    library's explanation, cdist_query_last_error)."""
+    Parameters
+    ----------
+    status : int
+        The cdist_status code.
+    message : str
+        The library's explanation (cdist_query_last_error).
+
+    Attributes
+    ----------
+    status : int
+        The cdist_status code.
+    name : str
+        Its name, e.g. "CDIST_ERR_NOT_UNIT".
+    message : str
+        The explanation.
+
+    Examples
+    --------
+    >>> import circledist as cd
+    >>> try:
+    ...     cd.circle_circle(cd.Circle((0, 0, 0), (0, 0, 2), 1.0), cd.Circle((1, 0, 0), (0, 1, 0), 1.0))
+    ... except cd.CircleDistError as e:
+    ...     print(e.status, e.name)
+    ...     print(e.message)
+    4 CDIST_ERR_NOT_UNIT
+    first circle normal has length 2, not 1 (tolerance 1e-06; see cdist_query_set_unit_tolerance)
+    """
 
     def __init__(self, status, message):
         self.status = int(status)
@@ -45,17 +86,63 @@ class CircleDistError(Exception):
 
 
 def status_name(status):
-    """The name of a status code, e.g. status_name(4) == "CDIST_ERR_NOT_UNIT"."""
+    """The name of a status code (cdist_status_name).
+
+    Parameters
+    ----------
+    status : int
+        A cdist_status code, e.g. an entry of BatchResult.status.
+
+    Returns
+    -------
+    str
+        Its name.
+
+    Examples
+    --------
+    >>> import circledist as cd
+    >>> cd.status_name(0), cd.status_name(4)
+    ('CDIST_OK', 'CDIST_ERR_NOT_UNIT')
+    """
     return _lib.status_name(int(status)).decode()
 
 
 def status_string(status):
-    """A one-line English description of a status code."""
+    """A one-line English description of a status code (cdist_status_string).
+
+    Parameters
+    ----------
+    status : int
+        A cdist_status code.
+
+    Returns
+    -------
+    str
+        The description.
+
+    Examples
+    --------
+    >>> import circledist as cd
+    >>> cd.status_string(4)
+    'a normal or direction was not unit length'
+    """
     return _lib.status_string(int(status)).decode()
 
 
 def version():
-    """The loaded C library's version string, e.g. "1.0.0"."""
+    """The loaded C library's version (cdist_version_string).
+
+    Returns
+    -------
+    str
+        "MAJOR.MINOR.PATCH".
+
+    Examples
+    --------
+    >>> import circledist as cd
+    >>> cd.version().count(".")
+    2
+    """
     return _lib.version_string().decode()
 
 
@@ -78,8 +165,23 @@ def _threads_value(threads):
 
 
 class Pair(tuple):
-    """One closest pair: points (2, 3) array (on the first and second object) and params (2,)
-    (the parameter of each point on its object; NaN where meaningless)."""
+    """One closest pair of a Result: a tuple (points, params).
+
+    Parameters
+    ----------
+    points : ndarray, shape (2, 3)
+        The point on the first object and the point on the second.
+    params : ndarray, shape (2,)
+        The parameter of each point on its object (NaN where meaningless).
+
+    Examples
+    --------
+    >>> import circledist as cd
+    >>> r = cd.point_circle((3.0, 0.0, 0.0), cd.Circle((0, 0, 0), (0, 0, 1), 1.0))
+    >>> r.pairs
+    [Pair(points=[[3.0, 0.0, 0.0], [1.0, 0.0, 0.0]], params=[nan, 0.0])]
+    >>> points, params = r.pairs[0]
+    """
     __slots__ = ()
 
     def __new__(cls, points, params):
@@ -114,15 +216,43 @@ assert (_C_OFFSETS["pairs"], _C_OFFSETS["method"], _lib.CONTACT_PAIR_DTYPE.items
 
 
 class Result:
-    """The answer to one query.
+    """The answer to one query (struct cdist_result), returned by the query functions.
 
-    distance, sqr_distance: the minimum distance and its square.
-    pairs: list of 1 or 2 Pair (points, params); points: array (num_pairs, 2, 3) with
-    points[i, 0] on the first object and points[i, 1] on the second; params: array
-    (num_pairs, 2) (line parameter, circle angle in the basis of circle_basis(), curve
-    parameter; NaN where meaningless). equidistant: True when infinitely many closest pairs
-    exist (one representative is given). method: the Method that answered; iterations: used by
-    Method.ITERATION (else 0)."""
+    Parameters
+    ----------
+    raw : numpy structured scalar or 0-d array of RESULT_DTYPE
+        One cdist_result (the query functions build Results themselves).
+
+    Attributes
+    ----------
+    distance, sqr_distance : float
+        The minimum distance and its square.
+    num_pairs : int
+        1, or 2 for two symmetric closest pairs.
+    pairs : list of Pair
+        The closest pairs (points, params).
+    points : ndarray, shape (num_pairs, 2, 3)
+        points[i, 0] on the first object, points[i, 1] on the second.
+    params : ndarray, shape (num_pairs, 2)
+        Line parameter, circle angle (in the basis of circle_basis()), curve parameter; NaN
+        where meaningless.
+    equidistant : bool
+        Infinitely many closest pairs exist (one representative is given).
+    method : Method
+        The method that answered.
+    iterations : int
+        Iterations used by Method.ITERATION (else 0).
+
+    Examples
+    --------
+    >>> import circledist as cd
+    >>> r = cd.point_circle((3.0, 0.0, 0.0), cd.Circle((0, 0, 0), (0, 0, 1), 1.0))
+    >>> r.distance, r.num_pairs, r.equidistant
+    (2.0, 1, False)
+    >>> r.points
+    array([[[3., 0., 0.],
+            [1., 0., 0.]]])
+    """
 
     __slots__ = ("distance", "sqr_distance", "num_pairs", "equidistant", "method", "iterations",
                  "_pairs", "_points", "_params")
@@ -229,11 +359,44 @@ class _Batch:
 class BatchResult(_Batch):
     """Answers to an array of queries, as numpy arrays of the broadcast batch shape S.
 
-    distance (S), status (S, int32 cdist_status, 0 = OK; a bad entry has its status and NaN),
-    and unless distance_only was asked: sqr_distance (S), num_pairs (S), equidistant (S, bool),
-    points (S + (2, 2, 3): [..., i, j] is pair i's point on object j; only pairs
-    i < num_pairs are meaningful), params (S + (2, 2)), method (S). The arrays are views of one buffer of C result
-    structs (raw, numpy dtype RESULT_DTYPE), not copies."""
+    The arrays are views of one buffer of C result structs (raw, numpy dtype RESULT_DTYPE),
+    not copies; indexing one entry gives its Result.
+
+    Parameters
+    ----------
+    raw : ndarray of RESULT_DTYPE or None
+        The results (None for distance_only).
+    status : ndarray of int32
+        The status of each entry.
+    distance : ndarray of float64, optional
+        The distances when raw is None.
+
+    Attributes
+    ----------
+    distance : ndarray, shape S
+        NaN for a bad entry.
+    status : ndarray of int32, shape S
+        cdist_status of each entry, 0 = OK (see status_names(), ok).
+    sqr_distance, num_pairs, equidistant, method, iterations : ndarray, shape S
+        As in Result (not with distance_only=True).
+    points : ndarray, shape S + (2, 2, 3)
+        [..., i, j] is pair i's point on object j; only pairs i < num_pairs are meaningful.
+    params : ndarray, shape S + (2, 2)
+        The parameters of the points.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import circledist as cd
+    >>> points = np.array([[3.0, 0.0, 0.0], [0.0, 0.0, 1.0], [0.0, 0.0, np.nan]])
+    >>> b = cd.point_circle(points, cd.Circle((0, 0, 0), (0, 0, 1), 1.0))
+    >>> b.distance.round(9)
+    array([2.        , 1.41421356,        nan])
+    >>> b.status_names()
+    array(['CDIST_OK', 'CDIST_OK', 'CDIST_ERR_NOT_FINITE'], dtype=object)
+    >>> b[0]
+    Result(distance=2.0, num_pairs=1, equidistant=False, method=AUTO)
+    """
 
     sqr_distance = property(lambda self: self._field("sqr_distance"), doc="squared distances")
     iterations = property(lambda self: self._field("iterations"), doc="iterations (ITERATION)")
@@ -243,11 +406,28 @@ class BatchResult(_Batch):
 
 
 class ContactPair(tuple):
-    """One closest pair of a contact (swept-object) query: points (2, 3) witness points on the
-    two surfaces, core_points (2, 3) the closest pair of the cores, normal (3,) the unit
-    contact normal from the first object to the second, params (2,) the core points'
-    parameters (NaN for a point core). points[0] = core_points[0] + r0 normal,
-    points[1] = core_points[1] - r1 normal."""
+    """One closest pair of a Contact: a tuple (points, core_points, normal, params).
+
+    points[0] = core_points[0] + r0 normal and points[1] = core_points[1] - r1 normal.
+
+    Parameters
+    ----------
+    points : ndarray, shape (2, 3)
+        The witness points on the two surfaces.
+    core_points : ndarray, shape (2, 3)
+        The closest pair of the cores.
+    normal : ndarray, shape (3,)
+        The unit contact normal from the first object to the second.
+    params : ndarray, shape (2,)
+        The core points' parameters (NaN for a point core).
+
+    Examples
+    --------
+    >>> import circledist as cd
+    >>> c = cd.sphere_sphere(cd.Sphere((0, 0, 0), 1.0), cd.Sphere((3, 0, 0), 0.5))
+    >>> c.pairs
+    [ContactPair(points=[[1.0, 0.0, 0.0], [2.5, 0.0, 0.0]], normal=[1.0, 0.0, 0.0])]
+    """
     __slots__ = ()
 
     def __new__(cls, points, core_points, normal, params):
@@ -265,14 +445,39 @@ class ContactPair(tuple):
 class Contact:
     """The answer to one swept-object query (struct cdist_contact).
 
-    distance: the signed distance core_distance - (r0 + r1), negative when the solids overlap
-    (-distance is then the penetration depth); core_distance: the distance of the cores (point,
-    segment, circle, disk; plain objects are their own core, radius 0). pairs: list of 1 or 2
-    ContactPair; points, core_points (num_pairs, 2, 3), normals (num_pairs, 3), params
-    (num_pairs, 2) as arrays. equidistant: infinitely many closest pairs (from the core query).
-    flags: bits of cdist_contact_flag; core_touch: the cores touch or cross, so the normal is
-    chosen by the documented rule (CDIST_CONTACT_CORE_TOUCH, see docs/swept.md). method: the
-    Method that answered the core query."""
+    Parameters
+    ----------
+    raw : numpy structured scalar or 0-d array of CONTACT_DTYPE
+        One cdist_contact (the query functions build Contacts themselves).
+
+    Attributes
+    ----------
+    distance : float
+        The signed distance core_distance - (r0 + r1), negative when the solids overlap
+        (-distance is then the penetration depth).
+    core_distance : float
+        The distance of the cores (point, segment, circle, disk; plain objects are their own
+        core, radius 0).
+    pairs : list of ContactPair
+        1 or 2 closest pairs; also as arrays: points, core_points (num_pairs, 2, 3), normals
+        (num_pairs, 3), params (num_pairs, 2).
+    equidistant : bool
+        Infinitely many closest pairs (from the core query).
+    flags : int
+        Bits of cdist_contact_flag; core_touch: the cores touch or cross, so the normal is
+        chosen by the documented rule (CDIST_CONTACT_CORE_TOUCH, see docs/swept.md).
+    method : Method
+        The method that answered the core query.
+
+    Examples
+    --------
+    >>> import circledist as cd
+    >>> c = cd.sphere_sphere(cd.Sphere((0, 0, 0), 1.0), cd.Sphere((3, 0, 0), 0.5))
+    >>> c.distance, c.core_distance, c.core_touch
+    (1.5, 3.0, False)
+    >>> c.normals
+    array([[1., 0., 0.]])
+    """
 
     __slots__ = ("distance", "core_distance", "num_pairs", "equidistant", "flags", "method",
                  "points", "core_points", "normals", "params")
@@ -316,12 +521,34 @@ class Contact:
 
 class GradObject:
     """Derivatives of the distance with respect to one object's parameters (struct
-    cdist_grad_object): d_center, d_normal, d_origin, d_direction, d_p0, d_p1, d_zero_direction
-    (arrays (3,)), d_radius, d_radius_swept, d_start, d_end (floats). Fields that do not apply
-    to the object are 0. Normal and direction derivatives lie in the tangent space of the unit
-    sphere (dD = d_normal . dN for a dN keeping N unit). d_radius is a circle's, disk's or arc's
-    radius (the core radius of a torus or rounded disk); d_radius_swept the sphere or capsule
-    radius, torus tube radius or rounded-disk radius (-1)."""
+    cdist_grad_object).
+
+    Fields that do not apply to the object are 0. Normal and direction derivatives lie in the
+    tangent space of the unit sphere (dD = d_normal . dN for a dN keeping N unit).
+
+    Parameters
+    ----------
+    values : array_like, shape (25,)
+        The doubles of one cdist_grad_object up to its reserved area.
+
+    Attributes
+    ----------
+    d_center, d_normal, d_origin, d_direction, d_p0, d_p1, d_zero_direction : ndarray, shape (3,)
+        Derivatives with respect to the vector fields.
+    d_radius : float
+        A circle's, disk's or arc's radius (the core radius of a torus or rounded disk).
+    d_radius_swept : float
+        The sphere or capsule radius, torus tube radius or rounded-disk radius (-1).
+    d_start, d_end : float
+        An arc's angles.
+
+    Examples
+    --------
+    >>> import circledist as cd
+    >>> r, g = cd.point_circle_grad((3.0, 0.0, 0.0), cd.Circle((0, 0, 0), (0, 0, 1), 1.0))
+    >>> g.obj[1]
+    GradObject(d_center=[-1.0, -0.0, -0.0], d_radius=-1.0)
+    """
 
     __slots__ = _lib.GRAD_OBJECT_FIELDS
 
@@ -340,11 +567,31 @@ class GradObject:
 
 
 class Grad:
-    """The gradient of one query's distance (struct cdist_grad): obj[0] (GradObject) for the
-    first object, obj[1] for the second; flags (bits of cdist_grad_flag). differentiable is
-    False when CDIST_GRAD_NOT_DIFFERENTIABLE is set: two closest pairs or an equidistant
-    result (a one-sided derivative of pairs[0] is given) or (core) distance 0 (the gradient is
-    0 there, swept radii -1). The rules are in circledist.h ("gradients")."""
+    """The gradient of one query's distance (struct cdist_grad).
+
+    Parameters
+    ----------
+    raw : numpy structured scalar or 0-d array of GRAD_DTYPE
+        One cdist_grad (the _grad query functions build Grads themselves).
+
+    Attributes
+    ----------
+    obj : tuple of two GradObject
+        obj[0] for the first object, obj[1] for the second.
+    flags : int
+        Bits of cdist_grad_flag.
+    differentiable : bool
+        False when CDIST_GRAD_NOT_DIFFERENTIABLE is set: two closest pairs or an equidistant
+        result (a one-sided derivative of pairs[0] is given) or (core) distance 0 (the gradient
+        is 0 there, swept radii -1). The rules are in circledist.h ("gradients").
+
+    Examples
+    --------
+    >>> import circledist as cd
+    >>> r, g = cd.point_circle_grad((3.0, 0.0, 0.0), cd.Circle((0, 0, 0), (0, 0, 1), 1.0))
+    >>> g.differentiable, g.obj[0].d_center
+    (True, array([1., 0., 0.]))
+    """
 
     __slots__ = ("obj", "flags")
 
