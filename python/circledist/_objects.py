@@ -63,7 +63,24 @@ def as_float_array(value, what, width=None):
 
 
 class GeometricObject:
-    """Base class: one object or an array of objects of one type, stored as ``data``."""
+    """Base class: one object or an array of objects of one type, stored as ``data``.
+
+    ``data`` has shape ``shape + (WIDTH,)``, the C struct's doubles in field order; ``shape``
+    is () for one object. Indexing an array of objects gives a view.
+
+    Parameters
+    ----------
+    *values
+        The fields of the subclass, in order (see each class).
+
+    Examples
+    --------
+    >>> import circledist as cd
+    >>> isinstance(cd.Circle((0, 0, 0), (0, 0, 1), 1.0), cd.GeometricObject)
+    True
+    >>> cd.Circle.WIDTH, [f[0] for f in cd.Circle.FIELDS]
+    (7, ['center', 'normal', 'radius'])
+    """
 
     __slots__ = ("data", "_addr")
     #: (name, width, object class or None); width None is a scalar field.
@@ -116,9 +133,37 @@ class GeometricObject:
 
     @classmethod
     def from_array(cls, array):
-        """Wrap an array of shape (..., WIDTH) in the C struct's field order, without copying
-        when it is float64 with contiguous rows (any row stride, e.g. a column slice of a
-        wider table, works)."""
+        """Wrap an array of shape (..., WIDTH) in the C struct's field order.
+
+        No copy when it is float64 with contiguous rows (any row stride, e.g. a column slice of
+        a wider table, works).
+
+        Parameters
+        ----------
+        array : array_like, shape (..., WIDTH)
+            The fields of each object in order.
+
+        Returns
+        -------
+        GeometricObject
+            An object of this class with ``data`` a view of the array where possible.
+
+        Raises
+        ------
+        ValueError, TypeError
+            A last axis other than WIDTH, or non-numeric input.
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> import circledist as cd
+        >>> table = np.array([[0, 0, 0, 0, 0, 1, 1.0], [0, 0, 5, 0, 0, 1, 2.0]])
+        >>> rings = cd.Circle.from_array(table)
+        >>> rings.radius
+        array([1., 2.])
+        >>> np.shares_memory(rings.data, table)
+        True
+        """
         a = as_float_array(array, cls.__name__ + ".from_array", cls.WIDTH)
         if a.strides[-1] != a.itemsize:
             a = np.ascontiguousarray(a)

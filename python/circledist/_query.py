@@ -620,12 +620,41 @@ class Grad:
 
 class BatchContact(_Batch):
     """Answers to an array of contact (swept-object) queries, as numpy arrays of the broadcast
-    batch shape S: distance (S, signed), core_distance (S), status (S, int32 cdist_status; a bad
-    entry has its status and NaN), num_pairs, equidistant (bool), flags, core_touch (bool),
-    method (S), points and core_points (S + (2, 2, 3): [..., i, j] is pair i's point on object
-    j), normals (S + (2, 3)), params (S + (2, 2)); only pairs i < num_pairs are meaningful.
-    Views of one buffer of C contact structs (raw, numpy dtype CONTACT_DTYPE). With
-    distance_only=True only distance and status exist."""
+    batch shape S: views of one buffer of C contact structs (raw, numpy dtype CONTACT_DTYPE).
+    With distance_only=True only distance and status exist.
+
+    Parameters
+    ----------
+    raw : ndarray of CONTACT_DTYPE or None
+        The contacts (None for distance_only).
+    status : ndarray of int32
+        The status of each entry.
+    distance : ndarray of float64, optional
+        The signed distances when raw is None.
+
+    Attributes
+    ----------
+    distance, core_distance : ndarray, shape S
+        Signed distances and core distances (NaN for a bad entry).
+    status : ndarray of int32, shape S
+        cdist_status of each entry, 0 = OK.
+    num_pairs, equidistant, flags, core_touch, method : ndarray, shape S
+        As in Contact.
+    points, core_points : ndarray, shape S + (2, 2, 3)
+        [..., i, j] is pair i's point on object j; only pairs i < num_pairs are meaningful.
+    normals : ndarray, shape S + (2, 3)
+        Contact normals.
+    params : ndarray, shape S + (2, 2)
+        Core parameters.
+
+    Examples
+    --------
+    >>> import circledist as cd
+    >>> balls = cd.Sphere([[3.0, 0.0, 0.0], [1.0, 0.0, 0.0]], 0.5)
+    >>> b = cd.sphere_sphere(balls, cd.Sphere((0, 0, 0), 1.0))
+    >>> b.distance, b.core_distance
+    (array([ 1.5, -0.5]), array([3., 1.]))
+    """
 
     core_distance = property(lambda self: self._field("core_distance"), doc="core distances")
     flags = property(lambda self: self._field("flags"), doc="bits of cdist_contact_flag")
@@ -640,8 +669,23 @@ class BatchContact(_Batch):
 
 
 class BatchGradObject:
-    """The derivatives with respect to one object of every entry (fields of cdist_grad_object as
-    arrays: d_center etc. S + (3,), d_radius etc. S); views of the BatchGrad's buffer."""
+    """The derivatives with respect to one object of every entry: the fields of
+    cdist_grad_object as arrays (d_center etc. S + (3,), d_radius etc. S), views of the
+    BatchGrad's buffer.
+
+    Parameters
+    ----------
+    raw : ndarray of the cdist_grad_object dtype
+        One object's part of the gradient buffer.
+
+    Examples
+    --------
+    >>> import circledist as cd
+    >>> points = [[3.0, 0.0, 0.0], [0.0, 0.0, 3.0]]
+    >>> res, grads = cd.point_circle_grad(points, cd.Circle((0, 0, 0), (0, 0, 1), 1.0))
+    >>> grads.obj[0].d_radius_swept
+    array([0., 0.])
+    """
 
     __slots__ = ("_raw",)
 
@@ -661,10 +705,34 @@ class BatchGradObject:
 
 
 class BatchGrad:
-    """Gradients of an array of queries (struct cdist_grad per entry): obj[0], obj[1]
-    (BatchGradObject: obj[k].d_center is S + (3,), obj[k].d_radius is S, ...), flags (S),
-    differentiable (S, bool), status (S); a bad entry's gradient is NaN. raw: the buffer
-    (numpy dtype GRAD_DTYPE)."""
+    """Gradients of an array of queries (struct cdist_grad per entry); a bad entry's gradient
+    is NaN.
+
+    Parameters
+    ----------
+    raw : ndarray of GRAD_DTYPE
+        The buffer.
+    status : ndarray of int32
+        The status of each entry (shared with the BatchResult or BatchContact of the call).
+
+    Attributes
+    ----------
+    obj : tuple of two BatchGradObject
+        obj[k].d_center is S + (3,), obj[k].d_radius is S, ...
+    flags, differentiable, status, ok : ndarray, shape S
+        As in Grad, per entry.
+
+    Examples
+    --------
+    >>> import circledist as cd
+    >>> points = [[3.0, 0.0, 0.0], [0.0, 3.0, 0.0]]
+    >>> res, grads = cd.point_circle_grad(points, cd.Circle((0, 0, 0), (0, 0, 1), 1.0))
+    >>> grads.obj[0].d_center
+    array([[1., 0., 0.],
+           [0., 1., 0.]])
+    >>> grads.differentiable
+    array([ True,  True])
+    """
 
     def __init__(self, raw, status):
         self.raw = raw
@@ -759,13 +827,39 @@ def _progress_bar(total):
 
 
 class Query:
-    """A query handle: the library's options and workspaces (cdist_query). Use one per thread
-    (calls on one handle from several threads are serialised by a lock).
+    """A query handle: the library's options and workspaces (cdist_query).
 
-    Query(method=Method.AUTO, unit_tolerance=None, curve_samples=None, max_iterations=None,
-    threads=1). Every query kind is a method, e.g. q.circle_circle(a, b); the module-level
-    functions of the same names use a per-thread default handle. Use as a context manager or
-    call close()."""
+    Use one per thread (calls on one handle from several threads are serialised by a lock).
+    Every query kind is a method, e.g. q.circle_circle(a, b); the module-level functions of the
+    same names use a per-thread default handle (default_query()). Use as a context manager or
+    call close().
+
+    Parameters
+    ----------
+    method : Method, str or int, optional
+        The algorithm (default Method.AUTO).
+    unit_tolerance : float, optional
+        Relative tolerance on the length of unit normals and directions (library default 1e-6).
+    curve_samples : int, optional
+        Sampling intervals for callback curves, helices (per turn) and Beziers (default 512).
+    max_iterations : int, optional
+        Iteration limit of Method.ITERATION.
+    threads : int, optional
+        Worker threads of the vectorised calls (default 1).
+
+    Raises
+    ------
+    CircleDistError
+        An option the library rejects.
+
+    Examples
+    --------
+    >>> import circledist as cd
+    >>> with cd.Query(method="robust") as q:
+    ...     r = q.circle_circle(cd.Circle((0, 0, 2), (0, 0, 1), 1.0), cd.Circle((1, 0, 0), (0, 1, 0), 1.0))
+    ...     print(q.method, r.method)
+    robust robust
+    """
 
     def __init__(self, method=Method.AUTO, unit_tolerance=None, curve_samples=None,
                  max_iterations=None, threads=1):
@@ -804,7 +898,13 @@ class Query:
         return self._q
 
     def set_method(self, method):
-        """Set the algorithm (a Method, its name such as "robust", or its number)."""
+        """Set the algorithm of the handle.
+
+        Parameters
+        ----------
+        method : Method, str or int
+            A Method, its name such as "robust", or its number.
+        """
         self._check(_lib.query_set_method(self._handle(), _method_value(method)))
 
     @property
@@ -823,8 +923,16 @@ class Query:
         return _lib.query_get_curve_samples(self._handle())
 
     def set_threads(self, threads):
-        """Worker threads used by the vectorised calls (1..256; creating them has a cost, so
-        the count is kept until changed). Results are identical for every count."""
+        """Set the worker threads used by the vectorised calls.
+
+        Creating threads has a cost, so the count is kept until changed; results are identical
+        for every count.
+
+        Parameters
+        ----------
+        threads : int
+            1..256.
+        """
         threads = _threads_value(threads)
         if threads == self._threads:
             return
@@ -1193,9 +1301,33 @@ Query.curve_disk = _curve_method("curve_disk", KIND_CURVE_DISK)
 
 
 def circle_basis(circle):
-    """(U, V): the basis in which circle angles are measured (cdist_circle_basis). With N the
-    normalised normal and k the index of N's smallest-magnitude component, U = e_k - N_k N
-    normalised and V = N x U. circle: one Circle (or Disk)."""
+    """The basis in which circle angles are measured (cdist_circle_basis).
+
+    With N the normalised normal and k the index of N's smallest-magnitude component,
+    U = e_k - N_k N normalised and V = N x U.
+
+    Parameters
+    ----------
+    circle : Circle or Disk
+        One circle (or a (center, normal, radius) tuple).
+
+    Returns
+    -------
+    (U, V) : tuple of two ndarray, shape (3,)
+
+    Raises
+    ------
+    CircleDistError
+        A circle the library rejects (e.g. a zero normal).
+    ValueError
+        An array of circles.
+
+    Examples
+    --------
+    >>> import circledist as cd
+    >>> cd.circle_basis(cd.Circle((0, 0, 0), (0, 0, 1), 1.0))
+    (array([1., 0., 0.]), array([0., 1., 0.]))
+    """
     c = coerce(circle, Circle, "circle_basis: circle")
     if c.shape:
         raise ValueError("circle_basis: circle must be one Circle, got an array of shape %s" % (c.shape,))
@@ -1207,8 +1339,33 @@ def circle_basis(circle):
 
 
 def circle_point(circle, angle):
-    """The point of one circle at `angle` (radians, in the basis of circle_basis()):
-    C + r (cos a U + sin a V) (cdist_circle_point). angle may be an array: returns (..., 3)."""
+    """The point of one circle at an angle: C + r (cos a U + sin a V) (cdist_circle_point).
+
+    Parameters
+    ----------
+    circle : Circle or Disk
+        One circle (or a (center, normal, radius) tuple).
+    angle : float or array_like
+        Radians, in the basis of circle_basis().
+
+    Returns
+    -------
+    ndarray, shape angle.shape + (3,)
+
+    Raises
+    ------
+    CircleDistError
+        A circle the library rejects.
+    ValueError
+        An array of circles.
+
+    Examples
+    --------
+    >>> import circledist as cd
+    >>> cd.circle_point(cd.Circle((0, 0, 1), (0, 0, 1), 2.0), [0.0, 0.0])
+    array([[2., 0., 1.],
+           [2., 0., 1.]])
+    """
     c = coerce(circle, Circle, "circle_point: circle")
     if c.shape:
         raise ValueError("circle_point: circle must be one Circle, got an array of shape %s" % (c.shape,))
@@ -1226,7 +1383,19 @@ _default = threading.local()
 
 
 def default_query():
-    """This thread's default Query handle (used by the module-level query functions)."""
+    """This thread's default Query handle, used by the module-level query functions.
+
+    Returns
+    -------
+    Query
+        Created on first use in each thread.
+
+    Examples
+    --------
+    >>> import circledist as cd
+    >>> cd.default_query() is cd.default_query()
+    True
+    """
     q = getattr(_default, "query", None)
     if q is None:
         q = _default.query = Query()
