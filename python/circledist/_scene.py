@@ -74,10 +74,34 @@ def _groups(objects, what):
 class ScenePairs:
     """Answered pairs of a scene query, as numpy arrays (one entry per pair, sorted by i, j).
 
-    i, j: ids (j is -1 for a query object); distance: signed distance; points (n, 2, 3): the
-    closest pair's witness points (points[:, 0] on object i); all_points (n, 2, 2, 3) with
-    num_pairs (1 or 2) valid; equidistant (bool); status (0, or the status of a pair the
-    library has no exact query for, with distance NaN). Unpacks as ``i, j, distance, points``."""
+    Unpacks as ``i, j, distance, points``.
+
+    Parameters
+    ----------
+    raw : ndarray of SCENE_PAIR_DTYPE
+        The C pair records (the Scene queries build ScenePairs themselves).
+
+    Attributes
+    ----------
+    i, j : ndarray of int64, shape (n,)
+        Ids (j is -1 for a query object).
+    distance : ndarray, shape (n,)
+        Signed distances.
+    points : ndarray, shape (n, 2, 3)
+        The closest pair's witness points (points[:, 0] on object i).
+    all_points : ndarray, shape (n, 2, 2, 3)
+        Both pairs, num_pairs (1 or 2) of them valid.
+    num_pairs, equidistant, status : ndarray, shape (n,)
+        status is 0, or the status of a pair the library has no exact query for (distance NaN).
+
+    Examples
+    --------
+    >>> import circledist as cd
+    >>> with cd.Scene(cd.Sphere([[0, 0, 0], [1, 0, 0], [5, 0, 0]], 0.25)) as scene:
+    ...     i, j, distance, points = scene.pairs_within(1.0)
+    >>> i, j, distance
+    (array([0]), array([1]), array([0.5]))
+    """
 
     def __init__(self, raw):
         self.raw = raw
@@ -103,15 +127,38 @@ class ScenePairs:
 class Scene:
     """Many objects at once: a certified broad phase over the library's exact queries.
 
-    Scene(objects=(), query=None, threads=1): objects is one object array (e.g. Torus(...) with
-    array fields) or a list of them of any kinds (Point, Segment, Circle, Disk, Arc, Sphere,
-    Capsule, Torus, RoundedDisk); ids are their positions in that order (later add() calls
-    continue the numbering). Distances are the signed distances of the swept queries
-    (core distance minus the radii), bit for bit those of the pair queries.
+    Ids are the objects' positions in the order given (later add() calls continue the
+    numbering). Distances are the signed distances of the swept queries (core distance minus
+    the radii), bit for bit those of the pair queries. Long queries return to Python between
+    blocks of answers, so Ctrl-C interrupts them (KeyboardInterrupt).
 
-    Invalid objects keep their ids and take part in nothing; add() then raises CircleDistError
-    naming the first one (the valid ones are added). Long queries return to Python between
-    blocks of answers, so Ctrl-C interrupts them (KeyboardInterrupt)."""
+    Parameters
+    ----------
+    objects : GeometricObject or sequence of GeometricObject, optional
+        One object array (e.g. Torus(...) with array fields) or a list of them of any kinds
+        (Point, Segment, Circle, Disk, Arc, Sphere, Capsule, Torus, RoundedDisk).
+    query : Query, optional
+        The handle for the exact queries (default: a new one).
+    threads : int, optional
+        Worker threads of the handle (default 1).
+
+    Raises
+    ------
+    CircleDistError
+        Invalid objects: they keep their ids and take part in nothing; the error names the
+        first one (the valid ones are added).
+
+    Examples
+    --------
+    >>> import circledist as cd
+    >>> balls = cd.Sphere([[0, 0, 0], [1, 0, 0], [5, 0, 0]], 0.25)
+    >>> with cd.Scene(balls) as scene:
+    ...     print(len(scene), scene.closest_pair()[:3])
+    ...     near = scene.nearest((4.0, 0.0, 0.0))
+    3 (0, 1, 0.5)
+    >>> near.i, near.distance
+    (array([2]), array([0.75]))
+    """
 
     def __init__(self, objects=(), query=None, threads=1):
         if _new is None:
