@@ -202,7 +202,23 @@ class Scene:
 
     # ---- objects ---------------------------------------------------------------------------
     def add(self, objects):
-        """Add objects (one object array or a list of them); returns their ids (int64 array)."""
+        """Add objects; their ids continue the numbering.
+        
+        Parameters
+        ----------
+        objects : GeometricObject or sequence of GeometricObject
+            One object array or a list of them (any kinds).
+        
+        Returns
+        -------
+        ndarray of int64
+            Their ids, in order.
+        
+        Raises
+        ------
+        CircleDistError
+            Invalid objects (they keep their ids; the valid ones are added).
+        """
         ids = []
         first_bad = None
         with self._query._lock, self._lock:
@@ -218,8 +234,20 @@ class Scene:
         return np.concatenate(ids) if ids else np.empty(0, np.int64)
 
     def update(self, ids, objects):
-        """Move or reshape objects: objects (one array, or a list of arrays of any kinds) replace
-        ids in order. No rebuild: the tree is refitted before the next query."""
+        """Move or reshape objects. No rebuild: the tree is refitted before the next query.
+        
+        Parameters
+        ----------
+        ids : array_like of int
+            The ids to replace.
+        objects : GeometricObject or sequence of GeometricObject
+            One array, or a list of arrays of any kinds, replacing ids in order.
+        
+        Raises
+        ------
+        ValueError
+            As many objects as ids are needed.
+        """
         ids = np.ascontiguousarray(np.asarray(ids, dtype=np.int64).reshape(-1)).astype(np.uintp)
         groups = _groups(objects, "objects")
         total = sum(len(r) for _, r in groups)
@@ -234,14 +262,39 @@ class Scene:
                 at += len(rows)
 
     def remove(self, ids):
-        """Remove objects (their ids are not reused)."""
+        """Remove objects (their ids are not reused).
+        
+        Parameters
+        ----------
+        ids : array_like of int
+            The ids to remove.
+        
+        Raises
+        ------
+        CircleDistError
+            A status the library reports for the call.
+        """
         ids = np.ascontiguousarray(np.asarray(ids, dtype=np.int64).reshape(-1)).astype(np.uintp)
         with self._query._lock, self._lock:
             self._check(_remove(self._query._handle(), self._handle(), len(ids), ids.ctypes.data))
 
     def set_groups(self, ids=None, group=None, chain=None):
-        """Skip filter: pairs of the same non-zero group are skipped, and consecutive ids i, i + 1
-        of the same non-zero chain. ids None: 0 .. n - 1 (n the length of group or chain)."""
+        """Skip filter: pairs of the same non-zero group are skipped, and consecutive ids i, i + 1 of the same non-zero chain.
+        
+        Parameters
+        ----------
+        ids : array_like of int, optional
+            The objects (None: 0 .. n - 1, n the length of group or chain).
+        group : array_like of uint32, optional
+            Group of each object (0: none).
+        chain : array_like of uint32, optional
+            Chain of each object (0: none).
+        
+        Raises
+        ------
+        CircleDistError
+            A status the library reports for the call.
+        """
         g = None if group is None else np.ascontiguousarray(np.asarray(group, dtype=np.uint32).reshape(-1))
         c = None if chain is None else np.ascontiguousarray(np.asarray(chain, dtype=np.uint32).reshape(-1))
         n = len(g) if g is not None else (len(c) if c is not None else 0)
@@ -258,7 +311,18 @@ class Scene:
                                     None if g is None else g.ctypes.data, None if c is None else c.ctypes.data))
 
     def object_status(self, ids):
-        """cdist_status of each id (0: live; its validation status when invalid)."""
+        """The status of each object.
+        
+        Parameters
+        ----------
+        ids : array_like of int
+            The ids.
+        
+        Returns
+        -------
+        ndarray of int32
+            cdist_status of each id (0: live; its validation status when invalid).
+        """
         return np.array([_object_status(self._handle(), int(i)) for i in np.asarray(ids).reshape(-1)],
                         dtype=np.int32)
 
@@ -276,7 +340,23 @@ class Scene:
 
     # ---- queries ---------------------------------------------------------------------------
     def pairs_within(self, delta):
-        """Every pair i < j with distance <= delta (one C call; returns a ScenePairs)."""
+        """Every pair i < j with distance <= delta (one C call).
+        
+        Parameters
+        ----------
+        delta : float
+            The largest signed distance reported.
+        
+        Returns
+        -------
+        ScenePairs
+            Sorted by (i, j).
+        
+        Raises
+        ------
+        CircleDistError
+            A status the library reports for the call.
+        """
         chunks = []
         state = {"error": None}
 
@@ -313,7 +393,25 @@ class Scene:
             capacity = count.value
 
     def pairs_between(self, other, delta):
-        """Every pair (i of this scene, j of other) with distance <= delta."""
+        """Every pair (i of this scene, j of other) with distance <= delta.
+        
+        Parameters
+        ----------
+        other : Scene
+            The second scene.
+        delta : float
+            The largest signed distance reported.
+        
+        Returns
+        -------
+        ScenePairs
+            Sorted by (i, j).
+        
+        Raises
+        ------
+        CircleDistError
+            A status the library reports for the call.
+        """
         with self._query._lock, self._lock, other._lock:
             return self._sized(lambda out, cap, cnt: _between(self._query._handle(), self._handle(), other._handle(),
                                                               float(delta), out, cap, cnt), 4 * len(self) + 64)
@@ -323,7 +421,18 @@ class Scene:
         return ScenePairs(out)
 
     def closest_pair(self):
-        """The closest pair (smallest distance, then smallest (i, j)): (i, j, distance, points)."""
+        """The closest pair (smallest distance, then smallest (i, j)).
+        
+        Returns
+        -------
+        (i, j, distance, points)
+            Two ids, the signed distance and the witness points, shape (2, 3).
+        
+        Raises
+        ------
+        CircleDistError
+            A status the library reports for the call.
+        """
         out = np.empty(1, SCENE_PAIR_DTYPE)
         with self._query._lock, self._lock:
             st = _closest(self._query._handle(), self._handle(), out.ctypes.data)
@@ -331,7 +440,23 @@ class Scene:
         return int(p.i[0]), int(p.j[0]), float(p.distance[0]), p.points[0]
 
     def closest_pair_between(self, other):
-        """The closest pair (i of this scene, j of other): (i, j, distance, points)."""
+        """The closest pair (i of this scene, j of other).
+        
+        Parameters
+        ----------
+        other : Scene
+            The second scene.
+        
+        Returns
+        -------
+        (i, j, distance, points)
+            Two ids, the signed distance and the witness points, shape (2, 3).
+        
+        Raises
+        ------
+        CircleDistError
+            A status the library reports for the call.
+        """
         out = np.empty(1, SCENE_PAIR_DTYPE)
         with self._query._lock, self._lock, other._lock:
             st = _closest_between(self._query._handle(), self._handle(), other._handle(), out.ctypes.data)
@@ -347,7 +472,25 @@ class Scene:
         return kind, rows
 
     def nearest(self, obj, k=1):
-        """The k objects nearest to obj (any kind), by distance then id: ScenePairs (i = ids)."""
+        """The k objects nearest to obj, by distance then id.
+        
+        Parameters
+        ----------
+        obj : GeometricObject or array_like, shape (3,)
+            One object of any kind (a point as its coordinates).
+        k : int, optional
+            How many (default 1).
+        
+        Returns
+        -------
+        ScenePairs
+            i: the ids, j: -1.
+        
+        Raises
+        ------
+        CircleDistError
+            A status the library reports for the call.
+        """
         kind, rows = self._query_object(obj)
         k = int(k)
         out = np.empty(max(k, 1), SCENE_PAIR_DTYPE)
@@ -359,7 +502,25 @@ class Scene:
         return ScenePairs(out[:count.value])
 
     def within(self, obj, delta):
-        """Every object within delta of obj (any kind), sorted by id: ScenePairs (i = ids)."""
+        """Every object within delta of obj, sorted by id.
+        
+        Parameters
+        ----------
+        obj : GeometricObject or array_like, shape (3,)
+            One object of any kind (a point as its coordinates).
+        delta : float
+            The largest signed distance reported.
+        
+        Returns
+        -------
+        ScenePairs
+            i: the ids, j: -1.
+        
+        Raises
+        ------
+        CircleDistError
+            A status the library reports for the call.
+        """
         kind, rows = self._query_object(obj)
         with self._query._lock, self._lock:
             return self._sized(lambda out, cap, cnt: _within(self._query._handle(), self._handle(), kind,

@@ -49,3 +49,30 @@ def test_numpydoc_sections(name):
 def test_every_public_name_has_examples():
     """The doctests above are not vacuous: every public callable shows at least one example."""
     assert [n for n in PUBLIC if not _doctests(n)] == []
+
+
+def _public_methods():
+    for name in PUBLIC:
+        cls = getattr(cd, name)
+        if not inspect.isclass(cls) or issubclass(cls, (BaseException, int)):
+            continue
+        for attr, value in vars(cls).items():
+            if isinstance(value, (classmethod, staticmethod)):
+                value = value.__func__
+            if not attr.startswith("_") and inspect.isfunction(value):
+                yield "%s.%s" % (name, attr), value
+
+
+@pytest.mark.parametrize("name, method", list(_public_methods()))
+def test_method_parameters_documented(name, method):
+    """Every public method documents the parameters it takes, by name."""
+    doc = inspect.getdoc(method) or ""
+    params = [p for p in inspect.signature(method).parameters if p not in ("self", "cls")]
+    assert doc, "%s has no docstring" % name
+    if params:
+        assert "Parameters\n----------" in doc, "%s: no Parameters section" % name
+        section = doc.split("Parameters\n----------", 1)[1]
+        documented = " ".join(line.split(" : ")[0] for line in section.splitlines()
+                              if " : " in line and not line.startswith(" "))
+        missing = [p for p in params if p not in documented]
+        assert not missing, "%s: parameters %s not documented" % (name, missing)
