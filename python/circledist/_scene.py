@@ -203,17 +203,17 @@ class Scene:
     # ---- objects ---------------------------------------------------------------------------
     def add(self, objects):
         """Add objects; their ids continue the numbering.
-        
+
         Parameters
         ----------
         objects : GeometricObject or sequence of GeometricObject
             One object array or a list of them (any kinds).
-        
+
         Returns
         -------
         ndarray of int64
             Their ids, in order.
-        
+
         Raises
         ------
         CircleDistError
@@ -235,14 +235,14 @@ class Scene:
 
     def update(self, ids, objects):
         """Move or reshape objects. No rebuild: the tree is refitted before the next query.
-        
+
         Parameters
         ----------
         ids : array_like of int
             The ids to replace.
         objects : GeometricObject or sequence of GeometricObject
             One array, or a list of arrays of any kinds, replacing ids in order.
-        
+
         Raises
         ------
         ValueError
@@ -263,12 +263,12 @@ class Scene:
 
     def remove(self, ids):
         """Remove objects (their ids are not reused).
-        
+
         Parameters
         ----------
         ids : array_like of int
             The ids to remove.
-        
+
         Raises
         ------
         CircleDistError
@@ -280,7 +280,7 @@ class Scene:
 
     def set_groups(self, ids=None, group=None, chain=None):
         """Skip filter: pairs of the same non-zero group are skipped, and consecutive ids i, i + 1 of the same non-zero chain.
-        
+
         Parameters
         ----------
         ids : array_like of int, optional
@@ -289,7 +289,7 @@ class Scene:
             Group of each object (0: none).
         chain : array_like of uint32, optional
             Chain of each object (0: none).
-        
+
         Raises
         ------
         CircleDistError
@@ -312,12 +312,12 @@ class Scene:
 
     def object_status(self, ids):
         """The status of each object.
-        
+
         Parameters
         ----------
         ids : array_like of int
             The ids.
-        
+
         Returns
         -------
         ndarray of int32
@@ -341,17 +341,17 @@ class Scene:
     # ---- queries ---------------------------------------------------------------------------
     def pairs_within(self, delta):
         """Every pair i < j with distance <= delta (one C call).
-        
+
         Parameters
         ----------
         delta : float
             The largest signed distance reported.
-        
+
         Returns
         -------
         ScenePairs
             Sorted by (i, j).
-        
+
         Raises
         ------
         CircleDistError
@@ -394,19 +394,19 @@ class Scene:
 
     def pairs_between(self, other, delta):
         """Every pair (i of this scene, j of other) with distance <= delta.
-        
+
         Parameters
         ----------
         other : Scene
             The second scene.
         delta : float
             The largest signed distance reported.
-        
+
         Returns
         -------
         ScenePairs
             Sorted by (i, j).
-        
+
         Raises
         ------
         CircleDistError
@@ -422,12 +422,12 @@ class Scene:
 
     def closest_pair(self):
         """The closest pair (smallest distance, then smallest (i, j)).
-        
+
         Returns
         -------
         (i, j, distance, points)
             Two ids, the signed distance and the witness points, shape (2, 3).
-        
+
         Raises
         ------
         CircleDistError
@@ -441,17 +441,17 @@ class Scene:
 
     def closest_pair_between(self, other):
         """The closest pair (i of this scene, j of other).
-        
+
         Parameters
         ----------
         other : Scene
             The second scene.
-        
+
         Returns
         -------
         (i, j, distance, points)
             Two ids, the signed distance and the witness points, shape (2, 3).
-        
+
         Raises
         ------
         CircleDistError
@@ -473,19 +473,19 @@ class Scene:
 
     def nearest(self, obj, k=1):
         """The k objects nearest to obj, by distance then id.
-        
+
         Parameters
         ----------
         obj : GeometricObject or array_like, shape (3,)
             One object of any kind (a point as its coordinates).
         k : int, optional
             How many (default 1).
-        
+
         Returns
         -------
         ScenePairs
             i: the ids, j: -1.
-        
+
         Raises
         ------
         CircleDistError
@@ -503,19 +503,19 @@ class Scene:
 
     def within(self, obj, delta):
         """Every object within delta of obj, sorted by id.
-        
+
         Parameters
         ----------
         obj : GeometricObject or array_like, shape (3,)
             One object of any kind (a point as its coordinates).
         delta : float
             The largest signed distance reported.
-        
+
         Returns
         -------
         ScenePairs
             i: the ids, j: -1.
-        
+
         Raises
         ------
         CircleDistError
