@@ -39,6 +39,11 @@ progress=callable(done, total) -> stop) and honour Ctrl-C (KeyboardInterrupt wel
 within 0.2 s; with out= the entries answered before it are kept, the others have status
 CDIST_ERR_CANCELLED).
 
+Types: objects built from Python numbers and tuples are Circle[One] etc., those built from
+numpy arrays Circle[Many]; the stubs (__init__.pyi) overload every query on this, so type
+checkers know a Result from a BatchResult. Every public function and class has a numpydoc
+docstring with examples: help(circledist.circle_circle).
+
 Errors: CircleDistError (status, name, message) from the library; ValueError or TypeError
 naming the argument for malformed Python input.
 

@@ -395,8 +395,9 @@ class Arc(GeometricObject):
     Examples
     --------
     >>> import circledist as cd
-    >>> cd.Arc(((0, 0, 2), (0, 0, 1), 1.0), (1, 0, 0), -1.0, 1.0)
-    Arc(circle=Circle(center=[0.0, 0.0, 2.0], normal=[0.0, 0.0, 1.0], radius=1.0), zero_direction=[1.0, 0.0, 0.0], start=-1.0, end=1.0)
+    >>> cd.Arc(((0, 0, 2), (0, 0, 1), 1.0), (1, 0, 0), -1.0, 1.0)  # doctest: +NORMALIZE_WHITESPACE
+    Arc(circle=Circle(center=[0.0, 0.0, 2.0], normal=[0.0, 0.0, 1.0], radius=1.0),
+        zero_direction=[1.0, 0.0, 0.0], start=-1.0, end=1.0)
     """
     __slots__ = ()
     _SPEC = (("circle", None, Circle, "the supporting Circle"),

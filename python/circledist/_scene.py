@@ -279,7 +279,8 @@ class Scene:
             self._check(_remove(self._query._handle(), self._handle(), len(ids), ids.ctypes.data))
 
     def set_groups(self, ids=None, group=None, chain=None):
-        """Skip filter: pairs of the same non-zero group are skipped, and consecutive ids i, i + 1 of the same non-zero chain.
+        """Skip filter: pairs of the same non-zero group are skipped, and consecutive ids i, i + 1
+        of the same non-zero chain.
 
         Parameters
         ----------
