@@ -39,6 +39,11 @@ progress=callable(done, total) -> stop) and honour Ctrl-C (KeyboardInterrupt wel
 within 0.2 s; with out= the entries answered before it are kept, the others have status
 CDIST_ERR_CANCELLED).
 
+Types: objects built from Python numbers and tuples are Circle[One] etc., those built from
+numpy arrays Circle[Many]; the stubs (__init__.pyi) overload every query on this, so type
+checkers know a Result from a BatchResult. Every public function and class has a numpydoc
+docstring with examples: help(circledist.circle_circle).
+
 Errors: CircleDistError (status, name, message) from the library; ValueError or TypeError
 naming the argument for malformed Python input.
 
@@ -46,8 +51,8 @@ The C library is found through $CIRCLEDIST_LIBRARY (a path), else the library in
 this package by meson, else the system loader (libcircledist.so.1).
 """
 from ._lib import CONTACT_DTYPE, GRAD_DTYPE, RESULT_DTYPE
-from ._objects import (Arc, Bezier3, Capsule, Circle, Disk, GeometricObject, Helix, Line, Point,
-                       Ray, RoundedDisk, Segment, Sphere, Torus)
+from ._objects import (Arc, Bezier3, Capsule, Circle, Disk, GeometricObject, Helix, Line, Many,
+                       One, Point, Ray, RoundedDisk, Segment, Sphere, Torus)
 from ._query import (FUNCTIONS as _FUNCTIONS, BatchContact, BatchGrad, BatchGradObject,
                      BatchResult, CircleDistError, Contact, ContactPair, Grad, GradObject, Method,
                      Pair, Query, Result, circle_basis, circle_point, default_query, status_name,
@@ -68,7 +73,7 @@ __version__ = "1.0.0"
 
 __all__ = ["Point", "Circle", "Disk", "Line", "Ray", "Segment", "Arc", "Helix", "Bezier3",
            "Sphere", "Capsule", "Torus", "RoundedDisk",
-           "GeometricObject", "Query", "Result", "BatchResult", "Pair", "Contact", "ContactPair",
+           "GeometricObject", "One", "Many", "Query", "Result", "BatchResult", "Pair", "Contact", "ContactPair",
            "Grad", "GradObject", "BatchContact", "BatchGrad", "BatchGradObject", "Method",
            "CircleDistError", "circle_basis", "circle_point", "default_query", "status_name",
            "status_string", "version", "RESULT_DTYPE", "CONTACT_DTYPE", "GRAD_DTYPE", "METHOD_AUTO", "METHOD_POLYNOMIAL",

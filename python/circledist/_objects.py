@@ -6,7 +6,42 @@ is the C struct's fields in order (all C object structs are plain doubles). A si
 ``batch_shape == ()``; an array of objects comes from array-valued fields, which broadcast
 against each other with numpy's rules. ``from_array`` wraps an existing array without copying.
 """
+import inspect
+import types
+
 import numpy as np
+
+
+class One:
+    """Shape marker for type annotations: a single object (batch shape ``()``).
+
+    ``Circle[One]`` is a Circle built from plain numbers and tuples; queries on such objects
+    return a ``Result`` (``Contact``, ``(Result, Grad)``, ...). The marker exists at runtime so
+    annotations evaluate; it has no instances.
+
+    Examples
+    --------
+    >>> import circledist as cd
+    >>> ring: cd.Circle[cd.One] = cd.Circle((0, 0, 0), (0, 0, 1), 1.0)
+    >>> ring.shape
+    ()
+    """
+
+
+class Many:
+    """Shape marker for type annotations: an array of objects (any batch shape).
+
+    ``Circle[Many]`` is a Circle built from numpy arrays (or ``from_array``); queries involving
+    one return a ``BatchResult`` (``BatchContact``, ``(BatchResult, BatchGrad)``, ...).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import circledist as cd
+    >>> rings: cd.Circle[cd.Many] = cd.Circle(np.zeros((4, 3)), (0, 0, 1), 1.0)
+    >>> rings.shape
+    (4,)
+    """
 
 
 def as_float_array(value, what, width=None):
@@ -28,12 +63,33 @@ def as_float_array(value, what, width=None):
 
 
 class GeometricObject:
-    """Base class: one object or an array of objects of one type, stored as ``data``."""
+    """Base class: one object or an array of objects of one type, stored as ``data``.
+
+    ``data`` has shape ``shape + (WIDTH,)``, the C struct's doubles in field order; ``shape``
+    is () for one object. Indexing an array of objects gives a view.
+
+    Parameters
+    ----------
+    *values
+        The fields of the subclass, in order (see each class).
+
+    Examples
+    --------
+    >>> import circledist as cd
+    >>> isinstance(cd.Circle((0, 0, 0), (0, 0, 1), 1.0), cd.GeometricObject)
+    True
+    >>> cd.Circle.WIDTH, [f[0] for f in cd.Circle.FIELDS]
+    (7, ['center', 'normal', 'radius'])
+    """
 
     __slots__ = ("data", "_addr")
     #: (name, width, object class or None); width None is a scalar field.
     FIELDS = ()
     WIDTH = 0
+
+    def __class_getitem__(cls, shape):
+        """``Circle[One]`` / ``Circle[Many]`` in annotations (a typing alias; see One, Many)."""
+        return types.GenericAlias(cls, shape)
 
     def __init__(self, *values):
         name = type(self).__name__
@@ -77,9 +133,37 @@ class GeometricObject:
 
     @classmethod
     def from_array(cls, array):
-        """Wrap an array of shape (..., WIDTH) in the C struct's field order, without copying
-        when it is float64 with contiguous rows (any row stride, e.g. a column slice of a
-        wider table, works)."""
+        """Wrap an array of shape (..., WIDTH) in the C struct's field order.
+
+        No copy when it is float64 with contiguous rows (any row stride, e.g. a column slice of
+        a wider table, works).
+
+        Parameters
+        ----------
+        array : array_like, shape (..., WIDTH)
+            The fields of each object in order.
+
+        Returns
+        -------
+        GeometricObject
+            An object of this class with ``data`` a view of the array where possible.
+
+        Raises
+        ------
+        ValueError, TypeError
+            A last axis other than WIDTH, or non-numeric input.
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> import circledist as cd
+        >>> table = np.array([[0, 0, 0, 0, 0, 1, 1.0], [0, 0, 5, 0, 0, 1, 2.0]])
+        >>> rings = cd.Circle.from_array(table)
+        >>> rings.radius
+        array([1., 2.])
+        >>> np.shares_memory(rings.data, table)
+        True
+        """
         a = as_float_array(array, cls.__name__ + ".from_array", cls.WIDTH)
         if a.strides[-1] != a.itemsize:
             a = np.ascontiguousarray(a)
@@ -159,7 +243,26 @@ def _field_property(start, width, cls, doc):
     return property(get, doc=doc)
 
 
+def _parameters_doc(cls):
+    """The numpydoc Parameters section of a class's constructor, from its field specs."""
+    lines = ["Parameters", "----------"]
+    for field, width, sub, doc in cls._SPEC:
+        if sub is not None:
+            kind = "%s, tuple of its fields, or array of %s" % (sub.__name__, sub.__name__)
+        elif width is None:
+            kind = "float or array_like, shape (...)"
+        else:
+            kind = "array_like, shape (%d,) or (..., %d)" % (width, width)
+        lines += ["%s : %s" % (field, kind), "    " + doc + "."]
+    lines += ["", "The fields broadcast against each other: arrays give an array of objects of the",
+              "broadcast batch shape (shape), Python numbers and tuples one object (shape ())."]
+    return "\n".join("    " + line if line else "" for line in lines)
+
+
 def _define(cls):
+    if "Parameters" not in cls.__doc__:
+        head, sep, examples = cls.__doc__.partition("    Examples\n")
+        cls.__doc__ = head.rstrip() + "\n\n" + _parameters_doc(cls) + "\n\n" + sep + examples
     col = 0
     for field, width, sub, doc in cls._SPEC:
         w = sub.WIDTH if sub is not None else (width or 1)
@@ -167,6 +270,9 @@ def _define(cls):
         col += w
     cls.FIELDS = tuple((f, w if s is None else s.WIDTH, s) for f, w, s, _ in cls._SPEC)
     cls.WIDTH = col
+    # help() and inspect show the fields instead of the generic ``*values``.
+    cls.__signature__ = inspect.Signature([
+        inspect.Parameter(f, inspect.Parameter.POSITIONAL_ONLY) for f, _, _ in cls.FIELDS])
     return cls
 
 
@@ -174,7 +280,16 @@ def _define(cls):
 class Point(GeometricObject):
     """A point (x, y, z); Point(positions) with positions of shape (3,) or (N, 3).
 
-    Query functions take points as any (..., 3) sequence or array; this class is optional."""
+    Query functions take points as any (..., 3) sequence or array; this class is optional.
+
+    Examples
+    --------
+    >>> import circledist as cd
+    >>> cd.Point((1.0, 0.0, 2.0))
+    Point(position=[1.0, 0.0, 2.0])
+    >>> cd.Point([[0, 0, 0], [1, 2, 3]]).shape
+    (2,)
+    """
     __slots__ = ()
     _SPEC = (("position", 3, None, "the coordinates, shape (..., 3)"),)
 
@@ -185,7 +300,22 @@ class Circle(GeometricObject):
 
     center (..., 3), normal (..., 3) unit length (within the handle's unit tolerance),
     radius (...) >= 0; the fields broadcast, so Circle(centers, (0, 0, 1), radii) is N circles
-    in parallel planes. C struct: cdist_circle (7 doubles)."""
+    in parallel planes. C struct: cdist_circle (7 doubles).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import circledist as cd
+    >>> cd.Circle((0, 0, 2), (0, 0, 1), 1.0)
+    Circle(center=[0.0, 0.0, 2.0], normal=[0.0, 0.0, 1.0], radius=1.0)
+    >>> rings = cd.Circle(np.zeros((4, 3)), (0, 0, 1), [1.0, 2.0, 3.0, 4.0])
+    >>> rings
+    <Circle array of shape (4,)>
+    >>> rings.radius
+    array([1., 2., 3., 4.])
+    >>> rings[2]
+    Circle(center=[0.0, 0.0, 0.0], normal=[0.0, 0.0, 1.0], radius=3.0)
+    """
     __slots__ = ()
     _SPEC = (("center", 3, None, "centre, shape (..., 3)"),
              ("normal", 3, None, "unit normal of the plane, shape (..., 3)"),
@@ -197,7 +327,14 @@ class Disk(GeometricObject):
     """A disk (a circle plus its interior): Disk(center, normal, radius), like Circle.
 
     Circle and Disk hold the same data; the query function (``*_disk`` or ``*_circle``) decides
-    whether the interior counts, so either class is accepted by both."""
+    whether the interior counts, so either class is accepted by both.
+
+    Examples
+    --------
+    >>> import circledist as cd
+    >>> cd.Disk((0, 0, 2), (0, 0, 1), 1.0)
+    Disk(center=[0.0, 0.0, 2.0], normal=[0.0, 0.0, 1.0], radius=1.0)
+    """
     __slots__ = ()
     _SPEC = Circle._SPEC
 
@@ -205,7 +342,14 @@ class Disk(GeometricObject):
 @_define
 class Line(GeometricObject):
     """An infinite line origin + t * direction: Line(origin, direction), direction unit length.
-    Line parameters in results refer to the direction as passed. C struct: cdist_line."""
+    Line parameters in results refer to the direction as passed. C struct: cdist_line.
+
+    Examples
+    --------
+    >>> import circledist as cd
+    >>> cd.Line((1, 0, 2), (1, 0, 0))
+    Line(origin=[1.0, 0.0, 2.0], direction=[1.0, 0.0, 0.0])
+    """
     __slots__ = ()
     _SPEC = (("origin", 3, None, "a point of the line, shape (..., 3)"),
              ("direction", 3, None, "unit direction, shape (..., 3)"))
@@ -213,14 +357,28 @@ class Line(GeometricObject):
 
 @_define
 class Ray(GeometricObject):
-    """A ray origin + t * direction, t >= 0: Ray(origin, direction). C struct: cdist_ray."""
+    """A ray origin + t * direction, t >= 0: Ray(origin, direction). C struct: cdist_ray.
+
+    Examples
+    --------
+    >>> import circledist as cd
+    >>> cd.Ray((1, 0, 2), (1, 0, 0))
+    Ray(origin=[1.0, 0.0, 2.0], direction=[1.0, 0.0, 0.0])
+    """
     __slots__ = ()
     _SPEC = Line._SPEC
 
 
 @_define
 class Segment(GeometricObject):
-    """A segment from p0 (s = 0) to p1 (s = 1): Segment(p0, p1). C struct: cdist_segment."""
+    """A segment from p0 (s = 0) to p1 (s = 1): Segment(p0, p1). C struct: cdist_segment.
+
+    Examples
+    --------
+    >>> import circledist as cd
+    >>> cd.Segment((0, 0, 2), (2, 0, 2))
+    Segment(p0=[0.0, 0.0, 2.0], p1=[2.0, 0.0, 2.0])
+    """
     __slots__ = ()
     _SPEC = (("p0", 3, None, "start point, shape (..., 3)"),
              ("p1", 3, None, "end point, shape (..., 3)"))
@@ -232,7 +390,15 @@ class Arc(GeometricObject):
 
     Angles (radians) are measured from zero_direction (projected into the circle's plane; it
     must not be parallel to the normal) towards normal x zero_direction, from start to end.
-    circle is a Circle (or a (center, normal, radius) tuple). C struct: cdist_arc."""
+    circle is a Circle (or a (center, normal, radius) tuple). C struct: cdist_arc.
+
+    Examples
+    --------
+    >>> import circledist as cd
+    >>> cd.Arc(((0, 0, 2), (0, 0, 1), 1.0), (1, 0, 0), -1.0, 1.0)  # doctest: +NORMALIZE_WHITESPACE
+    Arc(circle=Circle(center=[0.0, 0.0, 2.0], normal=[0.0, 0.0, 1.0], radius=1.0),
+        zero_direction=[1.0, 0.0, 0.0], start=-1.0, end=1.0)
+    """
     __slots__ = ()
     _SPEC = (("circle", None, Circle, "the supporting Circle"),
              ("zero_direction", 3, None, "direction of angle 0, shape (..., 3)"),
@@ -246,7 +412,14 @@ class Helix(GeometricObject):
 
     The point at angle t is center + radius (cos t U + sin t V) + pitch t / (2 pi) axis, with U
     zero_direction made perpendicular to the unit axis and V = axis x U; t runs over [t0, t1].
-    C struct: cdist_helix."""
+    C struct: cdist_helix.
+
+    Examples
+    --------
+    >>> import circledist as cd
+    >>> cd.Helix((0, 0, 0), (0, 0, 1), (1, 0, 0), 1.0, 0.5, 0.0, 6.0).pitch
+    0.5
+    """
     __slots__ = ()
     _SPEC = (("center", 3, None, "point on the axis at t = 0, shape (..., 3)"),
              ("axis", 3, None, "unit axis direction, shape (..., 3)"),
@@ -260,7 +433,14 @@ class Helix(GeometricObject):
 @_define
 class Bezier3(GeometricObject):
     """A cubic Bezier curve: Bezier3(p0, p1, p2, p3), parameter t in [0, 1].
-    C struct: cdist_bezier3."""
+    C struct: cdist_bezier3.
+
+    Examples
+    --------
+    >>> import circledist as cd
+    >>> cd.Bezier3((0, 0, 2), (0.5, 0, 2), (1.5, 0, 2), (2, 0, 2)).p3
+    array([2., 0., 2.])
+    """
     __slots__ = ()
     _SPEC = (("p0", 3, None, "control point 0 (t = 0)"),
              ("p1", 3, None, "control point 1"),
@@ -271,7 +451,14 @@ class Bezier3(GeometricObject):
 @_define
 class Sphere(GeometricObject):
     """A sphere (a point swept by a ball): Sphere(center, radius), radius >= 0 (0: a point).
-    C struct: cdist_sphere (4 doubles)."""
+    C struct: cdist_sphere (4 doubles).
+
+    Examples
+    --------
+    >>> import circledist as cd
+    >>> cd.Sphere((1, 0, 2), 0.25)
+    Sphere(center=[1.0, 0.0, 2.0], radius=0.25)
+    """
     __slots__ = ()
     _SPEC = (("center", 3, None, "centre, shape (..., 3)"),
              ("radius", None, None, "radius >= 0"))
@@ -282,7 +469,14 @@ class Capsule(GeometricObject):
     """A capsule (a segment swept by a ball): Capsule(segment, radius).
 
     segment is a Segment (or a (p0, p1) tuple; p0 == p1 is a sphere), radius >= 0.
-    C struct: cdist_capsule (7 doubles)."""
+    C struct: cdist_capsule (7 doubles).
+
+    Examples
+    --------
+    >>> import circledist as cd
+    >>> cd.Capsule(((0, 0, 2), (2, 0, 2)), 0.25)
+    Capsule(segment=Segment(p0=[0.0, 0.0, 2.0], p1=[2.0, 0.0, 2.0]), radius=0.25)
+    """
     __slots__ = ()
     _SPEC = (("segment", None, Segment, "the core Segment"),
              ("radius", None, None, "radius of the ball, >= 0"))
@@ -294,7 +488,17 @@ class Torus(GeometricObject):
 
     circle is the centre line of the tube, a Circle (or a (center, normal, radius) tuple);
     tube_radius >= 0 (larger than circle.radius: a spindle torus). C struct: cdist_torus
-    (8 doubles)."""
+    (8 doubles).
+
+    Examples
+    --------
+    >>> import circledist as cd
+    >>> t = cd.Torus(((0, 0, 2), (0, 0, 1), 1.0), 0.25)
+    >>> t.circle
+    Circle(center=[0.0, 0.0, 2.0], normal=[0.0, 0.0, 1.0], radius=1.0)
+    >>> t.tube_radius
+    0.25
+    """
     __slots__ = ()
     _SPEC = (("circle", None, Circle, "the core Circle"),
              ("tube_radius", None, None, "tube radius, >= 0"))
@@ -304,7 +508,14 @@ class Torus(GeometricObject):
 class RoundedDisk(GeometricObject):
     """A rounded disk (a disk swept by a ball, a coin with rounded rim):
     RoundedDisk(disk, radius), disk a Disk (or a (center, normal, radius) tuple), radius >= 0.
-    C struct: cdist_rounded_disk (8 doubles)."""
+    C struct: cdist_rounded_disk (8 doubles).
+
+    Examples
+    --------
+    >>> import circledist as cd
+    >>> cd.RoundedDisk(((0, 0, 2), (0, 0, 1), 1.0), 0.25)
+    RoundedDisk(disk=Disk(center=[0.0, 0.0, 2.0], normal=[0.0, 0.0, 1.0], radius=1.0), radius=0.25)
+    """
     __slots__ = ()
     _SPEC = (("disk", None, Disk, "the core Disk"),
              ("radius", None, None, "radius of the ball, >= 0"))

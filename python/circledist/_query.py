@@ -3,6 +3,7 @@
 import contextlib
 import ctypes
 import enum
+import functools
 import inspect
 import math
 import signal
@@ -12,14 +13,30 @@ import threading
 
 import numpy as np
 
-from . import _lib
+from . import _docs, _lib
 from ._objects import (Arc, Bezier3, Capsule, Circle, Disk, Helix, Line, Point, Ray,
                        RoundedDisk, Segment, Sphere, Torus, _plain, as_float_array, coerce)
 
 
 class Method(enum.IntEnum):
-    """Algorithms (cdist_method). A query without the chosen method answers with AUTO;
-    Result.method says which one answered."""
+    """Algorithms of the library (cdist_method).
+
+    A query kind without the chosen method answers with AUTO; Result.method says which one
+    answered. ``str(m)`` is the lower-case name the tool prints.
+
+    Parameters
+    ----------
+    value : int or str
+        The number (0..3); ``Method["ROBUST"]`` looks up a name.
+
+    Examples
+    --------
+    >>> import circledist as cd
+    >>> cd.Method.ROBUST, int(cd.Method.ROBUST), str(cd.Method.ROBUST)
+    (<Method.ROBUST: 2>, 2, 'robust')
+    >>> cd.Method(1)
+    <Method.POLYNOMIAL: 1>
+    """
     AUTO = 0
     POLYNOMIAL = 1
     ROBUST = 2
@@ -33,8 +50,33 @@ class Method(enum.IntEnum):
 class CircleDistError(Exception):
     """A query or option was rejected by the library.
 
-    Attributes: status (int, a cdist_status), name (e.g. "CDIST_ERR_NOT_UNIT"), message (the
-    library's explanation, cdist_query_last_error)."""
+    Parameters
+    ----------
+    status : int
+        The cdist_status code.
+    message : str
+        The library's explanation (cdist_query_last_error).
+
+    Attributes
+    ----------
+    status : int
+        The cdist_status code.
+    name : str
+        Its name, e.g. "CDIST_ERR_NOT_UNIT".
+    message : str
+        The explanation.
+
+    Examples
+    --------
+    >>> import circledist as cd
+    >>> try:
+    ...     cd.circle_circle(cd.Circle((0, 0, 0), (0, 0, 2), 1.0), cd.Circle((1, 0, 0), (0, 1, 0), 1.0))
+    ... except cd.CircleDistError as e:
+    ...     print(e.status, e.name)
+    ...     print(e.message)
+    4 CDIST_ERR_NOT_UNIT
+    first circle normal has length 2, not 1 (tolerance 1e-06; see cdist_query_set_unit_tolerance)
+    """
 
     def __init__(self, status, message):
         self.status = int(status)
@@ -44,17 +86,63 @@ class CircleDistError(Exception):
 
 
 def status_name(status):
-    """The name of a status code, e.g. status_name(4) == "CDIST_ERR_NOT_UNIT"."""
+    """The name of a status code (cdist_status_name).
+
+    Parameters
+    ----------
+    status : int
+        A cdist_status code, e.g. an entry of BatchResult.status.
+
+    Returns
+    -------
+    str
+        Its name.
+
+    Examples
+    --------
+    >>> import circledist as cd
+    >>> cd.status_name(0), cd.status_name(4)
+    ('CDIST_OK', 'CDIST_ERR_NOT_UNIT')
+    """
     return _lib.status_name(int(status)).decode()
 
 
 def status_string(status):
-    """A one-line English description of a status code."""
+    """A one-line English description of a status code (cdist_status_string).
+
+    Parameters
+    ----------
+    status : int
+        A cdist_status code.
+
+    Returns
+    -------
+    str
+        The description.
+
+    Examples
+    --------
+    >>> import circledist as cd
+    >>> cd.status_string(4)
+    'a normal or direction was not unit length'
+    """
     return _lib.status_string(int(status)).decode()
 
 
 def version():
-    """The loaded C library's version string, e.g. "1.0.0"."""
+    """The loaded C library's version (cdist_version_string).
+
+    Returns
+    -------
+    str
+        "MAJOR.MINOR.PATCH".
+
+    Examples
+    --------
+    >>> import circledist as cd
+    >>> cd.version().count(".")
+    2
+    """
     return _lib.version_string().decode()
 
 
@@ -77,8 +165,23 @@ def _threads_value(threads):
 
 
 class Pair(tuple):
-    """One closest pair: points (2, 3) array (on the first and second object) and params (2,)
-    (the parameter of each point on its object; NaN where meaningless)."""
+    """One closest pair of a Result: a tuple (points, params).
+
+    Parameters
+    ----------
+    points : ndarray, shape (2, 3)
+        The point on the first object and the point on the second.
+    params : ndarray, shape (2,)
+        The parameter of each point on its object (NaN where meaningless).
+
+    Examples
+    --------
+    >>> import circledist as cd
+    >>> r = cd.point_circle((3.0, 0.0, 0.0), cd.Circle((0, 0, 0), (0, 0, 1), 1.0))
+    >>> r.pairs
+    [Pair(points=[[3.0, 0.0, 0.0], [1.0, 0.0, 0.0]], params=[nan, 0.0])]
+    >>> points, params = r.pairs[0]
+    """
     __slots__ = ()
 
     def __new__(cls, points, params):
@@ -113,15 +216,43 @@ assert (_C_OFFSETS["pairs"], _C_OFFSETS["method"], _lib.CONTACT_PAIR_DTYPE.items
 
 
 class Result:
-    """The answer to one query.
+    """The answer to one query (struct cdist_result), returned by the query functions.
 
-    distance, sqr_distance: the minimum distance and its square.
-    pairs: list of 1 or 2 Pair (points, params); points: array (num_pairs, 2, 3) with
-    points[i, 0] on the first object and points[i, 1] on the second; params: array
-    (num_pairs, 2) (line parameter, circle angle in the basis of circle_basis(), curve
-    parameter; NaN where meaningless). equidistant: True when infinitely many closest pairs
-    exist (one representative is given). method: the Method that answered; iterations: used by
-    Method.ITERATION (else 0)."""
+    Parameters
+    ----------
+    raw : numpy structured scalar or 0-d array of RESULT_DTYPE
+        One cdist_result (the query functions build Results themselves).
+
+    Attributes
+    ----------
+    distance, sqr_distance : float
+        The minimum distance and its square.
+    num_pairs : int
+        1, or 2 for two symmetric closest pairs.
+    pairs : list of Pair
+        The closest pairs (points, params).
+    points : ndarray, shape (num_pairs, 2, 3)
+        points[i, 0] on the first object, points[i, 1] on the second.
+    params : ndarray, shape (num_pairs, 2)
+        Line parameter, circle angle (in the basis of circle_basis()), curve parameter; NaN
+        where meaningless.
+    equidistant : bool
+        Infinitely many closest pairs exist (one representative is given).
+    method : Method
+        The method that answered.
+    iterations : int
+        Iterations used by Method.ITERATION (else 0).
+
+    Examples
+    --------
+    >>> import circledist as cd
+    >>> r = cd.point_circle((3.0, 0.0, 0.0), cd.Circle((0, 0, 0), (0, 0, 1), 1.0))
+    >>> r.distance, r.num_pairs, r.equidistant
+    (2.0, 1, False)
+    >>> r.points
+    array([[[3., 0., 0.],
+            [1., 0., 0.]]])
+    """
 
     __slots__ = ("distance", "sqr_distance", "num_pairs", "equidistant", "method", "iterations",
                  "_pairs", "_points", "_params")
@@ -228,11 +359,44 @@ class _Batch:
 class BatchResult(_Batch):
     """Answers to an array of queries, as numpy arrays of the broadcast batch shape S.
 
-    distance (S), status (S, int32 cdist_status, 0 = OK; a bad entry has its status and NaN),
-    and unless distance_only was asked: sqr_distance (S), num_pairs (S), equidistant (S, bool),
-    points (S + (2, 2, 3): [..., i, j] is pair i's point on object j; only pairs
-    i < num_pairs are meaningful), params (S + (2, 2)), method (S). The arrays are views of one buffer of C result
-    structs (raw, numpy dtype RESULT_DTYPE), not copies."""
+    The arrays are views of one buffer of C result structs (raw, numpy dtype RESULT_DTYPE),
+    not copies; indexing one entry gives its Result.
+
+    Parameters
+    ----------
+    raw : ndarray of RESULT_DTYPE or None
+        The results (None for distance_only).
+    status : ndarray of int32
+        The status of each entry.
+    distance : ndarray of float64, optional
+        The distances when raw is None.
+
+    Attributes
+    ----------
+    distance : ndarray, shape S
+        NaN for a bad entry.
+    status : ndarray of int32, shape S
+        cdist_status of each entry, 0 = OK (see status_names(), ok).
+    sqr_distance, num_pairs, equidistant, method, iterations : ndarray, shape S
+        As in Result (not with distance_only=True).
+    points : ndarray, shape S + (2, 2, 3)
+        [..., i, j] is pair i's point on object j; only pairs i < num_pairs are meaningful.
+    params : ndarray, shape S + (2, 2)
+        The parameters of the points.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import circledist as cd
+    >>> points = np.array([[3.0, 0.0, 0.0], [0.0, 0.0, 1.0], [0.0, 0.0, np.nan]])
+    >>> b = cd.point_circle(points, cd.Circle((0, 0, 0), (0, 0, 1), 1.0))
+    >>> b.distance.round(9)
+    array([2.        , 1.41421356,        nan])
+    >>> b.status_names()
+    array(['CDIST_OK', 'CDIST_OK', 'CDIST_ERR_NOT_FINITE'], dtype=object)
+    >>> b[0]
+    Result(distance=2.0, num_pairs=1, equidistant=False, method=AUTO)
+    """
 
     sqr_distance = property(lambda self: self._field("sqr_distance"), doc="squared distances")
     iterations = property(lambda self: self._field("iterations"), doc="iterations (ITERATION)")
@@ -242,11 +406,28 @@ class BatchResult(_Batch):
 
 
 class ContactPair(tuple):
-    """One closest pair of a contact (swept-object) query: points (2, 3) witness points on the
-    two surfaces, core_points (2, 3) the closest pair of the cores, normal (3,) the unit
-    contact normal from the first object to the second, params (2,) the core points'
-    parameters (NaN for a point core). points[0] = core_points[0] + r0 normal,
-    points[1] = core_points[1] - r1 normal."""
+    """One closest pair of a Contact: a tuple (points, core_points, normal, params).
+
+    points[0] = core_points[0] + r0 normal and points[1] = core_points[1] - r1 normal.
+
+    Parameters
+    ----------
+    points : ndarray, shape (2, 3)
+        The witness points on the two surfaces.
+    core_points : ndarray, shape (2, 3)
+        The closest pair of the cores.
+    normal : ndarray, shape (3,)
+        The unit contact normal from the first object to the second.
+    params : ndarray, shape (2,)
+        The core points' parameters (NaN for a point core).
+
+    Examples
+    --------
+    >>> import circledist as cd
+    >>> c = cd.sphere_sphere(cd.Sphere((0, 0, 0), 1.0), cd.Sphere((3, 0, 0), 0.5))
+    >>> c.pairs
+    [ContactPair(points=[[1.0, 0.0, 0.0], [2.5, 0.0, 0.0]], normal=[1.0, 0.0, 0.0])]
+    """
     __slots__ = ()
 
     def __new__(cls, points, core_points, normal, params):
@@ -264,14 +445,39 @@ class ContactPair(tuple):
 class Contact:
     """The answer to one swept-object query (struct cdist_contact).
 
-    distance: the signed distance core_distance - (r0 + r1), negative when the solids overlap
-    (-distance is then the penetration depth); core_distance: the distance of the cores (point,
-    segment, circle, disk; plain objects are their own core, radius 0). pairs: list of 1 or 2
-    ContactPair; points, core_points (num_pairs, 2, 3), normals (num_pairs, 3), params
-    (num_pairs, 2) as arrays. equidistant: infinitely many closest pairs (from the core query).
-    flags: bits of cdist_contact_flag; core_touch: the cores touch or cross, so the normal is
-    chosen by the documented rule (CDIST_CONTACT_CORE_TOUCH, see docs/swept.md). method: the
-    Method that answered the core query."""
+    Parameters
+    ----------
+    raw : numpy structured scalar or 0-d array of CONTACT_DTYPE
+        One cdist_contact (the query functions build Contacts themselves).
+
+    Attributes
+    ----------
+    distance : float
+        The signed distance core_distance - (r0 + r1), negative when the solids overlap
+        (-distance is then the penetration depth).
+    core_distance : float
+        The distance of the cores (point, segment, circle, disk; plain objects are their own
+        core, radius 0).
+    pairs : list of ContactPair
+        1 or 2 closest pairs; also as arrays: points, core_points (num_pairs, 2, 3), normals
+        (num_pairs, 3), params (num_pairs, 2).
+    equidistant : bool
+        Infinitely many closest pairs (from the core query).
+    flags : int
+        Bits of cdist_contact_flag; core_touch: the cores touch or cross, so the normal is
+        chosen by the documented rule (CDIST_CONTACT_CORE_TOUCH, see docs/swept.md).
+    method : Method
+        The method that answered the core query.
+
+    Examples
+    --------
+    >>> import circledist as cd
+    >>> c = cd.sphere_sphere(cd.Sphere((0, 0, 0), 1.0), cd.Sphere((3, 0, 0), 0.5))
+    >>> c.distance, c.core_distance, c.core_touch
+    (1.5, 3.0, False)
+    >>> c.normals
+    array([[1., 0., 0.]])
+    """
 
     __slots__ = ("distance", "core_distance", "num_pairs", "equidistant", "flags", "method",
                  "points", "core_points", "normals", "params")
@@ -315,12 +521,34 @@ class Contact:
 
 class GradObject:
     """Derivatives of the distance with respect to one object's parameters (struct
-    cdist_grad_object): d_center, d_normal, d_origin, d_direction, d_p0, d_p1, d_zero_direction
-    (arrays (3,)), d_radius, d_radius_swept, d_start, d_end (floats). Fields that do not apply
-    to the object are 0. Normal and direction derivatives lie in the tangent space of the unit
-    sphere (dD = d_normal . dN for a dN keeping N unit). d_radius is a circle's, disk's or arc's
-    radius (the core radius of a torus or rounded disk); d_radius_swept the sphere or capsule
-    radius, torus tube radius or rounded-disk radius (-1)."""
+    cdist_grad_object).
+
+    Fields that do not apply to the object are 0. Normal and direction derivatives lie in the
+    tangent space of the unit sphere (dD = d_normal . dN for a dN keeping N unit).
+
+    Parameters
+    ----------
+    values : array_like, shape (25,)
+        The doubles of one cdist_grad_object up to its reserved area.
+
+    Attributes
+    ----------
+    d_center, d_normal, d_origin, d_direction, d_p0, d_p1, d_zero_direction : ndarray, shape (3,)
+        Derivatives with respect to the vector fields.
+    d_radius : float
+        A circle's, disk's or arc's radius (the core radius of a torus or rounded disk).
+    d_radius_swept : float
+        The sphere or capsule radius, torus tube radius or rounded-disk radius (-1).
+    d_start, d_end : float
+        An arc's angles.
+
+    Examples
+    --------
+    >>> import circledist as cd
+    >>> r, g = cd.point_circle_grad((3.0, 0.0, 0.0), cd.Circle((0, 0, 0), (0, 0, 1), 1.0))
+    >>> g.obj[1]
+    GradObject(d_center=[-1.0, -0.0, -0.0], d_radius=-1.0)
+    """
 
     __slots__ = _lib.GRAD_OBJECT_FIELDS
 
@@ -339,11 +567,31 @@ class GradObject:
 
 
 class Grad:
-    """The gradient of one query's distance (struct cdist_grad): obj[0] (GradObject) for the
-    first object, obj[1] for the second; flags (bits of cdist_grad_flag). differentiable is
-    False when CDIST_GRAD_NOT_DIFFERENTIABLE is set: two closest pairs or an equidistant
-    result (a one-sided derivative of pairs[0] is given) or (core) distance 0 (the gradient is
-    0 there, swept radii -1). The rules are in circledist.h ("gradients")."""
+    """The gradient of one query's distance (struct cdist_grad).
+
+    Parameters
+    ----------
+    raw : numpy structured scalar or 0-d array of GRAD_DTYPE
+        One cdist_grad (the _grad query functions build Grads themselves).
+
+    Attributes
+    ----------
+    obj : tuple of two GradObject
+        obj[0] for the first object, obj[1] for the second.
+    flags : int
+        Bits of cdist_grad_flag.
+    differentiable : bool
+        False when CDIST_GRAD_NOT_DIFFERENTIABLE is set: two closest pairs or an equidistant
+        result (a one-sided derivative of pairs[0] is given) or (core) distance 0 (the gradient
+        is 0 there, swept radii -1). The rules are in circledist.h ("gradients").
+
+    Examples
+    --------
+    >>> import circledist as cd
+    >>> r, g = cd.point_circle_grad((3.0, 0.0, 0.0), cd.Circle((0, 0, 0), (0, 0, 1), 1.0))
+    >>> g.differentiable, g.obj[0].d_center
+    (True, array([1., 0., 0.]))
+    """
 
     __slots__ = ("obj", "flags")
 
@@ -372,12 +620,41 @@ class Grad:
 
 class BatchContact(_Batch):
     """Answers to an array of contact (swept-object) queries, as numpy arrays of the broadcast
-    batch shape S: distance (S, signed), core_distance (S), status (S, int32 cdist_status; a bad
-    entry has its status and NaN), num_pairs, equidistant (bool), flags, core_touch (bool),
-    method (S), points and core_points (S + (2, 2, 3): [..., i, j] is pair i's point on object
-    j), normals (S + (2, 3)), params (S + (2, 2)); only pairs i < num_pairs are meaningful.
-    Views of one buffer of C contact structs (raw, numpy dtype CONTACT_DTYPE). With
-    distance_only=True only distance and status exist."""
+    batch shape S: views of one buffer of C contact structs (raw, numpy dtype CONTACT_DTYPE).
+    With distance_only=True only distance and status exist.
+
+    Parameters
+    ----------
+    raw : ndarray of CONTACT_DTYPE or None
+        The contacts (None for distance_only).
+    status : ndarray of int32
+        The status of each entry.
+    distance : ndarray of float64, optional
+        The signed distances when raw is None.
+
+    Attributes
+    ----------
+    distance, core_distance : ndarray, shape S
+        Signed distances and core distances (NaN for a bad entry).
+    status : ndarray of int32, shape S
+        cdist_status of each entry, 0 = OK.
+    num_pairs, equidistant, flags, core_touch, method : ndarray, shape S
+        As in Contact.
+    points, core_points : ndarray, shape S + (2, 2, 3)
+        [..., i, j] is pair i's point on object j; only pairs i < num_pairs are meaningful.
+    normals : ndarray, shape S + (2, 3)
+        Contact normals.
+    params : ndarray, shape S + (2, 2)
+        Core parameters.
+
+    Examples
+    --------
+    >>> import circledist as cd
+    >>> balls = cd.Sphere([[3.0, 0.0, 0.0], [1.0, 0.0, 0.0]], 0.5)
+    >>> b = cd.sphere_sphere(balls, cd.Sphere((0, 0, 0), 1.0))
+    >>> b.distance, b.core_distance
+    (array([ 1.5, -0.5]), array([3., 1.]))
+    """
 
     core_distance = property(lambda self: self._field("core_distance"), doc="core distances")
     flags = property(lambda self: self._field("flags"), doc="bits of cdist_contact_flag")
@@ -392,8 +669,23 @@ class BatchContact(_Batch):
 
 
 class BatchGradObject:
-    """The derivatives with respect to one object of every entry (fields of cdist_grad_object as
-    arrays: d_center etc. S + (3,), d_radius etc. S); views of the BatchGrad's buffer."""
+    """The derivatives with respect to one object of every entry: the fields of
+    cdist_grad_object as arrays (d_center etc. S + (3,), d_radius etc. S), views of the
+    BatchGrad's buffer.
+
+    Parameters
+    ----------
+    raw : ndarray of the cdist_grad_object dtype
+        One object's part of the gradient buffer.
+
+    Examples
+    --------
+    >>> import circledist as cd
+    >>> points = [[3.0, 0.0, 0.0], [0.0, 0.0, 3.0]]
+    >>> res, grads = cd.point_circle_grad(points, cd.Circle((0, 0, 0), (0, 0, 1), 1.0))
+    >>> grads.obj[0].d_radius_swept
+    array([0., 0.])
+    """
 
     __slots__ = ("_raw",)
 
@@ -413,10 +705,34 @@ class BatchGradObject:
 
 
 class BatchGrad:
-    """Gradients of an array of queries (struct cdist_grad per entry): obj[0], obj[1]
-    (BatchGradObject: obj[k].d_center is S + (3,), obj[k].d_radius is S, ...), flags (S),
-    differentiable (S, bool), status (S); a bad entry's gradient is NaN. raw: the buffer
-    (numpy dtype GRAD_DTYPE)."""
+    """Gradients of an array of queries (struct cdist_grad per entry); a bad entry's gradient
+    is NaN.
+
+    Parameters
+    ----------
+    raw : ndarray of GRAD_DTYPE
+        The buffer.
+    status : ndarray of int32
+        The status of each entry (shared with the BatchResult or BatchContact of the call).
+
+    Attributes
+    ----------
+    obj : tuple of two BatchGradObject
+        obj[k].d_center is S + (3,), obj[k].d_radius is S, ...
+    flags, differentiable, status, ok : ndarray, shape S
+        As in Grad, per entry.
+
+    Examples
+    --------
+    >>> import circledist as cd
+    >>> points = [[3.0, 0.0, 0.0], [0.0, 3.0, 0.0]]
+    >>> res, grads = cd.point_circle_grad(points, cd.Circle((0, 0, 0), (0, 0, 1), 1.0))
+    >>> grads.obj[0].d_center
+    array([[1., 0., 0.],
+           [0., 1., 0.]])
+    >>> grads.differentiable
+    array([ True,  True])
+    """
 
     def __init__(self, raw, status):
         self.raw = raw
@@ -465,6 +781,8 @@ if _lib.kind_name is not None:  # the batch kinds must be the C library's, with 
     if _lib.kind_size_a(KIND_CURVE_CIRCLE) != ctypes.sizeof(_lib.Curve):
         raise ImportError("circledist: the library's cdist_curve does not match this package")
 _SINGLE = {name: _lib.single_query(name) for name, _, _, _ in _KINDS}
+#: name -> docstring maker of each generated query (module=False: the Query method).
+_DOCS = {}
 
 
 def _rows(data, shape, n, width):
@@ -509,13 +827,39 @@ def _progress_bar(total):
 
 
 class Query:
-    """A query handle: the library's options and workspaces (cdist_query). Use one per thread
-    (calls on one handle from several threads are serialised by a lock).
+    """A query handle: the library's options and workspaces (cdist_query).
 
-    Query(method=Method.AUTO, unit_tolerance=None, curve_samples=None, max_iterations=None,
-    threads=1). Every query kind is a method, e.g. q.circle_circle(a, b); the module-level
-    functions of the same names use a per-thread default handle. Use as a context manager or
-    call close()."""
+    Use one per thread (calls on one handle from several threads are serialised by a lock).
+    Every query kind is a method, e.g. q.circle_circle(a, b); the module-level functions of the
+    same names use a per-thread default handle (default_query()). Use as a context manager or
+    call close().
+
+    Parameters
+    ----------
+    method : Method, str or int, optional
+        The algorithm (default Method.AUTO).
+    unit_tolerance : float, optional
+        Relative tolerance on the length of unit normals and directions (library default 1e-6).
+    curve_samples : int, optional
+        Sampling intervals for callback curves, helices (per turn) and Beziers (default 512).
+    max_iterations : int, optional
+        Iteration limit of Method.ITERATION.
+    threads : int, optional
+        Worker threads of the vectorised calls (default 1).
+
+    Raises
+    ------
+    CircleDistError
+        An option the library rejects.
+
+    Examples
+    --------
+    >>> import circledist as cd
+    >>> with cd.Query(method="robust") as q:
+    ...     r = q.circle_circle(cd.Circle((0, 0, 2), (0, 0, 1), 1.0), cd.Circle((1, 0, 0), (0, 1, 0), 1.0))
+    ...     print(q.method, r.method)
+    robust robust
+    """
 
     def __init__(self, method=Method.AUTO, unit_tolerance=None, curve_samples=None,
                  max_iterations=None, threads=1):
@@ -554,7 +898,13 @@ class Query:
         return self._q
 
     def set_method(self, method):
-        """Set the algorithm (a Method, its name such as "robust", or its number)."""
+        """Set the algorithm of the handle.
+
+        Parameters
+        ----------
+        method : Method, str or int
+            A Method, its name such as "robust", or its number.
+        """
         self._check(_lib.query_set_method(self._handle(), _method_value(method)))
 
     @property
@@ -573,8 +923,16 @@ class Query:
         return _lib.query_get_curve_samples(self._handle())
 
     def set_threads(self, threads):
-        """Worker threads used by the vectorised calls (1..256; creating them has a cost, so
-        the count is kept until changed). Results are identical for every count."""
+        """Set the worker threads used by the vectorised calls.
+
+        Creating threads has a cost, so the count is kept until changed; results are identical
+        for every count.
+
+        Parameters
+        ----------
+        threads : int
+            1..256.
+        """
         threads = _threads_value(threads)
         if threads == self._threads:
             return
@@ -845,22 +1203,8 @@ def _make_method(name, kind, cls_a, cls_b):
         return self._run(name, kind, a, b, method, threads, distance_only, single, out, progress)
 
     query.__name__ = name
-    query.__doc__ = """Minimum distance from a %(A)s (a) to a %(B)s (b): cdist_%(name)s.
-
-        a: %(A)s, b: %(B)s -- one object each, or arrays of objects (see the classes), whose
-        batch shapes broadcast. One object each: returns a Result and raises CircleDistError
-        on bad input. Arrays: one C call (cdist_batch) answers all entries and returns a
-        BatchResult; a bad entry gets its status and NaN, the others are answered.
-        method: a Method (or its name) for this call only; threads: worker threads for the
-        vectorised call (kept on the handle); distance_only: only distances (and statuses),
-        through cdist_batch_distance (SIMD screening path); always returns a BatchResult.
-        out: a BatchResult of the same shape (and distance_only) to write into instead of
-        allocating new buffers (saves the page faults of fresh memory in repeated calls).
-        progress: True for a progress bar (tqdm if installed, else a line on stderr), or a
-        callable progress(done, total) -> stop (True stops the batch: the entries not answered
-        get status CDIST_ERR_CANCELLED). Long batches honour Ctrl-C: KeyboardInterrupt well within
-        0.2 s of the signal; the entries answered before it are in out=, if given.""" % {
-        "A": cls_a.__name__, "B": cls_b.__name__, "name": name}
+    _DOCS[name] = functools.partial(_docs.query_doc, name, cls_a.__name__, cls_b.__name__, "result")
+    query.__doc__ = _DOCS[name](module=False)
     return query
 
 
@@ -923,35 +1267,9 @@ def _make_swept_method(name, kind, cls_a, cls_b, grad):
                                "distance" if distance_only else "contact", out, progress)
 
     query.__name__ = c_name
-    what = {"A": cls_a.__name__, "B": cls_b.__name__, "name": c_name}
-    arrays = """a: %(A)s, b: %(B)s -- one object each, or arrays of objects whose batch shapes
-        broadcast (one C call, %(BATCH)s; a bad entry gets its status and NaN, the others are
-        answered, bit-identical to the single query). method: a Method (or its name) for this
-        call only; threads: worker threads of the vectorised call (kept on the handle);
-        out: the return value of an earlier call of the same shape to write into; progress:
-        True (a bar: tqdm if installed) or progress(done, total) -> stop, as for the other
-        queries (long batches honour Ctrl-C)."""
-    if contact and not grad:
-        doc = """Signed distance from a %(A)s (a) to a %(B)s (b): cdist_%(name)s.
-
-        """ + arrays + """ distance_only: only the signed distances (cdist_batch_distance).
-        Contact.distance = core_distance - (r0 + r1), negative when the solids overlap; witness
-        points, core points, normals. One object each: a Contact, CircleDistError on bad input
-        (e.g. a negative radius); arrays: a BatchContact."""
-        what["BATCH"] = "cdist_batch_contact"
-    elif contact:
-        doc = """Signed distance from a %(A)s (a) to a %(B)s (b) with its gradient: cdist_%(name)s.
-
-        """ + arrays + """ One object each: (Contact, Grad), the derivatives of the signed
-        distance (d_radius_swept = -1 for each swept object); arrays: (BatchContact, BatchGrad)."""
-        what["BATCH"] = "cdist_batch_grad"
-    else:
-        doc = """Minimum distance from a %(A)s (a) to a %(B)s (b) with its gradient: cdist_%(name)s.
-
-        """ + arrays + """ One object each: (Result, Grad); arrays: (BatchResult, BatchGrad),
-        e.g. grads.obj[0].d_center of shape S + (3,)."""
-        what["BATCH"] = "cdist_batch_grad"
-    query.__doc__ = doc % what
+    _DOCS[c_name] = functools.partial(_docs.query_doc, c_name, cls_a.__name__, cls_b.__name__,
+                                      ("contact" if contact else "result") + ("_grad" if grad else ""))
+    query.__doc__ = _DOCS[c_name](module=False)
     return query
 
 
@@ -972,20 +1290,9 @@ def _curve_method(name, kind):
         other = coerce(other, Circle if kind == KIND_CURVE_CIRCLE else Disk, "%s: argument other" % name)
         return self._curve(name, kind, f, t0, t1, other, method, threads, distance_only, out)
     query.__name__ = name
-    query.__doc__ = """Minimum distance from the curve f(t), t in [t0, t1], to a %s: cdist_%s.
-
-        f(t) -> (position, derivative): two length-3 sequences, the point of the curve and its
-        exact derivative at t (the curve must be continuously differentiable). other may be an
-        array of objects (one vectorised call; the same curve for every entry).
-        Cost: the library samples the curve (curve_samples intervals, default 512) and refines
-        each bracketed minimum, so one query calls f hundreds of times (829 for 1.4 turns of a
-        helix); each call from C into Python costs several microseconds (the ctypes callback
-        and conversions, against 0.2 us for f itself), which dominates: that query took ~7 ms,
-        about 7x the same curve as a built-in Helix (use Helix, Bezier3, Arc or Segment when the
-        curve is one of them). With threads > 1 the callbacks still run one at a time (GIL). An exception raised by f aborts the query and is re-raised
-        (chained to the CircleDistError CDIST_ERR_CALLBACK_FAILED); in the vectorised form the
-        first exception is re-raised after the call and the other answers are discarded.""" % (
-        "circle" if kind == KIND_CURVE_CIRCLE else "disk", name)
+    _DOCS[name] = functools.partial(_docs.curve_doc, name,
+                                    "Circle" if kind == KIND_CURVE_CIRCLE else "Disk")
+    query.__doc__ = _DOCS[name](module=False)
     return query
 
 
@@ -994,9 +1301,33 @@ Query.curve_disk = _curve_method("curve_disk", KIND_CURVE_DISK)
 
 
 def circle_basis(circle):
-    """(U, V): the basis in which circle angles are measured (cdist_circle_basis). With N the
-    normalised normal and k the index of N's smallest-magnitude component, U = e_k - N_k N
-    normalised and V = N x U. circle: one Circle (or Disk)."""
+    """The basis in which circle angles are measured (cdist_circle_basis).
+
+    With N the normalised normal and k the index of N's smallest-magnitude component,
+    U = e_k - N_k N normalised and V = N x U.
+
+    Parameters
+    ----------
+    circle : Circle or Disk
+        One circle (or a (center, normal, radius) tuple).
+
+    Returns
+    -------
+    (U, V) : tuple of two ndarray, shape (3,)
+
+    Raises
+    ------
+    CircleDistError
+        A circle the library rejects (e.g. a zero normal).
+    ValueError
+        An array of circles.
+
+    Examples
+    --------
+    >>> import circledist as cd
+    >>> cd.circle_basis(cd.Circle((0, 0, 0), (0, 0, 1), 1.0))
+    (array([1., 0., 0.]), array([0., 1., 0.]))
+    """
     c = coerce(circle, Circle, "circle_basis: circle")
     if c.shape:
         raise ValueError("circle_basis: circle must be one Circle, got an array of shape %s" % (c.shape,))
@@ -1008,8 +1339,33 @@ def circle_basis(circle):
 
 
 def circle_point(circle, angle):
-    """The point of one circle at `angle` (radians, in the basis of circle_basis()):
-    C + r (cos a U + sin a V) (cdist_circle_point). angle may be an array: returns (..., 3)."""
+    """The point of one circle at an angle: C + r (cos a U + sin a V) (cdist_circle_point).
+
+    Parameters
+    ----------
+    circle : Circle or Disk
+        One circle (or a (center, normal, radius) tuple).
+    angle : float or array_like
+        Radians, in the basis of circle_basis().
+
+    Returns
+    -------
+    ndarray, shape angle.shape + (3,)
+
+    Raises
+    ------
+    CircleDistError
+        A circle the library rejects.
+    ValueError
+        An array of circles.
+
+    Examples
+    --------
+    >>> import circledist as cd
+    >>> cd.circle_point(cd.Circle((0, 0, 1), (0, 0, 1), 2.0), [0.0, 0.0])
+    array([[2., 0., 1.],
+           [2., 0., 1.]])
+    """
     c = coerce(circle, Circle, "circle_point: circle")
     if c.shape:
         raise ValueError("circle_point: circle must be one Circle, got an array of shape %s" % (c.shape,))
@@ -1027,7 +1383,19 @@ _default = threading.local()
 
 
 def default_query():
-    """This thread's default Query handle (used by the module-level query functions)."""
+    """This thread's default Query handle, used by the module-level query functions.
+
+    Returns
+    -------
+    Query
+        Created on first use in each thread.
+
+    Examples
+    --------
+    >>> import circledist as cd
+    >>> cd.default_query() is cd.default_query()
+    True
+    """
     q = getattr(_default, "query", None)
     if q is None:
         q = _default.query = Query()
@@ -1049,10 +1417,7 @@ def _module_function(name):
     query.__signature__ = sig.replace(parameters=params + [
         inspect.Parameter("query", inspect.Parameter.KEYWORD_ONLY, default=None)])
     query.__name__ = name
-    query.__doc__ = unbound.__doc__ + """
-
-        Module-level form: uses this thread's default Query unless query= is given; threads
-        defaults to 1 here."""
+    query.__doc__ = _DOCS[name](module=True)
     return query
 
 

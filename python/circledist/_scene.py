@@ -74,10 +74,34 @@ def _groups(objects, what):
 class ScenePairs:
     """Answered pairs of a scene query, as numpy arrays (one entry per pair, sorted by i, j).
 
-    i, j: ids (j is -1 for a query object); distance: signed distance; points (n, 2, 3): the
-    closest pair's witness points (points[:, 0] on object i); all_points (n, 2, 2, 3) with
-    num_pairs (1 or 2) valid; equidistant (bool); status (0, or the status of a pair the
-    library has no exact query for, with distance NaN). Unpacks as ``i, j, distance, points``."""
+    Unpacks as ``i, j, distance, points``.
+
+    Parameters
+    ----------
+    raw : ndarray of SCENE_PAIR_DTYPE
+        The C pair records (the Scene queries build ScenePairs themselves).
+
+    Attributes
+    ----------
+    i, j : ndarray of int64, shape (n,)
+        Ids (j is -1 for a query object).
+    distance : ndarray, shape (n,)
+        Signed distances.
+    points : ndarray, shape (n, 2, 3)
+        The closest pair's witness points (points[:, 0] on object i).
+    all_points : ndarray, shape (n, 2, 2, 3)
+        Both pairs, num_pairs (1 or 2) of them valid.
+    num_pairs, equidistant, status : ndarray, shape (n,)
+        status is 0, or the status of a pair the library has no exact query for (distance NaN).
+
+    Examples
+    --------
+    >>> import circledist as cd
+    >>> with cd.Scene(cd.Sphere([[0, 0, 0], [1, 0, 0], [5, 0, 0]], 0.25)) as scene:
+    ...     i, j, distance, points = scene.pairs_within(1.0)
+    >>> i, j, distance
+    (array([0]), array([1]), array([0.5]))
+    """
 
     def __init__(self, raw):
         self.raw = raw
@@ -103,15 +127,38 @@ class ScenePairs:
 class Scene:
     """Many objects at once: a certified broad phase over the library's exact queries.
 
-    Scene(objects=(), query=None, threads=1): objects is one object array (e.g. Torus(...) with
-    array fields) or a list of them of any kinds (Point, Segment, Circle, Disk, Arc, Sphere,
-    Capsule, Torus, RoundedDisk); ids are their positions in that order (later add() calls
-    continue the numbering). Distances are the signed distances of the swept queries
-    (core distance minus the radii), bit for bit those of the pair queries.
+    Ids are the objects' positions in the order given (later add() calls continue the
+    numbering). Distances are the signed distances of the swept queries (core distance minus
+    the radii), bit for bit those of the pair queries. Long queries return to Python between
+    blocks of answers, so Ctrl-C interrupts them (KeyboardInterrupt).
 
-    Invalid objects keep their ids and take part in nothing; add() then raises CircleDistError
-    naming the first one (the valid ones are added). Long queries return to Python between
-    blocks of answers, so Ctrl-C interrupts them (KeyboardInterrupt)."""
+    Parameters
+    ----------
+    objects : GeometricObject or sequence of GeometricObject, optional
+        One object array (e.g. Torus(...) with array fields) or a list of them of any kinds
+        (Point, Segment, Circle, Disk, Arc, Sphere, Capsule, Torus, RoundedDisk).
+    query : Query, optional
+        The handle for the exact queries (default: a new one).
+    threads : int, optional
+        Worker threads of the handle (default 1).
+
+    Raises
+    ------
+    CircleDistError
+        Invalid objects: they keep their ids and take part in nothing; the error names the
+        first one (the valid ones are added).
+
+    Examples
+    --------
+    >>> import circledist as cd
+    >>> balls = cd.Sphere([[0, 0, 0], [1, 0, 0], [5, 0, 0]], 0.25)
+    >>> with cd.Scene(balls) as scene:
+    ...     print(len(scene), scene.closest_pair()[:3])
+    ...     near = scene.nearest((4.0, 0.0, 0.0))
+    3 (0, 1, 0.5)
+    >>> near.i, near.distance
+    (array([2]), array([0.75]))
+    """
 
     def __init__(self, objects=(), query=None, threads=1):
         if _new is None:
@@ -155,7 +202,23 @@ class Scene:
 
     # ---- objects ---------------------------------------------------------------------------
     def add(self, objects):
-        """Add objects (one object array or a list of them); returns their ids (int64 array)."""
+        """Add objects; their ids continue the numbering.
+
+        Parameters
+        ----------
+        objects : GeometricObject or sequence of GeometricObject
+            One object array or a list of them (any kinds).
+
+        Returns
+        -------
+        ndarray of int64
+            Their ids, in order.
+
+        Raises
+        ------
+        CircleDistError
+            Invalid objects (they keep their ids; the valid ones are added).
+        """
         ids = []
         first_bad = None
         with self._query._lock, self._lock:
@@ -171,8 +234,20 @@ class Scene:
         return np.concatenate(ids) if ids else np.empty(0, np.int64)
 
     def update(self, ids, objects):
-        """Move or reshape objects: objects (one array, or a list of arrays of any kinds) replace
-        ids in order. No rebuild: the tree is refitted before the next query."""
+        """Move or reshape objects. No rebuild: the tree is refitted before the next query.
+
+        Parameters
+        ----------
+        ids : array_like of int
+            The ids to replace.
+        objects : GeometricObject or sequence of GeometricObject
+            One array, or a list of arrays of any kinds, replacing ids in order.
+
+        Raises
+        ------
+        ValueError
+            As many objects as ids are needed.
+        """
         ids = np.ascontiguousarray(np.asarray(ids, dtype=np.int64).reshape(-1)).astype(np.uintp)
         groups = _groups(objects, "objects")
         total = sum(len(r) for _, r in groups)
@@ -187,14 +262,40 @@ class Scene:
                 at += len(rows)
 
     def remove(self, ids):
-        """Remove objects (their ids are not reused)."""
+        """Remove objects (their ids are not reused).
+
+        Parameters
+        ----------
+        ids : array_like of int
+            The ids to remove.
+
+        Raises
+        ------
+        CircleDistError
+            A status the library reports for the call.
+        """
         ids = np.ascontiguousarray(np.asarray(ids, dtype=np.int64).reshape(-1)).astype(np.uintp)
         with self._query._lock, self._lock:
             self._check(_remove(self._query._handle(), self._handle(), len(ids), ids.ctypes.data))
 
     def set_groups(self, ids=None, group=None, chain=None):
         """Skip filter: pairs of the same non-zero group are skipped, and consecutive ids i, i + 1
-        of the same non-zero chain. ids None: 0 .. n - 1 (n the length of group or chain)."""
+        of the same non-zero chain.
+
+        Parameters
+        ----------
+        ids : array_like of int, optional
+            The objects (None: 0 .. n - 1, n the length of group or chain).
+        group : array_like of uint32, optional
+            Group of each object (0: none).
+        chain : array_like of uint32, optional
+            Chain of each object (0: none).
+
+        Raises
+        ------
+        CircleDistError
+            A status the library reports for the call.
+        """
         g = None if group is None else np.ascontiguousarray(np.asarray(group, dtype=np.uint32).reshape(-1))
         c = None if chain is None else np.ascontiguousarray(np.asarray(chain, dtype=np.uint32).reshape(-1))
         n = len(g) if g is not None else (len(c) if c is not None else 0)
@@ -211,7 +312,18 @@ class Scene:
                                     None if g is None else g.ctypes.data, None if c is None else c.ctypes.data))
 
     def object_status(self, ids):
-        """cdist_status of each id (0: live; its validation status when invalid)."""
+        """The status of each object.
+
+        Parameters
+        ----------
+        ids : array_like of int
+            The ids.
+
+        Returns
+        -------
+        ndarray of int32
+            cdist_status of each id (0: live; its validation status when invalid).
+        """
         return np.array([_object_status(self._handle(), int(i)) for i in np.asarray(ids).reshape(-1)],
                         dtype=np.int32)
 
@@ -229,7 +341,23 @@ class Scene:
 
     # ---- queries ---------------------------------------------------------------------------
     def pairs_within(self, delta):
-        """Every pair i < j with distance <= delta (one C call; returns a ScenePairs)."""
+        """Every pair i < j with distance <= delta (one C call).
+
+        Parameters
+        ----------
+        delta : float
+            The largest signed distance reported.
+
+        Returns
+        -------
+        ScenePairs
+            Sorted by (i, j).
+
+        Raises
+        ------
+        CircleDistError
+            A status the library reports for the call.
+        """
         chunks = []
         state = {"error": None}
 
@@ -266,7 +394,25 @@ class Scene:
             capacity = count.value
 
     def pairs_between(self, other, delta):
-        """Every pair (i of this scene, j of other) with distance <= delta."""
+        """Every pair (i of this scene, j of other) with distance <= delta.
+
+        Parameters
+        ----------
+        other : Scene
+            The second scene.
+        delta : float
+            The largest signed distance reported.
+
+        Returns
+        -------
+        ScenePairs
+            Sorted by (i, j).
+
+        Raises
+        ------
+        CircleDistError
+            A status the library reports for the call.
+        """
         with self._query._lock, self._lock, other._lock:
             return self._sized(lambda out, cap, cnt: _between(self._query._handle(), self._handle(), other._handle(),
                                                               float(delta), out, cap, cnt), 4 * len(self) + 64)
@@ -276,7 +422,18 @@ class Scene:
         return ScenePairs(out)
 
     def closest_pair(self):
-        """The closest pair (smallest distance, then smallest (i, j)): (i, j, distance, points)."""
+        """The closest pair (smallest distance, then smallest (i, j)).
+
+        Returns
+        -------
+        (i, j, distance, points)
+            Two ids, the signed distance and the witness points, shape (2, 3).
+
+        Raises
+        ------
+        CircleDistError
+            A status the library reports for the call.
+        """
         out = np.empty(1, SCENE_PAIR_DTYPE)
         with self._query._lock, self._lock:
             st = _closest(self._query._handle(), self._handle(), out.ctypes.data)
@@ -284,7 +441,23 @@ class Scene:
         return int(p.i[0]), int(p.j[0]), float(p.distance[0]), p.points[0]
 
     def closest_pair_between(self, other):
-        """The closest pair (i of this scene, j of other): (i, j, distance, points)."""
+        """The closest pair (i of this scene, j of other).
+
+        Parameters
+        ----------
+        other : Scene
+            The second scene.
+
+        Returns
+        -------
+        (i, j, distance, points)
+            Two ids, the signed distance and the witness points, shape (2, 3).
+
+        Raises
+        ------
+        CircleDistError
+            A status the library reports for the call.
+        """
         out = np.empty(1, SCENE_PAIR_DTYPE)
         with self._query._lock, self._lock, other._lock:
             st = _closest_between(self._query._handle(), self._handle(), other._handle(), out.ctypes.data)
@@ -300,7 +473,25 @@ class Scene:
         return kind, rows
 
     def nearest(self, obj, k=1):
-        """The k objects nearest to obj (any kind), by distance then id: ScenePairs (i = ids)."""
+        """The k objects nearest to obj, by distance then id.
+
+        Parameters
+        ----------
+        obj : GeometricObject or array_like, shape (3,)
+            One object of any kind (a point as its coordinates).
+        k : int, optional
+            How many (default 1).
+
+        Returns
+        -------
+        ScenePairs
+            i: the ids, j: -1.
+
+        Raises
+        ------
+        CircleDistError
+            A status the library reports for the call.
+        """
         kind, rows = self._query_object(obj)
         k = int(k)
         out = np.empty(max(k, 1), SCENE_PAIR_DTYPE)
@@ -312,7 +503,25 @@ class Scene:
         return ScenePairs(out[:count.value])
 
     def within(self, obj, delta):
-        """Every object within delta of obj (any kind), sorted by id: ScenePairs (i = ids)."""
+        """Every object within delta of obj, sorted by id.
+
+        Parameters
+        ----------
+        obj : GeometricObject or array_like, shape (3,)
+            One object of any kind (a point as its coordinates).
+        delta : float
+            The largest signed distance reported.
+
+        Returns
+        -------
+        ScenePairs
+            i: the ids, j: -1.
+
+        Raises
+        ------
+        CircleDistError
+            A status the library reports for the call.
+        """
         kind, rows = self._query_object(obj)
         with self._query._lock, self._lock:
             return self._sized(lambda out, cap, cnt: _within(self._query._handle(), self._handle(), kind,

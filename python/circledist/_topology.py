@@ -39,11 +39,36 @@ if _link_size is not None and _link_size() != LINK_DTYPE.itemsize:
 
 
 def link_details(a, b, *, query=None):
-    """The full cdist_link records (LINK_DTYPE) of a against b, broadcast, from one C call.
+    """The full cdist_link records of a against b, broadcast, from one C call.
 
-    a, b: both Circle or both Torus (single objects or arrays). Returns (records, status), two
-    arrays of the broadcast batch shape. Entries with a bad object get their status (see
-    circledist.status_name) and linking == LINK_ERROR; the others are answered."""
+    Parameters
+    ----------
+    a, b : Circle or Torus
+        Both Circle or both Torus, single objects or arrays.
+    query : Query, optional
+        The handle (default: default_query()).
+
+    Returns
+    -------
+    records : ndarray of LINK_DTYPE
+        linking, core_linking, distance, core_distance, scale, flags; broadcast batch shape.
+    status : ndarray of int32
+        Entries with a bad object get their status (see status_name) and linking ==
+        LINK_ERROR; the others are answered.
+
+    Raises
+    ------
+    TypeError
+        Not two Circles or two Tori.
+
+    Examples
+    --------
+    >>> import circledist as cd
+    >>> rec, status = cd.link_details(cd.Circle((0, 0, 0), (0, 0, 1), 1.0),
+    ...                               cd.Circle((1, 0, 0), (0, 1, 0), 1.0))
+    >>> int(rec["linking"]), float(rec["distance"]), int(status)
+    (1, 1.0, 0)
+    """
     if type(a) is not type(b) or type(a) not in _BATCH:
         raise TypeError("linking: expected two Circle or two Torus objects, got %s and %s"
                         % (type(a).__name__, type(b).__name__))
@@ -72,12 +97,41 @@ def link_details(a, b, *, query=None):
 
 
 def linking(a, b, *, query=None):
-    """Linking number of circles (or solid tori) a and b: -1, 0 or +1, LINK_TOUCHING (2) when
-    they meet (distance <= 2^-40 of the scale), for tori LINK_OVERLAP (3) when the solids
-    overlap. Arrays of objects broadcast and are answered by one C call; the result is then an
-    int array (LINK_ERROR (4) for a bad entry), else an int (a bad object raises
-    CircleDistError). Sign: +1 when b passes through a's disk along a's normal, each circle
-    oriented counterclockwise about its own normal (docs/linking.md)."""
+    """Linking number of circles (or solid tori) a and b.
+
+    Sign: +1 when b passes through a's disk along a's normal, each circle oriented
+    counterclockwise about its own normal (docs/linking.md).
+
+    Parameters
+    ----------
+    a, b : Circle or Torus
+        Both Circle or both Torus; arrays broadcast and are answered by one C call.
+    query : Query, optional
+        The handle (default: default_query()).
+
+    Returns
+    -------
+    int or ndarray of int32
+        -1, 0 or +1; LINK_TOUCHING (2) when they meet (distance <= 2^-40 of the scale); for
+        tori LINK_OVERLAP (3) when the solids overlap; for arrays LINK_ERROR (4) for a bad
+        entry.
+
+    Raises
+    ------
+    CircleDistError
+        A bad object (single objects only).
+    TypeError
+        Not two Circles or two Tori.
+
+    Examples
+    --------
+    >>> import circledist as cd
+    >>> a = cd.Circle((0, 0, 0), (0, 0, 1), 1.0)
+    >>> cd.linking(a, cd.Circle((1, 0, 0), (0, 1, 0), 1.0))
+    1
+    >>> cd.linking(a, cd.Circle((5, 0, 0), (0, 1, 0), 1.0))
+    0
+    """
     out, status = link_details(a, b, query=query)
     if out.shape == ():
         if status != 0:
@@ -154,14 +208,46 @@ def _rec_rows(arr, shape, n):
 
 def time_of_impact(a, b, motion_a=None, motion_b=None, *, target=0.0, tolerance=1e-9,
                    max_iterations=100000, query=None):
-    """First time t in [0, 1] at which swept objects a and b, moving rigidly, reach the signed
-    distance `target` (within `tolerance`), by conservative advancement (never tunnels).
+    """First time t in [0, 1] at which swept objects a and b, moving rigidly, reach a signed
+    distance, by conservative advancement (never tunnels; docs/toi.md).
 
-    a, b: Sphere, Capsule, Torus or RoundedDisk (single or arrays, broadcast). motion_a,
-    motion_b: None (still) or (center, translation, rotation): x(t) = c + t T + R(t w)(x - c),
-    w the rotation vector (axis times angle over [0, 1]); docs/toi.md. Returns TOI_DTYPE
-    records (state TOI_NONE / TOI_HIT / TOI_ITERATION_LIMIT, iterations, t, distance, contact)
-    and a status array, from one C call (cdist_toi_batch)."""
+    Parameters
+    ----------
+    a, b : Sphere, Capsule, Torus or RoundedDisk
+        Single objects or arrays (broadcast).
+    motion_a, motion_b : tuple (center, translation, rotation) or None, optional
+        None: still. Else x(t) = c + t T + R(t w)(x - c), w the rotation vector (axis times
+        angle over [0, 1]).
+    target : float, optional
+        The signed distance to reach (default 0: contact).
+    tolerance : float, optional
+        Accuracy of the distance at the reported time.
+    max_iterations : int, optional
+        Advancement steps before TOI_ITERATION_LIMIT.
+    query : Query, optional
+        The handle (default: default_query()).
+
+    Returns
+    -------
+    records : ndarray of TOI_DTYPE
+        state (TOI_NONE / TOI_HIT / TOI_ITERATION_LIMIT), iterations, t, distance, contact.
+    status : ndarray of int32
+        The status of each entry (one C call, cdist_toi_batch).
+
+    Raises
+    ------
+    TypeError, ValueError
+        Objects of another type, or shapes that do not broadcast.
+
+    Examples
+    --------
+    >>> import circledist as cd
+    >>> ball = cd.Sphere((0, 0, 0), 0.5)
+    >>> rec, status = cd.time_of_impact(ball, cd.Sphere((3, 0, 0), 0.5),
+    ...                                 ((0, 0, 0), (4, 0, 0), (0, 0, 0)))
+    >>> int(rec["state"]) == cd.TOI_HIT, round(float(rec["t"]), 6)
+    (True, 0.5)
+    """
     if _toi_batch is None:
         raise RuntimeError("time_of_impact: the loaded libcircledist has no cdist_toi_batch")
     sa, sb = _shapes(a, "time_of_impact a"), _shapes(b, "time_of_impact b")
@@ -197,17 +283,41 @@ def chain_invariants(tori, expected_linking=None, *, query=None):
     """The two invariants a simulated chain of solid tori must keep, from one C call over every
     pair (N (N - 1) / 2 pairs: meant for chains of hundreds of links).
 
-    tori: a Torus array of shape (N,) in chain order (link i hangs in links i - 1 and i + 1).
-    expected_linking: the neighbours' core linking numbers to compare with, shape (N - 1,)
-    (e.g. those of the first frame); None: only report them.
+    Parameters
+    ----------
+    tori : Torus array, shape (N,)
+        In chain order (link i hangs in links i - 1 and i + 1).
+    expected_linking : array_like, shape (N - 1,), optional
+        The neighbours' core linking numbers to compare with (e.g. those of the first frame);
+        None: only report them.
+    query : Query, optional
+        The handle (default: default_query()).
 
-    Returns a dict:
-      max_penetration   largest overlap depth -signed distance over all pairs (0 if none);
-      worst_pair        (i, j) of that overlap, or None;
-      neighbour_linking core linking numbers of the pairs (i, i + 1) (-1, 0, +1, or
-                        LINK_TOUCHING when the core circles meet);
-      linking_kept      neighbour_linking equals expected_linking (True when not given);
-      status_ok         every pair was answered (no invalid torus)."""
+    Returns
+    -------
+    dict
+        max_penetration: largest overlap depth -signed distance over all pairs (0 if none);
+        worst_pair: (i, j) of that overlap, or None; neighbour_linking: core linking numbers
+        of the pairs (i, i + 1) (-1, 0, +1, or LINK_TOUCHING when the core circles meet);
+        linking_kept: neighbour_linking equals expected_linking (True when not given);
+        status_ok: every pair was answered (no invalid torus).
+
+    Raises
+    ------
+    TypeError
+        tori is not a Torus array of shape (N,).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import circledist as cd
+    >>> centers = [[0, 0, 0], [1, 0, 0], [2, 0, 0]]
+    >>> normals = [[0, 0, 1], [0, 1, 0], [0, 0, 1]]
+    >>> chain = cd.Torus(cd.Circle(np.array(centers, float), np.array(normals, float), 0.6), 0.05)
+    >>> inv = cd.chain_invariants(chain)
+    >>> inv["max_penetration"], inv["worst_pair"], inv["neighbour_linking"].tolist(), inv["status_ok"]
+    (0.0, None, [1, -1], True)
+    """
     if not isinstance(tori, Torus) or len(tori.shape) != 1:
         raise TypeError("chain_invariants: expected a Torus array of shape (N,)")
     n = tori.shape[0]
