@@ -1035,6 +1035,35 @@ CDIST_API cdist_status cdist_scene_nearest(cdist_query *q, cdist_scene *s, cdist
 CDIST_API cdist_status cdist_scene_within(cdist_query *q, cdist_scene *s, cdist_scene_kind kind, const void *object,
                                           double delta, cdist_scene_pair *out, size_t capacity, size_t *count);
 
+/** One pair of cdist_scene_linked_pairs(). Output only; new fields take their place in
+ *  `reserved`. */
+typedef struct cdist_scene_link {
+    size_t i;          /**< id of the first ring (i < j) */
+    size_t j;          /**< id of the second ring */
+    int status;        /**< ::CDIST_OK, or why the pair could not be answered */
+    int reserved_int;  /**< 0 */
+    cdist_link link;   /**< cdist_link_tori() of the two rings, i first (bit for bit) */
+    double reserved[2]; /**< reserved for future fields; 0 */
+} cdist_scene_link;
+
+/** sizeof(cdist_scene_link) as compiled into the library. */
+CDIST_API size_t cdist_scene_link_size(void);
+/** Every pair of rings i < j of the scene that is not certified unlinked and apart: the
+ *  objects of kinds ::CDIST_SCENE_CIRCLE and ::CDIST_SCENE_TORUS (a circle is a torus of tube
+ *  radius 0; other kinds take no part) are answered with cdist_link_tori() semantics, and a
+ *  pair is reported when its linking or core_linking is not 0: linked cores (+-1), touching
+ *  cores (::CDIST_LINK_TOUCHING) and overlapping tori (::CDIST_LINK_OVERLAP, whatever the
+ *  cores). Sorted by (i, j); groups and chains do not apply (linked neighbours are the point).
+ *  The broad phase is exact for this question: two linked circles each cross the other's open
+ *  disk, so their bounding balls (centre C, radius r) intersect and so do their boxes; pairs
+ *  whose solids' bounding balls are apart by more than 2^-30 L (L = max(r_a, r_b,
+ *  |C_b - C_a|)) plus the scene's bound margin are never answered, and the linking query gives
+ *  0 for all of them (docs/scene.md). Conventions of cdist_scene_pairs_within() for out,
+ *  capacity and *count; a pair that could not be answered is included with its status and
+ *  the call returns the first such status. */
+CDIST_API cdist_status cdist_scene_linked_pairs(cdist_query *q, cdist_scene *s, cdist_scene_link *out,
+                                                size_t capacity, size_t *count);
+
 #ifdef __cplusplus
 }
 #endif

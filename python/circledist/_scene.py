@@ -9,6 +9,7 @@ from . import _lib
 from ._objects import (Arc, Capsule, Circle, Disk, GeometricObject, Point, RoundedDisk, Segment,
                        Sphere, Torus, coerce)
 from ._query import CircleDistError, Query
+from ._topology import LINK_DTYPE
 
 _c = ctypes
 _P = _c.c_void_p
@@ -20,6 +21,10 @@ _d = _lib._decl
 SCENE_PAIR_DTYPE = np.dtype([("i", np.uint64), ("j", np.uint64), ("distance", np.float64),
                              ("status", np.int32), ("num_pairs", np.int32), ("flags", np.int32),
                              ("reserved", np.int32), ("point", np.float64, (2, 2, 3))], align=True)
+#: numpy mirror of struct cdist_scene_link (checked against cdist_scene_link_size()).
+SCENE_LINK_DTYPE = np.dtype([("i", np.uint64), ("j", np.uint64), ("status", np.int32),
+                             ("reserved_int", np.int32), ("link", LINK_DTYPE),
+                             ("reserved", np.float64, (2,))], align=True)
 SCENE_STATS_FIELDS = ("objects", "live", "nodes", "bytes", "box_pairs", "screened", "candidates",
                       "reported", "rebuilds", "refits")
 
@@ -41,6 +46,11 @@ _closest = _d("cdist_scene_closest_pair", _ST, _P, _P, _P, required=False)
 _closest_between = _d("cdist_scene_closest_pair_between", _ST, _P, _P, _P, _P, required=False)
 _nearest = _d("cdist_scene_nearest", _ST, _P, _P, _c.c_int, _P, _SZ, _P, _P, required=False)
 _within = _d("cdist_scene_within", _ST, _P, _P, _c.c_int, _P, _c.c_double, _P, _SZ, _P, required=False)
+_link_size = _d("cdist_scene_link_size", _SZ, required=False)
+_linked = _d("cdist_scene_linked_pairs", _ST, _P, _P, _P, _SZ, _P, required=False)
+if _link_size is not None and _link_size() != SCENE_LINK_DTYPE.itemsize:
+    raise ImportError("circledist: the library's cdist_scene_link is %d bytes, this package expects %d"
+                      % (_link_size(), SCENE_LINK_DTYPE.itemsize))
 if _pair_size is not None and _pair_size() != SCENE_PAIR_DTYPE.itemsize:
     raise ImportError("circledist: the library's cdist_scene_pair is %d bytes, this package expects %d"
                       % (_pair_size(), SCENE_PAIR_DTYPE.itemsize))
@@ -98,6 +108,35 @@ class ScenePairs:
 
     def __repr__(self):
         return "<ScenePairs: %d pairs>" % len(self.raw)
+
+
+class SceneLinks:
+    """Pairs of rings of Scene.linked_pairs(), as numpy arrays sorted by (i, j).
+
+    i, j: ids (i < j); linking, core_linking: -1, 0, +1 or LINK_TOUCHING (2), LINK_OVERLAP (3),
+    LINK_ERROR (4) as circledist.linking gives them; distance (signed, tube radii taken off),
+    core_distance, flags (LINK_FLAG_*), status (0 or why the pair could not be answered); raw:
+    the SCENE_LINK_DTYPE records. Unpacks as ``i, j, linking``."""
+
+    def __init__(self, raw):
+        self.raw = raw
+        self.i = raw["i"].astype(np.int64)
+        self.j = raw["j"].astype(np.int64)
+        self.linking = raw["link"]["linking"]
+        self.core_linking = raw["link"]["core_linking"]
+        self.distance = raw["link"]["distance"]
+        self.core_distance = raw["link"]["core_distance"]
+        self.flags = raw["link"]["flags"]
+        self.status = raw["status"]
+
+    def __len__(self):
+        return len(self.raw)
+
+    def __iter__(self):
+        return iter((self.i, self.j, self.linking))
+
+    def __repr__(self):
+        return "<SceneLinks: %d pairs>" % len(self.raw)
 
 
 class Scene:
@@ -317,3 +356,20 @@ class Scene:
         with self._query._lock, self._lock:
             return self._sized(lambda out, cap, cnt: _within(self._query._handle(), self._handle(), kind,
                                                              rows.ctypes.data, float(delta), out, cap, cnt), 64)
+
+    def linked_pairs(self):
+        """Every pair of rings (Circle and Torus objects; other kinds take no part) that is not
+        certified unlinked and apart: linked cores, touching cores, overlapping tori (see
+        cdist_scene_linked_pairs). Groups and chains do not apply. Returns SceneLinks."""
+        if _linked is None:
+            raise RuntimeError("the loaded libcircledist has no cdist_scene_linked_pairs")
+        capacity = 2 * len(self) + 64
+        with self._query._lock, self._lock:
+            while True:
+                out = np.zeros(max(capacity, 1), SCENE_LINK_DTYPE)
+                count = _c.c_size_t()
+                st = _linked(self._query._handle(), self._handle(), out.ctypes.data, capacity, _c.byref(count))
+                if count.value <= capacity:
+                    self._check(st)
+                    return SceneLinks(out[:count.value])
+                capacity = count.value

@@ -90,6 +90,7 @@ typedef struct broad {
     uint64_t *key;
     size_t n, cap;
     int oom;
+    int link;        /* linked pairs: rings only, the ball screen of link_excluded, no skip filter */
 } broad;
 
 static void push(broad *b, uint64_t key)
@@ -109,8 +110,8 @@ static void push(broad *b, uint64_t key)
 
 /* The objects at tree positions pa of sa and pb of sb, ordered i < j within one scene (self):
  * 0 when either is not live or the pair is skipped. */
-static int pair_at(const cdist_scene *sa, const cdist_scene *sb, int self, uint32_t pa, uint32_t pb, size_t *pi,
-                   size_t *pj, const cdist__scene_obj **poa, const cdist__scene_obj **pob)
+static int pair_at(const cdist_scene *sa, const cdist_scene *sb, int self, int filter, uint32_t pa, uint32_t pb,
+                   size_t *pi, size_t *pj, const cdist__scene_obj **poa, const cdist__scene_obj **pob)
 {
     size_t i = sa->perm[pa], j = sb->perm[pb];
     if (self && i > j) {
@@ -118,9 +119,20 @@ static int pair_at(const cdist_scene *sa, const cdist_scene *sb, int self, uint3
         i = j, j = t;
     }
     const cdist__scene_obj *oa = &sa->obj[i], *ob = &sb->obj[j];
-    if (oa->state != CD_SCENE_LIVE || ob->state != CD_SCENE_LIVE || (self && skipped(sa, i, j))) return 0;
+    if (oa->state != CD_SCENE_LIVE || ob->state != CD_SCENE_LIVE || (self && filter && skipped(sa, i, j))) return 0;
     *pi = i, *pj = j, *poa = oa, *pob = ob;
     return 1;
+}
+
+/* Two rings (circle or torus objects) whose solids' bounding balls are apart by more than
+ * CD_SCENE_LINK_REACH_REL * L plus the bound margin: certified unlinked (a linked circle crosses
+ * the other's disk, inside both balls) and apart, and answered 0 by the linking query. */
+static int link_excluded(const cdist__scene_obj *a, const cdist__scene_obj *b)
+{
+    const cdist_circle *ca = &a->g.circle, *cb = &b->g.circle;
+    double c = v_dist(v3(ca->center.x, ca->center.y, ca->center.z), v3(cb->center.x, cb->center.y, cb->center.z));
+    double L = fmax(fmax(ca->radius, cb->radius), c);
+    return c - (ca->radius + a->r + cb->radius + b->r) > CD_SCENE_LINK_REACH_REL * L + cdist__scene_margin(a, b);
 }
 
 static void test_pos(broad *b, uint32_t pa, uint32_t pb)
@@ -128,9 +140,10 @@ static void test_pos(broad *b, uint32_t pa, uint32_t pb)
     if (!cdist__box_near(&b->sa->box[pa], &b->sb->box[pb], b->lim)) return;
     size_t i, j;
     const cdist__scene_obj *oa, *ob;
-    if (!pair_at(b->sa, b->sb, b->self, pa, pb, &i, &j, &oa, &ob)) return;
+    if (!pair_at(b->sa, b->sb, b->self, !b->link, pa, pb, &i, &j, &oa, &ob)) return;
+    if (b->link && !cdist__scene_circle_pair(oa, ob)) return;
     b->box_pairs++;
-    if (cdist__scene_excluded(oa, ob, b->delta, 0)) return;
+    if (b->link ? link_excluded(oa, ob) : cdist__scene_excluded(oa, ob, b->delta, 0)) return;
     push(b, (uint64_t)i << 32 | j);
 }
 
@@ -607,7 +620,7 @@ static cdist_status pairs_run(cdist_query *q, cdist_scene *sa, cdist_scene *sb, 
     cdist_query *handles[256], **screen;
     pool p;
     pool_start(&p, call_threads(q, sa, handles, &screen));
-    broad b = {sa, sb, sa == sb, fmax(delta, 0.0), delta, 0, sa->cand, 0, sa->cand_cap, 0};
+    broad b = {sa, sb, sa == sb, fmax(delta, 0.0), delta, 0, sa->cand, 0, sa->cand_cap, 0, 0};
     if (!(st = broad_run(q, &b, &p, what)) && !(st = sort_keys(q, sa->cand, b.n))) {
         w->sa = sa;
         w->sb = sb;
@@ -677,6 +690,125 @@ cdist_status cdist_scene_pairs_between(cdist_query *q, cdist_scene *a, cdist_sce
     return pairs_entry(q, a, b, delta, out, capacity, NULL, NULL, count);
 }
 
+/* ---- linked pairs ---- */
+
+size_t cdist_scene_link_size(void) { return sizeof(cdist_scene_link); }
+
+typedef struct link_narrow {
+    const cdist_scene *s;
+    const uint64_t *key;
+    size_t n;
+    cdist_link *res;       /* by key */
+    cdist_status *st;      /* by key */
+    cdist_query **h;       /* free handle of thread t (the caller's own is taken by the call) */
+    atomic_size_t next;
+} link_narrow;
+
+static void link_round(void *ctx, int t)
+{
+    link_narrow *w = ctx;
+    for (;;) {
+        size_t lo = atomic_fetch_add_explicit(&w->next, CD_SCENE_CHUNK, memory_order_relaxed);
+        if (lo >= w->n) return;
+        size_t hi = lo + CD_SCENE_CHUNK < w->n ? lo + CD_SCENE_CHUNK : w->n;
+        for (size_t k = lo; k < hi; k++) {
+            const cdist__scene_obj *a = &w->s->obj[w->key[k] >> 32], *b = &w->s->obj[w->key[k] & 0xffffffffu];
+            cdist_torus ta = {a->g.circle, a->r}, tb = {b->g.circle, b->r};
+            w->st[k] = cdist_link_tori(w->h[t], &ta, &tb, &w->res[k]);
+        }
+    }
+}
+
+/* The box reach of the linked-pair traversal: CD_SCENE_LINK_REACH_REL * L plus the bound margin
+ * of any pair, through S = the largest |C| + r + tube of the live rings (L and each object's
+ * coordinate scale are at most 2 S). */
+static double link_box_reach(const cdist_scene *s)
+{
+    double S = 0.0;
+    for (size_t i = 0; i < s->n; i++) {
+        const cdist__scene_obj *o = &s->obj[i];
+        if (o->state != CD_SCENE_LIVE || !cdist__scene_circle_pair(o, o)) continue;
+        const cdist_circle *c = &o->g.circle;
+        S = fmax(S, v_norm(v3(c->center.x, c->center.y, c->center.z)) + c->radius + o->r);
+    }
+    return 4.0 * (CD_SCENE_LINK_REACH_REL + CD_SCENE_BOUND_REL) * S;
+}
+
+static cdist_status linked_run(cdist_query *q, cdist_scene *s, cdist_scene_link *out, size_t capacity, size_t *count)
+{
+    cdist_status st = cdist__scene_prepare(q, s);
+    if (st) return st;
+    cdist_query *handles[256], **screen;
+    pool p;
+    pool_start(&p, call_threads(q, s, handles, &screen));
+    broad b = {s, s, 1, link_box_reach(s), 0.0, 0, s->cand, 0, s->cand_cap, 0, 1};
+    cdist_link *res = NULL;
+    cdist_status *pst = NULL;
+    if (!screen) st = cdist__fail(q, CDIST_ERR_NO_MEMORY, "scene linked_pairs: out of memory for the thread handles");
+    else if (!(st = broad_run(q, &b, &p, "linked_pairs")) && !(st = sort_keys(q, s->cand, b.n)) && b.n > 0) {
+        res = malloc(b.n * sizeof *res);
+        pst = malloc(b.n * sizeof *pst);
+        if (!res || !pst) {
+            st = cdist__fail(q, CDIST_ERR_NO_MEMORY, "scene linked_pairs: out of memory for %zu answers", b.n);
+        } else {
+            link_narrow w = {s, s->cand, b.n, res, pst, screen, 0};
+            atomic_init(&w.next, 0);
+            if (p.threads > 1 && b.n > CD_SCENE_CHUNK) pool_run(&p, link_round, &w);
+            else link_round(&w, 0);
+        }
+    }
+    pool_stop(&p);
+    size_t m = 0, fail_k = SIZE_MAX;
+    if (!st) {
+        for (size_t k = 0; k < b.n; k++) {
+            if (pst[k] != CDIST_OK && fail_k == SIZE_MAX) fail_k = k;
+            if (pst[k] == CDIST_OK && res[k].linking == 0 && res[k].core_linking == 0) continue;
+            if (out && m < capacity) {
+                cdist_scene_link *r = &out[m];
+                memset(r, 0, sizeof *r);
+                r->i = (size_t)(s->cand[k] >> 32);
+                r->j = (size_t)(s->cand[k] & 0xffffffffu);
+                r->status = pst[k];
+                r->link = res[k];
+            }
+            m++;
+        }
+        s->stats.box_pairs = b.box_pairs;
+        s->stats.screened = b.n;
+        s->stats.candidates = b.n;
+        s->stats.reported = m;
+        *count = m;
+        cdist__begin(q, NULL);
+        if (fail_k != SIZE_MAX) {
+            /* Its message, from the first thread's handle (the answer does not depend on the thread). */
+            size_t i = (size_t)(s->cand[fail_k] >> 32), j = (size_t)(s->cand[fail_k] & 0xffffffffu);
+            cdist_torus ta = {s->obj[i].g.circle, s->obj[i].r}, tb = {s->obj[j].g.circle, s->obj[j].r};
+            cdist_link again;
+            (void)cdist_link_tori(screen[0], &ta, &tb, &again);
+            st = cdist__fail(q, pst[fail_k], "scene linked_pairs: pair (%zu, %zu): %s", i, j,
+                             cdist_query_last_error(screen[0]));
+        }
+    }
+    free(res);
+    free(pst);
+    return st;
+}
+
+cdist_status cdist_scene_linked_pairs(cdist_query *q, cdist_scene *s, cdist_scene_link *out, size_t capacity,
+                                      size_t *count)
+{
+    size_t dummy;
+    if (!count) count = &dummy;
+    *count = 0;
+    cdist_status st = cdist__scene_enter(q, s);
+    if (st) return st;
+    if (!out && capacity > 0)
+        st = cdist__fail(q, CDIST_ERR_NULL_ARGUMENT, "scene linked_pairs: output array is NULL with capacity %zu",
+                         capacity);
+    else st = linked_run(q, s, out, out ? capacity : 0, count);
+    return cdist__scene_leave(q, s, st);
+}
+
 /* ---- closest pair: branch and bound over the tree ---- */
 
 typedef struct closest {
@@ -700,7 +832,7 @@ static void best_pos(closest *c, uint32_t pa, uint32_t pb)
     if (cdist__box_gap(&c->sa->box[pa], &c->sb->box[pb]) > box_cut(c)) return;
     size_t i, j;
     const cdist__scene_obj *oa, *ob;
-    if (!pair_at(c->sa, c->sb, c->self, pa, pb, &i, &j, &oa, &ob)) return;
+    if (!pair_at(c->sa, c->sb, c->self, 1, pa, pb, &i, &j, &oa, &ob)) return;
     c->box_pairs++;
     if (cdist__scene_excluded(oa, ob, c->best, 1)) return;
     c->candidates++;
@@ -940,7 +1072,7 @@ cdist_status cdist_scene_within(cdist_query *q, cdist_scene *s, cdist_scene_kind
     cdist__scene_obj qo;
     if (!(st = check_delta(q, delta, out, capacity)) && !(st = query_object(q, kind, object, &qo)) &&
         !(st = cdist__scene_prepare(q, s))) {
-        broad b = {s, s, 0, fmax(delta, 0.0), delta, 0, s->cand, 0, s->cand_cap, 0};
+        broad b = {s, s, 0, fmax(delta, 0.0), delta, 0, s->cand, 0, s->cand_cap, 0, 0};
         near_q c;
         memset(&c, 0, sizeof c);
         c.s = s;

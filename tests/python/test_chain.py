@@ -1,0 +1,129 @@
+# SPDX-License-Identifier: MIT
+"""Scene.linked_pairs against the O(N^2) loop over the pair linking query (cdist_link_tori /
+cdist_link_circles through circledist.link_details) on chain-mail-like, random and degenerate
+scenes with 1 and 2 threads; and examples/chain.py at a small size, asserting its two
+invariants (no interpenetration beyond the stated tolerance, every neighbour pair linked)."""
+import os
+import pathlib
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+import circledist as cd
+
+ROOT = pathlib.Path(__file__).resolve().parents[2]
+
+
+def unit(v):
+    v = np.asarray(v, float)
+    return v / np.linalg.norm(v, axis=-1, keepdims=True)
+
+
+def chain_mail(rows, cols, seed, jitter=0.05):
+    """A 4-in-1 style mail: rings on a grid, tilted alternately, each threaded through its
+    grid neighbours, with random jitter (some neighbours linked, some touching, some not)."""
+    rng = np.random.default_rng(seed)
+    centres, normals = [], []
+    for r in range(rows):
+        for c in range(cols):
+            centres.append([1.4 * c, 1.4 * r, 0.0])
+            normals.append([0.5 if (r + c) % 2 else -0.5, 0.3 * (-1) ** r, 1.0])
+    centres = np.array(centres) + rng.normal(scale=jitter, size=(rows * cols, 3))
+    normals = unit(np.array(normals) + rng.normal(scale=jitter, size=(rows * cols, 3)))
+    radii = 1.0 + rng.uniform(-0.1, 0.1, rows * cols)
+    tubes = rng.uniform(0.0, 0.12, rows * cols)
+    return cd.Torus(cd.Circle(centres, normals, radii), tubes)
+
+
+def brute_force(rings):
+    """Every pair i < j with linking or core_linking not 0, from one batch of pair queries."""
+    n = rings.shape[0]
+    i, j = np.triu_indices(n, 1)
+    cls = type(rings)
+    rec, status = cd.link_details(cls.from_array(rings.data[i]), cls.from_array(rings.data[j]))
+    assert np.all(status == 0)
+    keep = (rec["linking"] != 0) | (rec["core_linking"] != 0)
+    return i[keep], j[keep], rec[keep]
+
+
+def check_scene(rings, threads, extra=None):
+    objects = [rings] + ([extra] if extra is not None else [])
+    with cd.Scene(objects, threads=threads) as s:
+        got = s.linked_pairs()
+    bi, bj, rec = brute_force(rings)
+    assert np.array_equal(got.i, bi) and np.array_equal(got.j, bj)
+    assert np.array_equal(got.linking, rec["linking"])
+    assert np.array_equal(got.core_linking, rec["core_linking"])
+    # bit for bit the pair query's distances
+    assert np.array_equal(got.distance.view(np.int64), rec["distance"].view(np.int64))
+    assert np.array_equal(got.core_distance.view(np.int64), rec["core_distance"].view(np.int64))
+    assert np.all(got.status == 0)
+    return got
+
+
+@pytest.mark.parametrize("threads", [1, 2])
+@pytest.mark.parametrize("seed", [1, 2, 3])
+def test_chain_mail_scene(threads, seed):
+    rings = chain_mail(9, 11, seed)
+    got = check_scene(rings, threads)
+    values = set(got.linking.tolist())
+    assert {-1, 1} & values, "the scene should hold linked pairs"
+
+
+@pytest.mark.parametrize("threads", [1, 2])
+def test_random_circles_and_tori(threads):
+    rng = np.random.default_rng(7)
+    n = 300
+    circles = cd.Circle(rng.uniform(-4, 4, (n, 3)), unit(rng.normal(size=(n, 3))), rng.uniform(0.2, 2.0, n))
+    got = check_scene(circles, threads)
+    assert len(got) > 10 and np.any(got.linking != 0)
+    tori = cd.Torus(circles, rng.uniform(0, 0.3, n))
+    got = check_scene(tori, threads)
+    assert np.any(got.linking == cd.LINK_OVERLAP) and np.any(np.abs(got.linking) == 1)
+
+
+def test_other_kinds_take_no_part():
+    rings = chain_mail(3, 3, 5)
+    spheres = cd.Sphere(rings.circle.center, 1.0)  # every sphere overlaps the rings
+    check_scene(rings, 1, extra=spheres)
+
+
+def test_degenerate_scenes():
+    z = np.array([0.0, 0.0, 1.0])
+    x = np.array([1.0, 0.0, 0.0])
+    c = [
+        ([0, 0, 0], z, 1.0),             # 0
+        ([0, 0, 0], z, 1.0),             # 1 identical to 0: touching
+        ([0, 0, 0], z, 0.5),             # 2 concentric coplanar: unlinked, apart
+        ([1, 0, 0], x * 0 + [0, 1, 0], 1.0),  # 3 through 0's centre: linked with 0, 1, touches?
+        ([2.0, 0, 0], z, 1.0),           # 4 coplanar, externally tangent to 0
+        ([2.0 + 1e-13, 0, 0], z, 1.0),   # 5 tangent within touching range of 0 ... and 4
+        ([10, 0, 0], z, 1e-9),           # 6 tiny
+        ([10, 0, 5e-10], x, 1e3),        # 7 huge, through the tiny one's disk
+        ([50, 50, 50], z, 0.0),          # 8 a point
+    ]
+    circles = cd.Circle(np.array([a for a, _, _ in c], float), unit(np.array([b for _, b, _ in c], float)),
+                        np.array([r for _, _, r in c]))
+    for threads in (1, 2):
+        got = check_scene(circles, threads)
+        pairs = set(zip(got.i.tolist(), got.j.tolist()))
+        assert (0, 1) in pairs and (0, 4) in pairs and (0, 2) not in pairs and (8, 0) not in pairs
+    tori = cd.Torus(circles, 0.0)
+    check_scene(tori, 2)
+
+
+def test_updates_and_bad_input():
+    rings = chain_mail(4, 4, 9)
+    with cd.Scene(rings) as s:
+        first = s.linked_pairs()
+        moved = chain_mail(4, 4, 10)
+        s.update(np.arange(16), moved)
+        again = s.linked_pairs()
+        bi, bj, _ = brute_force(moved)
+        assert np.array_equal(again.i, bi) and np.array_equal(again.j, bj)
+        s.remove([0])
+        keep = (again.i != 0)
+        assert np.array_equal(s.linked_pairs().i, again.i[keep])
+    assert len(first) > 0
