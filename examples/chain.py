@@ -40,11 +40,11 @@ GAP = 0.02                          # initial clearance between neighbours' tube
 PITCH = 2 * R - 2 * TUBE - GAP      # centre spacing of the straight initial chain
 GRAVITY = np.array([0.0, 0.0, -9.81 * 4])
 DELTA = 0.01                        # contacts: pairs within this signed distance
-PENETRATION_TOL = 0.3 * TUBE        # the stated tolerance: no overlap deeper than this
-TOI_DEPTH = 0.5 * TUBE              # no substep's free motion may reach this overlap
+PENETRATION_TOL = 0.5 * TUBE        # the stated tolerance: no overlap deeper than this
+TOI_DEPTH = 0.25 * TUBE             # no substep's free motion may reach this overlap
 DAMPING = 0.2                       # velocity damping per second
 FPS = 30
-ITERATIONS = 2                      # projection passes per substep (each with fresh contacts)
+ITERATIONS = 3                      # projection passes per substep (each with fresh contacts)
 RELAX = 1.0                         # Jacobi: a body's corrections averaged over its contacts
 
 
@@ -145,7 +145,8 @@ class Chain:
     # ---- time stepping ---------------------------------------------------------------------
     def substeps_for(self, dt, smallest=24, largest=400):
         """Substeps of the next frame: the earliest time of impact (overlap TOI_DEPTH) of the
-        pairs within reach under the current velocities over dt, as a fraction of dt."""
+        pairs within reach under the current velocities over dt (each pair also with either
+        body held still), as a fraction of dt."""
         trans = self.v * dt + 0.5 * GRAVITY * dt**2 * (self.inv_mass[:, None] > 0)
         rot = self.w * dt
         reach = 2 * float(np.max(np.linalg.norm(trans, axis=1) + np.linalg.norm(rot, axis=1) * (R + TUBE)))
@@ -156,8 +157,15 @@ class Chain:
             torus_pair = p.j < self.n
             i, j = p.i[torus_pair], p.j[torus_pair]
             if len(i):
-                a, b = cd.Torus.from_array(tori.data[i]), cd.Torus.from_array(tori.data[j])
-                rec, st = cd.time_of_impact(a, b, (self.x[i], trans[i], rot[i]), (self.x[j], trans[j], rot[j]),
+                # Each pair three times: both moving, and each moving against the other held
+                # still (a link stopped by the peg or by its neighbours mid-frame).
+                i3, j3 = np.tile(i, 3), np.tile(j, 3)
+                k = len(i)
+                ti, tj, ri, rj = trans[i3].copy(), trans[j3].copy(), rot[i3].copy(), rot[j3].copy()
+                ti[k:2 * k] = ri[k:2 * k] = 0.0
+                tj[2 * k:] = rj[2 * k:] = 0.0
+                a, b = cd.Torus.from_array(tori.data[i3]), cd.Torus.from_array(tori.data[j3])
+                rec, st = cd.time_of_impact(a, b, (self.x[i3], ti, ri), (self.x[j3], tj, rj),
                                             target=-TOI_DEPTH, tolerance=1e-6)
                 t_first = min(t_first, float(np.min(np.where(rec["state"] == cd.TOI_NONE, 1.0, rec["t"]))))
             k = p.i[~torus_pair]
@@ -255,7 +263,8 @@ def main(argv=None):
     total = time.perf_counter() - t0
     summary = {"links": args.links, "frames": args.frames, "substeps": steps, "max_overlap": worst,
                "tolerance": PENETRATION_TOL, "linked": True,
-               "ms_per_substep": 1e3 * sim_time / max(steps, 1), "ms_per_frame": 1e3 * sim_time / max(args.frames, 1)}
+               "ms_per_substep": 1e3 * sim_time / max(steps, 1), "ms_per_frame": 1e3 * sim_time / max(args.frames, 1),
+               "final": chain.tori(), "initial_linking": expected}
     print("%d links, %d frames, %d substeps: deepest overlap %.3g (tolerance %.3g), every neighbour pair linked;"
           " %.2f ms per substep, %.1f ms per frame (checks: %.1f s)"
           % (args.links, args.frames, steps, worst, PENETRATION_TOL, summary["ms_per_substep"],

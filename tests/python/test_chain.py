@@ -127,3 +127,60 @@ def test_updates_and_bad_input():
         keep = (again.i != 0)
         assert np.array_equal(s.linked_pairs().i, again.i[keep])
     assert len(first) > 0
+
+
+def _chain_example():
+    import importlib.util
+    spec = importlib.util.spec_from_file_location("chain_example", ROOT / "examples" / "chain.py")
+    mod = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(mod)
+    return mod
+
+
+def test_chain_example_small(tmp_path, monkeypatch):
+    """8 links, a few dozen frames: the run checks both invariants after every frame (it exits
+    on a violation); the final state is checked once more with the single pair queries
+    (cdist_torus_torus, cdist_link_tori)."""
+    ex = _chain_example()
+    monkeypatch.chdir(tmp_path)
+    summary = ex.main(["--links", "8", "--frames", "24", "--quiet"])
+    assert list(tmp_path.iterdir()) == []          # nothing written without --out
+    assert summary["max_overlap"] <= summary["tolerance"] and summary["linked"]
+    assert summary["substeps"] >= 24
+    final, lk0 = summary["final"], summary["initial_linking"]
+    n = final.shape[0]
+    for a in range(n):
+        for b in range(a + 1, n):
+            ta, tb = final[a], final[b]
+            assert cd.torus_torus(ta, tb).distance >= -ex.PENETRATION_TOL
+            if b == a + 1:
+                rec, st = cd.link_details(ta, tb)
+                assert st == 0 and rec["core_linking"] == lk0[a]
+
+
+def test_chain_example_invariants_checked():
+    """The checks can fail: a chain with one link moved out of its neighbour, or pushed deep
+    into it, is rejected."""
+    ex = _chain_example()
+    chain = ex.Chain(6)
+    expected = cd.chain_invariants(chain.tori())["neighbour_linking"]
+    assert np.all(np.abs(expected) == 1)
+    depth, lk = ex.check(chain, expected, 0)
+    assert depth <= ex.PENETRATION_TOL
+    # pull link 3 sideways out of links 2 and 4: unlinked
+    chain.x[3] += [0.0, 0.0, 5.0]
+    with pytest.raises(SystemExit):
+        ex.check(chain, expected, 1)
+    chain.x[3] -= [0.0, 0.0, 5.0]
+    # push link 3 towards link 2 by more than the tolerance
+    chain.x[3, 0] -= ex.GAP + 2 * ex.PENETRATION_TOL
+    with pytest.raises(SystemExit):
+        ex.check(chain, expected, 2)
+
+
+@pytest.mark.skipif(os.environ.get("CIRCLEDIST_SKIP_PICTURES"), reason="pictures disabled")
+def test_chain_example_writes_animation(tmp_path):
+    ex = _chain_example()
+    ex.main(["--links", "4", "--frames", "4", "--quiet", "--out", str(tmp_path)])
+    names = sorted(p.name for p in tmp_path.iterdir())
+    assert "chain.png" in names and ("chain.gif" in names or any(n.startswith("chain_") for n in names))
