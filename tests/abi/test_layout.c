@@ -151,6 +151,13 @@ OFF(cdist_scene_stats, reported, 56);
 OFF(cdist_scene_stats, rebuilds, 64);
 OFF(cdist_scene_stats, refits, 72);
 OFF(cdist_scene_stats, reserved, 80);
+SIZE(cdist_scene_link, 112);
+OFF(cdist_scene_link, i, 0);
+OFF(cdist_scene_link, j, 8);
+OFF(cdist_scene_link, status, 16);
+OFF(cdist_scene_link, reserved_int, 20);
+OFF(cdist_scene_link, link, 24);
+OFF(cdist_scene_link, reserved, 96);
 SIZE(cdist_scene_kind, 4);
 SIZE(cdist_scene_pair_flag, 4);
 SIZE(cdist_grad_flag, 4);
@@ -281,7 +288,8 @@ int main(void)
              && cdist_link_size() == sizeof(cdist_link) && cdist_shape_size() == sizeof(cdist_shape)
              && cdist_toi_result_size() == sizeof(cdist_toi_result)
              && cdist_scene_pair_size() == sizeof(cdist_scene_pair) && cdist_scene_stats_size() == sizeof(cdist_scene_stats)
-             && cdist_scene_kind_size(CDIST_SCENE_ARC) == sizeof(cdist_arc);
+             && cdist_scene_kind_size(CDIST_SCENE_ARC) == sizeof(cdist_arc)
+             && cdist_scene_link_size() == sizeof(cdist_scene_link);
 #ifndef LAYOUT_CHECKED
     printf("test_layout: enumerator values checked; struct layout skipped (documented for x86-64 only)\n");
 #endif
