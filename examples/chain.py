@@ -44,6 +44,7 @@ PENETRATION_TOL = 0.5 * TUBE        # the stated tolerance: no overlap deeper th
 TOI_DEPTH = 0.25 * TUBE             # no substep's free motion may reach this overlap
 DAMPING = 0.2                       # velocity damping per second
 FPS = 30
+PEG_RADIUS = 4.0
 ITERATIONS = 3                      # projection passes per substep (each with fresh contacts)
 RELAX = 1.0                         # Jacobi: a body's corrections averaged over its contacts
 
@@ -78,7 +79,7 @@ class Chain:
         self.inv_i_axis, self.inv_i_diam = self.inv_mass / R**2, 2 * self.inv_mass / R**2
         length = PITCH * links
         peg_x = 0.35 * length if peg_at is None else peg_at
-        self.peg = cd.Capsule(cd.Segment([peg_x, -6.0, -0.55 * length], [peg_x, 6.0, -0.55 * length]), 2.0)
+        self.peg = cd.Capsule(cd.Segment([peg_x, -6.0, -0.5 * length], [peg_x, 6.0, -0.5 * length]), PEG_RADIUS)
         self.scene = cd.Scene([self.tori(), self.peg])
         self.ids = np.arange(n)
         self.substeps = []
@@ -227,9 +228,8 @@ def draw(ax, chain, title):
     colours = np.where((np.arange(chain.n) % 2 == 0)[:, None], [0.15, 0.35, 0.7, 1.0], [0.8, 0.45, 0.1, 1.0])
     colours[0] = [0.1, 0.1, 0.1, 1.0]
     ax.add_collection(LineCollection(segs, colors=colours, linewidths=1.6))
-    peg = chain.peg
-    p0 = np.asarray(peg.segment.p0 if hasattr(peg, "segment") else peg.data[:3]).reshape(-1)
-    ax.add_patch(Disc((p0[0], p0[2]), float(np.asarray(peg.radius).reshape(-1)[0]), color="0.5"))
+    p0 = chain.peg.data[:3]
+    ax.add_patch(Disc((p0[0], p0[2]), PEG_RADIUS, color="0.55", zorder=0))
     ax.set_title(title, fontsize=9)
 
 
