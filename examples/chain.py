@@ -79,7 +79,8 @@ class Chain:
         self.inv_i_axis, self.inv_i_diam = self.inv_mass / R**2, 2 * self.inv_mass / R**2
         length = PITCH * links
         peg_x = 0.35 * length if peg_at is None else peg_at
-        self.peg = cd.Capsule(cd.Segment([peg_x, -6.0, -0.5 * length], [peg_x, 6.0, -0.5 * length]), PEG_RADIUS)
+        peg_z = -max(0.5 * length, PEG_RADIUS + 3 * R)   # below the straight chain
+        self.peg = cd.Capsule(cd.Segment([peg_x, -6.0, peg_z], [peg_x, 6.0, peg_z]), PEG_RADIUS)
         self.scene = cd.Scene([self.tori(), self.peg])
         self.ids = np.arange(n)
         self.substeps = []
