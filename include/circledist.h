@@ -1064,6 +1064,35 @@ CDIST_API size_t cdist_scene_link_size(void);
 CDIST_API cdist_status cdist_scene_linked_pairs(cdist_query *q, cdist_scene *s, cdist_scene_link *out,
                                                 size_t capacity, size_t *count);
 
+/** Result of cdist_scene_toi(). Output only; new fields take their place in `reserved`. */
+typedef struct cdist_scene_toi_result {
+    size_t i;              /**< the pair of the earliest time (i < j); SIZE_MAX when no pair hits */
+    size_t j;              /**< its second object */
+    size_t candidates;     /**< pairs within reach that got a time-of-impact query */
+    cdist_toi_result toi;  /**< cdist_toi() of the pair, i first (state ::CDIST_TOI_NONE and t = 1
+                                when no pair hits) */
+    double reserved[4];    /**< reserved for future fields; 0 */
+} cdist_scene_toi_result;
+
+/** sizeof(cdist_scene_toi_result) as compiled into the library. */
+CDIST_API size_t cdist_scene_toi_size(void);
+/** Time of impact of a moving scene: every live object id moves rigidly over [0, 1] with the
+ *  motion at (const char *)motions + id * stride (the model of cdist_toi(); stride 0 means
+ *  sizeof(cdist_motion); motions NULL: nothing moves; one entry per id given out, removed and
+ *  invalid ids included and ignored). Returns the earliest t over the pairs (not skipped by
+ *  groups and chains) at which one reaches signed distance target, as cdist_toi() answers each
+ *  pair (points as spheres, segments as capsules, circles as tori and disks as rounded disks
+ *  of radius 0; an arc in reach: ::CDIST_ERR_BAD_KIND): out->toi is that pair's result (state
+ *  ::CDIST_TOI_HIT, or ::CDIST_TOI_ITERATION_LIMIT when a capped search stopped first: no pair
+ *  reaches the target before its t). Ties: the smallest (i, j). Only pairs within reach are
+ *  queried: a pair whose distance at 0 exceeds target + tolerance + the two objects' reaches
+ *  (|T| + |omega| times the solid's largest distance from the rotation centre: no point moves
+ *  farther) cannot hit, and the scene's certified bounds exclude it. Bad target, tolerance or
+ *  cap as cdist_toi(); a non-finite motion: ::CDIST_ERR_NOT_FINITE. */
+CDIST_API cdist_status cdist_scene_toi(cdist_query *q, cdist_scene *s, const cdist_motion *motions, ptrdiff_t stride,
+                                       double target, double tolerance, int max_iterations,
+                                       cdist_scene_toi_result *out);
+
 #ifdef __cplusplus
 }
 #endif

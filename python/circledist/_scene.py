@@ -9,7 +9,7 @@ from . import _lib
 from ._objects import (Arc, Capsule, Circle, Disk, GeometricObject, Point, RoundedDisk, Segment,
                        Sphere, Torus, coerce)
 from ._query import CircleDistError, Query
-from ._topology import LINK_DTYPE
+from ._topology import LINK_DTYPE, TOI_DTYPE, _motions
 
 _c = ctypes
 _P = _c.c_void_p
@@ -25,6 +25,9 @@ SCENE_PAIR_DTYPE = np.dtype([("i", np.uint64), ("j", np.uint64), ("distance", np
 SCENE_LINK_DTYPE = np.dtype([("i", np.uint64), ("j", np.uint64), ("status", np.int32),
                              ("reserved_int", np.int32), ("link", LINK_DTYPE),
                              ("reserved", np.float64, (2,))], align=True)
+#: numpy mirror of struct cdist_scene_toi_result (checked against cdist_scene_toi_size()).
+SCENE_TOI_DTYPE = np.dtype([("i", np.uint64), ("j", np.uint64), ("candidates", np.uint64),
+                            ("toi", TOI_DTYPE), ("reserved", np.float64, (4,))], align=True)
 SCENE_STATS_FIELDS = ("objects", "live", "nodes", "bytes", "box_pairs", "screened", "candidates",
                       "reported", "rebuilds", "refits")
 
@@ -46,6 +49,12 @@ _closest = _d("cdist_scene_closest_pair", _ST, _P, _P, _P, required=False)
 _closest_between = _d("cdist_scene_closest_pair_between", _ST, _P, _P, _P, _P, required=False)
 _nearest = _d("cdist_scene_nearest", _ST, _P, _P, _c.c_int, _P, _SZ, _P, _P, required=False)
 _within = _d("cdist_scene_within", _ST, _P, _P, _c.c_int, _P, _c.c_double, _P, _SZ, _P, required=False)
+_toi_size = _d("cdist_scene_toi_size", _SZ, required=False)
+_toi = _d("cdist_scene_toi", _ST, _P, _P, _P, _c.c_ssize_t, _c.c_double, _c.c_double, _c.c_int, _P,
+          required=False)
+if _toi_size is not None and _toi_size() != SCENE_TOI_DTYPE.itemsize:
+    raise ImportError("circledist: the library's cdist_scene_toi_result is %d bytes, this package expects %d"
+                      % (_toi_size(), SCENE_TOI_DTYPE.itemsize))
 _link_size = _d("cdist_scene_link_size", _SZ, required=False)
 _linked = _d("cdist_scene_linked_pairs", _ST, _P, _P, _P, _SZ, _P, required=False)
 if _link_size is not None and _link_size() != SCENE_LINK_DTYPE.itemsize:
@@ -373,3 +382,25 @@ class Scene:
                     self._check(st)
                     return SceneLinks(out[:count.value])
                 capacity = count.value
+
+    def time_of_impact(self, motions=None, *, target=0.0, tolerance=1e-9, max_iterations=100000):
+        """Earliest time of impact of the moving scene (cdist_scene_toi): motions is None (nothing
+        moves) or (center, translation, rotation), each broadcasting to (len(scene), 3), the
+        motion of every id over [0, 1] as in circledist.time_of_impact. Returns (i, j, record):
+        the pair of the earliest time (-1, -1 when no pair reaches the target) and its TOI_DTYPE
+        record (state, iterations, t, distance, contact); record["t"] is 1 when nothing hits."""
+        if _toi is None:
+            raise RuntimeError("the loaded libcircledist has no cdist_scene_toi")
+        n = len(self)
+        m = None
+        if motions is not None:
+            m = np.ascontiguousarray(np.broadcast_to(_motions(motions, "motions"), (n,)))
+        out = np.zeros(1, SCENE_TOI_DTYPE)
+        with self._query._lock, self._lock:
+            st = _toi(self._query._handle(), self._handle(), m.ctypes.data if m is not None else None,
+                      m.dtype.itemsize if m is not None else 0, float(target), float(tolerance),
+                      int(max_iterations), out.ctypes.data)
+            self._check(st)
+        r = out[0]
+        none = int(r["i"]) == 2**64 - 1
+        return (-1 if none else int(r["i"])), (-1 if none else int(r["j"])), r["toi"].copy()

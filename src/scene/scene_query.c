@@ -91,6 +91,8 @@ typedef struct broad {
     size_t n, cap;
     int oom;
     int link;        /* linked pairs: rings only, the ball screen of link_excluded, no skip filter */
+    const double *reach; /* time of impact: by id, how far the object's solid moves; a pair is
+                          * kept when its distance may be <= delta + reach[i] + reach[j] */
 } broad;
 
 static void push(broad *b, uint64_t key)
@@ -143,7 +145,9 @@ static void test_pos(broad *b, uint32_t pa, uint32_t pb)
     if (!pair_at(b->sa, b->sb, b->self, !b->link, pa, pb, &i, &j, &oa, &ob)) return;
     if (b->link && !cdist__scene_circle_pair(oa, ob)) return;
     b->box_pairs++;
-    if (b->link ? link_excluded(oa, ob) : cdist__scene_excluded(oa, ob, b->delta, 0)) return;
+    if (b->link ? link_excluded(oa, ob)
+                : cdist__scene_excluded(oa, ob, b->reach ? b->delta + b->reach[i] + b->reach[j] : b->delta, 0))
+        return;
     push(b, (uint64_t)i << 32 | j);
 }
 
@@ -620,7 +624,7 @@ static cdist_status pairs_run(cdist_query *q, cdist_scene *sa, cdist_scene *sb, 
     cdist_query *handles[256], **screen;
     pool p;
     pool_start(&p, call_threads(q, sa, handles, &screen));
-    broad b = {sa, sb, sa == sb, fmax(delta, 0.0), delta, 0, sa->cand, 0, sa->cand_cap, 0, 0};
+    broad b = {sa, sb, sa == sb, fmax(delta, 0.0), delta, 0, sa->cand, 0, sa->cand_cap, 0, 0, NULL};
     if (!(st = broad_run(q, &b, &p, what)) && !(st = sort_keys(q, sa->cand, b.n))) {
         w->sa = sa;
         w->sb = sb;
@@ -741,7 +745,7 @@ static cdist_status linked_run(cdist_query *q, cdist_scene *s, cdist_scene_link 
     cdist_query *handles[256], **screen;
     pool p;
     pool_start(&p, call_threads(q, s, handles, &screen));
-    broad b = {s, s, 1, link_box_reach(s), 0.0, 0, s->cand, 0, s->cand_cap, 0, 1};
+    broad b = {s, s, 1, link_box_reach(s), 0.0, 0, s->cand, 0, s->cand_cap, 0, 1, NULL};
     cdist_link *res = NULL;
     cdist_status *pst = NULL;
     if (!screen) st = cdist__fail(q, CDIST_ERR_NO_MEMORY, "scene linked_pairs: out of memory for the thread handles");
@@ -806,6 +810,195 @@ cdist_status cdist_scene_linked_pairs(cdist_query *q, cdist_scene *s, cdist_scen
         st = cdist__fail(q, CDIST_ERR_NULL_ARGUMENT, "scene linked_pairs: output array is NULL with capacity %zu",
                          capacity);
     else st = linked_run(q, s, out, out ? capacity : 0, count);
+    return cdist__scene_leave(q, s, st);
+}
+
+/* ---- time of impact of a moving scene ---- */
+
+size_t cdist_scene_toi_size(void) { return sizeof(cdist_scene_toi_result); }
+
+/* The object as a swept shape (the plain kinds with radius 0); 0 for an arc (no shape). */
+static int scene_shape(const cdist__scene_obj *o, cdist_shape *sh)
+{
+    memset(sh, 0, sizeof *sh);
+    switch (cdist__scene_core(o).type) {
+    case CD_CORE_POINT:
+        sh->type = CDIST_SHAPE_SPHERE;
+        sh->u.sphere = (cdist_sphere){o->g.point, o->r};
+        return 1;
+    case CD_CORE_SEGMENT:
+        sh->type = CDIST_SHAPE_CAPSULE;
+        sh->u.capsule = (cdist_capsule){o->g.segment, o->r};
+        return 1;
+    case CD_CORE_CIRCLE:
+        sh->type = CDIST_SHAPE_TORUS;
+        sh->u.torus = (cdist_torus){o->g.circle, o->r};
+        return 1;
+    case CD_CORE_DISK:
+        sh->type = CDIST_SHAPE_ROUNDED_DISK;
+        sh->u.rounded_disk = (cdist_rounded_disk){o->g.circle, o->r};
+        return 1;
+    default: return 0;
+    }
+}
+
+static vec3 vec_of(cdist_vec3 a) { return v3(a.x, a.y, a.z); }
+
+/* How far any point of the object's solid moves over [0, 1]: its speed is at most
+ * |T| + |omega| rho, rho the largest distance of the solid from the rotation centre. */
+static double motion_reach(const cdist__scene_obj *o, const cdist_motion *m)
+{
+    vec3 c = vec_of(m->center);
+    double rho;
+    switch (cdist__scene_core(o).type) {
+    case CD_CORE_POINT: rho = v_dist(vec_of(o->g.point), c); break;
+    case CD_CORE_SEGMENT: rho = fmax(v_dist(vec_of(o->g.segment.p0), c), v_dist(vec_of(o->g.segment.p1), c)); break;
+    default: rho = v_dist(vec_of(o->g.circle.center), c) + o->g.circle.radius; break;
+    }
+    return v_norm(vec_of(m->translation)) + v_norm(vec_of(m->rotation)) * (rho + o->r);
+}
+
+typedef struct toi_narrow {
+    const cdist_scene *s;
+    const uint64_t *key;
+    size_t n;
+    const cdist_motion *motions;
+    ptrdiff_t stride;
+    double target, tolerance;
+    int max_iterations;
+    cdist_toi_result *res; /* by key */
+    cdist_status *st;      /* by key */
+    cdist_query **h;
+    atomic_size_t next;
+} toi_narrow;
+
+static const cdist_motion *motion_of(const toi_narrow *w, size_t id)
+{
+    return w->motions ? (const cdist_motion *)((const char *)w->motions + (ptrdiff_t)id * w->stride) : NULL;
+}
+
+static void toi_round(void *ctx, int t)
+{
+    toi_narrow *w = ctx;
+    for (;;) {
+        size_t lo = atomic_fetch_add_explicit(&w->next, 64, memory_order_relaxed);
+        if (lo >= w->n) return;
+        size_t hi = lo + 64 < w->n ? lo + 64 : w->n;
+        for (size_t k = lo; k < hi; k++) {
+            size_t i = (size_t)(w->key[k] >> 32), j = (size_t)(w->key[k] & 0xffffffffu);
+            cdist_shape a, b;
+            if (!scene_shape(&w->s->obj[i], &a) || !scene_shape(&w->s->obj[j], &b)) {
+                memset(&w->res[k], 0, sizeof w->res[k]);
+                w->res[k].t = w->res[k].distance = NAN;
+                w->st[k] = CDIST_ERR_BAD_KIND;
+                continue;
+            }
+            w->st[k] = cdist_toi(w->h[t], &a, motion_of(w, i), &b, motion_of(w, j), w->target, w->tolerance,
+                                 w->max_iterations, &w->res[k]);
+        }
+    }
+}
+
+static cdist_status toi_run(cdist_query *q, cdist_scene *s, const cdist_motion *motions, ptrdiff_t stride, double target,
+                            double tolerance, int max_iterations, cdist_scene_toi_result *out)
+{
+    cdist_status st = cdist__scene_prepare(q, s);
+    if (st) return st;
+    double *reach = calloc(s->n ? s->n : 1, sizeof *reach);
+    if (!reach) return cdist__fail(q, CDIST_ERR_NO_MEMORY, "scene toi: out of memory for %zu reaches", s->n);
+    double most = 0.0;
+    for (size_t i = 0; i < s->n && motions; i++) {
+        const cdist_motion *m = (const cdist_motion *)((const char *)motions + (ptrdiff_t)i * stride);
+        if (!cdist__in_range(m->center) || !cdist__in_range(m->translation) || !cdist__in_range(m->rotation)) {
+            free(reach);
+            return cdist__fail(q, CDIST_ERR_NOT_FINITE, "scene toi: motion of object %zu is not finite", i);
+        }
+        if (s->obj[i].state == CD_SCENE_LIVE) reach[i] = motion_reach(&s->obj[i], m);
+        most = fmax(most, reach[i]);
+    }
+    cdist_query *handles[256], **screen;
+    pool p;
+    pool_start(&p, call_threads(q, s, handles, &screen));
+    /* A pair hits only if its distance at 0 is <= target + tolerance + both reaches (the
+     * distance shrinks no faster than the two solids move); 2^-30 of a reach covers the
+     * rounding of the poses. */
+    double lim = target + tolerance;
+    for (size_t i = 0; i < s->n; i++) reach[i] *= 1.0 + 0x1p-30;
+    broad b = {s, s, 1, fmax(lim, 0.0) + 2.0 * most * (1.0 + 0x1p-30), lim, 0, s->cand, 0, s->cand_cap, 0, 0, reach};
+    cdist_toi_result *res = NULL;
+    cdist_status *pst = NULL;
+    if (!screen) st = cdist__fail(q, CDIST_ERR_NO_MEMORY, "scene toi: out of memory for the thread handles");
+    else if (!(st = broad_run(q, &b, &p, "toi")) && !(st = sort_keys(q, s->cand, b.n)) && b.n > 0) {
+        res = malloc(b.n * sizeof *res);
+        pst = malloc(b.n * sizeof *pst);
+        if (!res || !pst) {
+            st = cdist__fail(q, CDIST_ERR_NO_MEMORY, "scene toi: out of memory for %zu answers", b.n);
+        } else {
+            toi_narrow w = {s, s->cand, b.n, motions, stride, target, tolerance, max_iterations, res, pst, screen, 0};
+            atomic_init(&w.next, 0);
+            if (p.threads > 1 && b.n > 64) pool_run(&p, toi_round, &w);
+            else toi_round(&w, 0);
+        }
+    }
+    pool_stop(&p);
+    free(reach);
+    if (!st) {
+        /* The earliest time among the pairs (a hit, or where a capped search stopped: every pair
+         * is then free of contact before it); ties: the smallest (i, j). */
+        size_t best = SIZE_MAX, fail_k = SIZE_MAX;
+        for (size_t k = 0; k < b.n; k++) {
+            if (pst[k] != CDIST_OK) {
+                if (fail_k == SIZE_MAX) fail_k = k;
+                continue;
+            }
+            if (res[k].state == CDIST_TOI_NONE) continue;
+            if (best == SIZE_MAX || res[k].t < res[best].t) best = k;
+        }
+        out->candidates = b.n;
+        if (best != SIZE_MAX) {
+            out->i = (size_t)(s->cand[best] >> 32);
+            out->j = (size_t)(s->cand[best] & 0xffffffffu);
+            out->toi = res[best];
+        }
+        s->stats.box_pairs = b.box_pairs;
+        s->stats.screened = b.n;
+        s->stats.candidates = b.n;
+        s->stats.reported = best != SIZE_MAX;
+        cdist__begin(q, NULL);
+        if (fail_k != SIZE_MAX) {
+            size_t i = (size_t)(s->cand[fail_k] >> 32), j = (size_t)(s->cand[fail_k] & 0xffffffffu);
+            st = cdist__fail(q, pst[fail_k], "scene toi: pair (%zu, %zu): %s", i, j,
+                             pst[fail_k] == CDIST_ERR_BAD_KIND ? "an arc has no time of impact" : cdist_status_string(pst[fail_k]));
+            out->i = i;
+            out->j = j;
+            out->toi = res[fail_k];
+        }
+    }
+    free(res);
+    free(pst);
+    return st;
+}
+
+cdist_status cdist_scene_toi(cdist_query *q, cdist_scene *s, const cdist_motion *motions, ptrdiff_t stride,
+                             double target, double tolerance, int max_iterations, cdist_scene_toi_result *out)
+{
+    if (out) {
+        memset(out, 0, sizeof *out);
+        out->i = out->j = SIZE_MAX;
+        out->toi.state = CDIST_TOI_NONE;
+        out->toi.t = 1.0;
+        out->toi.distance = NAN;
+    }
+    cdist_status st = cdist__scene_enter(q, s);
+    if (st) return st;
+    if (!out) st = cdist__fail(q, CDIST_ERR_NULL_ARGUMENT, "scene toi: output pointer is NULL");
+    else if (!isfinite(target)) st = cdist__fail(q, CDIST_ERR_NOT_FINITE, "scene toi: target is not finite");
+    else if (!(tolerance > 0.0) || !isfinite(tolerance))
+        st = cdist__fail(q, CDIST_ERR_BAD_OPTION, "scene toi: tolerance must be finite and > 0 (%g)", tolerance);
+    else if (max_iterations < 1)
+        st = cdist__fail(q, CDIST_ERR_BAD_OPTION, "scene toi: max_iterations must be >= 1 (%d)", max_iterations);
+    else st = toi_run(q, s, motions, motions ? (stride ? stride : (ptrdiff_t)sizeof *motions) : 0, target, tolerance,
+                      max_iterations, out);
     return cdist__scene_leave(q, s, st);
 }
 
@@ -1072,7 +1265,7 @@ cdist_status cdist_scene_within(cdist_query *q, cdist_scene *s, cdist_scene_kind
     cdist__scene_obj qo;
     if (!(st = check_delta(q, delta, out, capacity)) && !(st = query_object(q, kind, object, &qo)) &&
         !(st = cdist__scene_prepare(q, s))) {
-        broad b = {s, s, 0, fmax(delta, 0.0), delta, 0, s->cand, 0, s->cand_cap, 0, 0};
+        broad b = {s, s, 0, fmax(delta, 0.0), delta, 0, s->cand, 0, s->cand_cap, 0, 0, NULL};
         near_q c;
         memset(&c, 0, sizeof c);
         c.s = s;

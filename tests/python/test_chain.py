@@ -184,3 +184,144 @@ def test_chain_example_writes_animation(tmp_path):
     ex.main(["--links", "4", "--frames", "4", "--quiet", "--out", str(tmp_path)])
     names = sorted(p.name for p in tmp_path.iterdir())
     assert "chain.png" in names and ("chain.gif" in names or any(n.startswith("chain_") for n in names))
+
+
+# ---- time of impact of a moving scene ---------------------------------------------------------
+
+def moving_scene(seed, n_tori=40, n_spheres=24, speed=3.0, spin=2.0):
+    """Tori and spheres on a jittered grid (apart at t = 0), each with a random rigid motion."""
+    rng = np.random.default_rng(seed)
+    n = n_tori + n_spheres
+    g = np.stack(np.meshgrid(np.arange(5), np.arange(5), np.arange(3), indexing="ij"), -1).reshape(-1, 3)
+    centres = 4.0 * g[rng.permutation(len(g))[:n]] + rng.uniform(-0.3, 0.3, (n, 3))
+    tori = cd.Torus(cd.Circle(centres[:n_tori], unit(rng.normal(size=(n_tori, 3))), rng.uniform(0.8, 1.5, n_tori)),
+                    rng.uniform(0.05, 0.3, n_tori))
+    spheres = cd.Sphere(centres[n_tori:], rng.uniform(0.2, 1.0, n_spheres))
+    pivot = centres + rng.normal(scale=0.5, size=(n, 3))
+    motions = (pivot, rng.normal(scale=speed, size=(n, 3)), rng.normal(scale=spin, size=(n, 3)))
+    return tori, spheres, motions
+
+
+def brute_toi(tori, spheres, motions, target, skip=()):
+    """The earliest (t, i, j) over every pair, from the pair query (circledist.time_of_impact)."""
+    nt = tori.shape[0]
+    objs = [(tori, 0), (spheres, nt)]
+    best = (np.inf, -1, -1, None)
+    for ga, (A, oa) in enumerate(objs):
+        for gb, (B, ob) in enumerate(objs):
+            if gb < ga:
+                continue
+            na, nb = A.shape[0], B.shape[0]
+            if ga == gb:
+                ia, ib = np.triu_indices(na, 1)
+            else:
+                ia, ib = [x.ravel() for x in np.meshgrid(np.arange(na), np.arange(nb), indexing="ij")]
+            i, j = ia + oa, ib + ob
+            cls_a, cls_b = type(A), type(B)
+            rec, st = cd.time_of_impact(cls_a.from_array(A.data[ia]), cls_b.from_array(B.data[ib]),
+                                        tuple(m[i] for m in motions), tuple(m[j] for m in motions),
+                                        target=target, tolerance=1e-9)
+            assert np.all(st == 0)
+            for k in np.nonzero(rec["state"] != cd.TOI_NONE)[0]:
+                if (int(i[k]), int(j[k])) in skip:
+                    continue
+                key = (float(rec["t"][k]), int(i[k]), int(j[k]))
+                if key < best[:3]:
+                    best = key + (rec[k],)
+    return best
+
+
+@pytest.mark.parametrize("threads", [1, 2])
+@pytest.mark.parametrize("seed", [11, 12, 13, 14])
+@pytest.mark.parametrize("speed, spin", [(3.0, 2.0), (0.8, 0.4)])
+def test_scene_time_of_impact(threads, seed, speed, spin):
+    """Fast motions (nearly every pair in reach) and slow ones (about a quarter of the pairs
+    in reach): the scene's earliest impact is the brute force's, bit for bit."""
+    tori, spheres, motions = moving_scene(seed, speed=speed, spin=spin)
+    for target in (0.0, -0.05, 0.2):
+        t, i, j, rec = brute_toi(tori, spheres, motions, target)
+        with cd.Scene([tori, spheres], threads=threads) as s:
+            gi, gj, got = s.time_of_impact(motions, target=target, tolerance=1e-9)
+        assert (gi, gj) == (i, j), (target, gi, gj, i, j)
+        if i >= 0:
+            assert got["t"] == t and got["state"] == rec["state"] and got["distance"] == rec["distance"]
+        else:
+            assert got["state"] == cd.TOI_NONE
+
+
+def test_scene_time_of_impact_none_still_and_chain():
+    tori, spheres, motions = moving_scene(21, speed=0.01, spin=0.01)
+    with cd.Scene([tori, spheres]) as s:
+        i, j, rec = s.time_of_impact(motions)
+        assert (i, j) == (-1, -1) and rec["state"] == cd.TOI_NONE and rec["t"] == 1.0
+        assert s.time_of_impact(None)[:2] == (-1, -1)
+    # a chain of linked tori moving as one rigid body: only neighbours are in contact at 0;
+    # with the chain filter they are skipped and nothing else can hit
+    ex = _chain_example()
+    ch = ex.Chain(10)
+    tori = ch.tori()
+    n = tori.shape[0]
+    rigid = (np.zeros((n, 3)), np.tile([3.0, -2.0, 1.0], (n, 1)), np.tile([0.4, 0.2, 0.9], (n, 1)))
+    with cd.Scene(tori) as s:
+        assert s.time_of_impact(rigid, target=-1e-3)[:2] == (-1, -1)
+        s.set_groups(chain=np.ones(n, dtype=np.uint32))
+        assert s.time_of_impact(rigid, target=0.05)[:2] == (-1, -1)
+        s.set_groups(chain=np.zeros(n, dtype=np.uint32))
+        i, j, rec = s.time_of_impact(rigid, target=0.05)
+        assert j == i + 1 and rec["t"] == 0.0
+
+
+def test_scene_time_of_impact_bad_input():
+    tori, spheres, motions = moving_scene(5)
+    with cd.Scene([tori, spheres]) as s:
+        with pytest.raises(cd.CircleDistError):
+            s.time_of_impact(motions, tolerance=0.0)
+        with pytest.raises(cd.CircleDistError):
+            s.time_of_impact(motions, target=np.nan)
+        bad = (motions[0], motions[1].copy(), motions[2])
+        bad[1][3, 0] = np.inf
+        with pytest.raises(cd.CircleDistError):
+            s.time_of_impact(bad)
+
+
+@pytest.mark.parametrize("threads", [1, 2])
+def test_scene_time_of_impact_at_the_edge_of_reach(threads):
+    """Pairs that meet just before t = 1, moving straight at each other or swinging a far rim
+    into reach: their distance at 0 is within a hair of the reach bound, so a reach any
+    smaller would drop them."""
+    gap = 2.0
+    for shrink in (1e-9, 1e-6, 1e-3):
+        # sphere 1 translates onto sphere 0: meets at t = 1 - shrink
+        spheres = cd.Sphere([[0.0, 0, 0], [1.0 + gap, 0, 0]], 0.5)
+        tori = cd.Torus(cd.Circle([[0.0, 40.0, 0]], [0.0, 0.0, 1.0], 1.0), 0.1)
+        ang = np.pi / 2 / (1 - shrink)       # the torus turns about a pivot 5 from its centre
+        pivot = np.array([0.0, 45.0, 0.0])
+        sph_near = cd.Sphere([[6.0, 45.0, 0.0]], 0.2)   # where the far rim arrives at t = 1
+        motions = (np.array([[0.0, 0, 0], [1.0 + gap, 0, 0], pivot, [6.0, 45.0, 0.0]]),
+                   np.array([[0.0, 0, 0], [-gap / (1 - shrink), 0, 0], [0.0, 0, 0], [0.0, 0, 0]]),
+                   np.array([[0.0, 0, 0], [0.0, 0, 0], [0.0, 0.0, ang], [0.0, 0, 0]]))
+        objs = [spheres, tori, sph_near]
+        with cd.Scene(objs, threads=threads) as s:
+            i, j, rec = s.time_of_impact(motions, tolerance=1e-12)
+            assert rec["state"] == cd.TOI_HIT and (i, j) in ((0, 1), (2, 3)), (i, j, rec["t"])
+            assert rec["t"] < 1.0
+            # the brute force over the same pairs
+            a = cd.Sphere.from_array(np.concatenate([spheres.data, sph_near.data])[[0]])
+            b = cd.Sphere.from_array(np.concatenate([spheres.data, sph_near.data])[[1]])
+            r01, _ = cd.time_of_impact(a, b, tuple(m[[0]] for m in motions), tuple(m[[1]] for m in motions),
+                                       tolerance=1e-12)
+            r23, _ = cd.time_of_impact(tori, sph_near, tuple(m[[2]] for m in motions),
+                                       tuple(m[[3]] for m in motions), tolerance=1e-12)
+            times = {(0, 1): r01["t"][0] if r01["state"][0] else np.inf,
+                     (2, 3): r23["t"][0] if r23["state"][0] else np.inf}
+            assert np.isfinite(times[(0, 1)]) and np.isfinite(times[(2, 3)])
+            assert rec["t"] == min(times.values()) and times[(i, j)] == rec["t"]
+            # each pair alone (the other one held still) is found as well
+            still = tuple(m.copy() for m in motions)
+            still[1][1] = 0.0
+            i2, j2, rec2 = s.time_of_impact(still, tolerance=1e-12)
+            assert (i2, j2) == (2, 3) and rec2["t"] == times[(2, 3)]
+            still = tuple(m.copy() for m in motions)
+            still[2][2] = 0.0
+            i2, j2, rec2 = s.time_of_impact(still, tolerance=1e-12)
+            assert (i2, j2) == (0, 1) and rec2["t"] == times[(0, 1)]
