@@ -158,6 +158,12 @@ OFF(cdist_scene_link, status, 16);
 OFF(cdist_scene_link, reserved_int, 20);
 OFF(cdist_scene_link, link, 24);
 OFF(cdist_scene_link, reserved, 96);
+OFF(cdist_scene_toi_result, i, 0);
+OFF(cdist_scene_toi_result, j, 8);
+OFF(cdist_scene_toi_result, candidates, 16);
+OFF(cdist_scene_toi_result, toi, 24);
+OFF(cdist_scene_toi_result, reserved, 448);
+SIZE(cdist_scene_toi_result, 480);
 SIZE(cdist_scene_kind, 4);
 SIZE(cdist_scene_pair_flag, 4);
 SIZE(cdist_grad_flag, 4);
@@ -289,7 +295,8 @@ int main(void)
              && cdist_toi_result_size() == sizeof(cdist_toi_result)
              && cdist_scene_pair_size() == sizeof(cdist_scene_pair) && cdist_scene_stats_size() == sizeof(cdist_scene_stats)
              && cdist_scene_kind_size(CDIST_SCENE_ARC) == sizeof(cdist_arc)
-             && cdist_scene_link_size() == sizeof(cdist_scene_link);
+             && cdist_scene_link_size() == sizeof(cdist_scene_link)
+             && cdist_scene_toi_size() == sizeof(cdist_scene_toi_result);
 #ifndef LAYOUT_CHECKED
     printf("test_layout: enumerator values checked; struct layout skipped (documented for x86-64 only)\n");
 #endif

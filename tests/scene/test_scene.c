@@ -577,6 +577,25 @@ static void bad_input(void)
               "linked value %d vs %d", lk[0].link.linking, want.linking);
         cdist_scene_free(s2);
     }
+    {
+        /* Time of impact: the live tori 0 and 3 (centres 9 apart, radii 1, tubes 0.1) meet after 6.8 of 8. */
+        cdist_motion m[4];
+        memset(m, 0, sizeof m);
+        m[3].translation = tv(-8.0, 0, 0);
+        cdist_scene_toi_result r;
+        CHECK(cdist_scene_toi(Q, s, m, sizeof m[0], 0.0, 1e-12, 1000, &r) == CDIST_OK && r.i == 0 && r.j == 3 &&
+                  r.toi.state == CDIST_TOI_HIT && fabs(r.toi.t - 0.85) < 1e-9,
+              "scene toi: (%zu, %zu) t %.17g", r.i, r.j, r.toi.t);
+        CHECK(cdist_scene_toi(Q, s, NULL, 0, 0.0, 1e-12, 1000, &r) == CDIST_OK && r.i == SIZE_MAX &&
+                  r.toi.state == CDIST_TOI_NONE,
+              "scene toi, still: %zu", r.i);
+        CHECK(cdist_scene_toi(Q, s, m, 0, NAN, 1e-12, 1000, &r) == CDIST_ERR_NOT_FINITE, "scene toi: NaN target");
+        CHECK(cdist_scene_toi(Q, s, m, 0, 0.0, 0.0, 1000, &r) == CDIST_ERR_BAD_OPTION, "scene toi: tolerance 0");
+        CHECK(cdist_scene_toi(Q, s, m, 0, 0.0, 1e-12, 0, &r) == CDIST_ERR_BAD_OPTION, "scene toi: cap 0");
+        CHECK(cdist_scene_toi(Q, s, m, 0, 0.0, 1e-12, 1000, NULL) == CDIST_ERR_NULL_ARGUMENT, "scene toi: NULL out");
+        m[2].rotation = tv(INFINITY, 0, 0);
+        CHECK(cdist_scene_toi(Q, s, m, 0, 0.0, 1e-12, 1000, &r) == CDIST_ERR_NOT_FINITE, "scene toi: bad motion");
+    }
     size_t ids[2] = {0, 17};
     CHECK(cdist_scene_update(Q, s, 2, ids, CDIST_SCENE_TORUS, t, 0, sts) == CDIST_ERR_OUT_OF_RANGE && sts[0] == 0 &&
               sts[1] == CDIST_ERR_OUT_OF_RANGE,
