@@ -18,7 +18,8 @@ that no substep's free motion reaches that depth, so a tube can never jump throu
 
 Self-checks, after every frame (circledist.chain_invariants, every pair of links, and the scene
 for the peg): no two solids overlap by more than PENETRATION_TOL, and the linking number of
-every neighbour pair is that of the first frame. A violation stops the run with exit status 1.
+every neighbour pair is that of the first frame; besides, Scene.linked_pairs() finds no link
+threaded through any but its two neighbours. A violation stops the run with exit status 1.
 
     python3 examples/chain.py [--links 120] [--frames 150] [--out DIR]
 
@@ -199,6 +200,7 @@ class Chain:
 def check(chain, expected, frame):
     """The run's two invariants; returns (max overlap depth, neighbour linking numbers)."""
     inv = cd.chain_invariants(chain.tori(), expected)
+    chain.scene.update(chain.ids, chain.tori())
     peg_pairs = chain.scene.within(chain.peg, 0.0)
     peg_depth = float(np.max(-peg_pairs.distance[peg_pairs.i < chain.n], initial=0.0))
     depth = max(inv["max_penetration"], peg_depth)
@@ -210,6 +212,12 @@ def check(chain, expected, frame):
     if not inv["linking_kept"]:
         bad = np.nonzero(inv["neighbour_linking"] != expected)[0]
         raise SystemExit("frame %d: neighbours %s are no longer linked as at the start" % (frame, bad[:5]))
+    # and no link is threaded through any but its neighbours (the scene's linked pairs)
+    links = chain.scene.linked_pairs()
+    threaded = links.core_linking != 0
+    if not np.array_equal(links.j[threaded] - links.i[threaded], np.ones(chain.n - 1, dtype=np.int64)):
+        far = [(int(a), int(b)) for a, b in zip(links.i[threaded], links.j[threaded]) if b != a + 1]
+        raise SystemExit("frame %d: links threaded through non-neighbours: %s" % (frame, far[:5]))
     return depth, inv["neighbour_linking"]
 
 

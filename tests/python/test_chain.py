@@ -172,6 +172,15 @@ def test_chain_example_invariants_checked():
     with pytest.raises(SystemExit):
         ex.check(chain, expected, 1)
     chain.x[3] -= [0.0, 0.0, 5.0]
+    # thread the last link through link 0 as well (its neighbours untouched): rejected
+    far = ex.Chain(6)
+    far.x[-1] = far.x[0] + [ex.PITCH, 0.0, 0.0]
+    far.axis[-1] = far.axis[1]
+    far.x[1] += [0.0, 0.0, 4.0]
+    far.x[2] += [0.0, 0.0, 4.0]
+    far_expected = cd.chain_invariants(far.tori())["neighbour_linking"]
+    with pytest.raises(SystemExit, match="non-neighbours"):
+        ex.check(far, far_expected, 3)
     # push link 3 towards link 2 by more than the tolerance
     chain.x[3, 0] -= ex.GAP + 2 * ex.PENETRATION_TOL
     with pytest.raises(SystemExit):
