@@ -28,6 +28,7 @@ missing) and chain.png (the last frame) into DIR; without --out nothing is writt
 animation: `python3 examples/chain.py --links 120 --frames 150 --out docs/`.
 """
 import argparse
+import importlib.util
 import os
 import sys
 import time
@@ -302,12 +303,7 @@ def write(out, chain, frames):
         ax.set_aspect("equal")
         ax.set_xticks([])
         ax.set_yticks([])
-    try:
-        import PIL  # noqa: F401  (PillowWriter needs it)
-        have_pil = True
-    except ImportError:
-        have_pil = False
-    if have_pil:
+    if importlib.util.find_spec("PIL") is not None:   # PillowWriter needs Pillow
         anim = animation.FuncAnimation(fig, show, frames=range(0, len(frames), 2))
         anim.save(os.path.join(out, "chain.gif"), writer=animation.PillowWriter(fps=FPS // 2))
     else:
