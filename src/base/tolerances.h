@@ -223,5 +223,9 @@
  * cannot settle, up to about 5e-11 L; 2^-30 (9.3e-10) covers both with room, so a pair left out
  * is one the linking query answers 0 (and whose true linking number is 0: see docs/scene.md). */
 #define CD_SCENE_LINK_REACH_REL 0x1p-30
+/* Time of impact of a scene: each object's reach (how far its solid moves over [0, 1]) is widened
+ * by this relative amount before it screens pairs. The reach and the poses of cdist_toi() take a
+ * few roundings each (CD_TOI_POSE_ULPS eps of the posed coordinates); 2^-30 is far above them. */
+#define CD_SCENE_TOI_REACH_REL 0x1p-30
 
 #endif

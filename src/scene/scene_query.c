@@ -14,6 +14,8 @@
  * (a round's answers are committed in order before the next round starts). */
 #define CD_SCENE_CHUNK 256
 #define CD_SCENE_CHUNKS_PER_THREAD 8
+/* Pairs per grab of a time-of-impact thread: each pair costs tens of distance queries. */
+#define CD_SCENE_TOI_CHUNK 64
 
 /* ---- pair filters ---- */
 
@@ -881,9 +883,9 @@ static void toi_round(void *ctx, int t)
 {
     toi_narrow *w = ctx;
     for (;;) {
-        size_t lo = atomic_fetch_add_explicit(&w->next, 64, memory_order_relaxed);
+        size_t lo = atomic_fetch_add_explicit(&w->next, CD_SCENE_TOI_CHUNK, memory_order_relaxed);
         if (lo >= w->n) return;
-        size_t hi = lo + 64 < w->n ? lo + 64 : w->n;
+        size_t hi = lo + CD_SCENE_TOI_CHUNK < w->n ? lo + CD_SCENE_TOI_CHUNK : w->n;
         for (size_t k = lo; k < hi; k++) {
             size_t i = (size_t)(w->key[k] >> 32), j = (size_t)(w->key[k] & 0xffffffffu);
             cdist_shape a, b;
@@ -920,11 +922,11 @@ static cdist_status toi_run(cdist_query *q, cdist_scene *s, const cdist_motion *
     pool p;
     pool_start(&p, call_threads(q, s, handles, &screen));
     /* A pair hits only if its distance at 0 is <= target + tolerance + both reaches (the
-     * distance shrinks no faster than the two solids move); 2^-30 of a reach covers the
-     * rounding of the poses. */
+     * distance shrinks no faster than the two solids move). */
     double lim = target + tolerance;
-    for (size_t i = 0; i < s->n; i++) reach[i] *= 1.0 + 0x1p-30;
-    broad b = {s, s, 1, fmax(lim, 0.0) + 2.0 * most * (1.0 + 0x1p-30), lim, 0, s->cand, 0, s->cand_cap, 0, 0, reach};
+    for (size_t i = 0; i < s->n; i++) reach[i] *= 1.0 + CD_SCENE_TOI_REACH_REL;
+    most *= 1.0 + CD_SCENE_TOI_REACH_REL;
+    broad b = {s, s, 1, fmax(lim, 0.0) + 2.0 * most, lim, 0, s->cand, 0, s->cand_cap, 0, 0, reach};
     cdist_toi_result *res = NULL;
     cdist_status *pst = NULL;
     if (!screen) st = cdist__fail(q, CDIST_ERR_NO_MEMORY, "scene toi: out of memory for the thread handles");
@@ -936,7 +938,7 @@ static cdist_status toi_run(cdist_query *q, cdist_scene *s, const cdist_motion *
         } else {
             toi_narrow w = {s, s->cand, b.n, motions, stride, target, tolerance, max_iterations, res, pst, screen, 0};
             atomic_init(&w.next, 0);
-            if (p.threads > 1 && b.n > 64) pool_run(&p, toi_round, &w);
+            if (p.threads > 1 && b.n > CD_SCENE_TOI_CHUNK) pool_run(&p, toi_round, &w);
             else toi_round(&w, 0);
         }
     }
