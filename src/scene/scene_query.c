@@ -696,33 +696,79 @@ cdist_status cdist_scene_pairs_between(cdist_query *q, cdist_scene *a, cdist_sce
     return pairs_entry(q, a, b, delta, out, capacity, NULL, NULL, count);
 }
 
+/* ---- per-pair queries (linked pairs, time of impact): the broad phase's sorted keys, each
+ * answered by a public pair query on a free handle of its thread (the caller's own handle is
+ * taken by the call), one answer and status per key ---- */
+
+typedef struct pair_job {
+    const cdist_scene *s;
+    const uint64_t *key;
+    size_t n, chunk;       /* keys, and keys per grab of a thread */
+    void *res;             /* res_size bytes per key */
+    size_t res_size;
+    cdist_status *st;      /* by key */
+    cdist_query **h;       /* free handle of thread t */
+    const void *ctx;       /* the query's own arguments */
+    cdist_status (*one)(const struct pair_job *job, cdist_query *h, size_t i, size_t j, void *res);
+    atomic_size_t next;
+} pair_job;
+
+static void pair_job_round(void *ctx, int t)
+{
+    pair_job *w = ctx;
+    for (;;) {
+        size_t lo = atomic_fetch_add_explicit(&w->next, w->chunk, memory_order_relaxed);
+        if (lo >= w->n) return;
+        size_t hi = lo + w->chunk < w->n ? lo + w->chunk : w->n;
+        for (size_t k = lo; k < hi; k++)
+            w->st[k] = w->one(w, w->h[t], (size_t)(w->key[k] >> 32), (size_t)(w->key[k] & 0xffffffffu),
+                              (char *)w->res + k * w->res_size);
+    }
+}
+
+/* The broad phase b on the handle's threads, then job->one for every key on the same threads;
+ * job->res and job->st are allocated here (the caller frees them; NULL when no key). */
+static cdist_status pair_job_run(cdist_query *q, cdist_scene *s, broad *b, const char *what, pair_job *job)
+{
+    cdist_status st = cdist__scene_prepare(q, s);
+    if (st) return st;
+    cdist_query *handles[256], **screen;
+    pool p;
+    pool_start(&p, call_threads(q, s, handles, &screen));
+    if (!screen) st = cdist__fail(q, CDIST_ERR_NO_MEMORY, "scene %s: out of memory for the thread handles", what);
+    else if (!(st = broad_run(q, b, &p, what)) && !(st = sort_keys(q, s->cand, b->n)) && b->n > 0) {
+        job->res = malloc(b->n * job->res_size);
+        job->st = malloc(b->n * sizeof *job->st);
+        if (!job->res || !job->st) {
+            st = cdist__fail(q, CDIST_ERR_NO_MEMORY, "scene %s: out of memory for %zu answers", what, b->n);
+        } else {
+            job->s = s;
+            job->key = s->cand;
+            job->n = b->n;
+            job->h = screen;
+            atomic_init(&job->next, 0);
+            if (p.threads > 1 && b->n > job->chunk) pool_run(&p, pair_job_round, job);
+            else pair_job_round(job, 0);
+        }
+    }
+    pool_stop(&p);
+    if (!st) {
+        s->stats.box_pairs = b->box_pairs;
+        s->stats.screened = b->n;
+        s->stats.candidates = b->n;
+    }
+    return st;
+}
+
 /* ---- linked pairs ---- */
 
 size_t cdist_scene_link_size(void) { return sizeof(cdist_scene_link); }
 
-typedef struct link_narrow {
-    const cdist_scene *s;
-    const uint64_t *key;
-    size_t n;
-    cdist_link *res;       /* by key */
-    cdist_status *st;      /* by key */
-    cdist_query **h;       /* free handle of thread t (the caller's own is taken by the call) */
-    atomic_size_t next;
-} link_narrow;
-
-static void link_round(void *ctx, int t)
+static cdist_status link_one(const pair_job *job, cdist_query *h, size_t i, size_t j, void *res)
 {
-    link_narrow *w = ctx;
-    for (;;) {
-        size_t lo = atomic_fetch_add_explicit(&w->next, CD_SCENE_CHUNK, memory_order_relaxed);
-        if (lo >= w->n) return;
-        size_t hi = lo + CD_SCENE_CHUNK < w->n ? lo + CD_SCENE_CHUNK : w->n;
-        for (size_t k = lo; k < hi; k++) {
-            const cdist__scene_obj *a = &w->s->obj[w->key[k] >> 32], *b = &w->s->obj[w->key[k] & 0xffffffffu];
-            cdist_torus ta = {a->g.circle, a->r}, tb = {b->g.circle, b->r};
-            w->st[k] = cdist_link_tori(w->h[t], &ta, &tb, &w->res[k]);
-        }
-    }
+    const cdist__scene_obj *a = &job->s->obj[i], *b = &job->s->obj[j];
+    cdist_torus ta = {a->g.circle, a->r}, tb = {b->g.circle, b->r};
+    return cdist_link_tori(h, &ta, &tb, res);
 }
 
 /* The box reach of the linked-pair traversal: CD_SCENE_LINK_REACH_REL * L plus the bound margin
@@ -742,28 +788,12 @@ static double link_box_reach(const cdist_scene *s)
 
 static cdist_status linked_run(cdist_query *q, cdist_scene *s, cdist_scene_link *out, size_t capacity, size_t *count)
 {
-    cdist_status st = cdist__scene_prepare(q, s);
-    if (st) return st;
-    cdist_query *handles[256], **screen;
-    pool p;
-    pool_start(&p, call_threads(q, s, handles, &screen));
     broad b = {s, s, 1, link_box_reach(s), 0.0, 0, s->cand, 0, s->cand_cap, 0, 1, NULL};
-    cdist_link *res = NULL;
-    cdist_status *pst = NULL;
-    if (!screen) st = cdist__fail(q, CDIST_ERR_NO_MEMORY, "scene linked_pairs: out of memory for the thread handles");
-    else if (!(st = broad_run(q, &b, &p, "linked_pairs")) && !(st = sort_keys(q, s->cand, b.n)) && b.n > 0) {
-        res = malloc(b.n * sizeof *res);
-        pst = malloc(b.n * sizeof *pst);
-        if (!res || !pst) {
-            st = cdist__fail(q, CDIST_ERR_NO_MEMORY, "scene linked_pairs: out of memory for %zu answers", b.n);
-        } else {
-            link_narrow w = {s, s->cand, b.n, res, pst, screen, 0};
-            atomic_init(&w.next, 0);
-            if (p.threads > 1 && b.n > CD_SCENE_CHUNK) pool_run(&p, link_round, &w);
-            else link_round(&w, 0);
-        }
-    }
-    pool_stop(&p);
+    pair_job job = {.chunk = CD_SCENE_CHUNK, .res_size = sizeof(cdist_link), .one = link_one};
+    cdist_status st = pair_job_run(q, s, &b, "linked_pairs", &job);
+    cdist_link *res = job.res;
+    cdist_status *pst = job.st;
+    cdist_query *screen0 = s->screen ? s->screen[0] : NULL;
     size_t m = 0, fail_k = SIZE_MAX;
     if (!st) {
         for (size_t k = 0; k < b.n; k++) {
@@ -779,9 +809,6 @@ static cdist_status linked_run(cdist_query *q, cdist_scene *s, cdist_scene_link 
             }
             m++;
         }
-        s->stats.box_pairs = b.box_pairs;
-        s->stats.screened = b.n;
-        s->stats.candidates = b.n;
         s->stats.reported = m;
         *count = m;
         cdist__begin(q, NULL);
@@ -790,9 +817,9 @@ static cdist_status linked_run(cdist_query *q, cdist_scene *s, cdist_scene_link 
             size_t i = (size_t)(s->cand[fail_k] >> 32), j = (size_t)(s->cand[fail_k] & 0xffffffffu);
             cdist_torus ta = {s->obj[i].g.circle, s->obj[i].r}, tb = {s->obj[j].g.circle, s->obj[j].r};
             cdist_link again;
-            (void)cdist_link_tori(screen[0], &ta, &tb, &again);
+            (void)cdist_link_tori(screen0, &ta, &tb, &again);
             st = cdist__fail(q, pst[fail_k], "scene linked_pairs: pair (%zu, %zu): %s", i, j,
-                             cdist_query_last_error(screen[0]));
+                             cdist_query_last_error(screen0));
         }
     }
     free(res);
@@ -860,89 +887,59 @@ static double motion_reach(const cdist__scene_obj *o, const cdist_motion *m)
     return v_norm(vec_of(m->translation)) + v_norm(vec_of(m->rotation)) * (rho + o->r);
 }
 
-typedef struct toi_narrow {
-    const cdist_scene *s;
-    const uint64_t *key;
-    size_t n;
+typedef struct toi_args {
     const cdist_motion *motions;
     ptrdiff_t stride;
     double target, tolerance;
     int max_iterations;
-    cdist_toi_result *res; /* by key */
-    cdist_status *st;      /* by key */
-    cdist_query **h;
-    atomic_size_t next;
-} toi_narrow;
+} toi_args;
 
-static const cdist_motion *motion_of(const toi_narrow *w, size_t id)
+static const cdist_motion *motion_of(const toi_args *w, size_t id)
 {
     return w->motions ? (const cdist_motion *)((const char *)w->motions + (ptrdiff_t)id * w->stride) : NULL;
 }
 
-static void toi_round(void *ctx, int t)
+static cdist_status toi_one(const pair_job *job, cdist_query *h, size_t i, size_t j, void *res)
 {
-    toi_narrow *w = ctx;
-    for (;;) {
-        size_t lo = atomic_fetch_add_explicit(&w->next, CD_SCENE_TOI_CHUNK, memory_order_relaxed);
-        if (lo >= w->n) return;
-        size_t hi = lo + CD_SCENE_TOI_CHUNK < w->n ? lo + CD_SCENE_TOI_CHUNK : w->n;
-        for (size_t k = lo; k < hi; k++) {
-            size_t i = (size_t)(w->key[k] >> 32), j = (size_t)(w->key[k] & 0xffffffffu);
-            cdist_shape a, b;
-            if (!scene_shape(&w->s->obj[i], &a) || !scene_shape(&w->s->obj[j], &b)) {
-                memset(&w->res[k], 0, sizeof w->res[k]);
-                w->res[k].t = w->res[k].distance = NAN;
-                w->st[k] = CDIST_ERR_BAD_KIND;
-                continue;
-            }
-            w->st[k] = cdist_toi(w->h[t], &a, motion_of(w, i), &b, motion_of(w, j), w->target, w->tolerance,
-                                 w->max_iterations, &w->res[k]);
-        }
+    const toi_args *w = job->ctx;
+    cdist_toi_result *r = res;
+    cdist_shape a, b;
+    if (!scene_shape(&job->s->obj[i], &a) || !scene_shape(&job->s->obj[j], &b)) {
+        memset(r, 0, sizeof *r);
+        r->t = r->distance = NAN;
+        return CDIST_ERR_BAD_KIND;
     }
+    return cdist_toi(h, &a, motion_of(w, i), &b, motion_of(w, j), w->target, w->tolerance, w->max_iterations, r);
 }
 
 static cdist_status toi_run(cdist_query *q, cdist_scene *s, const cdist_motion *motions, ptrdiff_t stride, double target,
                             double tolerance, int max_iterations, cdist_scene_toi_result *out)
 {
-    cdist_status st = cdist__scene_prepare(q, s);
-    if (st) return st;
+    cdist_status st;
     double *reach = calloc(s->n ? s->n : 1, sizeof *reach);
     if (!reach) return cdist__fail(q, CDIST_ERR_NO_MEMORY, "scene toi: out of memory for %zu reaches", s->n);
     double most = 0.0;
     for (size_t i = 0; i < s->n && motions; i++) {
         const cdist_motion *m = (const cdist_motion *)((const char *)motions + (ptrdiff_t)i * stride);
+        if (s->obj[i].state != CD_SCENE_LIVE) continue;
         if (!cdist__in_range(m->center) || !cdist__in_range(m->translation) || !cdist__in_range(m->rotation)) {
             free(reach);
             return cdist__fail(q, CDIST_ERR_NOT_FINITE, "scene toi: motion of object %zu is not finite", i);
         }
-        if (s->obj[i].state == CD_SCENE_LIVE) reach[i] = motion_reach(&s->obj[i], m);
+        reach[i] = motion_reach(&s->obj[i], m);
         most = fmax(most, reach[i]);
     }
-    cdist_query *handles[256], **screen;
-    pool p;
-    pool_start(&p, call_threads(q, s, handles, &screen));
     /* A pair hits only if its distance at 0 is <= target + tolerance + both reaches (the
      * distance shrinks no faster than the two solids move). */
     double lim = target + tolerance;
     for (size_t i = 0; i < s->n; i++) reach[i] *= 1.0 + CD_SCENE_TOI_REACH_REL;
     most *= 1.0 + CD_SCENE_TOI_REACH_REL;
     broad b = {s, s, 1, fmax(lim, 0.0) + 2.0 * most, lim, 0, s->cand, 0, s->cand_cap, 0, 0, reach};
-    cdist_toi_result *res = NULL;
-    cdist_status *pst = NULL;
-    if (!screen) st = cdist__fail(q, CDIST_ERR_NO_MEMORY, "scene toi: out of memory for the thread handles");
-    else if (!(st = broad_run(q, &b, &p, "toi")) && !(st = sort_keys(q, s->cand, b.n)) && b.n > 0) {
-        res = malloc(b.n * sizeof *res);
-        pst = malloc(b.n * sizeof *pst);
-        if (!res || !pst) {
-            st = cdist__fail(q, CDIST_ERR_NO_MEMORY, "scene toi: out of memory for %zu answers", b.n);
-        } else {
-            toi_narrow w = {s, s->cand, b.n, motions, stride, target, tolerance, max_iterations, res, pst, screen, 0};
-            atomic_init(&w.next, 0);
-            if (p.threads > 1 && b.n > CD_SCENE_TOI_CHUNK) pool_run(&p, toi_round, &w);
-            else toi_round(&w, 0);
-        }
-    }
-    pool_stop(&p);
+    toi_args args = {motions, stride, target, tolerance, max_iterations};
+    pair_job job = {.chunk = CD_SCENE_TOI_CHUNK, .res_size = sizeof(cdist_toi_result), .ctx = &args, .one = toi_one};
+    st = pair_job_run(q, s, &b, "toi", &job);
+    cdist_toi_result *res = job.res;
+    cdist_status *pst = job.st;
     free(reach);
     if (!st) {
         /* The earliest time among the pairs (a hit, or where a capped search stopped: every pair
@@ -962,9 +959,6 @@ static cdist_status toi_run(cdist_query *q, cdist_scene *s, const cdist_motion *
             out->j = (size_t)(s->cand[best] & 0xffffffffu);
             out->toi = res[best];
         }
-        s->stats.box_pairs = b.box_pairs;
-        s->stats.screened = b.n;
-        s->stats.candidates = b.n;
         s->stats.reported = best != SIZE_MAX;
         cdist__begin(q, NULL);
         if (fail_k != SIZE_MAX) {

@@ -593,7 +593,10 @@ static void bad_input(void)
         CHECK(cdist_scene_toi(Q, s, m, 0, 0.0, 0.0, 1000, &r) == CDIST_ERR_BAD_OPTION, "scene toi: tolerance 0");
         CHECK(cdist_scene_toi(Q, s, m, 0, 0.0, 1e-12, 0, &r) == CDIST_ERR_BAD_OPTION, "scene toi: cap 0");
         CHECK(cdist_scene_toi(Q, s, m, 0, 0.0, 1e-12, 1000, NULL) == CDIST_ERR_NULL_ARGUMENT, "scene toi: NULL out");
-        m[2].rotation = tv(INFINITY, 0, 0);
+        m[2].rotation = tv(INFINITY, 0, 0); /* object 2 is invalid: its motion is ignored */
+        CHECK(cdist_scene_toi(Q, s, m, 0, 0.0, 1e-12, 1000, &r) == CDIST_OK && r.i == 0 && r.j == 3,
+              "scene toi: motion of an invalid object");
+        m[3].rotation = tv(NAN, 0, 0);
         CHECK(cdist_scene_toi(Q, s, m, 0, 0.0, 1e-12, 1000, &r) == CDIST_ERR_NOT_FINITE, "scene toi: bad motion");
     }
     size_t ids[2] = {0, 17};
