@@ -1134,6 +1134,64 @@ typedef int (*cdist_progress_fn)(void *user, size_t done, size_t total);
  *  ::CDIST_ERR_BAD_OPTION). The option does not change any answer. */
 CDIST_API cdist_status cdist_query_set_progress(cdist_query *q, cdist_progress_fn fn, void *user, size_t every);
 
+/** One pair of cdist_scene_linked_pairs(). Output only; new fields take their place in
+ *  `reserved`. */
+typedef struct cdist_scene_link {
+    size_t i;          /**< id of the first ring (i < j) */
+    size_t j;          /**< id of the second ring */
+    int status;        /**< ::CDIST_OK, or why the pair could not be answered */
+    int reserved_int;  /**< 0 */
+    cdist_link link;   /**< cdist_link_tori() of the two rings, i first (bit for bit) */
+    double reserved[2]; /**< reserved for future fields; 0 */
+} cdist_scene_link;
+
+/** sizeof(cdist_scene_link) as compiled into the library. */
+CDIST_API size_t cdist_scene_link_size(void);
+/** Every pair of rings i < j of the scene that is not certified unlinked and apart: the
+ *  objects of kinds ::CDIST_SCENE_CIRCLE and ::CDIST_SCENE_TORUS (a circle is a torus of tube
+ *  radius 0; other kinds take no part) are answered with cdist_link_tori() semantics, and a
+ *  pair is reported when its linking or core_linking is not 0: linked cores (+-1), touching
+ *  cores (::CDIST_LINK_TOUCHING) and overlapping tori (::CDIST_LINK_OVERLAP, whatever the
+ *  cores). Sorted by (i, j); groups and chains do not apply (linked neighbours are the point).
+ *  The broad phase is exact for this question: two linked circles each cross the other's open
+ *  disk, so their bounding balls (centre C, radius r) intersect and so do their boxes; pairs
+ *  whose solids' bounding balls are apart by more than 2^-30 L (L = max(r_a, r_b,
+ *  |C_b - C_a|)) plus the scene's bound margin are never answered, and the linking query gives
+ *  0 for all of them (docs/scene.md). Conventions of cdist_scene_pairs_within() for out,
+ *  capacity and *count; a pair that could not be answered is included with its status and
+ *  the call returns the first such status. */
+CDIST_API cdist_status cdist_scene_linked_pairs(cdist_query *q, cdist_scene *s, cdist_scene_link *out,
+                                                size_t capacity, size_t *count);
+
+/** Result of cdist_scene_toi(). Output only; new fields take their place in `reserved`. */
+typedef struct cdist_scene_toi_result {
+    size_t i;              /**< the pair of the earliest time (i < j); SIZE_MAX when no pair hits */
+    size_t j;              /**< its second object */
+    size_t candidates;     /**< pairs within reach that got a time-of-impact query */
+    cdist_toi_result toi;  /**< cdist_toi() of the pair, i first (state ::CDIST_TOI_NONE and t = 1
+                                when no pair hits) */
+    double reserved[4];    /**< reserved for future fields; 0 */
+} cdist_scene_toi_result;
+
+/** sizeof(cdist_scene_toi_result) as compiled into the library. */
+CDIST_API size_t cdist_scene_toi_size(void);
+/** Time of impact of a moving scene: every live object id moves rigidly over [0, 1] with the
+ *  motion at (const char *)motions + id * stride (the model of cdist_toi(); stride 0 means
+ *  sizeof(cdist_motion); motions NULL: nothing moves; one entry per id given out, removed and
+ *  invalid ids included and ignored). Returns the earliest t over the pairs (not skipped by
+ *  groups and chains) at which one reaches signed distance target, as cdist_toi() answers each
+ *  pair (points as spheres, segments as capsules, circles as tori and disks as rounded disks
+ *  of radius 0; an arc in reach: ::CDIST_ERR_BAD_KIND): out->toi is that pair's result (state
+ *  ::CDIST_TOI_HIT, or ::CDIST_TOI_ITERATION_LIMIT when a capped search stopped first: no pair
+ *  reaches the target before its t). Ties: the smallest (i, j). Only pairs within reach are
+ *  queried: a pair whose distance at 0 exceeds target + tolerance + the two objects' reaches
+ *  (|T| + |omega| times the solid's largest distance from the rotation centre: no point moves
+ *  farther) cannot hit, and the scene's certified bounds exclude it. Bad target, tolerance or
+ *  cap as cdist_toi(); a non-finite motion: ::CDIST_ERR_NOT_FINITE. */
+CDIST_API cdist_status cdist_scene_toi(cdist_query *q, cdist_scene *s, const cdist_motion *motions, ptrdiff_t stride,
+                                       double target, double tolerance, int max_iterations,
+                                       cdist_scene_toi_result *out);
+
 #ifdef __cplusplus
 }
 #endif

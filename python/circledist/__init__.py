@@ -58,7 +58,7 @@ from ._query import (FUNCTIONS as _FUNCTIONS, BatchContact, BatchGrad, BatchGrad
                      Pair, Query, Result, circle_basis, circle_point, default_query, status_name,
                      status_string, version)
 
-from ._scene import Scene, ScenePairs  # noqa: E402  (scenes: many objects at once)
+from ._scene import Scene, SceneLinks, ScenePairs  # noqa: E402  (scenes: many objects at once)
 from ._topology import (LINK_DTYPE, LINK_ERROR, LINK_FLAG_EXTENDED, LINK_FLAG_UNRESOLVED, LINK_OVERLAP,
                         LINK_TOUCHING, MOTION_DTYPE, SHAPE_DTYPE, TOI_DTYPE, TOI_HIT,
                         TOI_ITERATION_LIMIT, TOI_NONE, chain_invariants, link_details, linking,
@@ -77,7 +77,7 @@ __all__ = ["Point", "Circle", "Disk", "Line", "Ray", "Segment", "Arc", "Helix", 
            "Grad", "GradObject", "BatchContact", "BatchGrad", "BatchGradObject", "Method",
            "CircleDistError", "circle_basis", "circle_point", "default_query", "status_name",
            "status_string", "version", "RESULT_DTYPE", "CONTACT_DTYPE", "GRAD_DTYPE", "METHOD_AUTO", "METHOD_POLYNOMIAL",
-           "METHOD_ROBUST", "METHOD_ITERATION", "Scene", "ScenePairs", "linking", "link_details", "LINK_DTYPE", "LINK_TOUCHING",
+           "METHOD_ROBUST", "METHOD_ITERATION", "Scene", "SceneLinks", "ScenePairs", "linking", "link_details", "LINK_DTYPE", "LINK_TOUCHING",
            "LINK_OVERLAP", "LINK_ERROR", "LINK_FLAG_EXTENDED", "LINK_FLAG_UNRESOLVED",
            "time_of_impact", "SHAPE_DTYPE", "MOTION_DTYPE", "TOI_DTYPE", "TOI_NONE", "TOI_HIT",
            "TOI_ITERATION_LIMIT", "chain_invariants"] + sorted(_FUNCTIONS)

@@ -9,6 +9,7 @@ from . import _lib
 from ._objects import (Arc, Capsule, Circle, Disk, GeometricObject, Point, RoundedDisk, Segment,
                        Sphere, Torus, coerce)
 from ._query import CircleDistError, Query
+from ._topology import LINK_DTYPE, TOI_DTYPE, _motions
 
 _c = ctypes
 _P = _c.c_void_p
@@ -20,6 +21,13 @@ _d = _lib._decl
 SCENE_PAIR_DTYPE = np.dtype([("i", np.uint64), ("j", np.uint64), ("distance", np.float64),
                              ("status", np.int32), ("num_pairs", np.int32), ("flags", np.int32),
                              ("reserved", np.int32), ("point", np.float64, (2, 2, 3))], align=True)
+#: numpy mirror of struct cdist_scene_link (checked against cdist_scene_link_size()).
+SCENE_LINK_DTYPE = np.dtype([("i", np.uint64), ("j", np.uint64), ("status", np.int32),
+                             ("reserved_int", np.int32), ("link", LINK_DTYPE),
+                             ("reserved", np.float64, (2,))], align=True)
+#: numpy mirror of struct cdist_scene_toi_result (checked against cdist_scene_toi_size()).
+SCENE_TOI_DTYPE = np.dtype([("i", np.uint64), ("j", np.uint64), ("candidates", np.uint64),
+                            ("toi", TOI_DTYPE), ("reserved", np.float64, (4,))], align=True)
 SCENE_STATS_FIELDS = ("objects", "live", "nodes", "bytes", "box_pairs", "screened", "candidates",
                       "reported", "rebuilds", "refits")
 
@@ -41,6 +49,17 @@ _closest = _d("cdist_scene_closest_pair", _ST, _P, _P, _P, required=False)
 _closest_between = _d("cdist_scene_closest_pair_between", _ST, _P, _P, _P, _P, required=False)
 _nearest = _d("cdist_scene_nearest", _ST, _P, _P, _c.c_int, _P, _SZ, _P, _P, required=False)
 _within = _d("cdist_scene_within", _ST, _P, _P, _c.c_int, _P, _c.c_double, _P, _SZ, _P, required=False)
+_toi_size = _d("cdist_scene_toi_size", _SZ, required=False)
+_toi = _d("cdist_scene_toi", _ST, _P, _P, _P, _c.c_ssize_t, _c.c_double, _c.c_double, _c.c_int, _P,
+          required=False)
+if _toi_size is not None and _toi_size() != SCENE_TOI_DTYPE.itemsize:
+    raise ImportError("circledist: the library's cdist_scene_toi_result is %d bytes, this package expects %d"
+                      % (_toi_size(), SCENE_TOI_DTYPE.itemsize))
+_link_size = _d("cdist_scene_link_size", _SZ, required=False)
+_linked = _d("cdist_scene_linked_pairs", _ST, _P, _P, _P, _SZ, _P, required=False)
+if _link_size is not None and _link_size() != SCENE_LINK_DTYPE.itemsize:
+    raise ImportError("circledist: the library's cdist_scene_link is %d bytes, this package expects %d"
+                      % (_link_size(), SCENE_LINK_DTYPE.itemsize))
 if _pair_size is not None and _pair_size() != SCENE_PAIR_DTYPE.itemsize:
     raise ImportError("circledist: the library's cdist_scene_pair is %d bytes, this package expects %d"
                       % (_pair_size(), SCENE_PAIR_DTYPE.itemsize))
@@ -122,6 +141,58 @@ class ScenePairs:
 
     def __repr__(self):
         return "<ScenePairs: %d pairs>" % len(self.raw)
+
+
+class SceneLinks:
+    """Pairs of rings of Scene.linked_pairs(), as numpy arrays sorted by (i, j).
+
+    Parameters
+    ----------
+    raw : numpy.ndarray
+        The SCENE_LINK_DTYPE records the C call wrote (kept as ``raw``).
+
+    Attributes
+    ----------
+    i, j : numpy.ndarray of int64
+        Ids of the pair (i < j).
+    linking, core_linking : numpy.ndarray
+        -1, 0, +1, or LINK_TOUCHING (2), LINK_OVERLAP (3), LINK_ERROR (4), as
+        circledist.linking gives them.
+    distance, core_distance : numpy.ndarray of float64
+        The signed distance (tube radii taken off) and the core circles' distance.
+    flags, status : numpy.ndarray
+        LINK_FLAG_* bits; 0 or why the pair could not be answered.
+
+    Examples
+    --------
+    Two rings of a Hopf link: the second passes through the first's disk along its normal.
+
+    >>> import circledist as cd
+    >>> s = cd.Scene([cd.Circle((0, 0, 0), (0, 0, 1), 1.0), cd.Circle((1, 0, 0), (0, 1, 0), 1.0)])
+    >>> i, j, linking = s.linked_pairs()
+    >>> i.tolist(), j.tolist(), linking.tolist()
+    ([0], [1], [1])
+    """
+
+    def __init__(self, raw):
+        self.raw = raw
+        self.i = raw["i"].astype(np.int64)
+        self.j = raw["j"].astype(np.int64)
+        self.linking = raw["link"]["linking"]
+        self.core_linking = raw["link"]["core_linking"]
+        self.distance = raw["link"]["distance"]
+        self.core_distance = raw["link"]["core_distance"]
+        self.flags = raw["link"]["flags"]
+        self.status = raw["status"]
+
+    def __len__(self):
+        return len(self.raw)
+
+    def __iter__(self):
+        return iter((self.i, self.j, self.linking))
+
+    def __repr__(self):
+        return "<SceneLinks: %d pairs>" % len(self.raw)
 
 
 class Scene:
@@ -526,3 +597,95 @@ class Scene:
         with self._query._lock, self._lock:
             return self._sized(lambda out, cap, cnt: _within(self._query._handle(), self._handle(), kind,
                                                              rows.ctypes.data, float(delta), out, cap, cnt), 64)
+
+    def linked_pairs(self):
+        """Every pair of rings that is not certified unlinked and apart.
+
+        Circle and Torus objects take part (other kinds do not): linked cores, touching cores
+        and overlapping tori are reported (see cdist_scene_linked_pairs). Groups and chains do
+        not apply.
+
+        Returns
+        -------
+        SceneLinks
+            Sorted by (i, j).
+
+        Raises
+        ------
+        CircleDistError
+            A status the library reports for the call.
+
+        Examples
+        --------
+        >>> import circledist as cd
+        >>> s = cd.Scene([cd.Circle((0, 0, 0), (0, 0, 1), 1.0), cd.Circle((1, 0, 0), (0, 1, 0), 1.0),
+        ...               cd.Circle((9, 0, 0), (0, 0, 1), 1.0)])
+        >>> len(s.linked_pairs())
+        1
+        """
+        if _linked is None:
+            raise RuntimeError("the loaded libcircledist has no cdist_scene_linked_pairs")
+        capacity = 2 * len(self) + 64
+        with self._query._lock, self._lock:
+            while True:
+                out = np.zeros(max(capacity, 1), SCENE_LINK_DTYPE)
+                count = _c.c_size_t()
+                st = _linked(self._query._handle(), self._handle(), out.ctypes.data, capacity, _c.byref(count))
+                if count.value <= capacity:
+                    self._check(st)
+                    return SceneLinks(out[:count.value])
+                capacity = count.value
+
+    def time_of_impact(self, motions=None, *, target=0.0, tolerance=1e-9, max_iterations=100000):
+        """Earliest time of impact of the moving scene (cdist_scene_toi).
+
+        Parameters
+        ----------
+        motions : tuple or None
+            None (nothing moves) or (center, translation, rotation), each broadcasting to
+            (len(scene), 3): the motion of every id over t in [0, 1] as in
+            circledist.time_of_impact.
+        target : float
+            The signed distance that counts as an impact.
+        tolerance : float
+            How far above the target the reported distance may be.
+        max_iterations : int
+            Conservative-advancement steps allowed per pair.
+
+        Returns
+        -------
+        tuple
+            (i, j, record): the pair of the earliest time (-1, -1 when no pair reaches the
+            target) and its TOI_DTYPE record (state, iterations, t, distance, contact);
+            record["t"] is 1 when nothing hits.
+
+        Raises
+        ------
+        CircleDistError
+            A status the library reports for the call.
+
+        Examples
+        --------
+        Two unit spheres 4 apart; the first moves 3 towards the second: they touch at t = 2/3.
+
+        >>> import circledist as cd
+        >>> s = cd.Scene([cd.Sphere((0, 0, 0), 1.0), cd.Sphere((4, 0, 0), 1.0)])
+        >>> i, j, rec = s.time_of_impact(([0, 0, 0], [[3, 0, 0], [0, 0, 0]], [0, 0, 0]))
+        >>> i, j, abs(float(rec["t"]) - 2 / 3) < 1e-6
+        (0, 1, True)
+        """
+        if _toi is None:
+            raise RuntimeError("the loaded libcircledist has no cdist_scene_toi")
+        n = len(self)
+        m = None
+        if motions is not None:
+            m = np.ascontiguousarray(np.broadcast_to(_motions(motions, "motions"), (n,)))
+        out = np.zeros(1, SCENE_TOI_DTYPE)
+        with self._query._lock, self._lock:
+            st = _toi(self._query._handle(), self._handle(), m.ctypes.data if m is not None else None,
+                      m.dtype.itemsize if m is not None else 0, float(target), float(tolerance),
+                      int(max_iterations), out.ctypes.data)
+            self._check(st)
+        r = out[0]
+        none = int(r["i"]) == 2**64 - 1
+        return (-1 if none else int(r["i"])), (-1 if none else int(r["j"])), r["toi"].copy()

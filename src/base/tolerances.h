@@ -240,5 +240,15 @@
  * pair whose computed distance is <= delta always passes: 2^-36 (1.5e-11) is over 100 times
  * either and still far below any geometric gap that matters for pruning. */
 #define CD_SCENE_BOUND_REL 0x1p-36
+/* Linked pairs of a scene: how far beyond touching (relative to the pair's L = max(r_a, r_b,
+ * |C_b - C_a|)) two rings' bounding balls may be apart and still be answered. The linking query
+ * reports touching up to CD_LINK_TOUCH_REL * L, and, in the one configuration its extended count
+ * cannot settle, up to about 5e-11 L; 2^-30 (9.3e-10) covers both with room, so a pair left out
+ * is one the linking query answers 0 (and whose true linking number is 0: see docs/scene.md). */
+#define CD_SCENE_LINK_REACH_REL 0x1p-30
+/* Time of impact of a scene: each object's reach (how far its solid moves over [0, 1]) is widened
+ * by this relative amount before it screens pairs. The reach and the poses of cdist_toi() take a
+ * few roundings each (CD_TOI_POSE_ULPS eps of the posed coordinates); 2^-30 is far above them. */
+#define CD_SCENE_TOI_REACH_REL 0x1p-30
 
 #endif

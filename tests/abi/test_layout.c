@@ -151,6 +151,19 @@ OFF(cdist_scene_stats, reported, 56);
 OFF(cdist_scene_stats, rebuilds, 64);
 OFF(cdist_scene_stats, refits, 72);
 OFF(cdist_scene_stats, reserved, 80);
+SIZE(cdist_scene_link, 112);
+OFF(cdist_scene_link, i, 0);
+OFF(cdist_scene_link, j, 8);
+OFF(cdist_scene_link, status, 16);
+OFF(cdist_scene_link, reserved_int, 20);
+OFF(cdist_scene_link, link, 24);
+OFF(cdist_scene_link, reserved, 96);
+OFF(cdist_scene_toi_result, i, 0);
+OFF(cdist_scene_toi_result, j, 8);
+OFF(cdist_scene_toi_result, candidates, 16);
+OFF(cdist_scene_toi_result, toi, 24);
+OFF(cdist_scene_toi_result, reserved, 448);
+SIZE(cdist_scene_toi_result, 480);
 SIZE(cdist_scene_kind, 4);
 SIZE(cdist_scene_pair_flag, 4);
 SIZE(cdist_grad_flag, 4);
@@ -300,7 +313,9 @@ int main(void)
              && cdist_link_size() == sizeof(cdist_link) && cdist_shape_size() == sizeof(cdist_shape)
              && cdist_toi_result_size() == sizeof(cdist_toi_result)
              && cdist_scene_pair_size() == sizeof(cdist_scene_pair) && cdist_scene_stats_size() == sizeof(cdist_scene_stats)
-             && cdist_scene_kind_size(CDIST_SCENE_ARC) == sizeof(cdist_arc);
+             && cdist_scene_kind_size(CDIST_SCENE_ARC) == sizeof(cdist_arc)
+             && cdist_scene_link_size() == sizeof(cdist_scene_link)
+             && cdist_scene_toi_size() == sizeof(cdist_scene_toi_result);
 #ifndef LAYOUT_CHECKED
     printf("test_layout: enumerator values checked; struct layout skipped (documented for x86-64 only)\n");
 #endif

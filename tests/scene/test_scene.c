@@ -557,6 +557,48 @@ static void bad_input(void)
     CHECK(cdist_scene_pairs_within(Q, s, 10.0, NULL, 0, &cnt) == CDIST_OK && cnt == 1, "count only: %zu", cnt);
     CHECK(cdist_scene_pairs_within(Q, s, 10.0, out, 8, &cnt) == CDIST_OK && cnt == 1 && out[0].i == 0 && out[0].j == 3,
           "valid pair kept: %zu", cnt);
+    /* Linked pairs: the valid rings 0 and 3 are apart; the invalid ones take no part. */
+    cdist_scene_link lk[4];
+    CHECK(cdist_scene_linked_pairs(Q, s, NULL, 3, &cnt) == CDIST_ERR_NULL_ARGUMENT, "linked pairs: NULL output");
+    CHECK(cdist_scene_linked_pairs(NULL, s, lk, 4, &cnt) == CDIST_ERR_NULL_ARGUMENT, "linked pairs: NULL handle");
+    CHECK(cdist_scene_linked_pairs(Q, NULL, lk, 4, &cnt) == CDIST_ERR_NULL_ARGUMENT, "linked pairs: NULL scene");
+    CHECK(cdist_scene_linked_pairs(Q, s, lk, 4, &cnt) == CDIST_OK && cnt == 0, "linked pairs: %zu", cnt);
+    {
+        /* Two linked rings (one through the other's centre): counted with capacity 0, then given. */
+        cdist_scene *s2 = cdist_scene_new();
+        cdist_circle c[2] = {{tv(0, 0, 0), tv(0, 0, 1), 1.0}, {tv(1, 0, 0), tv(0, 1, 0), 1.0}};
+        cdist_link want;
+        CHECK(cdist_scene_add(Q, s2, CDIST_SCENE_CIRCLE, 2, c, sizeof c[0], NULL, NULL) == CDIST_OK, "add circles");
+        CHECK(cdist_scene_linked_pairs(Q, s2, NULL, 0, &cnt) == CDIST_OK && cnt == 1, "linked count: %zu", cnt);
+        CHECK(cdist_scene_linked_pairs(Q, s2, lk, 4, &cnt) == CDIST_OK && cnt == 1 && lk[0].i == 0 && lk[0].j == 1,
+              "linked pair: %zu", cnt);
+        CHECK(cdist_link_circles(Q, &c[0], &c[1], &want) == CDIST_OK && lk[0].link.linking == want.linking &&
+                  (want.linking == 1 || want.linking == -1) && same_bits(lk[0].link.distance, want.distance),
+              "linked value %d vs %d", lk[0].link.linking, want.linking);
+        cdist_scene_free(s2);
+    }
+    {
+        /* Time of impact: the live tori 0 and 3 (centres 9 apart, radii 1, tubes 0.1) meet after 6.8 of 8. */
+        cdist_motion m[4];
+        memset(m, 0, sizeof m);
+        m[3].translation = tv(-8.0, 0, 0);
+        cdist_scene_toi_result r;
+        CHECK(cdist_scene_toi(Q, s, m, sizeof m[0], 0.0, 1e-12, 1000, &r) == CDIST_OK && r.i == 0 && r.j == 3 &&
+                  r.toi.state == CDIST_TOI_HIT && fabs(r.toi.t - 0.85) < 1e-9,
+              "scene toi: (%zu, %zu) t %.17g", r.i, r.j, r.toi.t);
+        CHECK(cdist_scene_toi(Q, s, NULL, 0, 0.0, 1e-12, 1000, &r) == CDIST_OK && r.i == SIZE_MAX &&
+                  r.toi.state == CDIST_TOI_NONE,
+              "scene toi, still: %zu", r.i);
+        CHECK(cdist_scene_toi(Q, s, m, 0, NAN, 1e-12, 1000, &r) == CDIST_ERR_NOT_FINITE, "scene toi: NaN target");
+        CHECK(cdist_scene_toi(Q, s, m, 0, 0.0, 0.0, 1000, &r) == CDIST_ERR_BAD_OPTION, "scene toi: tolerance 0");
+        CHECK(cdist_scene_toi(Q, s, m, 0, 0.0, 1e-12, 0, &r) == CDIST_ERR_BAD_OPTION, "scene toi: cap 0");
+        CHECK(cdist_scene_toi(Q, s, m, 0, 0.0, 1e-12, 1000, NULL) == CDIST_ERR_NULL_ARGUMENT, "scene toi: NULL out");
+        m[2].rotation = tv(INFINITY, 0, 0); /* object 2 is invalid: its motion is ignored */
+        CHECK(cdist_scene_toi(Q, s, m, 0, 0.0, 1e-12, 1000, &r) == CDIST_OK && r.i == 0 && r.j == 3,
+              "scene toi: motion of an invalid object");
+        m[3].rotation = tv(NAN, 0, 0);
+        CHECK(cdist_scene_toi(Q, s, m, 0, 0.0, 1e-12, 1000, &r) == CDIST_ERR_NOT_FINITE, "scene toi: bad motion");
+    }
     size_t ids[2] = {0, 17};
     CHECK(cdist_scene_update(Q, s, 2, ids, CDIST_SCENE_TORUS, t, 0, sts) == CDIST_ERR_OUT_OF_RANGE && sts[0] == 0 &&
               sts[1] == CDIST_ERR_OUT_OF_RANGE,
