@@ -69,6 +69,7 @@ gathering, not the cluster start):
     TABLE
 """
 import argparse
+import itertools
 import math
 import time
 
@@ -142,29 +143,34 @@ def plan(rings, delta, per_task=125000, min_tasks=1):
         cell[:, k] = np.searchsorted(edges[k], center[:, k], side="right")
     dims = [len(e) + 1 for e in edges]
     box = (cell[:, 0] * dims[1] + cell[:, 1]) * dims[2] + cell[:, 2]
-    order = np.argsort(box, kind="stable")         # ids of each box, increasing (stable sort)
+    if dims[0] * dims[1] * dims[2] < 2 ** 15:
+        box = box.astype(np.int16)                 # numpy's stable sort is a radix sort here
+    order = np.argsort(box, kind="stable")         # ids of each box, increasing
     start = np.searchsorted(box[order], np.arange(dims[0] * dims[1] * dims[2] + 1))
     bounds = [np.concatenate(([-np.inf], e, [np.inf])) for e in edges]
+    by_box = center[order]                         # each box's centres contiguous: views, no gathers
     out = []
     for b in range(dims[0] * dims[1] * dims[2]):
         own = order[start[b]:start[b + 1]]
         if len(own) == 0:
             continue
-        blo = center[own].min(axis=0) - reach
-        bhi = center[own].max(axis=0) + reach
-        # grid cells that can hold a centre within the reach of this box's rings, later boxes only
-        rng = [range(int(np.searchsorted(bounds[k], blo[k], "right")) - 1,
-                     int(np.searchsorted(bounds[k], bhi[k], "left"))) for k in range(3)]
+        cb = np.unravel_index(b, dims)
+        # the box (its grid cell, clipped to the centres' extent) widened by the reach
+        blo = [max(bounds[k][cb[k]], lo[k]) - reach for k in range(3)]
+        bhi = [min(bounds[k][cb[k] + 1], hi[k]) + reach for k in range(3)]
+        span = [range(int(np.searchsorted(bounds[k], blo[k], "right")) - 1,
+                      int(np.searchsorted(bounds[k], bhi[k], "left"))) for k in range(3)]
         halo = []
-        for cx in rng[0]:
-            for cy in rng[1]:
-                for cz in rng[2]:
-                    q = (cx * dims[1] + cy) * dims[2] + cz
-                    if q <= b:
-                        continue
-                    cand = order[start[q]:start[q + 1]]
-                    inside = np.all((center[cand] >= blo) & (center[cand] <= bhi), axis=1)
-                    halo.append(cand[inside])
+        for cq in itertools.product(*span):
+            q = (cq[0] * dims[1] + cq[1]) * dims[2] + cq[2]
+            if q <= b or start[q] == start[q + 1]:
+                continue                           # earlier boxes own those pairs
+            c = by_box[start[q]:start[q + 1]]
+            inside = np.ones(len(c), bool)
+            for k in range(3):
+                if cq[k] != cb[k]:                 # along axes where the cells agree it is inside
+                    inside &= (c[:, k] >= blo[k]) & (c[:, k] <= bhi[k])
+            halo.append(order[start[q]:start[q + 1]][inside])
         halo = np.concatenate(halo) if halo else np.empty(0, np.int64)
         ids = np.concatenate((own, halo))
         flag = np.concatenate((np.zeros(len(own), bool), np.ones(len(halo), bool)))
@@ -190,7 +196,9 @@ def screen_partition(part, delta, threads=1):
 def combine(raws):
     """Task answers as one ScenePairs sorted by (i, j)."""
     raw = np.concatenate(raws) if raws else np.empty(0, SCENE_PAIR_DTYPE)
-    raw = raw[np.lexsort((raw["j"], raw["i"]))]
+    # each task's pairs are sorted already: a stable sort of the runs is a merge
+    key = raw["i"] * np.uint64(max(1, int(raw["j"].max(initial=0)) + 1)) + raw["j"]
+    raw = raw[np.argsort(key, kind="stable")]
     return cd.ScenePairs(raw)
 
 
