@@ -113,10 +113,10 @@ def as_tori(rings):
 
 def _box_counts(extent, parts, reach):
     """Cuts per axis: add one to the axis with the longest box side while the product is below
-    `parts`, keeping boxes at least 2 reach wide (thinner boxes would be mostly halo)."""
+    `parts`, keeping boxes at least a reach wide (thinner boxes would be mostly halo)."""
     counts = [1, 1, 1]
     while counts[0] * counts[1] * counts[2] < parts:
-        side = [extent[k] / (counts[k] + 1) if extent[k] / (counts[k] + 1) >= 2 * reach else -1.0
+        side = [extent[k] / (counts[k] + 1) if extent[k] / (counts[k] + 1) >= reach else -1.0
                 for k in range(3)]
         k = int(np.argmax(side))
         if side[k] < 0:
@@ -235,12 +235,14 @@ def same_pairs(a, b):
     return len(a.raw) == len(b.raw) and a.raw.tobytes() == b.raw.tobytes()
 
 
-def local_cluster(workers, threads, processes=True):
-    """A LocalCluster whose worker processes keep glibc's malloc defaults (see the docstring)."""
+def local_cluster(workers, threads, processes=True, dask_malloc=False):
+    """A LocalCluster whose worker processes keep glibc's malloc defaults (see the docstring;
+    dask_malloc: keep distributed's setting instead)."""
     import dask
     from dask.distributed import LocalCluster
     env = dict(dask.config.get("distributed.nanny.pre-spawn-environ", {}))
-    env.pop("MALLOC_TRIM_THRESHOLD_", None)
+    if not dask_malloc:
+        env.pop("MALLOC_TRIM_THRESHOLD_", None)
     with dask.config.set({"distributed.nanny.pre-spawn-environ": env}):
         return LocalCluster(n_workers=workers, threads_per_worker=threads, processes=processes,
                             dashboard_address=None)
@@ -257,17 +259,9 @@ def report(res, seconds, n, timings):
                                                   for k, v in timings.items())))
 
 
-def timed(rings, delta, client, per_task, repeat):
-    """(answer, minimum wall seconds over `repeat` runs, timings of that run)."""
-    best = None
-    for _ in range(repeat):
-        tim = {}
-        t = time.perf_counter()
-        res = run(rings, delta, client, per_task, timings=tim)
-        s = time.perf_counter() - t
-        if best is None or s < best[1]:
-            best = (res, s, tim)
-    return best
+def _best(runs, res, seconds, tim):
+    """Keep the fastest of repeated runs: runs is None or (answer, seconds, timings)."""
+    return (res, seconds, tim) if runs is None or seconds < runs[1] else runs
 
 
 def main(argv=None):
@@ -280,40 +274,58 @@ def main(argv=None):
     ap.add_argument("--workers", type=int, default=2, help="LocalCluster workers")
     ap.add_argument("--threads", type=int, default=1, help="threads per LocalCluster worker")
     ap.add_argument("--in-process", action="store_true", help="LocalCluster workers as threads of this process")
+    ap.add_argument("--dask-malloc", action="store_true",
+                    help="keep distributed's MALLOC_TRIM_THRESHOLD_ in the LocalCluster workers")
     ap.add_argument("--single", action="store_true", help="run in this process, without Dask")
-    ap.add_argument("--compare", action="store_true", help="also run one process and check pair for pair")
+    ap.add_argument("--compare", action="store_true",
+                    help="also run one process (alternating with Dask) and check pair for pair")
     ap.add_argument("--repeat", type=int, default=1, help="runs to take the minimum wall time of")
     args = ap.parse_args(argv)
     side = int(math.ceil(math.sqrt(args.rings)))
     rings = make_sheet(side, side, args.seed)
     n = side * side
-    single = None
-    if args.single or args.compare:
-        single, s, tim = timed(rings, args.delta, None, args.per_task, args.repeat)
-        report(single, s, n, tim)
-        if args.single:
-            return single
+    single = dist = None
+    if args.single:
+        for _ in range(args.repeat):
+            tim = {}
+            t = time.perf_counter()
+            res = run(rings, args.delta, timings=tim)
+            single = _best(single, res, time.perf_counter() - t, tim)
+        report(single[0], single[1], n, single[2])
+        return single[0]
     from dask.distributed import Client
     if args.scheduler:
-        client = Client(args.scheduler)
-        cluster = None
+        client, cluster = Client(args.scheduler), None
     else:
-        cluster = local_cluster(args.workers, args.threads, not args.in_process)
+        cluster = local_cluster(args.workers, args.threads, not args.in_process, args.dask_malloc)
         client = Client(cluster)
     try:
         client.run(lambda: None)                 # workers up before timing
-        res, s, tim = timed(rings, args.delta, client, args.per_task, args.repeat)
-        report(res, s, n, tim)
+        for _ in range(args.repeat):
+            if args.compare:
+                tim = {}
+                t = time.perf_counter()
+                res = run(rings, args.delta, timings=tim)
+                single = _best(single, res, time.perf_counter() - t, tim)
+            tim = {}
+            t = time.perf_counter()
+            res = run(rings, args.delta, client, args.per_task, timings=tim)
+            dist = _best(dist, res, time.perf_counter() - t, tim)
     finally:
         client.close()
         if cluster is not None:
             cluster.close()
     if single is not None:
-        same = same_pairs(single, res)
+        print("one process:")
+        report(single[0], single[1], n, single[2])
+        print("Dask:")
+    report(dist[0], dist[1], n, dist[2])
+    if single is not None:
+        same = same_pairs(single[0], dist[0])
         print("same pairs as one process, bit for bit: %s" % same)
         if not same:
             raise SystemExit(1)
-    return res
+    return dist[0]
 
 
 if __name__ == "__main__":
