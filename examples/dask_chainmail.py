@@ -46,25 +46,35 @@ Choose `per_task` so that a task takes 0.1-1 s (about 1.5 us per ring here) and 
 several tasks per worker thread; the partitions are scattered from the driver, so it needs the
 array and its partitions in memory (about 2 x 64 bytes per ring).
 
-What made the old example slower under Dask than in one process, and what this one does:
-- Task size: 32 fixed partitions of 10^5 rings were ~13 ms tasks, so scheduling dominated.
-  `per_task` (default 125 000 rings, ~0.2 s) sets the task size from the data, and the number of
-  tasks is rounded up to a multiple of the worker threads.
-- Work repeated per task: each task regenerated rings and ran a numpy grid broad phase over
-  them. Now the user's rings are cut once and each task is one scene query.
+What made the old example 2x slower under Dask than in one process, and what this one does:
+- Task size: 32 fixed partitions made ~13 ms tasks at 10^5 rings, so scheduling dominated.
+  `per_task` (default 125 000 rings: ~0.2 s of CPU per task) sets the task size from the data,
+  and the number of tasks is rounded up to a multiple of the worker threads.
+- Work repeated per task: each task regenerated its rings and ran a numpy grid broad phase.
+  Now the rings are cut once by the driver (CPU 0.12-0.14 s for 10^6 rings) and each task is
+  one scene query; the partitions' queries together take less CPU than the one big scene
+  (1.43-1.45 s against 1.65-1.90 s for 10^6 rings, same run: smaller trees stay in cache).
+  Merging the answers costs the driver 0.1-0.5 s (concatenation, sort by (i, j), gather of
+  ~95 MB; most of the spread is first-touch page faults).
 - The workers' glibc settings: distributed's nanny sets MALLOC_TRIM_THRESHOLD_=65536 in each
   worker process (`distributed.nanny.pre-spawn-environ`); setting any malloc threshold turns off
   glibc's dynamic mmap threshold, so every array above 128 KiB is a fresh mmap whose pages are
-  faulted in again at each use. `local_cluster()` removes that entry (workers keep glibc's
-  defaults); on your own cluster set it in the workers' dask config the same way.
-- Threads or processes: the scene query releases the GIL (ctypes) and returns to Python only to
-  copy blocks of answers, so threads of one worker process run in parallel; worker processes
-  pay for pickling the partitions and the answers (~100 MB per 10^6 rings).
+  faulted in at each use. `local_cluster()` removes that entry (workers keep glibc's defaults;
+  `--dask-malloc` keeps it, to compare); on your own cluster remove it from the workers' dask
+  config the same way.
+- Data movement: the partitions are scattered once (64 bytes per ring, plus the halo) and only
+  the answers come back (136 bytes per pair); nothing else travels. Worker processes pay for
+  pickling both (scatter 0.15-0.3 s for 10^6 rings here); workers as threads of one process
+  (`--in-process`) do not, and still run in parallel: the scene query releases the GIL and takes
+  it back only to copy each block of answers (about 1000 blocks per task of 125 000 rings).
 
-Measured on the development machine (2 cores shared with other jobs; release build; wall
-seconds, minimum of 3 runs; chain-mail sheet, delta 0.1 R; load = 1-minute load average at the
-time; "single" is one Scene with one thread, the Dask times include cutting, scattering and
-gathering, not the cluster start):
+Measured on the development machine, today: 2 cores shared with four other jobs (the 1-minute
+load average was 7-12 throughout, so a second worker found no idle core: on this machine even
+the library's own threads gave nothing then, 2.49-3.77 s with one thread against 2.67-3.69 s
+with two); release build; wall seconds, minimum of the repeats, single process and Dask
+alternating in the same run; chain-mail sheet, delta 0.1 R (0.70 pairs per ring); "one process"
+is one Scene with one thread; the Dask times include cutting, scattering and merging, not the
+cluster start; LocalCluster of worker processes with one thread each:
 
     TABLE
 """

@@ -4,7 +4,6 @@ over sampled core circles, the picture written) and examples/dask_chainmail.py (
 LocalCluster gives the single-process scene's answer bit for bit; the partitions own each pair
 once; both against all pairs through the circle-circle query)."""
 import importlib.util
-import itertools
 import os
 
 import numpy as np
