@@ -39,12 +39,13 @@ doubles, global ids, halo flags) to one worker; only the close pairs come back.
     python3 examples/dask_chainmail.py --compare ...                        # both, checked
 
 On a real cluster: start `dask scheduler` on one host and `dask worker tcp://host:8786
---nthreads T` on each node (numpy, circledist and libcircledist installed there: the task
-function travels with the tasks, the library does not), then pass `--scheduler
-tcp://host:8786`; for your own data call `run(rings, delta, client=Client("tcp://host:8786"))`.
-Choose `per_task` so that a task takes 0.1-1 s (about 1.5 us per ring here) and there are
-several tasks per worker thread; the partitions are scattered from the driver, so it needs the
-array and its partitions in memory (about 2 x 64 bytes per ring).
+--nthreads T` on each node (numpy, circledist and libcircledist installed there), then pass
+`--scheduler tcp://host:8786`. For your own data, `run(rings, delta,
+client=Client("tcp://host:8786"))`; when this file is imported as a module rather than run,
+the workers need it too (`client.upload_file("dask_chainmail.py")`). Choose `per_task` so
+that a task takes 0.1-1 s (about 1.5 us of CPU per ring here) and there are several tasks per
+worker thread. The driver holds the array and its partitions (about 140 bytes per ring) and
+the answers twice while merging them (2 x 136 bytes per pair).
 
 What made the old example 2x slower under Dask than in one process, and what this one does:
 - Task size: 32 fixed partitions made ~13 ms tasks at 10^5 rings, so scheduling dominated.
