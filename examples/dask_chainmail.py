@@ -88,9 +88,11 @@ cluster start; LocalCluster of worker processes with one thread each:
     10^6   2 workers                       4.15 s       5.81 s   1.40        9.3 -> 10.6
     10^6   1 worker                        4.90 s       4.26 s   0.87        10.6 -> 11.3
     10^7   2 workers                       21.5 s       34.2 s   1.59        11.3 -> 7.2
-    TEN7ONE
+    10^7   1 worker                        57.2 s       93.9 s   1.64        7.2 -> 10.6
+    TEN7INPROC
 
-(minimum of 5 alternating runs per row at 10^6, except the last two rows: 3; 2 at 10^7.) At
+(minimum of 5 alternating runs per row at 10^6, except the last two rows: 3; 2 at 10^7, and
+the first of the 1-worker pair overlapped with another run of ours at 10^7.) At
 10^7 the 2-worker run split into 84 tasks: cut 2.45 s, scatter 6.1 s, tasks 21.0 s, merge
 4.6 s; the driver peaked at 7.4 GB resident. Every run gave the one-process answer bit for bit
 (702 270 pairs at 10^6).
