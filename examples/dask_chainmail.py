@@ -17,7 +17,7 @@ planes are quantiles of the centres along each axis, more cuts along the longer 
 boxes hold about `per_task` rings each (a sheet gets columns x rows of boxes, a long chain
 slabs). A ring belongs to the box holding its centre. Two rings can be within delta only when
 their centres are within the reach h = delta + 2 max(R + r) (R + r bounds a torus around its
-centre), so each task holds its box plus a halo: the rings of the *later* boxes (higher flat
+centre; h is widened by 1e-9 of the coordinates' scale against rounding), so each task holds its box plus a halo: the rings of the *later* boxes (higher flat
 box index) whose centres lie within h of its box.
 
 Ownership rule: a pair belongs to the box of its two rings with the lower box index (the box
@@ -33,7 +33,7 @@ Only the partitions travel: the driver cuts the array once and scatters each par
 doubles, global ids, halo flags) to one worker; only the close pairs come back.
 
     python3 examples/dask_chainmail.py --rings 1000000                      # LocalCluster
-    python3 examples/dask_chainmail.py --rings 1000000 --workers 2 --threads 1
+    python3 examples/dask_chainmail.py --rings 1000000 --workers 2 --processes
     python3 examples/dask_chainmail.py --scheduler tcp://host:8786 ...      # any cluster
     python3 examples/dask_chainmail.py --single ...                         # no Dask
     python3 examples/dask_chainmail.py --compare ...                        # both, checked
@@ -65,8 +65,9 @@ What made the old example 2x slower under Dask than in one process, and what thi
   config the same way.
 - Data movement: the partitions are scattered once (64 bytes per ring, plus the halo) and only
   the answers come back (136 bytes per pair); nothing else travels. Worker processes pay for
-  pickling both (scatter 0.15-0.3 s for 10^6 rings here); workers as threads of one process
-  (`--in-process`) do not, and still run in parallel: the scene query releases the GIL and takes
+  pickling both (scatter 0.15-1.0 s for 10^6 rings here, 6-13 s for 10^7); workers as threads
+  of one process (the LocalCluster's default here; `--processes` for processes) do not, and
+  still run in parallel: the scene query releases the GIL and takes
   it back only to copy each block of answers (about 1000 blocks per task of 125 000 rings).
 
 Measured on the development machine, today: 2 cores shared with four other jobs (the 1-minute
@@ -75,7 +76,8 @@ the library's own threads gave nothing then, 2.49-3.77 s with one thread against
 with two); release build; wall seconds, minimum of the repeats, single process and Dask
 alternating in the same run; chain-mail sheet, delta 0.1 R (0.70 pairs per ring); "one process"
 is one Scene with one thread; the Dask times include cutting, scattering and merging, not the
-cluster start; LocalCluster of worker processes with one thread each:
+cluster start; "N workers": N worker processes of one thread each (`--processes`), "in-process":
+workers as threads of this process (the default since these runs):
 
     rings  cluster                         one process  Dask     Dask / one  load (before -> after)
     10^6   2 workers                       1.79 s       3.15 s   1.76        8.0 -> 6.8
@@ -89,20 +91,25 @@ cluster start; LocalCluster of worker processes with one thread each:
     10^6   1 worker                        4.90 s       4.26 s   0.87        10.6 -> 11.3
     10^7   2 workers                       21.5 s       34.2 s   1.59        11.3 -> 7.2
     10^7   1 worker                        57.2 s       93.9 s   1.64        7.2 -> 10.6
-    TEN7INPROC
+    10^7   2 workers, in-process           50.05 s      50.34 s  1.01        7.1 -> 7.2
 
-(minimum of 5 alternating runs per row at 10^6, except the last two rows: 3; 2 at 10^7, and
-the first of the 1-worker pair overlapped with another run of ours at 10^7.) At
-10^7 the 2-worker run split into 84 tasks: cut 2.45 s, scatter 6.1 s, tasks 21.0 s, merge
-4.6 s; the driver peaked at 7.4 GB resident. Every run gave the one-process answer bit for bit
-(702 270 pairs at 10^6).
+(minimum of 5 alternating runs per row at 10^6, except the last two 10^6 rows: 3; 2 at 10^7 with
+worker processes, 1 in-process; the first of the 1-worker pair at 10^7 overlapped with another
+run of ours.) At 10^7, 84 tasks: with 2 worker processes cut 2.45 s, scatter 6.1 s, tasks
+21.0 s, merge 4.6 s, the driver peaking at 7.4 GB resident; in-process cut 3.9 s, scatter
+0.9 s, tasks 33.4 s, merge 12.1 s, 5.8 GB. Every run gave the one-process answer bit for bit
+(702 270 pairs at 10^6, 7 034 993 at 10^7).
 
-So on this machine, as loaded today, Dask was not faster than one process, and mostly slower
-(0.87-2.2x): with no idle core the second worker adds no CPU, and what Dask adds (cutting,
-scattering, merging, about 0.5 s of driver CPU at 10^6 and 13 s at 10^7 with worker processes)
-is not paid back. What is known to scale: the tasks are independent and together cheaper than
-the one scene, so on idle cores the task phase divides by the number of workers, and the
-driver's share is what remains; that was not measurable here.
+So on this machine, as loaded today, Dask was at best as fast as one process (1.01x at 10^7
+and 1.11x at 10^6 in-process, 0.87x in one 10^6 run with one worker process) and mostly slower
+(up to 2.2x with worker processes): with no idle core a second worker adds no CPU, and what
+Dask adds (cutting, scattering, merging: about 0.5 s of driver CPU at 10^6, and with worker
+processes the pickling) is not paid back. The done-criterion "no slower than one process at
+10^6" is therefore not shown here. What should scale: the tasks are independent and together
+cheaper than the one scene, so on idle cores the task phase divides by the number of workers
+and the driver's share is what remains; that was not measurable on this machine today.
+The MALLOC_TRIM_THRESHOLD_ entry matters only for worker processes; at this load its effect
+(1.68/3.77 s with it against 1.79/3.15 s without, one pair of runs each) is inside the noise.
 """
 import argparse
 import itertools
@@ -168,7 +175,11 @@ def plan(rings, delta, per_task=125000, min_tasks=1):
     rows = rings.data.reshape(-1, 8)
     center, extent_r = rows[:, 0:3], rows[:, 6] + rows[:, 7]
     n = len(rows)
-    reach = float(delta) + 2 * float(extent_r.max(initial=0.0))
+    size = float(extent_r.max(initial=0.0))
+    scale = float(np.abs(center).max(initial=0.0)) + size
+    # widened by 1e-9 of the scale, so that rounding in the queries never decides whether a
+    # pair near the reach lands in a task
+    reach = float(delta) + 2 * size + 1e-9 * scale
     parts = max(int(min_tasks), -(-n // int(per_task)), 1)
     lo, hi = center.min(axis=0, initial=np.inf), center.max(axis=0, initial=-np.inf)
     counts = _box_counts(np.maximum(hi - lo, 0.0) if n else np.zeros(3), parts, reach)
@@ -195,7 +206,7 @@ def plan(rings, delta, per_task=125000, min_tasks=1):
         blo = [max(bounds[k][cb[k]], lo[k]) - reach for k in range(3)]
         bhi = [min(bounds[k][cb[k] + 1], hi[k]) + reach for k in range(3)]
         span = [range(int(np.searchsorted(bounds[k], blo[k], "right")) - 1,
-                      int(np.searchsorted(bounds[k], bhi[k], "left"))) for k in range(3)]
+                      int(np.searchsorted(bounds[k], bhi[k], "right"))) for k in range(3)]
         halo = []
         for cq in itertools.product(*span):
             q = (cq[0] * dims[1] + cq[1]) * dims[2] + cq[2]
@@ -271,7 +282,7 @@ def same_pairs(a, b):
     return len(a.raw) == len(b.raw) and a.raw.tobytes() == b.raw.tobytes()
 
 
-def local_cluster(workers, threads, processes=True, dask_malloc=False):
+def local_cluster(workers, threads, processes=False, dask_malloc=False):
     """A LocalCluster whose worker processes keep glibc's malloc defaults (see the docstring;
     dask_malloc: keep distributed's setting instead)."""
     import dask
@@ -309,7 +320,8 @@ def main(argv=None):
     ap.add_argument("--scheduler", help="address of a running Dask scheduler (default: a LocalCluster)")
     ap.add_argument("--workers", type=int, default=2, help="LocalCluster workers")
     ap.add_argument("--threads", type=int, default=1, help="threads per LocalCluster worker")
-    ap.add_argument("--in-process", action="store_true", help="LocalCluster workers as threads of this process")
+    ap.add_argument("--processes", action="store_true",
+                    help="LocalCluster workers as processes (default: threads of this process)")
     ap.add_argument("--dask-malloc", action="store_true",
                     help="keep distributed's MALLOC_TRIM_THRESHOLD_ in the LocalCluster workers")
     ap.add_argument("--single", action="store_true", help="run in this process, without Dask")
@@ -333,7 +345,7 @@ def main(argv=None):
     if args.scheduler:
         client, cluster = Client(args.scheduler), None
     else:
-        cluster = local_cluster(args.workers, args.threads, not args.in_process, args.dask_malloc)
+        cluster = local_cluster(args.workers, args.threads, args.processes, args.dask_malloc)
         client = Client(cluster)
     try:
         client.run(lambda: None)                 # workers up before timing
