@@ -1,9 +1,9 @@
 # SPDX-License-Identifier: MIT
 """The Python examples at small size: examples/torus_chain.py (clearances against a brute force
 over sampled core circles, the picture written) and examples/dask_chainmail.py (a Dask
-LocalCluster gives exactly the single-process answer; the spatial grid misses no pair)."""
+LocalCluster gives the single-process scene's answer bit for bit; the partitions own each pair
+once; both against all pairs through the circle-circle query)."""
 import importlib.util
-import itertools
 import os
 
 import numpy as np
@@ -45,37 +45,69 @@ def test_torus_chain(tmp_path):
     assert np.allclose(np.linalg.norm(seg[:, 1] - seg[:, 0], axis=1), clearance, atol=1e-12)
 
 
+def _all_close_pairs(rings, delta, tol=1e-9):
+    """Reference without scenes or partitions: every pair through the vectorised circle-circle
+    query, clearance = core distance - both wires. Returns (pairs surely within delta,
+    pairs possibly within delta, clearance of each pair)."""
+    data = rings.data.reshape(-1, 8)
+    i, j = np.triu_indices(len(data), 1)
+    d = cd.circle_circle(cd.Circle.from_array(data[i, :7]), cd.Circle.from_array(data[j, :7]),
+                         distance_only=True).distance
+    clear = d - data[i, 7] - data[j, 7]
+    pairs = lambda m: set(zip(i[m].tolist(), j[m].tolist()))
+    return pairs(clear <= delta - tol), pairs(clear <= delta + tol), dict(zip(zip(i.tolist(), j.tolist()), clear))
+
+
+def _check_against_reference(res, rings, delta):
+    sure, maybe, clear = _all_close_pairs(rings, delta)
+    got = list(zip(res.i.tolist(), res.j.tolist()))
+    assert len(set(got)) == len(got)                       # each pair once
+    assert sure <= set(got) <= maybe
+    assert np.allclose(res.distance, [clear[p] for p in got], rtol=0, atol=1e-9)
+
+
 def test_dask_chainmail_matches_single_process():
     dc = _example("dask_chainmail")
-    from dask.distributed import Client, LocalCluster
-    cols, rows, parts, margin = 30, 24, 5, 0.05
-    single = dc.run(cols, rows, parts, margin)
-    with LocalCluster(n_workers=2, threads_per_worker=1, processes=False, dashboard_address=None) as cl, \
-            Client(cl) as client:
-        dist = dc.run(cols, rows, parts, margin, client=client)
-    for k in ("i", "j", "clearance", "points", "num_pairs"):
-        assert np.array_equal(single[k], dist[k]), k
-    assert single["candidates"] == dist["candidates"] and len(single["i"]) > 10
-    assert np.any(single["clearance"] < 0)                 # the jitter makes some collisions
-    # completeness, without the grid or the partitions: every pair of the sheet
-    ids, rings, wire = dc.make_rings(cols, 0, rows)
-    i, j = (np.array(x) for x in zip(*itertools.combinations(range(len(ids)), 2)))
-    d = cd.circle_circle(cd.Circle.from_array(rings.data[i]), cd.Circle.from_array(rings.data[j]),
-                         distance_only=True).distance
-    close = d - wire[i] - wire[j] < margin
-    assert np.array_equal(i[close], single["i"]) and np.array_equal(j[close], single["j"])
+    from dask.distributed import Client
+    rings, delta = dc.make_sheet(30, 24), 0.1
+    single = dc.run(rings, delta)
+    assert len(single) > 100 and np.any(single.distance < 0)   # the jitter makes collisions
+    with dc.local_cluster(2, 1, processes=False) as cl, Client(cl) as client:
+        timings = {}
+        dist = dc.run(rings, delta, client=client, per_task=60, timings=timings)
+    assert timings["tasks"] >= 8                           # halos cross several boxes
+    assert dc.same_pairs(single, dist)                     # same (i, j), distances, points, bit for bit
+    assert np.array_equal(single.i, dist.i) and np.array_equal(single.distance, dist.distance)
+    _check_against_reference(single, rings, delta)
 
 
-def test_candidate_grid_against_all_pairs():
+@pytest.mark.parametrize("shape", ["cloud", "chain"])
+def test_dask_chainmail_partitions_own_each_pair_once(shape):
+    """Partitions of data that is not a sheet: a 3D cloud of rings of mixed sizes (boxes in
+    three axes, halos wider than some boxes) and a long chain (slabs); each partition answered
+    here, as a task would, and merged."""
     dc = _example("dask_chainmail")
-    rng = np.random.default_rng(5)
-    pts = rng.uniform(0, 10, (400, 3))
-    i, j = dc.candidate_pairs(pts, 1.3, 300)
-    got = set(zip(i.tolist(), j.tolist()))
-    assert all(a < b and a < 300 for a, b in got) and len(got) == len(i)
-    dist = np.linalg.norm(pts[:, None] - pts[None], axis=2)
-    want = {(a, b) for a, b in zip(*np.nonzero(dist < 1.3)) if a < b and a < 300}
-    assert want <= got
+    rng = np.random.default_rng(7)
+    n = 500
+    if shape == "cloud":
+        c = rng.uniform(0, 16, (n, 3)) * [1, 1, 0.6]
+        r = np.where(rng.random(n) < 0.1, 1.5, rng.uniform(0.05, 0.6, n))
+    else:
+        c = np.stack([np.arange(n) * 0.9, rng.normal(0, 0.05, n), rng.normal(0, 0.05, n)], axis=1)
+        r = np.full(n, 0.5)
+    normal = rng.normal(size=(n, 3))
+    rings = cd.Torus(cd.Circle(c, normal / np.linalg.norm(normal, axis=1)[:, None], r),
+                     rng.uniform(0, 0.1, n))
+    delta = 0.2
+    single = dc.run(rings, delta)
+    parts, edges = dc.plan(rings, delta, per_task=40)
+    assert len(parts) >= 8 and (shape == "chain") == (sum(len(e) > 0 for e in edges) == 1)
+    owned = np.concatenate([ids[~halo] for ids, halo in parts])
+    assert np.array_equal(np.sort(owned), np.arange(n))    # every ring owned by one partition
+    rows = rings.data.reshape(-1, 8)
+    merged = dc.combine([dc.screen_partition((rows[ids], ids, halo), delta) for ids, halo in parts])
+    assert dc.same_pairs(single, merged)
+    _check_against_reference(single, rings, delta)
 
 
 def _disk_samples(c, n, r, k=30):
