@@ -325,29 +325,38 @@ static double cert_mu(const cdist__cs_scan *s)
     return CD_CURVE_CERT_EVAL_ULPS * DBL_EPSILON * (2.0 * s->k->b.scale + s->c->r + s->frame_mag);
 }
 
-/* The interval cannot hold a distance below lim (> 0). */
-static int cert_excluded(const cdist__cs_scan *s, const cert_node *nd, double best, double lim)
+static inline double min2(double a, double b) { return a < b ? a : b; }
+static inline double max2(double a, double b) { return a > b ? a : b; }
+
+/* The interval cannot hold a distance below lim (> 0); mu: cert_mu(s). */
+static int cert_excluded(const cdist__cs_scan *s, const cert_node *nd, double best, double lim, double mu)
 {
-    double mu = cert_mu(s), w = nd->b - nd->a, S = s->speed_max, K = s->accel_max;
+    double w = nd->b - nd->a, S = s->speed_max, K = s->accel_max;
     double da = nd->da - mu, db = nd->db - mu;
     if (0.5 * (da + db - S * w) >= lim) return 1;
-    double dm = fmin(da, db);
-    if (dm > 0.0 && dm * dm - (S * S + (best + S * w) * K) * w * w * 0.25 >= lim * lim) return 1;
+    double dl = min2(da, db), dh = max2(da, db), lim2 = lim * lim;
+    if (dl > 0.0) {
+        /* The chord from the lower end (fl) to the higher one (fh) minus M s (w - s) / 2, s from
+         * the lower end: its minimum is at s = w/2 - (fh - fl) / (M w), clipped to [0, w/2]. */
+        double fl = dl * dl, fh = dh * dh, M = 2.0 * (S * S + (best + S * w) * K), mw = M * w;
+        double sm = mw > 0.0 ? 0.5 * w - (fh - fl) / mw : 0.5 * w;
+        if ((sm > 0.0 ? fl - 0.5 * M * sm * sm : fl) >= lim2) return 1;
+    }
     double hl = 0.0;
     if ((nd->ha > 0.0 && nd->hb > 0.0) || (nd->ha < 0.0 && nd->hb < 0.0))
-        hl = fmax(0.0, fmin(fabs(nd->ha), fabs(nd->hb)) - mu - s->accel_normal_max * w * w * 0.125);
+        hl = max2(0.0, min2(fabs(nd->ha), fabs(nd->hb)) - mu - s->accel_normal_max * w * w * 0.125);
     /* (plain squares: the scan's frame is scaled to L ~ 1) */
     double dx = nd->xb - nd->xa, dy = nd->yb - nd->ya, ll = dx * dx + dy * dy;
     double u = ll > 0.0 ? -(nd->xa * dx + nd->ya * dy) / ll : 0.0;
     u = u < 0.0 ? 0.0 : (u > 1.0 ? 1.0 : u);
     double sag = s->accel_plane_max * w * w * 0.125 + 2.0 * mu, r = s->c->r;
     double cx = nd->xa + u * dx, cy = nd->ya + u * dy;
-    double rl = fmax(0.0, sqrt(cx * cx + cy * cy) - sag - r);
+    double rl = max2(0.0, sqrt(cx * cx + cy * cy) - sag - r);
     if (!s->disk) {
         double ra2 = nd->xa * nd->xa + nd->ya * nd->ya, rb2 = nd->xb * nd->xb + nd->yb * nd->yb;
-        rl = fmax(rl, r - sqrt(fmax(ra2, rb2)) - sag);
+        rl = max2(rl, r - sqrt(max2(ra2, rb2)) - sag);
     }
-    if (hl * hl + rl * rl >= lim * lim) return 1;
+    if (hl * hl + rl * rl >= lim2) return 1;
     return s->lb && s->lb(s, nd->a, nd->b) >= lim;
 }
 
@@ -356,11 +365,12 @@ static cdist_status certify(cdist__cs_scan *s, cert_node nd)
     cert_node stack[CD_CURVE_CERT_DEPTH];
     int top = 0;
     cdist_status st;
+    double mu = cert_mu(s);
     for (;;) {
         double best = s->k->b.n ? sqrt(s->k->b.c[0].d2) : INFINITY;
         double lim = best - cert_tol(s);
         double m = 0.5 * (nd.a + nd.b);
-        if (lim > 0.0 && !cert_excluded(s, &nd, best, lim) && m > nd.a && m < nd.b) {
+        if (lim > 0.0 && !cert_excluded(s, &nd, best, lim, mu) && m > nd.a && m < nd.b) {
             if (++s->cert_nodes > CD_CURVE_CERT_MAX_NODES)
                 return cdist__fail(s->q, CDIST_ERR_COST_LIMIT,
                                    "curve: certifying the minimum needs more than %ld bound evaluations",
@@ -422,7 +432,7 @@ static cdist_status certify_samples(cdist__cs_scan *s, double t0, double t1, int
     double screen = 2.0 * (best - cert_tol(s) + cert_mu(s)) + s->speed_max * ((t1 - t0) / n) * (1.0 + 0x1p-40);
     double half2 = screen > 0.0 ? 0.25 * screen * screen * (1.0 + 0x1p-40) : 0.0;
     for (int m = i; m < j; m++) {
-        if (fmin(F[m], F[m + 1]) >= half2) continue;
+        if (min2(F[m], F[m + 1]) >= half2) continue;
         double da = sqrt(F[m]), db = sqrt(F[m + 1]);
         if (da + db >= screen) continue;
         cert_node nd = {t_at(t0, t1, m, n), t_at(t0, t1, m + 1, n), da, db, H[m], H[m + 1],
@@ -774,7 +784,7 @@ static helix_bound helix_bound_init(const helix_x *hx, const cdist__circle *c, i
 static double helix_piece_lb(const helix_bound *hb, const helix_x *hx, double a, double b)
 {
     double z0 = hx->rise * a, z1 = hx->rise * b;
-    double za = fmin(z0, z1), zb = fmax(z0, z1);
+    double za = min2(z0, z1), zb = max2(z0, z1);
     double gap = za > hb->zhi ? za - hb->zhi : (zb < hb->zlo ? hb->zlo - zb : 0.0);
     return hypot(gap, hb->rgap);
 }
