@@ -133,12 +133,13 @@ typedef struct sample {
     double speed; /* |P'| (1-norm) */
 } sample;
 
-/* In-plane coordinates of the sample's point relative to the centre (along the circle's u, v):
- * the certification's chord bound (only there, not in every solver step). */
-static void in_plane(const cdist__cs_scan *s, const sample *x, double *px, double *py)
+/* Height over the circle's plane and in-plane coordinates (along the circle's u, v) of a point,
+ * relative to the centre: the certification's component bounds (computed only there). */
+static void plane_coords(const cdist__cs_scan *s, vec3 p, double *h, double *px, double *py)
 {
     const cdist__circle *c = s->c;
-    vec3 rel = v_sub(x->p, c->c);
+    vec3 rel = v_sub(p, c->c);
+    *h = c->n.x * rel.x + c->n.y * rel.y + c->n.z * rel.z;
     *px = c->u.x * rel.x + c->u.y * rel.y + c->u.z * rel.z;
     *py = c->v.x * rel.x + c->v.y * rel.y + c->v.z * rel.z;
 }
@@ -328,20 +329,27 @@ static double cert_mu(const cdist__cs_scan *s)
 static inline double min2(double a, double b) { return a < b ? a : b; }
 static inline double max2(double a, double b) { return a > b ? a : b; }
 
+/* The first- and second-order bounds of the distance over an interval of width w whose end
+ * distances are at least da, db (rounding already subtracted): 1 when no point of it is below
+ * lim (> 0). */
+static int chord_excluded(const cdist__cs_scan *s, double w, double da, double db, double best, double lim)
+{
+    double S = s->speed_max, K = s->accel_max;
+    if (0.5 * (da + db - S * w) >= lim) return 1;
+    double dl = min2(da, db), dh = max2(da, db);
+    if (!(dl > 0.0)) return 0;
+    /* The chord from the lower end (fl) to the higher one (fh) minus M s (w - s) / 2, s from the
+     * lower end: its minimum is at s = w/2 - (fh - fl) / (M w), clipped to [0, w/2]. */
+    double fl = dl * dl, fh = dh * dh, M = 2.0 * (S * S + (best + S * w) * K), mw = M * w;
+    double sm = mw > 0.0 ? 0.5 * w - (fh - fl) / mw : 0.5 * w;
+    return (sm > 0.0 ? fl - 0.5 * M * sm * sm : fl) >= lim * lim;
+}
+
 /* The interval cannot hold a distance below lim (> 0); mu: cert_mu(s). */
 static int cert_excluded(const cdist__cs_scan *s, const cert_node *nd, double best, double lim, double mu)
 {
-    double w = nd->b - nd->a, S = s->speed_max, K = s->accel_max;
-    double da = nd->da - mu, db = nd->db - mu;
-    if (0.5 * (da + db - S * w) >= lim) return 1;
-    double dl = min2(da, db), dh = max2(da, db), lim2 = lim * lim;
-    if (dl > 0.0) {
-        /* The chord from the lower end (fl) to the higher one (fh) minus M s (w - s) / 2, s from
-         * the lower end: its minimum is at s = w/2 - (fh - fl) / (M w), clipped to [0, w/2]. */
-        double fl = dl * dl, fh = dh * dh, M = 2.0 * (S * S + (best + S * w) * K), mw = M * w;
-        double sm = mw > 0.0 ? 0.5 * w - (fh - fl) / mw : 0.5 * w;
-        if ((sm > 0.0 ? fl - 0.5 * M * sm * sm : fl) >= lim2) return 1;
-    }
+    double w = nd->b - nd->a, lim2 = lim * lim;
+    if (chord_excluded(s, w, nd->da - mu, nd->db - mu, best, lim)) return 1;
     double hl = 0.0;
     if ((nd->ha > 0.0 && nd->hb > 0.0) || (nd->ha < 0.0 && nd->hb < 0.0))
         hl = max2(0.0, min2(fabs(nd->ha), fabs(nd->hb)) - mu - s->accel_normal_max * w * w * 0.125);
@@ -384,12 +392,12 @@ static cdist_status certify(cdist__cs_scan *s, cert_node nd)
                 s->span = span;
                 if (st) return st;
             }
-            double dm = sqrt(x.f), px, py;
-            in_plane(s, &x, &px, &py);
-            cert_node right = {m, nd.b, dm, nd.db, x.h, nd.hb, px, py, nd.xb, nd.yb};
+            double dm = sqrt(x.f), hm, px, py;
+            plane_coords(s, x.p, &hm, &px, &py);
+            cert_node right = {m, nd.b, dm, nd.db, hm, nd.hb, px, py, nd.xb, nd.yb};
             nd.b = m;
             nd.db = dm;
-            nd.hb = x.h;
+            nd.hb = hm;
             nd.xb = px;
             nd.yb = py;
             if (top < CD_CURVE_CERT_DEPTH) {
@@ -410,35 +418,46 @@ static double t_at(double t0, double t1, int i, int n)
     return t0 + (t1 - t0) * ((double)i / n);
 }
 
-/* Certify the sample intervals i..j-1 of a scan (arr: d^2, h, in-plane x and y per sample): where
- * the curve has its own bound, blocks of intervals are tried whole first (halving down to
+/* Certify the sample intervals i..j-1 of a scan (F: d^2, P: positions per sample): where the
+ * curve has its own bound, blocks of intervals are tried whole first (halving down to
  * CD_CURVE_CERT_BLOCK intervals), so that a bound that is tight over long ranges (coaxial and
  * concentric configurations) settles them in a few calls. */
-static cdist_status certify_samples(cdist__cs_scan *s, double t0, double t1, int n, int i, int j, const double *arr[4])
+static cdist_status certify_samples(cdist__cs_scan *s, double t0, double t1, int n, int i, int j, const double *F,
+                                    const vec3 *P)
 {
     if (j - i > 1 && s->lb && s->k->b.n && s->lb(s, t_at(t0, t1, i, n), t_at(t0, t1, j, n)) >=
                                                sqrt(s->k->b.c[0].d2) - cert_tol(s))
         return CDIST_OK;
     if (j - i > CD_CURVE_CERT_BLOCK && s->lb) {
         int k = i + (j - i) / 2;
-        cdist_status st = certify_samples(s, t0, t1, n, i, k, arr);
-        return st ? st : certify_samples(s, t0, t1, n, k, j, arr);
+        cdist_status st = certify_samples(s, t0, t1, n, i, k, F, P);
+        return st ? st : certify_samples(s, t0, t1, n, k, j, F, P);
     }
-    const double *F = arr[0], *H = arr[1], *X = arr[2], *Y = arr[3];
     /* Lipschitz screen first (the bound of cert_excluded, for the longest interval of the scan:
      * t_at's widths differ by rounding only, covered by the 1 + 2^-40 factor), on the squares
-     * where both ends clear half of it. */
+     * where both ends clear half of it; then the chord bound; the component bounds (heights and
+     * in-plane coordinates from the positions) only where both fail. */
     double best = s->k->b.n ? sqrt(s->k->b.c[0].d2) : INFINITY;
-    double screen = 2.0 * (best - cert_tol(s) + cert_mu(s)) + s->speed_max * ((t1 - t0) / n) * (1.0 + 0x1p-40);
+    double lim = best - cert_tol(s), mu = cert_mu(s);
+    double screen = 2.0 * (lim + mu) + s->speed_max * ((t1 - t0) / n) * (1.0 + 0x1p-40);
     double half2 = screen > 0.0 ? 0.25 * screen * screen * (1.0 + 0x1p-40) : 0.0;
     for (int m = i; m < j; m++) {
         if (min2(F[m], F[m + 1]) >= half2) continue;
         double da = sqrt(F[m]), db = sqrt(F[m + 1]);
         if (da + db >= screen) continue;
-        cert_node nd = {t_at(t0, t1, m, n), t_at(t0, t1, m + 1, n), da, db, H[m], H[m + 1],
-                        X[m],           Y[m],                   X[m + 1], Y[m + 1]};
+        double a = t_at(t0, t1, m, n), b = t_at(t0, t1, m + 1, n);
+        if (lim > 0.0 && chord_excluded(s, b - a, da - mu, db - mu, best, lim)) continue;
+        cert_node nd;
+        nd.a = a;
+        nd.b = b;
+        nd.da = da;
+        nd.db = db;
+        plane_coords(s, P[m], &nd.ha, &nd.xa, &nd.ya);
+        plane_coords(s, P[m + 1], &nd.hb, &nd.xb, &nd.yb);
         cdist_status st = certify(s, nd);
         if (st) return st;
+        best = sqrt(s->k->b.c[0].d2);
+        lim = best - cert_tol(s);
     }
     return CDIST_OK;
 }
@@ -449,8 +468,8 @@ cdist_status cdist__cs_scan_run(cdist__cs_scan *s, double t0, double t1, int n)
     cdist_status st;
     if (!(t0 < t1)) return offer_at(s, t0);
     if (n > q->curve_samples) n = q->curve_samples;
-    double *G = q->scratch, *Fv = G + (n + 1), *R = Fv + (n + 1), *T = R + (n + 1), *H = T + (n + 1);
-    double *X = H + (n + 1), *Y = X + (n + 1);
+    double *G = q->scratch, *Fv = G + (n + 1), *R = Fv + (n + 1), *T = R + (n + 1);
+    vec3 *Pv = (vec3 *)(T + (n + 1)); /* three doubles per sample */
     s->span = t1 - t0;
     double ext = 0.0, h_prev = 0.0;
     for (int i = 0; i <= n; i++) {
@@ -468,8 +487,7 @@ cdist_status cdist__cs_scan_run(cdist__cs_scan *s, double t0, double t1, int n)
         Fv[i] = x.f;
         R[i] = x.rho - s->c->r;
         T[i] = x.tol;
-        H[i] = x.h;
-        if (s->certify) in_plane(s, &x, &X[i], &Y[i]);
+        Pv[i] = x.p;
         ext = fmax(ext, v_dist(x.p, s->c->c));
     }
     if (s->update_scale) s->k->b.scale = fmax(s->k->b.scale, ext);
@@ -521,8 +539,7 @@ cdist_status cdist__cs_scan_run(cdist__cs_scan *s, double t0, double t1, int n)
         if (i > 0 && i < n && Fv[i] <= Fv[i - 1] && Fv[i] <= Fv[i + 1] && (st = offer_at(s, t))) return st;
     }
     if (!s->certify || !s->k->b.n) return CDIST_OK; /* (both ends were offered: n >= 1) */
-    const double *arr[4] = {Fv, H, X, Y};
-    return certify_samples(s, t0, t1, n, 0, n, arr);
+    return certify_samples(s, t0, t1, n, 0, n, Fv, Pv);
 }
 
 cdist_status cdist__cs_flat_check(cdist__cs_scan *s, double t0, double t1, double delta)
