@@ -178,6 +178,34 @@ static cdist_status eval(const cdist__cs_scan *s, double t, sample *o)
     return CDIST_OK;
 }
 
+/* Position and F (or D) alone, the same arithmetic as eval. */
+static cdist_status eval_point(const cdist__cs_scan *s, double t, vec3 *p, double *f)
+{
+    if (!s->pos) {
+        sample x;
+        cdist_status st = eval(s, t, &x);
+        *p = x.p;
+        *f = x.f;
+        return st;
+    }
+    vec3 P = s->pos(s->ctx, t);
+    const cdist__circle *c = s->c;
+    vec3 n = c->n;
+    vec3 rel = v_sub(P, c->c);
+    double h = n.x * rel.x + n.y * rel.y + n.z * rel.z;
+    vec3 w = v_cross(n, rel);
+    double rho = sqrt(w.x * w.x + w.y * w.y + w.z * w.z);
+    double dr = rho - c->r;
+    if (s->disk) {
+        double o2 = dr > 0.0 ? dr : 0.0;
+        *f = o2 * o2 + h * h;
+    } else {
+        *f = dr * dr + h * h;
+    }
+    *p = P;
+    return CDIST_OK;
+}
+
 static void offer_sample(const cdist__cs_scan *s, double t, const sample *x)
 {
     if (s->cand) s->cand(s, t, x->p);
@@ -383,17 +411,18 @@ static cdist_status certify(cdist__cs_scan *s, cert_node nd)
                 return cdist__fail(s->q, CDIST_ERR_COST_LIMIT,
                                    "curve: certifying the minimum needs more than %ld bound evaluations",
                                    (long)CD_CURVE_CERT_MAX_NODES);
-            sample x;
-            if ((st = eval(s, m, &x))) return st;
-            if (x.f < lim * lim) {
+            vec3 pm;
+            double fm;
+            if ((st = eval_point(s, m, &pm, &fm))) return st;
+            if (fm < lim * lim) {
                 /* A point below the answer: descend to its basin's minimum. */
                 double span = s->span;
                 st = cdist__cs_polish(s, m, nd.a, nd.b);
                 s->span = span;
                 if (st) return st;
             }
-            double dm = sqrt(x.f), hm, px, py;
-            plane_coords(s, x.p, &hm, &px, &py);
+            double dm = sqrt(fm), hm, px, py;
+            plane_coords(s, pm, &hm, &px, &py);
             cert_node right = {m, nd.b, dm, nd.db, hm, nd.hb, px, py, nd.xb, nd.yb};
             nd.b = m;
             nd.db = dm;
@@ -638,14 +667,14 @@ cdist_status cdist__cs_check_interval(cdist_query *q, double t0, double t1, cons
 /* Run a curve (evaluated in the frame whose origin is `origin`) against circle or disk cc
  * (its centre already relative to that frame) and write the result. bounds: |P'|, |P''|,
  * |n . P''| and |n x P''| over [t0, t1] (certified search), or NULL (sampling only). */
-static cdist_status run_curve(cdist_query *q, cdist__cs_eval_fn ev, const void *ctx, double t0, double t1,
+static cdist_status run_curve(cdist_query *q, cdist__cs_eval_fn ev, cdist__cs_pos_fn pos, const void *ctx, double t0, double t1,
                               const cdist__circle *cc, int disk, vec3 origin, double scale, double frame_mag,
                               double up, const double *bounds, cdist_result *r)
 {
     cdist__cs_coll k;
     cdist__cs_coll_init(&k, scale);
     cdist__cs_scan s = {.q = q, .ev = ev, .ctx = ctx, .c = cc, .disk = disk, .k = &k, .update_scale = 1,
-                        .frame_mag = frame_mag};
+                        .frame_mag = frame_mag, .pos = pos};
     if (bounds) {
         s.certify = 1;
         s.speed_max = bounds[0];
@@ -685,7 +714,7 @@ static cdist_status curve_query(cdist_query *q, cdist_curve_fn f, void *user, do
     u.down = cdist__pow2(-e);
     cc.r *= u.down;
     /* The callback's positions are absolute: their rounding is relative to |origin| too. */
-    return run_curve(q, user_eval, &u, t0, t1, &cc, disk, origin, cc.r, v_maxabs(origin) * u.down, cdist__pow2(e), NULL,
+    return run_curve(q, user_eval, NULL, &u, t0, t1, &cc, disk, origin, cc.r, v_maxabs(origin) * u.down, cdist__pow2(e), NULL,
                      r);
 }
 
@@ -728,6 +757,13 @@ typedef struct helix_x {
     vec3 c, n, u, v; /* c relative to the circle's centre */
     double r, rise;  /* rise = pitch / (2 pi) */
 } helix_x;
+
+static vec3 helix_pos(const void *ctx, double t)
+{
+    const helix_x *h = ctx;
+    vec3 radial = v_axpy(v_scale(cos(t), h->u), sin(t), h->v);
+    return v_axpy(v_axpy(h->c, h->r, radial), h->rise * t, h->n);
+}
 
 static cdist_status helix_eval(cdist_query *q, const void *ctx, double t, vec3 *p, vec3 *dp)
 {
@@ -939,7 +975,8 @@ static cdist_status helix_query(cdist_query *q, const cdist_helix *h, const cdis
     double plen = len / (double)pieces;
     cdist__cs_coll k;
     cdist__cs_coll_init(&k, fmax(cc.r, v_norm(hx.c)));
-    cdist__cs_scan s = {.q = q, .ev = helix_eval, .ctx = &hx, .c = &cc, .disk = disk, .k = &k, .update_scale = 1};
+    cdist__cs_scan s = {.q = q, .ev = helix_eval, .ctx = &hx, .c = &cc, .disk = disk, .k = &k, .update_scale = 1,
+                        .pos = helix_pos};
     helix_lb_ctx lbc = {helix_bound_init(&hx, &cc, disk, fabs(hx.rise) * fmax(fabs(t0), fabs(t1))), &hx};
     s.certify = 1;
     s.speed_max = hypot(hx.r, hx.rise);
@@ -978,13 +1015,21 @@ typedef struct bez_x {
     vec3 p[4]; /* relative to the circle's centre */
 } bez_x;
 
+static inline vec3 bez_point(const bez_x *b, double t)
+{
+    double mt = 1.0 - t;
+    double b0 = mt * mt * mt, b1 = 3.0 * mt * mt * t, b2 = 3.0 * mt * t * t, b3 = t * t * t;
+    return v_axpy(v_axpy(v_axpy(v_scale(b0, b->p[0]), b1, b->p[1]), b2, b->p[2]), b3, b->p[3]);
+}
+
+static vec3 bez_pos(const void *ctx, double t) { return bez_point(ctx, t); }
+
 static cdist_status bez_eval(cdist_query *q, const void *ctx, double t, vec3 *p, vec3 *dp)
 {
     (void)q;
     const bez_x *b = ctx;
     double mt = 1.0 - t;
-    double b0 = mt * mt * mt, b1 = 3.0 * mt * mt * t, b2 = 3.0 * mt * t * t, b3 = t * t * t;
-    *p = v_axpy(v_axpy(v_axpy(v_scale(b0, b->p[0]), b1, b->p[1]), b2, b->p[2]), b3, b->p[3]);
+    *p = bez_point(b, t);
     vec3 d0 = v_sub(b->p[1], b->p[0]), d1 = v_sub(b->p[2], b->p[1]), d2 = v_sub(b->p[3], b->p[2]);
     *dp = v_axpy(v_axpy(v_scale(3.0 * mt * mt, d0), 6.0 * mt * t, d1), 3.0 * t * t, d2);
     return CDIST_OK;
@@ -1023,7 +1068,7 @@ static cdist_status bezier_query(cdist_query *q, const cdist_bezier3 *bz, const 
         Kp = fmax(Kp, v_norm(v_cross(cc.n, a2)));
     }
     double bounds[4] = {S, K, Kn, Kp};
-    return run_curve(q, bez_eval, &bx, 0.0, 1.0, &cc, disk, origin, scale * down, 0.0, cdist__pow2(e), bounds, r);
+    return run_curve(q, bez_eval, bez_pos, &bx, 0.0, 1.0, &cc, disk, origin, scale * down, 0.0, cdist__pow2(e), bounds, r);
 }
 
 cdist_status cdist_bezier3_circle(cdist_query *q, const cdist_bezier3 *b, const cdist_circle *c, cdist_result *r)
