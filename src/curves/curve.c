@@ -464,29 +464,32 @@ static cdist_status certify_samples(cdist__cs_scan *s, double t0, double t1, int
     }
     /* Lipschitz screen first (the bound of cert_excluded, for the longest interval of the scan:
      * t_at's widths differ by rounding only, covered by the 1 + 2^-40 factor), on the squares
-     * where both ends clear half of it; then the chord bound; the component bounds (heights and
-     * in-plane coordinates from the positions) only where both fail. */
+     * where an end is below half of it (each low sample opens its two intervals, each interval
+     * looked at once); then the chord bound; the component bounds (heights and in-plane
+     * coordinates from the positions) only where both fail. */
     double best = s->k->b.n ? sqrt(s->k->b.c[0].d2) : INFINITY;
     double lim = best - cert_tol(s), mu = cert_mu(s);
     double screen = 2.0 * (lim + mu) + s->speed_max * ((t1 - t0) / n) * (1.0 + 0x1p-40);
     double half2 = screen > 0.0 ? 0.25 * screen * screen * (1.0 + 0x1p-40) : 0.0;
-    for (int m = i; m < j; m++) {
-        if (min2(F[m], F[m + 1]) >= half2) continue;
-        double da = sqrt(F[m]), db = sqrt(F[m + 1]);
-        if (da + db >= screen) continue;
-        double a = t_at(t0, t1, m, n), b = t_at(t0, t1, m + 1, n);
-        if (lim > 0.0 && chord_excluded(s, b - a, da - mu, db - mu, best, lim)) continue;
-        cert_node nd;
-        nd.a = a;
-        nd.b = b;
-        nd.da = da;
-        nd.db = db;
-        plane_coords(s, P[m], &nd.ha, &nd.xa, &nd.ya);
-        plane_coords(s, P[m + 1], &nd.hb, &nd.xb, &nd.yb);
-        cdist_status st = certify(s, nd);
-        if (st) return st;
-        best = sqrt(s->k->b.c[0].d2);
-        lim = best - cert_tol(s);
+    for (int e = i; e <= j; e++) {
+        if (F[e] >= half2) continue;
+        for (int m = (e > i && F[e - 1] >= half2) ? e - 1 : e; m <= e && m < j; m++) {
+            double da = sqrt(F[m]), db = sqrt(F[m + 1]);
+            if (da + db >= screen) continue;
+            double a = t_at(t0, t1, m, n), b = t_at(t0, t1, m + 1, n);
+            if (lim > 0.0 && chord_excluded(s, b - a, da - mu, db - mu, best, lim)) continue;
+            cert_node nd;
+            nd.a = a;
+            nd.b = b;
+            nd.da = da;
+            nd.db = db;
+            plane_coords(s, P[m], &nd.ha, &nd.xa, &nd.ya);
+            plane_coords(s, P[m + 1], &nd.hb, &nd.xb, &nd.yb);
+            cdist_status st = certify(s, nd);
+            if (st) return st;
+            best = sqrt(s->k->b.c[0].d2);
+            lim = best - cert_tol(s);
+        }
     }
     return CDIST_OK;
 }
