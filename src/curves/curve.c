@@ -447,37 +447,46 @@ static double t_at(double t0, double t1, int i, int n)
     return t0 + (t1 - t0) * ((double)i / n);
 }
 
-/* Certify the sample intervals i..j-1 of a scan (F: d^2, P: positions per sample): where the
- * curve has its own bound, blocks of intervals are tried whole first (halving down to
- * CD_CURVE_CERT_BLOCK intervals), so that a bound that is tight over long ranges (coaxial and
- * concentric configurations) settles them in a few calls. */
-static cdist_status certify_samples(cdist__cs_scan *s, double t0, double t1, int n, int i, int j, const double *F,
-                                    const vec3 *P)
+/* Certify the sample intervals of a scan (F: d^2, P: positions per sample). Lipschitz screen
+ * first (the bound of cert_excluded, for the longest interval of the scan: t_at's widths differ
+ * by rounding only, covered by the 1 + 2^-40 factor), on the squares where an end is below half
+ * of it (each low sample opens its two intervals, each interval looked at once); then the chord
+ * bound; then, where the curve has its own bound, that bound over the whole range once and over
+ * the block of CD_CURVE_CERT_BLOCK intervals holding the interval (a bound that is tight over
+ * long ranges, as in coaxial and concentric configurations, settles a block in one call); the
+ * component bounds (heights and in-plane coordinates from the positions) only where all fail. */
+static cdist_status certify_samples(cdist__cs_scan *s, double t0, double t1, int n, const double *F, const vec3 *P)
 {
-    if (j - i > 1 && s->lb && s->k->b.n && s->lb(s, t_at(t0, t1, i, n), t_at(t0, t1, j, n)) >=
-                                               sqrt(s->k->b.c[0].d2) - cert_tol(s))
-        return CDIST_OK;
-    if (j - i > CD_CURVE_CERT_BLOCK && s->lb) {
-        int k = i + (j - i) / 2;
-        cdist_status st = certify_samples(s, t0, t1, n, i, k, F, P);
-        return st ? st : certify_samples(s, t0, t1, n, k, j, F, P);
-    }
-    /* Lipschitz screen first (the bound of cert_excluded, for the longest interval of the scan:
-     * t_at's widths differ by rounding only, covered by the 1 + 2^-40 factor), on the squares
-     * where an end is below half of it (each low sample opens its two intervals, each interval
-     * looked at once); then the chord bound; the component bounds (heights and in-plane
-     * coordinates from the positions) only where both fail. */
-    double best = s->k->b.n ? sqrt(s->k->b.c[0].d2) : INFINITY;
+    double best = sqrt(s->k->b.c[0].d2);
     double lim = best - cert_tol(s), mu = cert_mu(s);
     double screen = 2.0 * (lim + mu) + s->speed_max * ((t1 - t0) / n) * (1.0 + 0x1p-40);
     double half2 = screen > 0.0 ? 0.25 * screen * screen * (1.0 + 0x1p-40) : 0.0;
-    for (int e = i; e <= j; e++) {
+    int whole = 0;      /* the curve's bound was tried over the whole range */
+    int block_end = -1; /* intervals below this index are settled by their block's bound */
+    int block_tried = -1; /* start of the last block whose bound was tried */
+    for (int e = 0; e <= n; e++) {
         if (F[e] >= half2) continue;
-        for (int m = (e > i && F[e - 1] >= half2) ? e - 1 : e; m <= e && m < j; m++) {
+        for (int m = (e > 0 && F[e - 1] >= half2) ? e - 1 : e; m <= e && m < n; m++) {
+            if (m < block_end) continue;
             double da = sqrt(F[m]), db = sqrt(F[m + 1]);
             if (da + db >= screen) continue;
             double a = t_at(t0, t1, m, n), b = t_at(t0, t1, m + 1, n);
-            if (lim > 0.0 && chord_excluded(s, b - a, da - mu, db - mu, best, lim)) continue;
+            if (!(lim > 0.0)) return CDIST_OK;
+            if (chord_excluded(s, b - a, da - mu, db - mu, best, lim)) continue;
+            if (s->lb && n > 1) {
+                if (!whole) {
+                    whole = 1;
+                    if (s->lb(s, t0, t1) >= lim) return CDIST_OK;
+                }
+                int b0 = m - m % CD_CURVE_CERT_BLOCK, b1 = b0 + CD_CURVE_CERT_BLOCK < n ? b0 + CD_CURVE_CERT_BLOCK : n;
+                if (b0 != block_tried && b1 - b0 > 1) {
+                    block_tried = b0;
+                    if (s->lb(s, t_at(t0, t1, b0, n), t_at(t0, t1, b1, n)) >= lim) {
+                        block_end = b1;
+                        continue;
+                    }
+                }
+            }
             cert_node nd;
             nd.a = a;
             nd.b = b;
@@ -571,7 +580,7 @@ cdist_status cdist__cs_scan_run(cdist__cs_scan *s, double t0, double t1, int n)
         if (i > 0 && i < n && Fv[i] <= Fv[i - 1] && Fv[i] <= Fv[i + 1] && (st = offer_at(s, t))) return st;
     }
     if (!s->certify || !s->k->b.n) return CDIST_OK; /* (both ends were offered: n >= 1) */
-    return certify_samples(s, t0, t1, n, 0, n, Fv, Pv);
+    return certify_samples(s, t0, t1, n, Fv, Pv);
 }
 
 cdist_status cdist__cs_flat_check(cdist__cs_scan *s, double t0, double t1, double delta)
@@ -842,6 +851,7 @@ static double helix_piece_lb(const helix_bound *hb, const helix_x *hx, double a,
     double z0 = hx->rise * a, z1 = hx->rise * b;
     double za = min2(z0, z1), zb = max2(z0, z1);
     double gap = za > hb->zhi ? za - hb->zhi : (zb < hb->zlo ? hb->zlo - zb : 0.0);
+    if (gap == 0.0 || hb->rgap == 0.0) return gap + hb->rgap; /* hypot's value, without its cost */
     return hypot(gap, hb->rgap);
 }
 
