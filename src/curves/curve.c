@@ -327,10 +327,10 @@ static cdist_status axis_offer(const cdist__cs_scan *s, double a, double b)
  *    d >= (d(a) + d(b) - S w) / 2;
  *  - second order: f(t) = min over target points Y of |P(t) - Y|^2, and each of these has second
  *    derivative 2 |P'|^2 + 2 (P - Y).P'' <= 2 S^2 + 2 |P - Y| K; where d(t) < best, the Y that
- *    is closest at t is within best + S w of every P(s), so f(t) >= min(f(a), f(b)) - (S^2 +
- *    (best + S w) K) w^2 / 4 (a function whose second derivative is at most M lies above its
- *    chord minus M w^2 / 8): if that is at least (best - tau)^2, no t of [a, b] has
- *    d(t) < best - tau;
+ *    is closest at t is within best + S w of every P(s), so with M = 2 (S^2 + (best + S w) K)
+ *    f lies above its chord minus M s (w - s) / 2 (s = t - a; a function whose second
+ *    derivative is at most M): its minimum over [a, b] (chord_excluded) at least (best - tau)^2
+ *    means no t of [a, b] has d(t) < best - tau;
  *  - components: d^2 = h^2 + (rho - r)^2 (circle), h^2 + max(rho - r, 0)^2 (disk). Where h keeps
  *    its sign, |h| >= min(|h(a)|, |h(b)|) - Kn w^2 / 8 (the chord argument on h, whose second
  *    derivative is n . P'', |n . P''| <= Kn); the in-plane offset q(t) (|q| = rho) stays within
