@@ -359,14 +359,14 @@ static inline double max2(double a, double b) { return a > b ? a : b; }
 
 /* The first- and second-order bounds of the distance over an interval of width w whose end
  * distances are at least da, db (rounding already subtracted) and whose end points are pab
- * apart (as computed): 1 when no point of it is below lim (> 0). The speed bound is the
+ * apart (as computed; negative: not used): 1 when no point of it is below lim (> 0). The speed bound is the
  * curve's, or the local one: P' differs from its mean (P(b) - P(a)) / w by at most K w / 2
  * (|P''| <= K), the positions' rounding (mu each) included. */
 static int chord_excluded(const cdist__cs_scan *s, double w, double da, double db, double pab, double mu, double best,
                           double lim)
 {
-    double K = s->accel_max;
-    double S = min2(s->speed_max, ((pab + 4.0 * mu) / w + 0.5 * K * w) * (1.0 + 0x1p-40));
+    double K = s->accel_max, S = s->speed_max;
+    if (pab >= 0.0) S = min2(S, ((pab + 4.0 * mu) / w + 0.5 * K * w) * (1.0 + 0x1p-40));
     if (0.5 * (da + db - S * w) >= lim) return 1;
     double dl = min2(da, db), dh = max2(da, db);
     if (!(dl > 0.0)) return 0;
@@ -382,7 +382,8 @@ static int cert_excluded(const cdist__cs_scan *s, const cert_node *nd, double be
 {
     double w = nd->b - nd->a, lim2 = lim * lim;
     double eh = nd->hb - nd->ha, ex = nd->xb - nd->xa, ey = nd->yb - nd->ya;
-    if (chord_excluded(s, w, nd->da - mu, nd->db - mu, sqrt(eh * eh + ex * ex + ey * ey), mu, best, lim)) return 1;
+    double pab = s->speed_varies ? sqrt(eh * eh + ex * ex + ey * ey) : -1.0;
+    if (chord_excluded(s, w, nd->da - mu, nd->db - mu, pab, mu, best, lim)) return 1;
     double hl = 0.0;
     if ((nd->ha > 0.0 && nd->hb > 0.0) || (nd->ha < 0.0 && nd->hb < 0.0))
         hl = max2(0.0, min2(fabs(nd->ha), fabs(nd->hb)) - mu - s->accel_normal_max * w * w * 0.125);
@@ -477,7 +478,8 @@ static cdist_status certify_samples(cdist__cs_scan *s, double t0, double t1, int
             if (da + db >= screen) continue;
             double a = t_at(t0, t1, m, n), b = t_at(t0, t1, m + 1, n);
             if (!(lim > 0.0)) return CDIST_OK;
-            if (chord_excluded(s, b - a, da - mu, db - mu, v_dist(P[m], P[m + 1]), mu, best, lim)) continue;
+            double pab = s->speed_varies ? v_dist(P[m], P[m + 1]) : -1.0;
+            if (chord_excluded(s, b - a, da - mu, db - mu, pab, mu, best, lim)) continue;
             if (s->lb && n > 1) {
                 if (!whole) {
                     whole = 1;
@@ -698,6 +700,7 @@ static cdist_status run_curve(cdist_query *q, cdist__cs_eval_fn ev, cdist__cs_po
         s.accel_max = bounds[1];
         s.accel_normal_max = bounds[2];
         s.accel_plane_max = bounds[3];
+        s.speed_varies = 1;
     }
     cdist_status st = cdist__cs_scan_run(&s, t0, t1, q->curve_samples);
     if (!st) st = cdist__cs_flat_check(&s, t0, t1, (t1 - t0) / q->curve_samples);

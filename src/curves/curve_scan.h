@@ -64,6 +64,7 @@ struct cdist__cs_scan {
      * curves, candidate callbacks, a function known constant): no certification. */
     int certify;
     double speed_max, accel_max, accel_normal_max, accel_plane_max; /* |n x P''| last */
+    int speed_varies; /* |P'| may be well below speed_max: a local bound is worth its cost */
     cdist__cs_lb_fn lb; /* optional extra bound (NULL) */
     cdist__cs_pos_fn pos; /* optional position-only form of ev (NULL: ev) */
     const void *lb_ctx;
