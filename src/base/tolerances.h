@@ -118,8 +118,8 @@
 #define CD_CURVE_CERT_EVAL_ULPS 16.0
 #define CD_CURVE_CERT_DEPTH 80
 #define CD_CURVE_CERT_MAX_NODES 200000L
-/* Blocks of sample intervals tried whole with a curve's own bound are halved down to this many
- * intervals (a cost choice, not a tolerance). */
+/* Blocks of this many sample intervals are tried whole with a curve's own bound before their
+ * intervals are bounded one by one (a cost choice, not a tolerance). */
 #define CD_CURVE_CERT_BLOCK 16
 /* Callback curves: positions sampled to choose the frame's power-of-two scale. */
 #define CD_CURVE_SCALE_PROBES 8

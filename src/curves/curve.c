@@ -133,12 +133,13 @@ typedef struct sample {
     double speed; /* |P'| (1-norm) */
 } sample;
 
-/* In-plane coordinates of the sample's point relative to the centre (along the circle's u, v):
- * the certification's chord bound (only there, not in every solver step). */
-static void in_plane(const cdist__cs_scan *s, const sample *x, double *px, double *py)
+/* Height over the circle's plane and in-plane coordinates (along the circle's u, v) of a point,
+ * relative to the centre: the certification's component bounds (computed only there). */
+static void plane_coords(const cdist__cs_scan *s, vec3 p, double *h, double *px, double *py)
 {
     const cdist__circle *c = s->c;
-    vec3 rel = v_sub(x->p, c->c);
+    vec3 rel = v_sub(p, c->c);
+    *h = c->n.x * rel.x + c->n.y * rel.y + c->n.z * rel.z;
     *px = c->u.x * rel.x + c->u.y * rel.y + c->u.z * rel.z;
     *py = c->v.x * rel.x + c->v.y * rel.y + c->v.z * rel.z;
 }
@@ -174,6 +175,34 @@ static cdist_status eval(const cdist__cs_scan *s, double t, sample *o)
     double rn = fabs(rel.x) + fabs(rel.y) + fabs(rel.z), dn = fabs(D.x) + fabs(D.y) + fabs(D.z);
     o->tol = CD_CURVE_G_ULPS * DBL_EPSILON * (rn + c->r + s->frame_mag) * dn;
     o->speed = dn;
+    return CDIST_OK;
+}
+
+/* Position and F (or D) alone, the same arithmetic as eval. */
+static cdist_status eval_point(const cdist__cs_scan *s, double t, vec3 *p, double *f)
+{
+    if (!s->pos) {
+        sample x;
+        cdist_status st = eval(s, t, &x);
+        *p = x.p;
+        *f = x.f;
+        return st;
+    }
+    vec3 P = s->pos(s->ctx, t);
+    const cdist__circle *c = s->c;
+    vec3 n = c->n;
+    vec3 rel = v_sub(P, c->c);
+    double h = n.x * rel.x + n.y * rel.y + n.z * rel.z;
+    vec3 w = v_cross(n, rel);
+    double rho = sqrt(w.x * w.x + w.y * w.y + w.z * w.z);
+    double dr = rho - c->r;
+    if (s->disk) {
+        double o2 = dr > 0.0 ? dr : 0.0;
+        *f = o2 * o2 + h * h;
+    } else {
+        *f = dr * dr + h * h;
+    }
+    *p = P;
     return CDIST_OK;
 }
 
@@ -298,10 +327,10 @@ static cdist_status axis_offer(const cdist__cs_scan *s, double a, double b)
  *    d >= (d(a) + d(b) - S w) / 2;
  *  - second order: f(t) = min over target points Y of |P(t) - Y|^2, and each of these has second
  *    derivative 2 |P'|^2 + 2 (P - Y).P'' <= 2 S^2 + 2 |P - Y| K; where d(t) < best, the Y that
- *    is closest at t is within best + S w of every P(s), so f(t) >= min(f(a), f(b)) - (S^2 +
- *    (best + S w) K) w^2 / 4 (a function whose second derivative is at most M lies above its
- *    chord minus M w^2 / 8): if that is at least (best - tau)^2, no t of [a, b] has
- *    d(t) < best - tau;
+ *    is closest at t is within best + S w of every P(s), so with M = 2 (S^2 + (best + S w) K)
+ *    f lies above its chord minus M s (w - s) / 2 (s = t - a; a function whose second
+ *    derivative is at most M): its minimum over [a, b] (chord_excluded) at least (best - tau)^2
+ *    means no t of [a, b] has d(t) < best - tau;
  *  - components: d^2 = h^2 + (rho - r)^2 (circle), h^2 + max(rho - r, 0)^2 (disk). Where h keeps
  *    its sign, |h| >= min(|h(a)|, |h(b)|) - Kn w^2 / 8 (the chord argument on h, whose second
  *    derivative is n . P'', |n . P''| <= Kn); the in-plane offset q(t) (|q| = rho) stays within
@@ -325,29 +354,51 @@ static double cert_mu(const cdist__cs_scan *s)
     return CD_CURVE_CERT_EVAL_ULPS * DBL_EPSILON * (2.0 * s->k->b.scale + s->c->r + s->frame_mag);
 }
 
-/* The interval cannot hold a distance below lim (> 0). */
-static int cert_excluded(const cdist__cs_scan *s, const cert_node *nd, double best, double lim)
+static inline double min2(double a, double b) { return a < b ? a : b; }
+static inline double max2(double a, double b) { return a > b ? a : b; }
+
+/* The first- and second-order bounds of the distance over an interval of width w whose end
+ * distances are at least da, db (rounding already subtracted) and whose end points are pab
+ * apart (as computed; negative: not used): 1 when no point of it is below lim (> 0). The speed bound is the
+ * curve's, or the local one: P' differs from its mean (P(b) - P(a)) / w by at most K w / 2
+ * (|P''| <= K), the positions' rounding (mu each) included. */
+static int chord_excluded(const cdist__cs_scan *s, double w, double da, double db, double pab, double mu, double best,
+                          double lim)
 {
-    double mu = cert_mu(s), w = nd->b - nd->a, S = s->speed_max, K = s->accel_max;
-    double da = nd->da - mu, db = nd->db - mu;
+    double K = s->accel_max, S = s->speed_max;
+    if (pab >= 0.0) S = min2(S, ((pab + 4.0 * mu) / w + 0.5 * K * w) * (1.0 + 0x1p-40));
     if (0.5 * (da + db - S * w) >= lim) return 1;
-    double dm = fmin(da, db);
-    if (dm > 0.0 && dm * dm - (S * S + (best + S * w) * K) * w * w * 0.25 >= lim * lim) return 1;
+    double dl = min2(da, db), dh = max2(da, db);
+    if (!(dl > 0.0)) return 0;
+    /* The chord from the lower end (fl) to the higher one (fh) minus M s (w - s) / 2, s from the
+     * lower end: its minimum is at s = w/2 - (fh - fl) / (M w), clipped to [0, w/2]. */
+    double fl = dl * dl, fh = dh * dh, M = 2.0 * (S * S + (best + S * w) * K), mw = M * w;
+    double sm = mw > 0.0 ? 0.5 * w - (fh - fl) / mw : 0.5 * w;
+    return (sm > 0.0 ? fl - 0.5 * M * sm * sm : fl) >= lim * lim;
+}
+
+/* The interval cannot hold a distance below lim (> 0); mu: cert_mu(s). */
+static int cert_excluded(const cdist__cs_scan *s, const cert_node *nd, double best, double lim, double mu)
+{
+    double w = nd->b - nd->a, lim2 = lim * lim;
+    double eh = nd->hb - nd->ha, ex = nd->xb - nd->xa, ey = nd->yb - nd->ya;
+    double pab = s->speed_varies ? sqrt(eh * eh + ex * ex + ey * ey) : -1.0;
+    if (chord_excluded(s, w, nd->da - mu, nd->db - mu, pab, mu, best, lim)) return 1;
     double hl = 0.0;
     if ((nd->ha > 0.0 && nd->hb > 0.0) || (nd->ha < 0.0 && nd->hb < 0.0))
-        hl = fmax(0.0, fmin(fabs(nd->ha), fabs(nd->hb)) - mu - s->accel_normal_max * w * w * 0.125);
+        hl = max2(0.0, min2(fabs(nd->ha), fabs(nd->hb)) - mu - s->accel_normal_max * w * w * 0.125);
     /* (plain squares: the scan's frame is scaled to L ~ 1) */
     double dx = nd->xb - nd->xa, dy = nd->yb - nd->ya, ll = dx * dx + dy * dy;
     double u = ll > 0.0 ? -(nd->xa * dx + nd->ya * dy) / ll : 0.0;
     u = u < 0.0 ? 0.0 : (u > 1.0 ? 1.0 : u);
     double sag = s->accel_plane_max * w * w * 0.125 + 2.0 * mu, r = s->c->r;
     double cx = nd->xa + u * dx, cy = nd->ya + u * dy;
-    double rl = fmax(0.0, sqrt(cx * cx + cy * cy) - sag - r);
+    double rl = max2(0.0, sqrt(cx * cx + cy * cy) - sag - r);
     if (!s->disk) {
         double ra2 = nd->xa * nd->xa + nd->ya * nd->ya, rb2 = nd->xb * nd->xb + nd->yb * nd->yb;
-        rl = fmax(rl, r - sqrt(fmax(ra2, rb2)) - sag);
+        rl = max2(rl, r - sqrt(max2(ra2, rb2)) - sag);
     }
-    if (hl * hl + rl * rl >= lim * lim) return 1;
+    if (hl * hl + rl * rl >= lim2) return 1;
     return s->lb && s->lb(s, nd->a, nd->b) >= lim;
 }
 
@@ -356,30 +407,32 @@ static cdist_status certify(cdist__cs_scan *s, cert_node nd)
     cert_node stack[CD_CURVE_CERT_DEPTH];
     int top = 0;
     cdist_status st;
+    double mu = cert_mu(s);
     for (;;) {
         double best = s->k->b.n ? sqrt(s->k->b.c[0].d2) : INFINITY;
         double lim = best - cert_tol(s);
         double m = 0.5 * (nd.a + nd.b);
-        if (lim > 0.0 && !cert_excluded(s, &nd, best, lim) && m > nd.a && m < nd.b) {
+        if (lim > 0.0 && !cert_excluded(s, &nd, best, lim, mu) && m > nd.a && m < nd.b) {
             if (++s->cert_nodes > CD_CURVE_CERT_MAX_NODES)
                 return cdist__fail(s->q, CDIST_ERR_COST_LIMIT,
                                    "curve: certifying the minimum needs more than %ld bound evaluations",
                                    (long)CD_CURVE_CERT_MAX_NODES);
-            sample x;
-            if ((st = eval(s, m, &x))) return st;
-            if (x.f < lim * lim) {
+            vec3 pm;
+            double fm;
+            if ((st = eval_point(s, m, &pm, &fm))) return st;
+            if (fm < lim * lim) {
                 /* A point below the answer: descend to its basin's minimum. */
                 double span = s->span;
                 st = cdist__cs_polish(s, m, nd.a, nd.b);
                 s->span = span;
                 if (st) return st;
             }
-            double dm = sqrt(x.f), px, py;
-            in_plane(s, &x, &px, &py);
-            cert_node right = {m, nd.b, dm, nd.db, x.h, nd.hb, px, py, nd.xb, nd.yb};
+            double dm = sqrt(fm), hm, px, py;
+            plane_coords(s, pm, &hm, &px, &py);
+            cert_node right = {m, nd.b, dm, nd.db, hm, nd.hb, px, py, nd.xb, nd.yb};
             nd.b = m;
             nd.db = dm;
-            nd.hb = x.h;
+            nd.hb = hm;
             nd.xb = px;
             nd.yb = py;
             if (top < CD_CURVE_CERT_DEPTH) {
@@ -400,35 +453,59 @@ static double t_at(double t0, double t1, int i, int n)
     return t0 + (t1 - t0) * ((double)i / n);
 }
 
-/* Certify the sample intervals i..j-1 of a scan (arr: d^2, h, in-plane x and y per sample): where
- * the curve has its own bound, blocks of intervals are tried whole first (halving down to
- * CD_CURVE_CERT_BLOCK intervals), so that a bound that is tight over long ranges (coaxial and
- * concentric configurations) settles them in a few calls. */
-static cdist_status certify_samples(cdist__cs_scan *s, double t0, double t1, int n, int i, int j, const double *arr[4])
+/* Certify the sample intervals of a scan (F: d^2, P: positions per sample). Lipschitz screen
+ * first (the bound of cert_excluded, for the longest interval of the scan: t_at's widths differ
+ * by rounding only, covered by the 1 + 2^-40 factor), on the squares where an end is below half
+ * of it (each low sample opens its two intervals, each interval looked at once); then the chord
+ * bound; then, where the curve has its own bound, that bound over the whole range once and over
+ * the block of CD_CURVE_CERT_BLOCK intervals holding the interval (a bound that is tight over
+ * long ranges, as in coaxial and concentric configurations, settles a block in one call); the
+ * component bounds (heights and in-plane coordinates from the positions) only where all fail. */
+static cdist_status certify_samples(cdist__cs_scan *s, double t0, double t1, int n, const double *F, const vec3 *P)
 {
-    if (j - i > 1 && s->lb && s->k->b.n && s->lb(s, t_at(t0, t1, i, n), t_at(t0, t1, j, n)) >=
-                                               sqrt(s->k->b.c[0].d2) - cert_tol(s))
-        return CDIST_OK;
-    if (j - i > CD_CURVE_CERT_BLOCK && s->lb) {
-        int k = i + (j - i) / 2;
-        cdist_status st = certify_samples(s, t0, t1, n, i, k, arr);
-        return st ? st : certify_samples(s, t0, t1, n, k, j, arr);
-    }
-    const double *F = arr[0], *H = arr[1], *X = arr[2], *Y = arr[3];
-    /* Lipschitz screen first (the bound of cert_excluded, for the longest interval of the scan:
-     * t_at's widths differ by rounding only, covered by the 1 + 2^-40 factor), on the squares
-     * where both ends clear half of it. */
-    double best = s->k->b.n ? sqrt(s->k->b.c[0].d2) : INFINITY;
-    double screen = 2.0 * (best - cert_tol(s) + cert_mu(s)) + s->speed_max * ((t1 - t0) / n) * (1.0 + 0x1p-40);
+    double best = sqrt(s->k->b.c[0].d2);
+    double lim = best - cert_tol(s), mu = cert_mu(s);
+    double screen = 2.0 * (lim + mu) + s->speed_max * ((t1 - t0) / n) * (1.0 + 0x1p-40);
     double half2 = screen > 0.0 ? 0.25 * screen * screen * (1.0 + 0x1p-40) : 0.0;
-    for (int m = i; m < j; m++) {
-        if (fmin(F[m], F[m + 1]) >= half2) continue;
-        double da = sqrt(F[m]), db = sqrt(F[m + 1]);
-        if (da + db >= screen) continue;
-        cert_node nd = {t_at(t0, t1, m, n), t_at(t0, t1, m + 1, n), da, db, H[m], H[m + 1],
-                        X[m],           Y[m],                   X[m + 1], Y[m + 1]};
-        cdist_status st = certify(s, nd);
-        if (st) return st;
+    int whole = 0;      /* the curve's bound was tried over the whole range */
+    int block_end = -1; /* intervals below this index are settled by their block's bound */
+    int block_tried = -1; /* start of the last block whose bound was tried */
+    for (int e = 0; e <= n; e++) {
+        if (F[e] >= half2) continue;
+        for (int m = (e > 0 && F[e - 1] >= half2) ? e - 1 : e; m <= e && m < n; m++) {
+            if (m < block_end) continue;
+            double da = sqrt(F[m]), db = sqrt(F[m + 1]);
+            if (da + db >= screen) continue;
+            double a = t_at(t0, t1, m, n), b = t_at(t0, t1, m + 1, n);
+            if (!(lim > 0.0)) return CDIST_OK;
+            double pab = s->speed_varies ? v_dist(P[m], P[m + 1]) : -1.0;
+            if (chord_excluded(s, b - a, da - mu, db - mu, pab, mu, best, lim)) continue;
+            if (s->lb && n > 1) {
+                if (!whole) {
+                    whole = 1;
+                    if (s->lb(s, t0, t1) >= lim) return CDIST_OK;
+                }
+                int b0 = m - m % CD_CURVE_CERT_BLOCK, b1 = b0 + CD_CURVE_CERT_BLOCK < n ? b0 + CD_CURVE_CERT_BLOCK : n;
+                if (b0 != block_tried && b1 - b0 > 1) {
+                    block_tried = b0;
+                    if (s->lb(s, t_at(t0, t1, b0, n), t_at(t0, t1, b1, n)) >= lim) {
+                        block_end = b1;
+                        continue;
+                    }
+                }
+            }
+            cert_node nd;
+            nd.a = a;
+            nd.b = b;
+            nd.da = da;
+            nd.db = db;
+            plane_coords(s, P[m], &nd.ha, &nd.xa, &nd.ya);
+            plane_coords(s, P[m + 1], &nd.hb, &nd.xb, &nd.yb);
+            cdist_status st = certify(s, nd);
+            if (st) return st;
+            best = sqrt(s->k->b.c[0].d2);
+            lim = best - cert_tol(s);
+        }
     }
     return CDIST_OK;
 }
@@ -439,8 +516,8 @@ cdist_status cdist__cs_scan_run(cdist__cs_scan *s, double t0, double t1, int n)
     cdist_status st;
     if (!(t0 < t1)) return offer_at(s, t0);
     if (n > q->curve_samples) n = q->curve_samples;
-    double *G = q->scratch, *Fv = G + (n + 1), *R = Fv + (n + 1), *T = R + (n + 1), *H = T + (n + 1);
-    double *X = H + (n + 1), *Y = X + (n + 1);
+    double *G = q->scratch, *Fv = G + (n + 1), *R = Fv + (n + 1), *T = R + (n + 1);
+    vec3 *Pv = (vec3 *)(T + (n + 1)); /* three doubles per sample */
     s->span = t1 - t0;
     double ext = 0.0, h_prev = 0.0;
     for (int i = 0; i <= n; i++) {
@@ -458,8 +535,7 @@ cdist_status cdist__cs_scan_run(cdist__cs_scan *s, double t0, double t1, int n)
         Fv[i] = x.f;
         R[i] = x.rho - s->c->r;
         T[i] = x.tol;
-        H[i] = x.h;
-        if (s->certify) in_plane(s, &x, &X[i], &Y[i]);
+        Pv[i] = x.p;
         ext = fmax(ext, v_dist(x.p, s->c->c));
     }
     if (s->update_scale) s->k->b.scale = fmax(s->k->b.scale, ext);
@@ -511,8 +587,7 @@ cdist_status cdist__cs_scan_run(cdist__cs_scan *s, double t0, double t1, int n)
         if (i > 0 && i < n && Fv[i] <= Fv[i - 1] && Fv[i] <= Fv[i + 1] && (st = offer_at(s, t))) return st;
     }
     if (!s->certify || !s->k->b.n) return CDIST_OK; /* (both ends were offered: n >= 1) */
-    const double *arr[4] = {Fv, H, X, Y};
-    return certify_samples(s, t0, t1, n, 0, n, arr);
+    return certify_samples(s, t0, t1, n, Fv, Pv);
 }
 
 cdist_status cdist__cs_flat_check(cdist__cs_scan *s, double t0, double t1, double delta)
@@ -611,20 +686,21 @@ cdist_status cdist__cs_check_interval(cdist_query *q, double t0, double t1, cons
 /* Run a curve (evaluated in the frame whose origin is `origin`) against circle or disk cc
  * (its centre already relative to that frame) and write the result. bounds: |P'|, |P''|,
  * |n . P''| and |n x P''| over [t0, t1] (certified search), or NULL (sampling only). */
-static cdist_status run_curve(cdist_query *q, cdist__cs_eval_fn ev, const void *ctx, double t0, double t1,
+static cdist_status run_curve(cdist_query *q, cdist__cs_eval_fn ev, cdist__cs_pos_fn pos, const void *ctx, double t0, double t1,
                               const cdist__circle *cc, int disk, vec3 origin, double scale, double frame_mag,
                               double up, const double *bounds, cdist_result *r)
 {
     cdist__cs_coll k;
     cdist__cs_coll_init(&k, scale);
     cdist__cs_scan s = {.q = q, .ev = ev, .ctx = ctx, .c = cc, .disk = disk, .k = &k, .update_scale = 1,
-                        .frame_mag = frame_mag};
+                        .frame_mag = frame_mag, .pos = pos};
     if (bounds) {
         s.certify = 1;
         s.speed_max = bounds[0];
         s.accel_max = bounds[1];
         s.accel_normal_max = bounds[2];
         s.accel_plane_max = bounds[3];
+        s.speed_varies = 1;
     }
     cdist_status st = cdist__cs_scan_run(&s, t0, t1, q->curve_samples);
     if (!st) st = cdist__cs_flat_check(&s, t0, t1, (t1 - t0) / q->curve_samples);
@@ -658,7 +734,7 @@ static cdist_status curve_query(cdist_query *q, cdist_curve_fn f, void *user, do
     u.down = cdist__pow2(-e);
     cc.r *= u.down;
     /* The callback's positions are absolute: their rounding is relative to |origin| too. */
-    return run_curve(q, user_eval, &u, t0, t1, &cc, disk, origin, cc.r, v_maxabs(origin) * u.down, cdist__pow2(e), NULL,
+    return run_curve(q, user_eval, NULL, &u, t0, t1, &cc, disk, origin, cc.r, v_maxabs(origin) * u.down, cdist__pow2(e), NULL,
                      r);
 }
 
@@ -701,6 +777,13 @@ typedef struct helix_x {
     vec3 c, n, u, v; /* c relative to the circle's centre */
     double r, rise;  /* rise = pitch / (2 pi) */
 } helix_x;
+
+static vec3 helix_pos(const void *ctx, double t)
+{
+    const helix_x *h = ctx;
+    vec3 radial = v_axpy(v_scale(cos(t), h->u), sin(t), h->v);
+    return v_axpy(v_axpy(h->c, h->r, radial), h->rise * t, h->n);
+}
 
 static cdist_status helix_eval(cdist_query *q, const void *ctx, double t, vec3 *p, vec3 *dp)
 {
@@ -774,8 +857,9 @@ static helix_bound helix_bound_init(const helix_x *hx, const cdist__circle *c, i
 static double helix_piece_lb(const helix_bound *hb, const helix_x *hx, double a, double b)
 {
     double z0 = hx->rise * a, z1 = hx->rise * b;
-    double za = fmin(z0, z1), zb = fmax(z0, z1);
+    double za = min2(z0, z1), zb = max2(z0, z1);
     double gap = za > hb->zhi ? za - hb->zhi : (zb < hb->zlo ? hb->zlo - zb : 0.0);
+    if (gap == 0.0 || hb->rgap == 0.0) return gap + hb->rgap; /* hypot's value, without its cost */
     return hypot(gap, hb->rgap);
 }
 
@@ -912,7 +996,8 @@ static cdist_status helix_query(cdist_query *q, const cdist_helix *h, const cdis
     double plen = len / (double)pieces;
     cdist__cs_coll k;
     cdist__cs_coll_init(&k, fmax(cc.r, v_norm(hx.c)));
-    cdist__cs_scan s = {.q = q, .ev = helix_eval, .ctx = &hx, .c = &cc, .disk = disk, .k = &k, .update_scale = 1};
+    cdist__cs_scan s = {.q = q, .ev = helix_eval, .ctx = &hx, .c = &cc, .disk = disk, .k = &k, .update_scale = 1,
+                        .pos = helix_pos};
     helix_lb_ctx lbc = {helix_bound_init(&hx, &cc, disk, fabs(hx.rise) * fmax(fabs(t0), fabs(t1))), &hx};
     s.certify = 1;
     s.speed_max = hypot(hx.r, hx.rise);
@@ -951,13 +1036,21 @@ typedef struct bez_x {
     vec3 p[4]; /* relative to the circle's centre */
 } bez_x;
 
+static inline vec3 bez_point(const bez_x *b, double t)
+{
+    double mt = 1.0 - t;
+    double b0 = mt * mt * mt, b1 = 3.0 * mt * mt * t, b2 = 3.0 * mt * t * t, b3 = t * t * t;
+    return v_axpy(v_axpy(v_axpy(v_scale(b0, b->p[0]), b1, b->p[1]), b2, b->p[2]), b3, b->p[3]);
+}
+
+static vec3 bez_pos(const void *ctx, double t) { return bez_point(ctx, t); }
+
 static cdist_status bez_eval(cdist_query *q, const void *ctx, double t, vec3 *p, vec3 *dp)
 {
     (void)q;
     const bez_x *b = ctx;
     double mt = 1.0 - t;
-    double b0 = mt * mt * mt, b1 = 3.0 * mt * mt * t, b2 = 3.0 * mt * t * t, b3 = t * t * t;
-    *p = v_axpy(v_axpy(v_axpy(v_scale(b0, b->p[0]), b1, b->p[1]), b2, b->p[2]), b3, b->p[3]);
+    *p = bez_point(b, t);
     vec3 d0 = v_sub(b->p[1], b->p[0]), d1 = v_sub(b->p[2], b->p[1]), d2 = v_sub(b->p[3], b->p[2]);
     *dp = v_axpy(v_axpy(v_scale(3.0 * mt * mt, d0), 6.0 * mt * t, d1), 3.0 * t * t, d2);
     return CDIST_OK;
@@ -996,7 +1089,7 @@ static cdist_status bezier_query(cdist_query *q, const cdist_bezier3 *bz, const 
         Kp = fmax(Kp, v_norm(v_cross(cc.n, a2)));
     }
     double bounds[4] = {S, K, Kn, Kp};
-    return run_curve(q, bez_eval, &bx, 0.0, 1.0, &cc, disk, origin, scale * down, 0.0, cdist__pow2(e), bounds, r);
+    return run_curve(q, bez_eval, bez_pos, &bx, 0.0, 1.0, &cc, disk, origin, scale * down, 0.0, cdist__pow2(e), bounds, r);
 }
 
 cdist_status cdist_bezier3_circle(cdist_query *q, const cdist_bezier3 *b, const cdist_circle *c, cdist_result *r)

@@ -36,6 +36,10 @@ int cdist__cs_near_axis(const cdist__cs_coll *k, vec3 rel, const cdist__circle *
  * (already recorded with cdist__fail). */
 typedef cdist_status (*cdist__cs_eval_fn)(cdist_query *q, const void *ctx, double t, vec3 *p, vec3 *dp);
 
+/* A built-in curve's position alone (cannot fail): the certification's midpoints need no
+ * derivative. */
+typedef vec3 (*cdist__cs_pos_fn)(const void *ctx, double t);
+
 typedef struct cdist__cs_scan cdist__cs_scan;
 /* Receives each candidate parameter t (and its point p) instead of the default point offer. */
 typedef void (*cdist__cs_cand_fn)(const cdist__cs_scan *s, double t, vec3 p);
@@ -60,7 +64,9 @@ struct cdist__cs_scan {
      * curves, candidate callbacks, a function known constant): no certification. */
     int certify;
     double speed_max, accel_max, accel_normal_max, accel_plane_max; /* |n x P''| last */
+    int speed_varies; /* |P'| may be well below speed_max: a local bound is worth its cost */
     cdist__cs_lb_fn lb; /* optional extra bound (NULL) */
+    cdist__cs_pos_fn pos; /* optional position-only form of ev (NULL: ev) */
     const void *lb_ctx;
     long cert_nodes;    /* nodes of the certification spent so far (the cost limit) */
 };
