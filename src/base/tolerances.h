@@ -192,4 +192,14 @@
  * search leaves to the scan anyway (the cc_center_on_axis family). Routing only. */
 #define CD_CC_QUICK_AXIS_REL 1e-9
 
+/* ---- swept objects' closed-form cores (src/swept/swept.c) ---- */
+
+/* Two segments are parallel when sin^2 of their angle is below this (dimensionless): then the
+ * interior critical point is ill-conditioned and an overlap is tested for a flat valley. */
+#define CD_SEG_PARALLEL_SIN2 1e-24
+/* Parallel segments' overlap along their direction is of positive length when it exceeds this
+ * many eps times the magnitude of its end positions (measured from the shorter segment's
+ * start): the rounding of those positions. */
+#define CD_SEG_OVERLAP_ULPS 8.0
+
 #endif
