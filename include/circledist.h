@@ -268,7 +268,19 @@ CDIST_API cdist_status cdist_segment_circle(cdist_query *q, const cdist_segment 
 /* ---- circle to circle --------------------------------------------------------------- */
 
 /** Distance between two circles (methods: POLYNOMIAL, ROBUST, ITERATION; AUTO picks).
- * Swapping c0 and c1 gives the same distance with the pairs' points swapped.
+ * Swapping c0 and c1 gives the same distance, pair count and equidistant flag, with the pairs'
+ * points swapped, under every method. The normals are used as unit vectors (scaled to length 1
+ * when accepted within the unit tolerance).
+ * Equidistant configurations (coaxial circles, identical circles, a meridian or Villarceau
+ * circle of the other's torus, a closest point on the other circle's axis) are decided with a
+ * tolerance, not exactly on the doubles: with L = max(r0, r1, |C1 - C0|), equidistant is set
+ * when the distance from the points of one circle to the other varies by at most 32 eps L
+ * (eps = DBL_EPSILON), or a closest point lies within 8 eps (r0 + r1 + |C1 - C0|) min(1, r / L)
+ * of the other circle's axis (r that circle's radius); one representative pair is given. So
+ * two circles that differ only by a few ulps of L (e.g. equal coplanar circles of radius 100
+ * whose centres are 1.1e-14 apart, which meet at exactly two points) are reported as one
+ * equidistant pair: their distance varies by less than the accuracy of the answer (a few
+ * eps L), which cannot resolve two separate minima.
  */
 CDIST_API cdist_status cdist_circle_circle(cdist_query *q, const cdist_circle *c0, const cdist_circle *c1, cdist_result *r);
 /** Answers n circle-circle queries: results[i] and statuses[i] for (c0[i], c1[i]); the same as

@@ -7,6 +7,7 @@
 # usage: scripts/fuzz.sh [SECONDS] [extra libFuzzer options...]
 #   FUZZ_OUT=DIR    build and corpus directory (default build-fuzz; the corpus is kept there)
 #   FUZZ_TIMEOUT=S  seconds one input may take before it is reported (default 10)
+#   CC_FUZZ=PATH    the clang to use (default clang, else clang-14)
 #   FUZZ_SANITIZE=L sanitizers besides fuzzer (default address,undefined; "undefined" at -O2
 #                   runs many times faster, for long runs that count executions)
 set -eu
@@ -25,7 +26,7 @@ mkdir -p "$out/corpus"
 san=${FUZZ_SANITIZE-address,undefined}
 opt=-O1
 case "$san" in *address*) ;; *) opt=-O2 ;; esac
-clang -std=c17 -g $opt -DCDIST_LIBFUZZER -D_GNU_SOURCE -ffp-contract=off -fno-math-errno -pthread \
+${CC_FUZZ:-$(command -v clang || command -v clang-14)} -std=c17 -g $opt -DCDIST_LIBFUZZER -D_GNU_SOURCE -ffp-contract=off -fno-math-errno -pthread \
   -fsanitize=fuzzer${san:+,$san} -fno-sanitize-recover=all \
   -Iinclude -Ibuild/include -Isrc -Itools \
   $srcs tools/query_io.c tests/fuzz/fuzz_entry.c $(pkg-config --cflags --libs gsl) -lm -ldl -o "$out/fuzz_entry"
