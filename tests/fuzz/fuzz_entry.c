@@ -4,7 +4,8 @@
  *   LLVMFuzzerTestOneInput directly.
  * - Otherwise a main() drives it with deterministic pseudo-random inputs (a smoke test).
  * The input is read two ways: as query text for the tool's parser, and as raw doubles (any bit
- * pattern: NaN, Inf, subnormal, huge) for every query function. The first byte also sets the
+ * pattern: NaN, Inf, subnormal, huge) for every query function (under libFuzzer for the one
+ * kind the input's last byte selects). The first byte also sets the
  * handle's options (method, unit tolerance INFINITY, curve samples) and a power-of-two scale of
  * the coordinates (tiny, subnormal, huge). The contract checked (abort() on violation, so the
  * fuzzer reports it): no crash; status != OK, or the distance is finite and >= 0, there are
