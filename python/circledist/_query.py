@@ -319,9 +319,10 @@ class GradObject:
 class Grad:
     """The gradient of one query's distance (struct cdist_grad): obj[0] (GradObject) for the
     first object, obj[1] for the second; flags (bits of cdist_grad_flag). differentiable is
-    False when CDIST_GRAD_NOT_DIFFERENTIABLE is set: two closest pairs or an equidistant
-    result (a one-sided derivative of pairs[0] is given) or (core) distance 0 (the gradient is
-    0 there, swept radii -1). The rules are in circledist.h ("gradients")."""
+    False when CDIST_GRAD_NOT_DIFFERENTIABLE is set: at a (core) distance above 0, two closest
+    pairs or an equidistant result (the gradient of pairs[0] is given); at (core) distance 0
+    (the gradient is 0 there, swept radii -1) unless the distance stays 0 nearby (a stable
+    crossing of a disk). The rules are in circledist.h ("gradients")."""
 
     __slots__ = ("obj", "flags")
 
