@@ -5,6 +5,7 @@
 # added file is fuzzed without editing this script. Exits non-zero when the build fails or the
 # fuzzer reports anything (a contract violation aborts; see tests/fuzz/fuzz_entry.c).
 # usage: scripts/fuzz.sh [SECONDS] [extra libFuzzer options...]
+#        scripts/fuzz.sh --list   (prints the library sources it compiles, and exits)
 #   FUZZ_OUT=DIR    build and corpus directory (default build-fuzz; the corpus is kept there)
 #   FUZZ_TIMEOUT=S  seconds one input may take before it is reported (default 10)
 #   CC_FUZZ=PATH    the clang to use (default clang, else clang-14)
@@ -15,11 +16,15 @@ cd "$(dirname "$0")/.."
 secs=${1:-60}
 [ $# -gt 0 ] && shift
 out=${FUZZ_OUT:-build-fuzz}
-[ -f build/include/circledist_version.h ] || meson setup build >/dev/null
 # The library's sources: the files(...) block that starts at "lib_sources = files(".
 srcs=$(sed -n '/^lib_sources = files(/,/^)/p' meson.build | grep -o "'src/[^']*\.c'" | tr -d "'")
 [ -n "$srcs" ] || { echo "fuzz.sh: no library sources found in meson.build" >&2; exit 1; }
 for f in $srcs; do [ -f "$f" ] || { echo "fuzz.sh: $f (from meson.build) is missing" >&2; exit 1; }; done
+if [ "$secs" = --list ]; then
+  printf '%s\n' $srcs
+  exit 0
+fi
+[ -f build/include/circledist_version.h ] || meson setup build >/dev/null
 mkdir -p "$out/corpus"
 # The project's own flags (meson.build): _GNU_SOURCE, no fp contraction, no math errno.
 # shellcheck disable=SC2086
