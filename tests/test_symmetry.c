@@ -139,6 +139,14 @@ int main(int argc, char **argv)
     /* Parallel capsule axes overlapping over z in [-2, 9.9e-8]: a segment of closest pairs, so
      * equidistant in both orders (the overlap was measured in units of the longer segment). */
     constructed("KK 5 0 -1e+100 5 0 9.9e-08 0 1 0 5 1 0 -2 0", 1, 1, 0);
+    /* A segment of length 2e-47 against one of length 2e115 at a large angle: not parallel in
+     * either order (scaled together, the short one's direction underflowed in one order only;
+     * fuzzing) */
+    constructed("KK 1.3808057678557591e-47 1.4273774922216749e-71 6.99532952516786e-77 2.5270009609557079e-52 "
+                "1.2468982170859502e-47 1.3808047238042771e-47 1.4273774922216749e-71 6.99532952516786e-77 "
+                "2.5270012596604412e-52 -1.416009635817783e+115 -1.4679178779048922e+115 0.00047375244252740922 "
+                "1.5204758982242148e-52 1.6561016059396399e-47",
+                0, 1, 0);
     /* ... and collinear ones that only touch end to end: one closest pair */
     constructed("KK 0 0 0 0 0 1 0 0 0 1 0 0 3 0", 0, 1, 0);
     /* Equal coplanar circles whose centres are 1.1e-14 apart (radius 100): within the stated

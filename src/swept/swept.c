@@ -137,16 +137,12 @@ static cdist_status segment_segment(cdist_query *q, const cdist_segment *a, cons
     double down = m > 0.0 ? cdist__pow2(-cdist__scale_exponent(m)) : 1.0;
     vec3 sa = v_scale(down, da), sb = v_scale(down, db), sw = v_scale(down, w);
     double sA = v_sqr(sa);
-    int parallel = 1;
     if (sA > 0.0) {
         vec3 c = v_axpy(sb, -v_dot(sb, sa) / sA, sa);
         double mu = v_dot(sw, sa) / sA;
         vec3 wp = v_axpy(sw, -mu, sa);
         vec3 n = v_cross(sa, c);
         double den = v_sqr(n);
-        /* (from sa x sb, not n: the cross product only changes sign when a and b swap, so the
-         * decision does not depend on the argument order) */
-        parallel = !(v_sqr(v_cross(sa, sb)) > CD_SEG_PARALLEL_SIN2 * sA * v_sqr(sb));
         if (den > 0.0) {
             double s = mu + v_dot(v_cross(wp, sb), n) / den;
             if (s >= 0.0 && s <= 1.0) {
@@ -161,6 +157,10 @@ static cdist_status segment_segment(cdist_query *q, const cdist_segment *a, cons
     CAND(segment_clamp(a->p0, da, b->p0), 0.0);
     CAND(segment_clamp(a->p0, da, b->p1), 1.0);
 #undef CAND
+    /* Parallel: from the two unit directions, each normalised on its own (a segment far shorter
+     * than the other keeps its direction), and their cross product, which only changes sign when
+     * a and b swap: the decision does not depend on the argument order. */
+    int parallel = !(v_sqr(v_cross(v_unit_or_zero(da), v_unit_or_zero(db))) > CD_SEG_PARALLEL_SIN2);
     int equi = parallel && A > 0.0 && E > 0.0 && parallel_overlap(a, b, A, E);
     result_fill(r, best, equi, bp, bq, bs, bt);
     return cdist__leave(q, r, CDIST_OK, CDIST_METHOD_AUTO);
