@@ -276,7 +276,19 @@ CDIST_API cdist_status cdist_segment_circle(cdist_query *q, const cdist_segment 
 /* ---- circle to circle --------------------------------------------------------------- */
 
 /** Distance between two circles (methods: POLYNOMIAL, ROBUST, ITERATION; AUTO picks).
- * Swapping c0 and c1 gives the same distance with the pairs' points swapped.
+ * Swapping c0 and c1 gives the same distance, pair count and equidistant flag, with the pairs'
+ * points swapped, under every method. The normals are used as unit vectors (scaled to length 1
+ * when accepted within the unit tolerance).
+ * Equidistant configurations (coaxial circles, identical circles, a meridian or Villarceau
+ * circle of the other's torus, a closest point on the other circle's axis) are decided with a
+ * tolerance, not exactly on the doubles: with L = max(r0, r1, |C1 - C0|), equidistant is set
+ * when the distance from the points of one circle to the other varies by at most 32 eps L
+ * (eps = DBL_EPSILON), or a closest point lies within 8 eps (r0 + r1 + |C1 - C0|) min(1, r / L)
+ * of the other circle's axis (r that circle's radius); one representative pair is given. So
+ * two circles that differ only by a few ulps of L (e.g. equal coplanar circles of radius 100
+ * whose centres are 1.1e-14 apart, which meet at exactly two points) are reported as one
+ * equidistant pair: their distance varies by less than the accuracy of the answer (a few
+ * eps L), which cannot resolve two separate minima.
  */
 CDIST_API cdist_status cdist_circle_circle(cdist_query *q, const cdist_circle *c0, const cdist_circle *c1, cdist_result *r);
 /** Answers n circle-circle queries: results[i] and statuses[i] for (c0[i], c1[i]); the same as
@@ -614,14 +626,17 @@ CDIST_API cdist_status cdist_sphere_disk(cdist_query *q, const cdist_sphere *a, 
  *                          d_normal / d_zero_direction through the arc frame U, V.
  * Normal and direction gradients are tangent to the unit sphere (g . N = 0, dD = g . dN for
  * unit-preserving dN). Swept objects: the core gradient plus d_radius_swept = -1 each.
- * Not differentiable (flag ::CDIST_GRAD_NOT_DIFFERENTIABLE): two closest pairs (the gradient
- * is that of pairs[0], a one-sided derivative), an equidistant result (the gradient of the
- * representative pair, a one-sided derivative), and distance (core distance for swept objects)
- * 0 (within the rounding of the closest points' coordinates), where the gradient is set to 0
- * (an element of the Clarke subdifferential) -- except where the distance is 0 on a whole
- * neighbourhood: a curve crossing a disk's plane transversally (sine of the angle > 1e-6) at a
- * point clearly inside the rim and away from the curve's ends, or two disks in transversal
- * planes meeting inside both rims; there the zero gradient is exact and the flag is not set. At a disk's interior closest point the direction w is taken as +-N exactly (the
+ * The flag ::CDIST_GRAD_NOT_DIFFERENTIABLE is one decision. At distance (core distance for
+ * swept objects) 0, within the rounding of the closest points' coordinates, the gradient is 0;
+ * the flag is not set where the distance is 0 on a whole neighbourhood -- at some closest pair
+ * a curve crosses a disk's plane transversally (sine of the angle > 1e-6) at a point clearly
+ * inside the rim and away from the curve's ends, or two disks in transversal planes meet in a
+ * segment that reaches inside both rims -- whatever the number of pairs or the equidistant flag
+ * (the zero gradient is then exact), and set otherwise (0 is an element of the Clarke
+ * subdifferential). At a distance above 0 the flag is set for two closest pairs (the gradient
+ * is that of pairs[0], the one-sided derivative along directions that keep it closest), an
+ * equidistant result (the gradient of the representative pair: along any direction it lies
+ * between the two one-sided derivatives) and an arc of radius 0 (a derivative from the right). At a disk's interior closest point the direction w is taken as +-N exactly (the
  * optimality condition) rather than from the rounded points. A circle or disk of radius 0 is
  * differentiated from the right (r -> 0+). Accuracy: the gradient is that of the computed
  * closest pair; at relative distance delta from a non-differentiable configuration (e.g. a

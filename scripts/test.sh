@@ -2,8 +2,8 @@
 # SPDX-License-Identifier: MIT
 # The whole test suite: a release-style build and an ASan/UBSan build, every meson test in
 # both except the `slow` suite (long brute-force runs), which runs too when CIRCLEDIST_SLOW=1
-# (as .ci/run does), together with a static-only build; and the threaded tests under
-# ThreadSanitizer. Prints a closing "N passed, N failed" line.
+# (as .ci/run does), together with a static-only build; the threaded tests under
+# ThreadSanitizer; and libFuzzer through scripts/fuzz.sh (20000 inputs from seed 1; 150000 with CIRCLEDIST_SLOW=1). Prints a closing "N passed, N failed" line.
 # usage: [CIRCLEDIST_SLOW=1] scripts/test.sh
 set -u
 cd "$(dirname "$0")/.."
@@ -36,6 +36,20 @@ run_suite() { # DIR [meson -D options...]
 }
 status=0
 run_suite build || status=1
+# libFuzzer (ASan + UBSan) through scripts/fuzz.sh, the script a developer runs, so the fuzz build
+# cannot rot: a fixed number of inputs from a fixed seed (the same inputs on every run, so a pass
+# here is a pass in CI), 20000 inputs, 150000 with CIRCLEDIST_SLOW=1. Counts as one test. Long
+# exploratory runs: scripts/fuzz.sh SECONDS (a random seed each time).
+fuzz_runs=20000
+[ "${CIRCLEDIST_SLOW:-0}" = 1 ] && fuzz_runs=150000
+if sh scripts/fuzz.sh 3600 -seed=1 -runs="$fuzz_runs" >build/fuzz.log 2>&1; then
+  total_ok=$((total_ok + 1))
+else
+  echo "fuzz: FAILED (log: build/fuzz.log)"
+  tail -n 40 build/fuzz.log
+  total_fail=$((total_fail + 1))
+  status=1
+fi
 # Sanitizers: ASan + UBSan, aborting on any report. Optimised (-O2 -g): the brute-force tests
 # run about 3x faster than at -O0 and ASan still reports every bad access it can see.
 ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 \

@@ -50,6 +50,10 @@ int cdist__circle_circle_critical(cdist_query *q, const cdist__circle *c0, const
  * the answer of their unit-scale copy. */
 int cdist__circles_frame(cdist__circle *a, cdist__circle *b, vec3 *offset, cdist__best *best);
 void cdist__circles_result(const cdist__best *best, int swap, int e, vec3 offset, cdist_result *r);
+/* Lexicographic order of two circles' numbers (centre, normal, radius): 1 when a comes first.
+ * Families that swap their inputs into this order run the same computation for f(a, b) and
+ * f(b, a). */
+int cdist__circle_less(const cdist_circle *a, const cdist_circle *b);
 
 
 /* ---- cc_methods block: helpers shared by cdist__cc_polynomial and cdist__cc_iteration (defined in

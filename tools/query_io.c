@@ -288,6 +288,18 @@ void cdq_normalize(cdq_line *ql)
     }
 }
 
+int cdq_swapped(const cdq_line *ql, cdq_line *out)
+{
+    const char *k = ql->kind->name;
+    int n = ql->kind->nvalues;
+    if (k[0] != k[1] || k[2] != '\0' || n % 2) return 0;
+    out->kind = ql->kind;
+    out->nvalues = ql->nvalues;
+    memcpy(out->v, ql->v + n / 2, (size_t)(n / 2) * sizeof(double));
+    memcpy(out->v + n / 2, ql->v, (size_t)(n / 2) * sizeof(double));
+    return 1;
+}
+
 cdist_status cdq_run(cdist_query *q, const cdq_line *ql, cdist_result *r)
 {
     return ql->kind->run(q, ql->v, r);

@@ -40,6 +40,11 @@ int cdq_parse(const char *line, cdq_line *out, char *err, size_t errlen);
  * length, for hand-typed input. A zero vector is left as it is (the query reports it). */
 void cdq_normalize(cdq_line *ql);
 
+/* The same query with its two objects in the other order, for kinds whose two objects have the
+ * same layout (names of one letter twice: cc, dd, aa, TT, KK, SS, RR). Returns 1 and writes
+ * *out for those, 0 for every other kind. */
+int cdq_swapped(const cdq_line *ql, cdq_line *out);
+
 /* Run a parsed query. */
 cdist_status cdq_run(cdist_query *q, const cdq_line *ql, cdist_result *r);
 

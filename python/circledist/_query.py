@@ -581,9 +581,10 @@ class Grad:
     flags : int
         Bits of cdist_grad_flag.
     differentiable : bool
-        False when CDIST_GRAD_NOT_DIFFERENTIABLE is set: two closest pairs or an equidistant
-        result (a one-sided derivative of pairs[0] is given) or (core) distance 0 (the gradient
-        is 0 there, swept radii -1). The rules are in circledist.h ("gradients").
+        False when CDIST_GRAD_NOT_DIFFERENTIABLE is set: at a (core) distance above 0, two
+        closest pairs or an equidistant result (the gradient of pairs[0] is given); at (core)
+        distance 0 (the gradient is 0 there, swept radii -1) unless the distance stays 0 nearby
+        (a stable crossing of a disk). The rules are in circledist.h ("gradients").
 
     Examples
     --------

@@ -250,5 +250,14 @@
  * by this relative amount before it screens pairs. The reach and the poses of cdist_toi() take a
  * few roundings each (CD_TOI_POSE_ULPS eps of the posed coordinates); 2^-30 is far above them. */
 #define CD_SCENE_TOI_REACH_REL 0x1p-30
+/* ---- swept objects' closed-form cores (src/swept/swept.c) ---- */
+
+/* Two segments are parallel when sin^2 of their angle is below this (dimensionless): then the
+ * interior critical point is ill-conditioned and an overlap is tested for a flat valley. */
+#define CD_SEG_PARALLEL_SIN2 1e-24
+/* Parallel segments' overlap along their direction is of positive length when it exceeds this
+ * many eps times the magnitude of its end positions (measured from the shorter segment's
+ * start): the rounding of those positions. */
+#define CD_SEG_OVERLAP_ULPS 8.0
 
 #endif

@@ -33,11 +33,16 @@ CD_INLINE double v_maxabs(vec3 a)
     return m;
 }
 /* a / |a|, or 0 for a = 0; divided by its largest component first, so |a|^2 neither overflows
- * nor underflows. */
+ * nor underflows. A subnormal largest component is first scaled up by a power of two (exact),
+ * so that 1 / m does not overflow. */
 CD_INLINE vec3 v_unit_or_zero(vec3 a)
 {
     double m = v_maxabs(a);
     if (m == 0.0) return v3(0, 0, 0);
+    if (m < DBL_MIN) {
+        a = v_scale(0x1p600, a);
+        m *= 0x1p600;
+    }
     a = v_scale(1.0 / m, a);
     return v_scale(1.0 / v_norm(a), a);
 }

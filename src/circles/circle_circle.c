@@ -143,17 +143,19 @@ void cdist__circles_result(const cdist__best *best, int swap, int e, vec3 offset
         for (int j = 0; j < 2; j++) r->pairs[i].point[j] = v_add(v_scale(up, r->pairs[i].point[j]), offset);
 }
 
-/* The scaled problem (a at the origin): the core, then r written in full. */
-static cdist_status cc_query(cdist_query *q, cdist__circle a, cdist__circle b, cdist_result *r, cdist_method *answered)
+/* The scaled problem (a at the origin): the core, then r written in full. swap: a and b are
+ * the caller's second and first circles. */
+static cdist_status cc_query(cdist_query *q, cdist_method method, cdist__circle a, cdist__circle b, int swap,
+                             cdist_result *r, cdist_method *answered)
 {
     vec3 offset;
     cdist__best best;
     int e = cdist__circles_frame(&a, &b, &offset, &best);
     int iterations = 0;
-    cdist_status st = cc_core(q, cdist__family_method(q, CD_FAM_CIRCLE_CIRCLE), &a, &b, &best, &iterations, answered);
+    cdist_status st = cc_core(q, method, &a, &b, &best, &iterations, answered);
     if (st) return st;
     if (best.n == 0) return cdist__fail(q, CDIST_ERR_INTERNAL, "circle-circle found no candidate");
-    cdist__circles_result(&best, 0, e, offset, r);
+    cdist__circles_result(&best, swap, e, offset, r);
     r->iterations = iterations;
     return CDIST_OK;
 }
@@ -164,7 +166,14 @@ cdist_status cdist_circle_circle(cdist_query *q, const cdist_circle *c0, const c
     if (st) return st;
     cdist__circle a, b;
     cdist_method answered = CDIST_METHOD_ROBUST;
-    if (!(st = cdist__check_circle(q, c0, "first circle", &a)) && !(st = cdist__check_circle(q, c1, "second circle", &b)))
-        st = cc_query(q, a, b, r, &answered);
+    if (!(st = cdist__check_circle(q, c0, "first circle", &a)) && !(st = cdist__check_circle(q, c1, "second circle", &b))) {
+        /* The robust method (AUTO) runs the same computation in both orders by construction
+         * (cc_engine.c); the polynomial and iteration methods are given the circles in
+         * lexicographic order, so that their ties, pair counts and equidistant decisions do not
+         * depend on the argument order either. */
+        cdist_method m = cdist__family_method(q, CD_FAM_CIRCLE_CIRCLE);
+        int swap = (m == CDIST_METHOD_POLYNOMIAL || m == CDIST_METHOD_ITERATION) && cdist__circle_less(c1, c0);
+        st = swap ? cc_query(q, m, b, a, 1, r, &answered) : cc_query(q, m, a, b, 0, r, &answered);
+    }
     return cdist__leave(q, r, st, answered);
 }

@@ -7,8 +7,7 @@
 
 #include "circles/circles-priv.h"
 
-/* Lexicographic order of the inputs, so that f(a, b) and f(b, a) run the same computation. */
-static int circle_less(const cdist_circle *a, const cdist_circle *b)
+int cdist__circle_less(const cdist_circle *a, const cdist_circle *b)
 {
     const double va[7] = {a->center.x, a->center.y, a->center.z, a->normal.x, a->normal.y, a->normal.z, a->radius};
     const double vb[7] = {b->center.x, b->center.y, b->center.z, b->normal.x, b->normal.y, b->normal.z, b->radius};
@@ -73,6 +72,6 @@ cdist_status cdist_disk_disk(cdist_query *q, const cdist_circle *d0, const cdist
     cdist__circle a, e;
     cdist_method used = cdist__family_method(q, CD_FAM_DISK_DISK);
     if (!(st = cdist__check_circle(q, d0, "first disk", &a)) && !(st = cdist__check_circle(q, d1, "second disk", &e)))
-        st = dd_query(q, a, e, circle_less(d1, d0), r, &used);
+        st = dd_query(q, a, e, cdist__circle_less(d1, d0), r, &used);
     return cdist__leave(q, r, st, used);
 }

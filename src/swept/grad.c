@@ -158,31 +158,78 @@ static vec3 curve_tangent(const cdist__core_obj *o, vec3 X, double t, int *inter
     }
 }
 
+/* Two disks (unit normals N0, N1) in transversal planes, both containing X: is there a point
+ * of their intersection clearly inside both rims? Their intersection is a segment on the
+ * planes' common line (the overlap of the two chords); a closest pair reported there can be its
+ * end (on one rim) while its middle is inside both. */
+static int disks_cross_inside(const cdist_circle *d0, vec3 N0, const cdist_circle *d1, vec3 N1, vec3 X)
+{
+    vec3 u = v_unit_or_zero(v_cross(N0, N1));
+    const cdist_circle *d[2] = {d0, d1};
+    vec3 N[2] = {N0, N1};
+    double lo = -INFINITY, hi = INFINITY;
+    for (int k = 0; k < 2; k++) {
+        /* X + t u is in disk k for t in the chord [m - h, m + h] */
+        vec3 p = perp(v_sub(X, d[k]->center), N[k]);
+        double m = -v_dot(p, u), h2 = d[k]->radius * d[k]->radius - (v_sqr(p) - m * m);
+        if (!(h2 > 0.0)) return 0;
+        lo = fmax(lo, m - sqrt(h2));
+        hi = fmin(hi, m + sqrt(h2));
+    }
+    if (!(hi > lo)) return 0;
+    vec3 M = v_axpy(X, 0.5 * (lo + hi), u);
+    return disk_interior(d0, N0, M) && disk_interior(d1, N1, M);
+}
+
 /* At zero distance: is the distance 0 on a whole neighbourhood of the inputs? Yes when one
  * object is a disk met at a point clearly inside its rim, and the other is a curve crossing
- * the disk's plane transversally away from its ends, or a second disk (also met inside its
- * rim) in a transversal plane. */
+ * the disk's plane transversally there, away from its ends, or a second disk in a transversal
+ * plane whose intersection with the first reaches inside both rims. Any closest pair may show
+ * it: one stable crossing keeps the distance 0 whatever the other pairs do. */
 static int zero_on_neighbourhood(const cdist__core_obj *a, const cdist__core_obj *b, const cdist_result *r)
 {
     const double transversal = 1e-6; /* sine of the smallest crossing angle treated as stable */
     const cdist__core_obj *ob[2] = {a, b};
-    for (int k = 0; k < 2; k++) {
-        if (ob[k]->type != CD_CORE_DISK) continue;
-        const cdist_circle *dk = ob[k]->obj;
-        vec3 N = v_unit_or_zero(dk->normal);
-        if (!disk_interior(dk, N, r->pairs[0].point[k])) continue;
-        const cdist__core_obj *o = ob[1 - k];
-        vec3 X = r->pairs[0].point[1 - k];
-        if (o->type == CD_CORE_DISK) {
-            const cdist_circle *d2 = o->obj;
-            vec3 N2 = v_unit_or_zero(d2->normal);
-            if (disk_interior(d2, N2, X) && v_norm(v_cross(N, N2)) > transversal) return 1;
-            continue;
+    for (int i = 0; i < r->num_pairs; i++)
+        for (int k = 0; k < 2; k++) {
+            if (ob[k]->type != CD_CORE_DISK) continue;
+            const cdist_circle *dk = ob[k]->obj;
+            vec3 N = v_unit_or_zero(dk->normal);
+            const cdist__core_obj *o = ob[1 - k];
+            vec3 X = r->pairs[i].point[1 - k];
+            if (o->type == CD_CORE_DISK) {
+                const cdist_circle *d2 = o->obj;
+                vec3 N2 = v_unit_or_zero(d2->normal);
+                if (v_norm(v_cross(N, N2)) > transversal && disks_cross_inside(dk, N, d2, N2, X)) return 1;
+                continue;
+            }
+            if (!disk_interior(dk, N, r->pairs[i].point[k])) continue;
+            int interior;
+            vec3 t = curve_tangent(o, X, r->pairs[i].param[1 - k], &interior);
+            if (interior && fabs(v_dot(t, N)) > transversal) return 1;
         }
-        int interior;
-        vec3 t = curve_tangent(o, X, r->pairs[0].param[1 - k], &interior);
-        if (interior && fabs(v_dot(t, N)) > transversal) return 1;
-    }
+    return 0;
+}
+
+/* Zero distance, or within rounding of zero (the points' coordinates' last bits). */
+static int distance_zero(const cdist_result *r)
+{
+    vec3 P = r->pairs[0].point[0], Q = r->pairs[0].point[1];
+    return !(r->distance > 16.0 * DBL_EPSILON * fmax(v_maxabs(P), v_maxabs(Q))) || v_maxabs(v_sub(P, Q)) == 0.0;
+}
+
+/* The one decision of the flag CDIST_GRAD_NOT_DIFFERENTIABLE (the rules of circledist.h): at
+ * zero distance the distance is differentiable exactly where it stays 0 nearby, whatever the
+ * number of pairs or the equidistant flag (a stable crossing is both); elsewhere it is not
+ * differentiable with two closest pairs, an equidistant set, or an arc of radius 0 (a
+ * derivative from the right). */
+static int not_differentiable(const cdist__core_obj *a, const cdist__core_obj *b, const cdist_result *r)
+{
+    if (distance_zero(r)) return !zero_on_neighbourhood(a, b, r);
+    if (r->num_pairs == 2 || r->equidistant) return 1;
+    const cdist__core_obj *ob[2] = {a, b};
+    for (int k = 0; k < 2; k++)
+        if (ob[k]->type == CD_CORE_ARC && ((const cdist_arc *)ob[k]->obj)->circle.radius == 0.0) return 1;
     return 0;
 }
 
@@ -191,17 +238,12 @@ void cdist__grad_fill(const cdist__core_obj *a, const cdist__core_obj *b, const 
     memset(g, 0, sizeof *g);
     if (a->swept) g->obj[0].d_radius_swept = -1.0;
     if (b->swept) g->obj[1].d_radius_swept = -1.0;
-    if (r->num_pairs == 2 || r->equidistant) g->flags |= CDIST_GRAD_NOT_DIFFERENTIABLE;
+    if (not_differentiable(a, b, r)) g->flags |= CDIST_GRAD_NOT_DIFFERENTIABLE;
+    /* At zero distance the gradient is 0 (in the Clarke subdifferential; the true, two-sided
+     * derivative where the distance stays 0 nearby). */
+    if (distance_zero(r)) return;
     vec3 P = r->pairs[0].point[0], Q = r->pairs[0].point[1];
-    vec3 d = v_sub(P, Q);
-    /* Zero distance, or within rounding of zero (the points' coordinates' last bits): the
-     * gradient is 0 (in the Clarke subdifferential). It is the true, two-sided derivative where
-     * the distance stays 0 nearby (a transversal crossing of a disk's interior). */
-    if (!(r->distance > 16.0 * DBL_EPSILON * fmax(v_maxabs(P), v_maxabs(Q))) || v_maxabs(d) == 0.0) {
-        if (!zero_on_neighbourhood(a, b, r)) g->flags |= CDIST_GRAD_NOT_DIFFERENTIABLE;
-        return;
-    }
-    vec3 w = v_unit_or_zero(d);
+    vec3 w = v_unit_or_zero(v_sub(P, Q));
     /* At a disk's interior point w is exactly along the disk's normal (first-order optimality);
      * P - Q loses the direction's accuracy when the distance is tiny against the coordinates,
      * so take it from the structure. */
@@ -213,10 +255,6 @@ void cdist__grad_fill(const cdist__core_obj *a, const cdist__core_obj *b, const 
         vec3 N = v_unit_or_zero(c->normal);
         if (disk_interior(c, N, X[k])) w = v_dot(w, N) >= 0.0 ? N : v_neg(N);
     }
-    /* An arc of radius 0 is differentiated from the right: a one-sided derivative. */
-    for (int k = 0; k < 2; k++)
-        if (ob[k]->type == CD_CORE_ARC && ((const cdist_arc *)ob[k]->obj)->circle.radius == 0.0)
-            g->flags |= CDIST_GRAD_NOT_DIFFERENTIABLE;
     object_grad(a, P, r->pairs[0].param[0], w, &g->obj[0]);
     object_grad(b, Q, r->pairs[0].param[1], v_neg(w), &g->obj[1]);
 }

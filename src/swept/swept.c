@@ -22,13 +22,26 @@ static void result_fill(cdist_result *r, double d, int equidistant, vec3 p0, vec
     r->pairs[0].param[1] = a1;
 }
 
-/* Parameter in [0, 1] of the point of segment p0 + s d closest to p. */
+/* Parameter in [0, 1] of the point of segment p0 + s d closest to p. In units of d's largest
+ * component (a power of two: exact, and the same quotient wherever d . d is a normal double),
+ * so that d . d of a tiny segment does not underflow to 0. */
 static double segment_clamp(vec3 p0, vec3 d, vec3 p)
 {
-    double dd = v_sqr(d);
+    int e = cdist__scale_exponent(v_maxabs(d));
+    vec3 dn = v_scale(cdist__pow2(-e), d);
+    double dd = v_sqr(dn);
     if (dd == 0.0) return 0.0;
-    double s = v_dot(v_sub(p, p0), d) / dd;
+    double s = v_dot(v_sub(p, p0), dn) / dd * cdist__pow2(-e);
     return s < 0.0 ? 0.0 : (s > 1.0 ? 1.0 : s);
+}
+
+/* |a - b| in units of the difference's largest component (a power of two: exact, the same
+ * value wherever the squares are normal doubles), so that tiny distances do not underflow. */
+static double scaled_dist(vec3 a, vec3 b)
+{
+    vec3 d = v_sub(a, b);
+    int e = cdist__scale_exponent(v_maxabs(d));
+    return v_norm(v_scale(cdist__pow2(-e), d)) * cdist__pow2(e);
 }
 
 static vec3 segment_at(vec3 p0, vec3 d, double s) { return v_axpy(p0, s, d); }
@@ -38,7 +51,7 @@ static cdist_status point_point(cdist_query *q, const cdist_vec3 *a, const cdist
     cdist_status st = cdist__enter(q, r);
     if (st) return st;
     if (!(st = cdist__check_point(q, a, "point")) && !(st = cdist__check_point(q, b, "point")))
-        result_fill(r, v_dist(*a, *b), 0, *a, *b, NAN, NAN);
+        result_fill(r, scaled_dist(*a, *b), 0, *a, *b, NAN, NAN);
     return cdist__leave(q, r, st, CDIST_METHOD_AUTO);
 }
 
@@ -59,8 +72,35 @@ static cdist_status point_segment(cdist_query *q, const cdist_vec3 *p, const cdi
     vec3 d = v_sub(s->p1, s->p0);
     double t = segment_clamp(s->p0, d, *p);
     vec3 x = t == 1.0 ? s->p1 : segment_at(s->p0, d, t);
-    result_fill(r, v_dist(*p, x), 0, *p, x, NAN, t);
+    result_fill(r, scaled_dist(*p, x), 0, *p, x, NAN, t);
     return cdist__leave(q, r, CDIST_OK, CDIST_METHOD_AUTO);
+}
+
+/* Lexicographic order of two segments' coordinates (p0 then p1): 1 when a comes first. */
+static int segment_first(const cdist_segment *a, const cdist_segment *b)
+{
+    const double xa[6] = {a->p0.x, a->p0.y, a->p0.z, a->p1.x, a->p1.y, a->p1.z};
+    const double xb[6] = {b->p0.x, b->p0.y, b->p0.z, b->p1.x, b->p1.y, b->p1.z};
+    for (int i = 0; i < 6; i++)
+        if (xa[i] != xb[i]) return xa[i] < xb[i];
+    return 1;
+}
+
+/* Parallel segments (squared lengths A, E > 0): do their projections on the common direction
+ * overlap over a positive length? Then every point of the overlap gives a closest pair, a flat
+ * valley. Measured along the longer segment's direction from the shorter one's start, so the
+ * overlap's ends are computed from coordinates near them (a segment of length 1e100 against
+ * one of length 7 keeps the 7), and with the roles chosen from the segments themselves (the
+ * longer, ties by coordinates) the decision is the same in both argument orders. */
+static int parallel_overlap(const cdist_segment *a, const cdist_segment *b, double A, double E)
+{
+    int a_long = A > E || (A == E && segment_first(a, b));
+    const cdist_segment *lg = a_long ? a : b, *sh = a_long ? b : a;
+    vec3 u = v_unit_or_zero(v_sub(lg->p1, lg->p0));
+    double l0 = v_dot(v_sub(lg->p0, sh->p0), u), l1 = v_dot(v_sub(lg->p1, sh->p0), u);
+    double s1 = v_dot(v_sub(sh->p1, sh->p0), u);
+    double lo = fmax(fmin(l0, l1), fmin(0.0, s1)), hi = fmin(fmax(l0, l1), fmax(0.0, s1));
+    return hi - lo > CD_SEG_OVERLAP_ULPS * DBL_EPSILON * fmax(fabs(lo), fabs(hi));
 }
 
 /* Segment-segment: the interior critical point (s inside [0, 1], t its projection on b) and
@@ -81,7 +121,7 @@ static cdist_status segment_segment(cdist_query *q, const cdist_segment *a, cons
         double s__ = (s_), t__ = (t_);                                                                             \
         vec3 P = s__ == 1.0 ? a->p1 : segment_at(a->p0, da, s__);                                                  \
         vec3 Q = t__ == 1.0 ? b->p1 : segment_at(b->p0, db, t__);                                                  \
-        double dd = v_dist(P, Q);                                                                                  \
+        double dd = scaled_dist(P, Q);                                                                             \
         if (dd < best) { best = dd; bs = s__; bt = t__; bp = P; bq = Q; }                                          \
     } while (0)
     double A = v_sqr(da), E = v_sqr(db);
@@ -97,14 +137,12 @@ static cdist_status segment_segment(cdist_query *q, const cdist_segment *a, cons
     double down = m > 0.0 ? cdist__pow2(-cdist__scale_exponent(m)) : 1.0;
     vec3 sa = v_scale(down, da), sb = v_scale(down, db), sw = v_scale(down, w);
     double sA = v_sqr(sa);
-    int parallel = 1;
     if (sA > 0.0) {
         vec3 c = v_axpy(sb, -v_dot(sb, sa) / sA, sa);
         double mu = v_dot(sw, sa) / sA;
         vec3 wp = v_axpy(sw, -mu, sa);
         vec3 n = v_cross(sa, c);
         double den = v_sqr(n);
-        parallel = !(den > 1e-24 * sA * v_sqr(sb));
         if (den > 0.0) {
             double s = mu + v_dot(v_cross(wp, sb), n) / den;
             if (s >= 0.0 && s <= 1.0) {
@@ -119,13 +157,11 @@ static cdist_status segment_segment(cdist_query *q, const cdist_segment *a, cons
     CAND(segment_clamp(a->p0, da, b->p0), 0.0);
     CAND(segment_clamp(a->p0, da, b->p1), 1.0);
 #undef CAND
-    int equi = 0;
-    if (parallel && A > 0.0 && E > 0.0) {
-        /* b's ends projected on a's parameter: an overlap of positive length is a flat valley. */
-        double u0 = v_dot(v_sub(b->p0, a->p0), da) / A, u1 = v_dot(v_sub(b->p1, a->p0), da) / A;
-        double lo = fmax(0.0, fmin(u0, u1)), hi = fmin(1.0, fmax(u0, u1));
-        equi = hi - lo > 1e-12;
-    }
+    /* Parallel: from the two unit directions, each normalised on its own (a segment far shorter
+     * than the other keeps its direction), and their cross product, which only changes sign when
+     * a and b swap: the decision does not depend on the argument order. */
+    int parallel = !(v_sqr(v_cross(v_unit_or_zero(da), v_unit_or_zero(db))) > CD_SEG_PARALLEL_SIN2);
+    int equi = parallel && A > 0.0 && E > 0.0 && parallel_overlap(a, b, A, E);
     result_fill(r, best, equi, bp, bq, bs, bt);
     return cdist__leave(q, r, CDIST_OK, CDIST_METHOD_AUTO);
 }

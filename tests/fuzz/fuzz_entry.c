@@ -4,15 +4,20 @@
  *   LLVMFuzzerTestOneInput directly.
  * - Otherwise a main() drives it with deterministic pseudo-random inputs (a smoke test).
  * The input is read two ways: as query text for the tool's parser, and as raw doubles (any bit
- * pattern: NaN, Inf, subnormal, huge) for every query function. The first byte also sets the
+ * pattern: NaN, Inf, subnormal, huge) for every query function (under libFuzzer for the one
+ * kind the input's last byte selects). The first byte also sets the
  * handle's options (method, unit tolerance INFINITY, curve samples) and a power-of-two scale of
  * the coordinates (tiny, subnormal, huge). The contract checked (abort() on violation, so the
  * fuzzer reports it): no crash; status != OK, or the distance is finite and >= 0, there are
  * 1-2 pairs, each pair lies on its objects and realises the distance (long double geometry,
- * tolerance relative to the input's magnitude); errors leave NaN, no pairs and a message; GSL's
+ * tolerance relative to the input's magnitude; swept kinds: the witness pair realises the signed
+ * distance's magnitude); the distance-only batch agrees; kinds whose objects have the same
+ * layout (cc, dd, aa, TT, KK, SS, RR) succeed or fail together and give the same distance, pair count and
+ * equidistant flag in both argument orders; errors leave NaN, no pairs and a message; GSL's
  * error handler is never reached (an aborting one is installed) and GSL's solver is never
  * called under AUTO or ROBUST (interposed here). */
 #include <dlfcn.h>
+#include <float.h>
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -198,6 +203,17 @@ static ld d_obj(const obj *o, lv x, double param)
 
 /* OK results: every pair on its objects and realising the distance, within a tolerance
  * relative to the magnitude of the input values (mag, excluding angles). */
+/* A helix's point at a parameter depends on its frame U = unit(z - (z.N) N): with z at angle
+ * theta from the axis, the doubles of z and N fix U only to about eps / sin(theta), which moves
+ * the point by that times the radius (the frame's conditioning, not the query's error). */
+static ld frame_slack(const obj *o)
+{
+    if (o->type != O_HELIX) return 0;
+    lv n = lunit(L3(o->v + 3)), z = L3(o->v + 6);
+    ld s = lnorm(lcross(n, z)) / lnorm(z);
+    return 8 * DBL_EPSILON * fabsl((ld)o->v[9]) / s;
+}
+
 static void check_pairs(const char *kind, const obj *o0, const obj *o1, double mag, const cdist_result *r)
 {
     ld tol = 1e-7L * ((ld)mag + r->distance) + 1e-300L;
@@ -205,7 +221,7 @@ static void check_pairs(const char *kind, const obj *o0, const obj *o1, double m
         const cdist_pair *pr = &r->pairs[i];
         lv a = lvp(pr->point[0]), b = lvp(pr->point[1]);
         if (!(fabsl(lnorm(lsub(a, b)) - r->distance) <= tol)) violation(kind, "a pair does not realise the distance", r);
-        if (!(d_obj(o0, a, pr->param[0]) <= tol)) violation(kind, "a pair's first point is off its object", r);
+        if (!(d_obj(o0, a, pr->param[0]) <= tol + frame_slack(o0))) violation(kind, "a pair's first point is off its object", r);
         if (!(d_obj(o1, b, pr->param[1]) <= tol)) violation(kind, "a pair's second point is off its object", r);
     }
 }
@@ -273,6 +289,30 @@ static void check_batch_distance(const cdq_line *ql, cdist_status st, const cdis
     }
 }
 
+/* f(a, b) = f(b, a) for kinds whose two objects have the same layout: both OK or both errors
+ * (which error may differ: each object can be bad its own way, and the first is reported), the
+ * same pair count and equidistant flag, and the distance to 16 ulps of the input's magnitude. */
+static void check_swapped(const cdq_line *ql, cdist_status st, const cdist_result *r)
+{
+    cdq_line sw;
+    if (!cdq_swapped(ql, &sw)) return;
+    cdist_result rs;
+    cdist_status ss = cdq_run(q, &sw, &rs);
+    if ((ss == CDIST_OK) != (st == CDIST_OK)) {
+        fprintf(stderr, "fuzz: swapped order: status %s, this order %s\n", cdist_status_name(ss), cdist_status_name(st));
+        violation(ql->kind->name, "success depends on the argument order", r);
+        return;
+    }
+    if (st != CDIST_OK) return;
+    /* (plus the absolute floor of check_pairs: subnormal inputs carry a few bits only) */
+    double tol = 16.0 * DBL_EPSILON * fmax(magnitude(ql), fabs(r->distance)) + 1e-300;
+    if (!(fabs(rs.distance - r->distance) <= tol) || rs.num_pairs != r->num_pairs || rs.equidistant != r->equidistant) {
+        fprintf(stderr, "fuzz: swapped order: distance %.17g, %d pairs, equidistant %d; this order equidistant %d\n",
+                rs.distance, rs.num_pairs, rs.equidistant, r->equidistant);
+        violation(ql->kind->name, "the answer depends on the argument order", r);
+    }
+}
+
 static void run_checked(const cdq_line *ql)
 {
     cdist_result r;
@@ -281,7 +321,18 @@ static void run_checked(const cdq_line *ql)
     cdist_status st = cdq_run(q, ql, &r);
     check_result(ql->kind->name, st, &r);
     check_batch_distance(ql, st, &r);
-    if (st != CDIST_OK || signed_kind(ql->kind->name)) return; /* swept: tests/swept checks witnesses */
+    check_swapped(ql, st, &r);
+    cur_v = ql->v; /* (check_swapped ran another query) */
+    if (st != CDIST_OK) return;
+    if (signed_kind(ql->kind->name)) {
+        /* swept: the witness points realise the signed distance's magnitude (tests/swept checks
+         * that they lie on the surfaces) */
+        ld tol = 1e-7L * ((ld)magnitude(ql) + fabsl((ld)r.distance)) + 1e-300L;
+        for (int i = 0; i < r.num_pairs; i++)
+            if (!(fabsl(lnorm(lsub(lvp(r.pairs[i].point[0]), lvp(r.pairs[i].point[1]))) - fabsl((ld)r.distance)) <= tol))
+                violation(ql->kind->name, "a witness pair does not realise the distance", &r);
+        return;
+    }
     obj o0, o1;
     objects_of(ql, &o0, &o1);
     check_pairs(ql->kind->name, &o0, &o1, magnitude(ql), &r);
@@ -297,14 +348,15 @@ static int fuzz_curve(void *user, double t, cdist_vec3 *p, cdist_vec3 *d)
     return v[6] > 1e300 ? 1 : 0;
 }
 
-int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
-int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
+/* One input: as text, then as raw doubles for the query kind `only` (an index into cdq_kinds;
+ * the count of kinds: the two callback-curve queries; -1: every kind and both callbacks). */
+static void fuzz_input(const uint8_t *data, size_t size, int only)
 {
     if (!q) {
         q = cdist_query_new();
         install_gsl_handler();
     }
-    if (size < 1) return 0;
+    if (size < 1) return;
     /* Options from the first byte: method (bits 0-1), unit tolerance INFINITY (bit 2), curve
      * samples (bits 3-4), coordinate scale (bits 5-7). */
     static const int samples[4] = {512, 8, 17, 64};
@@ -329,7 +381,9 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     size_t nd = (size - 1) / sizeof(double);
     if (nd > CDQ_MAX_VALUES) nd = CDQ_MAX_VALUES;
     memcpy(v, data + 1, nd * sizeof(double));
-    for (const cdq_kind *k = cdq_kinds; k->name; k++) {
+    int nkinds = 0;
+    for (const cdq_kind *k = cdq_kinds; k->name; k++, nkinds++) {
+        if (only >= 0 && only != nkinds) continue;
         ql.kind = k;
         ql.nvalues = k->nvalues;
         memcpy(ql.v, v, sizeof v);
@@ -337,6 +391,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             if (!is_angle(k->name, i)) ql.v[i] *= scale;
         run_checked(&ql);
     }
+    if (only >= 0 && only != nkinds) return;
     for (int i = 0; i < 14; i++) v[i] *= scale;
     cdist_result r;
     cdist_circle c = {{v[7], v[8], v[9]}, {v[10], v[11], v[12]}, v[13]};
@@ -354,6 +409,29 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         if (st == CDIST_OK) check_pairs(disk ? "curve-disk" : "curve-circle", &oc, &ot, mag, &r);
     }
     cur_v = NULL;
+}
+
+#ifdef CDIST_LIBFUZZER
+static int kind_count(void)
+{
+    int n = 0;
+    while (cdq_kinds[n].name) n++;
+    return n;
+}
+#endif
+
+/* Under libFuzzer the raw doubles go to one query kind, chosen by the input's last byte: every
+ * execution costs one query (plus the text's lines), and new coverage is credited to the kind
+ * that found it. */
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
+{
+    if (size < 1) return 0;
+#ifdef CDIST_LIBFUZZER
+    fuzz_input(data, size, data[size - 1] % (kind_count() + 1));
+#else
+    fuzz_input(data, size, -1);
+#endif
     return 0;
 }
 

@@ -9,6 +9,8 @@
  *    be orthogonal to the vector.
  *  - Constructed non-differentiable configurations (two pairs, an equidistant set, zero
  *    distance) have the flag set, and their one-sided derivatives really differ.
+ *  - Every clause of the header's gradient paragraph on a case where it applies (check_clauses):
+ *    against differences of the distance (central, one-sided, forward) or a closed form.
  * The differences are taken of the distance the library computes, which the reference tests
  * hold to ~1e-15 of scale; the gradients come from a separate code path (the closest pair).
  * Where double differences cannot resolve the derivative (near-degenerate hard lines), the
@@ -290,9 +292,13 @@ static int check_line(const gkind *k, const double *v0, int n, const char *where
               where);
         return 1;
     }
-    double dcore = k->name[0] >= 'A' && k->name[0] <= 'Z' ? r.reserved[0] : r.distance;
-    CHECK(r.num_pairs == 1 && !r.equidistant, "%s: not flagged but two pairs / equidistant", where);
-    (void)dcore; /* distance 0 unflagged: a stable crossing of a disk; the differences below check the zero gradient */
+    /* Unflagged with two pairs or an equidistant set only at distance 0 (a stable crossing of a
+     * disk, where the zero gradient is exact: the differences below check it). */
+    double dcore = k->name[0] >= 'A' && k->name[0] <= 'Z' ? r.reserved[0] : r.distance, Lq = 0;
+    for (int i = 0; i < 3; i++)
+        Lq = fmax(Lq, fmax(fabs((&r.pairs[0].point[0].x)[i]), fabs((&r.pairs[0].point[1].x)[i])));
+    CHECK((r.num_pairs == 1 && !r.equidistant) || dcore <= 16 * DBL_EPSILON * Lq,
+          "%s: not flagged but two pairs / equidistant", where);
     if (getenv("GRAD_VERBOSE")) fprintf(stderr, "%s: distance %.17g\n", where, r.distance);
     /* scale: the distance and the objects' extent */
     double L = fabs(r.distance);
@@ -419,6 +425,210 @@ static void check_kinks(void)
         if (i == 3 || i == 4 || i == 5 || i == 9 || i == 10 || i == 11) continue;
         CHECK(fabs(fd) < 1e-15, "segment through a disk: distance constant nearby (number %d: %g)", i, fd);
     }
+}
+
+/* ---- every clause of the header's gradient paragraph, on a case where it applies ---- */
+
+/* The gradient's components, flattened in the order of the kind's fields (vectors: 3 numbers;
+ * scalars: 1). */
+static int grad_numbers(const gkind *k, const cdist_grad *g, double *out)
+{
+    int m = 0;
+    for (const field *f = k->f; f->type != F_END; f++) {
+        const cdist_grad_object *o = &g->obj[f->obj];
+        switch (f->type) {
+        case F_RADIUS: out[m++] = o->d_radius; break;
+        case F_RSWEPT: out[m++] = o->d_radius_swept; break;
+        case F_START: out[m++] = o->d_start; break;
+        case F_ENDANG: out[m++] = o->d_end; break;
+        default:
+            for (int i = 0; i < 3; i++) out[m++] = vfield(o, f->type)[i];
+        }
+    }
+    return m;
+}
+
+/* Flagged, distance > 0: the gradient is that of pairs[0] (or of the equidistant set's
+ * representative pair), the distance being the minimum over the closest pairs: along every
+ * coordinate direction e of a centre / origin / end point and every radius, g . e lies between
+ * the right derivative along e and the left one (one-sided differences of the distance), and
+ * with two isolated pairs (two_pairs) it equals one of them. */
+static void check_one_sided(const char *what, const gkind *k, const double *v, int n, int two_pairs)
+{
+    cdist_result r;
+    cdist_grad g;
+    CHECK(k->fn(q, v, &r, &g) == CDIST_OK && (g.flags & CDIST_GRAD_NOT_DIFFERENTIABLE), "%s: flagged", what);
+    double f0 = dist_at(k, v), w[CDQ_MAX_VALUES];
+    const double h = 1e-7;
+    for (const field *f = k->f; f->type != F_END; f++) {
+        if (f->type == F_NORMAL || f->type == F_DIR || f->type == F_ZERO || f->type == F_START || f->type == F_ENDANG)
+            continue;
+        int scalar = f->type == F_RADIUS || f->type == F_RSWEPT;
+        for (int i = 0; i < (scalar ? 1 : 3); i++) {
+            double gi = f->type == F_RADIUS ? g.obj[f->obj].d_radius
+                        : f->type == F_RSWEPT ? g.obj[f->obj].d_radius_swept
+                                              : vfield(&g.obj[f->obj], f->type)[i];
+            memcpy(w, v, n * sizeof(double));
+            w[f->offset + i] += h;
+            double right = (dist_at(k, w) - f0) / h;
+            memcpy(w, v, n * sizeof(double));
+            w[f->offset + i] -= h;
+            double left = (f0 - dist_at(k, w)) / h;
+            int ok = two_pairs ? fabs(gi - right) < 1e-5 || fabs(gi - left) < 1e-5
+                               : gi >= right - 1e-5 && gi <= left + 1e-5;
+            CHECK(ok, "%s: number %d: gradient %.9g against the one-sided derivatives (left %.9g, right %.9g)", what,
+                  f->offset + i, gi, left, right);
+        }
+    }
+}
+
+/* Distance 0: the gradient is exactly 0; flagged unless the distance is 0 on a neighbourhood,
+ * which central differences along every number (and tangent directions of the unit vectors)
+ * then confirm through check_line; where flagged, a one-sided derivative along `kink_off` /
+ * e is not 0 (the distance is |.|-like there). */
+static void check_zero(const char *what, const gkind *k, double *v, int n, int stable, apply_fn ap, int kink_off,
+                       const double *e)
+{
+    cdist_result r;
+    cdist_grad g;
+    CHECK(k->fn(q, v, &r, &g) == CDIST_OK, "%s: status", what);
+    double x[64];
+    int m = grad_numbers(k, &g, x), swept = k->name[0] >= 'A' && k->name[0] <= 'Z';
+    int zero = 1;
+    for (int i = 0; i < m; i++)
+        if (x[i] != 0.0 && !(swept && x[i] == -1.0)) zero = 0; /* swept radii: -1 */
+    CHECK(zero, "%s: gradient exactly 0", what);
+    CHECK((!(g.flags & CDIST_GRAD_NOT_DIFFERENTIABLE)) == stable, "%s: flag %d, expected %d", what, g.flags, !stable);
+    if (stable) {
+        CHECK(check_line(k, v, n, what) == 1, "%s: differences of the distance agree with the zero gradient", what);
+    } else {
+        double w[CDQ_MAX_VALUES], up, down;
+        memcpy(w, v, n * sizeof(double));
+        ap(v, w, kink_off, e, 1e-6);
+        up = dist_at(k, w);
+        memcpy(w, v, n * sizeof(double));
+        ap(v, w, kink_off, e, -1e-6);
+        down = dist_at(k, w);
+        CHECK(fmax(up, down) - dist_at(k, v) > 1e-8, "%s: the distance grows on a side (not differentiable)", what);
+    }
+}
+
+static void check_clauses(void)
+{
+    cdist_result r;
+    cdist_grad g;
+    const double s2 = sqrt(0.5);
+    double ex[3] = {1, 0, 0}, ez[3] = {0, 0, 1};
+    /* point P: dP = dp. Point (2, 0, 1) to the unit circle: pair (1, 0, 0), w = (1, 0, 1)/sqrt 2. */
+    double pc[] = {2, 0, 1, 0, 0, 0, 0, 0, 1, 1};
+    CHECK(g_pc(q, pc, &r, &g) == CDIST_OK && fabs(g.obj[0].d_center.x - s2) < 1e-15 &&
+              fabs(g.obj[0].d_center.z - s2) < 1e-15 && fabs(g.obj[1].d_radius + s2) < 1e-15,
+          "point: d_center = w, circle d_radius = -w.e");
+    CHECK(check_line(find_kind("pc"), pc, 10, "clause point") == 1, "clause point: differences");
+    /* line o + t d (t fixed): a generic line; ray with its start closest: d_direction = 0 */
+    double lc[] = {0.3, -2, 0.7, 2.0 / 3, 2.0 / 3, 1.0 / 3, 0, 0, 0, 0, 0, 1, 1};
+    CHECK(check_line(find_kind("lc"), lc, 13, "clause line") == 1, "clause line: differences");
+    double rc[] = {2, 0, 1, 1, 0, 0, 0, 0, 0, 0, 0, 1, 1};
+    CHECK(g_rc(q, rc, &r, &g) == CDIST_OK && r.pairs[0].param[0] == 0.0 && g.obj[0].d_direction.x == 0.0 &&
+              g.obj[0].d_direction.y == 0.0 && g.obj[0].d_direction.z == 0.0,
+          "ray start closest: d_direction = 0");
+    CHECK(check_line(find_kind("rc"), rc, 13, "clause ray start") == 1, "clause ray start: differences");
+    /* segment p0 + s (p1 - p0), s fixed, end points included: p1 closest gives d_p0 = 0 */
+    double sc[] = {4, 0, 1, 2, 0, 1, 0, 0, 0, 0, 0, 1, 1};
+    CHECK(g_sc(q, sc, &r, &g) == CDIST_OK && r.pairs[0].param[0] == 1.0 && g.obj[0].d_p0.x == 0.0 &&
+              fabs(g.obj[0].d_p1.x - s2) < 1e-15,
+          "segment end p1 closest: d_p0 = 0, d_p1 = w");
+    CHECK(check_line(find_kind("sc"), sc, 13, "clause segment end") == 1, "clause segment end: differences");
+    /* circle C + r e, de = -(e . dN) N: two tilted circles apart */
+    double cc[] = {0, 0, 0, 0, 0, 1, 1, 0.5, 2, 0.3, 0.6, 0, 0.8, 0.7};
+    CHECK(check_line(find_kind("cc"), cc, 14, "clause circle") == 1, "clause circle: differences");
+    /* disk interior (s < 1): d_radius = 0, d_normal = -(w . N)(P - C) */
+    double pd[] = {0.2, 0.1, 0.5, 0, 0, 0, 0, 0, 1, 1};
+    CHECK(g_pd(q, pd, &r, &g) == CDIST_OK && g.obj[1].d_radius == 0.0 && fabs(g.obj[1].d_normal.x - 0.2) < 1e-15 &&
+              fabs(g.obj[1].d_normal.y - 0.1) < 1e-15 && g.obj[1].d_normal.z == 0.0,
+          "disk interior: d_radius 0, d_normal = (w.N)(P - C) for the disk's w = -N");
+    CHECK(check_line(find_kind("pd"), pd, 10, "clause disk interior") == 1, "clause disk interior: differences");
+    /* disk rim (s = 1) */
+    double pd_rim[] = {1.5, 0.5, 0.5, 0, 0, 0, 0, 0, 1, 1};
+    CHECK(check_line(find_kind("pd"), pd_rim, 10, "clause disk rim") == 1, "clause disk rim: differences");
+    /* disk interior: w is +-N, not from the rounded points (a point 1e-9 above a tilted disk at
+     * 1e4: P - Q has lost half of its digits, N has not) */
+    double pd_far[] = {1e4 + 0.8 * 0.25 + 0.6e-9, 0, -0.6 * 0.25 + 0.8e-9, 1e4, 0, 0, 0.6, 0, 0.8, 1};
+    CHECK(g_pd(q, pd_far, &r, &g) == CDIST_OK && fabs(g.obj[0].d_center.x - 0.6) < 4e-16 &&
+              g.obj[0].d_center.y == 0.0 && fabs(g.obj[0].d_center.z - 0.8) < 4e-16,
+          "disk interior far out: w = N (got %.17g %.17g %.17g)", g.obj[0].d_center.x, g.obj[0].d_center.y,
+          g.obj[0].d_center.z);
+    /* arc: angle fixed; d_start active when the closest point is the start, d_end then 0 */
+    double ac[] = {0, 0, 0, 0, 0, 1, 1, 1, 0, 0, 0, M_PI / 2, 0.5, -2, 0, 0, 0, 1, 0.1};
+    CHECK(g_ac(q, ac, &r, &g) == CDIST_OK && r.pairs[0].param[0] == 0.0 && g.obj[0].d_start != 0.0 &&
+              g.obj[0].d_end == 0.0,
+          "arc start closest: d_start %g, d_end %g", g.obj[0].d_start, g.obj[0].d_end);
+    CHECK(check_line(find_kind("ac"), ac, 19, "clause arc start") == 1, "clause arc start: differences");
+    /* swept objects: the core gradient plus d_radius_swept = -1 (overlapping spheres: the
+     * signed distance is negative, the cores apart, differentiable) */
+    double ss[] = {0, 0, 0, 1, 1.5, 0.2, 0, 1};
+    CHECK(g_SS(q, ss, &r, &g) == CDIST_OK && r.distance < 0 && g.obj[0].d_radius_swept == -1.0 &&
+              g.obj[1].d_radius_swept == -1.0 && !(g.flags & CDIST_GRAD_NOT_DIFFERENTIABLE),
+          "swept: d_radius_swept = -1, overlap differentiable");
+    CHECK(check_line(find_kind("SS"), ss, 8, "clause swept") == 1, "clause swept: differences");
+    /* two closest pairs: flagged, the gradient of pairs[0] is a one-sided derivative */
+    double lc2[] = {0, 0, 0.5, 1, 0, 0, 0, 0, 0, 0, 0, 1, 1};
+    CHECK(g_lc(q, lc2, &r, &g) == CDIST_OK && r.num_pairs == 2, "line over a diameter: two pairs");
+    check_one_sided("two pairs", find_kind("lc"), lc2, 13, 1);
+    /* an equidistant result: flagged, the representative pair's gradient is a one-sided derivative */
+    double pc_axis[] = {0, 0, 0.5, 0, 0, 0, 0, 0, 1, 1};
+    CHECK(g_pc(q, pc_axis, &r, &g) == CDIST_OK && r.equidistant, "point on the axis: equidistant");
+    check_one_sided("equidistant", find_kind("pc"), pc_axis, 10, 0);
+    /* distance 0 without a neighbourhood: flagged, gradient 0 */
+    double pd0[] = {0.2, 0.1, 0, 0, 0, 0, 0, 0, 1, 1};
+    check_zero("point on a disk", find_kind("pd"), pd0, 10, 0, apply_add, 0, ez);
+    double cc0[] = {0, 0, 0, 0, 0, 1, 1, 1, 0, 0, 0, 1, 0, 2}; /* meet at (-1, 0, 0) */
+    check_zero("crossing circles", find_kind("cc"), cc0, 14, 0, apply_add, 7, ex);
+    /* swept: the rule reads the core distance (crossing capsule axes: core 0, flagged) */
+    double kk0[] = {-1, 0, 0, 1, 0, 0, 0.2, 0, -1, 0, 0, 1, 0, 0.3};
+    check_zero("crossing capsule axes", find_kind("KK"), kk0, 14, 0, apply_add, 7, ez);
+    /* distance 0 on a whole neighbourhood: not flagged, gradient exactly 0 (two-sided) --
+     * a segment, line, ray, circle and arc crossing a disk's plane inside its rim, and two
+     * disks in transversal planes meeting inside both rims, whatever their pair count or
+     * equidistant flag */
+    double sd[] = {0.2, 0.1, -1, 0.3, 0.1, 1, 0, 0, 0, 0, 0, 1, 1};
+    check_zero("segment through a disk", find_kind("sd"), sd, 13, 1, NULL, 0, NULL);
+    double ld[] = {0.2, 0.1, -1, 0.6, 0, 0.8, 0, 0, 0, 0, 0, 1, 1};
+    check_zero("line through a disk", find_kind("ld"), ld, 13, 1, NULL, 0, NULL);
+    double rd[] = {0.2, 0.1, -1, 0.6, 0, 0.8, 0, 0, 0, 0, 0, 1, 1};
+    check_zero("ray through a disk", find_kind("rd"), rd, 13, 1, NULL, 0, NULL);
+    double cd[] = {0.2, 0, 0, 0, 1, 0, 0.3, 0, 0, 0, 0, 0, 1, 1}; /* two crossings: two pairs */
+    CHECK(g_cd(q, cd, &r, &g) == CDIST_OK && r.num_pairs == 2, "circle through a disk: two pairs");
+    check_zero("circle through a disk", find_kind("cd"), cd, 14, 1, NULL, 0, NULL);
+    double ad[] = {0.2, 0, 0, 0, 1, 0, 0.3, 1, 0, 0, -2, 2, 0, 0, 0, 0, 0, 1, 1};
+    check_zero("arc through a disk", find_kind("ad"), ad, 19, 1, NULL, 0, NULL);
+    double dd[] = {0, 0, 0, 0, 0, 1, 1, 0.1, 0, 0, 0, 1, 0, 0.3}; /* meet along a segment: equidistant */
+    CHECK(g_dd(q, dd, &r, &g) == CDIST_OK && r.equidistant, "crossing disks: equidistant");
+    check_zero("disks crossing inside both rims", find_kind("dd"), dd, 14, 1, NULL, 0, NULL);
+    double dd_sw[] = {0.1, 0, 0, 0, 1, 0, 0.3, 0, 0, 0, 0, 0, 1, 1};
+    check_zero("disks crossing inside both rims, swapped", find_kind("dd"), dd_sw, 14, 1, NULL, 0, NULL);
+    /* ... but not: a segment ending on the disk, a disk touching another's rim, a curve in the
+     * disk's plane, a circle crossing the plane outside the rim at a point of the rim */
+    double sd_end[] = {0.2, 0.1, 0, 0.2, 0.1, 1, 0, 0, 0, 0, 0, 1, 1};
+    check_zero("segment ending on a disk", find_kind("sd"), sd_end, 13, 0, apply_add, 0, ez);
+    double dd_rim[] = {0, 0, 0, 0, 0, 1, 1, 1.3, 0, 0, 0, 1, 0, 0.3};
+    check_zero("disk touching a rim", find_kind("dd"), dd_rim, 14, 0, apply_add, 7, ex);
+    double sd_flat[] = {-0.5, 0.1, 0, 0.5, 0.1, 0, 0, 0, 0, 0, 0, 1, 1};
+    check_zero("segment in the disk's plane", find_kind("sd"), sd_flat, 13, 0, apply_add, 6, ez);
+    /* a circle or disk of radius 0: differentiated from the right (forward difference) */
+    double pc_r0[] = {3, 0, 4, 0, 0, 0, 0, 0, 1, 0};
+    CHECK(g_pc(q, pc_r0, &r, &g) == CDIST_OK, "radius 0: status");
+    double w0[10];
+    memcpy(w0, pc_r0, sizeof w0);
+    w0[9] = 1e-7;
+    double fwd = (dist_at(find_kind("pc"), w0) - dist_at(find_kind("pc"), pc_r0)) / 1e-7;
+    CHECK(fabs(g.obj[1].d_radius - fwd) < 1e-6, "radius 0: d_radius %.17g, forward difference %.17g",
+          g.obj[1].d_radius, fwd);
+    double pd_r0[] = {3, 0, 4, 0, 0, 0, 0, 0, 1, 0};
+    CHECK(g_pd(q, pd_r0, &r, &g) == CDIST_OK, "disk radius 0: status");
+    fwd = (dist_at(find_kind("pd"), w0) - dist_at(find_kind("pd"), pd_r0)) / 1e-7;
+    CHECK(fabs(g.obj[1].d_radius - fwd) < 1e-6, "disk radius 0: d_radius %.17g, forward difference %.17g",
+          g.obj[1].d_radius, fwd);
 }
 
 static void check_errors(void)
@@ -894,6 +1104,7 @@ int main(int argc, char **argv)
     printf("no __float128: quad-precision checks skipped\n");
 #endif
     check_kinks();
+    check_clauses();
     check_errors();
     printf("checked %d differentiable queries, %d flagged\n", n_checked, n_flagged);
     cdist_query_free(q);

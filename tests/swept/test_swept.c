@@ -543,9 +543,38 @@ static void check_segment_segment(cdist_query *q)
     printf("segment-segment: max error %.3g of scale\n", worst);
 }
 
+/* Tiny and subnormal coordinates in the closed-form cores (found by fuzzing): distances and
+ * segment parameters must not lose their squares to underflow, and the touch normal of
+ * subnormal objects is a finite unit vector. References: exact differences of the inputs. */
+static void check_tiny(cdist_query *q)
+{
+    cdist_contact c;
+    /* spheres of radius 0 at x = 8.09e-169 and x = 9.3e-320: distance their difference */
+    cdist_sphere s0 = {tv(8.0947715414629835e-169, 0, 0), 0}, s1 = {tv(9.3462398223788609e-320, 0, 0), 0};
+    double ref = 8.0947715414629835e-169 - 9.3462398223788609e-320;
+    CHECK(cdist_sphere_sphere(q, &s0, &s1, &c) == CDIST_OK && fabs(c.distance - ref) <= 1e-15 * ref,
+          "tiny spheres: distance %.17g, expected %.17g", c.distance, ref);
+    /* a segment of length 5e-259 whose end p1 is 1e-300 from a point: p1 is the closest point */
+    cdist_capsule k = {{tv(-5e-259, 0, 0), tv(0, 0, 0)}, 0};
+    cdist_sphere p = {tv(0, 1e-300, 0), 0};
+    CHECK(cdist_capsule_sphere(q, &k, &p, &c) == CDIST_OK && fabs(c.distance - 1e-300) <= 1e-15 * 1e-300 &&
+              c.pairs[0].param[0] == 1.0,
+          "tiny segment: distance %.17g at s = %.17g, expected 1e-300 at 1", c.distance, c.pairs[0].param[0]);
+    /* capsules of subnormal size that touch: a finite unit normal */
+    cdist_capsule a = {{tv(4.0414569829813967e-320, -0.0, -7.0137559083623359e-320),
+                        tv(1.1052248497468685e-319, -8.0947715414629834e-320, -4.6797897974082873e-320)}, 0};
+    cdist_capsule b = {{tv(5.9915340871167968e-320, 5.2118984979793098e-320, -1.5696465568376403e-320),
+                        tv(0, 0, 4.0473857707314917e-320)}, 2.428431462438895e-319};
+    cdist_status st = cdist_capsule_capsule(q, &a, &b, &c);
+    cdist_vec3 n = c.pairs[0].normal;
+    double nn = sqrt(n.x * n.x + n.y * n.y + n.z * n.z);
+    CHECK(st == CDIST_OK && fabs(nn - 1) < 1e-15, "subnormal capsules: normal (%g %g %g)", n.x, n.y, n.z);
+}
+
 int main(void)
 {
     cdist_query *q = cdist_query_new();
+    check_tiny(q);
     for (int pi = 0; pi < NPAIRS; pi++) {
         int crossed = 0;
         for (int k = 0; k < 24; k++) {
