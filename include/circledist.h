@@ -44,6 +44,9 @@ extern "C" {
 #define CDIST_API __attribute__((visibility("default")))
 #endif
 
+/** @defgroup objects Objects, results and enumerations
+ *  @{ */
+
 /** A point or vector in 3D. */
 typedef struct cdist_vec3 {
     double x; /**< x coordinate */
@@ -184,6 +187,10 @@ typedef int (*cdist_curve_fn)(void *user, double t, cdist_vec3 *position, cdist_
 /** Opaque query handle: options plus every workspace a query needs, so queries never allocate. */
 typedef struct cdist_query cdist_query;
 
+/** @} */
+
+/** @defgroup version Version
+ *  @{ */
 /* ---- version ------------------------------------------------------------------------ */
 
 /** Library version as "MAJOR.MINOR.PATCH" of the library actually loaded. */
@@ -197,6 +204,10 @@ CDIST_API int cdist_version_minor(void);
 /** Patch version of the library actually loaded. */
 CDIST_API int cdist_version_patch(void);
 
+/** @} */
+
+/** @defgroup status Status names and struct sizes
+ *  @{ */
 /* ---- status, sizes ------------------------------------------------------------------ */
 
 /** A one-sentence description of a status ("unknown status" for numbers not listed). */
@@ -211,6 +222,10 @@ CDIST_API size_t cdist_result_size(void);
 /** sizeof(cdist_pair) as compiled into the library. */
 CDIST_API size_t cdist_pair_size(void);
 
+/** @} */
+
+/** @defgroup handle Query handle and options
+ *  @{ */
 /* ---- query handle ------------------------------------------------------------------- */
 
 /** Creates a query handle with default options. Returns NULL if memory runs out. */
@@ -247,6 +262,10 @@ CDIST_API cdist_status cdist_query_last_status(const cdist_query *q);
  */
 CDIST_API const char *cdist_query_last_error(const cdist_query *q);
 
+/** @} */
+
+/** @defgroup frames Circle frames (angles of points on circles)
+ *  @{ */
 /* ---- circle frames ------------------------------------------------------------------ */
 
 /** The basis in which circle angles are measured. With N the normalised normal and k the
@@ -257,6 +276,10 @@ CDIST_API cdist_status cdist_circle_basis(const cdist_circle *c, cdist_vec3 *u, 
 /** The point of circle c at angle `angle` in the basis of cdist_circle_basis(). */
 CDIST_API cdist_status cdist_circle_point(const cdist_circle *c, double angle, cdist_vec3 *point);
 
+/** @} */
+
+/** @defgroup points Point queries
+ *  @{ */
 /* ---- point queries ------------------------------------------------------------------ */
 
 /** Distance from point p to circle c. equidistant when p is on the circle's axis. */
@@ -264,6 +287,10 @@ CDIST_API cdist_status cdist_point_circle(cdist_query *q, const cdist_vec3 *p, c
 /** Distance from point p to disk d (circle plus interior). */
 CDIST_API cdist_status cdist_point_disk(cdist_query *q, const cdist_vec3 *p, const cdist_circle *d, cdist_result *r);
 
+/** @} */
+
+/** @defgroup lines Lines, rays and segments to circles
+ *  @{ */
 /* ---- lines, rays, segments to circles ---------------------------------------------- */
 
 /** Distance from a line to a circle (methods: POLYNOMIAL, ROBUST; AUTO = ROBUST). */
@@ -273,6 +300,10 @@ CDIST_API cdist_status cdist_ray_circle(cdist_query *q, const cdist_ray *l, cons
 /** Distance from a segment to a circle; param[0] is the segment parameter s in [0, 1]. */
 CDIST_API cdist_status cdist_segment_circle(cdist_query *q, const cdist_segment *s, const cdist_circle *c, cdist_result *r);
 
+/** @} */
+
+/** @defgroup circles Circle to circle
+ *  @{ */
 /* ---- circle to circle --------------------------------------------------------------- */
 
 /** Distance between two circles (methods: POLYNOMIAL, ROBUST, ITERATION; AUTO picks).
@@ -300,6 +331,10 @@ CDIST_API cdist_status cdist_circle_circle_batch(cdist_query *q, size_t n, const
                                                  const cdist_circle *c1, cdist_result *results,
                                                  cdist_status *statuses);
 
+/** @} */
+
+/** @defgroup disks Disks
+ *  @{ */
 /* ---- disks -------------------------------------------------------------------------- */
 
 /** Distance from a line to a disk. */
@@ -313,6 +348,10 @@ CDIST_API cdist_status cdist_circle_disk(cdist_query *q, const cdist_circle *c, 
 /** Distance between two disks. */
 CDIST_API cdist_status cdist_disk_disk(cdist_query *q, const cdist_circle *d0, const cdist_circle *d1, cdist_result *r);
 
+/** @} */
+
+/** @defgroup curves Curves, arcs, helices and Bezier curves
+ *  @{ */
 /* ---- curves and arcs ---------------------------------------------------------------- */
 /* These queries have one method (root bounding and bisection, answered as
  * ::CDIST_METHOD_ROBUST whatever the handle's method). Arcs are exact: their candidates are the
@@ -364,6 +403,10 @@ CDIST_API cdist_status cdist_bezier3_circle(cdist_query *q, const cdist_bezier3 
 /** Distance from a cubic Bezier curve to a disk. */
 CDIST_API cdist_status cdist_bezier3_disk(cdist_query *q, const cdist_bezier3 *b, const cdist_circle *d, cdist_result *r);
 
+/** @} */
+
+/** @defgroup batches Batches
+ *  @{ */
 /* ---- batches ------------------------------------------------------------------------ */
 
 /** Query kinds for the batch entry points. Numbers are fixed; new kinds are appended. The
@@ -478,6 +521,10 @@ CDIST_API cdist_status cdist_query_set_threads(cdist_query *q, int threads);
 /** The worker thread count (1 for a NULL handle). */
 CDIST_API int cdist_query_get_threads(const cdist_query *q);
 
+/** @} */
+
+/** @defgroup swept Swept objects: spheres, capsules, tori, rounded disks
+ *  @{ */
 /* ---- swept objects and gradients ---------------------------------------------------- */
 /* A swept object is a core (point, segment, circle, disk) swept by a ball of radius
  * `radius`: the set of points within `radius` of the core. The signed distance between two
@@ -606,6 +653,10 @@ CDIST_API cdist_status cdist_sphere_circle(cdist_query *q, const cdist_sphere *a
 /** Sphere to disk (core: cdist_point_disk()). */
 CDIST_API cdist_status cdist_sphere_disk(cdist_query *q, const cdist_sphere *a, const cdist_circle *b, cdist_contact *c);
 
+/** @} */
+
+/** @defgroup gradients Gradients
+ *  @{ */
 /* ---- gradients ----
  * A `_grad` query answers the query and writes the derivative of the distance with respect to
  * every input parameter of both objects, from the closest pair (envelope theorem): with P on
@@ -756,6 +807,10 @@ CDIST_API cdist_status cdist_sphere_circle_grad(cdist_query *q, const cdist_sphe
 /** cdist_sphere_disk() with the gradient. */
 CDIST_API cdist_status cdist_sphere_disk_grad(cdist_query *q, const cdist_sphere *a, const cdist_circle *b, cdist_contact *c, cdist_grad *g);
 
+/** @} */
+
+/** @defgroup topology Linking numbers and time of impact
+ *  @{ */
 /* ---- linking and time of impact ------------------------------------------------------ */
 
 /* Linking. The linking number of two oriented circles a and b (each oriented counterclockwise
@@ -934,6 +989,10 @@ CDIST_API cdist_status cdist_toi_batch(cdist_query *q, size_t n, const cdist_sha
                                        ptrdiff_t b_stride, const cdist_motion *mb, ptrdiff_t mb_stride, double target,
                                        double tolerance, int max_iterations, cdist_toi_result *out,
                                        cdist_status *statuses);
+/** @} */
+
+/** @defgroup scenes Scenes: many objects at once
+ *  @{ */
 /* ---- scenes: many objects at once --------------------------------------------------- */
 /* A scene holds N objects of any of the kinds below; object ids are the indices at which
  * cdist_scene_add() put them (0, 1, 2, ... in order of addition; an id is never reused).
@@ -1101,6 +1160,10 @@ CDIST_API cdist_status cdist_scene_nearest(cdist_query *q, cdist_scene *s, cdist
  *  cdist_scene_nearest() and of cdist_scene_pairs_within() for capacity and count). */
 CDIST_API cdist_status cdist_scene_within(cdist_query *q, cdist_scene *s, cdist_scene_kind kind, const void *object,
                                           double delta, cdist_scene_pair *out, size_t capacity, size_t *count);
+/** @} */
+
+/** @addtogroup batches
+ *  @{ */
 /* ---- batches of contacts and gradients, progress (1.1) ---------------------------------- */
 
 /** sizeof the result type of a kind: sizeof(cdist_result), or sizeof(cdist_contact) for a
@@ -1206,6 +1269,8 @@ CDIST_API size_t cdist_scene_toi_size(void);
 CDIST_API cdist_status cdist_scene_toi(cdist_query *q, cdist_scene *s, const cdist_motion *motions, ptrdiff_t stride,
                                        double target, double tolerance, int max_iterations,
                                        cdist_scene_toi_result *out);
+
+/** @} */
 
 #ifdef __cplusplus
 }
