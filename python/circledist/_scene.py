@@ -453,15 +453,15 @@ class Scene:
         raw = np.concatenate(chunks) if chunks else np.empty(0, SCENE_PAIR_DTYPE)
         return ScenePairs(raw)
 
-    def _sized(self, call, capacity):
+    def _sized(self, call, capacity, dtype=SCENE_PAIR_DTYPE, wrap=ScenePairs, allow=(_BAD_KIND,)):
         """Run call(out, capacity, count) and again with the exact size when it did not fit."""
         while True:
-            out = np.empty(max(capacity, 1), SCENE_PAIR_DTYPE)
+            out = np.zeros(max(capacity, 1), dtype)
             count = _c.c_size_t()
             st = call(out.ctypes.data, capacity, _c.byref(count))
-            self._check(st, allow=(_BAD_KIND,))
             if count.value <= capacity:
-                return ScenePairs(out[:count.value])
+                self._check(st, allow=allow)
+                return wrap(out[:count.value])
             capacity = count.value
 
     def pairs_between(self, other, delta):
@@ -625,16 +625,9 @@ class Scene:
         """
         if _linked is None:
             raise RuntimeError("the loaded libcircledist has no cdist_scene_linked_pairs")
-        capacity = 2 * len(self) + 64
         with self._query._lock, self._lock:
-            while True:
-                out = np.zeros(max(capacity, 1), SCENE_LINK_DTYPE)
-                count = _c.c_size_t()
-                st = _linked(self._query._handle(), self._handle(), out.ctypes.data, capacity, _c.byref(count))
-                if count.value <= capacity:
-                    self._check(st)
-                    return SceneLinks(out[:count.value])
-                capacity = count.value
+            return self._sized(lambda out, cap, cnt: _linked(self._query._handle(), self._handle(), out, cap, cnt),
+                               2 * len(self) + 64, SCENE_LINK_DTYPE, SceneLinks, allow=())
 
     def time_of_impact(self, motions=None, *, target=0.0, tolerance=1e-9, max_iterations=100000):
         """Earliest time of impact of the moving scene (cdist_scene_toi).
