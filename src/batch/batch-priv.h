@@ -54,9 +54,6 @@ cdist_status cdist__workers_run(cdist_query *q, const cdist__job *job, cdist__sl
 /* A distance kernel variant: entries [lo, lo + count) of job, an int selecting the kind's shape,
  * the unit tolerance; returns the mask of the entries left for the scalar path. */
 typedef uint64_t (*cdist__kernel_fn)(const cdist__job *job, int shape, double unit_tol, size_t lo, size_t count);
-/* The lane instruction set this CPU runs, found once (src/batch/kernel_choice.c). */
-enum { CD_ISA_SCALAR, CD_ISA_AVX2, CD_ISA_AVX512 };
-int cdist__lanes_isa(void);
 /* The variant this CPU runs (AVX-512, else AVX2 + FMA, else scalar; a NULL variant is skipped:
  * an AVX-512 CPU without an AVX-512 variant runs the AVX2 one), cached in *chosen. */
 cdist__kernel_fn cdist__kernel_choose(cdist__kernel_fn *chosen, cdist__kernel_fn avx512, cdist__kernel_fn avx2,

@@ -44,7 +44,7 @@
 
 #include "batch-priv.h"
 #include "circles/circles-priv.h"
-#include "lanes.h"
+#include "base/lanes/lanes.h"
 
 #define CK_GRID 32     /* grid angles (97% of random pairs prune every interval outside the basin) */
 #define CK_LEVELS 7    /* basin half-widths 2 pi / CK_GRID * 4^-l, l < 7: down to 5e-5 rad */
@@ -119,26 +119,26 @@ static void ck_tables_init(void)
 }
 
 #define CD_LANES 1
-#include "lanes_def.h"
-#include "lanes_vec.h"
+#include "base/lanes/lanes_def.h"
+#include "base/lanes/lanes_vec.h"
 #include "cc_kernel_body.h"
-#include "lanes_undef.h"
+#include "base/lanes/lanes_undef.h"
 
 #ifdef CD_X86_KERNELS
 CD_LANES_TARGET_PUSH("avx512f,fma")
 #define CD_LANES 8
-#include "lanes_def.h"
-#include "lanes_vec.h"
+#include "base/lanes/lanes_def.h"
+#include "base/lanes/lanes_vec.h"
 #include "cc_kernel_body.h"
-#include "lanes_undef.h"
+#include "base/lanes/lanes_undef.h"
 CD_LANES_TARGET_POP
 
 CD_LANES_TARGET_PUSH("avx2,fma")
 #define CD_LANES 4
-#include "lanes_def.h"
-#include "lanes_vec.h"
+#include "base/lanes/lanes_def.h"
+#include "base/lanes/lanes_vec.h"
 #include "cc_kernel_body.h"
-#include "lanes_undef.h"
+#include "base/lanes/lanes_undef.h"
 CD_LANES_TARGET_POP
 #endif
 

@@ -1,23 +1,8 @@
 /* SPDX-License-Identifier: MIT */
-/* The one run-time choice of the lane instruction set (AVX-512, AVX2 + FMA, scalar), shared by
- * the distance kernels and the single circle-circle query's search in lanes. */
+/* The variant of a batch distance kernel this CPU runs, chosen once per kernel from the lane
+ * instruction set (src/base/lanes/lanes_isa.c). */
 #include "batch-priv.h"
-
-int cdist__lanes_isa(void)
-{
-    /* a benign race: every thread computes the same value */
-    static int isa = -1;
-    int v = __atomic_load_n(&isa, __ATOMIC_RELAXED);
-    if (v >= 0) return v;
-    v = CD_ISA_SCALAR;
-#if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))
-    __builtin_cpu_init();
-    if (__builtin_cpu_supports("avx512f")) v = CD_ISA_AVX512;
-    else if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma")) v = CD_ISA_AVX2;
-#endif
-    __atomic_store_n(&isa, v, __ATOMIC_RELAXED);
-    return v;
-}
+#include "base/lanes/lanes.h"
 
 cdist__kernel_fn cdist__kernel_choose(cdist__kernel_fn *chosen, cdist__kernel_fn avx512, cdist__kernel_fn avx2,
                                       cdist__kernel_fn scalar)

@@ -11,7 +11,7 @@
 #include <string.h>
 
 #include "batch-priv.h"
-#include "lanes.h"
+#include "base/lanes/lanes.h"
 
 _Static_assert(sizeof(cdist_line) == 48 && sizeof(cdist_ray) == 48 && sizeof(cdist_segment) == 48, "line layouts");
 _Static_assert(offsetof(cdist_circle, normal) == 24 && offsetof(cdist_circle, radius) == 48, "cdist_circle layout");
@@ -57,10 +57,10 @@ typedef struct lk_block {
 
 #define CD_LANES 1
 #define LK_CHAINS 1
-#include "lanes_def.h"
-#include "lanes_vec.h"
+#include "base/lanes/lanes_def.h"
+#include "base/lanes/lanes_vec.h"
 #include "line_kernel_body.h"
-#include "lanes_undef.h"
+#include "base/lanes/lanes_undef.h"
 #undef LK_CHAINS
 
 #ifdef CD_X86_KERNELS
@@ -70,10 +70,10 @@ typedef struct lk_block {
 CD_LANES_TARGET_PUSH("avx512f,fma")
 #define CD_LANES 8
 #define LK_CHAINS LK_WIDE_CHAINS
-#include "lanes_def.h"
-#include "lanes_vec.h"
+#include "base/lanes/lanes_def.h"
+#include "base/lanes/lanes_vec.h"
 #include "line_kernel_body.h"
-#include "lanes_undef.h"
+#include "base/lanes/lanes_undef.h"
 #undef LK_CHAINS
 CD_LANES_TARGET_POP
 
@@ -82,10 +82,10 @@ CD_LANES_TARGET_POP
 CD_LANES_TARGET_PUSH("avx2,fma")
 #define CD_LANES 4
 #define LK_CHAINS LK_WIDE_CHAINS
-#include "lanes_def.h"
-#include "lanes_vec.h"
+#include "base/lanes/lanes_def.h"
+#include "base/lanes/lanes_vec.h"
 #include "line_kernel_body.h"
-#include "lanes_undef.h"
+#include "base/lanes/lanes_undef.h"
 #undef LK_CHAINS
 CD_LANES_TARGET_POP
 

@@ -12,7 +12,7 @@
 #include <stdint.h>
 
 #include "batch-priv.h"
-#include "lanes.h"
+#include "base/lanes/lanes.h"
 
 /* The kernels load the fields by byte offset. */
 _Static_assert(offsetof(cdist_vec3, y) == 8 && offsetof(cdist_vec3, z) == 16, "cdist_vec3 layout");

@@ -1,15 +1,16 @@
 /* SPDX-License-Identifier: MIT */
-/* The batch distance kernels' instruction sets (point_kernel.c, line_kernel.c, cc_kernel.c):
+/* The lane instruction sets of the distance kernels in lanes (the batch kernels and the
+ * circle-circle query's search):
  * whether the x86 variants (AVX-512, AVX2 + FMA) are built, and the pragmas compiling a variant
  * for its instruction set. The lane operations of a variant are in lanes_def.h. */
-#ifndef CDIST_BATCH_LANES_H
-#define CDIST_BATCH_LANES_H
+#ifndef CDIST_BASE_LANES_H
+#define CDIST_BASE_LANES_H
 
 #if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))
 #define CD_X86_KERNELS 1
 #include <immintrin.h>
 
-#include "load8.h"
+#include "base/lanes/load8.h"
 
 /* Every function between PUSH and POP compiled for the instruction set isa. */
 #define CD_LANES_PRAGMA(x) _Pragma(#x)
@@ -22,6 +23,10 @@
 #define CD_LANES_TARGET_POP _Pragma("GCC pop_options")
 #endif
 #endif
+
+/* The lane instruction set this CPU runs, found once (src/base/lanes/lanes_isa.c). */
+enum { CD_ISA_SCALAR, CD_ISA_AVX2, CD_ISA_AVX512 };
+int cdist__lanes_isa(void);
 
 /* The AVX-512 and AVX2 variants of a kernel for cdist__kernel_choose(), NULL where they are not
  * built. */

@@ -1,8 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 /* Loading objects into columns for the AVX-512 and AVX2 batch kernels (point_kernel.c,
  * line_kernel.c). */
-#ifndef CDIST_BATCH_LOAD8_H
-#define CDIST_BATCH_LOAD8_H
+#ifndef CDIST_BASE_LANES_LOAD8_H
+#define CDIST_BASE_LANES_LOAD8_H
 
 #include <immintrin.h>
 #include <stddef.h>
