@@ -71,7 +71,26 @@ struct cdist_scene {
     cdist_scene_pair *chunk_buf;
     size_t chunk_buf_cap;
     cdist_scene_stats stats;
+    /* Reuse between queries of a moving scene (pairs_within, docs/scene.md): */
+    double *moved;           /* by id: how far any point of the solid may have moved since the
+                              * list's poses (NULL until the first update) */
+    double step_moved;       /* the largest motion of an object since the last query */
+    double step_sum;         /* the sum of the motions since the last query ... */
+    size_t step_count;       /* ... and their number */
+    int list_ok;             /* cand holds the pair list: every pair whose boxes were within
+                              * list_reach at its poses, sorted */
+    double list_reach;
+    size_t list_n;
+    float *list_lo, *list_hi; /* by list entry: lower (upper) bound of the pair's distance
+                               * plus (minus) the two objects' moved at the time it was known */
+    size_t list_cap;
+    size_t list_builds, list_reuses; /* pairs_within queries that made the list, that reused it */
 };
+
+/* The pair list's skin: the list made after an update reaches this many times the mean
+ * motion of an object in that update beyond delta (at most the mean box extent of an object),
+ * so that several more similar updates keep it valid (docs/scene.md). */
+#define CD_SCENE_SKIN_STEPS 16.0
 
 /* Tolerances of the scene's bounds (src/base/tolerances.h has the reasons). */
 
@@ -87,6 +106,10 @@ int cdist__scene_excluded(const cdist__scene_obj *a, const cdist__scene_obj *b, 
 int cdist__scene_circle_pair(const cdist__scene_obj *a, const cdist__scene_obj *b);
 /* The bound margin of a pair: CD_SCENE_BOUND_REL times the two objects' coordinate scales. */
 double cdist__scene_margin(const cdist__scene_obj *a, const cdist__scene_obj *b);
+/* A bound of how far any point of a's solid is from b's when the object changes from a to b
+ * (the radius change included; INFINITY when the core kind changes or for an arc that changes),
+ * rounded up. */
+double cdist__scene_motion(const cdist__scene_obj *a, const cdist__scene_obj *b);
 /* Validate one object of a kind (q's tolerance) into o; returns the status (o->state set). */
 cdist_status cdist__scene_make(cdist_query *q, cdist_scene_kind kind, const void *src, cdist__scene_obj *o);
 /* Bring the tree up to date (rebuild when dirty or degraded, refit when boxes grew). */

@@ -333,6 +333,36 @@ int cdist__scene_excluded(const cdist__scene_obj *oa, const cdist__scene_obj *ob
     return cb && (!ca || b.R <= a.R) ? ring_clears(&a, &b, thr) : ring_clears(&b, &a, thr);
 }
 
+double cdist__scene_motion(const cdist__scene_obj *oa, const cdist__scene_obj *ob)
+{
+    cdist__core_type ta = core_type(oa->kind), tb = core_type(ob->kind);
+    if (ta != tb) return INFINITY;
+    double core;
+    switch (ta) {
+    case CD_CORE_POINT: core = norm3(sub3(ob->g.point, oa->g.point)); break;
+    case CD_CORE_SEGMENT: {
+        /* the point at t moves to the point at t of the new segment (or of its reverse) */
+        const cdist_segment *a = &oa->g.segment, *b = &ob->g.segment;
+        double same = fmax(norm3(sub3(b->p0, a->p0)), norm3(sub3(b->p1, a->p1)));
+        double swap = fmax(norm3(sub3(b->p1, a->p0)), norm3(sub3(b->p0, a->p1)));
+        core = fmin(same, swap);
+        break;
+    }
+    case CD_CORE_ARC: core = memcmp(&oa->g.arc, &ob->g.arc, sizeof oa->g.arc) == 0 ? 0.0 : INFINITY; break;
+    default: {
+        /* The rotation taking n to n' (or to -n': the same circle or disk) by the least angle
+         * moves every vector of length R by at most R |n' - n|; with the centre's move and the
+         * radius change that bounds the move of every point. */
+        const cdist_circle *a = &oa->g.circle, *b = &ob->g.circle;
+        vec3 na = unit3(a->normal), nb = unit3(b->normal);
+        double turn = fmin(norm3(sub3(nb, na)), norm3(v_add(nb, na)));
+        core = norm3(sub3(b->center, a->center)) + fabs(b->radius - a->radius) + a->radius * turn;
+        break;
+    }
+    }
+    return (core + fabs(ob->r - oa->r)) * (1.0 + CD_SCENE_BOUND_REL);
+}
+
 /* ---- tree ---- */
 
 static void box_empty(cdist__box *b)
@@ -528,6 +558,7 @@ void cdist_scene_free(cdist_scene *s)
     free(s->screen);
     free(s->obj), free(s->pos), free(s->perm), free(s->box), free(s->node);
     free(s->cand), free(s->filter), free(s->chunk_buf);
+    free(s->moved), free(s->list_lo), free(s->list_hi);
     free(s);
 }
 
@@ -580,6 +611,12 @@ static cdist_status reserve(cdist_query *q, cdist_scene *s, size_t need)
         memset(g + 2 * s->cap, 0, 2 * (cap - s->cap) * sizeof *g);
         s->filter = g;
     }
+    if (s->moved) {
+        double *m = realloc(s->moved, cap * sizeof *m);
+        if (!m) return cdist__fail(q, CDIST_ERR_NO_MEMORY, "scene: out of memory for %zu objects", need);
+        memset(m + s->cap, 0, (cap - s->cap) * sizeof *m);
+        s->moved = m;
+    }
     s->cap = cap;
     return CDIST_OK;
 }
@@ -607,20 +644,25 @@ static cdist_status report(cdist_query *q, const first_fail *f, const char *what
     return cdist__fail(q, f->status, "scene %s, entry %zu: %.200s", what, f->index, f->message);
 }
 
+/* The arguments of an add or update call: a kind and an object array (every status set on failure). */
+static cdist_status check_objects(cdist_query *q, cdist_scene_kind kind, size_t n, const void *objects,
+                                  cdist_status *statuses, const char *what)
+{
+    cdist_status st = CDIST_OK;
+    if ((unsigned)kind >= KIND_COUNT)
+        st = cdist__fail(q, CDIST_ERR_BAD_KIND, "scene %s: %d is not a cdist_scene_kind", what, (int)kind);
+    else if (n > 0 && !objects) st = cdist__fail(q, CDIST_ERR_NULL_ARGUMENT, "scene %s: object array is NULL", what);
+    for (size_t k = 0; st && statuses && k < n; k++) statuses[k] = st;
+    return st;
+}
+
 cdist_status cdist_scene_add(cdist_query *q, cdist_scene *s, cdist_scene_kind kind, size_t n, const void *objects,
                              ptrdiff_t stride, size_t *first_id, cdist_status *statuses)
 {
     cdist_status st = enter(q, s);
     if (st) return st;
     if (first_id) *first_id = s->n;
-    if ((unsigned)kind >= KIND_COUNT) {
-        for (size_t k = 0; statuses && k < n; k++) statuses[k] = CDIST_ERR_BAD_KIND;
-        return leave(q, s, cdist__fail(q, CDIST_ERR_BAD_KIND, "scene add: %d is not a cdist_scene_kind", (int)kind));
-    }
-    if (n > 0 && !objects) {
-        for (size_t k = 0; statuses && k < n; k++) statuses[k] = CDIST_ERR_NULL_ARGUMENT;
-        return leave(q, s, cdist__fail(q, CDIST_ERR_NULL_ARGUMENT, "scene add: object array is NULL"));
-    }
+    if ((st = check_objects(q, kind, n, objects, statuses, "add"))) return leave(q, s, st);
     if ((st = reserve(q, s, s->n + n))) return leave(q, s, st);
     first_fail f = {0, CDIST_OK, ""};
     for (size_t k = 0; k < n; k++) {
@@ -641,19 +683,30 @@ static cdist_status bad_id(cdist_query *q, size_t id, size_t n)
     return cdist__fail(q, CDIST_ERR_OUT_OF_RANGE, "id %zu is out of range or removed (%zu ids)", id, n);
 }
 
+/* Accumulate the motion of a live object in the tree (docs/scene.md, moving objects). */
+static cdist_status note_motion(cdist_query *q, cdist_scene *s, size_t id, const cdist__scene_obj *o)
+{
+    const cdist__scene_obj *t = &s->obj[id];
+    if (t->state != CD_SCENE_LIVE || s->pos[id] == CD_SCENE_NO_POS) return CDIST_OK;
+    if (!s->moved) {
+        if (!(s->moved = calloc(s->cap, sizeof *s->moved)))
+            return cdist__fail(q, CDIST_ERR_NO_MEMORY, "scene update: out of memory for the motion bounds");
+        s->list_ok = 0;
+    }
+    double m = cdist__scene_motion(t, o);
+    s->moved[id] += m;
+    if (!(m <= s->step_moved)) s->step_moved = m;
+    s->step_sum += m;
+    s->step_count++;
+    return CDIST_OK;
+}
+
 cdist_status cdist_scene_update(cdist_query *q, cdist_scene *s, size_t n, const size_t *ids, cdist_scene_kind kind,
                                 const void *objects, ptrdiff_t stride, cdist_status *statuses)
 {
     cdist_status st = enter(q, s);
     if (st) return st;
-    if ((unsigned)kind >= KIND_COUNT) {
-        for (size_t k = 0; statuses && k < n; k++) statuses[k] = CDIST_ERR_BAD_KIND;
-        return leave(q, s, cdist__fail(q, CDIST_ERR_BAD_KIND, "scene update: %d is not a cdist_scene_kind", (int)kind));
-    }
-    if (n > 0 && !objects) {
-        for (size_t k = 0; statuses && k < n; k++) statuses[k] = CDIST_ERR_NULL_ARGUMENT;
-        return leave(q, s, cdist__fail(q, CDIST_ERR_NULL_ARGUMENT, "scene update: object array is NULL"));
-    }
+    if ((st = check_objects(q, kind, n, objects, statuses, "update"))) return leave(q, s, st);
     first_fail f = {0, CDIST_OK, ""};
     for (size_t k = 0; k < n; k++) {
         size_t id = ids ? ids[k] : k;
@@ -662,7 +715,7 @@ cdist_status cdist_scene_update(cdist_query *q, cdist_scene *s, size_t n, const 
         } else {
             cdist__scene_obj o;
             st = cdist__scene_make(q, kind, (const char *)objects + (ptrdiff_t)k * stride, &o);
-            if (st == CDIST_OK) {
+            if (st == CDIST_OK && !(st = note_motion(q, s, id, &o))) {
                 cdist__scene_obj *t = &s->obj[id];
                 if (t->state != CD_SCENE_LIVE) s->live++;
                 *t = o;
@@ -720,6 +773,7 @@ cdist_status cdist_scene_set_groups(cdist_query *q, cdist_scene *s, size_t n, co
             note_fail(q, &f, k, bad_id(q, id, s->n));
             continue;
         }
+        s->list_ok = 0; /* the list holds the pairs the filter let through */
         if (group) s->filter[2 * id] = group[k];
         if (chain) s->filter[2 * id + 1] = chain[k];
     }
@@ -752,6 +806,7 @@ cdist_status cdist_scene_get_stats(const cdist_scene *s, cdist_scene_stats *out)
     out->bytes = sizeof *s + s->cap * (sizeof *s->obj + sizeof *s->pos) +
                  s->tree_n * (sizeof *s->perm + sizeof *s->box) + s->node_cap * sizeof *s->node +
                  s->cand_cap * sizeof *s->cand + (s->filter ? 2 * s->cap * sizeof *s->filter : 0) + s->chunk_buf_cap * sizeof *s->chunk_buf +
+                 (s->moved ? s->cap * sizeof *s->moved : 0) + 2 * s->list_cap * sizeof *s->list_lo +
                  (size_t)(s->worker_n + s->screen_n) * sizeof(cdist_query);
     return CDIST_OK;
 }

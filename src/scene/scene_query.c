@@ -47,9 +47,10 @@ static void pair_error(cdist_scene_pair *p, size_t i, size_t j, cdist_status st)
 /* The exact answer of the pair (a first). Returns 1 when it is to be reported: distance <= lim,
  * or a failure (reported always). */
 static int answer(cdist_query *h, const cdist__scene_obj *a, const cdist__scene_obj *b, size_t i, size_t j, double lim,
-                  cdist_scene_pair *p)
+                  cdist_scene_pair *p, double *dist)
 {
     cdist__core_obj ca = cdist__scene_core(a), cb = cdist__scene_core(b);
+    if (dist) *dist = NAN;
     if (unsupported(ca.type, cb.type)) {
         pair_error(p, i, j, CDIST_ERR_BAD_KIND);
         return 1;
@@ -60,6 +61,7 @@ static int answer(cdist_query *h, const cdist__scene_obj *a, const cdist__scene_
         pair_error(p, i, j, st);
         return 1;
     }
+    if (dist) *dist = c.distance;
     if (!(c.distance <= lim)) return 0;
     p->i = i;
     p->j = j;
@@ -95,6 +97,7 @@ typedef struct broad {
     int link;        /* linked pairs: rings only, the ball screen of link_excluded, no skip filter */
     const double *reach; /* time of impact: by id, how far the object's solid moves; a pair is
                           * kept when its distance may be <= delta + reach[i] + reach[j] */
+    int list;        /* the pair list of a moving scene: every pair whose boxes are within lim */
 } broad;
 
 static void push(broad *b, uint64_t key)
@@ -147,6 +150,10 @@ static void test_pos(broad *b, uint32_t pa, uint32_t pb)
     if (!pair_at(b->sa, b->sb, b->self, !b->link, pa, pb, &i, &j, &oa, &ob)) return;
     if (b->link && !cdist__scene_circle_pair(oa, ob)) return;
     b->box_pairs++;
+    if (b->list) {
+        push(b, (uint64_t)i << 32 | j);
+        return;
+    }
     if (b->link ? link_excluded(oa, ob)
                 : cdist__scene_excluded(oa, ob, b->reach ? b->delta + b->reach[i] + b->reach[j] : b->delta, 0))
         return;
@@ -177,18 +184,25 @@ static void cross(broad *b, uint32_t x, uint32_t y)
     }
 }
 
-static void self(broad *b, uint32_t x)
+/* The tree of s against itself from node x: each leaf's pairs of positions to pos(ctx, p, q),
+ * p < q, and each pair of sibling subtrees to cross(ctx, x, y). */
+static void self_walk(const cdist_scene *s, uint32_t x, void (*pos)(void *, uint32_t, uint32_t),
+                      void (*cross)(void *, uint32_t, uint32_t), void *ctx)
 {
-    const cdist__node *nx = &b->sa->node[x];
+    const cdist__node *nx = &s->node[x];
     if (nx->count) {
         for (uint32_t p = nx->first; p < nx->first + nx->count; p++)
-            for (uint32_t q = p + 1; q < nx->first + nx->count; q++) test_pos(b, p, q);
+            for (uint32_t q = p + 1; q < nx->first + nx->count; q++) pos(ctx, p, q);
         return;
     }
-    self(b, nx->first);
-    self(b, nx->first + 1);
-    cross(b, nx->first, nx->first + 1);
+    self_walk(s, nx->first, pos, cross, ctx);
+    self_walk(s, nx->first + 1, pos, cross, ctx);
+    cross(ctx, nx->first, nx->first + 1);
 }
+
+static void test_pos_fn(void *b, uint32_t p, uint32_t q) { test_pos(b, p, q); }
+static void cross_fn(void *b, uint32_t x, uint32_t y) { cross(b, x, y); }
+static void self(broad *b, uint32_t x) { self_walk(b->sa, x, test_pos_fn, cross_fn, b); }
 
 /* ---- narrow phase: threads, rounds, ordered commit ---- */
 
@@ -214,6 +228,11 @@ typedef struct narrow {
     size_t *buf_n;                   /* answers kept per chunk */
     size_t *buf_full;                /* full queries per chunk */
     size_t full;                     /* full queries in all */
+    /* The pair list of a moving scene (keys: its entries): each entry is decided here, from its
+     * bounds and the objects' motions first, and its bounds are renewed from what is learnt. */
+    float *lo, *hi;
+    size_t *buf_box, *buf_past;      /* per chunk: pairs whose boxes are near, past the bounds */
+    size_t box_pairs, past;
 } narrow;
 
 /* The objects of key k: i, j (SIZE_MAX for the query object) and the second object. */
@@ -229,6 +248,59 @@ static const cdist__scene_obj *key_pair(const narrow *w, size_t k, size_t *i, si
     return &w->sb->obj[*j];
 }
 
+/* Outward rounding into the list's floats. */
+static float float_down(double x)
+{
+    float f = (float)x;
+    return (double)f > x ? nextafterf(f, -INFINITY) : f;
+}
+static float float_up(double x)
+{
+    float f = (float)x;
+    return (double)f < x ? nextafterf(f, INFINITY) : f;
+}
+
+/* Entry k learns that its distance is >= lo and <= hi now (NaN: nothing learnt). */
+static void list_learn(narrow *w, size_t k, size_t i, size_t j, double lo, double hi)
+{
+    double mm = w->sa->moved[i] + w->sa->moved[j], nl = lo + mm, nh = hi - mm;
+    if (nl > (double)w->lo[k]) w->lo[k] = fmaxf(w->lo[k], float_down(nl));
+    if (nh < (double)w->hi[k]) w->hi[k] = fminf(w->hi[k], float_up(nh));
+}
+
+enum { ACT_SKIP, ACT_ANSWER, ACT_SCREEN };
+
+/* What list entry k needs. Its bounds, moved by the two objects' motions since they were
+ * known (each point moves at most moved[i]; the distance changes at most by the sum), decide
+ * first; then the boxes and the bounds of the current poses, whose results the entry keeps. */
+static int list_action(narrow *w, size_t k, const cdist__scene_obj *a, const cdist__scene_obj *b, size_t i, size_t j,
+                       size_t *box, int *decided)
+{
+    const cdist_scene *s = w->sa;
+    *decided = 0;
+    if (a->state != CD_SCENE_LIVE || b->state != CD_SCENE_LIVE || skipped(s, i, j)) return ACT_SKIP;
+    double mm = s->moved[i] + s->moved[j], margin = cdist__scene_margin(a, b);
+    if ((double)w->lo[k] - mm - margin > w->lim) return ACT_SKIP;
+    if ((double)w->hi[k] + mm + margin <= w->lim) {
+        *decided = 1; /* certainly within: the screens cannot exclude it */
+        return ACT_ANSWER;
+    }
+    uint32_t pa = s->pos[i], pb = s->pos[j];
+    if (pa != CD_SCENE_NO_POS && pb != CD_SCENE_NO_POS) {
+        double gap = cdist__box_gap(&s->box[pa], &s->box[pb]);
+        if (gap > fmax(w->lim, 0.0)) {
+            list_learn(w, k, i, j, gap, NAN);
+            return ACT_SKIP;
+        }
+    }
+    (*box)++;
+    if (cdist__scene_excluded(a, b, w->lim, 0)) {
+        list_learn(w, k, i, j, w->lim, NAN);
+        return ACT_SKIP;
+    }
+    return ACT_ANSWER;
+}
+
 /* One chunk of keys. Pairs of two circle cores are screened first by the batch distance kernel
  * (hs, one thread): its distance is within 2 ulps of the scale of the full query's, far inside
  * the bound margin, so a pair it puts above lim + margin is above lim; the others get the full
@@ -236,37 +308,45 @@ static const cdist__scene_obj *key_pair(const narrow *w, size_t k, size_t *i, si
 static void run_chunk(narrow *w, cdist_query *h, cdist_query *hs, size_t c)
 {
     size_t lo = c * CD_SCENE_CHUNK, hi = lo + CD_SCENE_CHUNK < w->n ? lo + CD_SCENE_CHUNK : w->n;
-    size_t slot = c - w->round_lo, m = 0, nc = 0, full = 0;
+    size_t slot = c - w->round_lo, m = 0, nc = 0, full = 0, box = 0, past = 0;
     cdist_scene_pair *out = w->buf + slot * CD_SCENE_CHUNK;
     cdist_circle ca[CD_SCENE_CHUNK], cb[CD_SCENE_CHUNK];
     double dist[CD_SCENE_CHUNK];
-    unsigned char screened[CD_SCENE_CHUNK];
+    unsigned char act[CD_SCENE_CHUNK];
     for (size_t k = lo; k < hi; k++) {
         size_t i, j;
         const cdist__scene_obj *b = key_pair(w, k, &i, &j), *a = &w->sa->obj[i];
-        screened[k - lo] = hs && cdist__scene_circle_pair(a, b);
-        if (screened[k - lo]) {
+        int decided = 0, what = w->lo ? list_action(w, k, a, b, i, j, &box, &decided) : ACT_ANSWER;
+        if (what == ACT_ANSWER && !decided && hs && cdist__scene_circle_pair(a, b)) {
+            what = ACT_SCREEN;
             ca[nc] = a->g.circle;
             cb[nc] = b->g.circle;
             nc++;
         }
+        past += what != ACT_SKIP;
+        act[k - lo] = (unsigned char)what;
     }
     if (nc > 0 && cdist_batch_distance(hs, CDIST_KIND_CIRCLE_CIRCLE, nc, ca, sizeof ca[0], cb, sizeof cb[0], dist, NULL) ==
                       CDIST_ERR_HANDLE_BUSY)
         for (size_t t = 0; t < nc; t++) dist[t] = NAN;
     nc = 0;
     for (size_t k = lo; k < hi; k++) {
+        if (act[k - lo] == ACT_SKIP) continue;
         size_t i, j;
         const cdist__scene_obj *b = key_pair(w, k, &i, &j), *a = &w->sa->obj[i];
-        if (screened[k - lo]) {
-            double d = dist[nc++];
-            if (d - (a->r + b->r) - cdist__scene_margin(a, b) > w->lim) continue;
+        double margin = cdist__scene_margin(a, b), d;
+        if (act[k - lo] == ACT_SCREEN) {
+            d = dist[nc++] - (a->r + b->r);
+            if (w->lo) list_learn(w, k, i, j, d - margin, d + margin);
+            if (d - margin > w->lim) continue;
         }
-        m += answer(h, a, b, i, j, w->lim, &out[m]);
+        m += answer(h, a, b, i, j, w->lim, &out[m], &d);
+        if (w->lo) list_learn(w, k, i, j, d - margin, d + margin);
         full++;
     }
     w->buf_n[slot] = m;
     w->buf_full[slot] = full;
+    if (w->lo) w->buf_box[slot] = box, w->buf_past[slot] = past;
 }
 
 static void drain(narrow *w, cdist_query *h, cdist_query *hs)
@@ -433,9 +513,12 @@ static cdist_status run_narrow(cdist_query *q, cdist_scene *s, narrow *w, pool *
         s->chunk_buf_cap = need;
     }
     size_t buf_n[256 * CD_SCENE_CHUNKS_PER_THREAD], buf_full[256 * CD_SCENE_CHUNKS_PER_THREAD];
+    size_t buf_box[256 * CD_SCENE_CHUNKS_PER_THREAD], buf_past[256 * CD_SCENE_CHUNKS_PER_THREAD];
     w->buf = s->chunk_buf;
     w->buf_n = buf_n;
     w->buf_full = buf_full;
+    w->buf_box = buf_box;
+    w->buf_past = buf_past;
     for (size_t r = 0; r < chunks && !w->stopped; r += per_round) {
         w->round_lo = r;
         w->round_hi = r + per_round < chunks ? r + per_round : chunks;
@@ -445,9 +528,10 @@ static cdist_status run_narrow(cdist_query *q, cdist_scene *s, narrow *w, pool *
         for (size_t c = w->round_lo; c < w->round_hi && !w->stopped; c++) {
             commit(w, w->buf + (c - w->round_lo) * CD_SCENE_CHUNK, buf_n[c - w->round_lo]);
             w->full += buf_full[c - w->round_lo];
+            if (w->lo) w->box_pairs += buf_box[c - w->round_lo], w->past += buf_past[c - w->round_lo];
         }
     }
-    w->buf_n = w->buf_full = NULL;
+    w->buf_n = w->buf_full = w->buf_box = w->buf_past = NULL;
     return CDIST_OK;
 }
 
@@ -570,6 +654,7 @@ static btask *make_tasks(const broad *b, size_t want, size_t *n_out)
 static cdist_status broad_run(cdist_query *q, broad *b, pool *p, const char *what)
 {
     cdist_scene *sa = b->sa;
+    sa->list_ok = 0; /* the candidates overwrite it */
     if (sa->node_n == 0 || b->sb->node_n == 0) return CDIST_OK;
     if (p->threads == 1) {
         if (b->self) self(b, 0);
@@ -617,17 +702,82 @@ static cdist_status broad_run(cdist_query *q, broad *b, pool *p, const char *wha
     return oom ? cdist__fail(q, CDIST_ERR_NO_MEMORY, "scene %s: out of memory for the candidate pairs", what) : CDIST_OK;
 }
 
-/* Broad and narrow phase of pairs within delta of sa (x) sb (self when sa == sb). */
+/* The pair list of a moving scene still holds every pair that may be within delta: each
+ * object moved at most moved[] since the list's poses, and a pair not in the list was farther
+ * than list_reach then (box gap), so it is farther than list_reach - moved[i] - moved[j] now. */
+static int list_usable(const cdist_scene *s, double delta)
+{
+    if (!s->list_ok || s->dirty) return 0;
+    double m1 = 0.0, m2 = 0.0;
+    for (size_t i = 0; i < s->n; i++) {
+        double m = s->moved[i];
+        if (s->obj[i].state != CD_SCENE_LIVE || m <= m2) continue;
+        if (m > m1) m2 = m1, m1 = m;
+        else m2 = m;
+    }
+    return fmax(delta, 0.0) + (m1 + m2) <= s->list_reach;
+}
+
+/* Make the pair list at the current poses: every pair whose boxes are within the reach of
+ * delta plus a skin for the coming motions (CD_SCENE_SKIN_STEPS times the mean motion of an
+ * object since the last query, at most the mean box extent, so that a few far moves do not
+ * make the list quadratic), sorted, with no bounds known yet; moved[] restarts at 0. */
+static cdist_status list_make(cdist_query *q, cdist_scene *s, double delta, pool *p)
+{
+    double extent = 0.0;
+    size_t boxes = 0;
+    for (size_t k = 0; k < s->tree_n; k++) {
+        const cdist__box *x = &s->box[k];
+        if (!(x->lo[0] <= x->hi[0])) continue; /* removed */
+        extent += ((x->hi[0] - x->lo[0]) + (x->hi[1] - x->lo[1]) + (x->hi[2] - x->lo[2])) / 3.0;
+        boxes++;
+    }
+    double mean = s->step_count ? s->step_sum / (double)s->step_count : 0.0;
+    double skin = fmin(CD_SCENE_SKIN_STEPS * mean, boxes ? extent / (double)boxes : 0.0);
+    double reach = fmax(delta, 0.0) + skin;
+    broad b = {s, s, 1, reach, delta, 0, s->cand, 0, s->cand_cap, 0, 0, NULL, 1};
+    cdist_status st = broad_run(q, &b, p, "pairs_within");
+    if (st || (st = sort_keys(q, s->cand, b.n))) return st;
+    if (s->list_cap < b.n) {
+        float *lo = realloc(s->list_lo, b.n * sizeof *lo);
+        if (lo) s->list_lo = lo;
+        float *hi = lo ? realloc(s->list_hi, b.n * sizeof *hi) : NULL;
+        if (hi) s->list_hi = hi;
+        if (!lo || !hi) return cdist__fail(q, CDIST_ERR_NO_MEMORY, "scene pairs_within: out of memory for the pair list");
+        s->list_cap = b.n;
+    }
+    for (size_t k = 0; k < b.n; k++) s->list_lo[k] = -INFINITY, s->list_hi[k] = INFINITY;
+    memset(s->moved, 0, s->n * sizeof *s->moved);
+    s->list_n = b.n;
+    s->list_reach = reach;
+    s->list_ok = 1;
+    return CDIST_OK;
+}
+
+/* Broad and narrow phase of pairs within delta of sa (x) sb (self when sa == sb). A scene that
+ * has moved keeps its pair list between queries and decides its entries from their bounds and
+ * the motions first. */
 static cdist_status pairs_run(cdist_query *q, cdist_scene *sa, cdist_scene *sb, double delta, narrow *w,
                               const char *what)
 {
     cdist_status st;
-    if ((st = cdist__scene_prepare(q, sa)) || (sb != sa && (st = cdist__scene_prepare(q, sb)))) return st;
+    int list = sa == sb && sa->moved && sa->step_moved < INFINITY;
+    if (list && list_usable(sa, delta)) {
+        sa->list_reuses++;
+    } else {
+        if ((st = cdist__scene_prepare(q, sa)) || (sb != sa && (st = cdist__scene_prepare(q, sb)))) return st;
+        if (list) sa->list_builds++;
+    }
     cdist_query *handles[256], **screen;
     pool p;
     pool_start(&p, call_threads(q, sa, handles, &screen));
-    broad b = {sa, sb, sa == sb, fmax(delta, 0.0), delta, 0, sa->cand, 0, sa->cand_cap, 0, 0, NULL};
-    if (!(st = broad_run(q, &b, &p, what)) && !(st = sort_keys(q, sa->cand, b.n))) {
+    broad b = {sa, sb, sa == sb, fmax(delta, 0.0), delta, 0, sa->cand, 0, sa->cand_cap, 0, 0, NULL, 0};
+    if (list) {
+        if ((sa->list_ok && list_usable(sa, delta)) || !(st = list_make(q, sa, delta, &p))) b.n = sa->list_n;
+    } else if (!(st = broad_run(q, &b, &p, what))) {
+        st = sort_keys(q, sa->cand, b.n);
+    }
+    if (!st) {
         w->sa = sa;
         w->sb = sb;
         w->key = sa->cand;
@@ -635,12 +785,18 @@ static cdist_status pairs_run(cdist_query *q, cdist_scene *sa, cdist_scene *sb, 
         w->lim = delta;
         w->h = handles;
         w->hs = screen;
+        if (list) w->lo = sa->list_lo, w->hi = sa->list_hi;
         st = run_narrow(q, sa, w, &p);
     }
     pool_stop(&p);
-    if (st) return st;
-    sa->stats.box_pairs = b.box_pairs;
-    sa->stats.screened = b.n;
+    sa->step_moved = sa->step_sum = 0.0;
+    sa->step_count = 0;
+    if (st) {
+        sa->list_ok = 0;
+        return st;
+    }
+    sa->stats.box_pairs = list ? w->box_pairs : b.box_pairs;
+    sa->stats.screened = list ? w->past : b.n;
     sa->stats.candidates = w->full;
     sa->stats.reported = w->count;
     return narrow_status(q, w, what);
@@ -788,7 +944,7 @@ static double link_box_reach(const cdist_scene *s)
 
 static cdist_status linked_run(cdist_query *q, cdist_scene *s, cdist_scene_link *out, size_t capacity, size_t *count)
 {
-    broad b = {s, s, 1, link_box_reach(s), 0.0, 0, s->cand, 0, s->cand_cap, 0, 1, NULL};
+    broad b = {s, s, 1, link_box_reach(s), 0.0, 0, s->cand, 0, s->cand_cap, 0, 1, NULL, 0};
     pair_job job = {.chunk = CD_SCENE_CHUNK, .res_size = sizeof(cdist_link), .one = link_one};
     cdist_status st = pair_job_run(q, s, &b, "linked_pairs", &job);
     cdist_link *res = job.res;
@@ -934,7 +1090,7 @@ static cdist_status toi_run(cdist_query *q, cdist_scene *s, const cdist_motion *
     double lim = target + tolerance;
     for (size_t i = 0; i < s->n; i++) reach[i] *= 1.0 + CD_SCENE_TOI_REACH_REL;
     most *= 1.0 + CD_SCENE_TOI_REACH_REL;
-    broad b = {s, s, 1, fmax(lim, 0.0) + 2.0 * most, lim, 0, s->cand, 0, s->cand_cap, 0, 0, reach};
+    broad b = {s, s, 1, fmax(lim, 0.0) + 2.0 * most, lim, 0, s->cand, 0, s->cand_cap, 0, 0, reach, 0};
     toi_args args = {motions, stride, target, tolerance, max_iterations};
     pair_job job = {.chunk = CD_SCENE_TOI_CHUNK, .res_size = sizeof(cdist_toi_result), .ctx = &args, .one = toi_one};
     st = pair_job_run(q, s, &b, "toi", &job);
@@ -1026,7 +1182,7 @@ static void best_pos(closest *c, uint32_t pa, uint32_t pb)
     if (cdist__scene_excluded(oa, ob, c->best, 1)) return;
     c->candidates++;
     cdist_scene_pair p;
-    answer(c->h, oa, ob, i, j, INFINITY, &p);
+    answer(c->h, oa, ob, i, j, INFINITY, &p, NULL);
     uint64_t key = (uint64_t)i << 32 | j;
     if (p.status != CDIST_OK) {
         if (c->err.status == CDIST_OK) c->err = p;
@@ -1066,18 +1222,9 @@ static void best_cross(closest *c, uint32_t x, uint32_t y)
     }
 }
 
-static void best_self(closest *c, uint32_t x)
-{
-    const cdist__node *nx = &c->sa->node[x];
-    if (nx->count) {
-        for (uint32_t p = nx->first; p < nx->first + nx->count; p++)
-            for (uint32_t q = p + 1; q < nx->first + nx->count; q++) best_pos(c, p, q);
-        return;
-    }
-    best_self(c, nx->first);
-    best_self(c, nx->first + 1);
-    best_cross(c, nx->first, nx->first + 1);
-}
+static void best_pos_fn(void *c, uint32_t p, uint32_t q) { best_pos(c, p, q); }
+static void best_cross_fn(void *c, uint32_t x, uint32_t y) { best_cross(c, x, y); }
+static void best_self(closest *c, uint32_t x) { self_walk(c->sa, x, best_pos_fn, best_cross_fn, c); }
 
 static cdist_status closest_entry(cdist_query *q, cdist_scene *sa, cdist_scene *sb, cdist_scene_pair *out)
 {
@@ -1163,7 +1310,7 @@ static void near_obj(near_q *c, uint32_t p)
     const cdist__scene_obj *o = &c->s->obj[i];
     if (o->state != CD_SCENE_LIVE || cdist__scene_excluded(o, c->qo, cut, 1)) return;
     cdist_scene_pair r;
-    answer(c->h, o, c->qo, i, SIZE_MAX, INFINITY, &r);
+    answer(c->h, o, c->qo, i, SIZE_MAX, INFINITY, &r, NULL);
     if (r.status != CDIST_OK) {
         if (c->err.status == CDIST_OK || i < c->err.i) c->err = r;
         return;
@@ -1261,7 +1408,8 @@ cdist_status cdist_scene_within(cdist_query *q, cdist_scene *s, cdist_scene_kind
     cdist__scene_obj qo;
     if (!(st = check_delta(q, delta, out, capacity)) && !(st = query_object(q, kind, object, &qo)) &&
         !(st = cdist__scene_prepare(q, s))) {
-        broad b = {s, s, 0, fmax(delta, 0.0), delta, 0, s->cand, 0, s->cand_cap, 0, 0, NULL};
+        broad b = {s, s, 0, fmax(delta, 0.0), delta, 0, s->cand, 0, s->cand_cap, 0, 0, NULL, 0};
+        s->list_ok = 0;
         near_q c;
         memset(&c, 0, sizeof c);
         c.s = s;

@@ -376,6 +376,146 @@ static void moving(size_t n, int steps)
     free(o);
 }
 
+/* ---- small motions: the pair list of a moving scene reused ---- */
+
+/* A rough size of the object (for a motion relative to it). */
+static double obj_size(const tobj *o)
+{
+    switch (o->kind) {
+    case CDIST_SCENE_POINT: return 1e-3;
+    case CDIST_SCENE_SPHERE: return o->u.sphere.radius + 1e-3;
+    case CDIST_SCENE_SEGMENT:
+    case CDIST_SCENE_CAPSULE: {
+        cdist_segment g = o->kind == CDIST_SCENE_SEGMENT ? o->u.segment : o->u.capsule.segment;
+        return fabs(g.p1.x - g.p0.x) + fabs(g.p1.y - g.p0.y) + fabs(g.p1.z - g.p0.z);
+    }
+    default: return o->u.circle.radius;
+    }
+}
+
+static cdist_vec3 tilt(cdist_vec3 n, double e)
+{
+    cdist_vec3 m = vadd(n, rvec(e));
+    double l = sqrt(m.x * m.x + m.y * m.y + m.z * m.z);
+    return tv(m.x / l, m.y / l, m.z / l);
+}
+
+/* Move object o by about eps times its size: translation, tilt, radius and ball radius
+ * changes, now and then a flipped normal (the same circle), a reversed segment (the same
+ * segment), no change at all, or a change of kind with the same core (torus and circle,
+ * sphere and point); arcs move rarely (their motion has no bound: the list is made again). */
+static void nudge(tobj *o, double eps)
+{
+    double e = eps * obj_size(o);
+    int what = (int)(next_rand() % 8);
+    if (what == 0) return;
+    switch (o->kind) {
+    case CDIST_SCENE_POINT: o->u.point = vadd(o->u.point, rvec(e)); break;
+    case CDIST_SCENE_SPHERE:
+        o->u.sphere.center = vadd(o->u.sphere.center, rvec(e));
+        if (what == 1) o->kind = CDIST_SCENE_POINT;
+        else o->u.sphere.radius = fabs(o->u.sphere.radius + e * rsym());
+        break;
+    case CDIST_SCENE_SEGMENT:
+    case CDIST_SCENE_CAPSULE: {
+        cdist_segment *g = o->kind == CDIST_SCENE_SEGMENT ? &o->u.segment : &o->u.capsule.segment;
+        if (what == 1) {
+            cdist_vec3 t = g->p0;
+            g->p0 = g->p1, g->p1 = t;
+        } else {
+            g->p0 = vadd(g->p0, rvec(e)), g->p1 = vadd(g->p1, rvec(e));
+        }
+        if (o->kind == CDIST_SCENE_CAPSULE) o->u.capsule.radius = fabs(o->u.capsule.radius + e * rsym());
+        break;
+    }
+    case CDIST_SCENE_ARC:
+        if (what == 1) o->u.arc.circle.center = vadd(o->u.arc.circle.center, rvec(e));
+        break;
+    default: {
+        cdist_circle *c = &o->u.circle;
+        c->center = vadd(c->center, rvec(e));
+        c->normal = what == 1 ? tv(-c->normal.x, -c->normal.y, -c->normal.z) : tilt(c->normal, eps);
+        c->radius = fabs(c->radius + e * rsym()) + 1e-300;
+        if (o->kind == CDIST_SCENE_TORUS) {
+            o->u.torus.tube_radius = fabs(o->u.torus.tube_radius + e * rsym());
+            if (what == 2) o->kind = CDIST_SCENE_CIRCLE;
+        } else if (o->kind == CDIST_SCENE_CIRCLE && what == 2) {
+            o->kind = CDIST_SCENE_TORUS;
+            o->u.torus.tube_radius = e;
+        } else if (o->kind == CDIST_SCENE_ROUNDED_DISK) {
+            o->u.rdisk.radius = fabs(o->u.rdisk.radius + e * rsym());
+        }
+        break;
+    }
+    }
+}
+
+/* Every object nudged a little at each step (some steps only a few), then pairs within a delta
+ * that changes from step to step (0, negative, about 5% and 20% of the pairs): equal to the
+ * loop for 1 and 2 threads; the list must have been reused. */
+static void drifting(const char *name, size_t n, void (*gen)(tobj *, size_t), int steps)
+{
+    tobj *o = calloc(n, sizeof *o);
+    gen(o, n);
+    for (size_t i = 0; i < n; i += 11) o[i].chain = 3;
+    cdist_scene *s = build_scene(o, n);
+    double delta = pick_delta(o, n, 0.05);
+    check_within(name, s, o, n, delta);
+    for (int step = 0; step < steps; step++) {
+        double eps = step % 3 == 2 ? 1e-9 : 1e-3 * (1 + step % 4);
+        for (size_t i = 0; i < n; i++) {
+            if (step % 4 == 3 && next_rand() % 10) continue;
+            if (o[i].kind == CDIST_SCENE_ARC && next_rand() % 4) continue;
+            tobj x = o[i];
+            nudge(&x, eps);
+            cdist_status st = cdist_scene_update(Q, s, 1, &i, x.kind, &x.u, 0, NULL);
+            CHECK(st == CDIST_OK, "%s: update %zu: %s", name, i, cdist_query_last_error(Q));
+            x.group = o[i].group, x.chain = o[i].chain, x.live = o[i].live;
+            o[i] = x;
+        }
+        static const double frac[] = {0.05, 0.2, 0.01, 0.05};
+        double d = step % 5 == 4 ? 0.0 : pick_delta(o, n, frac[step % 4]);
+        if (step % 7 == 6) d = -0.01 * fabs(delta);
+        char label[96];
+        snprintf(label, sizeof label, "%s drifting step %d", name, step);
+        check_within(label, s, o, n, d);
+    }
+    CHECK(s->list_reuses > 0, "%s: the pair list was never reused (%zu made)", name, s->list_builds);
+    cdist_scene_free(s);
+    free(o);
+}
+
+/* Two objects: after each small motion, delta exactly their new computed distance reports the
+ * pair and one ulp below does not (the list's bounds and the motion bounds meet their exact
+ * boundary: without their margins pairs are lost). */
+static void drifting_boundary(int count)
+{
+    int missed = 0, extra = 0;
+    for (int t = 0; t < count; t++) {
+        tobj o[2];
+        double size = pow(10.0, -3 + 6 * rnd01());
+        for (int k = 0; k < 2; k++)
+            o[k] = make(all_kinds[next_rand() % 9], vadd(rvec(2 * size), tv(1e3 * size, 0, 0)), size, rnd_unit_vec());
+        cdist_scene *s = build_scene(o, 2);
+        cdist_scene_pair got[2];
+        size_t ng = 0;
+        for (int step = 0; step < 4; step++) {
+            size_t id = next_rand() % 2;
+            nudge(&o[id], step == 0 ? 1e-3 : pow(10.0, -14 + 4 * step));
+            cdist_scene_update(Q, s, 1, &id, o[id].kind, &o[id].u, 0, NULL);
+            tpair r;
+            if (ref_pair(&o[0], &o[1], &r) != 0) break;
+            cdist_scene_pairs_within(Q, s, r.d, got, 2, &ng);
+            missed += ng != 1;
+            cdist_scene_pairs_within(Q, s, nextafter(r.d, -INFINITY), got, 2, &ng);
+            extra += ng != 0;
+        }
+        cdist_scene_free(s);
+    }
+    CHECK(missed == 0 && extra == 0, "drifting boundary: %d pairs missed at delta = distance, %d reported below it",
+          missed, extra);
+}
+
 /* ---- closest pair, nearest, within, between ---- */
 
 static void others(size_t n)
@@ -651,6 +791,14 @@ int main(int argc, char **argv)
     scenario("duplicates", 240, gen_duplicates, 0.05);
     scenario("scales 1e-6..1e6", big ? 2000 : 400, gen_scales, 0.05);
     moving(300, 8);
+    drifting("random tori", 400, gen_random_tori, 8);
+    drifting("random mixed", 300, gen_random_mixed, 8);
+    drifting("coplanar", 200, gen_coplanar, 6);
+    drifting("concentric", 100, gen_concentric, 6);
+    drifting("coaxial", 150, gen_coaxial, 6);
+    drifting("duplicates", 180, gen_duplicates, 6);
+    drifting("scales 1e-6..1e6", 300, gen_scales, 6);
+    drifting_boundary(big ? 20000 : 3000);
     others(300);
     cdist_query_free(Q);
     return check_summary("scene");
