@@ -1002,29 +1002,22 @@ cdist_status cdist_scene_linked_pairs(cdist_query *q, cdist_scene *s, cdist_scen
 
 size_t cdist_scene_toi_size(void) { return sizeof(cdist_scene_toi_result); }
 
-/* The object as a swept shape (the plain kinds with radius 0); 0 for an arc (no shape). */
+/* The object as a swept shape (the plain kinds with radius 0); 0 for an arc (no shape). Each
+ * swept struct is its core followed by the ball radius (scene.c asserts the layout). */
 static int scene_shape(const cdist__scene_obj *o, cdist_shape *sh)
 {
+    size_t core;
     memset(sh, 0, sizeof *sh);
     switch (cdist__scene_core(o).type) {
-    case CD_CORE_POINT:
-        sh->type = CDIST_SHAPE_SPHERE;
-        sh->u.sphere = (cdist_sphere){o->g.point, o->r};
-        return 1;
-    case CD_CORE_SEGMENT:
-        sh->type = CDIST_SHAPE_CAPSULE;
-        sh->u.capsule = (cdist_capsule){o->g.segment, o->r};
-        return 1;
-    case CD_CORE_CIRCLE:
-        sh->type = CDIST_SHAPE_TORUS;
-        sh->u.torus = (cdist_torus){o->g.circle, o->r};
-        return 1;
-    case CD_CORE_DISK:
-        sh->type = CDIST_SHAPE_ROUNDED_DISK;
-        sh->u.rounded_disk = (cdist_rounded_disk){o->g.circle, o->r};
-        return 1;
+    case CD_CORE_POINT: sh->type = CDIST_SHAPE_SPHERE, core = sizeof(cdist_vec3); break;
+    case CD_CORE_SEGMENT: sh->type = CDIST_SHAPE_CAPSULE, core = sizeof(cdist_segment); break;
+    case CD_CORE_CIRCLE: sh->type = CDIST_SHAPE_TORUS, core = sizeof(cdist_circle); break;
+    case CD_CORE_DISK: sh->type = CDIST_SHAPE_ROUNDED_DISK, core = sizeof(cdist_circle); break;
     default: return 0;
     }
+    memcpy(&sh->u, &o->g, core);
+    memcpy((char *)&sh->u + core, &o->r, sizeof o->r);
+    return 1;
 }
 
 static vec3 vec_of(cdist_vec3 a) { return v3(a.x, a.y, a.z); }
