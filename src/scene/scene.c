@@ -469,7 +469,9 @@ static cdist_status build(cdist_query *q, cdist_scene *s)
         free(key), free(key_tmp), free(perm), free(perm_tmp), free(box), free(node);
         return cdist__fail(q, CDIST_ERR_NO_MEMORY, "scene: out of memory for the tree of %zu objects", m);
     }
-    /* Boxes by id order first (perm = ids), then Morton keys of their centres. */
+    /* The centres of the cores' bounding balls (the centres of their boxes) by id order first
+     * (perm = ids; kept in box[].lo until the boxes are made in tree order), then their Morton
+     * keys. */
     double clo[3] = {INFINITY, INFINITY, INFINITY}, chi[3] = {-INFINITY, -INFINITY, -INFINITY};
     size_t k = 0;
     for (size_t i = 0; i < s->n; i++) {
@@ -478,11 +480,13 @@ static cdist_status build(cdist_query *q, cdist_scene *s)
             continue;
         }
         perm[k] = (uint32_t)i;
-        cdist__scene_box(&s->obj[i], &box[k]);
+        bound x;
+        bound_of(&s->obj[i], 0, &x);
+        double *c = box[k].lo;
+        c[0] = x.m.x, c[1] = x.m.y, c[2] = x.m.z;
         for (int a = 0; a < 3; a++) {
-            double c = 0.5 * box[k].lo[a] + 0.5 * box[k].hi[a];
-            if (c < clo[a]) clo[a] = c;
-            if (c > chi[a]) chi[a] = c;
+            if (c[a] < clo[a]) clo[a] = c[a];
+            if (c[a] > chi[a]) chi[a] = c[a];
         }
         k++;
     }
@@ -495,8 +499,7 @@ static cdist_status build(cdist_query *q, cdist_scene *s)
     for (size_t p = 0; p < m; p++) {
         uint64_t code = 0;
         for (int a = 0; a < 3; a++) {
-            double c = 0.5 * box[p].lo[a] + 0.5 * box[p].hi[a];
-            double x = (c - clo[a]) * scale[a];
+            double x = (box[p].lo[a] - clo[a]) * scale[a];
             uint64_t qx = x > 0.0 ? (x < 2097151.0 ? (uint64_t)x : 2097151u) : 0u;
             code |= spread21(qx) << a;
         }
