@@ -85,6 +85,7 @@ struct cdist_scene {
                                * plus (minus) the two objects' moved at the time it was known */
     size_t list_cap;
     size_t list_builds, list_reuses; /* pairs_within queries that made the list, that reused it */
+    size_t moved_queries;    /* pairs_within queries that followed updates */
 };
 
 /* The pair list's skin: the list made after an update reaches this many times the mean

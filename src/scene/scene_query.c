@@ -260,10 +260,11 @@ static float float_up(double x)
     return (double)f < x ? nextafterf(f, INFINITY) : f;
 }
 
-/* Entry k learns that its distance is >= lo and <= hi now (NaN: nothing learnt). */
-static void list_learn(narrow *w, size_t k, size_t i, size_t j, double lo, double hi)
+/* Entry k, whose objects have moved mm together, learns that its distance is >= lo and <= hi
+ * now (NaN: nothing learnt). */
+static void list_learn(narrow *w, size_t k, double mm, double lo, double hi)
 {
-    double mm = w->sa->moved[i] + w->sa->moved[j], nl = lo + mm, nh = hi - mm;
+    double nl = lo + mm, nh = hi - mm;
     if (nl > (double)w->lo[k]) w->lo[k] = fmaxf(w->lo[k], float_down(nl));
     if (nh < (double)w->hi[k]) w->hi[k] = fminf(w->hi[k], float_up(nh));
 }
@@ -274,12 +275,13 @@ enum { ACT_SKIP, ACT_ANSWER, ACT_SCREEN };
  * known (each point moves at most moved[i]; the distance changes at most by the sum), decide
  * first; then the boxes and the bounds of the current poses, whose results the entry keeps. */
 static int list_action(narrow *w, size_t k, const cdist__scene_obj *a, const cdist__scene_obj *b, size_t i, size_t j,
-                       size_t *box, int *decided)
+                       size_t *box, int *decided, double *moved, double *pmargin)
 {
     const cdist_scene *s = w->sa;
     *decided = 0;
     if (a->state != CD_SCENE_LIVE || b->state != CD_SCENE_LIVE || skipped(s, i, j)) return ACT_SKIP;
     double mm = s->moved[i] + s->moved[j], margin = cdist__scene_margin(a, b);
+    *moved = mm, *pmargin = margin;
     if ((double)w->lo[k] - mm - margin > w->lim) return ACT_SKIP;
     if ((double)w->hi[k] + mm + margin <= w->lim) {
         *decided = 1; /* certainly within: the screens cannot exclude it */
@@ -289,13 +291,13 @@ static int list_action(narrow *w, size_t k, const cdist__scene_obj *a, const cdi
     if (pa != CD_SCENE_NO_POS && pb != CD_SCENE_NO_POS) {
         double gap = cdist__box_gap(&s->box[pa], &s->box[pb]);
         if (gap > fmax(w->lim, 0.0)) {
-            list_learn(w, k, i, j, gap, NAN);
+            list_learn(w, k, mm, gap, NAN);
             return ACT_SKIP;
         }
     }
     (*box)++;
     if (cdist__scene_excluded(a, b, w->lim, 0)) {
-        list_learn(w, k, i, j, w->lim, NAN);
+        list_learn(w, k, mm, w->lim, NAN);
         return ACT_SKIP;
     }
     return ACT_ANSWER;
@@ -313,10 +315,12 @@ static void run_chunk(narrow *w, cdist_query *h, cdist_query *hs, size_t c)
     cdist_circle ca[CD_SCENE_CHUNK], cb[CD_SCENE_CHUNK];
     double dist[CD_SCENE_CHUNK];
     unsigned char act[CD_SCENE_CHUNK];
+    double mm[CD_SCENE_CHUNK], mg[CD_SCENE_CHUNK]; /* list: the objects' motions, the margin */
     for (size_t k = lo; k < hi; k++) {
         size_t i, j;
         const cdist__scene_obj *b = key_pair(w, k, &i, &j), *a = &w->sa->obj[i];
-        int decided = 0, what = w->lo ? list_action(w, k, a, b, i, j, &box, &decided) : ACT_ANSWER;
+        int decided = 0;
+        int what = w->lo ? list_action(w, k, a, b, i, j, &box, &decided, &mm[k - lo], &mg[k - lo]) : ACT_ANSWER;
         if (what == ACT_ANSWER && !decided && hs && cdist__scene_circle_pair(a, b)) {
             what = ACT_SCREEN;
             ca[nc] = a->g.circle;
@@ -334,14 +338,15 @@ static void run_chunk(narrow *w, cdist_query *h, cdist_query *hs, size_t c)
         if (act[k - lo] == ACT_SKIP) continue;
         size_t i, j;
         const cdist__scene_obj *b = key_pair(w, k, &i, &j), *a = &w->sa->obj[i];
-        double margin = cdist__scene_margin(a, b), d;
+        double margin = w->lo ? mg[k - lo] : 0.0, d;
         if (act[k - lo] == ACT_SCREEN) {
+            if (!w->lo) margin = cdist__scene_margin(a, b);
             d = dist[nc++] - (a->r + b->r);
-            if (w->lo) list_learn(w, k, i, j, d - margin, d + margin);
+            if (w->lo) list_learn(w, k, mm[k - lo], d - margin, d + margin);
             if (d - margin > w->lim) continue;
         }
         m += answer(h, a, b, i, j, w->lim, &out[m], &d);
-        if (w->lo) list_learn(w, k, i, j, d - margin, d + margin);
+        if (w->lo) list_learn(w, k, mm[k - lo], d - margin, d + margin);
         full++;
     }
     w->buf_n[slot] = m;
@@ -761,7 +766,11 @@ static cdist_status pairs_run(cdist_query *q, cdist_scene *sa, cdist_scene *sb, 
                               const char *what)
 {
     cdist_status st;
-    int list = sa == sb && sa->moved && sa->step_moved < INFINITY;
+    /* A list is first made at the second query after updates: a scene updated once and
+     * queried once gets the plain query. */
+    int moving = sa == sb && sa->moved && sa->step_count > 0;
+    int list = sa == sb && sa->moved && (sa->list_ok || (moving && sa->moved_queries > 0)) && sa->step_moved < INFINITY;
+    sa->moved_queries += moving;
     if (list && list_usable(sa, delta)) {
         sa->list_reuses++;
     } else {
