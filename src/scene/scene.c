@@ -677,7 +677,7 @@ cdist_status cdist_scene_add(cdist_query *q, cdist_scene *s, cdist_scene_kind ki
         s->live += o->state == CD_SCENE_LIVE;
         s->n++;
     }
-    if (n > 0) s->dirty = 1;
+    if (n > 0) s->dirty = 1, s->list_ok = 0; /* the pair list lacks the new objects */
     return leave(q, s, report(q, &f, "add"));
 }
 
@@ -724,7 +724,7 @@ cdist_status cdist_scene_update(cdist_query *q, cdist_scene *s, size_t n, const 
                 *t = o;
                 uint32_t p = s->pos[id];
                 if (p == CD_SCENE_NO_POS) {
-                    s->dirty = 1;
+                    s->dirty = 1, s->list_ok = 0;
                 } else {
                     /* The tree keeps its shape; the boxes above are refitted before the
                      * next query (cdist__scene_prepare). */

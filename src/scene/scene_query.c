@@ -771,7 +771,8 @@ static cdist_status pairs_run(cdist_query *q, cdist_scene *sa, cdist_scene *sb, 
     int moving = sa == sb && sa->moved && sa->step_count > 0;
     int list = sa == sb && sa->moved && (sa->list_ok || (moving && sa->moved_queries > 0)) && sa->step_moved < INFINITY;
     sa->moved_queries += moving;
-    if (list && list_usable(sa, delta)) {
+    int reuse = list && list_usable(sa, delta);
+    if (reuse) {
         sa->list_reuses++;
     } else {
         if ((st = cdist__scene_prepare(q, sa)) || (sb != sa && (st = cdist__scene_prepare(q, sb)))) return st;
@@ -782,7 +783,7 @@ static cdist_status pairs_run(cdist_query *q, cdist_scene *sa, cdist_scene *sb, 
     pool_start(&p, call_threads(q, sa, handles, &screen));
     broad b = {sa, sb, sa == sb, fmax(delta, 0.0), delta, 0, sa->cand, 0, sa->cand_cap, 0, 0, NULL, 0};
     if (list) {
-        if ((sa->list_ok && list_usable(sa, delta)) || !(st = list_make(q, sa, delta, &p))) b.n = sa->list_n;
+        if (reuse || !(st = list_make(q, sa, delta, &p))) b.n = sa->list_n;
     } else if (!(st = broad_run(q, &b, &p, what))) {
         st = sort_keys(q, sa->cand, b.n);
     }

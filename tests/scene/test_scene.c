@@ -455,16 +455,25 @@ static void nudge(tobj *o, double eps)
  * loop for 1 and 2 threads; the list must have been reused. */
 static void drifting(const char *name, size_t n, void (*gen)(tobj *, size_t), int steps)
 {
-    tobj *o = calloc(n, sizeof *o);
+    size_t cap = n + 2;
+    tobj *o = calloc(cap, sizeof *o);
     gen(o, n);
     for (size_t i = 0; i < n; i += 11) o[i].chain = 3;
+    /* one invalid object (a zero normal), revived half-way */
+    size_t bad_id = n;
+    o[n] = o[0];
+    o[n].u.circle.normal = tv(0, 0, 0);
+    o[n].kind = CDIST_SCENE_CIRCLE;
+    o[n].live = 0;
+    o[n].group = o[n].chain = 0;
+    n++;
     cdist_scene *s = build_scene(o, n);
     double delta = pick_delta(o, n, 0.05);
     check_within(name, s, o, n, delta);
     for (int step = 0; step < steps; step++) {
         double eps = step % 3 == 2 ? 1e-9 : 1e-3 * (1 + step % 4);
         for (size_t i = 0; i < n; i++) {
-            if (step % 4 == 3 && next_rand() % 10) continue;
+            if (!o[i].live || (step % 4 == 3 && next_rand() % 10)) continue;
             if (o[i].kind == CDIST_SCENE_ARC && next_rand() % 4) continue;
             tobj x = o[i];
             nudge(&x, eps);
@@ -472,6 +481,25 @@ static void drifting(const char *name, size_t n, void (*gen)(tobj *, size_t), in
             CHECK(st == CDIST_OK, "%s: update %zu: %s", name, i, cdist_query_last_error(Q));
             x.group = o[i].group, x.chain = o[i].chain, x.live = o[i].live;
             o[i] = x;
+        }
+        if (step == steps / 2 && n < cap) {
+            /* an addition next to an object, and an invalid object revived there: the list
+             * lacks their pairs */
+            o[n] = o[next_rand() % n];
+            nudge(&o[n], 1e-3);
+            o[n].group = o[n].chain = 0;
+            size_t id;
+            cdist_scene_add(Q, s, o[n].kind, 1, &o[n].u, 0, &id, NULL);
+            CHECK(id == n, "%s: added id %zu, want %zu", name, id, n);
+            n++;
+            if (bad_id != SIZE_MAX) {
+                o[bad_id] = o[next_rand() % bad_id];
+                o[bad_id].group = o[bad_id].chain = 0;
+                cdist_status st = cdist_scene_update(Q, s, 1, &bad_id, o[bad_id].kind, &o[bad_id].u, 0, NULL);
+                CHECK(st == CDIST_OK, "%s: revive: %s", name, cdist_query_last_error(Q));
+                o[bad_id].live = 1;
+                bad_id = SIZE_MAX;
+            }
         }
         static const double frac[] = {0.05, 0.2, 0.01, 0.05};
         double d = step % 5 == 4 ? 0.0 : pick_delta(o, n, frac[step % 4]);
