@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "swept-priv.h"
+#include "base/point_circle.h"
 
 /* Component of g orthogonal to the unit vector n. */
 static vec3 perp(vec3 g, vec3 n) { return v_axpy(g, -v_dot(g, n), n); }
@@ -21,13 +22,16 @@ void cdist__grad_set_error(cdist_grad *g)
     }
 }
 
-/* X (on disk c, unit normal N) is clearly inside the rim: further in than the rounding of
- * the coordinates and 1e-9 of the radius. */
+/* X (on disk c, unit normal N, at distance rho from its axis) is clearly inside the rim. */
+static int inside_rim(const cdist_circle *c, vec3 X, double rho)
+{
+    double slack = CD_GRAD_RIM_REL * c->radius + CD_GRAD_RIM_ULPS * DBL_EPSILON * (v_maxabs(X) + v_maxabs(c->center));
+    return c->radius - rho > slack;
+}
+
 static int disk_interior(const cdist_circle *c, vec3 N, vec3 X)
 {
-    double rho = v_norm(perp(v_sub(X, c->center), N));
-    double slack = 1e-9 * c->radius + 64.0 * DBL_EPSILON * (v_maxabs(X) + v_maxabs(c->center));
-    return c->radius - rho > slack;
+    return inside_rim(c, X, cdist__point_circle(N, v_sub(X, c->center), c->radius).rho);
 }
 
 /* Circle or disk at point X (on it) with outward gradient vector w (dD = w . dX). */
@@ -41,17 +45,18 @@ static void circle_like(const cdist_circle *c, vec3 X, vec3 w, int disk, cdist_g
         o->d_radius = -v_norm(perp(w, N));
         return;
     }
-    vec3 relp = perp(rel, N);
-    double rho = v_norm(relp);
+    cdist__pc_parts pc = cdist__point_circle(N, rel, c->radius);
+    double rho = pc.rho;
     double s = disk ? fmin(rho / c->radius, 1.0) : 1.0;
-    if (disk && disk_interior(c, N, X)) {
+    if (disk && inside_rim(c, X, rho)) {
         /* interior point: w is along N, the radius does not move the point's neighbourhood */
         o->d_radius = 0.0;
         o->d_normal = v_scale(-v_dot(w, N), rel);
         o->d_normal = perp(o->d_normal, N);
         return;
     }
-    vec3 e = rho > 0.0 ? v_scale(1.0 / rho, relp) : v3(0, 0, 0);
+    vec3 relp = cdist__pc_inplane(pc.np, N);
+    vec3 e = v_maxabs(relp) > 0.0 ? cdist__pc_along(relp, 1.0) : v3(0, 0, 0);
     o->d_radius = s * v_dot(w, e);
     /* dX = -r s (e . dN) N  =>  d_normal = -r s (w . N) e (orthogonal to N). */
     o->d_normal = v_scale(-c->radius * s * v_dot(w, N), e);
