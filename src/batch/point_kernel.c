@@ -18,57 +18,23 @@ _Static_assert(offsetof(cdist_vec3, y) == 8 && offsetof(cdist_vec3, z) == 16, "c
 _Static_assert(offsetof(cdist_circle, normal) == 24 && offsetof(cdist_circle, radius) == 48, "cdist_circle layout");
 
 #define CD_LANES 1
-#include "base/lanes/lanes_def.h"
-#include "base/lanes/lanes_vec.h"
-#include "base/point_circle_lanes.h"
-#include "point/point_body.h"
 #include "point_kernel_body.h"
-#include "base/lanes/lanes_undef.h"
 
 #ifdef CD_X86_KERNELS
-
 CD_LANES_TARGET_PUSH("avx512f,fma")
 #define CD_LANES 8
-#include "base/lanes/lanes_def.h"
-#include "base/lanes/lanes_vec.h"
-#include "base/point_circle_lanes.h"
-#include "point/point_body.h"
 #include "point_kernel_body.h"
-#include "base/lanes/lanes_undef.h"
 CD_LANES_TARGET_POP
 
 CD_LANES_TARGET_PUSH("avx2,fma")
 #define CD_LANES 4
-#include "base/lanes/lanes_def.h"
-#include "base/lanes/lanes_vec.h"
-#include "base/point_circle_lanes.h"
-#include "point/point_body.h"
 #include "point_kernel_body.h"
-#include "base/lanes/lanes_undef.h"
 CD_LANES_TARGET_POP
-
-#endif
-
-static uint64_t kernel_scalar(const cdist__job *job, int disk, double tol, size_t lo, size_t count)
-{
-    return kernel_1(job, disk, tol, lo, count);
-}
-
-#ifdef CD_X86_KERNELS
-static uint64_t kernel_avx512(const cdist__job *job, int disk, double tol, size_t lo, size_t count)
-{
-    return kernel_8(job, disk, tol, lo, count);
-}
-
-static uint64_t kernel_avx2(const cdist__job *job, int disk, double tol, size_t lo, size_t count)
-{
-    return kernel_4(job, disk, tol, lo, count);
-}
 #endif
 
 uint64_t cdist__point_distance_kernel(const cdist__job *job, int disk, double unit_tol, size_t lo, size_t count)
 {
     static cdist__kernel_fn chosen;
-    cdist__kernel_fn f = cdist__kernel_choose(&chosen, CD_X86_VARIANTS(kernel_avx512, kernel_avx2), kernel_scalar);
+    cdist__kernel_fn f = cdist__kernel_choose(&chosen, CD_X86_VARIANTS(kernel_8, kernel_4), kernel_1);
     return f(job, disk, unit_tol, lo, count);
 }

@@ -1,9 +1,13 @@
 /* SPDX-License-Identifier: MIT */
-/* The point distance kernel's loop (src/batch/point_kernel.c) over a lane type: entries
- * [lo, lo + count), count <= 64, W at a time through the point queries' fast path
- * (src/point/point_body.h); returns the mask of the entries left for the scalar path. The
- * includer defines the lanes and includes the point body before this file; a wider instance
- * hands its tail to kernel_1. No include guard. */
+/* One instance of the point distance kernel (src/batch/point_kernel.c) for the lanes the includer
+ * chose (CD_LANES): entries [lo, lo + count), count <= 64, W at a time through the point
+ * queries' fast path (src/point/point_body.h); returns the mask of the entries left for the
+ * scalar path. A wider instance hands its tail to kernel_1. No include guard. */
+#include "base/lanes/lanes_def.h"
+#include "base/lanes/lanes_vec.h"
+#include "base/point_circle_lanes.h"
+#include "point/point_body.h"
+
 static uint64_t KN(kernel)(const cdist__job *job, int disk, double tol, size_t lo, size_t count)
 {
     const unsigned all = (1u << W) - 1u;
@@ -37,3 +41,5 @@ static uint64_t KN(kernel)(const cdist__job *job, int disk, double tol, size_t l
 #endif
     return left;
 }
+
+#include "base/lanes/lanes_undef.h"

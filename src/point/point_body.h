@@ -32,6 +32,7 @@ CD_INLINE KN(point_lane) KN(point_fast)(const V p[3], const V c[3], const V d[3]
     V len = vsqrt(KN(dot)(d[0], d[1], d[2], d[0], d[1], d[2]));
     ok = mand(ok, vle(vabs(vsub(len, one)), vset(unit_tol)));
     V il = vdiv(one, len);
+    /* written out: gcc vectorises a loop over the components into round trips through memory */
     f.n[0] = vmul(il, d[0]), f.n[1] = vmul(il, d[1]), f.n[2] = vmul(il, d[2]);
     f.rel[0] = vsub(p[0], c[0]), f.rel[1] = vsub(p[1], c[1]), f.rel[2] = vsub(p[2], c[2]);
     f.e = KN(point_circle)(f.n, f.rel, r);
