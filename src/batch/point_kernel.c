@@ -19,17 +19,11 @@ _Static_assert(offsetof(cdist_circle, normal) == 24 && offsetof(cdist_circle, ra
 
 #define CD_LANES 1
 #include "point_kernel_body.h"
-
 #ifdef CD_X86_KERNELS
-CD_LANES_TARGET_PUSH("avx512f,fma")
 #define CD_LANES 8
 #include "point_kernel_body.h"
-CD_LANES_TARGET_POP
-
-CD_LANES_TARGET_PUSH("avx2,fma")
 #define CD_LANES 4
 #include "point_kernel_body.h"
-CD_LANES_TARGET_POP
 #endif
 
 uint64_t cdist__point_distance_kernel(const cdist__job *job, int disk, double unit_tol, size_t lo, size_t count)

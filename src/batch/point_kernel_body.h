@@ -1,8 +1,14 @@
 /* SPDX-License-Identifier: MIT */
-/* One instance of the point distance kernel (src/batch/point_kernel.c) for the lanes the includer
- * chose (CD_LANES): entries [lo, lo + count), count <= 64, W at a time through the point
- * queries' fast path (src/point/point_body.h); returns the mask of the entries left for the
- * scalar path. A wider instance hands its tail to kernel_1. No include guard. */
+/* One instance of the point distance kernel (src/batch/point_kernel.c) for the lanes the
+ * includer chose (CD_LANES), compiled for their instruction set: entries [lo, lo + count),
+ * count <= 64, W at a time through the point queries' fast path (src/point/point_body.h);
+ * returns the mask of the entries left for the scalar path. A wider instance hands its tail to
+ * kernel_1. No include guard. */
+#if CD_LANES == 8
+CD_LANES_TARGET_PUSH("avx512f,fma")
+#elif CD_LANES == 4
+CD_LANES_TARGET_PUSH("avx2,fma")
+#endif
 #include "base/lanes/lanes_def.h"
 #include "base/lanes/lanes_vec.h"
 #include "base/point_circle_lanes.h"
@@ -42,4 +48,7 @@ static uint64_t KN(kernel)(const cdist__job *job, int disk, double tol, size_t l
     return left;
 }
 
+#if W > 1
+CD_LANES_TARGET_POP
+#endif
 #include "base/lanes/lanes_undef.h"
