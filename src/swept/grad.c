@@ -175,7 +175,7 @@ static int disks_cross_inside(const cdist_circle *d0, vec3 N0, const cdist_circl
     double lo = -INFINITY, hi = INFINITY;
     for (int k = 0; k < 2; k++) {
         /* X + t u is in disk k for t in the chord [m - h, m + h] */
-        vec3 p = perp(v_sub(X, d[k]->center), N[k]);
+        vec3 p = cdist__pc_inplane(cdist__point_circle(N[k], v_sub(X, d[k]->center), d[k]->radius).np, N[k]);
         double m = -v_dot(p, u), h2 = d[k]->radius * d[k]->radius - (v_sqr(p) - m * m);
         if (!(h2 > 0.0)) return 0;
         lo = fmax(lo, m - sqrt(h2));
