@@ -82,20 +82,18 @@ CD_INLINE cdist__point_pair pair_at(vec3 p, const cdist__circle *c, int disk)
 CD_FMA_CLONES cdist__point_pair cdist__point_circle_pair(vec3 p, const cdist__circle *c) { return pair_at(p, c, 0); }
 CD_FMA_CLONES cdist__point_pair cdist__point_disk_pair(vec3 p, const cdist__circle *c) { return pair_at(p, c, 1); }
 
-static void offer_pair(cdist__point_pair q, vec3 p, cdist__best *b, int swap)
+void cdist__point_circle_core(vec3 p, const cdist__circle *c, cdist__best *b, int swap)
 {
+    cdist__point_pair q = cdist__point_circle_pair(p, c);
     if (swap) cdist__best_offer_flag(b, q.equidistant, q.d2, q.k, p, q.angle, NAN);
     else cdist__best_offer_flag(b, q.equidistant, q.d2, p, q.k, NAN, q.angle);
 }
 
-void cdist__point_circle_core(vec3 p, const cdist__circle *c, cdist__best *b, int swap)
-{
-    offer_pair(cdist__point_circle_pair(p, c), p, b, swap);
-}
-
 void cdist__point_disk_core(vec3 p, const cdist__circle *c, cdist__best *b, int swap)
 {
-    offer_pair(cdist__point_disk_pair(p, c), p, b, swap);
+    cdist__point_pair q = cdist__point_disk_pair(p, c);
+    if (swap) cdist__best_offer_flag(b, q.equidistant, q.d2, q.k, p, q.angle, NAN);
+    else cdist__best_offer_flag(b, q.equidistant, q.d2, p, q.k, NAN, q.angle);
 }
 
 /* The result of a pair k (relative to the centre c, of a problem scaled by 2^-e: up = 2^e) of p.

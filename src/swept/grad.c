@@ -22,16 +22,12 @@ void cdist__grad_set_error(cdist_grad *g)
     }
 }
 
-/* X (on disk c, unit normal N, at distance rho from its axis) is clearly inside the rim. */
-static int inside_rim(const cdist_circle *c, vec3 X, double rho)
-{
-    double slack = CD_GRAD_RIM_REL * c->radius + CD_GRAD_RIM_ULPS * DBL_EPSILON * (v_maxabs(X) + v_maxabs(c->center));
-    return c->radius - rho > slack;
-}
-
+/* X (on disk c, unit normal N) is clearly inside the rim (tolerances.h). */
 static int disk_interior(const cdist_circle *c, vec3 N, vec3 X)
 {
-    return inside_rim(c, X, cdist__point_circle(N, v_sub(X, c->center), c->radius).rho);
+    double rho = cdist__point_circle(N, v_sub(X, c->center), c->radius).rho;
+    double slack = CD_GRAD_RIM_REL * c->radius + CD_GRAD_RIM_ULPS * DBL_EPSILON * (v_maxabs(X) + v_maxabs(c->center));
+    return c->radius - rho > slack;
 }
 
 /* Circle or disk at point X (on it) with outward gradient vector w (dD = w . dX). */
@@ -48,7 +44,7 @@ static void circle_like(const cdist_circle *c, vec3 X, vec3 w, int disk, cdist_g
     cdist__pc_parts pc = cdist__point_circle(N, rel, c->radius);
     double rho = pc.rho;
     double s = disk ? fmin(rho / c->radius, 1.0) : 1.0;
-    if (disk && inside_rim(c, X, rho)) {
+    if (disk && disk_interior(c, N, X)) {
         /* interior point: w is along N, the radius does not move the point's neighbourhood */
         o->d_radius = 0.0;
         o->d_normal = v_scale(-v_dot(w, N), rel);
