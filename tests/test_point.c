@@ -3,6 +3,7 @@
 #include <float.h>
 
 #include "check.h"
+#include "base/point_circle.h"
 
 static cdist_query *q;
 
@@ -160,8 +161,71 @@ static void near_axis_tiny_offset(void)
     }
 }
 
+/* The one point-to-circle evaluation (src/base/point_circle.h) against the same formulas in long
+ * double (64-bit significand: products of doubles within 2^-64 of exact) on random unit normals
+ * and points, many of them near the axis (1e-3 .. 1e-15 of the scale; down to 1e-300 for
+ * coordinate-axis normals, where the offset is exact): rho and h within a
+ * few eps |D| (where sqrt(|D|^2 - h^2) errs by about sqrt(eps) |D|), the squared distance within
+ * a few eps (|D| + r)^2, and the circle point along the in-plane direction at radius r to a few
+ * ulps, perpendicular to n, and (away from the axis) in the direction of D's in-plane part. */
+static uint64_t ev_rng = 0x2545F4914F6CDD1Dull;
+static double ev_u(void)
+{
+    ev_rng ^= ev_rng << 13;
+    ev_rng ^= ev_rng >> 7;
+    ev_rng ^= ev_rng << 17;
+    return (double)(ev_rng >> 11) * 0x1p-53 * 2.0 - 1.0;
+}
+
+static void evaluator_vs_long_double(void)
+{
+    const double eps = DBL_EPSILON;
+    int bad = 0;
+    for (int i = 0; i < 20000; i++) {
+        vec3 n = v3(ev_u(), ev_u(), ev_u());
+        n = v_scale(1.0 / v_norm(n), n);
+        double L = ldexp(1.0, (int)(ev_u() * 60)), r = L * (0.5 + 0.5 * ev_u());
+        vec3 D = v3(L * ev_u(), L * ev_u(), L * ev_u());
+        if (i % 4 == 1) { /* near the axis: h n plus an offset of 1e-3 .. 1e-15 of the scale */
+            double off = L * pow(10.0, -3.0 - 12.0 * (0.5 + 0.5 * ev_u()));
+            D = v_axpy(v_scale(L * ev_u(), n), off, v3(ev_u(), ev_u(), ev_u()));
+        } else if (i % 4 == 3) { /* n a coordinate axis: offsets down to 1e-300 of the scale, exact */
+            double off = L * pow(10.0, -3.0 - 297.0 * (0.5 + 0.5 * ev_u())), c[3];
+            int a = i / 4 % 3;
+            for (int k = 0; k < 3; k++) c[k] = k == a ? L * ev_u() : off * ev_u();
+            double nk[3] = {0, 0, 0};
+            nk[a] = ev_u() < 0 ? -1.0 : 1.0;
+            n = v3(nk[0], nk[1], nk[2]);
+            D = v3(c[0], c[1], c[2]);
+        }
+        cdist__pc_parts e = cdist__point_circle(n, D, r);
+        long double nx = n.x, ny = n.y, nz = n.z, dx = D.x, dy = D.y, dz = D.z;
+        long double px = ny * dz - nz * dy, py = nz * dx - nx * dz, pz = nx * dy - ny * dx;
+        long double rho = sqrtl(px * px + py * py + pz * pz), h = nx * dx + ny * dy + nz * dz;
+        long double d2 = (rho - r) * (rho - r) + h * h, mD = v_norm(D);
+        int ok = fabsl(e.rho - rho) <= 4 * eps * mD && fabsl(e.h - h) <= 4 * eps * mD &&
+                 fabsl(e.d2 - d2) <= 8 * eps * (mD + r) * (mD + r) && e.dr == e.rho - r && e.hh == e.h * e.h;
+        vec3 w = cdist__pc_inplane(e.np, n);
+        if (ok && v_maxabs(w) > 0.0) {
+            vec3 k = cdist__pc_along(w, r);
+            long double kx = k.x, ky = k.y, kz = k.z, kn = sqrtl(kx * kx + ky * ky + kz * kz);
+            ok = fabsl(kn - r) <= 4 * eps * r && fabsl(kx * nx + ky * ny + kz * nz) <= 4 * eps * r;
+            if (ok && rho > 1e-6L * mD) { /* D's in-plane part D - h n, its direction against k's */
+                long double ix = dx - h * nx, iy = dy - h * ny, iz = dz - h * nz;
+                long double c = (ix * kx + iy * ky + iz * kz) / (sqrtl(ix * ix + iy * iy + iz * iz) * kn);
+                ok = 1.0L - c <= 1e-18L + 64 * eps * mD / rho;
+            }
+        }
+        if (!ok && bad++ < 3)
+            CHECK(0, "evaluator case %d: rho %.17g (ref %.17Lg), h %.17g (ref %.17Lg), d2 %.17g (ref %.17Lg)", i, e.rho,
+                  rho, e.h, h, e.d2, d2);
+    }
+    CHECK(bad == 0, "evaluator: %d of 20000 cases off", bad);
+}
+
 int main(void)
 {
+    evaluator_vs_long_double();
     q = cdist_query_new();
     near_axis_tiny_offset();
     CHECK(q != NULL, "handle");

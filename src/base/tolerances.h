@@ -66,6 +66,13 @@
  * 2^-61 L, so the distance stays within an ulp of the scale; smaller problems are scaled to
  * [1, 2) first (a distance of 1e-170 came out 0 unscaled). */
 #define CD_POINT_MIN_SCALE 0x1p-450
+/* Gradients (src/swept/grad.c): a closest point X of a disk (centre C, radius r) counts as
+ * inside the rim, where the radius does not move it, when its axis distance is below r by more
+ * than CD_GRAD_RIM_REL * r (dimensionless: far above the rounding of a point placed on the rim,
+ * a few eps r, so a rim point is never taken for an interior one) plus CD_GRAD_RIM_ULPS * eps *
+ * (max|X_i| + max|C_i|) (the rounding of X - C and of the axis distance in the caller's units). */
+#define CD_GRAD_RIM_REL 1e-9
+#define CD_GRAD_RIM_ULPS 64.0
 
 /* ---- lines family (src/lines) ---- */
 

@@ -18,7 +18,7 @@ typedef struct cdist__point_pair {
 cdist__point_pair cdist__point_circle_pair(vec3 p, const cdist__circle *c);
 cdist__point_pair cdist__point_disk_pair(vec3 p, const cdist__circle *c);
 
-/* The same offered to a collector (swap: p is the second object). Point p (relative to the circle centre) to circle/disk c (c->c ignored, taken as origin). */
+/* The same offered to a collector (swap: p is the second object); p relative to the centre. */
 void cdist__point_circle_core(vec3 p, const cdist__circle *c, cdist__best *b, int swap);
 void cdist__point_disk_core(vec3 p, const cdist__circle *c, cdist__best *b, int swap);
 

@@ -5,6 +5,15 @@
 #include <math.h>
 
 #include "internal.h"
+#include "base/point_circle.h"
+
+/* The fast path (point_body.h) in one lane, on the scalar evaluator's instance. */
+#define CD_LANES 1
+#include "base/lanes/lanes_def.h"
+#undef KN
+#define KN(name) CD_LANE1_KN(name)
+#include "point_body.h"
+#include "base/lanes/lanes_undef.h"
 
 /* Circle angle of the in-plane direction w without the basis: with k the basis index of
  * v_basis (smallest |n_k|), u = (e_k - n_k n)/s and v = n x u for s = |e_k - n_k n| > 0, so
@@ -37,72 +46,37 @@ CD_INLINE int on_axis(vec3 p, double rho)
     return rho * rho <= (k * k) * v_sqr(p);
 }
 
-/* Split p (relative to the centre) into height h along n, in-plane part w and axis distance rho.
- * w = (n x p) x n is the in-plane part; built from the cross product it stays in the plane and
- * keeps its direction accurate even within a few ulps of the axis, where p - h n would cancel. */
-CD_INLINE void split(vec3 p, vec3 n, double *h, vec3 *w, vec3 *np, double *rho)
-{
-    *np = v_cross(n, p);
-    *h = v_dot(n, p);
-    *w = v_cross(*np, n);
-    *rho = v_norm(*np);
-}
-
-CD_INLINE cdist__point_pair circle_pair(vec3 p, const cdist__circle *c, double h, vec3 w, vec3 np, double rho)
+/* The pair of p (relative to the centre) from its evaluation e against c and its squared
+ * distance d2 (point_d2): on a disk the projection where p is over it (rho <= r), else the
+ * circle's point; every circle point (angle 0 the representative) for p on the axis. */
+CD_INLINE cdist__point_pair pair_of(vec3 p, const cdist__circle *c, int disk, const cdist__pc_parts *e, double d2)
 {
     cdist__point_pair q;
+    vec3 w = cdist__pc_inplane(e->np, c->n);
+    int axis = on_axis(p, e->rho);
+    q.d2 = d2;
     q.equidistant = 0;
-    if (c->r == 0.0) {
+    if (disk && !(e->rho > c->r)) {
+        q.angle = axis ? NAN : plane_angle(c->n, w, e->np);
+        q.k = axis ? v3(0, 0, 0) : w;
+    } else if (c->r == 0.0) {
         q.k = v3(0, 0, 0);
         q.angle = NAN;
-    } else if (on_axis(p, rho)) {
-        /* Every circle point is closest; angle 0 is the representative. */
+    } else if (axis) {
         q.k = axis_representative(c);
         q.angle = 0.0;
         q.equidistant = 1;
     } else {
-        /* |w|, not rho: near the axis the rounding of n x p leaves it slightly off
-         * perpendicular to n, and only w (which is perpendicular) scaled by its own length
-         * lands on the circle. */
-        /* A point within 1e-150 of the scale from the axis has a w whose squares are
-         * subnormal: normalise a copy scaled to its largest component there. */
-        vec3 ws = w;
-        double m = v_maxabs(w);
-        if (m < CD_MIN_NORMAL_FAST) ws = v3(w.x / m, w.y / m, w.z / m);
-        q.k = v_scale(c->r / v_norm(ws), ws);
-        q.angle = plane_angle(c->n, w, np);
+        q.k = cdist__pc_along(w, c->r);
+        q.angle = plane_angle(c->n, w, e->np);
     }
-    double dr = rho - c->r;
-    q.d2 = fma(dr, dr, h * h);
     return q;
-}
-
-/* The disk point of p (relative to the centre) over the disk (rho <= r): its projection. */
-CD_INLINE cdist__point_pair disk_inside(const cdist__circle *c, double h, vec3 w, vec3 np, double rho, vec3 p)
-{
-    cdist__point_pair q;
-    int axis = on_axis(p, rho);
-    q.angle = axis ? NAN : plane_angle(c->n, w, np);
-    q.k = axis ? v3(0, 0, 0) : w;
-    q.d2 = h * h;
-    q.equidistant = 0;
-    return q;
-}
-
-/* The pair of p (relative to the centre) from its split: on a disk the projection where p is
- * over it (rho <= r), else the circle's point. */
-CD_INLINE cdist__point_pair pair_of_split(vec3 p, const cdist__circle *c, int disk, double h, vec3 w, vec3 np, double rho)
-{
-    if (disk && !(rho > c->r)) return disk_inside(c, h, w, np, rho, p);
-    return circle_pair(p, c, h, w, np, rho);
 }
 
 CD_INLINE cdist__point_pair pair_at(vec3 p, const cdist__circle *c, int disk)
 {
-    double h, rho;
-    vec3 w, np;
-    split(p, c->n, &h, &w, &np, &rho);
-    return pair_of_split(p, c, disk, h, w, np, rho);
+    cdist__pc_parts e = cdist__point_circle(c->n, p, c->r);
+    return pair_of(p, c, disk, &e, cdist__point_d2_lane1(e.rho, e.hh, e.d2, c->r, disk));
 }
 
 CD_FMA_CLONES cdist__point_pair cdist__point_circle_pair(vec3 p, const cdist__circle *c) { return pair_at(p, c, 0); }
@@ -151,27 +125,25 @@ CD_FMA_CLONES void cdist__point_result(vec3 p, const cdist__circle *c, int disk,
     write_result(p, c->c, up, &k, r);
 }
 
-/* The whole query for inputs of the usual kind, fused in one FMA clone: the fast validation
- * (cdist__circle_fast_body), the core unscaled (scale at least CD_POINT_MIN_SCALE: the same
- * roundings as scaled) and the result, with no call, no copy of the circle and no pre-filled
- * result. 0 when any check is in doubt: the checked and scaled path then answers or reports.
- * The distance's arithmetic and the checks are the batch point kernel's
- * (src/batch/point_kernel.c), operation by operation: the kernel takes exactly these entries
- * and its distances are bit-identical. */
+/* The whole query for inputs of the usual kind, fused in one FMA clone: the fast path of
+ * point_body.h (validation and distance, unscaled: scale at least CD_POINT_MIN_SCALE gives the
+ * same roundings as scaled; the batch point kernel runs the same body in lanes), the pair and
+ * the result, with no call, no copy of the circle and no pre-filled result. 0 when any check is
+ * in doubt: the checked and scaled path then answers or reports. */
 CD_FMA_CLONES CD_NO_SLP static int point_fast(double unit_tol, const cdist_vec3 *P, const cdist_circle *C, int disk,
                                               cdist_result *r)
 {
-    vec3 p = *P;
-    cdist__circle c;
-    if (!cdist__in_range(p) || !cdist__circle_fast_body(unit_tol, C, &c))
-        return 0;
-    double h, rho;
-    vec3 w, np, rel = v_sub(p, c.c);
-    split(rel, c.n, &h, &w, &np, &rho);
-    /* the batch kernel's scale guard: |rel|^2 = |n x rel|^2 + h^2, or r^2 */
-    if (!(cdist__fmax(v_sqr(np) + h * h, c.r * c.r) >= CD_POINT_MIN_SCALE * CD_POINT_MIN_SCALE)) return 0;
-    cdist__point_pair k = pair_of_split(rel, &c, disk, h, w, np, rho);
-    write_result(p, c.c, 1.0, &k, r);
+    const double p[3] = {P->x, P->y, P->z}, c[3] = {C->center.x, C->center.y, C->center.z},
+                 d[3] = {C->normal.x, C->normal.y, C->normal.z};
+    cdist__point_lane_lane1 f = cdist__point_fast_lane1(p, c, d, C->radius, unit_tol, disk);
+    if (!f.ok) return 0;
+    cdist__circle cc;
+    cc.c = C->center;
+    cc.n = v3(f.n[0], f.n[1], f.n[2]);
+    cc.r = C->radius;
+    cdist__pc_parts e = cdist__pc_parts_of_lane(&f.e);
+    cdist__point_pair k = pair_of(v3(f.rel[0], f.rel[1], f.rel[2]), &cc, disk, &e, f.d2);
+    write_result(*P, cc.c, 1.0, &k, r);
     return 1;
 }
 

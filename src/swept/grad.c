@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "swept-priv.h"
+#include "base/point_circle.h"
 
 /* Component of g orthogonal to the unit vector n. */
 static vec3 perp(vec3 g, vec3 n) { return v_axpy(g, -v_dot(g, n), n); }
@@ -21,12 +22,11 @@ void cdist__grad_set_error(cdist_grad *g)
     }
 }
 
-/* X (on disk c, unit normal N) is clearly inside the rim: further in than the rounding of
- * the coordinates and 1e-9 of the radius. */
+/* X (on disk c, unit normal N) is clearly inside the rim (tolerances.h). */
 static int disk_interior(const cdist_circle *c, vec3 N, vec3 X)
 {
-    double rho = v_norm(perp(v_sub(X, c->center), N));
-    double slack = 1e-9 * c->radius + 64.0 * DBL_EPSILON * (v_maxabs(X) + v_maxabs(c->center));
+    double rho = cdist__point_circle(N, v_sub(X, c->center), c->radius).rho;
+    double slack = CD_GRAD_RIM_REL * c->radius + CD_GRAD_RIM_ULPS * DBL_EPSILON * (v_maxabs(X) + v_maxabs(c->center));
     return c->radius - rho > slack;
 }
 
@@ -41,8 +41,8 @@ static void circle_like(const cdist_circle *c, vec3 X, vec3 w, int disk, cdist_g
         o->d_radius = -v_norm(perp(w, N));
         return;
     }
-    vec3 relp = perp(rel, N);
-    double rho = v_norm(relp);
+    cdist__pc_parts pc = cdist__point_circle(N, rel, c->radius);
+    double rho = pc.rho;
     double s = disk ? fmin(rho / c->radius, 1.0) : 1.0;
     if (disk && disk_interior(c, N, X)) {
         /* interior point: w is along N, the radius does not move the point's neighbourhood */
@@ -51,7 +51,8 @@ static void circle_like(const cdist_circle *c, vec3 X, vec3 w, int disk, cdist_g
         o->d_normal = perp(o->d_normal, N);
         return;
     }
-    vec3 e = rho > 0.0 ? v_scale(1.0 / rho, relp) : v3(0, 0, 0);
+    vec3 relp = cdist__pc_inplane(pc.np, N);
+    vec3 e = v_maxabs(relp) > 0.0 ? cdist__pc_along(relp, 1.0) : v3(0, 0, 0);
     o->d_radius = s * v_dot(w, e);
     /* dX = -r s (e . dN) N  =>  d_normal = -r s (w . N) e (orthogonal to N). */
     o->d_normal = v_scale(-c->radius * s * v_dot(w, N), e);
@@ -170,7 +171,7 @@ static int disks_cross_inside(const cdist_circle *d0, vec3 N0, const cdist_circl
     double lo = -INFINITY, hi = INFINITY;
     for (int k = 0; k < 2; k++) {
         /* X + t u is in disk k for t in the chord [m - h, m + h] */
-        vec3 p = perp(v_sub(X, d[k]->center), N[k]);
+        vec3 p = cdist__pc_inplane(cdist__point_circle(N[k], v_sub(X, d[k]->center), d[k]->radius).np, N[k]);
         double m = -v_dot(p, u), h2 = d[k]->radius * d[k]->radius - (v_sqr(p) - m * m);
         if (!(h2 > 0.0)) return 0;
         lo = fmax(lo, m - sqrt(h2));

@@ -160,20 +160,20 @@ int main(void)
     cdist_query *q = cdist_query_new();
     double tols[] = {1e-6, 0.0, INFINITY};
     for (int t = 0; t < 3; t++) {
-        check_kernel("scalar", kernel_scalar, q, tols[t]);
+        check_kernel("scalar", kernel_1, q, tols[t]);
 #ifdef CD_X86_KERNELS
         __builtin_cpu_init();
-        if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma")) check_kernel("avx2", kernel_avx2, q, tols[t]);
+        if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma")) check_kernel("avx2", kernel_4, q, tols[t]);
         else printf("no AVX2 here: skipped\n");
         if (__builtin_cpu_supports("avx512f"))
-            check_kernel("avx512", kernel_avx512, q, tols[t]);
+            check_kernel("avx512", kernel_8, q, tols[t]);
         else printf("no AVX-512 here: skipped\n");
 #endif
     }
-    check_tiny_normals("scalar", kernel_scalar, q);
+    check_tiny_normals("scalar", kernel_1, q);
 #ifdef CD_X86_KERNELS
-    if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma")) check_tiny_normals("avx2", kernel_avx2, q);
-    if (__builtin_cpu_supports("avx512f")) check_tiny_normals("avx512", kernel_avx512, q);
+    if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma")) check_tiny_normals("avx2", kernel_4, q);
+    if (__builtin_cpu_supports("avx512f")) check_tiny_normals("avx512", kernel_8, q);
 #endif
     check_tiny_normals_batch(q);
     cdist_query_free(q);

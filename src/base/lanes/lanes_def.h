@@ -10,9 +10,6 @@
 #define KN(name) name##_1
 #define V double
 #define M int
-static inline double vset(double x) { return x; }
-static inline double vld(const double *p) { return *p; }
-static inline void vst(double *p, double x) { *p = x; }
 #define vadd(a, b) ((a) + (b))
 #define vsub(a, b) ((a) - (b))
 #define vmul(a, b) ((a) * (b))
@@ -23,6 +20,13 @@ static inline void vst(double *p, double x) { *p = x; }
 #define vabs(a) fabs(a)
 #define vmax(a, b) ((a) > (b) ? (a) : (b))
 #define vmin(a, b) ((a) < (b) ? (a) : (b))
+/* Functions, defined once per translation unit: a unit may hold several one-lane instances (a
+ * kernel's and a scalar evaluator's of src/base). */
+#ifndef CD_LANES_ONE_FUNCTIONS
+#define CD_LANES_ONE_FUNCTIONS
+static inline double vset(double x) { return x; }
+static inline double vld(const double *p) { return *p; }
+static inline void vst(double *p, double x) { *p = x; }
 static inline double vexpbits(double x)
 {
     uint64_t u;
@@ -40,6 +44,7 @@ static inline double vrecip2(double x)
     memcpy(&x, &u, sizeof u);
     return x;
 }
+#endif
 #define vlt(a, b) ((a) < (b))
 #define vle(a, b) ((a) <= (b))
 #define vgt(a, b) ((a) > (b))

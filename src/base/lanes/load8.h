@@ -41,17 +41,19 @@ __attribute__((target("avx512f"))) static inline void batch_load8(const char *p,
     col[7] = _mm512_setzero_pd();
 }
 
-/* The same for 4 objects in AVX2 vectors: fields 0..3 in one load per object, fields 4..
- * (fields - 1) in a masked load, two 4x4 transposes. */
+/* The same for 4 objects in AVX2 vectors: fields 0..3 in one load per object (masked for fewer
+ * fields: a point's three), fields 4.. (fields - 1) in a masked load, two 4x4 transposes. */
 __attribute__((target("avx2"))) static inline void batch_load4(const char *p, ptrdiff_t stride, int fields,
                                                                 __m256d col[8])
 {
-    const __m256i tail = _mm256_cmpgt_epi64(_mm256_set1_epi64x(fields - 4), _mm256_setr_epi64x(0, 1, 2, 3));
+    const __m256i lane = _mm256_setr_epi64x(0, 1, 2, 3);
+    const __m256i head = _mm256_cmpgt_epi64(_mm256_set1_epi64x(fields), lane);
+    const __m256i tail = _mm256_cmpgt_epi64(_mm256_set1_epi64x(fields - 4), lane);
     for (int h = 0; h < 2; h++) {
         __m256d r[4];
         for (int k = 0; k < 4; k++) {
             const double *o = (const double *)(p + k * stride) + 4 * h;
-            r[k] = h ? _mm256_maskload_pd(o, tail) : _mm256_loadu_pd(o);
+            r[k] = h ? _mm256_maskload_pd(o, tail) : fields < 4 ? _mm256_maskload_pd(o, head) : _mm256_loadu_pd(o);
         }
         __m256d t0 = _mm256_unpacklo_pd(r[0], r[1]), t1 = _mm256_unpackhi_pd(r[0], r[1]);
         __m256d t2 = _mm256_unpacklo_pd(r[2], r[3]), t3 = _mm256_unpackhi_pd(r[2], r[3]);
