@@ -48,17 +48,12 @@ typedef struct lk_block {
     double long_st[LK_NS][128];  /* and their solver state */
 } lk_block;
 
-/* CD_MADD of the scalar code: a hardware fma only when the whole build targets it. */
-#ifdef FP_FAST_FMA
-#define vmadd(a, b, c) vfma(a, b, c)
-#else
-#define vmadd(a, b, c) vadd(vmul(a, b), c)
-#endif
-
 #define CD_LANES 1
 #define LK_CHAINS 1
 #include "base/lanes/lanes_def.h"
 #include "base/lanes/lanes_vec.h"
+#include "base/roots_halley.h"
+#include "lines/line_circle_body.h"
 #include "line_kernel_body.h"
 #include "base/lanes/lanes_undef.h"
 #undef LK_CHAINS
@@ -72,6 +67,8 @@ CD_LANES_TARGET_PUSH("avx512f,fma")
 #define LK_CHAINS LK_WIDE_CHAINS
 #include "base/lanes/lanes_def.h"
 #include "base/lanes/lanes_vec.h"
+#include "base/roots_halley.h"
+#include "lines/line_circle_body.h"
 #include "line_kernel_body.h"
 #include "base/lanes/lanes_undef.h"
 #undef LK_CHAINS
@@ -84,6 +81,8 @@ CD_LANES_TARGET_PUSH("avx2,fma")
 #define LK_CHAINS LK_WIDE_CHAINS
 #include "base/lanes/lanes_def.h"
 #include "base/lanes/lanes_vec.h"
+#include "base/roots_halley.h"
+#include "lines/line_circle_body.h"
 #include "line_kernel_body.h"
 #include "base/lanes/lanes_undef.h"
 #undef LK_CHAINS
