@@ -97,23 +97,9 @@ static void KN(stage_frame)(double in[13][W], int shape, double tol, lk_block *b
     }
     V tmin = vset(shape == LK_LINE ? -INFINITY : 0.0), tmax = vset(shape == LK_SEGMENT ? 1.0 : INFINITY);
 
-    /* ---- cdist__line_near_centre: origin - C exactly (TwoSum), moved to the point nearest C ---- */
-    V hx = vsub(Ox, cx), hy = vsub(Oy, cy), hz = vsub(Oz, cz);
-    V lx, ly, lz;
-    {
-        V b, mcx = vneg(cx), mcy = vneg(cy), mcz = vneg(cz);
-        b = vsub(hx, Ox), lx = vadd(vsub(Ox, vsub(hx, b)), vsub(mcx, b));
-        b = vsub(hy, Oy), ly = vadd(vsub(Oy, vsub(hy, b)), vsub(mcy, b));
-        b = vsub(hz, Oz), lz = vadd(vsub(Oz, vsub(hz, b)), vsub(mcz, b));
-    }
-    V m = KN(max3)(Dx, Dy, Dz);
-    ok = mand(ok, mand(vge(m, vset(0x1p-1021)), vlt(m, vset(0x1p1022))));
-    V p = vrecip2(vexpbits(m));
-    V Dsx = vmul(p, Dx), Dsy = vmul(p, Dy), Dsz = vmul(p, Dz);
-    V t = vmul(vneg(vdiv(KN(dot)(hx, hy, hz, Dsx, Dsy, Dsz), KN(dot)(Dsx, Dsy, Dsz, Dsx, Dsy, Dsz))), p);
-    t = vsel(vle(vabs(t), vset(DBL_MAX)), t, zero);
-    t = KN(fmin)(KN(fmax)(t, tmin), tmax);
-    V Bx = vadd(vfma(t, Dx, hx), lx), By = vadd(vfma(t, Dy, hy), ly), Bz = vadd(vfma(t, Dz, hz), lz);
+    /* ---- cdist__line_near_centre ---- */
+    V Bx, By, Bz;
+    V t = KN(lc_near_centre)(Ox, Oy, Oz, Dx, Dy, Dz, cx, cy, cz, tmin, tmax, &Bx, &By, &Bz);
     /* run: the range in units of M */
     V lo = vsel(veq(tmin, t), zero, vmul(vsub(tmin, t), len));
     V hi = vsel(veq(tmax, t), zero, vmul(vsub(tmax, t), len));
@@ -302,7 +288,7 @@ static void KN(stage_long)(lk_block *b, const int *j, int n)
     for (int it = LK_LANE_ITER; it < CD_ROOT_MAX_ITER && many(s.act); it++) KN(lc_iterate)(&md, &s);
     s.res = vsel(s.act, s.x, s.res);
     V smin = KN(load_field)(b, LK_F_SMIN, e), smax = KN(load_field)(b, LK_F_SMAX, e);
-    V tol = vset(8.0 * DBL_EPSILON), atol = vset(0x1p-60);
+    V tol = vset(CD_LK_END_REL_ULPS * DBL_EPSILON), atol = vset(CD_LK_END_ABS);
     V big = vset(DBL_MAX); /* a finite end only (a line has none) */
     M at_min = mand(vle(vabs(smin), big), vle(vabs(vsub(s.res, smin)), vadd(vmul(tol, vabs(smin)), atol)));
     M at_max = mand(vle(vabs(smax), big), vle(vabs(vsub(s.res, smax)), vadd(vmul(tol, vabs(smax)), atol)));

@@ -359,28 +359,9 @@ CD_INLINE double range_scale(vec3 B, vec3 M, double tmin, double tmax, double r)
  * coordinates either (objects far from the coordinate origin). */
 CD_INLINE vec3 near_centre(vec3 origin, vec3 D, vec3 C, double tmin, double tmax, double *t0)
 {
-    /* origin - C = hi + lo exactly; B = hi + t0 D + lo, rounded once at the scale of B */
-    vec3 lo3, hi3;
-    hi3.x = cdist__two_diff(origin.x, C.x, &lo3.x);
-    hi3.y = cdist__two_diff(origin.y, C.y, &lo3.y);
-    hi3.z = cdist__two_diff(origin.z, C.z, &lo3.z);
-    double m = v_maxabs(D), t;
-    if (m >= 0x1p-1021 && m < 0x1p1022) {
-        /* D scaled by the power of two 2^-e of m (exact; |Ds|^2 in [1, 12)): one division,
-         * and t is exactly 2^k times itself for a query scaled by 2^k */
-        union { double d; unsigned long long u; } b = {m};
-        int e = (int)((b.u >> 52) & 0x7ff) - 1023;
-        double p = cdist__pow2(-e);
-        vec3 Ds = v_scale(p, D);
-        t = -(v_dot(hi3, Ds) / v_sqr(Ds)) * p;
-    } else {
-        vec3 Ds = v_scale(1.0 / m, D); /* |D|^2 may underflow or overflow, |Ds|^2 cannot */
-        t = -(v_dot(hi3, Ds) / v_sqr(Ds)) / m;
-    }
-    if (!isfinite(t)) t = 0.0;
-    t = cdist__fmin(cdist__fmax(t, tmin), tmax); /* rays and segments: stay on the object (no cancellation in t) */
-    *t0 = t;
-    return v_add(v_axpy(hi3, t, D), lo3);
+    vec3 B;
+    *t0 = lc_near_centre_1(origin.x, origin.y, origin.z, D.x, D.y, D.z, C.x, C.y, C.z, tmin, tmax, &B.x, &B.y, &B.z);
+    return B;
 }
 
 CD_FMA_CLONES vec3 cdist__line_near_centre(vec3 origin, vec3 D, vec3 C, double tmin, double tmax, double *t0)
@@ -427,24 +408,6 @@ CD_INLINE cdist_status run_scaled(cdist_query *q, vec3 origin, vec3 D, vec3 M, d
                           r, used);
     if (st == CDIST_OK) cdist__result_unscale(r, cdist__pow2(e));
     return st;
-}
-
-cdist_status cdist__check_line_ray_slow(cdist_query *q, const void *obj, const cdist_vec3 *origin, const cdist_vec3 *dir,
-                                       int is_ray, vec3 *M, double *len)
-{
-    cdist_status st;
-    if ((st = cdist__check_ptr(q, obj, is_ray ? "ray" : "line")) ||
-        (st = cdist__check_point(q, origin, is_ray ? "ray origin" : "line origin")))
-        return st;
-    return cdist__check_direction(q, dir, is_ray ? "ray direction" : "line direction", 1, M, len);
-}
-
-cdist_status cdist__check_segment(cdist_query *q, const cdist_segment *s)
-{
-    cdist_status st;
-    if ((st = cdist__check_ptr(q, s, "segment")) || (st = cdist__check_point(q, &s->p0, "segment p0")))
-        return st;
-    return cdist__check_point(q, &s->p1, "segment p1");
 }
 
 /* FMA clone: the circle's basis (v_basis) inlined here is a chain of fma() calls, which outside

@@ -109,6 +109,38 @@ CD_INLINE void KN(lc_iterate)(const KN(lc_model) *m, KN(halley) *s)
 
 /* ---- the frame and the model ---- */
 
+/* cdist__line_near_centre (lines-priv.h): origin O - C kept exactly as h + l (TwoSum), moved
+ * along D to the point nearest C, clamped to [tmin, tmax]; returns that t (in units of D) and
+ * writes B = h + t D + l. D is scaled by the power of two 2^-e of its largest component m
+ * (exact): one division, and t is exactly 2^k times itself for a query scaled by 2^k; outside
+ * [2^-1021, 2^1022) by 1 / m (|D|^2 may underflow or overflow, |D / m|^2 cannot). */
+CD_INLINE V KN(lc_near_centre)(V Ox, V Oy, V Oz, V Dx, V Dy, V Dz, V Cx, V Cy, V Cz, V tmin, V tmax, V *Bx, V *By,
+                               V *Bz)
+{
+    V hx = vsub(Ox, Cx), hy = vsub(Oy, Cy), hz = vsub(Oz, Cz), b;
+    b = vsub(hx, Ox);
+    V lx = vadd(vsub(Ox, vsub(hx, b)), vsub(vneg(Cx), b));
+    b = vsub(hy, Oy);
+    V ly = vadd(vsub(Oy, vsub(hy, b)), vsub(vneg(Cy), b));
+    b = vsub(hz, Oz);
+    V lz = vadd(vsub(Oz, vsub(hz, b)), vsub(vneg(Cz), b));
+    V m = KN(max3)(Dx, Dy, Dz);
+    M wide = mnot(mand(vge(m, vset(0x1p-1021)), vlt(m, vset(0x1p1022))));
+    V p = vrecip2(vexpbits(m));
+    V Dsx = vmul(p, Dx), Dsy = vmul(p, Dy), Dsz = vmul(p, Dz);
+    V t = vmul(vneg(vdiv(KN(dot)(hx, hy, hz, Dsx, Dsy, Dsz), KN(dot)(Dsx, Dsy, Dsz, Dsx, Dsy, Dsz))), p);
+    if (many(wide)) {
+        V im = vdiv(vset(1.0), m);
+        Dsx = vmul(im, Dx), Dsy = vmul(im, Dy), Dsz = vmul(im, Dz);
+        V tw = vdiv(vneg(vdiv(KN(dot)(hx, hy, hz, Dsx, Dsy, Dsz), KN(dot)(Dsx, Dsy, Dsz, Dsx, Dsy, Dsz))), m);
+        t = vsel(wide, tw, t);
+    }
+    t = vsel(vle(vabs(t), vset(DBL_MAX)), t, vset(0.0));
+    t = KN(fmin)(KN(fmax)(t, tmin), tmax); /* rays and segments: stay on the object (no cancellation in t) */
+    *Bx = vadd(vfma(t, Dx, hx), lx), *By = vadd(vfma(t, Dy, hy), ly), *Bz = vadd(vfma(t, Dz, hz), lz);
+    return t;
+}
+
 /* B0 = B + t0 M, the line point nearest the centre (one correction step for orthogonality). */
 CD_INLINE V KN(lc_nearest)(V Bx, V By, V Bz, V Mx, V My, V Mz, V *B0x, V *B0y, V *B0z)
 {
@@ -164,7 +196,7 @@ CD_INLINE void KN(lc_frame_line)(KN(lc_frame) *f, V r, V B0x, V B0y, V B0z, V Mx
 }
 
 /* The model of a line not perpendicular to the plane (m0 > 0), radius rs (scaled); *uO the
- * frame origin along M (scaled): the canonical point x2 = 0 when it is near (|uO| <= 4), where
+ * frame origin along M (scaled): the canonical point x2 = 0 when it is near (CD_LC_CANON_MAX), where
  * F is exactly even in s for a symmetric configuration, so symmetric minima come out
  * bit-identical; otherwise (nearly perpendicular lines) B0 itself, to keep t free of
  * cancellation. */
@@ -178,7 +210,7 @@ CD_INLINE void KN(lc_model_init)(KN(lc_model) *m, const KN(lc_frame) *f, V rs, V
     m->ax1 = vabs(m->x1);
     V c2 = vfma(m->e2x, f->b2x, vmul(m->e2y, f->b2y));
     V us = vdiv(vneg(vfma(f->m2x, f->b2x, vmul(f->m2y, f->b2y))), f->mm); /* -c2 / m0 with one division */
-    M canon = vle(vabs(us), vset(4.0));
+    M canon = vle(vabs(us), vset(CD_LC_CANON_MAX));
     *uO = vsel(canon, us, vset(0.0));
     m->c2 = vsel(canon, vset(0.0), c2);
     m->h = vsel(canon, vfma(f->a, us, f->h0), f->h0);
