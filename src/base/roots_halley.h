@@ -83,9 +83,13 @@ CD_INLINE void KN(halley_step)(KN(halley) *s, V f, V df, V d2f, V rel, V abs_)
      * otherwise, as f / f' where f'^2 leaves [2^-1000, 2^1000]: one division either way */
     V dd = vmul(df, df), fd = vmul(f, df);
     M scaled = mand(vge(dd, vset(0x1p-1000)), vle(dd, vset(0x1p1000)));
-    M halley = vlt_m(scaled, vabs(vmul(f, d2f)), dd);
-    V num = vsel(halley, vmul(vset(2.0), fd), vsel(scaled, fd, f));
-    V den = vsel(halley, vmadd(vneg(f), d2f, vmul(vset(2.0), dd)), vsel(scaled, dd, df));
+    M halley = vlt_m(scaled, vabs(vmul(f, d2f)), dd), unscaled = mnot(scaled);
+    V num = fd, den = dd;
+    if (many(halley)) {
+        num = vsel(halley, vmul(vset(2.0), fd), num);
+        den = vsel(halley, vmadd(vneg(f), d2f, vmul(vset(2.0), dd)), den);
+    }
+    if (many(unscaled)) num = vsel(unscaled, f, num), den = vsel(unscaled, df, den);
     V step = vdiv(num, den);
     V xn = vsub(x, step), as = vabs(step);
     M dfpos = vgt(df, zero);
@@ -105,12 +109,14 @@ CD_INLINE void KN(halley_step)(KN(halley) *s, V f, V df, V d2f, V rel, V abs_)
      * point after this step */
     V p1 = s->p1, p2 = s->p2;
     V tol = vmax(vmul(rel, vabs(xn)), abs_), dxp = vsub(x, s->xp);
-    M quadh = vle_m(vgt_m(mand(plain, halley), p1, zero),
-                    vmul(vmul(vset(4.0), vabs(vmadd(vmul(c, c), dxp, vsub(s->cp, c)))), vmul(vmul(as, as), as)),
-                    vmul(vmul(vset(3.0), tol), vabs(dxp)));
-    M quadn = vle_m(vle_m(mandn(mor(halley, s->ph), plain), vmul(vset(4.0), as), p1),
-                    vmul(vmul(vset(4.0), vmul(as, as)), as), vmul(tol, vmul(p1, p1)));
-    M quad = mor(quadh, quadn);
+    M quad = vgt_m(mand(plain, halley), p1, zero), quadn = mandn(mor(halley, s->ph), plain);
+    if (many(quad))
+        quad = vle_m(quad, vmul(vmul(vset(4.0), vabs(vmadd(vmul(c, c), dxp, vsub(s->cp, c)))), vmul(vmul(as, as), as)),
+                     vmul(vmul(vset(3.0), tol), vabs(dxp)));
+    if (many(quadn)) {
+        quadn = vle_m(quadn, vmul(vset(4.0), as), p1);
+        quad = mor(quad, vle_m(quadn, vmul(vmul(vset(4.0), vmul(as, as)), as), vmul(tol, vmul(p1, p1))));
+    }
     res = vsel(quad, xn, res);
     act = mandn(quad, act);
     if (W == 1 && !many(act)) goto out;
@@ -128,7 +134,8 @@ CD_INLINE void KN(halley_step)(KN(halley) *s, V f, V df, V d2f, V rel, V abs_)
         xm = vsel(vgt(xm, lo), xm, vadd(lo, vmul(vset(0x1p-6), vsub(x, lo))));
         xn = vsel(lin, xm, xn);
     }
-    V xb = vsel(bis, vmul(vset(0.5), vadd(lo, hi)), xn);
+    V xb = xn;
+    if (many(bis)) xb = vsel(bis, vmul(vset(0.5), vadd(lo, hi)), xn);
     if (many(jump))
         xb = vsel(jump, vsel(vge(xn, hi), vsub(hi, vmul(vset(0x1p-10), vsub(hi, x))), vadd(lo, vmul(vset(0x1p-10), vsub(x, lo)))),
                   xb);

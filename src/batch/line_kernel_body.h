@@ -13,16 +13,11 @@
  * model; 2 (the entries where F' is not monotone) the branch brackets; 3 (every bracket) the
  * solver; 4 (all entries) the distance. */
 
-/* offer_end's squared distance: the point B + t M against the circle (normal n, radius r). */
+/* offer_end's squared distance at t. */
 CD_INLINE V KN(end_d2)(V Bx, V By, V Bz, V Mx, V My, V Mz, V t, V nx, V ny, V nz, V r)
 {
-    V Px = vfma(t, Mx, Bx), Py = vfma(t, My, By), Pz = vfma(t, Mz, Bz);
-    V qx, qy, qz;
-    KN(cross)(nx, ny, nz, Px, Py, Pz, &qx, &qy, &qz);
-    V h = KN(dot)(nx, ny, nz, Px, Py, Pz);
-    V rho = vsqrt(KN(dot)(qx, qy, qz, qx, qy, qz));
-    V dr = vsub(rho, r);
-    return vfma(dr, dr, vmul(h, h));
+    V P[3], np[3], rho;
+    return KN(lc_end)(Bx, By, Bz, Mx, My, Mz, t, nx, ny, nz, r, P, np, &rho);
 }
 
 /* Stage 1, entries base .. base + W - 1 of block b (n of them real): in[f][l] is field f of lane

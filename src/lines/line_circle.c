@@ -144,15 +144,14 @@ CD_INLINE void offer_model(lc_ctx *x, const lc_model *m, double s)
 CD_INLINE void offer_end(lc_ctx *x, double t)
 {
     const cdist__circle *c = x->c;
-    vec3 P = v_axpy(x->B, t, x->M);
-    vec3 np = v_cross(c->n, P);
-    double h = v_dot(c->n, P), rho = v_norm(np);
+    double p[3], q[3], rho;
+    double d2 = lc_end_1(x->B.x, x->B.y, x->B.z, x->M.x, x->M.y, x->M.z, t, c->n.x, c->n.y, c->n.z, c->r, p, q, &rho);
+    vec3 P = v3(p[0], p[1], p[2]), np = v3(q[0], q[1], q[2]);
     vec3 w = v_cross(np, c->n);
     int on_axis = rho <= CD_ON_AXIS_ULPS * EPS * v_norm(P);
     double ang;
     vec3 K = on_axis ? circle_pt(c, 0, 0, &ang) : circle_pt(c, v_dot(c->u, w), v_dot(c->v, w), &ang);
-    double dr = rho - c->r;
-    push(x, fma(dr, dr, h * h), P, K, t, ang, on_axis && c->r > 0.0);
+    push(x, d2, P, K, t, ang, on_axis && c->r > 0.0);
 }
 
 /* Two candidates are the same minimum unless the distance rises between them by more than the

@@ -107,6 +107,18 @@ CD_INLINE void KN(lc_iterate)(const KN(lc_model) *m, KN(halley) *s)
     KN(halley_step)(s, f, df, d2f, vset(CD_ROOT_REL_ULPS * DBL_EPSILON), vset(CD_ROOT_ABS));
 }
 
+/* A finite end of the range: the point P = B + t M against the circle (normal n, radius r);
+ * returns the squared distance, writes P, n x P and rho = |n x P|. */
+CD_INLINE V KN(lc_end)(V Bx, V By, V Bz, V Mx, V My, V Mz, V t, V nx, V ny, V nz, V r, V P[3], V np[3], V *rho)
+{
+    P[0] = vfma(t, Mx, Bx), P[1] = vfma(t, My, By), P[2] = vfma(t, Mz, Bz);
+    KN(cross)(nx, ny, nz, P[0], P[1], P[2], &np[0], &np[1], &np[2]);
+    V h = KN(dot)(nx, ny, nz, P[0], P[1], P[2]);
+    *rho = vsqrt(KN(dot)(np[0], np[1], np[2], np[0], np[1], np[2]));
+    V dr = vsub(*rho, r);
+    return vfma(dr, dr, vmul(h, h));
+}
+
 /* ---- the frame and the model ---- */
 
 /* cdist__line_near_centre (lines-priv.h): origin O - C kept exactly as h + l (TwoSum), moved
