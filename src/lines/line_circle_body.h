@@ -77,13 +77,18 @@ CD_INLINE V KN(lc_fd2f)(const KN(lc_model) *m, V s, V *df, V *d2f)
  *   f P = (a h Q + m0 x2 num rho^2) rho^2,   f' P = (k Q - r m0^2 x1^2 (rho + r)) rho^2,
  *   f'' P = 3 r m0^3 x1^2 x2 (rho + r),      Q = P / rho^2 = rho^3 (rho + r).
  * With Q = rho2^2 + (r rho2) rho, each is one multiply-add in rho after the square root (the
- * rest is computed beside it). *ok is cleared where rho^2 leaves [2^-100, 2^100] (near the axis,
- * where P would underflow): there the caller takes lc_fd2f. */
-CD_INLINE V KN(lc_fd2f_scaled)(const KN(lc_model) *m, V s, V *df, V *d2f, M *ok)
+ * rest is computed beside it). Only where lc_scaled_range holds (rho^2 in [2^-100, 2^100]; near
+ * the axis P would underflow, and lc_fd2f is taken). */
+CD_INLINE M KN(lc_scaled_range)(const KN(lc_model) *m, V s)
+{
+    V x2 = vmadd(m->m0, s, m->c2), rho2 = vmadd(x2, x2, m->x1sq);
+    return mand(vge(rho2, vset(0x1p-100)), vle(rho2, vset(0x1p100)));
+}
+
+CD_INLINE V KN(lc_fd2f_scaled)(const KN(lc_model) *m, V s, V *df, V *d2f)
 {
     V h = vmadd(m->a, s, m->h), x2 = vmadd(m->m0, s, m->c2);
     V rho2 = vmadd(x2, x2, m->x1sq);
-    *ok = mand(vge(rho2, vset(0x1p-100)), vle(rho2, vset(0x1p100)));
     V rho = vsqrt(rho2);
     V num = vmadd(x2, x2, m->rr2);
     V ah = vmul(m->a, h), r2 = vmul(m->r, rho2), q2 = vmul(rho2, rho2), c3 = vmul(m->d2c, x2);
@@ -93,16 +98,19 @@ CD_INLINE V KN(lc_fd2f_scaled)(const KN(lc_model) *m, V s, V *df, V *d2f, M *ok)
 }
 
 /* One iteration of the solver (base/roots_halley.h) on F' in the lanes of s->act, at
- * CD_ROOT_REL_ULPS * eps and CD_ROOT_ABS. */
+ * CD_ROOT_REL_ULPS * eps and CD_ROOT_ABS. One lane evaluates one of the two forms. */
 CD_INLINE void KN(lc_iterate)(const KN(lc_model) *m, KN(halley) *s)
 {
-    V df, d2f;
-    M ok;
-    V f = KN(lc_fd2f_scaled)(m, s->x, &df, &d2f, &ok);
-    M near_axis = mandn(ok, s->act);
-    if (many(near_axis)) {
-        V df1, d2f1, f1 = KN(lc_fd2f)(m, s->x, &df1, &d2f1);
-        f = vsel(near_axis, f1, f), df = vsel(near_axis, df1, df), d2f = vsel(near_axis, d2f1, d2f);
+    V f, df, d2f;
+    M near_axis = mandn(KN(lc_scaled_range)(m, s->x), s->act);
+    if (W == 1 && many(near_axis)) {
+        f = KN(lc_fd2f)(m, s->x, &df, &d2f);
+    } else {
+        f = KN(lc_fd2f_scaled)(m, s->x, &df, &d2f);
+        if (many(near_axis)) {
+            V df1, d2f1, f1 = KN(lc_fd2f)(m, s->x, &df1, &d2f1);
+            f = vsel(near_axis, f1, f), df = vsel(near_axis, df1, df), d2f = vsel(near_axis, d2f1, d2f);
+        }
     }
     KN(halley_step)(s, f, df, d2f, vset(CD_ROOT_REL_ULPS * DBL_EPSILON), vset(CD_ROOT_ABS));
 }
