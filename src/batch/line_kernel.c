@@ -1,9 +1,10 @@
 /* SPDX-License-Identifier: MIT */
 /* Distance kernels of line-, ray- and segment-circle for cdist_batch_distance: the single
  * query's body (src/lines/line_circle_body.h) with the kernels' framing (line_kernel_body.h) in
- * 8 lanes (AVX-512), 4 lanes (AVX2) or 1 (elsewhere), chosen at run time. Every distance is bit-identical to the single
- * query's; entries failing a check or needing a branch the kernel does not take are left to the
- * scalar path, which produces their status and message (or their answer). */
+ * 8 lanes (AVX-512), 4 lanes (AVX2) or 1 (elsewhere), chosen at run time. Every distance is
+ * bit-identical to the single query's; entries failing a check or needing a branch the kernel
+ * does not take are left to the scalar path, which produces their status and message (or their
+ * answer). */
 #include <float.h>
 #include <math.h>
 #include <stddef.h>
