@@ -220,6 +220,20 @@ CD_INLINE int cdist__circle_fast_basis(double unit_tol, const cdist_circle *c, c
  * families that do not need it; cdist__frame_basis completes it. */
 cdist_status cdist__check_circle_nobasis(cdist_query *q, const cdist_circle *c, const char *what, cdist__circle *out);
 
+/* The checks of a line or ray (the object, its origin, its unit direction: M, and the length
+ * as passed: len) and of a segment (the object and both end points), shared by the lines
+ * family's circle and disk queries (src/api/validate.c). The line's is inline for the entries' FMA clones: its fast part accepts, the
+ * slow part (out of line) decides and reports whatever that doubts. */
+cdist_status cdist__check_line_ray_slow(cdist_query *q, const void *obj, const cdist_vec3 *origin, const cdist_vec3 *dir,
+                                       int is_ray, vec3 *M, double *len);
+CD_INLINE cdist_status cdist__check_line_ray(cdist_query *q, const void *obj, const cdist_vec3 *origin,
+                                             const cdist_vec3 *dir, int is_ray, vec3 *M, double *len)
+{
+    if (obj && cdist__in_range(*origin) && cdist__direction_fast_body(q->unit_tol, dir, M, len)) return CDIST_OK;
+    return cdist__check_line_ray_slow(q, obj, origin, dir, is_ray, M, len);
+}
+cdist_status cdist__check_segment(cdist_query *q, const cdist_segment *s);
+
 /* ---- the family table (src/api/family.c) ----
  * One row per query family, indexed like the public cdist_kind numbers of the batch API: the
  * methods it implements, what AUTO (or a method it lacks) runs, and which methods may call GSL

@@ -109,3 +109,20 @@ CD_FMA_CLONES cdist_status cdist__check_circle(cdist_query *q, const cdist_circl
     return st;
 }
 
+cdist_status cdist__check_line_ray_slow(cdist_query *q, const void *obj, const cdist_vec3 *origin, const cdist_vec3 *dir,
+                                       int is_ray, vec3 *M, double *len)
+{
+    cdist_status st;
+    if ((st = cdist__check_ptr(q, obj, is_ray ? "ray" : "line")) ||
+        (st = cdist__check_point(q, origin, is_ray ? "ray origin" : "line origin")))
+        return st;
+    return cdist__check_direction(q, dir, is_ray ? "ray direction" : "line direction", 1, M, len);
+}
+
+cdist_status cdist__check_segment(cdist_query *q, const cdist_segment *s)
+{
+    cdist_status st;
+    if ((st = cdist__check_ptr(q, s, "segment")) || (st = cdist__check_point(q, &s->p0, "segment p0")))
+        return st;
+    return cdist__check_point(q, &s->p1, "segment p1");
+}

@@ -1,11 +1,31 @@
 /* SPDX-License-Identifier: MIT */
-/* Derivative-free solvers of the root and minimum module (declarations and conventions in
- * roots.h). Brent's zeroin and fmin follow R. P. Brent, "Algorithms for Minimization without
+/* The out-of-line solvers of the root and minimum module (declarations and conventions in
+ * roots.h): the Halley solver's 1-lane instance behind its callback, and the derivative-free
+ * ones. Brent's zeroin and fmin follow R. P. Brent, "Algorithms for Minimization without
  * Derivatives" (1973), ch. 4 and 5. */
 #include "base/roots.h"
 
 #include <float.h>
 #include <math.h>
+#include <stdint.h>
+#include <string.h>
+
+#define CD_LANES 1
+#include "base/lanes/lanes_def.h"
+#include "base/roots_halley.h"
+#include "base/lanes/lanes_undef.h"
+
+double cdist__root_halley_accel(cdist__fd2f_fn fd2f, const void *ctx, double lo, double hi, double x0, int dir, double rel,
+                              double abs, int max_iter)
+{
+    halley_1 s = halley_start_1(lo, hi, x0, 1);
+    for (int it = 0; it < max_iter && s.act; it++) {
+        double df, d2f, f = fd2f(ctx, s.x, &df, &d2f);
+        if (dir < 0) f = -f, df = -df, d2f = -d2f;
+        halley_step_1(&s, f, df, d2f, rel, abs);
+    }
+    return s.act ? s.x : s.res;
+}
 
 double cdist__root_brent(cdist__f_fn f, const void *ctx, double a, double fa, double b, double fb, double rel, double abs,
                      int max_iter, double *fx)

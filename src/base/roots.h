@@ -12,9 +12,10 @@
  * library's defaults are CD_ROOT_REL_ULPS * eps and CD_ROOT_ABS (src/base/tolerances.h), for
  * problems scaled to L in [1, 2) (src/base/numeric.h).
  *
- * cdist__root_halley_accel and cdist__root_polish are always inlined so that a
- * hot family (line-circle) gets them specialised for its callback (the call through the pointer
- * is inlined away); the Brent solvers are out of line (roots.c). */
+ * cdist__root_halley_accel is written once over lanes (roots_halley.h): roots.c holds its
+ * 1-lane instance behind the callback, and a hot family (line-circle, its batch kernels)
+ * instantiates the same step with its evaluator inlined. cdist__root_polish is always inlined
+ * (specialised for its callback); the Brent solvers are out of line (roots.c). */
 #ifndef CDIST_BASE_ROOTS_H
 #define CDIST_BASE_ROOTS_H
 
@@ -55,90 +56,8 @@ typedef double (*cdist__fd2f_fn)(const void *ctx, double x, double *df, double *
  * Every operation commutes with x -> -x for an odd f (f' even, f'' odd) and a mirrored x0, so
  * mirrored brackets give mirrored roots. */
 
-CD_INLINE double cdist__root_halley_accel(cdist__fd2f_fn fd2f, const void *ctx, double lo, double hi, double x0,
-                                          int dir, double rel, double abs, int max_iter)
-{
-    if (!(lo < hi)) return lo;
-    double x = (x0 > lo && x0 < hi) ? x0 : 0.5 * (lo + hi), dxold = hi - lo, dx = dxold;
-    /* the last two steps' lengths (0: none since a bisection or an extrapolation); the ratios
-     * q = |step| / p1 and p1 / p2 are compared multiplied out, without a division in the
-     * loop's chain */
-    double p1 = 0.0, p2 = 0.0;
-    int jumped = 0; /* the last step went to near an end of the bracket */
-    int ph = 0;     /* the last step of length p1 was Halley's */
-    double cp = 0.0, xp = 0.0; /* C = f'' / (2 f') and x at the last point (where p1 > 0) */
-    for (int it = 0; it < max_iter; it++) {
-        double df, d2f, f = fd2f(ctx, x, &df, &d2f);
-        if (f != f) return NAN;
-        if (dir < 0) {
-            f = -f;
-            df = -df;
-            d2f = -d2f;
-        }
-        if (f == 0.0) return x;
-        if (f < 0.0) lo = x;
-        else hi = x;
-        double dd = df * df, fd = f * df;
-        int scaled = dd >= 0x1p-1000 && dd <= 0x1p1000; /* else Newton's step, as f / f' */
-        int halley = scaled && fabs(f * d2f) < dd;      /* |C d| < 1/2: the denominator is in (dd, 3 dd) */
-        double step = !scaled ? f / df : halley ? (2.0 * fd) / CD_MADD(-f, d2f, 2.0 * dd) : fd / dd;
-        double xn = x - step, as = fabs(step);
-        if (df > 0.0 && (as <= rel * fabs(x) || as <= abs)) return xn; /* converged */
-        double c = d2f / (2.0 * df); /* C, free of the callback's factor (beside the step's chain) */
-        int past = df > 0.0 && !(xn > lo && xn < hi);
-        if (past && !jumped) {
-            /* the step lands on or past an end: the root is at that end within rounding (F' of
-             * a line through the axis is linear up to it; near a tangency it flattens there),
-             * and bisection would take ~60 steps to reach it. A point 1023/1024 of the way to
-             * that end shrinks the bracket 1024 times when so, and costs one step otherwise
-             * (every other such step bisects, so the bracket at least halves every two steps). */
-            dxold = dx;
-            xn = (xn >= hi) ? hi - 0x1p-10 * (hi - x) : lo + 0x1p-10 * (x - lo);
-            dx = fabs(xn - x);
-            p1 = p2 = 0.0;
-            jumped = 1;
-        } else if (!(df > 0.0) || past || fabs(2.0 * f) > fabs(dxold * df)) {
-            dxold = dx;
-            xn = 0.5 * (lo + hi);
-            dx = fabs(xn - x);
-            p1 = p2 = 0.0;
-            jumped = 0;
-        } else {
-            jumped = 0;
-            /* fast: the next step below the tolerance with a margin of 4. After Halley's step
-             * it is K |step|^3 with Halley's constant K = C^2 - f'''/(6 f') = (C^2 - C')/3 at
-             * the root (C' = f'''/(2 f') - 2 C^2), C' taken from C here and at the last point:
-             * local, not a K fitted to earlier steps, which can be 1000 times too small where
-             * the steps shrank faster than the asymptotic rate. After Newton's (two in a row),
-             * K |step|^2 with K = |step| / p1^2 fitted to the last two, q <= 1/4. */
-            double tol = cdist__fmax(rel * fabs(xn), abs);
-            if (halley ? p1 > 0.0 && 4.0 * fabs(CD_MADD(c * c, x - xp, cp - c)) * (as * as * as) <= 3.0 * tol * fabs(x - xp)
-                       : !ph && 4.0 * as <= p1 && 4.0 * (as * as) * as <= tol * (p1 * p1))
-                return xn;
-            /* linear with a steady q in [1/3, 1): |q - p1/p2| <= q/8 */
-            if (3.0 * as >= p1 && as < p1 && fabs(as * p2 - p1 * p1) <= 0.125 * (as * p2)) {
-                double xm = x - step * (p1 / (p1 - as)); /* the step times 1 / (1 - q) */
-                /* beyond the bracket: the multiple point lies past its end (at a tangency F' has
-                 * its inflection there) */
-                if (!(xm < hi)) xm = hi - 0x1p-6 * (hi - x);
-                if (!(xm > lo)) xm = lo + 0x1p-6 * (x - lo);
-                xn = xm;
-                p1 = p2 = 0.0; /* measure the ratio afresh after an extrapolated step */
-            } else {
-                p2 = p1;
-                p1 = as;
-                ph = halley;
-            }
-            dxold = dx;
-            dx = fabs(xn - x);
-        }
-        cp = c;
-        xp = x;
-        x = xn;
-        if (dx <= rel * fabs(x) || !(hi - lo > abs)) break;
-    }
-    return x;
-}
+double cdist__root_halley_accel(cdist__fd2f_fn fd2f, const void *ctx, double lo, double hi, double x0, int dir, double rel,
+                              double abs, int max_iter);
 
 /* Newton on f from x (a root estimate, e.g. from a polynomial), a step kept only while |f|
  * decreases; stops when a step is below rel * |x| or abs (abs = 0, rel = 0: only the |f| test).

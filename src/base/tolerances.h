@@ -89,6 +89,16 @@
 /* Line-disk: the line is parallel to the disk's plane when |n . M| (M unit) is below
  * CD_LD_PARALLEL_ULPS * eps (rounding of a unit dot product). */
 #define CD_LD_PARALLEL_ULPS 4.0
+/* Line-circle, scaled units: the frame origin of the model is the canonical point x2 = 0 (where
+ * F is exactly even in s for a symmetric configuration) when it lies within CD_LC_CANON_MAX of
+ * B0 along the line; farther (nearly perpendicular lines) B0 itself, so that t does not cancel. */
+#define CD_LC_CANON_MAX 4.0
+/* Line kernels (src/batch/line_kernel_body.h), scaled units: a root that needed more than the
+ * lanes' iterations counts as at an end of the range when within CD_LK_END_REL_ULPS * eps * |end|
+ * + CD_LK_END_ABS of it (the bisection down to the end stops a few ulps short); any other slow
+ * root is a nearly multiple one, left to the scalar path. */
+#define CD_LK_END_REL_ULPS 8.0
+#define CD_LK_END_ABS 0x1p-60
 
 /* ---- curves family (src/curves: callback curves, helix, Bezier, arcs) ---- */
 

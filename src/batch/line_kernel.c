@@ -1,9 +1,10 @@
 /* SPDX-License-Identifier: MIT */
-/* Distance kernels of line-, ray- and segment-circle for cdist_batch_distance: the scalar path's
- * validation, framing and ROBUST core (see line_kernel_body.h) in 8 lanes (AVX-512), 4 lanes
- * (AVX2) or 1 (elsewhere), chosen at run time. Every distance is bit-identical to the single
- * query's; entries failing a check or needing a branch the kernel does not take are left to the
- * scalar path, which produces their status and message (or their answer). */
+/* Distance kernels of line-, ray- and segment-circle for cdist_batch_distance: the single
+ * query's body (src/lines/line_circle_body.h) with the kernels' framing (line_kernel_body.h) in
+ * 8 lanes (AVX-512), 4 lanes (AVX2) or 1 (elsewhere), chosen at run time. Every distance is
+ * bit-identical to the single query's; entries failing a check or needing a branch the kernel
+ * does not take are left to the scalar path, which produces their status and message (or their
+ * answer). */
 #include <float.h>
 #include <math.h>
 #include <stddef.h>
@@ -48,17 +49,12 @@ typedef struct lk_block {
     double long_st[LK_NS][128];  /* and their solver state */
 } lk_block;
 
-/* CD_MADD of the scalar code: a hardware fma only when the whole build targets it. */
-#ifdef FP_FAST_FMA
-#define vmadd(a, b, c) vfma(a, b, c)
-#else
-#define vmadd(a, b, c) vadd(vmul(a, b), c)
-#endif
-
 #define CD_LANES 1
 #define LK_CHAINS 1
 #include "base/lanes/lanes_def.h"
 #include "base/lanes/lanes_vec.h"
+#include "base/roots_halley.h"
+#include "lines/line_circle_body.h"
 #include "line_kernel_body.h"
 #include "base/lanes/lanes_undef.h"
 #undef LK_CHAINS
@@ -72,6 +68,8 @@ CD_LANES_TARGET_PUSH("avx512f,fma")
 #define LK_CHAINS LK_WIDE_CHAINS
 #include "base/lanes/lanes_def.h"
 #include "base/lanes/lanes_vec.h"
+#include "base/roots_halley.h"
+#include "lines/line_circle_body.h"
 #include "line_kernel_body.h"
 #include "base/lanes/lanes_undef.h"
 #undef LK_CHAINS
@@ -84,6 +82,8 @@ CD_LANES_TARGET_PUSH("avx2,fma")
 #define LK_CHAINS LK_WIDE_CHAINS
 #include "base/lanes/lanes_def.h"
 #include "base/lanes/lanes_vec.h"
+#include "base/roots_halley.h"
+#include "lines/line_circle_body.h"
 #include "line_kernel_body.h"
 #include "base/lanes/lanes_undef.h"
 #undef LK_CHAINS

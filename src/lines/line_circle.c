@@ -22,6 +22,8 @@
  * rho - r is computed as ((|x1| - r)(|x1| + r) + x2^2) / (rho + r), free of cancellation.
  */
 #include <math.h>
+#include <stdint.h>
+#include <string.h>
 
 #include "internal.h"
 
@@ -30,103 +32,36 @@
 /* Multiply-add in the model's hot loop (the FMA policy of base/numeric.h). */
 #define MADD(a, b, c) CD_MADD(a, b, c)
 
-typedef struct lc_model {
-    double r;         /* radius (scaled) */
-    double a;         /* N . M */
-    double m0;        /* length of the in-plane part of M */
-    double x1, ax1;   /* in-plane offset of the line across e2, and |x1| */
-    double c2;        /* x2 at s = 0 */
-    double h;         /* height at s = 0 */
-    double e2x, e2y;  /* e2 in the circle basis (U, V) */
-    double x1sq, k, rr2, dfc, d2c; /* invariants of the evaluators: x1^2, a^2 + m0^2, (|x1| - r)(|x1| + r),
-                                    * -(r m0^2) x1^2, 3 r m0^3 x1^2 */
-} lc_model;
+/* The model's arithmetic (line_circle_body.h) for one lane: the batch kernels run the same
+ * body in 4 and 8 lanes. */
+#define CD_LANES 1
+#include "base/lanes/lanes_def.h"
+#include "base/lanes/lanes_vec.h"
+#include "base/roots_halley.h"
+#include "lines/line_circle_body.h"
+#include "base/lanes/lanes_undef.h"
 
-/* rho - r without cancellation, given x2 and rho. */
-CD_INLINE double rho_minus_r(const lc_model *m, double x2, double rho)
-{
-    return MADD(x2, x2, m->rr2) / (rho + m->r);
-}
+typedef lc_model_1 lc_model;
 
-/* F'/2 at height h and in-plane coordinate x2. On the axis (rho = 0) F' is undefined: side = -1
- * or +1 gives the one-sided limit (x2/rho -> side), side = 0 the mean of both. */
-CD_INLINE double fp_at(const lc_model *m, double h, double x2, int side)
-{
-    double rho = sqrt(MADD(m->x1, m->x1, x2 * x2));
-    if (rho == 0.0) return m->a * h - side * m->r * m->m0;
-    return MADD(m->a, h, m->m0 * x2 * (rho_minus_r(m, x2, rho) / rho));
-}
-
-/* F'/2 and F''/2 together (the solvers' callback, base/roots.h): one square root and one
- * division. With w = 1 / (rho (rho + r)): (rho - r)/rho = num w and 1/rho = (rho + r) w. */
-CD_INLINE double fdf(const void *ctx, double s, double *df)
-{
-    const lc_model *m = ctx;
-    double h = MADD(m->a, s, m->h), x2 = MADD(m->m0, s, m->c2);
-    double rho = sqrt(MADD(m->x1, m->x1, x2 * x2));
-    if (rho == 0.0) {
-        *df = -INFINITY;
-        return m->a * h;
-    }
-    double w = 1.0 / (rho * (rho + m->r));
-    double num = MADD(x2, x2, m->rr2);
-    double ir = (rho + m->r) * w, q = m->ax1 * ir;
-    *df = m->k - m->r * m->m0 * m->m0 * q * q * ir;
-    return MADD(m->a, h, m->m0 * x2 * (num * w));
-}
-
-/* F'/2, F''/2 and F'''/2 (the Halley solver's callback): fdf, and F'''/2 = 3 r m0^3 x1^2 x2 / rho^5
- * (infinite or NaN within ~2^-200 of the axis, where the solver then takes Newton's step). */
-CD_INLINE double fd2f(const void *ctx, double s, double *df, double *d2f)
-{
-    const lc_model *m = ctx;
-    double f = fdf(ctx, s, df);
-    double x2 = MADD(m->m0, s, m->c2);
-    double ir = 1.0 / sqrt(MADD(m->x1, m->x1, x2 * x2)), ir2 = ir * ir;
-    *d2f = m->d2c * x2 * (ir2 * ir2 * ir);
-    return f;
-}
-
-/* fd2f times P = rho^5 (rho + r) > 0, for the bracketed solver, which uses only the sign of f and
- * the ratios f / f', f f'' / f'^2: the same steps to rounding, with one division per step (the
- * step) instead of three (w, 1/rho and the step):
- *   f P = (a h Q + m0 x2 num rho^2) rho^2,   f' P = (k Q - r m0^2 x1^2 (rho + r)) rho^2,
- *   f'' P = 3 r m0^3 x1^2 x2 (rho + r),      Q = P / rho^2 = rho^3 (rho + r).
- * With Q = rho2^2 + (r rho2) rho, each is one multiply-add in rho after the square root (the
- * rest is computed beside it): the chain of a step is x2, rho2, sqrt, one multiply-add, Halley's
- * products and the division. Where rho^2 leaves [2^-100, 2^100] (rho far from 1; never in a
- * scaled problem's bracket except near the axis, where P would underflow) it is fd2f itself;
- * the solver takes f / f' where f'^2 still leaves its range. Not for cdist__root_polish, which
- * compares |f| at two points. */
-CD_INLINE double fd2f_scaled(const void *ctx, double s, double *df, double *d2f)
-{
-    const lc_model *m = ctx;
-    double h = MADD(m->a, s, m->h), x2 = MADD(m->m0, s, m->c2);
-    double rho2 = MADD(x2, x2, m->x1sq);
-    if (!(rho2 >= 0x1p-100 && rho2 <= 0x1p100)) return fd2f(ctx, s, df, d2f);
-    double rho = sqrt(rho2);
-    double num = MADD(x2, x2, m->rr2);
-    double ah = m->a * h, r2 = m->r * rho2, q2 = rho2 * rho2, c3 = m->d2c * x2;
-    *df = MADD(MADD(m->k, r2, m->dfc) * rho2, rho, MADD(m->k, q2, m->dfc * m->r) * rho2);
-    *d2f = MADD(c3, rho, c3 * m->r);
-    return MADD((ah * r2) * rho2, rho, MADD(ah, q2, m->m0 * x2 * (num * rho2)) * rho2);
-}
+/* F'/2 and F''/2, the polishing's callback (base/roots.h). */
+CD_INLINE double fdf(const void *ctx, double s, double *df) { return lc_fdf_1(ctx, s, df); }
 
 /* Squared distance (scaled) at s. */
 CD_INLINE double f_at(const lc_model *m, double s)
 {
-    double h = MADD(m->a, s, m->h), x2 = MADD(m->m0, s, m->c2);
-    double rho = sqrt(MADD(m->x1, m->x1, x2 * x2));
-    double dr = rho_minus_r(m, x2, rho);
-    return MADD(h, h, dr * dr);
+    double x2, rho;
+    return lc_f_1(m, s, &x2, &rho);
 }
 
-/* Root of F' in [lo, hi] where F' increases, from x0: safeguarded Halley (base/roots.h), which
- * commutes with s -> -s when F' is odd, so mirrored brackets give mirrored roots; the
- * accelerated variant (near a tangent line F' is nearly cubic about its root). */
+/* Root of F' in [lo, hi] where F' increases, from x0: the safeguarded Halley solver
+ * (base/roots.h), which commutes with s -> -s when F' is odd, so mirrored brackets give
+ * mirrored roots; the accelerated variant (near a tangent line F' is nearly cubic about its
+ * root). */
 CD_INLINE double solve(const lc_model *m, double lo, double hi, double x0)
 {
-    return cdist__root_halley_accel(fd2f_scaled, m, lo, hi, x0, +1, CD_ROOT_REL_ULPS * EPS, CD_ROOT_ABS, CD_ROOT_MAX_ITER);
+    halley_1 s = halley_start_1(lo, hi, x0, 1);
+    for (int it = 0; it < CD_ROOT_MAX_ITER && s.act; it++) lc_iterate_1(m, &s);
+    return s.act ? s.x : s.res;
 }
 
 /* Newton on F' from a polynomial root, kept only while |F'| decreases. */
@@ -146,7 +81,6 @@ typedef struct lc_ctx {
     double sigma;     /* scale factor (power of two) */
     double up;        /* 1 / sigma */
     double uO;        /* frame origin, scaled u */
-    double rs;        /* scaled radius */
     double eqtol;     /* on-axis tolerance for rho (scaled) */
     int n;
     cdist__cand cand[LC_MAX_CAND]; /* .equidistant: an on-axis point (every circle point as close) */
@@ -195,10 +129,8 @@ CD_INLINE vec3 circle_pt(const cdist__circle *c, double X, double Y, double *ang
 /* A critical point of the model at s. */
 CD_INLINE void offer_model(lc_ctx *x, const lc_model *m, double s)
 {
-    double h = MADD(m->a, s, m->h), x2 = MADD(m->m0, s, m->c2);
-    double rho = sqrt(MADD(m->x1, m->x1, x2 * x2));
-    double dr = rho_minus_r(m, x2, rho);
-    double d2 = (MADD(h, h, dr * dr) * x->up) * x->up;
+    double x2, rho;
+    double d2 = (lc_f_1(m, s, &x2, &rho) * x->up) * x->up;
     double t = x->t0 + (x->uO + s) * x->up; /* exact: a power of two */
     vec3 P = v_axpy(x->B, t, x->M);
     /* X = x1 e1 + x2 e2, e1 = (-e2y, e2x) */
@@ -212,15 +144,14 @@ CD_INLINE void offer_model(lc_ctx *x, const lc_model *m, double s)
 CD_INLINE void offer_end(lc_ctx *x, double t)
 {
     const cdist__circle *c = x->c;
-    vec3 P = v_axpy(x->B, t, x->M);
-    vec3 np = v_cross(c->n, P);
-    double h = v_dot(c->n, P), rho = v_norm(np);
+    double p[3], q[3], rho;
+    double d2 = lc_end_1(x->B.x, x->B.y, x->B.z, x->M.x, x->M.y, x->M.z, t, c->n.x, c->n.y, c->n.z, c->r, p, q, &rho);
+    vec3 P = v3(p[0], p[1], p[2]), np = v3(q[0], q[1], q[2]);
     vec3 w = v_cross(np, c->n);
     int on_axis = rho <= CD_ON_AXIS_ULPS * EPS * v_norm(P);
     double ang;
     vec3 K = on_axis ? circle_pt(c, 0, 0, &ang) : circle_pt(c, v_dot(c->u, w), v_dot(c->v, w), &ang);
-    double dr = rho - c->r;
-    push(x, fma(dr, dr, h * h), P, K, t, ang, on_axis && c->r > 0.0);
+    push(x, d2, P, K, t, ang, on_axis && c->r > 0.0);
 }
 
 /* Two candidates are the same minimum unless the distance rises between them by more than the
@@ -255,79 +186,22 @@ CD_INLINE void merge_basins(lc_ctx *x, const lc_model *m, double tol)
 
 /* ---- the two solvers on the general model (m0 > 0) ---- */
 
-/* ---- starts of the solver ----
- * In x2 (the in-plane coordinate along the line), F'/2 = 0 reads x2 + B = R x2 / rho with
- * B = mu m0 - c2 and R = r m0^2 (F'/2 is |x1|/m0 times y + beta - g y / sqrt(1 + y^2) in
- * y = x2 / |x1|, beta = B / |x1|, g = R / |x1|). Two approximations of x2 / rho give starts
- * within ~1e-4 of the root on most lines, so that Halley's steps end after two evaluations. */
-
-/* Far from the centre on the side sigma = +-1 of x2 (a branch of F' when g > 1):
- * x2 / rho = sigma (1 + x1^2 / x2^2)^(-1/2) ~ sigma (1 - x1^2 / (2 x2^2)), with x2 taken at the
- * limit sigma R - B (G = sigma r m0): s = -mu + sigma r m0 (1 - x1^2 / (2 x2^2)). One division;
- * NaN or far outside the bracket where that x2 is 0 (the solver then starts at the midpoint). */
-CD_INLINE double start_far(const lc_model *m, double mu, double R, double B, double sigma)
-{
-    double x2 = sigma * R - B;
-    return fma(sigma * (m->r * m->m0), 1.0 - 0.5 * (m->x1sq / (x2 * x2)), -mu);
-}
-
-/* The single root of F' when g <= 1. Near the centre (the linear part's root x2l = N / e with
- * N = -B |x1|, e = |x1| - R >= 0, within |x1|), x2 / rho to third order, (x2 / |x1|)(1 -
- * x2^2 / (2 x1^2)): one Newton step on that cubic from x2l, x2 = N (x1^2 e^3 + R N^2) /
- * (e (x1^2 e^3 + 3/2 R N^2)), in s with the same one division; otherwise start_far on the side
- * opposite to B. */
-CD_INLINE double start_single(const lc_model *m, double mu, double R, double B)
-{
-    double e = m->ax1 - R, N = -B * m->ax1;
-    if (!(fabs(N) <= m->ax1 * e)) return start_far(m, mu, R, B, B > 0.0 ? -1.0 : 1.0);
-    double e3 = m->x1sq * (e * e * e), RN2 = R * (N * N);
-    double D = e * fma(1.5, RN2, e3);
-    return fma(N, e3 + RN2, -m->c2 * D) / (m->m0 * D);
-}
-
-/* §4.2: brackets from the shape of G (odd, increasing, slope at most r m0^2/|x1| at x2 = 0),
- * local minima only, each found by safeguarded bisection. */
+/* §4.2: brackets from the shape of G (line_circle_body.h), local minima only, each solved by
+ * the safeguarded solver. */
 CD_FMA_CLONES static void robust_roots(const lc_model *m, double smin, double smax, double *roots, int *nr)
 {
-    double mu = fma(m->a, m->h, m->m0 * m->c2);
-    double lo = -mu - m->r * m->m0, hi = -mu + m->r * m->m0;
-    *nr = 0;
-    double br[2][3]; /* lo, hi, start */
+    double lo, hi, mu, R, B, br[2][3]; /* lo, hi, start */
     int nb = 0;
-    double R = m->r * m->m0 * m->m0, B = fma(mu, m->m0, -m->c2);
-    if (R <= m->ax1) {
-        /* G' <= 1 everywhere: F' increasing, one root */
-        br[nb][0] = lo;
-        br[nb][1] = hi;
-        br[nb][2] = start_single(m, mu, R, B);
+    *nr = 0;
+    if (lc_bracket_1(m, &lo, &hi, &mu, &R, &B)) {
+        br[nb][0] = lo, br[nb][1] = hi, br[nb][2] = lc_start_single_1(m, mu, R, B);
         nb++;
     } else {
-        /* Tangent points of slope 1: rho^3 = r m0^2 x1^2 (eq. (14)), x2 = -+ x2hat. F' increases
-         * left of sL, decreases between, increases right of sR. A local minimum on the left
-         * branch exists iff F'(sL) >= 0, on the right branch iff F'(sR) <= 0. */
-        double cm = cdist__cbrt(m->m0 * m->ax1);
-        double rhohat = cdist__cbrt(m->r) * cm * cm;
-        double x2hat = sqrt(cdist__fmax(0.0, (rhohat - m->ax1) * (rhohat + m->ax1)));
-        double sc = -m->c2 / m->m0;
-        double sL = sc - x2hat / m->m0, sR = sc + x2hat / m->m0;
-        double fL = fp_at(m, fma(m->a, sL, m->h), -x2hat, -1);
-        double fR = fp_at(m, fma(m->a, sR, m->h), x2hat, +1);
-        int left = fL >= 0.0, right = fR <= 0.0;
-        /* Exactly, F'(sL) > F'(sR), so one of them holds; near a flat tangency rounding can
-         * break that, and then both branches are searched. */
-        if (!left && !right) left = right = 1;
-        if (left && lo <= sL) {
-            br[nb][0] = lo;
-            br[nb][1] = cdist__fmin(sL, hi);
-            br[nb][2] = start_far(m, mu, R, B, -1.0);
-            nb++;
-        }
-        if (right && sR <= hi) {
-            br[nb][0] = cdist__fmax(sR, lo);
-            br[nb][1] = hi;
-            br[nb][2] = start_far(m, mu, R, B, 1.0);
-            nb++;
-        }
+        int hasA, hasB;
+        double hiA, x0A, loB, x0B;
+        lc_branches_1(m, lo, hi, mu, R, B, &hasA, &hiA, &x0A, &hasB, &loB, &x0B);
+        if (hasA) br[nb][0] = lo, br[nb][1] = hiA, br[nb][2] = x0A, nb++;
+        if (hasB) br[nb][0] = loB, br[nb][1] = hi, br[nb][2] = x0B, nb++;
     }
     for (int i = 0; i < nb; i++) {
         double a = cdist__fmax(br[i][0], smin), b = cdist__fmin(br[i][1], smax);
@@ -378,14 +252,8 @@ CD_INLINE cdist_status linear_circle(cdist_query *q, cdist_method method, vec3 B
     x.B = B;
     x.M = M;
     x.n = 0;
-    /* B0: the line point nearest the centre (one correction step for orthogonality). */
-    double t0 = -v_dot(B, M);
-    vec3 B0 = v_axpy(B, t0, M);
-    double dt = -v_dot(B0, M);
-    if (dt != 0.0) {
-        t0 += dt;
-        B0 = v_axpy(B, t0, M);
-    }
+    vec3 B0;
+    double t0 = lc_nearest_1(B.x, B.y, B.z, M.x, M.y, M.z, &B0.x, &B0.y, &B0.z);
     x.t0 = t0;
     double umin = tmin - t0, umax = tmax - t0; /* unscaled u = t - t0 */
     if (tmin == tmax) umin = umax;
@@ -400,52 +268,29 @@ CD_INLINE cdist_status linear_circle(cdist_query *q, cdist_method method, vec3 B
         goto done;
     }
 
-    /* B0's in-plane coordinates and height before the scale is known, then scaled (by a power
-     * of two: exact), so that they do not wait for the square root of |B0|; B0 within 2^-400
-     * of the centre is scaled first (no subnormal products). */
-    const vec3 N = c->n;
-    int early = v_maxabs(B0) >= 0x1p-400;
-    vec3 nb = v_cross(N, B0);
-    double b2x = v_dot(c->v, nb), b2y = -v_dot(c->u, nb), h0 = v_dot(N, B0);
-    double S = cdist__fmax(c->r, v_norm(B0));
-    int e = cdist__scale_exponent(S);
-    double sg = cdist__pow2(-e);
+    lc_frame_1 f = {.nx = c->n.x, .ny = c->n.y, .nz = c->n.z, .ux = c->u.x, .uy = c->u.y, .uz = c->u.z,
+                    .vx = c->v.x, .vy = c->v.y, .vz = c->v.z};
+    lc_frame_line_1(&f, c->r, B0.x, B0.y, B0.z, M.x, M.y, M.z);
+    double sg = f.sg;
     x.sigma = sg;
-    x.up = cdist__pow2(e);
-    vec3 B0s = v_scale(sg, B0);
+    x.up = f.up;
     double rs = c->r * sg;
-    x.rs = rs;
     x.eqtol = CD_LC_AXIS_ULPS * EPS * cdist__fmax(1.0, sg * v_norm(B));
     umin *= sg;
     umax *= sg;
-
-    if (early) {
-        b2x *= sg;
-        b2y *= sg;
-        h0 *= sg;
-    } else {
-        nb = v_cross(N, B0s);
-        b2x = v_dot(c->v, nb);
-        b2y = -v_dot(c->u, nb);
-        h0 = v_dot(N, B0s);
-    }
-    vec3 w = v_cross(N, M);
-    double m2x = v_dot(c->v, w), m2y = -v_dot(c->u, w);
-    double a = v_dot(N, M);
-    double mm = m2x * m2x + m2y * m2y, m0 = sqrt(mm); /* scaled: no overflow or harmful underflow */
 
     if (tmin == tmax) {
         offer_end(&x, tmin);
         goto done;
     }
 
-    if (m0 <= CD_LC_PERP_ULPS * EPS) {
+    if (f.m0 <= CD_LC_PERP_ULPS * EPS) {
         /* Perpendicular to the plane (§4.1 cases 1, 2): F = (h0 + a u)^2 + (rho - r)^2 with rho
          * constant to rounding, so the minimum is the plane crossing, clamped to the range. On
          * the axis every circle point is equally close (equidistant, also for rays/segments). */
-        double u = cdist__fmin(cdist__fmax(-h0 / a, umin), umax);
-        double X = fma(u, m2x, b2x), Y = fma(u, m2y, b2y);
-        double rho = sqrt(X * X + Y * Y), h = fma(a, u, h0), dr = rho - rs;
+        double u = cdist__fmin(cdist__fmax(-f.h0 / f.a, umin), umax);
+        double X = fma(u, f.m2x, f.b2x), Y = fma(u, f.m2y, f.b2y);
+        double rho = sqrt(X * X + Y * Y), h = fma(f.a, u, f.h0), dr = rho - rs;
         double t = x.t0 + u / sg;
         if (u == umin && isfinite(tmin)) t = tmin;
         if (u == umax && isfinite(tmax)) t = tmax;
@@ -457,32 +302,8 @@ CD_INLINE cdist_status linear_circle(cdist_query *q, cdist_method method, vec3 B
     }
 
     lc_model m;
-    m.r = rs;
-    m.a = a;
-    m.m0 = m0;
-    m.e2x = m2x / m0;
-    m.e2y = m2y / m0;
-    m.x1 = m.e2x * b2y - m.e2y * b2x;
-    m.ax1 = fabs(m.x1);
-    double c2 = fma(m.e2x, b2x, m.e2y * b2y);
-    /* Frame origin: the canonical point x2 = 0 when it is near (|uO| <= 4 in scaled units);
-     * otherwise (nearly perpendicular lines) B0 itself, to keep t free of cancellation. */
-    double us = -fma(m2x, b2x, m2y * b2y) / mm; /* -c2 / m0 with one division, off m0's root */
-    if (fabs(us) <= 4.0) {
-        x.uO = us;
-        m.c2 = 0.0;
-        m.h = fma(a, us, h0);
-    } else {
-        x.uO = 0.0;
-        m.c2 = c2;
-        m.h = h0;
-    }
+    lc_model_init_1(&m, &f, rs, &x.uO);
     double smin = umin - x.uO, smax = umax - x.uO;
-    m.x1sq = m.x1 * m.x1;
-    m.k = MADD(a, a, m0 * m0);
-    m.rr2 = (m.ax1 - rs) * (m.ax1 + rs);
-    m.dfc = -(rs * m0 * m0) * (m.ax1 * m.ax1);
-    m.d2c = -3.0 * m0 * m.dfc;
 
     double roots[4];
     int nr = -1;
@@ -537,28 +358,9 @@ CD_INLINE double range_scale(vec3 B, vec3 M, double tmin, double tmax, double r)
  * coordinates either (objects far from the coordinate origin). */
 CD_INLINE vec3 near_centre(vec3 origin, vec3 D, vec3 C, double tmin, double tmax, double *t0)
 {
-    /* origin - C = hi + lo exactly; B = hi + t0 D + lo, rounded once at the scale of B */
-    vec3 lo3, hi3;
-    hi3.x = cdist__two_diff(origin.x, C.x, &lo3.x);
-    hi3.y = cdist__two_diff(origin.y, C.y, &lo3.y);
-    hi3.z = cdist__two_diff(origin.z, C.z, &lo3.z);
-    double m = v_maxabs(D), t;
-    if (m >= 0x1p-1021 && m < 0x1p1022) {
-        /* D scaled by the power of two 2^-e of m (exact; |Ds|^2 in [1, 12)): one division,
-         * and t is exactly 2^k times itself for a query scaled by 2^k */
-        union { double d; unsigned long long u; } b = {m};
-        int e = (int)((b.u >> 52) & 0x7ff) - 1023;
-        double p = cdist__pow2(-e);
-        vec3 Ds = v_scale(p, D);
-        t = -(v_dot(hi3, Ds) / v_sqr(Ds)) * p;
-    } else {
-        vec3 Ds = v_scale(1.0 / m, D); /* |D|^2 may underflow or overflow, |Ds|^2 cannot */
-        t = -(v_dot(hi3, Ds) / v_sqr(Ds)) / m;
-    }
-    if (!isfinite(t)) t = 0.0;
-    t = cdist__fmin(cdist__fmax(t, tmin), tmax); /* rays and segments: stay on the object (no cancellation in t) */
-    *t0 = t;
-    return v_add(v_axpy(hi3, t, D), lo3);
+    vec3 B;
+    *t0 = lc_near_centre_1(origin.x, origin.y, origin.z, D.x, D.y, D.z, C.x, C.y, C.z, tmin, tmax, &B.x, &B.y, &B.z);
+    return B;
 }
 
 CD_FMA_CLONES vec3 cdist__line_near_centre(vec3 origin, vec3 D, vec3 C, double tmin, double tmax, double *t0)
@@ -605,24 +407,6 @@ CD_INLINE cdist_status run_scaled(cdist_query *q, vec3 origin, vec3 D, vec3 M, d
                           r, used);
     if (st == CDIST_OK) cdist__result_unscale(r, cdist__pow2(e));
     return st;
-}
-
-cdist_status cdist__check_line_ray_slow(cdist_query *q, const void *obj, const cdist_vec3 *origin, const cdist_vec3 *dir,
-                                       int is_ray, vec3 *M, double *len)
-{
-    cdist_status st;
-    if ((st = cdist__check_ptr(q, obj, is_ray ? "ray" : "line")) ||
-        (st = cdist__check_point(q, origin, is_ray ? "ray origin" : "line origin")))
-        return st;
-    return cdist__check_direction(q, dir, is_ray ? "ray direction" : "line direction", 1, M, len);
-}
-
-cdist_status cdist__check_segment(cdist_query *q, const cdist_segment *s)
-{
-    cdist_status st;
-    if ((st = cdist__check_ptr(q, s, "segment")) || (st = cdist__check_point(q, &s->p0, "segment p0")))
-        return st;
-    return cdist__check_point(q, &s->p1, "segment p1");
 }
 
 /* FMA clone: the circle's basis (v_basis) inlined here is a chain of fma() calls, which outside

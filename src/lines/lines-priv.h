@@ -50,18 +50,4 @@ static inline double cdist__lines_scaled_length(double len, vec3 Ds, double down
     return v_norm(v_scale(cdist__pow2(-k), Ds)) * cdist__pow2(k);
 }
 
-/* The checks of a line or ray (the object, its origin, its unit direction: M, and the length
- * as passed: len) and of a segment (the object and both end points), shared by the circle and
- * disk queries. The line's is inline for the entries' FMA clones: its fast part accepts, the
- * slow part (out of line) decides and reports whatever that doubts. */
-cdist_status cdist__check_line_ray_slow(cdist_query *q, const void *obj, const cdist_vec3 *origin, const cdist_vec3 *dir,
-                                       int is_ray, vec3 *M, double *len);
-CD_INLINE cdist_status cdist__check_line_ray(cdist_query *q, const void *obj, const cdist_vec3 *origin,
-                                             const cdist_vec3 *dir, int is_ray, vec3 *M, double *len)
-{
-    if (obj && cdist__in_range(*origin) && cdist__direction_fast_body(q->unit_tol, dir, M, len)) return CDIST_OK;
-    return cdist__check_line_ray_slow(q, obj, origin, dir, is_ray, M, len);
-}
-cdist_status cdist__check_segment(cdist_query *q, const cdist_segment *s);
-
 #endif

@@ -9,9 +9,9 @@
  * - the kernel answers an entry only if the single query accepts it (a rejected entry is always
  *   left to the scalar path), and then within 2 ulps of scale of the single query's distance
  *   (the bar of issue #11; scale as the reference files define it, tools/query_io.c); the
- *   kernel repeats the scalar arithmetic (src/lines/line_circle.c, its solver
- *   cdist__root_halley_accel), so all of them are bit-identical while the two are kept in step
- *   (the count of those that are not is printed: 0 expected);
+ *   kernel runs the single query's body (src/lines/line_circle_body.h, the solver of
+ *   src/base/roots_halley.h) in lanes, so all of them are bit-identical (the count of those
+ *   that are not is printed: 0 expected);
  * - it leaves few valid entries of the random files to the scalar path (counted and printed);
  * - the public cdist_batch_distance agrees with the single queries (status and distance). */
 #include "../../src/batch/line_kernel.c"
