@@ -221,36 +221,17 @@ CD_INLINE int cdist__circle_fast_basis(double unit_tol, const cdist_circle *c, c
 cdist_status cdist__check_circle_nobasis(cdist_query *q, const cdist_circle *c, const char *what, cdist__circle *out);
 
 /* ---- the family table (src/api/family.c) ----
- * One row per query family, indexed like the public cdist_kind numbers of the batch API: the
+ * One row per query family, numbered like its cdist_kind (the registry src/api/kinds.def): the
  * methods it implements, what AUTO (or a method it lacks) runs, and which methods may call GSL
  * (AUTO and ROBUST never do). */
 typedef enum cdist__fam {
-    CD_FAM_POINT_CIRCLE = 0,
-    CD_FAM_POINT_DISK = 1,
-    CD_FAM_LINE_CIRCLE = 2,
-    CD_FAM_RAY_CIRCLE = 3,
-    CD_FAM_SEGMENT_CIRCLE = 4,
-    CD_FAM_CIRCLE_CIRCLE = 5,
-    CD_FAM_LINE_DISK = 6,
-    CD_FAM_RAY_DISK = 7,
-    CD_FAM_SEGMENT_DISK = 8,
-    CD_FAM_CIRCLE_DISK = 9,
-    CD_FAM_DISK_DISK = 10,
-    CD_FAM_CURVE_CIRCLE = 11,
-    CD_FAM_CURVE_DISK = 12,
-    CD_FAM_ARC_CIRCLE = 13,
-    CD_FAM_ARC_ARC = 14,
-    CD_FAM_SEGMENT_ARC = 15,
-    CD_FAM_ARC_DISK = 16,
-    CD_FAM_HELIX_CIRCLE = 17,
-    CD_FAM_HELIX_DISK = 18,
-    CD_FAM_BEZIER3_CIRCLE = 19,
-    CD_FAM_BEZIER3_DISK = 20,
+#define CD_KIND(KIND, number, ...) CD_FAM_##KIND = number,
+#define CD_CURVE_KIND(KIND, number, ...) CD_FAM_##KIND = number,
+#include "api/kinds.def"
     CD_FAM_COUNT
 } cdist__fam;
 
 typedef struct cdist__family {
-    const char *name;         /* "point_circle", ... (the cdist_kind_name of the batch API) */
     unsigned methods;         /* CD_HAS(m) for every method the family implements */
     cdist_method auto_method; /* what AUTO and an unimplemented method run */
     unsigned gsl_methods;     /* methods that may call GSL */
