@@ -9,6 +9,7 @@
 
 #include "circledist.h"
 #include "base/poly.h"
+#include "base/pool.h"
 #include "base/tolerances.h"
 #include "base/vec.h"
 
@@ -39,7 +40,7 @@ struct cdist_query {
      * worker pool and the worker handles) needs its own flag. Option setters and
      * cdist_query_set_threads refuse while it is set. */
     atomic_int batch_busy;
-    struct cdist__workers *workers; /* batch worker threads and their handles (src/batch); NULL = 1 thread */
+    struct cdist__workers *workers; /* worker threads and their handles (below); NULL = 1 thread */
     /* Progress reporting of long calls (cdist_query_set_progress): kept on the calling handle
      * only (worker handles never report), so it is not copied to the workers. */
     cdist_progress_fn progress_fn;
@@ -54,9 +55,32 @@ static inline int cdist__progress_report(const cdist_query *q, size_t done, size
     return q->progress_fn ? q->progress_fn(q->progress_user, done, total) != 0 : 0;
 }
 
-/* Batch workers (src/batch/workers.c). cdist__workers_free joins the threads and frees their handles
- * (NULL allowed). cdist__workers_sync gives every worker handle the options of q, sizing their
- * workspaces (called by every option setter, so that a batch never allocates). */
+/* ---- worker threads (src/api/threads.c) ----
+ * The lowest failing entry one thread met in a call of many entries (fail == SIZE_MAX: none),
+ * with its status and message. */
+typedef struct cdist__slot {
+    size_t fail;
+    cdist_status status;
+    char message[CD_MESSAGE_LEN];
+} cdist__slot;
+
+/* A worker thread's own handle (workspaces included) and its failure record. */
+typedef struct cdist__worker {
+    cdist_query *handle;
+    cdist__slot slot;
+} cdist__worker;
+
+/* The workers of a handle with T = threads > 1: T - 1 pool threads, worker k answering with
+ * w[k].handle; the calling thread is the T-th and answers with the handle itself. */
+struct cdist__workers {
+    int threads;
+    cdist__pool *pool;
+    cdist__worker w[];
+};
+
+/* cdist__workers_free joins the threads and frees their handles (NULL allowed).
+ * cdist__workers_sync gives every worker handle the options of q, sizing their workspaces
+ * (called by every option setter, so that a batch never allocates). */
 void cdist__workers_free(struct cdist__workers *w);
 cdist_status cdist__workers_sync(cdist_query *q);
 
