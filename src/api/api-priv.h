@@ -8,6 +8,7 @@
 #include <stddef.h>
 
 #include "circledist.h"
+#include "base/numeric.h"
 #include "base/poly.h"
 #include "base/pool.h"
 #include "base/tolerances.h"

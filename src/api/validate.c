@@ -3,7 +3,7 @@
 #include <math.h>
 #include <stdio.h>
 
-#include "internal.h"
+#include "api/api-priv.h"
 
 cdist_status cdist__check_handle(cdist_query *q, cdist_result *r)
 {

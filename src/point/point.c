@@ -4,7 +4,8 @@
  * sqrt(|D|^2 - h^2) would cancel). */
 #include <math.h>
 
-#include "internal.h"
+#include "api/api-priv.h"
+#include "point/point-priv.h"
 
 /* Circle angle of the in-plane direction w without the basis: with k the basis index of
  * v_basis (smallest |n_k|), u = (e_k - n_k n)/s and v = n x u for s = |e_k - n_k n| > 0, so
