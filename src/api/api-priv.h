@@ -71,8 +71,9 @@ typedef struct cdist__worker {
     cdist__slot slot;
 } cdist__worker;
 
-/* The workers of a handle with T = threads > 1: T - 1 pool threads, worker k answering with
- * w[k].handle; the calling thread is the T-th and answers with the handle itself. */
+/* The workers of a handle with T = threads > 1: T - 1 pool threads, pool worker k (1 .. T - 1)
+ * answering with w[k - 1].handle; the calling thread is the T-th and answers with the handle
+ * itself. */
 struct cdist__workers {
     int threads;
     cdist__pool *pool;

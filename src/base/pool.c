@@ -93,7 +93,7 @@ cdist__pool *cdist__pool_new(int workers, int *error, int *failed)
     atomic_init(&p->generation, 0);
     for (int i = 0; i < workers; i++) {
         p->t[i].pool = p;
-        p->t[i].index = i;
+        p->t[i].index = i + 1;
         int e = pthread_create(&p->t[i].thread, NULL, thread_main, &p->t[i]);
         if (e) {
             cdist__pool_free(p);

@@ -5,7 +5,8 @@
 #ifndef CDIST_BASE_POOL_H
 #define CDIST_BASE_POOL_H
 
-/* What every worker runs: worker is its index, 0 .. workers - 1. */
+/* What every worker runs: worker is its number, 1 .. workers (0 is left to the calling thread,
+ * which usually runs the same task alongside). */
 typedef void (*cdist__pool_task)(void *arg, int worker);
 
 typedef struct cdist__pool cdist__pool;

@@ -45,7 +45,7 @@ static void drain(cdist__run *run, const cdist__job *job, cdist_query *h, cdist_
 static void worker_task(void *arg, int k)
 {
     cdist__run *run = arg;
-    cdist__worker *w = &run->q->workers->w[k];
+    cdist__worker *w = &run->q->workers->w[k - 1];
     w->slot.fail = SIZE_MAX;
     drain(run, run->job, w->handle, &w->slot, NULL);
 }
