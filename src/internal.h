@@ -1,8 +1,9 @@
 /* SPDX-License-Identifier: MIT */
 /* Internal declarations shared by the query families. Nothing here is exported.
- * Umbrella header: the base layer (src/base), the API layer (src/api) and the point and lines
- * families (src/point, src/lines) have their own headers, included here so that every family
- * can keep including "internal.h". */
+ * Umbrella header for the families from lines up: the base layer (src/base), the API layer
+ * (src/api) and the point and lines families (src/point, src/lines) have their own headers,
+ * included here. Below the lines family (src/base, src/api, src/point) files include only the
+ * headers of their own and lower layers (tests/layers checks it). */
 #ifndef CDIST_INTERNAL_H
 #define CDIST_INTERNAL_H
 

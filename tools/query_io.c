@@ -47,47 +47,11 @@ static cdist_line line_at(const double *v) { cdist_line l = {vec_at(v), vec_at(v
 static cdist_ray ray_at(const double *v) { cdist_ray l = {vec_at(v), vec_at(v + 3)}; return l; }
 static cdist_segment segment_at(const double *v) { cdist_segment l = {vec_at(v), vec_at(v + 3)}; return l; }
 
-/* Per kind, once: where its two objects are in a line (objects_KK) and the public call that
- * answers them (run_KK). */
-#define KIND(kk, TA, A_AT, TB, B_AT, CALL)                                                         \
-    static void objects_##kk(const double *v, void *a, void *b)                                   \
-    {                                                                                              \
-        *(TA *)a = A_AT;                                                                           \
-        *(TB *)b = B_AT;                                                                           \
-    }                                                                                              \
-    static cdist_status run_##kk(cdist_query *q, const double *v, cdist_result *r)                 \
-    {                                                                                              \
-        TA a;                                                                                      \
-        TB b;                                                                                      \
-        objects_##kk(v, &a, &b);                                                                   \
-        return CALL(q, &a, &b, r);                                                                 \
-    }
-KIND(pc, cdist_vec3, vec_at(v), cdist_circle, circle_at(v + 3), cdist_point_circle)
-KIND(pd, cdist_vec3, vec_at(v), cdist_circle, circle_at(v + 3), cdist_point_disk)
-KIND(lc, cdist_line, line_at(v), cdist_circle, circle_at(v + 6), cdist_line_circle)
-KIND(rc, cdist_ray, ray_at(v), cdist_circle, circle_at(v + 6), cdist_ray_circle)
-KIND(sc, cdist_segment, segment_at(v), cdist_circle, circle_at(v + 6), cdist_segment_circle)
-KIND(ld, cdist_line, line_at(v), cdist_circle, circle_at(v + 6), cdist_line_disk)
-KIND(rd, cdist_ray, ray_at(v), cdist_circle, circle_at(v + 6), cdist_ray_disk)
-KIND(sd, cdist_segment, segment_at(v), cdist_circle, circle_at(v + 6), cdist_segment_disk)
-KIND(cc, cdist_circle, circle_at(v), cdist_circle, circle_at(v + 7), cdist_circle_circle)
-KIND(cd, cdist_circle, circle_at(v), cdist_circle, circle_at(v + 7), cdist_circle_disk)
-KIND(dd, cdist_circle, circle_at(v), cdist_circle, circle_at(v + 7), cdist_disk_disk)
-KIND(ac, cdist_arc, arc_at(v), cdist_circle, circle_at(v + 12), cdist_arc_circle)
-KIND(aa, cdist_arc, arc_at(v), cdist_arc, arc_at(v + 12), cdist_arc_arc)
-KIND(sa, cdist_segment, segment_at(v), cdist_arc, arc_at(v + 6), cdist_segment_arc)
-KIND(ad, cdist_arc, arc_at(v), cdist_circle, circle_at(v + 12), cdist_arc_disk)
-KIND(hc, cdist_helix, helix_at(v), cdist_circle, circle_at(v + 13), cdist_helix_circle)
-KIND(hd, cdist_helix, helix_at(v), cdist_circle, circle_at(v + 13), cdist_helix_disk)
-KIND(bc, cdist_bezier3, bezier_at(v), cdist_circle, circle_at(v + 12), cdist_bezier3_circle)
-KIND(bd, cdist_bezier3, bezier_at(v), cdist_circle, circle_at(v + 12), cdist_bezier3_disk)
-#undef KIND
-
 #ifndef CDQ_NO_SWEPT /* defined when building against a library without swept objects (scripts/bench-compare.sh) */
 /* ---- swept kinds (src/swept) ----
  * A contact is written into the cdist_result the tool prints: distance = the signed distance,
  * sqr_distance = NaN (meaningless when negative), the points = the witness points on the
- * surfaces, params = the core parameters. They have no batch kind (objects NULL). */
+ * surfaces, params = the core parameters. */
 static cdist_torus torus_at(const double *v) { cdist_torus t = {circle_at(v), v[7]}; return t; }
 static cdist_capsule capsule_at(const double *v) { cdist_capsule c = {{vec_at(v), vec_at(v + 3)}, v[6]}; return c; }
 static cdist_sphere sphere_at(const double *v) { cdist_sphere s = {vec_at(v), v[3]}; return s; }
@@ -109,78 +73,80 @@ static cdist_status contact_to_result(cdist_status st, const cdist_contact *c, c
     return st;
 }
 
-#define SWEPT(kk, TA, A_AT, TB, B_AT, CALL)                                                        \
-    static cdist_status run_##kk(cdist_query *q, const double *v, cdist_result *r)                 \
-    {                                                                                              \
-        TA a = A_AT;                                                                               \
-        TB b = B_AT;                                                                               \
-        cdist_contact c;                                                                           \
-        return contact_to_result(CALL(q, &a, &b, &c), &c, r);                                      \
-    }
-SWEPT(TT, cdist_torus, torus_at(v), cdist_torus, torus_at(v + 8), cdist_torus_torus)
-SWEPT(TK, cdist_torus, torus_at(v), cdist_capsule, capsule_at(v + 8), cdist_torus_capsule)
-SWEPT(TS, cdist_torus, torus_at(v), cdist_sphere, sphere_at(v + 8), cdist_torus_sphere)
-SWEPT(TR, cdist_torus, torus_at(v), cdist_rounded_disk, rdisk_at(v + 8), cdist_torus_rounded_disk)
-SWEPT(KK, cdist_capsule, capsule_at(v), cdist_capsule, capsule_at(v + 7), cdist_capsule_capsule)
-SWEPT(KS, cdist_capsule, capsule_at(v), cdist_sphere, sphere_at(v + 7), cdist_capsule_sphere)
-SWEPT(KR, cdist_capsule, capsule_at(v), cdist_rounded_disk, rdisk_at(v + 7), cdist_capsule_rounded_disk)
-SWEPT(SS, cdist_sphere, sphere_at(v), cdist_sphere, sphere_at(v + 4), cdist_sphere_sphere)
-SWEPT(SR, cdist_sphere, sphere_at(v), cdist_rounded_disk, rdisk_at(v + 4), cdist_sphere_rounded_disk)
-SWEPT(RR, cdist_rounded_disk, rdisk_at(v), cdist_rounded_disk, rdisk_at(v + 8), cdist_rounded_disk_rounded_disk)
-SWEPT(Tl, cdist_torus, torus_at(v), cdist_line, line_at(v + 8), cdist_torus_line)
-SWEPT(Tr, cdist_torus, torus_at(v), cdist_ray, ray_at(v + 8), cdist_torus_ray)
-SWEPT(Ts, cdist_torus, torus_at(v), cdist_segment, segment_at(v + 8), cdist_torus_segment)
-SWEPT(Kc, cdist_capsule, capsule_at(v), cdist_circle, circle_at(v + 7), cdist_capsule_circle)
-SWEPT(Kd, cdist_capsule, capsule_at(v), cdist_circle, circle_at(v + 7), cdist_capsule_disk)
-SWEPT(Sc, cdist_sphere, sphere_at(v), cdist_circle, circle_at(v + 4), cdist_sphere_circle)
-SWEPT(Sd, cdist_sphere, sphere_at(v), cdist_circle, circle_at(v + 4), cdist_sphere_disk)
-#undef SWEPT
 /* ---- end of swept kinds ---- */
 #endif
 
-const cdq_kind cdq_kinds[] = {
-    {"pc", 10, run_pc, objects_pc, 0, {6, 0}, "Px Py Pz  " CIRC_COLS, "point to circle"},
-    {"pd", 10, run_pd, objects_pd, 1, {6, 0}, "Px Py Pz  " CIRC_COLS, "point to disk"},
-    {"lc", 13, run_lc, objects_lc, 2, {3, 9}, "Bx By Bz  Mx My Mz  " CIRC_COLS, "line B + t M to circle"},
-    {"rc", 13, run_rc, objects_rc, 3, {3, 9}, "Bx By Bz  Mx My Mz  " CIRC_COLS, "ray B + t M (t >= 0) to circle"},
-    {"sc", 13, run_sc, objects_sc, 4, {9, 0}, "P0x P0y P0z  P1x P1y P1z  " CIRC_COLS, "segment P0 P1 to circle"},
-    {"cc", 14, run_cc, objects_cc, 5, {3, 10}, "C0x C0y C0z N0x N0y N0z r0  C1x C1y C1z N1x N1y N1z r1", "circle to circle"},
-    {"ld", 13, run_ld, objects_ld, 6, {3, 9}, "Bx By Bz  Mx My Mz  " CIRC_COLS, "line to disk"},
-    {"rd", 13, run_rd, objects_rd, 7, {3, 9}, "Bx By Bz  Mx My Mz  " CIRC_COLS, "ray to disk"},
-    {"sd", 13, run_sd, objects_sd, 8, {9, 0}, "P0x P0y P0z  P1x P1y P1z  " CIRC_COLS, "segment to disk"},
-    {"cd", 14, run_cd, objects_cd, 9, {3, 10}, "C0x C0y C0z N0x N0y N0z r0  C1x C1y C1z N1x N1y N1z r1", "circle (first) to disk (second)"},
-    {"dd", 14, run_dd, objects_dd, 10, {3, 10}, "C0x C0y C0z N0x N0y N0z r0  C1x C1y C1z N1x N1y N1z r1", "disk to disk"},
-    {"ac", 19, run_ac, objects_ac, 13, {3, 15}, ARC_COLS "  " CIRC_COLS, "arc to circle"},
-    {"aa", 24, run_aa, objects_aa, 14, {3, 15}, ARC_COLS "  " ARC_COLS, "arc to arc"},
-    {"sa", 18, run_sa, objects_sa, 15, {9, 0}, "P0x P0y P0z  P1x P1y P1z  " ARC_COLS, "segment to arc"},
-    {"ad", 19, run_ad, objects_ad, 16, {3, 15}, ARC_COLS "  " CIRC_COLS, "arc to disk"},
-    {"hc", 20, run_hc, objects_hc, 17, {3, 16}, "Cx Cy Cz Ax Ay Az Ux Uy Uz r pitch t0 t1  " CIRC_COLS, "helix to circle"},
-    {"hd", 20, run_hd, objects_hd, 18, {3, 16}, "Cx Cy Cz Ax Ay Az Ux Uy Uz r pitch t0 t1  " CIRC_COLS, "helix to disk"},
-    {"bc", 19, run_bc, objects_bc, 19, {15, 0}, "P0x P0y P0z P1x P1y P1z P2x P2y P2z P3x P3y P3z  " CIRC_COLS, "cubic Bezier to circle"},
-    {"bd", 19, run_bd, objects_bd, 20, {15, 0}, "P0x P0y P0z P1x P1y P1z P2x P2y P2z P3x P3y P3z  " CIRC_COLS, "cubic Bezier to disk"},
+/* Each object type as numbers on a line: CDQ_TYPE_<type> is (count, offset of its vector that
+ * must be unit length (0: none), column names, reader). */
+#define CDQ_TYPE_cdist_vec3 (3, 0, "Px Py Pz", vec_at)
+#define CDQ_TYPE_cdist_line (6, 3, "Bx By Bz  Mx My Mz", line_at)
+#define CDQ_TYPE_cdist_ray (6, 3, "Bx By Bz  Mx My Mz", ray_at)
+#define CDQ_TYPE_cdist_segment (6, 0, "P0x P0y P0z  P1x P1y P1z", segment_at)
+#define CDQ_TYPE_cdist_circle (7, 3, CIRC_COLS, circle_at)
+#define CDQ_TYPE_cdist_arc (12, 3, ARC_COLS, arc_at)
+#define CDQ_TYPE_cdist_helix (13, 3, "Cx Cy Cz Ax Ay Az Ux Uy Uz r pitch t0 t1", helix_at)
+#define CDQ_TYPE_cdist_bezier3 (12, 0, "P0x P0y P0z P1x P1y P1z P2x P2y P2z P3x P3y P3z", bezier_at)
+#define CDQ_TYPE_cdist_torus (8, 3, TORUS_COLS, torus_at)
+#define CDQ_TYPE_cdist_capsule (7, 0, CAPS_COLS, capsule_at)
+#define CDQ_TYPE_cdist_sphere (4, 0, SPH_COLS, sphere_at)
+#define CDQ_TYPE_cdist_rounded_disk (8, 3, RDISK_COLS, rdisk_at)
+#define CDQ_COUNT_(n, unit, cols, at) n
+#define CDQ_UNIT_(n, unit, cols, at) unit
+#define CDQ_COLS_(n, unit, cols, at) cols
+#define CDQ_AT_(n, unit, cols, at) at
+#define CDQ_COUNT(T) CDQ_COUNT_ T
+#define CDQ_UNIT(T) CDQ_UNIT_ T
+#define CDQ_COLS(T) CDQ_COLS_ T
+#define CDQ_AT(T) CDQ_AT_ T
+
+/* Per kind of the registry (src/api/kinds.def), once: where its two objects are in a line
+ * (objects_NAME), the public call that answers them (run_NAME) and its row of the table. */
+#define CDQ_OBJECTS(name, TA, TB)                                                                  \
+    static void objects_##name(const double *v, void *a, void *b)                                 \
+    {                                                                                              \
+        *(TA *)a = CDQ_AT(CDQ_TYPE_##TA)(v);                                                       \
+        *(TB *)b = CDQ_AT(CDQ_TYPE_##TB)(v + CDQ_COUNT(CDQ_TYPE_##TA));                            \
+    }
+#define CD_KIND(KIND, number, name, letters, TA, TB, ...)                                          \
+    CDQ_OBJECTS(name, TA, TB)                                                                      \
+    static cdist_status run_##name(cdist_query *q, const double *v, cdist_result *r)               \
+    {                                                                                              \
+        TA a;                                                                                      \
+        TB b;                                                                                      \
+        objects_##name(v, &a, &b);                                                                 \
+        return cdist_##name(q, &a, &b, r);                                                         \
+    }
+/* A contact is written into the cdist_result the tool prints (contact_to_result). The tool
+ * answers them one by one even with -j (objects NULL, no batch kind). */
+#define CDQ_CONTACT_RUN(KIND, number, name, letters, TA, TB, ...)                                  \
+    static cdist_status run_##name(cdist_query *q, const double *v, cdist_result *r)               \
+    {                                                                                              \
+        TA a = CDQ_AT(CDQ_TYPE_##TA)(v);                                                           \
+        TB b = CDQ_AT(CDQ_TYPE_##TB)(v + CDQ_COUNT(CDQ_TYPE_##TA));                                \
+        cdist_contact c;                                                                           \
+        return contact_to_result(cdist_##name(q, &a, &b, &c), &c, r);                              \
+    }
 #ifndef CDQ_NO_SWEPT
-    /* ---- swept kinds (src/swept): upper case T torus, K capsule, S sphere, R rounded disk,
-     * lower case the plain object. distance is signed (negative: penetration depth), the
-     * points are the witness points on the surfaces (cdist_contact). ---- */
-    {"TT", 16, run_TT, NULL, -1, {3, 11}, TORUS_COLS "  " TORUS_COLS, "torus to torus (signed)"},
-    {"TK", 15, run_TK, NULL, -1, {3, 0}, TORUS_COLS "  " CAPS_COLS, "torus to capsule (signed)"},
-    {"TS", 12, run_TS, NULL, -1, {3, 0}, TORUS_COLS "  " SPH_COLS, "torus to sphere (signed)"},
-    {"TR", 16, run_TR, NULL, -1, {3, 11}, TORUS_COLS "  " RDISK_COLS, "torus to rounded disk (signed)"},
-    {"KK", 14, run_KK, NULL, -1, {0, 0}, CAPS_COLS "  " CAPS_COLS, "capsule to capsule (signed)"},
-    {"KS", 11, run_KS, NULL, -1, {0, 0}, CAPS_COLS "  " SPH_COLS, "capsule to sphere (signed)"},
-    {"KR", 15, run_KR, NULL, -1, {10, 0}, CAPS_COLS "  " RDISK_COLS, "capsule to rounded disk (signed)"},
-    {"SS", 8, run_SS, NULL, -1, {0, 0}, SPH_COLS "  " SPH_COLS, "sphere to sphere (signed)"},
-    {"SR", 12, run_SR, NULL, -1, {7, 0}, SPH_COLS "  " RDISK_COLS, "sphere to rounded disk (signed)"},
-    {"RR", 16, run_RR, NULL, -1, {3, 11}, RDISK_COLS "  " RDISK_COLS, "rounded disk to rounded disk (signed)"},
-    {"Tl", 14, run_Tl, NULL, -1, {3, 11}, TORUS_COLS "  Bx By Bz  Mx My Mz", "torus to line (signed)"},
-    {"Tr", 14, run_Tr, NULL, -1, {3, 11}, TORUS_COLS "  Bx By Bz  Mx My Mz", "torus to ray (signed)"},
-    {"Ts", 14, run_Ts, NULL, -1, {3, 0}, TORUS_COLS "  P0x P0y P0z  P1x P1y P1z", "torus to segment (signed)"},
-    {"Kc", 14, run_Kc, NULL, -1, {10, 0}, CAPS_COLS "  " CIRC_COLS, "capsule to circle (signed)"},
-    {"Kd", 14, run_Kd, NULL, -1, {10, 0}, CAPS_COLS "  " CIRC_COLS, "capsule to disk (signed)"},
-    {"Sc", 11, run_Sc, NULL, -1, {7, 0}, SPH_COLS "  " CIRC_COLS, "sphere to circle (signed)"},
-    {"Sd", 11, run_Sd, NULL, -1, {7, 0}, SPH_COLS "  " CIRC_COLS, "sphere to disk (signed)"},
-    /* ---- end of swept kinds ---- */
+#define CD_CONTACT_KIND CDQ_CONTACT_RUN
 #endif
+#include "../src/api/kinds.def"
+#undef CDQ_CONTACT_RUN
+
+/* The offsets of the unit vectors in a line of A then B: A's (when it has one), then B's. */
+#define CDQ_UNIT_B(TA, TB) (CDQ_UNIT(CDQ_TYPE_##TB) ? CDQ_COUNT(CDQ_TYPE_##TA) + CDQ_UNIT(CDQ_TYPE_##TB) : 0)
+#define CDQ_ROW(letters, name, TA, TB, objects, batch_kind, help)                                  \
+    {#letters, CDQ_COUNT(CDQ_TYPE_##TA) + CDQ_COUNT(CDQ_TYPE_##TB), run_##name, objects, batch_kind, \
+     {CDQ_UNIT(CDQ_TYPE_##TA) ? CDQ_UNIT(CDQ_TYPE_##TA) : CDQ_UNIT_B(TA, TB),                        \
+      CDQ_UNIT(CDQ_TYPE_##TA) ? CDQ_UNIT_B(TA, TB) : 0},                                           \
+     CDQ_COLS(CDQ_TYPE_##TA) "  " CDQ_COLS(CDQ_TYPE_##TB), help},
+const cdq_kind cdq_kinds[] = {
+#define CD_KIND(KIND, number, name, letters, TA, TB, grad, methods, auto_method, gsl_methods, kernel, help)        \
+    CDQ_ROW(letters, name, TA, TB, objects_##name, number, help)
+#ifndef CDQ_NO_SWEPT
+#define CD_CONTACT_KIND(KIND, number, name, letters, TA, TB, kernel, swap, help)                                   \
+    CDQ_ROW(letters, name, TA, TB, NULL, -1, help)
+#endif
+#include "../src/api/kinds.def"
     {NULL, 0, NULL, NULL, -1, {0, 0}, NULL, NULL},
 };
 

@@ -8,7 +8,9 @@
 #include <stddef.h>
 
 #include "circledist.h"
+#include "base/numeric.h"
 #include "base/poly.h"
+#include "base/pool.h"
 #include "base/tolerances.h"
 #include "base/vec.h"
 
@@ -39,7 +41,7 @@ struct cdist_query {
      * worker pool and the worker handles) needs its own flag. Option setters and
      * cdist_query_set_threads refuse while it is set. */
     atomic_int batch_busy;
-    struct cdist__workers *workers; /* batch worker threads and their handles (src/batch); NULL = 1 thread */
+    struct cdist__workers *workers; /* worker threads and their handles (below); NULL = 1 thread */
     /* Progress reporting of long calls (cdist_query_set_progress): kept on the calling handle
      * only (worker handles never report), so it is not copied to the workers. */
     cdist_progress_fn progress_fn;
@@ -54,9 +56,33 @@ static inline int cdist__progress_report(const cdist_query *q, size_t done, size
     return q->progress_fn ? q->progress_fn(q->progress_user, done, total) != 0 : 0;
 }
 
-/* Batch workers (src/batch/workers.c). cdist__workers_free joins the threads and frees their handles
- * (NULL allowed). cdist__workers_sync gives every worker handle the options of q, sizing their
- * workspaces (called by every option setter, so that a batch never allocates). */
+/* ---- worker threads (src/api/threads.c) ----
+ * The lowest failing entry one thread met in a call of many entries (fail == SIZE_MAX: none),
+ * with its status and message. */
+typedef struct cdist__slot {
+    size_t fail;
+    cdist_status status;
+    char message[CD_MESSAGE_LEN];
+} cdist__slot;
+
+/* A worker thread's own handle (workspaces included) and its failure record. */
+typedef struct cdist__worker {
+    cdist_query *handle;
+    cdist__slot slot;
+} cdist__worker;
+
+/* The workers of a handle with T = threads > 1: T - 1 pool threads, pool worker k (1 .. T - 1)
+ * answering with w[k - 1].handle; the calling thread is the T-th and answers with the handle
+ * itself. */
+struct cdist__workers {
+    int threads;
+    cdist__pool *pool;
+    cdist__worker w[];
+};
+
+/* cdist__workers_free joins the threads and frees their handles (NULL allowed).
+ * cdist__workers_sync gives every worker handle the options of q, sizing their workspaces
+ * (called by every option setter, so that a batch never allocates). */
 void cdist__workers_free(struct cdist__workers *w);
 cdist_status cdist__workers_sync(cdist_query *q);
 
@@ -235,36 +261,17 @@ CD_INLINE cdist_status cdist__check_line_ray(cdist_query *q, const void *obj, co
 cdist_status cdist__check_segment(cdist_query *q, const cdist_segment *s);
 
 /* ---- the family table (src/api/family.c) ----
- * One row per query family, indexed like the public cdist_kind numbers of the batch API: the
+ * One row per query family, numbered like its cdist_kind (the registry src/api/kinds.def): the
  * methods it implements, what AUTO (or a method it lacks) runs, and which methods may call GSL
  * (AUTO and ROBUST never do). */
 typedef enum cdist__fam {
-    CD_FAM_POINT_CIRCLE = 0,
-    CD_FAM_POINT_DISK = 1,
-    CD_FAM_LINE_CIRCLE = 2,
-    CD_FAM_RAY_CIRCLE = 3,
-    CD_FAM_SEGMENT_CIRCLE = 4,
-    CD_FAM_CIRCLE_CIRCLE = 5,
-    CD_FAM_LINE_DISK = 6,
-    CD_FAM_RAY_DISK = 7,
-    CD_FAM_SEGMENT_DISK = 8,
-    CD_FAM_CIRCLE_DISK = 9,
-    CD_FAM_DISK_DISK = 10,
-    CD_FAM_CURVE_CIRCLE = 11,
-    CD_FAM_CURVE_DISK = 12,
-    CD_FAM_ARC_CIRCLE = 13,
-    CD_FAM_ARC_ARC = 14,
-    CD_FAM_SEGMENT_ARC = 15,
-    CD_FAM_ARC_DISK = 16,
-    CD_FAM_HELIX_CIRCLE = 17,
-    CD_FAM_HELIX_DISK = 18,
-    CD_FAM_BEZIER3_CIRCLE = 19,
-    CD_FAM_BEZIER3_DISK = 20,
+#define CD_KIND(KIND, number, ...) CD_FAM_##KIND = number,
+#define CD_CURVE_KIND(KIND, number, ...) CD_FAM_##KIND = number,
+#include "api/kinds.def"
     CD_FAM_COUNT
 } cdist__fam;
 
 typedef struct cdist__family {
-    const char *name;         /* "point_circle", ... (the cdist_kind_name of the batch API) */
     unsigned methods;         /* CD_HAS(m) for every method the family implements */
     cdist_method auto_method; /* what AUTO and an unimplemented method run */
     unsigned gsl_methods;     /* methods that may call GSL */

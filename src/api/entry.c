@@ -3,7 +3,7 @@
 #include <math.h>
 #include <string.h>
 
-#include "internal.h"
+#include "api/api-priv.h"
 
 void cdist__result_set_error(cdist_result *r)
 {

@@ -1,34 +1,37 @@
 /* SPDX-License-Identifier: MIT */
-/* The family table (api-priv.h): methods per query family. Rows of families owned by other
- * subsystems state today's behaviour; their owners keep them current. */
-#include "internal.h"
+/* The family table (api-priv.h) from the registry of kinds, and the registry's checks against
+ * the public enum: every row has the number of its cdist_kind, rows are in that order without
+ * gaps, and the families come before the contact kinds. */
+#include "api/api-priv.h"
 
 #define P CD_HAS(CDIST_METHOD_POLYNOMIAL)
 #define R CD_HAS(CDIST_METHOD_ROBUST)
 #define I CD_HAS(CDIST_METHOD_ITERATION)
 #define A CD_HAS(CDIST_METHOD_AUTO)
-/* The curve and arc rows: one method (root bounding and bisection), answered as ROBUST. */
 
 const cdist__family cdist__family_table[CD_FAM_COUNT] = {
-    [CD_FAM_POINT_CIRCLE] = {"point_circle", A, CDIST_METHOD_AUTO, 0}, /* closed form */
-    [CD_FAM_POINT_DISK] = {"point_disk", A, CDIST_METHOD_AUTO, 0},
-    [CD_FAM_LINE_CIRCLE] = {"line_circle", P | R, CDIST_METHOD_ROBUST, P},
-    [CD_FAM_RAY_CIRCLE] = {"ray_circle", P | R, CDIST_METHOD_ROBUST, P},
-    [CD_FAM_SEGMENT_CIRCLE] = {"segment_circle", P | R, CDIST_METHOD_ROBUST, P},
-    [CD_FAM_CIRCLE_CIRCLE] = {"circle_circle", P | R | I, CDIST_METHOD_ROBUST, P},
-    [CD_FAM_LINE_DISK] = {"line_disk", P | R, CDIST_METHOD_ROBUST, P},
-    [CD_FAM_RAY_DISK] = {"ray_disk", P | R, CDIST_METHOD_ROBUST, P},
-    [CD_FAM_SEGMENT_DISK] = {"segment_disk", P | R, CDIST_METHOD_ROBUST, P},
-    [CD_FAM_CIRCLE_DISK] = {"circle_disk", P | R, CDIST_METHOD_ROBUST, P},
-    [CD_FAM_DISK_DISK] = {"disk_disk", P | R, CDIST_METHOD_ROBUST, P},
-    [CD_FAM_CURVE_CIRCLE] = {"curve_circle", R, CDIST_METHOD_ROBUST, 0},
-    [CD_FAM_CURVE_DISK] = {"curve_disk", R, CDIST_METHOD_ROBUST, 0},
-    [CD_FAM_ARC_CIRCLE] = {"arc_circle", R, CDIST_METHOD_ROBUST, 0},
-    [CD_FAM_ARC_ARC] = {"arc_arc", R, CDIST_METHOD_ROBUST, 0},
-    [CD_FAM_SEGMENT_ARC] = {"segment_arc", R, CDIST_METHOD_ROBUST, 0},
-    [CD_FAM_ARC_DISK] = {"arc_disk", R, CDIST_METHOD_ROBUST, 0},
-    [CD_FAM_HELIX_CIRCLE] = {"helix_circle", R, CDIST_METHOD_ROBUST, 0},
-    [CD_FAM_HELIX_DISK] = {"helix_disk", R, CDIST_METHOD_ROBUST, 0},
-    [CD_FAM_BEZIER3_CIRCLE] = {"bezier3_circle", R, CDIST_METHOD_ROBUST, 0},
-    [CD_FAM_BEZIER3_DISK] = {"bezier3_disk", R, CDIST_METHOD_ROBUST, 0},
+#define CD_KIND(KIND, number, name, letters, TA, TB, grad, methods, auto_method, gsl_methods, ...)                    \
+    [CD_FAM_##KIND] = {methods, CDIST_METHOD_##auto_method, gsl_methods},
+#define CD_CURVE_KIND(KIND, number, name, TB, methods, auto_method, gsl_methods)                                      \
+    [CD_FAM_##KIND] = {methods, CDIST_METHOD_##auto_method, gsl_methods},
+#include "api/kinds.def"
 };
+
+/* The registry's row positions, to check that numbers are dense and in order. */
+enum {
+#define CD_KIND(KIND, ...) ROW_##KIND,
+#define CD_CURVE_KIND(KIND, ...) ROW_##KIND,
+#define CD_CONTACT_KIND(KIND, ...) ROW_##KIND,
+#include "api/kinds.def"
+    ROW_COUNT
+};
+#define CHECK_ROW(KIND, number)                                                                                     \
+    _Static_assert((int)CDIST_KIND_##KIND == (number), "registry number of " #KIND " is its cdist_kind's");         \
+    _Static_assert(ROW_##KIND == (number), "registry row " #KIND " in the order of its number");
+#define CHECK_FAMILY(KIND, number) CHECK_ROW(KIND, number) _Static_assert((number) < CD_FAM_COUNT, #KIND);
+#define CD_KIND(KIND, number, ...) CHECK_FAMILY(KIND, number)
+#define CD_CURVE_KIND(KIND, number, ...) CHECK_FAMILY(KIND, number)
+#define CD_CONTACT_KIND(KIND, number, ...)                                                                          \
+    CHECK_ROW(KIND, number) _Static_assert((number) >= CD_FAM_COUNT, "contact kind " #KIND " after the families");
+#include "api/kinds.def"
+_Static_assert((int)CDIST_KIND_SPHERE_DISK + 1 == ROW_COUNT, "one registry row per cdist_kind");

@@ -3,7 +3,7 @@
 #include <math.h>
 #include <stdio.h>
 
-#include "internal.h"
+#include "api/api-priv.h"
 
 cdist_status cdist__check_handle(cdist_query *q, cdist_result *r)
 {
@@ -29,15 +29,21 @@ cdist_status cdist__check_scalar(cdist_query *q, double x, const char *what)
     return CDIST_OK;
 }
 
-cdist_status cdist__check_point_slow(cdist_query *q, const cdist_vec3 *p, const char *what)
+/* Why a point (not NULL) is refused: not finite, or out of range; CDIST_OK when neither. */
+static cdist_status point_problem(cdist_query *q, const cdist_vec3 *p, const char *what)
 {
-    if (!p) return cdist__fail(q, CDIST_ERR_NULL_ARGUMENT, "%s pointer is NULL", what);
     if (!v_isfinite(*p))
         return cdist__fail(q, CDIST_ERR_NOT_FINITE, "%s is not finite (%g, %g, %g)", what, p->x, p->y, p->z);
     if (v_maxabs(*p) > CD_MAX_ABS)
         return cdist__fail(q, CDIST_ERR_OUT_OF_RANGE, "%s exceeds 1e150 in magnitude (%g, %g, %g)", what, p->x, p->y,
-                       p->z);
+                           p->z);
     return CDIST_OK;
+}
+
+cdist_status cdist__check_point_slow(cdist_query *q, const cdist_vec3 *p, const char *what)
+{
+    if (!p) return cdist__fail(q, CDIST_ERR_NULL_ARGUMENT, "%s pointer is NULL", what);
+    return point_problem(q, p, what);
 }
 
 /* A non-zero vector d (finite, |components| <= CD_MAX_ABS) whose squared length might
@@ -50,15 +56,14 @@ CD_INLINE vec3 scaled_direction(vec3 d, double m, double *down)
     return v_scale(cdist__pow2(-e), d);
 }
 
-CD_FMA_CLONES cdist_status cdist__check_direction(cdist_query *q, const cdist_vec3 *d, const char *what, int unit_required, vec3 *unit,
-                                double *length)
+/* The one length rule of a direction or normal d, finite and in range (cdist__direction_fast_body
+ * is its fast part): from d itself when its largest component m >= CD_MIN_NORMAL_FAST (|d|^2
+ * finite and normal), else from a rescaled copy. */
+CD_INLINE cdist_status direction_length(cdist_query *q, const cdist_vec3 *d, const char *what, int unit_required,
+                                        vec3 *unit, double *length)
 {
-    cdist_status st = cdist__check_point(q, d, what);
-    if (st) return st;
     double m = v_maxabs(*d);
     if (m == 0.0) return cdist__fail(q, CDIST_ERR_ZERO_VECTOR, "%s has zero length", what);
-    /* The one length rule of a direction or normal (cdist__circle_fast_body is its fast part): from
-     * d itself when m >= CD_MIN_NORMAL_FAST (|d|^2 finite and normal), else from a rescaled copy. */
     double down = 1.0;
     vec3 s = m >= CD_MIN_NORMAL_FAST ? *d : scaled_direction(*d, m, &down);
     double ns = v_norm(s);
@@ -72,14 +77,27 @@ CD_FMA_CLONES cdist_status cdist__check_direction(cdist_query *q, const cdist_ve
     return CDIST_OK;
 }
 
+CD_FMA_CLONES cdist_status cdist__check_direction(cdist_query *q, const cdist_vec3 *d, const char *what, int unit_required, vec3 *unit,
+                                double *length)
+{
+    if (!d) return cdist__fail(q, CDIST_ERR_NULL_ARGUMENT, "%s pointer is NULL", what);
+    if (!cdist__in_range(*d)) return point_problem(q, d, what);
+    return direction_length(q, d, what, unit_required, unit, length);
+}
+
+/* What the fast path (cdist__circle_fast_body) did not accept, in one pass: the centre, the
+ * normal, the radius, each checked once and the first problem reported; or the circle accepted
+ * (a normal too small for the fast length rule). */
 static cdist_status circle_slow(cdist_query *q, const cdist_circle *c, const char *what, cdist__circle *out)
 {
     char buf[64];
-    snprintf(buf, sizeof buf, "%s centre", what);
-    cdist_status st = cdist__check_point(q, &c->center, buf);
-    if (st) return st;
+    if (!cdist__in_range(c->center)) {
+        snprintf(buf, sizeof buf, "%s centre", what);
+        return point_problem(q, &c->center, buf);
+    }
     snprintf(buf, sizeof buf, "%s normal", what);
-    st = cdist__check_direction(q, &c->normal, buf, 1, &out->n, NULL);
+    if (!cdist__in_range(c->normal)) return point_problem(q, &c->normal, buf);
+    cdist_status st = direction_length(q, &c->normal, buf, 1, &out->n, NULL);
     if (st) return st;
     snprintf(buf, sizeof buf, "%s radius", what);
     st = cdist__check_scalar(q, c->radius, buf);

@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
-/* Batch subsystem (src/batch): the kind table, the per-range loop, worker threads and the
- * distance kernels. Nothing here is exported. */
+/* Batch subsystem (src/batch): the kind table, the per-range loop, the hand-out of entries to
+ * the handle's worker threads and the distance kernels. Nothing here is exported. */
 #ifndef CDIST_BATCH_PRIV_H
 #define CDIST_BATCH_PRIV_H
 
@@ -31,19 +31,12 @@ typedef struct cdist__job {
 static inline const void *cdist__job_a(const cdist__job *j, size_t i) { return j->a + (ptrdiff_t)i * j->a_stride; }
 static inline const void *cdist__job_b(const cdist__job *j, size_t i) { return j->b + (ptrdiff_t)i * j->b_stride; }
 
-/* The lowest failing entry one thread met (fail == SIZE_MAX: none) and its message. */
-typedef struct cdist__slot {
-    size_t fail;
-    cdist_status status;
-    char message[CD_MESSAGE_LEN];
-} cdist__slot;
-
 /* Answer entries [lo, hi) of the job with handle h (any thread's own handle); failures are
  * recorded in slot. Entries are independent: the answer of an entry does not depend on which
  * thread or range computes it. */
 void cdist__batch_range(cdist_query *h, const cdist__job *job, size_t lo, size_t hi, cdist__slot *slot);
 
-/* Run the whole job with q's worker threads (or on the calling thread alone); *first gets the
+/* Run the whole job with q's worker threads (cdist__workers) (or on the calling thread alone); *first gets the
  * lowest failing entry of all threads. The caller holds q's batch flag. Returns
  * CDIST_ERR_HANDLE_BUSY (and runs nothing) when another call held q while its options were to be
  * copied to the workers. With a progress callback on q (cdist_query_set_progress), the calling

@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
-/* The batch entry points: one generic entry per result type over a table of query kinds. A new
- * kind adds one enum value and one row here. */
+/* The batch entry points: one generic entry per result type over the table of query kinds made
+ * from the registry (src/api/kinds.def). */
 #include <math.h>
 #include <stdatomic.h>
 #include <stdint.h>
@@ -26,58 +26,21 @@ typedef cdist_status (*grad_fn)(cdist_query *q, const void *a, const void *b, vo
     {                                                                                                         \
         return cdist_##fn##_grad(q, (const TA *)a, (const TB *)b, (TR *)r, g);                               \
     }
-WRAP_GRAD(point_circle, cdist_vec3, cdist_circle, cdist_result)
-WRAP_GRAD(point_disk, cdist_vec3, cdist_circle, cdist_result)
-WRAP_GRAD(line_circle, cdist_line, cdist_circle, cdist_result)
-WRAP_GRAD(ray_circle, cdist_ray, cdist_circle, cdist_result)
-WRAP_GRAD(segment_circle, cdist_segment, cdist_circle, cdist_result)
-WRAP_GRAD(circle_circle, cdist_circle, cdist_circle, cdist_result)
-WRAP_GRAD(line_disk, cdist_line, cdist_circle, cdist_result)
-WRAP_GRAD(ray_disk, cdist_ray, cdist_circle, cdist_result)
-WRAP_GRAD(segment_disk, cdist_segment, cdist_circle, cdist_result)
-WRAP_GRAD(circle_disk, cdist_circle, cdist_circle, cdist_result)
-WRAP_GRAD(disk_disk, cdist_circle, cdist_circle, cdist_result)
-WRAP_GRAD(arc_circle, cdist_arc, cdist_circle, cdist_result)
-WRAP_GRAD(arc_arc, cdist_arc, cdist_arc, cdist_result)
-WRAP_GRAD(segment_arc, cdist_segment, cdist_arc, cdist_result)
-WRAP_GRAD(arc_disk, cdist_arc, cdist_circle, cdist_result)
-WRAP(helix_circle, cdist_helix, cdist_circle, cdist_result)
-WRAP(helix_disk, cdist_helix, cdist_circle, cdist_result)
-WRAP(bezier3_circle, cdist_bezier3, cdist_circle, cdist_result)
-WRAP(bezier3_disk, cdist_bezier3, cdist_circle, cdist_result)
-WRAP_GRAD(torus_torus, cdist_torus, cdist_torus, cdist_contact)
-WRAP_GRAD(torus_capsule, cdist_torus, cdist_capsule, cdist_contact)
-WRAP_GRAD(torus_sphere, cdist_torus, cdist_sphere, cdist_contact)
-WRAP_GRAD(torus_rounded_disk, cdist_torus, cdist_rounded_disk, cdist_contact)
-WRAP_GRAD(capsule_capsule, cdist_capsule, cdist_capsule, cdist_contact)
-WRAP_GRAD(capsule_sphere, cdist_capsule, cdist_sphere, cdist_contact)
-WRAP_GRAD(capsule_rounded_disk, cdist_capsule, cdist_rounded_disk, cdist_contact)
-WRAP_GRAD(sphere_sphere, cdist_sphere, cdist_sphere, cdist_contact)
-WRAP_GRAD(sphere_rounded_disk, cdist_sphere, cdist_rounded_disk, cdist_contact)
-WRAP_GRAD(rounded_disk_rounded_disk, cdist_rounded_disk, cdist_rounded_disk, cdist_contact)
-WRAP_GRAD(torus_line, cdist_torus, cdist_line, cdist_contact)
-WRAP_GRAD(torus_ray, cdist_torus, cdist_ray, cdist_contact)
-WRAP_GRAD(torus_segment, cdist_torus, cdist_segment, cdist_contact)
-WRAP_GRAD(capsule_circle, cdist_capsule, cdist_circle, cdist_contact)
-WRAP_GRAD(capsule_disk, cdist_capsule, cdist_circle, cdist_contact)
-WRAP_GRAD(sphere_circle, cdist_sphere, cdist_circle, cdist_contact)
-WRAP_GRAD(sphere_disk, cdist_sphere, cdist_circle, cdist_contact)
+#define WRAP_NO_GRAD WRAP
+#define CD_KIND(KIND, number, name, letters, TA, TB, grad, ...) WRAP_##grad(name, TA, TB, cdist_result)
+#define CD_CONTACT_KIND(KIND, number, name, letters, TA, TB, ...) WRAP_GRAD(name, TA, TB, cdist_contact)
+#define CD_CURVE_KIND(KIND, number, name, TB, ...)                                                            \
+    static cdist_status k_##name(cdist_query *q, const void *a, const void *b, void *r)                      \
+    {                                                                                                         \
+        const cdist_curve *c = a;                                                                             \
+        return cdist_##name(q, c->fn, c->user, c->t0, c->t1, (const TB *)b, (cdist_result *)r);              \
+    }
+#include "api/kinds.def"
+#undef WRAP_NO_GRAD
 #undef WRAP_GRAD
 #undef WRAP
 
-static cdist_status k_curve_circle(cdist_query *q, const void *a, const void *b, void *r)
-{
-    const cdist_curve *c = a;
-    return cdist_curve_circle(q, c->fn, c->user, c->t0, c->t1, b, r);
-}
-
-static cdist_status k_curve_disk(cdist_query *q, const void *a, const void *b, void *r)
-{
-    const cdist_curve *c = a;
-    return cdist_curve_disk(q, c->fn, c->user, c->t0, c->t1, b, r);
-}
-
-/* The distance kernel of a kind, if any (zero, the default of a row: none). */
+/* The distance kernel of a kind, if any (the registry's kernel column). */
 enum {
     NO_KERNEL = 0,
     POINT_CIRCLE_KERNEL,
@@ -88,20 +51,24 @@ enum {
     CIRCLE_CIRCLE_KERNEL
 };
 
-/* Byte offset of a swept object's radius; a plain object (radius 0) has none. Each swept struct
- * starts with its core object, so a kernel of the core kind reads the swept array as it is. */
+/* Byte offset of a swept object's radius, by type; a plain object (radius 0) has none. Each swept
+ * struct starts with its core object, so a kernel of the core kind reads the swept array as it
+ * is. */
 enum { PLAIN = -1 };
-#define R_TORUS ((int)offsetof(cdist_torus, tube_radius))
-#define R_CAPSULE ((int)offsetof(cdist_capsule, radius))
-#define R_SPHERE ((int)offsetof(cdist_sphere, radius))
-#define R_RDISK ((int)offsetof(cdist_rounded_disk, radius))
+#define RADIUS_cdist_torus ((int)offsetof(cdist_torus, tube_radius))
+#define RADIUS_cdist_capsule ((int)offsetof(cdist_capsule, radius))
+#define RADIUS_cdist_sphere ((int)offsetof(cdist_sphere, radius))
+#define RADIUS_cdist_rounded_disk ((int)offsetof(cdist_rounded_disk, radius))
+#define RADIUS_cdist_circle PLAIN
+#define RADIUS_cdist_line PLAIN
+#define RADIUS_cdist_ray PLAIN
+#define RADIUS_cdist_segment PLAIN
 _Static_assert(offsetof(cdist_torus, circle) == 0 && offsetof(cdist_capsule, segment) == 0 &&
                    offsetof(cdist_sphere, center) == 0 && offsetof(cdist_rounded_disk, disk) == 0,
                "a swept object starts with its core");
 
-/* A kind's name is its family's (cdist__family_table: the kind and family numbers agree) or, for
- * a contact kind, its own. A contact kind's kernel is its core kind's, `swap` when the core
- * kernel takes the objects in the other order (the torus is the circle, the second object). */
+/* A contact kind's kernel is its core kind's, `swap` when the core kernel takes the objects in
+ * the other order (the torus is the circle, the second object). */
 typedef struct kind_row {
     const char *name;
     size_t size_a, size_b;
@@ -113,92 +80,27 @@ typedef struct kind_row {
     int radius_a, radius_b;
 } kind_row;
 
-#define PLAIN_ROW(K, TA, TB, fn, ...) [CDIST_KIND_##K] = {NULL, sizeof(TA), sizeof(TB), k_##fn, __VA_ARGS__}
-#define CONTACT_ROW(K, name_, TA, TB, kernel_, swap_, ra, rb)                                                  \
-    [CDIST_KIND_##K] = {#name_, sizeof(TA), sizeof(TB), k_##name_, g_##name_, kernel_, 1, swap_, ra, rb}
+#define GRAD_FN_GRAD(name) g_##name
+#define GRAD_FN_NO_GRAD(name) NULL
 static const kind_row kinds[] = {
-    PLAIN_ROW(POINT_CIRCLE, cdist_vec3, cdist_circle, point_circle, g_point_circle, POINT_CIRCLE_KERNEL),
-    PLAIN_ROW(POINT_DISK, cdist_vec3, cdist_circle, point_disk, g_point_disk, POINT_DISK_KERNEL),
-    PLAIN_ROW(LINE_CIRCLE, cdist_line, cdist_circle, line_circle, g_line_circle, LINE_CIRCLE_KERNEL),
-    PLAIN_ROW(RAY_CIRCLE, cdist_ray, cdist_circle, ray_circle, g_ray_circle, RAY_CIRCLE_KERNEL),
-    PLAIN_ROW(SEGMENT_CIRCLE, cdist_segment, cdist_circle, segment_circle, g_segment_circle, SEGMENT_CIRCLE_KERNEL),
-    PLAIN_ROW(CIRCLE_CIRCLE, cdist_circle, cdist_circle, circle_circle, g_circle_circle, CIRCLE_CIRCLE_KERNEL),
-    PLAIN_ROW(LINE_DISK, cdist_line, cdist_circle, line_disk, g_line_disk),
-    PLAIN_ROW(RAY_DISK, cdist_ray, cdist_circle, ray_disk, g_ray_disk),
-    PLAIN_ROW(SEGMENT_DISK, cdist_segment, cdist_circle, segment_disk, g_segment_disk),
-    PLAIN_ROW(CIRCLE_DISK, cdist_circle, cdist_circle, circle_disk, g_circle_disk),
-    PLAIN_ROW(DISK_DISK, cdist_circle, cdist_circle, disk_disk, g_disk_disk),
-    PLAIN_ROW(CURVE_CIRCLE, cdist_curve, cdist_circle, curve_circle, NULL),
-    PLAIN_ROW(CURVE_DISK, cdist_curve, cdist_circle, curve_disk, NULL),
-    PLAIN_ROW(ARC_CIRCLE, cdist_arc, cdist_circle, arc_circle, g_arc_circle),
-    PLAIN_ROW(ARC_ARC, cdist_arc, cdist_arc, arc_arc, g_arc_arc),
-    PLAIN_ROW(SEGMENT_ARC, cdist_segment, cdist_arc, segment_arc, g_segment_arc),
-    PLAIN_ROW(ARC_DISK, cdist_arc, cdist_circle, arc_disk, g_arc_disk),
-    PLAIN_ROW(HELIX_CIRCLE, cdist_helix, cdist_circle, helix_circle, NULL),
-    PLAIN_ROW(HELIX_DISK, cdist_helix, cdist_circle, helix_disk, NULL),
-    PLAIN_ROW(BEZIER3_CIRCLE, cdist_bezier3, cdist_circle, bezier3_circle, NULL),
-    PLAIN_ROW(BEZIER3_DISK, cdist_bezier3, cdist_circle, bezier3_disk, NULL),
-    /* Contact kinds. Cores without a kernel (circle-disk, disk-disk, segment-disk and the
-     * closed forms point-point, point-segment, segment-segment) take the scalar path. */
-    CONTACT_ROW(TORUS_TORUS, torus_torus, cdist_torus, cdist_torus, CIRCLE_CIRCLE_KERNEL, 0, R_TORUS, R_TORUS),
-    CONTACT_ROW(TORUS_CAPSULE, torus_capsule, cdist_torus, cdist_capsule, SEGMENT_CIRCLE_KERNEL, 1, R_TORUS, R_CAPSULE),
-    CONTACT_ROW(TORUS_SPHERE, torus_sphere, cdist_torus, cdist_sphere, POINT_CIRCLE_KERNEL, 1, R_TORUS, R_SPHERE),
-    CONTACT_ROW(TORUS_ROUNDED_DISK, torus_rounded_disk, cdist_torus, cdist_rounded_disk, NO_KERNEL, 0, R_TORUS,
-                R_RDISK),
-    CONTACT_ROW(CAPSULE_CAPSULE, capsule_capsule, cdist_capsule, cdist_capsule, NO_KERNEL, 0, R_CAPSULE, R_CAPSULE),
-    CONTACT_ROW(CAPSULE_SPHERE, capsule_sphere, cdist_capsule, cdist_sphere, NO_KERNEL, 0, R_CAPSULE, R_SPHERE),
-    CONTACT_ROW(CAPSULE_ROUNDED_DISK, capsule_rounded_disk, cdist_capsule, cdist_rounded_disk, NO_KERNEL, 0,
-                R_CAPSULE, R_RDISK),
-    CONTACT_ROW(SPHERE_SPHERE, sphere_sphere, cdist_sphere, cdist_sphere, NO_KERNEL, 0, R_SPHERE, R_SPHERE),
-    CONTACT_ROW(SPHERE_ROUNDED_DISK, sphere_rounded_disk, cdist_sphere, cdist_rounded_disk, POINT_DISK_KERNEL, 0,
-                R_SPHERE, R_RDISK),
-    CONTACT_ROW(ROUNDED_DISK_ROUNDED_DISK, rounded_disk_rounded_disk, cdist_rounded_disk, cdist_rounded_disk,
-                NO_KERNEL, 0, R_RDISK, R_RDISK),
-    CONTACT_ROW(TORUS_LINE, torus_line, cdist_torus, cdist_line, LINE_CIRCLE_KERNEL, 1, R_TORUS, PLAIN),
-    CONTACT_ROW(TORUS_RAY, torus_ray, cdist_torus, cdist_ray, RAY_CIRCLE_KERNEL, 1, R_TORUS, PLAIN),
-    CONTACT_ROW(TORUS_SEGMENT, torus_segment, cdist_torus, cdist_segment, SEGMENT_CIRCLE_KERNEL, 1, R_TORUS, PLAIN),
-    CONTACT_ROW(CAPSULE_CIRCLE, capsule_circle, cdist_capsule, cdist_circle, SEGMENT_CIRCLE_KERNEL, 0, R_CAPSULE,
-                PLAIN),
-    CONTACT_ROW(CAPSULE_DISK, capsule_disk, cdist_capsule, cdist_circle, NO_KERNEL, 0, R_CAPSULE, PLAIN),
-    CONTACT_ROW(SPHERE_CIRCLE, sphere_circle, cdist_sphere, cdist_circle, POINT_CIRCLE_KERNEL, 0, R_SPHERE, PLAIN),
-    CONTACT_ROW(SPHERE_DISK, sphere_disk, cdist_sphere, cdist_circle, POINT_DISK_KERNEL, 0, R_SPHERE, PLAIN),
+#define CD_KIND(KIND, number, name, letters, TA, TB, grad, methods, auto_method, gsl_methods, kernel, help)          \
+    [CDIST_KIND_##KIND] = {#name, sizeof(TA), sizeof(TB), k_##name, GRAD_FN_##grad(name), kernel, 0, 0, PLAIN, PLAIN},
+#define CD_CURVE_KIND(KIND, number, name, TB, ...)                                                                   \
+    [CDIST_KIND_##KIND] = {#name, sizeof(cdist_curve), sizeof(TB), k_##name, NULL, NO_KERNEL, 0, 0, PLAIN, PLAIN},
+#define CD_CONTACT_KIND(KIND, number, name, letters, TA, TB, kernel, swap, help)                                     \
+    [CDIST_KIND_##KIND] = {#name, sizeof(TA), sizeof(TB), k_##name, g_##name, kernel, 1, swap, RADIUS_##TA, RADIUS_##TB},
+#include "api/kinds.def"
 };
-#undef PLAIN_ROW
-#undef CONTACT_ROW
+#undef GRAD_FN_GRAD
+#undef GRAD_FN_NO_GRAD
 #define KIND_COUNT ((int)(sizeof kinds / sizeof kinds[0]))
-#define FIRST_CONTACT_KIND CDIST_KIND_TORUS_TORUS
-#define SAME_NUMBER(K) _Static_assert((int)CDIST_KIND_##K == (int)CD_FAM_##K, "cdist_kind and family of " #K)
-SAME_NUMBER(POINT_CIRCLE);
-SAME_NUMBER(POINT_DISK);
-SAME_NUMBER(LINE_CIRCLE);
-SAME_NUMBER(RAY_CIRCLE);
-SAME_NUMBER(SEGMENT_CIRCLE);
-SAME_NUMBER(CIRCLE_CIRCLE);
-SAME_NUMBER(LINE_DISK);
-SAME_NUMBER(RAY_DISK);
-SAME_NUMBER(SEGMENT_DISK);
-SAME_NUMBER(CIRCLE_DISK);
-SAME_NUMBER(DISK_DISK);
-SAME_NUMBER(CURVE_CIRCLE);
-SAME_NUMBER(CURVE_DISK);
-SAME_NUMBER(ARC_CIRCLE);
-SAME_NUMBER(ARC_ARC);
-SAME_NUMBER(SEGMENT_ARC);
-SAME_NUMBER(ARC_DISK);
-SAME_NUMBER(HELIX_CIRCLE);
-SAME_NUMBER(HELIX_DISK);
-SAME_NUMBER(BEZIER3_CIRCLE);
-SAME_NUMBER(BEZIER3_DISK);
-#undef SAME_NUMBER
-_Static_assert((int)FIRST_CONTACT_KIND == CD_FAM_COUNT, "one family per cdist_kind before the contact kinds");
 
 static int kind_ok(cdist_kind k) { return (unsigned)k < (unsigned)KIND_COUNT && kinds[k].full; }
 
 int cdist_kind_count(void) { return KIND_COUNT; }
 const char *cdist_kind_name(cdist_kind k)
 {
-    if (!kind_ok(k)) return NULL;
-    return kinds[k].contact ? kinds[k].name : cdist__family_table[k].name;
+    return kind_ok(k) ? kinds[k].name : NULL;
 }
 size_t cdist_kind_size_a(cdist_kind k) { return kind_ok(k) ? kinds[k].size_a : 0; }
 size_t cdist_kind_size_b(cdist_kind k) { return kind_ok(k) ? kinds[k].size_b : 0; }

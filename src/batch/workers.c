@@ -1,37 +1,15 @@
 /* SPDX-License-Identifier: MIT */
-/* Batch worker threads. A handle with T > 1 threads owns T - 1 pthreads, each with its own query
- * handle (workspaces included), created by cdist_query_set_threads and joined by
- * cdist_query_free; the calling thread is the T-th worker and uses the main handle. A batch hands
- * out chunks of entries through an atomic counter; since every entry is answered on its own with
- * the same options, results do not depend on which thread took which chunk. Nothing is allocated
- * per batch. */
-#include <pthread.h>
+/* A batch on the handle's worker threads (src/api/threads.c, src/base/pool.h): chunks of
+ * entries are handed out through an atomic counter; since every entry is answered on its own
+ * with the same options, results do not depend on which thread took which chunk. Nothing is
+ * allocated per batch. */
 #include <stdatomic.h>
 #include <stdint.h>
-#include <stdlib.h>
 
 #include "batch-priv.h"
 
-#define CD_MAX_THREADS 256
 /* Below this many entries per thread the wake-up costs more than it saves. */
 #define CD_MIN_ENTRIES_PER_THREAD 64
-/* A worker polls this many times (about 50 us) for the next batch before it sleeps: back-to-back
- * batches then skip the wake-up latency, without burning a core when batches are rare. */
-#define CD_SPIN 1000
-
-static inline void cpu_relax(void)
-{
-#if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))
-    __builtin_ia32_pause();
-#endif
-}
-
-typedef struct cdist__worker {
-    struct cdist__workers *pool;
-    cdist_query *handle;
-    pthread_t thread;
-    cdist__slot slot;
-} cdist__worker;
 
 /* The hand-out state of one batch: chunks are taken in order from `next`, so the entries handed
  * out are always [0, min(next, n)) and each is answered in full (a stop only keeps threads from
@@ -40,20 +18,9 @@ typedef struct cdist__run {
     atomic_size_t next;
     atomic_size_t done;
     atomic_int stop;
-} cdist__run;
-
-struct cdist__workers {
-    int threads; /* including the calling thread */
-    int started; /* pthreads running */
-    pthread_mutex_t mutex;
-    pthread_cond_t start, done;
-    atomic_ulong generation; /* incremented (under the mutex) per batch and to quit */
-    int pending;              /* workers still busy with the current batch */
-    int quit;
     const cdist__job *job;
-    cdist__run *run;
-    cdist__worker w[]; /* threads - 1 */
-};
+    cdist_query *q;
+} cdist__run;
 
 /* Take chunks until none is left or the batch is stopped. The calling thread (caller = q, the
  * handle with the progress option; NULL for a worker) reports progress between its chunks. */
@@ -74,132 +41,14 @@ static void drain(cdist__run *run, const cdist__job *job, cdist_query *h, cdist_
     }
 }
 
-static void *worker_main(void *arg)
+/* A pool worker's part of the batch, with its own handle and failure record. */
+static void worker_task(void *arg, int k)
 {
-    cdist__worker *w = arg;
-    struct cdist__workers *p = w->pool;
-    unsigned long seen = 0;
-    for (;;) {
-        for (int i = 0; i < CD_SPIN && atomic_load_explicit(&p->generation, memory_order_relaxed) == seen; i++)
-            cpu_relax();
-        pthread_mutex_lock(&p->mutex);
-        while (atomic_load_explicit(&p->generation, memory_order_relaxed) == seen && !p->quit)
-            pthread_cond_wait(&p->start, &p->mutex);
-        if (p->quit) {
-            pthread_mutex_unlock(&p->mutex);
-            return NULL;
-        }
-        seen = atomic_load_explicit(&p->generation, memory_order_relaxed);
-        const cdist__job *job = p->job;
-        cdist__run *run = p->run;
-        pthread_mutex_unlock(&p->mutex);
-        w->slot.fail = SIZE_MAX;
-        drain(run, job, w->handle, &w->slot, NULL);
-        pthread_mutex_lock(&p->mutex);
-        if (--p->pending == 0) pthread_cond_signal(&p->done);
-        pthread_mutex_unlock(&p->mutex);
-    }
+    cdist__run *run = arg;
+    cdist__worker *w = &run->q->workers->w[k - 1];
+    w->slot.fail = SIZE_MAX;
+    drain(run, run->job, w->handle, &w->slot, NULL);
 }
-
-void cdist__workers_free(struct cdist__workers *p)
-{
-    if (!p) return;
-    if (p->started > 0) {
-        pthread_mutex_lock(&p->mutex);
-        p->quit = 1;
-        atomic_fetch_add(&p->generation, 1);
-        pthread_cond_broadcast(&p->start);
-        pthread_mutex_unlock(&p->mutex);
-        for (int i = 0; i < p->started; i++) pthread_join(p->w[i].thread, NULL);
-    }
-    for (int i = 0; i < p->threads - 1; i++) cdist_query_free(p->w[i].handle);
-    pthread_cond_destroy(&p->done);
-    pthread_cond_destroy(&p->start);
-    pthread_mutex_destroy(&p->mutex);
-    free(p);
-}
-
-/* Every option through the public setters: they size the worker's workspaces (and never
- * allocate when the size is unchanged, as at the start of a batch). A new handle option must be
- * copied here too, or results would depend on the thread count (test_batch would show it). */
-static cdist_status sync_one(cdist_query *q, cdist_query *w)
-{
-    cdist_status st;
-    if ((st = cdist_query_set_method(w, q->method)) || (st = cdist_query_set_unit_tolerance(w, q->unit_tol)) ||
-        (st = cdist_query_set_curve_samples(w, q->curve_samples)) ||
-        (st = cdist_query_set_max_iterations(w, q->max_iterations)))
-        return cdist__fail(q, st, "worker handle: %s", cdist_query_last_error(w));
-    return CDIST_OK;
-}
-
-cdist_status cdist__workers_sync(cdist_query *q)
-{
-    struct cdist__workers *p = q->workers;
-    if (!p) return CDIST_OK;
-    for (int i = 0; i < p->threads - 1; i++) {
-        cdist_status st = sync_one(q, p->w[i].handle);
-        if (st) return st;
-    }
-    return CDIST_OK;
-}
-
-static cdist_status set_threads_locked(cdist_query *q, int threads)
-{
-    if (threads < 1 || threads > CD_MAX_THREADS)
-        return cdist__fail(q, CDIST_ERR_BAD_OPTION, "threads must be in [1, %d] (got %d)", CD_MAX_THREADS, threads);
-    cdist__begin(q, NULL);
-    if (threads == cdist_query_get_threads(q)) return CDIST_OK;
-    cdist__workers_free(q->workers);
-    q->workers = NULL;
-    if (threads == 1) return CDIST_OK;
-    struct cdist__workers *p = calloc(1, sizeof *p + (size_t)(threads - 1) * sizeof(cdist__worker));
-    if (!p) return cdist__fail(q, CDIST_ERR_NO_MEMORY, "out of memory for %d threads", threads);
-    p->threads = threads;
-    pthread_mutex_init(&p->mutex, NULL);
-    pthread_cond_init(&p->start, NULL);
-    pthread_cond_init(&p->done, NULL);
-    atomic_init(&p->generation, 0);
-    for (int i = 0; i < threads - 1; i++) {
-        p->w[i].pool = p;
-        p->w[i].handle = cdist_query_new();
-        if (!p->w[i].handle) {
-            cdist__workers_free(p);
-            return cdist__fail(q, CDIST_ERR_NO_MEMORY, "out of memory for the handles of %d threads", threads);
-        }
-        cdist_status st = sync_one(q, p->w[i].handle); /* its own status and message (e.g. a bad option) */
-        if (st) {
-            cdist__workers_free(p);
-            return st;
-        }
-    }
-    for (int i = 0; i < threads - 1; i++) {
-        int e = pthread_create(&p->w[i].thread, NULL, worker_main, &p->w[i]);
-        if (e) {
-            cdist__workers_free(p);
-            return cdist__fail(q, CDIST_ERR_THREAD, "could not start worker thread %d of %d (error %d)", i + 1,
-                           threads, e);
-        }
-        p->started++;
-    }
-    q->workers = p;
-    return CDIST_OK;
-}
-
-/* Under the handle's flag, and refused while a batch runs: the pool it would free is in use. */
-cdist_status cdist_query_set_threads(cdist_query *q, int threads)
-{
-    cdist_status st = cdist__enter_setter(q);
-    if (st) return st;
-    if (atomic_load_explicit(&q->batch_busy, memory_order_acquire)) {
-        cdist__leave_setter(q);
-        return CDIST_ERR_HANDLE_BUSY;
-    }
-    st = set_threads_locked(q, threads);
-    cdist__leave_setter(q);
-    return st;
-}
-
-int cdist_query_get_threads(const cdist_query *q) { return (q && q->workers) ? q->workers->threads : 1; }
 
 static void take_lower(cdist__slot *first, const cdist__slot *s)
 {
@@ -235,20 +84,14 @@ cdist_status cdist__workers_run(cdist_query *q, const cdist__job *job_in, cdist_
     atomic_init(&run.next, 0);
     atomic_init(&run.done, 0);
     atomic_init(&run.stop, 0);
+    run.job = &job;
+    run.q = q;
     if (threads == 1) {
         drain(&run, &job, q, first, q);
     } else {
-        pthread_mutex_lock(&p->mutex);
-        p->job = &job;
-        p->run = &run;
-        p->pending = p->threads - 1;
-        atomic_fetch_add(&p->generation, 1);
-        pthread_cond_broadcast(&p->start);
-        pthread_mutex_unlock(&p->mutex);
+        cdist__pool_start(p->pool, worker_task, &run);
         drain(&run, &job, q, first, q);
-        pthread_mutex_lock(&p->mutex);
-        while (p->pending > 0) pthread_cond_wait(&p->done, &p->mutex);
-        pthread_mutex_unlock(&p->mutex);
+        cdist__pool_wait(p->pool);
         for (int i = 0; i < p->threads - 1; i++) take_lower(first, &p->w[i].slot);
     }
     size_t next = atomic_load_explicit(&run.next, memory_order_relaxed);

@@ -4,8 +4,9 @@
  * sqrt(|D|^2 - h^2) would cancel). */
 #include <math.h>
 
-#include "internal.h"
+#include "api/api-priv.h"
 #include "base/point_circle.h"
+#include "point/point-priv.h"
 
 /* The fast path (point_body.h) in one lane, on the scalar evaluator's instance. */
 #define CD_LANES 1

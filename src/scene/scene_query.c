@@ -4,10 +4,10 @@
  * the keys are sorted, and the narrow phase answers each with the exact query, chunks of keys
  * spread over the handle's threads and committed in key order, so the output is the same for
  * every thread count. */
-#include <pthread.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/pool.h"
 #include "scene-priv.h"
 
 /* Keys answered by one thread at a time, and chunks per thread and round of the narrow phase
@@ -370,89 +370,30 @@ static void narrow_round(void *ctx, int t)
 }
 
 /* ---- threads of one call ----
- * The handle's thread count T: T - 1 pthreads started for the call, each running fn(ctx, t)
- * once per pool_run with its thread number t (the caller is t = 0). A thread that cannot be
- * started leaves fewer threads: the work is shared by whoever runs, with the same answers. */
+ * The handle's thread count T: a pool of T - 1 threads (src/base/pool.h) started for the call,
+ * each running fn(ctx, t) once per pool_run with its thread number t (the caller is t = 0).
+ * When the threads cannot be started the caller runs alone, with the same answers. */
 
 typedef struct pool {
     int threads; /* including the caller */
-    pthread_t tid[256];
-    struct pool_arg {
-        struct pool *p;
-        int t;
-    } arg[256];
-    pthread_mutex_t mutex;
-    pthread_cond_t start, done;
-    unsigned long generation;
-    int pending, quit;
-    void (*fn)(void *ctx, int t);
-    void *ctx;
+    cdist__pool *workers;
 } pool;
-
-static void *pool_main(void *arg)
-{
-    struct pool_arg *a = arg;
-    pool *p = a->p;
-    unsigned long seen = 0;
-    for (;;) {
-        pthread_mutex_lock(&p->mutex);
-        while (p->generation == seen && !p->quit) pthread_cond_wait(&p->start, &p->mutex);
-        if (p->quit) {
-            pthread_mutex_unlock(&p->mutex);
-            return NULL;
-        }
-        seen = p->generation;
-        pthread_mutex_unlock(&p->mutex);
-        p->fn(p->ctx, a->t);
-        pthread_mutex_lock(&p->mutex);
-        if (--p->pending == 0) pthread_cond_signal(&p->done);
-        pthread_mutex_unlock(&p->mutex);
-    }
-}
 
 static void pool_start(pool *p, int threads)
 {
-    p->threads = 1;
-    p->generation = 0;
-    p->pending = 0;
-    p->quit = 0;
-    pthread_mutex_init(&p->mutex, NULL);
-    pthread_cond_init(&p->start, NULL);
-    pthread_cond_init(&p->done, NULL);
-    for (int t = 1; t < threads; t++) {
-        p->arg[t].p = p;
-        p->arg[t].t = t;
-        if (pthread_create(&p->tid[t], NULL, pool_main, &p->arg[t])) break;
-        p->threads++;
-    }
+    int error, failed;
+    p->workers = threads > 1 ? cdist__pool_new(threads - 1, &error, &failed) : NULL;
+    p->threads = p->workers ? threads : 1;
 }
 
 static void pool_run(pool *p, void (*fn)(void *ctx, int t), void *ctx)
 {
-    pthread_mutex_lock(&p->mutex);
-    p->fn = fn;
-    p->ctx = ctx;
-    p->pending = p->threads - 1;
-    p->generation++;
-    pthread_cond_broadcast(&p->start);
-    pthread_mutex_unlock(&p->mutex);
+    if (p->workers) cdist__pool_start(p->workers, fn, ctx);
     fn(ctx, 0);
-    pthread_mutex_lock(&p->mutex);
-    while (p->pending > 0) pthread_cond_wait(&p->done, &p->mutex);
-    pthread_mutex_unlock(&p->mutex);
+    if (p->workers) cdist__pool_wait(p->workers);
 }
 
-static void pool_stop(pool *p)
-{
-    pthread_mutex_lock(&p->mutex);
-    p->quit = 1;
-    pthread_cond_broadcast(&p->start);
-    pthread_mutex_unlock(&p->mutex);
-    for (int t = 1; t < p->threads; t++) pthread_join(p->tid[t], NULL);
-    pthread_cond_destroy(&p->done);
-    pthread_cond_destroy(&p->start);
-    pthread_mutex_destroy(&p->mutex);
-}
+static void pool_stop(pool *p) { cdist__pool_free(p->workers); }
 
 static void commit(narrow *w, const cdist_scene_pair *p, size_t m)
 {
