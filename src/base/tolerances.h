@@ -118,6 +118,10 @@
 #define CD_CURVE_CERT_EVAL_ULPS 16.0
 #define CD_CURVE_CERT_DEPTH 80
 #define CD_CURVE_CERT_MAX_NODES 200000L
+/* Relative widening (dimensionless) of the certification's speed bounds and Lipschitz screen:
+ * covers the rounding of an interval's width (sample parameters differ from equal spacing by
+ * rounding only) and of the products that form the bound. */
+#define CD_CURVE_CERT_WIDTH_REL 0x1p-40
 /* Blocks of this many sample intervals are tried whole with a curve's own bound before their
  * intervals are bounded one by one (a cost choice, not a tolerance). */
 #define CD_CURVE_CERT_BLOCK 16
