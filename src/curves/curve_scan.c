@@ -97,10 +97,19 @@ typedef struct sample {
     double speed; /* |P'| (1-norm) */
 } sample;
 
+/* One evaluation more of the query's budget (s->evals_left); CDIST_ERR_COST_LIMIT when spent. */
+static inline cdist_status spend(const cdist__cs_scan *s)
+{
+    if (!s->evals_left || --*s->evals_left >= 0) return CDIST_OK;
+    return cdist__fail(s->q, CDIST_ERR_COST_LIMIT, "curve: the query needs more than its %ld evaluations", s->evals_max);
+}
+
 static cdist_status eval(const cdist__cs_scan *s, double t, sample *o)
 {
     vec3 P, D;
-    cdist_status st = s->ev(s->q, s->ctx, t, &P, &D);
+    cdist_status st = spend(s);
+    if (st) return st;
+    st = s->ev(s->q, s->ctx, t, &P, &D);
     if (st) return st;
     /* Plain arithmetic (no fma calls: this is the inner loop); g only needs its sign right
      * away from its rounding level `tol`, and every offered candidate is re-evaluated by the
@@ -141,6 +150,8 @@ cdist_status cdist__cs_eval_point(const cdist__cs_scan *s, double t, vec3 *p, do
         *f = x.f;
         return st;
     }
+    cdist_status st = spend(s);
+    if (st) return st;
     vec3 P = s->pos(s->ctx, t);
     const cdist__circle *c = s->c;
     vec3 n = c->n;
@@ -300,6 +311,8 @@ cdist_status cdist__cs_scan_run(cdist__cs_scan *s, double t0, double t1, int n)
     }
     if (s->update_scale) s->k->b.scale = fmax(s->k->b.scale, ext);
     if ((st = offer_at(s, t0)) || (st = offer_at(s, t1))) return st;
+    /* R (rho - r) at the axis: rho within CD_CURVE_AXIS_ULPS of the scale. */
+    double axis_r = CD_CURVE_AXIS_ULPS * DBL_EPSILON * s->k->b.scale - s->c->r;
     for (int i = 0; i <= n; i++) {
         double t = cdist__cs_t_at(t0, t1, i, n);
         int zero = fabs(G[i]) <= T[i];
@@ -335,8 +348,10 @@ cdist_status cdist__cs_scan_run(cdist__cs_scan *s, double t0, double t1, int n)
                 if ((st = dip_search(s, a, b, sg))) return st;
             }
         }
-        /* A sampled closest approach to the axis that may reach it between samples. */
-        if (!s->disk && s->c->r > 0.0 && i > 0 && i < n && R[i] <= R[i - 1] && R[i] <= R[i + 1]) {
+        /* A sampled closest approach to the axis that may reach it between samples (not where
+         * the curve runs along the axis, on it at three samples: F is smooth there). */
+        if (!s->disk && s->c->r > 0.0 && i > 0 && i < n && R[i] <= R[i - 1] && R[i] <= R[i + 1] &&
+            !(R[i - 1] <= axis_r && R[i + 1] <= axis_r)) {
             sample x;
             if ((st = eval(s, t, &x))) return st;
             if (x.rho <= 2.0 * x.speed * (s->span / n) &&

@@ -71,6 +71,11 @@ struct cdist__cs_scan {
     cdist__cs_pos_fn pos; /* optional position-only form of ev (NULL: ev) */
     const void *lb_ctx;
     long cert_nodes;    /* nodes of the certification spent so far (the cost limit) */
+    /* Evaluations of the curve the query may still spend (NULL: no limit), counted down by every
+     * evaluation; the query stops with CDIST_ERR_COST_LIMIT when they are spent. evals_max:
+     * the budget it started with (the message). */
+    long *evals_left;
+    long evals_max;
 };
 
 /* Bound, refine and offer every minimum of the distance over [t0, t1] with n samples
@@ -109,6 +114,11 @@ static inline cdist_status cdist__cs_entry(cdist_query *q, cdist__cs_query_fn fn
     if (st) return st;
     return cdist__leave(q, r, fn(q, obj, c, r, disk), CDIST_METHOD_ROBUST);
 }
+
+/* The evaluations of the curve spent by the last helix query of the calling thread that got
+ * past validation (at most CD_CURVE_HELIX_MAX_EVALS + 1: the one refused); for the tests of the
+ * helix's cost bound. */
+long cdist__helix_last_evals(void);
 
 /* ---- shared by the engine, its certification and the helix ---- */
 

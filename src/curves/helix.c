@@ -106,28 +106,35 @@ static double helix_lb(const cdist__cs_scan *s, double a, double b)
     return helix_piece_lb(&c->hb, c->hx, a, b);
 }
 
-/* Cost limit of one helix query (CD_CURVE_HELIX_MAX_SAMPLES samples over the pieces that cannot
- * be skipped: 4096 turns at the default 512 samples). Pieces are skipped when their lower bound
- * exceeds the distance found on the axially nearest piece, so only configurations where that
- * many turns are about equally close (a target threading a long tight coil) reach it; they get
- * CDIST_ERR_COST_LIMIT before the long scan.
- * After the nearest piece: the pieces whose bound does not exceed the distance found there are
- * all the pieces that may be scanned (the best only decreases); refuse when they cost too much. */
-static cdist_status helix_cost_check(const cdist__cs_scan *s, const helix_x *hx, const helix_bound *hb, double t0,
-                                     double plen, long pieces, long mid)
+/* The sample count m of the pieces after the first, which cost first_cost evaluations at turn_n
+ * samples. Pieces are skipped when their lower bound exceeds the distance found on the axially
+ * nearest piece; the pieces whose bound does not exceed it are all the pieces that may be
+ * scanned (the best only decreases), counted outwards from it while the budget could pay for
+ * them at CD_CURVE_HELIX_MIN_SAMPLES samples each (plus CD_CURVE_HELIX_PIECE_EVALS for their
+ * refinement and certification); more: refused at once (CDIST_ERR_COST_LIMIT, a target
+ * threading a long tight coil). They are scanned at turn_n samples when that fits the budget
+ * (each estimated at the first piece's cost), else at CD_CURVE_HELIX_MIN_SAMPLES: the
+ * certification keeps any count exact. */
+static cdist_status helix_piece_samples(const cdist__cs_scan *s, const helix_x *hx, const helix_bound *hb, double t0,
+                                        double plen, long pieces, long mid, int turn_n, long first_cost, int *m)
 {
     double best = s->k->b.n ? sqrt(s->k->b.c[0].d2) : INFINITY;
     double margin = best - cdist__cs_cert_tol(s);
-    long limit = (long)(CD_CURVE_HELIX_MAX_SAMPLES / s->q->curve_samples), count = 1;
+    long left = *s->evals_left;
+    long limit = left / (CD_CURVE_HELIX_MIN_SAMPLES + 1 + CD_CURVE_HELIX_PIECE_EVALS), count = 0;
     for (long i = mid - 1; i >= 0 && count <= limit; i--, count++)
         if (helix_piece_lb(hb, hx, t0 + (double)i * plen, t0 + (double)(i + 1) * plen) >= margin) break;
     for (long i = mid + 1; i < pieces && count <= limit; i++, count++)
         if (helix_piece_lb(hb, hx, t0 + (double)i * plen, t0 + (double)(i + 1) * plen) >= margin) break;
     if (count > limit)
         return cdist__fail(s->q, CDIST_ERR_COST_LIMIT,
-                       "helix: more than %ld turns are about equally close to the target (cost limit: %.0f "
-                       "samples)",
-                       limit, CD_CURVE_HELIX_MAX_SAMPLES);
+                           "helix: more than %ld turns are about equally close to the target (cost limit: %ld "
+                           "evaluations)",
+                           limit, s->evals_max);
+    long each = first_cost > turn_n + 1 + CD_CURVE_HELIX_PIECE_EVALS ? first_cost
+                                                                     : turn_n + 1 + CD_CURVE_HELIX_PIECE_EVALS;
+    *m = turn_n;
+    if (count * each > left && turn_n > CD_CURVE_HELIX_MIN_SAMPLES) *m = (int)CD_CURVE_HELIX_MIN_SAMPLES;
     return CDIST_OK;
 }
 
@@ -136,9 +143,9 @@ static cdist_status helix_cost_check(const cdist__cs_scan *s, const helix_x *hx,
  * the axial gap shrinks, stays 0 while the pieces overlap the target's range, then grows),
  * stopping on each side at the first piece that neither the certification nor a possible tie
  * needs. */
-static cdist_status helix_pieces(cdist__cs_scan *s, const helix_x *hx, double t0, double plen, long pieces, double t1)
+static cdist_status helix_pieces(cdist__cs_scan *s, const helix_x *hx, double t0, double plen, long pieces, double t1,
+                                 int turn_n)
 {
-    cdist_query *q = s->q;
     const helix_bound hb = ((const helix_lb_ctx *)s->lb_ctx)->hb;
     /* The piece whose axis range is nearest the middle of the target's axial range. */
     long mid = 0;
@@ -150,6 +157,7 @@ static cdist_status helix_pieces(cdist__cs_scan *s, const helix_x *hx, double t0
     long lo = mid, hi = mid; /* next candidates: lo - 1 and hi + 1 (mid first) */
     int first = 1, done_lo = 0, done_hi = 0;
     long ties = 0; /* pieces scanned only for a possible tie */
+    int m = turn_n; /* samples per piece */
     cdist_status st;
     while (first || !done_lo || !done_hi) {
         long i;
@@ -169,7 +177,7 @@ static cdist_status helix_pieces(cdist__cs_scan *s, const helix_x *hx, double t0
              * closest pair: these are scanned too, within CD_CURVE_HELIX_TIE_SAMPLES samples. */
             double need = best - cdist__cs_cert_tol(s);
             double tie = best * (1.0 + CD_CURVE_HELIX_SKIP_REL) + CD_CURVE_HELIX_SKIP_ABS * s->k->b.scale;
-            int tie_ok = (double)(ties + 1) * q->curve_samples <= CD_CURVE_HELIX_TIE_SAMPLES;
+            int tie_ok = (double)(ties + 1) * m <= CD_CURVE_HELIX_TIE_SAMPLES;
             if (!(blo < need || (tie_ok && blo <= tie))) done_lo = 1;
             if (!(bhi < need || (tie_ok && bhi <= tie))) done_hi = 1;
             if (done_lo && done_hi) break;
@@ -178,12 +186,17 @@ static cdist_status helix_pieces(cdist__cs_scan *s, const helix_x *hx, double t0
             if ((i == lo ? blo : bhi) >= need) ties++;
         }
         double a = t0 + (double)i * plen, b = (i == pieces - 1) ? t1 : t0 + (double)(i + 1) * plen;
-        if ((st = cdist__cs_scan_run(s, a, b, q->curve_samples))) return st;
-        if (i == mid && (st = helix_cost_check(s, hx, &hb, t0, plen, pieces, mid))) return st;
+        long left = *s->evals_left;
+        if ((st = cdist__cs_scan_run(s, a, b, m))) return st;
+        if (i == mid && (st = helix_piece_samples(s, hx, &hb, t0, plen, pieces, mid, turn_n, left - *s->evals_left, &m)))
+            return st;
     }
     return CDIST_OK;
 }
 
+
+/* Evaluations spent by the last helix query of this thread that reached the search. */
+static _Thread_local long helix_last_evals;
 
 static cdist_status helix_query(cdist_query *q, const void *obj, const cdist_circle *c, cdist_result *r, int disk)
 {
@@ -238,14 +251,21 @@ static cdist_status helix_query(cdist_query *q, const void *obj, const cdist_cir
     s.accel_plane_max = hx.r;
     s.lb = helix_lb;
     s.lb_ctx = &lbc;
-    if (pieces == 1) {
-        if ((st = cdist__cs_scan_run(&s, t0, t1, q->curve_samples))) return st;
-    } else if ((st = helix_pieces(&s, &hx, t0, plen, pieces, t1))) {
-        return st;
-    }
-    if ((st = cdist__cs_flat_check(&s, t0, t1, plen / q->curve_samples))) return st;
+    long evals_left = CD_CURVE_HELIX_MAX_EVALS;
+    s.evals_left = &evals_left;
+    s.evals_max = CD_CURVE_HELIX_MAX_EVALS;
+    /* Samples per turn: the handle's count up to CD_CURVE_HELIX_TURN_SAMPLES (certified, the count
+     * trades speed only; more would spend the budget on one turn). */
+    int turn_n = q->curve_samples < CD_CURVE_HELIX_TURN_SAMPLES ? q->curve_samples : CD_CURVE_HELIX_TURN_SAMPLES;
+    if (pieces == 1) st = cdist__cs_scan_run(&s, t0, t1, turn_n);
+    else st = helix_pieces(&s, &hx, t0, plen, pieces, t1, turn_n);
+    if (!st) st = cdist__cs_flat_check(&s, t0, t1, plen / q->curve_samples);
+    helix_last_evals = CD_CURVE_HELIX_MAX_EVALS - evals_left;
+    if (st) return st;
     return cdist__cs_coll_result(&k, cdist__pow2(e), origin, r);
 }
+
+long cdist__helix_last_evals(void) { return helix_last_evals; }
 
 cdist_status cdist_helix_circle(cdist_query *q, const cdist_helix *h, const cdist_circle *c, cdist_result *r)
 {
