@@ -97,19 +97,24 @@ typedef struct sample {
     double speed; /* |P'| (1-norm) */
 } sample;
 
-/* One evaluation more of the query's budget (s->evals_left); CDIST_ERR_COST_LIMIT when spent. */
-static inline cdist_status spend(const cdist__cs_scan *s)
+/* The query's budget of evaluations is spent (out of line: the hot path is one decrement). */
+static __attribute__((noinline, cold)) cdist_status budget_spent(const cdist__cs_scan *s)
 {
-    if (!s->evals_left || --*s->evals_left >= 0) return CDIST_OK;
     return cdist__fail(s->q, CDIST_ERR_COST_LIMIT, "curve: the query needs more than its %ld evaluations", s->evals_max);
 }
 
-static cdist_status eval(const cdist__cs_scan *s, double t, sample *o)
+/* count evaluations more of the query's budget (s->evals_left); CDIST_ERR_COST_LIMIT when spent. */
+static inline cdist_status spend(const cdist__cs_scan *s, long count)
+{
+    if (s->evals_left && (*s->evals_left -= count) < 0) return budget_spent(s);
+    return CDIST_OK;
+}
+
+/* The sample at t, not charged to the budget (the scan charges its samples at once). */
+static cdist_status eval_uncharged(const cdist__cs_scan *s, double t, sample *o)
 {
     vec3 P, D;
-    cdist_status st = spend(s);
-    if (st) return st;
-    st = s->ev(s->q, s->ctx, t, &P, &D);
+    cdist_status st = s->ev(s->q, s->ctx, t, &P, &D);
     if (st) return st;
     /* Plain arithmetic (no fma calls: this is the inner loop); g only needs its sign right
      * away from its rounding level `tol`, and every offered candidate is re-evaluated by the
@@ -140,6 +145,13 @@ static cdist_status eval(const cdist__cs_scan *s, double t, sample *o)
     return CDIST_OK;
 }
 
+/* The sample at t, charged to the budget. */
+static inline cdist_status eval(const cdist__cs_scan *s, double t, sample *o)
+{
+    cdist_status st = spend(s, 1);
+    return st ? st : eval_uncharged(s, t, o);
+}
+
 /* Position and F (or D) alone, the same arithmetic as eval. */
 cdist_status cdist__cs_eval_point(const cdist__cs_scan *s, double t, vec3 *p, double *f)
 {
@@ -150,7 +162,7 @@ cdist_status cdist__cs_eval_point(const cdist__cs_scan *s, double t, vec3 *p, do
         *f = x.f;
         return st;
     }
-    cdist_status st = spend(s);
+    cdist_status st = spend(s, 1);
     if (st) return st;
     vec3 P = s->pos(s->ctx, t);
     const cdist__circle *c = s->c;
@@ -290,10 +302,11 @@ cdist_status cdist__cs_scan_run(cdist__cs_scan *s, double t0, double t1, int n)
     double *G = q->scratch, *Fv = G + (n + 1), *R = Fv + (n + 1), *T = R + (n + 1);
     vec3 *Pv = (vec3 *)(T + (n + 1)); /* three doubles per sample */
     s->span = t1 - t0;
+    if ((st = spend(s, n + 1))) return st; /* the samples */
     double ext = 0.0, h_prev = 0.0;
     for (int i = 0; i <= n; i++) {
         sample x;
-        if ((st = eval(s, cdist__cs_t_at(t0, t1, i, n), &x))) return st;
+        if ((st = eval_uncharged(s, cdist__cs_t_at(t0, t1, i, n), &x))) return st;
         /* Disk: every plane crossing, wherever it is (including the end intervals). */
         if (s->disk) {
             if (x.h == 0.0) offer_sample(s, cdist__cs_t_at(t0, t1, i, n), &x);
