@@ -71,9 +71,8 @@ struct cdist__cs_scan {
     cdist__cs_pos_fn pos; /* optional position-only form of ev (NULL: ev) */
     const void *lb_ctx;
     long cert_nodes;    /* nodes of the certification spent so far (the cost limit) */
-    /* Evaluations of the curve the query may still spend (NULL: no limit), counted down by every
-     * evaluation; the query stops with CDIST_ERR_COST_LIMIT when they are spent. evals_max:
-     * the budget it started with (the message). */
+    /* Evaluations the query may still spend (NULL: no limit; a scan charges its samples at
+     * once), then CDIST_ERR_COST_LIMIT; evals_max: the budget it started with. */
     long *evals_left;
     long evals_max;
 };
@@ -81,7 +80,8 @@ struct cdist__cs_scan {
 /* Bound, refine and offer every minimum of the distance over [t0, t1] with n samples
  * (at most the handle's curve sample count); with s->certify, then certify the answer
  * (every part of [t0, t1] bounded below by the answer minus the certification tolerance, or
- * searched). CDIST_ERR_COST_LIMIT when the certification exceeds its node budget. */
+ * searched). CDIST_ERR_COST_LIMIT when the certification exceeds its node budget or the
+ * query's budget of evaluations is spent. */
 cdist_status cdist__cs_scan_run(cdist__cs_scan *s, double t0, double t1, int n);
 /* Polish a candidate minimum near t (from another method) within [lo, hi]: walk to the nearest
  * sign change of g in the direction of descent, refine, and offer the result. */
