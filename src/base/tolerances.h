@@ -135,6 +135,10 @@
 #define CD_CURVE_CERT_EVAL_ULPS 16.0
 #define CD_CURVE_CERT_DEPTH 80
 #define CD_CURVE_CERT_MAX_NODES 200000L
+/* Relative widening (dimensionless) of the certification's speed bounds and Lipschitz screen:
+ * covers the rounding of an interval's width (sample parameters differ from equal spacing by
+ * rounding only) and of the products that form the bound. */
+#define CD_CURVE_CERT_WIDTH_REL 0x1p-40
 /* Blocks of this many sample intervals are tried whole with a curve's own bound before their
  * intervals are bounded one by one (a cost choice, not a tolerance). */
 #define CD_CURVE_CERT_BLOCK 16
@@ -145,14 +149,22 @@
  * geometry (squares before their square roots: their rounding); a turn must be scanned when its
  * bound is below best - tau (the certification tolerance), and may hold a tie when its bound is
  * below best * (1 + CD_CURVE_HELIX_SKIP_REL) + CD_CURVE_HELIX_SKIP_ABS * L (far above the
- * rounding of both); cost limit: CD_CURVE_HELIX_MAX_SAMPLES samples over the turns that must be
- * scanned (2^21: 4096 turns at 512 samples, about 0.6 s; a threaded coil costs about 0.15 ms per
- * turn at 512 samples in a release build). */
+ * rounding of both). */
 #define CD_CURVE_HELIX_MAX_TURNS 1e6
 #define CD_CURVE_HELIX_BOUND_ULPS 64.0
 #define CD_CURVE_HELIX_SKIP_REL 1e-9
 #define CD_CURVE_HELIX_SKIP_ABS 1e-12
-#define CD_CURVE_HELIX_MAX_SAMPLES 2097152.0
+/* Cost of one helix query (counts, not tolerances): at most CD_CURVE_HELIX_MAX_EVALS evaluations
+ * of the curve (samples, refinements, certification), then CDIST_ERR_COST_LIMIT: a bound on the
+ * query's time whatever the turns and the sample count. A turn is sampled at most
+ * CD_CURVE_HELIX_TURN_SAMPLES times; the turns after the first at fewer when the turns that must
+ * be scanned would not fit the budget at that count, each estimated at its samples plus
+ * CD_CURVE_HELIX_PIECE_EVALS (refinement and certification), and never at fewer than
+ * CD_CURVE_HELIX_MIN_SAMPLES (the API's minimum sample count): the query is refused then. */
+#define CD_CURVE_HELIX_MAX_EVALS 12000L
+#define CD_CURVE_HELIX_TURN_SAMPLES 4096
+#define CD_CURVE_HELIX_PIECE_EVALS 128L
+#define CD_CURVE_HELIX_MIN_SAMPLES 32L
 /* Helix pieces that the certification does not need but whose bound is within the skip margin
  * above (a possible second closest pair, e.g. the next crossing of a disk) are scanned within
  * this many samples per query (6 pieces at the default 512 samples). */

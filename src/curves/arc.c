@@ -30,7 +30,7 @@
  * The interior critical angles come from cdist__circle_circle_critical (the circle-circle family)
  * when it provides them (it returns 0 when unavailable: a smooth periodic function always has at
  * least two critical angles), each polished on the true derivative; otherwise (a constant
- * function, parallel planes for the disk) from the sampling engine of src/curves/curve.c over the
+ * function, parallel planes for the disk) from the sampling engine of src/curves/curve_scan.c over the
  * arc's range, which also detects the continuum of closest pairs. */
 #include <math.h>
 #include <stdio.h>
@@ -236,7 +236,7 @@ static double arc_lb(const cdist__cs_scan *s, double a, double b)
 /* Every minimum of theta -> dist^2(X(theta), circle or disk Y) over X's range, handed to the
  * scan's candidate callback (s->cand, or the default offer). Uses the circle-circle critical
  * angles when available, else samples. *exact says which.
- * Disk: D = h^2 + max(rho - r, 0)^2 is C^1 (see src/curves/curve.c), so an interior minimum has
+ * Disk: D = h^2 + max(rho - r, 0)^2 is C^1 (see docs/curves.md), so an interior minimum has
  * D' = 0: either rho > r there and it is a critical angle of the distance to the rim circle,
  * or rho <= r and h h' = 0 with h(a) = hc + A cos a + B sin a (closed form: h' = 0 at
  * atan2(B, A) and opposite, h = 0 at atan2(B, A) +- acos(-hc / hypot(A, B))). Every such angle
@@ -319,8 +319,9 @@ static double arc_scale(const arcx *a, const cdist__circle *c)
 
 /* ---- arc to circle / disk ---- */
 
-static cdist_status arc_target(cdist_query *q, const cdist_arc *a, const cdist_circle *c, cdist_result *r, int disk)
+static cdist_status arc_target(cdist_query *q, const void *obj, const cdist_circle *c, cdist_result *r, int disk)
 {
+    const cdist_arc *a = obj;
     cdist_status st;
     arcx A;
     cdist__circle C;
@@ -349,22 +350,17 @@ static cdist_status arc_target(cdist_query *q, const cdist_arc *a, const cdist_c
          * cdist_circle_circle flags it): every arc point is closest. */
         if (constant && A.end > A.start) k.b.equidistant = 1;
     }
-    cdist__cs_coll_result(&k, cdist__pow2(e), origin, r);
-    return CDIST_OK;
+    return cdist__cs_coll_result(&k, cdist__pow2(e), origin, r);
 }
 
 cdist_status cdist_arc_circle(cdist_query *q, const cdist_arc *a, const cdist_circle *c, cdist_result *r)
 {
-    cdist_status st = cdist__enter(q, r);
-    if (st) return st;
-    return cdist__leave(q, r, arc_target(q, a, c, r, 0), CDIST_METHOD_ROBUST);
+    return cdist__cs_entry(q, arc_target, a, c, r, 0);
 }
 
 cdist_status cdist_arc_disk(cdist_query *q, const cdist_arc *a, const cdist_circle *d, cdist_result *r)
 {
-    cdist_status st = cdist__enter(q, r);
-    if (st) return st;
-    return cdist__leave(q, r, arc_target(q, a, d, r, 1), CDIST_METHOD_ROBUST);
+    return cdist__cs_entry(q, arc_target, a, d, r, 1);
 }
 
 /* ---- arc to arc ---- */
@@ -450,8 +446,7 @@ static cdist_status arc_arc(cdist_query *q, const cdist_arc *a0, const cdist_arc
                 return st;
         }
     }
-    cdist__cs_coll_result(&k, cdist__pow2(e), origin, r);
-    return CDIST_OK;
+    return cdist__cs_coll_result(&k, cdist__pow2(e), origin, r);
 }
 
 /* ---- segment to arc ---- */
@@ -530,8 +525,7 @@ static cdist_status segment_arc(cdist_query *q, const cdist_segment *sg, const c
             }
         }
     }
-    cdist__cs_coll_result(&k, cdist__pow2(e), origin, r);
-    return CDIST_OK;
+    return cdist__cs_coll_result(&k, cdist__pow2(e), origin, r);
 }
 
 cdist_status cdist_arc_arc(cdist_query *q, const cdist_arc *a0, const cdist_arc *a1, cdist_result *r)

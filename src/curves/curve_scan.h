@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: MIT */
-/* The curve engine shared by src/curves/curve.c (callback curves, helix, Bezier) and src/curves/arc.c (arcs).
- * Private to those two files. */
+/* The curve engine (curve_scan.c, its certification curve_cert.c) shared by the curves of this
+ * folder: callback curves (curve_user.c), helix (helix.c), Bezier (bezier.c), arcs (arc.c).
+ * Private to src/curves. */
 #ifndef CDIST_CURVE_SCAN_H
 #define CDIST_CURVE_SCAN_H
 
@@ -22,8 +23,9 @@ void cdist__cs_coll_offer(cdist__cs_coll *k, double d2, vec3 p0, vec3 p1, double
 void cdist__cs_coll_finish(cdist__cs_coll *k);
 /* The families work on a copy of the problem scaled by down = 2^-e (cdist__scale_exponent of its
  * scale: exact, and squared distances neither underflow nor overflow). Unscale the collector by
- * up = 2^e, finish it (cdist__cs_coll_finish) and write the result, points moved by origin. */
-void cdist__cs_coll_result(cdist__cs_coll *k, double up, vec3 origin, cdist_result *r);
+ * up = 2^e, finish it (cdist__cs_coll_finish) and write the result, points moved by origin;
+ * returns CDIST_OK (the query's status from here on). */
+cdist_status cdist__cs_coll_result(cdist__cs_coll *k, double up, vec3 origin, cdist_result *r);
 /* Offer point p (any frame) with parameter t against circle/disk c (c->c in the same frame);
  * swap puts p second. */
 void cdist__cs_offer_point(cdist__cs_coll *k, vec3 p, double t, const cdist__circle *c, int disk, int swap);
@@ -69,12 +71,17 @@ struct cdist__cs_scan {
     cdist__cs_pos_fn pos; /* optional position-only form of ev (NULL: ev) */
     const void *lb_ctx;
     long cert_nodes;    /* nodes of the certification spent so far (the cost limit) */
+    /* Evaluations the query may still spend (NULL: no limit; a scan charges its samples at
+     * once), then CDIST_ERR_COST_LIMIT; evals_max: the budget it started with. */
+    long *evals_left;
+    long evals_max;
 };
 
 /* Bound, refine and offer every minimum of the distance over [t0, t1] with n samples
  * (at most the handle's curve sample count); with s->certify, then certify the answer
  * (every part of [t0, t1] bounded below by the answer minus the certification tolerance, or
- * searched). CDIST_ERR_COST_LIMIT when the certification exceeds its node budget. */
+ * searched). CDIST_ERR_COST_LIMIT when the certification exceeds its node budget or the
+ * query's budget of evaluations is spent. */
 cdist_status cdist__cs_scan_run(cdist__cs_scan *s, double t0, double t1, int n);
 /* Polish a candidate minimum near t (from another method) within [lo, hi]: walk to the nearest
  * sign change of g in the direction of descent, refine, and offer the result. */
@@ -87,5 +94,54 @@ cdist_status cdist__cs_check_interval(cdist_query *q, double t0, double t1, cons
 /* U = zd projected onto the plane of unit normal n, normalised; V = n x U. ZERO_VECTOR when zd
  * is zero or within CD_CURVE_PARALLEL_SIN of n. */
 cdist_status cdist__cs_zero_frame(cdist_query *q, vec3 n, const cdist_vec3 *zd, const char *what, vec3 *U, vec3 *V);
+
+/* Run a curve (evaluated in the frame whose origin is `origin`) against circle or disk cc
+ * (its centre already relative to that frame) with the handle's sample count and write the
+ * result. bounds: |P'|, |P''|, |n . P''| and |n x P''| over [t0, t1] (certified search), or NULL
+ * (sampling only). */
+cdist_status cdist__cs_run_curve(cdist_query *q, cdist__cs_eval_fn ev, cdist__cs_pos_fn pos, const void *ctx, double t0,
+                                 double t1, const cdist__circle *cc, int disk, vec3 origin, double scale,
+                                 double frame_mag, double up, const double *bounds, cdist_result *r);
+
+/* A curve object (helix, Bezier, arc...) against a circle or, disk = 1, a disk. */
+typedef cdist_status (*cdist__cs_query_fn)(cdist_query *q, const void *obj, const cdist_circle *c, cdist_result *r,
+                                           int disk);
+/* The public entry of such a query: takes the handle, runs it, reports its status. */
+static inline cdist_status cdist__cs_entry(cdist_query *q, cdist__cs_query_fn fn, const void *obj,
+                                           const cdist_circle *c, cdist_result *r, int disk)
+{
+    cdist_status st = cdist__enter(q, r);
+    if (st) return st;
+    return cdist__leave(q, r, fn(q, obj, c, r, disk), CDIST_METHOD_ROBUST);
+}
+
+/* The evaluations of the curve spent by the last helix query of the calling thread that got
+ * past validation (at most CD_CURVE_HELIX_MAX_EVALS + 1: the one refused); for the tests of the
+ * helix's cost bound. */
+long cdist__helix_last_evals(void);
+
+/* ---- shared by the engine, its certification and the helix ---- */
+
+static inline double cdist__cs_min2(double a, double b) { return a < b ? a : b; }
+static inline double cdist__cs_max2(double a, double b) { return a > b ? a : b; }
+
+/* Sample i of n over [t0, t1] (the last exactly t1). */
+static inline double cdist__cs_t_at(double t0, double t1, int i, int n)
+{
+    if (i == n) return t1;
+    return t0 + (t1 - t0) * ((double)i / n);
+}
+
+/* The certification tolerance tau (CD_CURVE_CERT_ULPS of the collector's scale). */
+static inline double cdist__cs_cert_tol(const cdist__cs_scan *s)
+{
+    return CD_CURVE_CERT_ULPS * DBL_EPSILON * s->k->b.scale;
+}
+
+/* Position and F (or D) at t alone (the position-only form when the curve has one). */
+cdist_status cdist__cs_eval_point(const cdist__cs_scan *s, double t, vec3 *p, double *f);
+/* Certify the n sample intervals of a scan over [t0, t1] (F: d^2, P: positions per sample),
+ * after the scan offered its candidates (curve_cert.c). */
+cdist_status cdist__cs_certify_samples(cdist__cs_scan *s, double t0, double t1, int n, const double *F, const vec3 *P);
 
 #endif
