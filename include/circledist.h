@@ -101,7 +101,10 @@ typedef struct cdist_arc {
 typedef struct cdist_helix {
     cdist_vec3 center;         /**< point on the axis at t = 0 */
     cdist_vec3 axis;           /**< unit axis direction */
-    cdist_vec3 zero_direction; /**< direction of angle 0, not parallel to the axis */
+    cdist_vec3 zero_direction; /**< direction of angle 0 (any length), not parallel to the axis:
+                                     ::CDIST_ERR_ZERO_VECTOR when zero or within sin 1e-10 of
+                                     it; at an angle theta from the axis, angle 0 is known to
+                                     about 1.1e-16 / sin theta radians (docs/curves.md) */
     double radius;             /**< radius, >= 0 */
     double pitch;              /**< axial advance per full turn (may be 0 or negative) */
     double t0;                 /**< first angle, radians */
@@ -357,10 +360,10 @@ CDIST_API cdist_status cdist_disk_disk(cdist_query *q, const cdist_circle *d0, c
  * ::CDIST_METHOD_ROBUST whatever the handle's method). Arcs are exact: their candidates are the
  * circle-circle critical points inside the range plus the end points (closed form for arcs on
  * coaxial circles). Helices and Bezier curves are sampled at cdist_query_get_curve_samples()
- * intervals (per turn for a helix) to bracket critical points, and the answer is then
- * certified: every interval is bounded below (from bounds of the curve's first and second
- * derivatives, and for a helix its cylinder and slab), and one whose bound is below the answer
- * minus tau = 512 eps L (about 1.1e-13 of the problem scale L, rounding included) is split and
+ * intervals (per turn for a helix, at most 4096 per turn) to bracket critical points, and the
+ * answer is then certified: every interval is bounded below (from bounds of the curve's first
+ * and second derivatives, and for a helix its cylinder and slab), and one whose bound is below
+ * the answer minus tau = 512 eps L (about 1.1e-13 of the problem scale L, rounding included) is split and
  * searched; so the distance is within tau of the global minimum at every sample count (the
  * count trades speed only). A second closest pair less than tau from the answer may go
  * unreported when the bound excluded its region. The sampled fallback of arc-circle and
@@ -372,11 +375,13 @@ CDIST_API cdist_status cdist_disk_disk(cdist_query *q, const cdist_circle *d0, c
  * it; a basin narrower than the sample spacing can be missed, and the answer is then the
  * distance of another local minimum or an end point (a true distance, above the minimum).
  * Raise the sample count for curves with fine detail.
- * Cost limits (::CDIST_ERR_COST_LIMIT): a helix's turns are skipped when a lower bound (from the
- * axial and radial geometry) shows they cannot beat the distance found by more than tau; when
- * more than 2^21 / cdist_query_get_curve_samples() turns (4096 by default) cannot be skipped (a
- * target threading a long, tight coil), the helix queries refuse before scanning them; and a
- * certification that needs more than 200000 interval splits stops. */
+ * Cost limits (::CDIST_ERR_COST_LIMIT): a helix query spends at most 12000 evaluations of the
+ * curve (samples, refinement and certification, whatever the turns and the sample count) and
+ * refuses when it would need more. Turns are skipped when a lower bound (from the axial and
+ * radial geometry) shows they cannot beat the distance found by more than tau; when the turns
+ * that cannot be skipped do not fit the budget (more than about 70 about equally close: a target
+ * threading a long, tight coil) the query refuses before scanning them. A certification that
+ * needs more than 200000 interval splits stops. */
 
 /** Distance from the curve f(t), t in [t0, t1], to a circle; param[0] is the curve parameter.
  * The curve must be continuously differentiable and f must give its exact derivative.

@@ -16,7 +16,7 @@
 
 #define CD_DEFAULT_CURVE_SAMPLES 512
 #define CD_MAX_CURVE_SAMPLES (1 << 20)
-/* Per-sample arrays of the curve scan (src/curves/curve.c): the handle's scratch holds this
+/* Per-sample arrays of the curve scan (src/curves/curve_scan.c): the handle's scratch holds this
  * many arrays of curve_samples + 1 doubles. */
 #define CD_CURVE_SCRATCH_ARRAYS 7
 #define CD_DEFAULT_MAX_ITERATIONS 200
