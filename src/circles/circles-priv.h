@@ -125,7 +125,7 @@ static inline double cdist__cc_param(double t)
 void cdist__cc_frame_init(cdist__cc_frame *f, const cdist__circle *A, vec3 C, const cdist__circle *B);
 void cdist__cc_frame_ring(cdist__cc_frame *f, const cdist__circle *A, vec3 C, const cdist__circle *B);
 void cdist__cc_frame_bounds(cdist__cc_frame *f);
-/* The batch kernel's certified search (src/batch/cc_kernel.c) for the one pair of frame f (only
+/* The certified search (cc_search.c, shared with the batch kernel) for the one pair of frame f (only
  * its ring part is read), with the angles in lanes: 1, the angle *t of the closest point on A
  * and its cosine *c and sine *s when the closest point is certified unique (every other region
  * of A at least CD_CCK_CERT_MARGIN farther in F) and the distance is not tiny
