@@ -22,6 +22,11 @@ void cdist__poly_ws_free(cdist__poly_ws *ws);
 #define CD_POLY_FAIL (-2)
 int cdist__poly_real_roots(cdist__poly_ws *ws, const double *coef, int degree, double imag_tol, double *roots);
 
+/* out = a b for ascending coefficients of degrees da and db (out, of degree da + db, must not
+ * alias them); each product added with one rounding (fma) when fused, else two. The two methods
+ * that call it keep their own rounding (results bit for bit). */
+void cdist__poly_mul(const double *a, int da, const double *b, int db, int fused, double *out);
+
 /* Horner evaluation of the polynomial and its derivative. */
 double cdist__poly_eval(const double *coef, int degree, double x, double *deriv);
 

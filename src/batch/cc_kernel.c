@@ -30,6 +30,7 @@ typedef struct ck_block {
 #define CD_LANES 1
 #include "base/lanes/lanes_def.h"
 #include "base/lanes/lanes_vec.h"
+#include "base/dd.h"
 #include "circles/cc_search_body.h"
 #include "cc_kernel_body.h"
 #include "base/lanes/lanes_undef.h"
@@ -39,6 +40,7 @@ CD_LANES_TARGET_PUSH("avx512f,fma")
 #define CD_LANES 8
 #include "base/lanes/lanes_def.h"
 #include "base/lanes/lanes_vec.h"
+#include "base/dd.h"
 #include "circles/cc_search_body.h"
 #include "cc_kernel_body.h"
 #include "base/lanes/lanes_undef.h"
@@ -48,6 +50,7 @@ CD_LANES_TARGET_PUSH("avx2,fma")
 #define CD_LANES 4
 #include "base/lanes/lanes_def.h"
 #include "base/lanes/lanes_vec.h"
+#include "base/dd.h"
 #include "circles/cc_search_body.h"
 #include "cc_kernel_body.h"
 #include "base/lanes/lanes_undef.h"

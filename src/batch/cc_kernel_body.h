@@ -279,64 +279,15 @@ static unsigned KN(ck_search)(ck_block *b, int g)
 
 /* ---- the distance at the angle found, in lanes ---- */
 
-/* cdist__two_prod and cdist__two_sum (src/base/numeric.h) */
-CD_INLINE V KN(ck_two_prod)(V a, V b, V *lo)
-{
-    V p = vmul(a, b);
-    *lo = vfma(a, b, vneg(p));
-    return p;
-}
-CD_INLINE V KN(ck_two_sum)(V a, V b, V *lo)
-{
-    V s = vadd(a, b), bb = vsub(s, a);
-    *lo = vadd(vsub(a, vsub(s, bb)), vsub(b, bb));
-    return s;
-}
-/* dd_trig and dd_sqr_add of cc_engine.c */
-CD_INLINE V KN(ck_dd_trig)(V a, V b, V g, V c, V sn, V *lo)
-{
-    V e1, e2, e3, e4;
-    V p = KN(ck_two_prod)(a, c, &e1), q = KN(ck_two_prod)(b, sn, &e2);
-    V s1 = KN(ck_two_sum)(p, q, &e3), s2 = KN(ck_two_sum)(s1, g, &e4);
-    *lo = vadd(vadd(e1, e2), vadd(e3, e4));
-    return s2;
-}
-CD_INLINE V KN(ck_dd_sqr_add)(V xh, V xl, V ah, V al, V *lo)
-{
-    V e1, e2, p = KN(ck_two_prod)(xh, xh, &e1);
-    V s = KN(ck_two_sum)(ah, p, &e2);
-    *lo = vadd(vadd(vadd(al, e2), e1), vmul(vmul(vset(2.0), xh), xl));
-    return s;
-}
-
 /* The distances of the lanes of the group from g at their angles (b->ct, b->st: cosine and
- * sine): cdist__cc_point_d2 (cc_engine.c) operation by operation, so bit for bit the single
- * query's formula; scaled back as the single query scales its answer. Into b->d. */
+ * sine): the single query's formula (cc_point_d2 of cc_search_body.h), scaled back as the
+ * single query scales its answer. Into b->d. */
 static void KN(ck_final)(ck_block *b, int g)
 {
-    V c = vld(&b->ct[g]), s = vld(&b->st[g]);
-    const double(*col)[64] = b->col;
-#define CK_COL(k) vld(&col[k][g])
-    V wxl, wyl, wzl, hl;
-    V wx = KN(ck_dd_trig)(CK_COL(CK_C_ALX), CK_COL(CK_C_BEX), CK_COL(CK_C_GAX), c, s, &wxl);
-    V wy = KN(ck_dd_trig)(CK_COL(CK_C_ALY), CK_COL(CK_C_BEY), CK_COL(CK_C_GAY), c, s, &wyl);
-    V wz = KN(ck_dd_trig)(CK_COL(CK_C_ALZ), CK_COL(CK_C_BEZ), CK_COL(CK_C_GAZ), c, s, &wzl);
-    V h = KN(ck_dd_trig)(CK_COL(CK_C_HA), CK_COL(CK_C_HB), CK_COL(CK_C_HC), c, s, &hl);
-    V zero = vset(0.0), Ql, Qh = KN(ck_dd_sqr_add)(wx, wxl, zero, zero, &Ql);
-    Qh = KN(ck_dd_sqr_add)(wy, wyl, Qh, Ql, &Ql);
-    Qh = KN(ck_dd_sqr_add)(wz, wzl, Qh, Ql, &Ql);
-    V q = vadd(Qh, Ql), ql = vsub(Ql, vsub(q, Qh));
-    M pos = vgt(q, zero);
-    q = vsel(pos, q, zero);
-    ql = vsel(pos, ql, zero);
-    V r = vsqrt(q), e, r2 = KN(ck_two_prod)(r, r, &e);
-    V rl = vdiv(vadd(vsub(vsub(q, r2), e), ql), vmul(vset(2.0), r));
-    rl = vsel(vgt(r, zero), rl, zero);
-    V dr = KN(ck_two_sum)(r, vneg(CK_COL(CK_C_S)), &e);
-    V dl, d2h = KN(ck_dd_sqr_add)(dr, vadd(e, rl), zero, zero, &dl);
-    d2h = KN(ck_dd_sqr_add)(h, hl, d2h, dl, &dl);
-    V d2 = KN(fmax)(zero, vadd(d2h, dl)), u = CK_COL(CK_C_UNSC);
-    vst(&b->d[g], vmul(vsqrt(vmul(vmul(d2, u), u)), CK_COL(CK_C_UP)));
-#undef CK_COL
+    KN(ck_ring) r;
+    KN(ck_load)(b, g, &r);
+    V d2 = KN(cc_point_d2)(&r, vld(&b->ct[g]), vld(&b->st[g]));
+    V u = vld(&b->col[CK_C_UNSC][g]);
+    vst(&b->d[g], vmul(vsqrt(vmul(vmul(d2, u), u)), vld(&b->col[CK_C_UP][g])));
 }
 

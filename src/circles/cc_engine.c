@@ -955,52 +955,6 @@ int cdist__cc_parallel_critical(const cdist__cc_frame *f, double *t)
 }
 
 
-/* ---- the distance at an angle, in double-double (cdist__cc_point_d2) ---- */
-
-/* x = hi + lo with |lo| small against |hi| (not renormalised: every sum below is of a few
- * terms whose low parts stay far below an ulp of the high part) */
-typedef struct cc_dd {
-    double hi, lo;
-} cc_dd;
-
-/* a c + b sn + g: the products exact, the two sums error-free, their errors in lo */
-CD_INLINE cc_dd dd_trig(double a, double b, double g, double c, double sn)
-{
-    double e1, e2, e3, e4;
-    double p = cdist__two_prod(a, c, &e1), q = cdist__two_prod(b, sn, &e2);
-    double s1 = cdist__two_sum(p, q, &e3), s2 = cdist__two_sum(s1, g, &e4);
-    return (cc_dd){s2, (e1 + e2) + (e3 + e4)};
-}
-
-/* x^2 + acc */
-CD_INLINE cc_dd dd_sqr_add(cc_dd x, cc_dd acc)
-{
-    double e1, e2, p = cdist__two_prod(x.hi, x.hi, &e1);
-    double s = cdist__two_sum(acc.hi, p, &e2);
-    return (cc_dd){s, acc.lo + e2 + e1 + 2.0 * x.hi * x.lo};
-}
-
-CD_FMA_CLONES double cdist__cc_point_d2(const cdist__ring *rg, double s, double c, double sn)
-{
-    cc_dd wx = dd_trig(rg->al.x, rg->be.x, rg->ga.x, c, sn);
-    cc_dd wy = dd_trig(rg->al.y, rg->be.y, rg->ga.y, c, sn);
-    cc_dd wz = dd_trig(rg->al.z, rg->be.z, rg->ga.z, c, sn);
-    cc_dd h = dd_trig(rg->ha, rg->hb, rg->hc, c, sn);
-    cc_dd Q = dd_sqr_add(wz, dd_sqr_add(wy, dd_sqr_add(wx, (cc_dd){0, 0})));
-    /* rho = sqrt(Q) with one Newton correction of the double root */
-    double q = Q.hi + Q.lo, ql = Q.lo - (q - Q.hi);
-    if (!(q > 0)) q = ql = 0.0; /* on B's axis: the low parts may tip Q below 0 */
-    double r = sqrt(q), rl = 0.0;
-    if (r > 0) {
-        double e, r2 = cdist__two_prod(r, r, &e);
-        rl = (((q - r2) - e) + ql) / (2.0 * r);
-    }
-    double e, dr = cdist__two_sum(r, -s, &e);
-    cc_dd d2 = dd_sqr_add(h, dd_sqr_add((cc_dd){dr, e + rl}, (cc_dd){0, 0}));
-    /* >= 0: the dropped squares of the low parts can tip a zero distance below 0 */
-    return cdist__fmax(0.0, d2.hi + d2.lo);
-}
-
 void cdist__cc_settle_d2(const cdist__cc_frame *f, const cdist__cc_sink *k)
 {
     cdist__best *b = k->best;

@@ -426,15 +426,6 @@ static void special_candidates(const cdist__cc *g, cc_cands *c)
 /* The polynomial                                                                            */
 /* ---------------------------------------------------------------------------------------- */
 
-/* out = a * b (degrees da, db); out must not alias. */
-static int pmul(const double *a, int da, const double *b, int db, double *out)
-{
-    for (int i = 0; i <= da + db; i++) out[i] = 0.0;
-    for (int i = 0; i <= da; i++)
-        for (int j = 0; j <= db; j++) out[i + j] += a[i] * b[j];
-    return da + db;
-}
-
 /* out = a + s * b (out may alias a), returns the degree max(da, db). */
 static int paxpy(double *out, int da, double s, const double *b, int db)
 {
@@ -474,30 +465,30 @@ static void build_phi(const cdist__cc *g, int side, double *p6, double *p7, doub
     double t1[9], t2[9], t3[9], t4[9];
     /* S = p2^2 + (1 - g^2) p3^2 (deg 2) */
     double S[3];
-    pmul(P2, 1, P2, 1, S);
+    cdist__poly_mul(P2, 1, P2, 1, 0, S);
     double p33 = P3[0] * P3[0];
     paxpy(S, 2, p33, OM, 2);
     /* p6 = p0 S + (1 - g^2) 2 p1 p2 p3 - r0^2 (p4^2 + (1 - g^2) p5^2) */
-    pmul(P0, 2, S, 2, p6); /* deg 4 */
-    pmul(P1, 1, P2, 1, t1); /* deg 2 */
-    pmul(t1, 2, OM, 2, t2); /* deg 4 */
+    cdist__poly_mul(P0, 2, S, 2, 0, p6); /* deg 4 */
+    cdist__poly_mul(P1, 1, P2, 1, 0, t1); /* deg 2 */
+    cdist__poly_mul(t1, 2, OM, 2, 0, t2); /* deg 4 */
     paxpy(p6, 4, 2.0 * P3[0], t2, 4);
-    pmul(P4, 2, P4, 2, t1); /* deg 4 */
+    cdist__poly_mul(P4, 2, P4, 2, 0, t1); /* deg 4 */
     paxpy(p6, 4, -r02, t1, 4);
-    pmul(P5, 1, P5, 1, t3); /* deg 2 */
-    pmul(t3, 2, OM, 2, t4); /* deg 4 */
+    cdist__poly_mul(P5, 1, P5, 1, 0, t3); /* deg 2 */
+    cdist__poly_mul(t3, 2, OM, 2, 0, t4); /* deg 4 */
     paxpy(p6, 4, -r02, t4, 4);
     /* p7 = 2 p0 p2 p3 + p1 S - 2 r0^2 p4 p5 */
-    pmul(P0, 2, P2, 1, p7); /* deg 3 */
+    cdist__poly_mul(P0, 2, P2, 1, 0, p7); /* deg 3 */
     for (int i = 0; i <= 3; i++) p7[i] *= 2.0 * P3[0];
-    pmul(P1, 1, S, 2, t1); /* deg 3 */
+    cdist__poly_mul(P1, 1, S, 2, 0, t1); /* deg 3 */
     paxpy(p7, 3, 1.0, t1, 3);
-    pmul(P4, 2, P5, 1, t1); /* deg 3 */
+    cdist__poly_mul(P4, 2, P5, 1, 0, t1); /* deg 3 */
     paxpy(p7, 3, -2.0 * r02, t1, 3);
     /* phi = p6^2 - (1 - g^2) p7^2 */
-    pmul(p6, 4, p6, 4, phi);
-    pmul(p7, 3, p7, 3, t1); /* deg 6 */
-    pmul(t1, 6, OM, 2, t2); /* deg 8 */
+    cdist__poly_mul(p6, 4, p6, 4, 0, phi);
+    cdist__poly_mul(p7, 3, p7, 3, 0, t1); /* deg 6 */
+    cdist__poly_mul(t1, 6, OM, 2, 0, t2); /* deg 8 */
     paxpy(phi, 8, -1.0, t2, 8);
 }
 

@@ -52,6 +52,8 @@ void cdist__cc_search_tables(void) { pthread_once(&cc_tab_once, cc_tables_init);
 
 #define CD_LANES 1
 #include "base/lanes/lanes_def.h"
+#include "base/lanes/lanes_vec.h"
+#include "base/dd.h"
 #include "circles/cc_search_body.h"
 #include "circles/cc_quick_body.h"
 #include "base/lanes/lanes_undef.h"
@@ -60,6 +62,8 @@ void cdist__cc_search_tables(void) { pthread_once(&cc_tab_once, cc_tables_init);
 CD_LANES_TARGET_PUSH("avx512f,fma")
 #define CD_LANES 8
 #include "base/lanes/lanes_def.h"
+#include "base/lanes/lanes_vec.h"
+#include "base/dd.h"
 #include "circles/cc_search_body.h"
 #include "circles/cc_quick_body.h"
 #include "base/lanes/lanes_undef.h"
@@ -68,11 +72,21 @@ CD_LANES_TARGET_POP
 CD_LANES_TARGET_PUSH("avx2,fma")
 #define CD_LANES 4
 #include "base/lanes/lanes_def.h"
+#include "base/lanes/lanes_vec.h"
+#include "base/dd.h"
 #include "circles/cc_search_body.h"
 #include "circles/cc_quick_body.h"
 #include "base/lanes/lanes_undef.h"
 CD_LANES_TARGET_POP
 #endif
+
+CD_FMA_CLONES double cdist__cc_point_d2(const cdist__ring *rg, double s, double c, double sn)
+{
+    const ck_ring_1 r = {.alx = rg->al.x, .aly = rg->al.y, .alz = rg->al.z, .bex = rg->be.x, .bey = rg->be.y,
+                         .bez = rg->be.z, .gax = rg->ga.x, .gay = rg->ga.y, .gaz = rg->ga.z, .ha = rg->ha,
+                         .hb = rg->hb, .hc = rg->hc, .s = s};
+    return cc_point_d2_1(&r, c, sn);
+}
 
 int cdist__cc_quick(const cdist__cc_frame *f, double *t, double *c, double *s)
 {

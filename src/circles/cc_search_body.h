@@ -2,7 +2,8 @@
 /* The arithmetic of the circle-circle certified search (docs/circles.md), written once over a
  * lane type (src/base/lanes/lanes_def.h) and included once per instruction set: by the single
  * query's search (cc_search.c, lanes are angles) and by the batch kernel (src/batch/cc_kernel.c,
- * lanes are entries). Needs cc_search.h. No include guard. */
+ * lanes are entries). Needs cc_search.h, and lanes_vec.h and base/dd.h of the same lanes.
+ * No include guard. */
 
 /* a b + c: the hardware fma where the variant has one, else a multiply and an add (the search
  * needs no particular rounding: the final distance is recomputed in scalar code) */
@@ -173,6 +174,35 @@ CD_INLINE void KN(ck_answer_cs)(V c, V s, V d, V *cf, V *sf)
     V k = vmul(vset(0.5), vsub(vset(3.0), vadd(vmul(x, x), vmul(y, y))));
     *cf = vmul(x, k);
     *sf = vmul(y, k);
+}
+
+/* The squared distance from A's point at (c, sn) = (cos t, sin t) to B (radius r->s) from the
+ * ring r in double-double (base/dd.h): cdist__cc_point_d2 is the 1-lane instance, the batch
+ * kernel's final distance the wider ones. */
+CD_INLINE V KN(cc_point_d2)(const KN(ck_ring) *r, V c, V sn)
+{
+    V wxl, wyl, wzl, hl, zero = vset(0.0);
+    V wx = KN(dd_trig)(r->alx, r->bex, r->gax, c, sn, &wxl);
+    V wy = KN(dd_trig)(r->aly, r->bey, r->gay, c, sn, &wyl);
+    V wz = KN(dd_trig)(r->alz, r->bez, r->gaz, c, sn, &wzl);
+    V h = KN(dd_trig)(r->ha, r->hb, r->hc, c, sn, &hl);
+    V Ql, Qh = KN(dd_sqr_add)(wx, wxl, zero, zero, &Ql);
+    Qh = KN(dd_sqr_add)(wy, wyl, Qh, Ql, &Ql);
+    Qh = KN(dd_sqr_add)(wz, wzl, Qh, Ql, &Ql);
+    /* rho = sqrt(Q) with one Newton correction of the double root; on B's axis the low parts
+     * may tip Q below 0 */
+    V q = vadd(Qh, Ql), ql = vsub(Ql, vsub(q, Qh));
+    M pos = vgt(q, zero);
+    q = vsel(pos, q, zero);
+    ql = vsel(pos, ql, zero);
+    V e, rho = vsqrt(q), r2 = KN(dd_two_prod)(rho, rho, &e);
+    V rl = vdiv(vadd(vsub(vsub(q, r2), e), ql), vmul(vset(2.0), rho));
+    rl = vsel(vgt(rho, zero), rl, zero);
+    V dr = KN(dd_two_sum)(rho, vneg(r->s), &e);
+    V dl, d2 = KN(dd_sqr_add)(dr, vadd(e, rl), zero, zero, &dl);
+    d2 = KN(dd_sqr_add)(h, hl, d2, dl, &dl);
+    /* >= 0: the dropped squares of the low parts can tip a zero distance below 0 */
+    return KN(fmax)(zero, vadd(d2, dl));
 }
 
 #undef ck_madd

@@ -198,13 +198,6 @@ static void trig_to_quad(const double *c, double s, double *q)
     q[2] = (c[0] - c[1]) * s;
 }
 
-static void pmul(const double *a, int da, const double *b, int db, double *out)
-{
-    for (int i = 0; i <= da + db; i++) out[i] = 0.0;
-    for (int i = 0; i <= da; i++)
-        for (int j = 0; j <= db; j++) out[i + j] = fma(a[i], b[j], out[i + j]);
-}
-
 /* Critical points of F by the degree-8 polynomial (point-curve-circle-to-disk §4.3, in the
  * half-angle variable): F' = 0 <=> S rho = R T, squared: (x^2+y^2) S^2 - R^2 T^2 = 0, with
  * T = x x' + y y'. Returns the number of angles written, or -1 when F is constant, -2 on failure. */
@@ -221,17 +214,17 @@ static int cdk_poly_critical(cdist_query *q, const cdk *k, double *ts)
     trig_to_quad(dY, s, qyp);
     trig_to_quad(k->S, s * s, qs);
     double xx[5], yy[5], xxp[5], yyp[5], rho2[5], T[5], S2[5], a[9], bq[9];
-    pmul(qx, 2, qx, 2, xx);
-    pmul(qy, 2, qy, 2, yy);
-    pmul(qx, 2, qxp, 2, xxp);
-    pmul(qy, 2, qyp, 2, yyp);
+    cdist__poly_mul(qx, 2, qx, 2, 1, xx);
+    cdist__poly_mul(qy, 2, qy, 2, 1, yy);
+    cdist__poly_mul(qx, 2, qxp, 2, 1, xxp);
+    cdist__poly_mul(qy, 2, qyp, 2, 1, yyp);
     for (int i = 0; i < 5; i++) {
         rho2[i] = xx[i] + yy[i];
         T[i] = xxp[i] + yyp[i];
     }
-    pmul(qs, 2, qs, 2, S2);
-    pmul(rho2, 4, S2, 4, a);
-    pmul(T, 4, T, 4, bq);
+    cdist__poly_mul(qs, 2, qs, 2, 1, S2);
+    cdist__poly_mul(rho2, 4, S2, 4, 1, a);
+    cdist__poly_mul(T, 4, T, 4, 1, bq);
     double R2 = (k->R * s) * (k->R * s);
     for (int i = 0; i < 9; i++) a[i] = fma(-R2, bq[i], a[i]);
     double roots[8];
