@@ -45,12 +45,13 @@ CD_INLINE int axis_crossings(const cdist__cc_frame *f, double *t)
     return n;
 }
 
-/* c0 at the origin and c1 relative to it, scaled by a power of two (returned) to L in
- * [0.5, 1): angles do not change under scaling (see cc_robust). */
+/* c0 at the origin and c1 relative to it, scaled as the robust method scales
+ * (cdist__circles_scale, half = 1); returns the factor. Angles do not change under scaling. */
 CD_INLINE double scaled_pair(const cdist__circle *c0, const cdist__circle *c1, cdist__circle *a, cdist__circle *b)
 {
     vec3 C = v_sub(c1->c, c0->c);
-    double up, sc = cdist__cc_scale_to_half(cdist__fmax(cdist__fmax(c0->r, c1->r), v_norm(C)), &up);
+    double up, sc;
+    cdist__circles_scale(cdist__fmax(cdist__fmax(c0->r, c1->r), v_norm(C)), 1, &sc, &up);
     *a = *c0;
     *b = *c1;
     a->c = v3(0, 0, 0);

@@ -44,7 +44,7 @@
  * mirror image is polished too (symmetric pairs come out equally accurate). */
 #include <math.h>
 
-#include "internal.h"
+#include "circles/circles-priv.h"
 
 /* ---------------------------------------------------------------------------------------- */
 /* Shared helpers (prototypes in the cc_methods block of internal.h)                          */
@@ -145,9 +145,8 @@ void cdist__cc_offer(const cdist__cc *g, int side, double t, cdist__best *b)
 
 void cdist__cc_scale(const cdist__circle *c0, const cdist__circle *c1, double L, cdist__circle *a, cdist__circle *b, double *s)
 {
-    int e = 0;
-    frexp(L > 0.0 && isfinite(L) ? L : 1.0, &e); /* L = m 2^e, m in [0.5, 1) */
-    double k = ldexp(1.0, 1 - e);                /* L k in [1, 2) */
+    double k, up;
+    cdist__circles_scale(L, 0, &k, &up);
     *a = *c0;
     *b = *c1;
     a->c = v3(0, 0, 0);

@@ -31,9 +31,9 @@ CD_FMA_CLONES int cdist__cc_prepare(const cdist__circle *c0, const cdist__circle
     p->swapped = param_second(c0, c1, C);
     const cdist__circle *A = p->swapped ? c1 : c0, *B = p->swapped ? c0 : c1;
     if (A->r == 0.0 || B->r == 0.0) return 0;
-    /* Scale the problem by a power of two (exact) so that L is about 1: H has terms of order
-     * L^6, which would overflow or underflow for coordinates near the 1e150 limit. */
-    double sc = cdist__cc_scale_to_half(cdist__fmax(cdist__fmax(c0->r, c1->r), v_norm(C)), &p->unscale);
+    /* H has terms of order L^6 */
+    double sc;
+    cdist__circles_scale(cdist__fmax(cdist__fmax(c0->r, c1->r), v_norm(C)), 1, &sc, &p->unscale);
     p->A = *A;
     p->B = *B;
     p->A.c = v_scale(sc, A->c);

@@ -121,8 +121,8 @@ CD_FMA_CLONES int cdist__circles_frame(cdist__circle *a, cdist__circle *b, vec3 
     *offset = a->c;
     a->c = v3(0, 0, 0);
     b->c = v_sub(b->c, *offset);
-    int e = cdist__scale_exponent(cdist__fmax(cdist__fmax(a->r, b->r), v_maxabs(b->c)));
-    double down = cdist__pow2(-e); /* normal for |e| <= CD_SCALE_MAX_EXP: x * down is ldexp(x, -e) */
+    double down, up;
+    int e = cdist__circles_scale(cdist__fmax(cdist__fmax(a->r, b->r), v_maxabs(b->c)), 0, &down, &up);
     a->r *= down;
     b->r *= down;
     b->c = v_scale(down, b->c);

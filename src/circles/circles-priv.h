@@ -2,7 +2,7 @@
 /* Private declarations of the circles family (src/circles): the trigonometric root-isolation
  * engine of circle-circle (cc_engine.c, described there) shared by the robust method
  * (cc_robust.c), the critical-angle service (cc_critical.c) and the dispatcher
- * (circle_circle.c). Everything is in the units of a problem scaled to L in [1, 2). */
+ * (circle_circle.c). Everything is in the units of a problem scaled by cdist__circles_scale. */
 #ifndef CDIST_CIRCLES_PRIV_H
 #define CDIST_CIRCLES_PRIV_H
 
@@ -96,20 +96,21 @@ static inline void cdist__cc_eval_lean(const cdist__cc_frame *f, double t, doubl
  * touching or crossing circles, to the single query). */
 double cdist__cc_point_d2(const cdist__ring *rg, double s, double c, double sn);
 
-/* The power of two sc scaling a length L > 0 (finite) into [0.5, 1), frexp's, and *up = 1 / sc:
- * the robust method's problem scale (H has terms of order L^6). By exponent bits where both are
- * doubles, else by the library. */
-static inline double cdist__cc_scale_to_half(double L, double *up)
+/* The one scaling rule of the family: the problem scale L (max of the radii and the centre
+ * offset) times *down = 2^-e lies in [2^-half, 2^(1 - half)) ([1, 2) for half = 0, [0.5, 1) for
+ * half = 1), *up = 2^e; returns e. Exact (powers of two): squares neither overflow nor underflow,
+ * and answers scale back exactly. e is cdist__scale_exponent(L) + half, so clamped to
+ * CD_SCALE_MAX_EXP (+ 1): an L outside [2^-1000, 2^1000) lands outside the range but far from
+ * overflow and underflow. half = 1 for the robust engine (cdist__cc_prepare, the critical-angle
+ * service): its rounding bounds and certificate thresholds are absolute in these units, so
+ * moving its range would move results; half = 0 elsewhere (the frame of every query, the
+ * polynomial and iteration methods). */
+static inline int cdist__circles_scale(double L, int half, double *down, double *up)
 {
-    if (L >= 0x1p-1000 && L < 0x1p1000) {
-        int ex = cdist__scale_exponent(L) + 1;
-        *up = cdist__pow2(ex);
-        return cdist__pow2(-ex);
-    }
-    int ex;
-    frexp(L, &ex);
-    *up = ldexp(1.0, ex);
-    return ldexp(1.0, -ex);
+    int e = cdist__scale_exponent(L) + half;
+    *down = cdist__pow2(-e);
+    *up = cdist__pow2(e);
+    return e;
 }
 
 /* The reported parameter of an angle t on A in (-3 pi, 3 pi): t wrapped to (-pi, pi] (the
@@ -164,8 +165,8 @@ void cdist__cc_pair_final(const cdist__cc_frame *f, double t, double c, double s
 /* Parallel planes: F's critical angles in closed form (up to 4), or -1 when not parallel. */
 int cdist__cc_parallel_critical(const cdist__cc_frame *f, double *t);
 /* The robust method's problem: A, the circle it parameterises (the larger; ties by a rule
- * antisymmetric in the arguments), and B, both scaled by unscale^-1 (a power of two) so that
- * L = max(r0, r1, |C|) is in [0.5, 1); CB: B's centre relative to A's, scaled; C: c1's centre
+ * antisymmetric in the arguments), and B, both scaled by unscale^-1 (cdist__circles_scale, half
+ * = 1) so that L = max(r0, r1, |C|) is in [0.5, 1); CB: B's centre relative to A's, scaled; C: c1's centre
  * relative to c0's, unscaled. */
 typedef struct cdist__cc_problem {
     int swapped; /* A is c1 */
