@@ -182,7 +182,7 @@
  *     1e-13) 25 times over, so no region can hold a smaller F; a near-tie of two minima goes
  *     to the scalar path instead;
  *   - F''/2 at a basin's ends carries CD_CCK_F2_ULPS * eps times the magnitude of its terms
- *     (as the bound of the engine's convex(), cc_engine.c);
+ *     (as the bound of cdist__cc_convex, cc_certify.c);
  *   - Newton in the certified basin settles a lane after its first step below
  *     CD_CCK_NEWTON_STEP rad: its angle is then within about (F''' / F'') step^2 < 1e-19 rad
  *     of the minimum, and the angle's own rounding (1e-15 rad) dominates;
@@ -195,7 +195,7 @@
 #define CD_CCK_NEWTON_STEP 1e-10
 #define CD_CCK_MIN_F 1e-24
 
-/* Circle-circle engine (cc_engine.c refine): the bracketed Newton on F' stops after a step dx
+/* Circle-circle engine (cc_scan.c refine): the bracketed Newton on F' stops after a step dx
  * (rad) once its quadratic-convergence error, about dx^2 / l for F's features of width
  * l = min(1, rho / W1) rad (rho: the axis distance of B, W1 >= |w'|; every derivative of
  * rho = |w| brings a factor W1 / rho), is below CD_CC_REFINE_QUAD rad: far below the angle's

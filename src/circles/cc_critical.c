@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 /* The critical-angle service of circle-circle (used by circle-disk and the arcs): every
- * critical angle of theta -> dist^2(c0(theta), c1), from the engine of cc_engine.c. */
+ * critical angle of theta -> dist^2(c0(theta), c1), from the engine (docs/circles.md). */
 #include <math.h>
 
 #include "circles/circles-priv.h"
@@ -134,3 +134,28 @@ CD_FMA_CLONES int cdist__circle_circle_critical(cdist_query *q, const cdist__cir
     return n < cap ? n : cap;
 }
 
+/* Parallel planes (distance-to-circles-3d §5.2): when A's height over B's plane varies by at most
+ * CD_CC_PARALLEL_ULPS eps L along A, F = (rho - s)^2 + h^2 with h constant to that level and
+ * rho^2 = R^2 + e^2 - 2 R e cos(t - t0), where (e, t0) are the polar coordinates of B's centre
+ * projected into A's plane. F's critical angles are then rho's extremes t0 and t0 + pi and the
+ * angles where rho = s (the projections cross), in closed form. Writes them (up to 4), returns
+ * the count, or -1 when the planes are not parallel. The distances at these angles are
+ * evaluated on the true F, so the tilt below the threshold moves the answer by at most
+ * 2 CD_CC_PARALLEL_ULPS eps L. */
+int cdist__cc_parallel_critical(const cdist__cc_frame *f, double *t)
+{
+    if (!(cdist__norm2(f->rg.ha, f->rg.hb) <= CD_CC_PARALLEL_ULPS * DBL_EPSILON * f->L)) return -1;
+    double e = cdist__norm2(f->Cu, f->Cv), R = f->R, s = f->s;
+    double t0 = e > 0 ? atan2(f->Cv, f->Cu) : 0.0;
+    int n = 0;
+    t[n++] = t0;
+    t[n++] = cdist__wrap_angle(t0 + M_PI);
+    if (e > 0 && fabs(R - e) < s && s < R + e) {
+        /* rho = s: cos(t - t0) = (R^2 + e^2 - s^2) / (2 R e), by the half angle (acos lost
+         * the crossing of a tiny B across A's rim, the cosine rounding to 1) */
+        double a = cdist__crossing_angle(R, e, s);
+        t[n++] = cdist__wrap_angle(t0 + a);
+        t[n++] = cdist__wrap_angle(t0 - a);
+    }
+    return n;
+}

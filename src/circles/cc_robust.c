@@ -1,10 +1,10 @@
 /* SPDX-License-Identifier: MIT */
 /* Circle to circle, the robust method (the AUTO answer), on the larger circle: parallel planes
- * in closed form; else first the certified search of the batch kernel with its angles in lanes
- * (cdist__cc_quick, src/batch/cc_kernel.c: a grid, concave hull bounds, a zoomed basin
- * certified convex, Newton), which answers when the closest point is certified unique and not
+ * in closed form; else first the certified search with its angles in lanes (cdist__cc_quick,
+ * cc_search.c: a grid, concave hull bounds, a zoomed basin certified convex, Newton), which
+ * answers when the closest point is certified unique and not
  * on or near the other's axis (97% of random pairs); else the root-isolation engine of
- * cc_engine.c, which also answers every tie, equidistant set and touching pair. The search is
+ * docs/circles.md, which also answers every tie, equidistant set and touching pair. The search is
  * not tried where it cannot certify (cdist__cc_quick_worth). */
 #include <math.h>
 

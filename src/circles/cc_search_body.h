@@ -104,7 +104,7 @@ CD_INLINE void KN(ck_rot)(V c, V s, V co, V si, V *cr, V *sr)
 }
 
 /* F convex on [t - h, t + h]: F''/2 at both ends less its rounding exceeds M3 h, M3 >= |F'''/2|
- * on the interval. The bounds are the engine's (convex(), cc_engine.c), with |rho''| bounded
+ * on the interval. The bounds are the engine's (cdist__cc_convex, cc_certify.c), with |rho''| bounded
  * from its end values instead of globally: with rho_lo <= rho <= rho_hi there (rho is
  * W1-Lipschitz), |w'|, |w''|, |w'''| <= W1 and X = max |rho''| on the interval,
  *     |rho'''| <= B3(X) = (3 W1^2 + rho_hi W1 + 3 W1 X) / rho_lo,

@@ -2,7 +2,7 @@
 /* Circle to circle: public entry points, the one scaling rule of the family, method dispatch
  * (AUTO = the robust method of cc_robust.c, also the fallback of the polynomial and iteration
  * methods), and the method-independent equidistance tests and same-basin filter described in
- * cc_engine.c. */
+ * docs/circles.md. */
 #include <math.h>
 #include <stdio.h>
 
@@ -168,7 +168,7 @@ cdist_status cdist_circle_circle(cdist_query *q, const cdist_circle *c0, const c
     cdist_method answered = CDIST_METHOD_ROBUST;
     if (!(st = cdist__check_circle(q, c0, "first circle", &a)) && !(st = cdist__check_circle(q, c1, "second circle", &b))) {
         /* The robust method (AUTO) runs the same computation in both orders by construction
-         * (cc_engine.c); the polynomial and iteration methods are given the circles in
+         * (docs/circles.md); the polynomial and iteration methods are given the circles in
          * lexicographic order, so that their ties, pair counts and equidistant decisions do not
          * depend on the argument order either. */
         cdist_method m = cdist__family_method(q, CD_FAM_CIRCLE_CIRCLE);

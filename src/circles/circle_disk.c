@@ -526,7 +526,7 @@ CD_INLINE cdist_status cdk_solve(cdist_query *q, cdist_method method, const cdk 
     }
     if (n < 0) {
         /* ROBUST: every critical angle of F with certified root isolation (circle-circle robust
-         * method, Fourier bounds on the squared derivative, src/circles/cc_engine.c), the rim being a
+         * method, Fourier bounds on the squared derivative, docs/circles.md), the rim being a
          * circle; its own sampling as the fallback. */
         *used = CDIST_METHOD_ROBUST;
         /* Only the minima of F matter (the lemma), and only those below the best candidate so
@@ -541,7 +541,7 @@ CD_INLINE cdist_status cdk_solve(cdist_query *q, cdist_method method, const cdk 
              * G <= F); the others lie above it by the certificate's margin */
             *rim_certified = 1;
             n = 0;
-            /* the engine's own cut-off in minima mode (cc_engine.c): the cap and a tie */
+            /* the engine's own cut-off in minima mode (cc_scan.c): the cap and a tie */
             if (dq <= dcap * (1 + 8 * DBL_EPSILON) + CD_TIE_ULPS * DBL_EPSILON * scale) {
                 ts[0] = tq;
                 tc[0] = cq;

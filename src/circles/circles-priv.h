@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* Private declarations of the circles family (src/circles): the trigonometric root-isolation
- * engine of circle-circle (cc_engine.c, described there) shared by the robust method
+ * engine of circle-circle (docs/circles.md; cc_frame.c, cc_certify.c, cc_kink.c, cc_scan.c,
+ * cc_pair.c) shared by the robust method
  * (cc_robust.c), the critical-angle service (cc_critical.c) and the dispatcher
  * (circle_circle.c). Everything is in the units of a problem scaled by cdist__circles_scale. */
 #ifndef CDIST_CIRCLES_PRIV_H
@@ -35,7 +36,7 @@ typedef struct cdist__cc_frame {
 /* Values at one angle. */
 typedef struct cdist__cc_pt {
     double t, c, s;
-    int detail;   /* the certificates' values below are set (cc_engine.c computes them on demand) */
+    int detail;   /* the certificates' values below are set (cc_certify.c computes them on demand) */
     double H, H1, H2; /* H, H', H'' */
     double eH, eH1, eH2; /* their rounding bounds at this point */
     double F1, eF1; /* F'/2 and its rounding bound */
@@ -67,7 +68,7 @@ static inline double cdist__cc_dot3(vec3 a, vec3 b) { return cdist__ring_dot(a, 
 
 /* The one evaluation of a point of the engine at angle t with (c, s) = (cos t, sin t): F, its
  * root d, F'/2, rho, Q, g (what pruning, bracketing and the sampled regions read). The
- * certificates' values (H's, F''s and the rounding bounds) come on demand, in cc_engine.c: most
+ * certificates' values (H's, F''s and the rounding bounds) come on demand, in cc_certify.c: most
  * intervals are pruned first. */
 static inline void cdist__cc_eval_lean(const cdist__cc_frame *f, double t, double c, double s, cdist__cc_pt *p)
 {
@@ -86,7 +87,7 @@ static inline void cdist__cc_eval_lean(const cdist__cc_frame *f, double t, doubl
 }
 
 /* The squared distance from A's point at (c, sn) = (cos t, sin t) to B (radius s) as the robust
- * method reports it, from the ring rg of the pair (ring_eval.h; cc_engine.c). The one formula
+ * method reports it, from the ring rg of the pair (ring_eval.h; cc_search_body.h). The one formula
  * of the answer: of the robust method's (applied to the candidates it keeps,
  * cdist__cc_settle_d2) and of the batch kernel's (src/batch/cc_kernel.c).
  * Evaluated in double-double: its rounding (far below an ulp of the scale) then leaves the
@@ -149,7 +150,7 @@ static inline int cdist__cc_quick_worth(const cdist__cc_frame *f)
  * its cosine *c and sine *s and the distance *d there; 0 when not certified (or a radius is 0,
  * or the planes are parallel). For circle-disk, whose rim needs only F's global minimum. */
 int cdist__cc_quick_minimum(const cdist__circle *c0, const cdist__circle *c1, double *t, double *c, double *s, double *d);
-/* Walks [-pi, pi) and hands every critical bracket of F to the sink (see cc_engine.c). Fmax:
+/* Walks [-pi, pi) and hands every critical bracket of F to the sink (docs/circles.md). Fmax:
  * largest F seen at the partition points. */
 int cdist__cc_scan(const cdist__cc_frame *f, cdist__cc_sink *k, double *Fmax);
 /* The distances of the best candidate kept by the sink's collector (robust mode) and of those
@@ -192,5 +193,70 @@ cdist_status cdist__circle_disk_core_ex(cdist_query *q, cdist_method method, con
                                         double dcap, int rim, cdist__best *b, cdist_method *used, int *rim_certified);
 #define CD_DISK_METHODS (CD_HAS(CDIST_METHOD_POLYNOMIAL) | CD_HAS(CDIST_METHOD_ROBUST))
 #define CD_DISK_AUTO CDIST_METHOD_ROBUST
+
+/* ---- the engine's parts (cc_frame.c, cc_certify.c, cc_kink.c, cc_scan.c, cc_pair.c) ---- */
+
+#define CC_INIT_INTERVALS 16 /* a power of two >= 8 (cdist__cc_half_sec); the scan's table holds 16 angles */
+#define CC_LEVEL0 1 /* log2(CC_INIT_INTERVALS / 8): cdist__cc_half_sec index of the initial intervals */
+
+/* Track the extremes of F seen by the scan. */
+CD_INLINE void cdist__cc_track(cdist__cc_sink *k, const cdist__cc_pt *cur, double *Fmax)
+{
+    if (cur->F > *Fmax) *Fmax = cur->F;
+    if (cur->F < k->Fmin) {
+        k->Fmin = cur->F;
+        k->tmin = cur->t;
+    }
+}
+
+
+/* cos h and sin h for |h| <= 0.1 by their Taylor series (truncation below 1e-26 there): the kink
+ * grid's offsets, combined with cos t, sin t of the centre by the addition theorem, so the grid
+ * costs no transcendental call. */
+CD_INLINE void cdist__cc_small_sincos(double h, double *sn, double *cs)
+{
+    double x = h * h;
+    *sn = h * (1 - x / 6 * (1 - x / 20 * (1 - x / 42 * (1 - x / 72 * (1 - x / 110 * (1 - x / 156))))));
+    *cs = 1 - x / 2 * (1 - x / 12 * (1 - x / 30 * (1 - x / 56 * (1 - x / 90 * (1 - x / 132 * (1 - x / 182))))));
+}
+
+/* 1 / (2 cos(w/2)) for the interval width w = 2 pi / 8 / 2^i (cc_certify.c), and the index i
+ * of a subdivision level (clamped: the entries are 0.5 from 26 on). */
+extern const double cdist__cc_half_sec[32];
+CD_INLINE int cdist__cc_hs_index(int level) { return level + CC_LEVEL0 < 31 ? level + CC_LEVEL0 : 31; }
+
+
+/* The neighbourhoods of the lowest grid points of the sampled intervals, minimised only after the
+ * whole circle is scanned: then the attained minimum is known, and a neighbourhood whose
+ * Lipschitz lower bound (d is R-Lipschitz in the angle) lies above it by more than the tie
+ * tolerance cannot hold the closest pair or a second one, and costs nothing. */
+#define CC_DEFER 32
+typedef struct cdist__cc_deferred {
+    int n;
+    double t[CC_DEFER], hw[CC_DEFER], d[CC_DEFER]; /* lowest grid point, half-width, its distance */
+} cdist__cc_deferred;
+
+
+/* Certificates on [a, b] (cc_certify.c): at most one root of H; no critical point of F; F
+ * convex. Each reads (and completes on demand) the detail of a and b. */
+int cdist__cc_certified(const cdist__cc_frame *f, cdist__cc_pt *a, cdist__cc_pt *b);
+int cdist__cc_monotone(const cdist__cc_frame *f, cdist__cc_pt *a, cdist__cc_pt *b);
+int cdist__cc_convex(const cdist__cc_frame *f, cdist__cc_pt *a, cdist__cc_pt *b);
+/* Lower bounds of F: on an interval of the subdivision at `level`, and on [t - h, t + h]. */
+double cdist__cc_hull_bound(const cdist__cc_frame *f, const cdist__cc_pt *a, const cdist__cc_pt *b, int level);
+double cdist__cc_window_hull_bound(const cdist__cc_frame *f, double t, double h);
+/* A critical bracket [a, b] of F (a sign change of F'), refined and handed to the sink (cc_scan.c). */
+void cdist__cc_emit(cdist__cc_sink *k, const cdist__cc_pt *a, const cdist__cc_pt *b);
+/* The uncertifiable regions (cc_kink.c): near-crossings of B's axis (angles and core
+ * half-widths), their geometric grids, an interval past its budget, the dense fallback, and the
+ * deferred minimisations. */
+int cdist__cc_near_kinks(const cdist__cc_frame *f, const cdist__cc_pt *init, double *tk);
+double cdist__cc_kink_core(const cdist__cc_frame *f, double t);
+void cdist__cc_scan_kink(const cdist__cc_frame *f, cdist__cc_sink *k, double t, double core, double *Fmax,
+                         cdist__cc_deferred *df);
+void cdist__cc_emit_sampled(const cdist__cc_frame *f, cdist__cc_sink *k, const cdist__cc_pt *a, const cdist__cc_pt *b,
+                            double *Fmax, cdist__cc_deferred *df);
+void cdist__cc_scan_dense(const cdist__cc_frame *f, cdist__cc_sink *k, double *Fmax);
+void cdist__cc_deferred_offer(const cdist__cc_frame *f, cdist__cc_sink *k, const cdist__cc_deferred *df);
 
 #endif
