@@ -77,7 +77,7 @@ int cdist__cc_monotone(const cdist__cc_frame *f, cdist__cc_pt *a, cdist__cc_pt *
     double w = b->t - a->t, W1 = f->W1, rlo, rhi;
     if (!rho_range(f, a, b, &rlo, &rhi)) return 0;
     double M = W1 * W1 + (rhi + f->s) * (rhi * W1 + 2 * W1 * W1) / rlo + f->Hh * (2 * f->Hh + f->Hc0);
-    return A + B > M * w * (1 + 1e-12);
+    return A + B > M * w * (1 + CD_CC_CERT_REL);
 }
 
 /* At most one critical point of F on [a, b], a minimum: F is convex there, certified by F''/2 at
@@ -96,7 +96,7 @@ int cdist__cc_convex(const cdist__cc_frame *f, cdist__cc_pt *a, cdist__cc_pt *b)
     double B2 = (rhi * W1 + 2 * W1 * W1) / rlo;
     double B3 = (3 * W1 * W1 + rhi * W1 + 3 * W1 * B2) / rlo;
     double M3 = 3 * W1 * B2 + (rhi + f->s) * B3 + f->Hh * (4 * f->Hh + f->Hc0);
-    return cdist__fmin(A, B) > 0.5 * M3 * w * (1 + 1e-12);
+    return cdist__fmin(A, B) > 0.5 * M3 * w * (1 + CD_CC_CERT_REL);
 }
 
 #define POS(x) ((x) > 0 ? (x) : 0.0)

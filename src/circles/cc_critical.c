@@ -107,7 +107,7 @@ CD_FMA_CLONES int cdist__circle_circle_critical(cdist_query *q, const cdist__cir
             dhi = cdist__fmax(dhi, p.d);
             if (i < cap) theta0[i] = tp[i];
         }
-        if (dhi - dlo <= CC_EQUI_ULPS * DBL_EPSILON * f.L) return -1;
+        if (dhi - dlo <= CD_CC_EQUI_ULPS * DBL_EPSILON * f.L) return -1;
         return np < cap ? np : cap;
     }
     cdist__cc_scan(&f, &k, &Fmax);
@@ -116,7 +116,7 @@ CD_FMA_CLONES int cdist__circle_circle_critical(cdist_query *q, const cdist__cir
     double L = cdist__fmax(cdist__fmax(c0->r, c1->r), v_norm(C));
     /* Constant F (also when F' never changes sign: a periodic F that is not constant has a
      * bracketed minimum and maximum). */
-    double tol = CC_EQUI_ULPS * DBL_EPSILON * L;
+    double tol = CD_CC_EQUI_ULPS * DBL_EPSILON * L;
     if (!minima) {
         if (k.count == 0 || sqrt(Fmax) - k.dmin <= tol) return -1;
     } else if (sqrt(Fmax) - sqrt(k.Fmin) <= tol && (k.count == 0 || sqrt(Fmax) - k.dmin <= tol)) {

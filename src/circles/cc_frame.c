@@ -104,9 +104,9 @@ void cdist__cc_frame_bounds(cdist__cc_frame *f)
     }
     /* Rounding of the coefficient arithmetic, then a margin. */
     double eps = DBL_EPSILON;
-    f->M1 = f->M1 * (1 + 1e-9) + 1e-300;
-    f->M2 = f->M2 * (1 + 1e-9) + 1e-300;
-    f->M3 = f->M3 * (1 + 1e-9) + 1e-300;
+    f->M1 = f->M1 * (1 + CD_CC_BOUND_REL) + CD_CC_BOUND_ABS;
+    f->M2 = f->M2 * (1 + CD_CC_BOUND_REL) + CD_CC_BOUND_ABS;
+    f->M3 = f->M3 * (1 + CD_CC_BOUND_REL) + CD_CC_BOUND_ABS;
 
     /* First-order rounding bounds of H and H' as evaluated in cc_eval (all terms). */
     double Lc = v_norm(C);

@@ -17,7 +17,7 @@
  * handled below.
  *
  * Guards:
- * - Stopping: an iteration stops when the point on C0 moves by at most CC_ITER_TOL * L, when
+ * - Stopping: an iteration stops when the point on C0 moves by at most CD_CC_ITER_TOL * L, when
  *   the distance stops decreasing (the paper's rule), or after q->max_iterations iterations.
  * - Non-global fixed points: eight starts (four evenly spread points of each circle), then
  *   a final check of F on 16 evenly spread angles of C0; a sample below every fixed point found
@@ -37,7 +37,6 @@
 
 #include "internal.h"
 
-#define CC_ITER_TOL 1e-6
 #define CC_STARTS 8
 #define CC_CHECKS 16
 
@@ -73,7 +72,7 @@ static double iterate(const cdist__cc *g, vec3 x1, int cap, int *count)
         double mx = k0n.x - k0.x, my = k0n.y - k0.y, mz = k0n.z - k0.z;
         double d2n = ex * ex + ey * ey + ez * ez;
         double move = sqrt(mx * mx + my * my + mz * mz);
-        int stop = move <= CC_ITER_TOL * g->L || !(d2n < d2);
+        int stop = move <= CD_CC_ITER_TOL * g->L || !(d2n < d2);
         if (d2n <= d2) k0 = k0n;
         d2 = fmin(d2, d2n);
         if (stop) break;
@@ -110,7 +109,7 @@ static cdist_status iteration(cdist_query *q, const cdist__circle *c0, const cdi
     *iterations = 0;
     if (cdist__cc_closed_form(&g, b)) return CDIST_OK; /* points; §2.4 coincident axes */
     double sn = v_norm(v_cross(c0->n, c1->n));
-    if (sn <= 1e-13) { /* §2.3: parallel axes, closed forms, polished */
+    if (sn <= CD_CC_POLY_PARALLEL) { /* §2.3: parallel axes, closed forms, polished */
         double t0[4];
         int k = cdist__cc_parallel_candidates(&g, t0);
         int sd[4] = {0, 0, 0, 0};

@@ -85,15 +85,14 @@ void cdist__cc_scan_dense(const cdist__cc_frame *f, cdist__cc_sink *k, double *F
 }
 
 /* Near-crossings of B's axis: the minima of Q = |w|^2 = rho^2 (a trigonometric polynomial of
- * degree 2, at most two minima) with rho <= CC_KINK_REL L. There F = smooth - 2 s rho has features
+ * degree 2, at most two minima) with rho <= CD_CC_KINK_REL L. There F = smooth - 2 s rho has features
  * of width about rho / |w'| (A crossing the axis) or sqrt(rho / curvature) (A tangent to it),
  * where H is below its rounding and cannot be certified: those windows are scanned on a
  * geometric grid instead (see scan). Writes the angles, returns the count. */
-#define CC_KINK_REL 1e-6
 int cdist__cc_near_kinks(const cdist__cc_frame *f, const cdist__cc_pt *init, double *tk)
 {
     enum { N = CC_INIT_INTERVALS };
-    double thr = CC_KINK_REL * f->L;
+    double thr = CD_CC_KINK_REL * f->L;
     int n = 0;
     for (int i = 0; i < N && n < 2; i++) {
         int ip = (i + N - 1) % N, in = (i + 1) % N;
@@ -140,7 +139,7 @@ double cdist__cc_kink_core(const cdist__cc_frame *f, double t)
     /* A tangent to B's axis keeps rho tiny over a wider window (rho ~ rho0 + k x^2 / 2), where H
      * stays below its rounding too: widen the core (doubling) while rho at both of its ends is
      * still below the near-crossing threshold. */
-    double thr = CC_KINK_REL * f->L;
+    double thr = CD_CC_KINK_REL * f->L;
     while (core < 0.05) {
         double sh, ch;
         cdist__cc_small_sincos(core, &sh, &ch);

@@ -32,7 +32,7 @@
  * near-double, and then even a clearly non-zero -p6/p7 can have the wrong sign (seen: nearly
  * coplanar overlapping circles); the other sign costs one evaluation, so it is always offered
  * as well. Double roots come out of the eigenvalue solver as complex pairs with imaginary parts
- * ~ sqrt(eps) or more: roots are accepted with imaginary part up to 1e-2 (CC_IMAG_TOL) and
+ * ~ sqrt(eps) or more: roots are accepted with imaginary part up to 1e-2 (CD_CC_POLY_IMAG_TOL) and
  * real part up to 1 + 1e-3 in magnitude (clamped). Four samples of the moving circle are
  * candidates too. Every candidate is evaluated on F; those within 1e-3 F_min + 1e-4 L^2 of the
  * lowest are polished (an inaccurate root of a near-double pair is still in its basin).
@@ -227,12 +227,6 @@ void cdist__cc_offer_minima(const cdist__cc *g, int n, const int *side, const do
     }
 }
 
-/* Normals parallel to rounding: below this |n0 x n1| the planes are treated as parallel. */
-#define CC_PARALLEL 1e-13
-/* Closed-form candidates for parallel planes are added up to this |n0 x n1| (they are only
- * starting points; the polish finds the true minima of slightly tilted circles). */
-#define CC_NEAR_PARALLEL 1e-2
-
 int cdist__cc_closed_form(const cdist__cc *g, cdist__best *b)
 {
     const cdist__circle *c0 = g->c[0], *c1 = g->c[1];
@@ -309,7 +303,7 @@ int cdist__cc_mirror(const cdist__cc *g, vec3 *m)
 {
     vec3 c = v_cross(g->c[0]->n, g->c[1]->n);
     double s = v_norm(c);
-    if (!(s > CC_PARALLEL)) return 0;
+    if (!(s > CD_CC_POLY_PARALLEL)) return 0;
     vec3 mm = v_scale(1.0 / s, c);
     if (fabs(v_dot(g->D, mm)) > 1e-9 * g->L) return 0;
     *m = mm;
@@ -321,11 +315,6 @@ int cdist__cc_mirror(const cdist__cc *g, vec3 *m)
 /* ---------------------------------------------------------------------------------------- */
 
 #define CC_MAXCAND 48
-/* Roots of phi are accepted with imaginary parts up to this (relative): near-symmetric
- * configurations make true and spurious roots near-double, and rounding splits them into
- * complex pairs (imaginary parts ~1e-4 were seen with a centre 2e-6 off the other's axis).
- * Their real parts are only candidates, evaluated and polished on the true distance. */
-#define CC_IMAG_TOL 1e-2
 
 /* Candidates are kept as (cos t, sin t): roots come as (gamma, sigma), and most candidates are
  * only evaluated, never polished, so atan2/sincos are spent only on the few that are. */
@@ -405,7 +394,7 @@ static void finish_candidates(const cdist__cc *g, cc_cands *c, cdist__best *b)
 static void special_candidates(const cdist__cc *g, cc_cands *c)
 {
     double sn = v_norm(v_cross(g->c[0]->n, g->c[1]->n));
-    if (sn <= CC_NEAR_PARALLEL) {
+    if (sn <= CD_CC_POLY_NEAR_PARALLEL) {
         double t0[4];
         int k = cdist__cc_parallel_candidates(g, t0);
         for (int i = 0; i < k; i++) cand_add(c, 0, t0[i]);
@@ -533,10 +522,10 @@ static cdist_status polynomial(cdist_query *q, const cdist__circle *c0, const cd
             cand_add(&c, s, a2 + M_PI);
         }
     }
-    if (!concentric && (sn > CC_PARALLEL || c.n == 0)) {
+    if (!concentric && (sn > CD_CC_POLY_PARALLEL || c.n == 0)) {
         double p6[5], p7[4], phi[9], roots[8];
         build_phi(&g, side, p6, p7, phi);
-        int nr = cdist__poly_real_roots(q->poly, phi, 8, CC_IMAG_TOL, roots);
+        int nr = cdist__poly_real_roots(q->poly, phi, 8, CD_CC_POLY_IMAG_TOL, roots);
         if (nr == CD_POLY_FAIL) return cdist__fail(q, CDIST_ERR_INTERNAL, "circle-circle: polynomial solver failed");
         double s7 = 0.0;
         for (int i = 0; i <= 3; i++) s7 += fabs(p7[i]);

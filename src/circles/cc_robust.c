@@ -107,8 +107,8 @@ cdist_status cdist__cc_robust(cdist_query *q, const cdist__circle *c0, const cdi
     if (b->n == 0 || !isfinite(k.dmin)) return cdist__fail(q, CDIST_ERR_INTERNAL, "circle-circle: no minimum found");
     cdist__cc_settle_d2(&f, &k);
     /* (a) F constant on A; (b) the closest point of A on B's axis. */
-    if (sqrt(Fmax) - k.dmin <= CC_EQUI_ULPS * DBL_EPSILON * f.L) b->equidistant = 1;
-    if (k.rho_min <= CC_AXIS_EPS_ULPS * f.epsL * cdist__fmin(1.0, f.s / f.L)) b->equidistant = 1;
+    if (sqrt(Fmax) - k.dmin <= CD_CC_EQUI_ULPS * DBL_EPSILON * f.L) b->equidistant = 1;
+    if (k.rho_min <= CD_CC_AXIS_ULPS * f.epsL * cdist__fmin(1.0, f.s / f.L)) b->equidistant = 1;
     return CDIST_OK;
 }
 

@@ -6,7 +6,6 @@
 
 #include "circles/circles-priv.h"
 
-#define CC_MIN_WIDTH (1.0 / 1073741824.0) /* 2^-30 rad */
 #define CC_EVAL_BUDGET 48 /* per initial interval */
 #define CC_STACK 40 /* > the deepest level (31) */
 
@@ -113,7 +112,7 @@ int cdist__cc_scan(const cdist__cc_frame *f, cdist__cc_sink *k, double *Fmax)
             if (init[i].F < lo) lo = init[i].F, arg = i;
             if (init[i].F > hi) hi = init[i].F;
         }
-        if (sqrt(hi) - sqrt(lo) <= CC_EQUI_ULPS * DBL_EPSILON * f->L) {
+        if (sqrt(hi) - sqrt(lo) <= CD_CC_EQUI_ULPS * DBL_EPSILON * f->L) {
             *Fmax = hi;
             k->Fmin = lo;
             k->tmin = init[arg].t;
@@ -172,7 +171,7 @@ int cdist__cc_scan(const cdist__cc_frame *f, cdist__cc_sink *k, double *Fmax)
                 done = lo >= -2 * core[j] && hi <= 2 * core[j];
             }
             if (!done) {
-                int leaf = cdist__cc_certified(f, a, b) || cdist__cc_monotone(f, a, b) || cdist__cc_convex(f, a, b) || w <= CC_MIN_WIDTH || sp + 1 >= CC_STACK ||
+                int leaf = cdist__cc_certified(f, a, b) || cdist__cc_monotone(f, a, b) || cdist__cc_convex(f, a, b) || w <= CD_CC_MIN_WIDTH || sp + 1 >= CC_STACK ||
                            level >= 31;
                 if (leaf || evals >= CC_EVAL_BUDGET) {
                     /* Past the budget (multiple roots of H at rounding level: tangencies, A

@@ -126,13 +126,13 @@ CD_INLINE M KN(ck_convex)(const KN(ck_ring) *r, V c, V s, int l, M *near_axis)
      * test F''/2 > M3 h becomes (F''/2) rho_lo > (M3 rho_lo) h. X0 carries a margin for the
      * rounding of rho'' (relative 1e-9, and 1e-9 of base). */
     V b = vmul(W1, vadd(vmul(three, W1), rhi)), k = vsub(rlo, vmul(three, hw));
-    V X0r = vadd(vmul(vmul(vmax(vabs(xa), vabs(xb)), vset(1.0 + 1e-9)), rlo), vmul(b, vset(1e-9)));
+    V X0r = vadd(vmul(vmul(vmax(vabs(xa), vabs(xb)), vset(1.0 + CD_CC_BOUND_REL)), rlo), vmul(b, vset(CD_CC_BOUND_REL)));
     V X = vdiv(ck_madd(h, b, X0r), k), W3X = vmul(vmul(three, W1), X);
     V M3r = vadd(vadd(vmul(W3X, rlo), vmul(vadd(rhi, r->s), vadd(b, W3X))),
                  vmul(vmul(r->Hh, vadd(vmul(vset(4.0), r->Hh), r->Hc0)), rlo));
     V lhs = vmin(vsub(F2a, ea), vsub(F2b, eb));
     return mand(mand(vgt(rlo, vset(0.0)), vgt(k, vset(0.0))),
-                vgt(vmul(lhs, rlo), vmul(vmul(M3r, h), vset(1.0 + 1e-12))));
+                vgt(vmul(lhs, rlo), vmul(vmul(M3r, h), vset(1.0 + CD_CC_CERT_REL))));
 }
 
 /* cos and sin of the offsets of Newton in a certified basin, |d| <= 0.0123 (the half-width at

@@ -27,13 +27,13 @@ static void cc_equidistant_post(const cdist__circle *c0, const cdist__circle *c1
     if (b->equidistant || b->n == 0) return;
     const cdist__circle *cs[2] = {c0, c1};
     double d = sqrt(b->c[0].d2), Cn = v_norm(v_sub(c1->c, c0->c));
-    double L = fmax(fmax(c0->r, c1->r), Cn), tol = CC_EQUI_ULPS * DBL_EPSILON * L;
+    double L = fmax(fmax(c0->r, c1->r), Cn), tol = CD_CC_EQUI_ULPS * DBL_EPSILON * L;
     for (int side = 0; side < 2; side++) {
         const cdist__circle *me = cs[side], *other = cs[1 - side];
         if (other->r > 0 && me->r >= 0) {
             double rho;
             pc_dist(b->c[0].p[side], other, &rho);
-            if (rho <= CC_AXIS_EPS_ULPS * DBL_EPSILON * (me->r + other->r + Cn) * fmin(1.0, other->r / L)) {
+            if (rho <= CD_CC_AXIS_ULPS * DBL_EPSILON * (me->r + other->r + Cn) * fmin(1.0, other->r / L)) {
                 b->equidistant = 1;
                 return;
             }

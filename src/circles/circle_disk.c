@@ -140,12 +140,9 @@ CD_INLINE void cdk_offer(const cdk *k, double t, cdist__best *b)
     cdk_offer_cs(k, t, cs, sn, b);
 }
 
-/* The plane crossings are refined by Newton steps on z of at most CDK_Z_STEP each (two). */
-#define CDK_Z_STEP 1e-3
-
 /* Whether the plane crossing first estimated at (cs, sn), with height z there, is certainly far
  * above b's best (CD_CD_FAR_REL) wherever its two Newton steps take it: they move the circle
- * point by at most 2 CDK_Z_STEP rho (the distance to the disk is 1-Lipschitz), and twice the
+ * point by at most 2 CD_CD_Z_STEP rho (the distance to the disk is 1-Lipschitz), and twice the
  * far margin covers the plain square root used here for hypot. Its offer would then be dropped
  * anyway, so the steps and the offer are skipped. */
 CD_INLINE int cdk_crossing_far(const cdk *k, double cs, double sn, double z, const cdist__best *b)
@@ -156,7 +153,7 @@ CD_INLINE int cdk_crossing_far(const cdk *k, double cs, double sn, double z, con
         double rho = sqrt(x * x + y * y), dr = k->small_circle ? ex / (rho + k->R) : rho - k->R;
         g = sqrt(dr * dr + z * z);
     }
-    return g - 2.0 * CDK_Z_STEP * k->rho > sqrt(b->c[0].d2) + 2.0 * CD_CD_FAR_REL * b->scale;
+    return g - 2.0 * CD_CD_Z_STEP * k->rho > sqrt(b->c[0].d2) + 2.0 * CD_CD_FAR_REL * b->scale;
 }
 
 /* Bracketed root of F' in [a, b] with sg F'(a) < 0 < sg F'(b) (sg = 1: a minimum of F, -1: a
@@ -308,7 +305,6 @@ static int cdk_scan(const cdk *k, double t1, double a, double b, double *out, in
  * every sign change from - to + (a minimum of F). Returns the number of angles written. */
 #define CDK_SAMPLES 48
 #define CDK_CAP 48
-#define CDK_FLAT 0.05
 static const double cdk_grid_cs[CDK_SAMPLES][2] = {
     {-1, -1.2246467991473532e-16},
     {-0.99144486137381038, -0.13052619222005157},
@@ -370,7 +366,7 @@ static int cdk_robust_critical(const cdk *k, double *ts, int cap, double scale)
     for (int i = 1; i < CDK_SAMPLES; i++) Fmin = cdist__fmin(Fmin, Fs[i]);
     /* A cluster can only hold the global minimum where F is within this margin of the best. */
     double margin = Fmin + 0.01 * scale * scale;
-    double flat = CDK_FLAT * k->rho * scale;
+    double flat = CD_CD_FLAT_REL * k->rho * scale;
     int n = 0;
     for (int i = 0; i < CDK_SAMPLES && n < cap; i++) {
         double a = -M_PI + i * h, b = a + h;
@@ -407,7 +403,7 @@ static int cdk_poly_minima(cdist_query *q, const cdk *k, double *ts, int cap, do
     if (nr < 0) return nr;
     int n = 0;
     double Fbest = INFINITY;
-    double Fv[16], f2v[16], flat = CDK_FLAT * k->rho * scale;
+    double Fv[16], f2v[16], flat = CD_CD_FLAT_REL * k->rho * scale;
     for (int i = 0; i < nr && n < cap; i++) {
         double f1, f2;
         cdk_rim(k, roots[i], &f1, &f2);
@@ -489,7 +485,7 @@ CD_INLINE cdist_status cdk_solve(cdist_query *q, cdist_method method, const cdk 
         double w = acos(cz);
         for (int s = -1; s <= 1; s += 2) {
             double t = phi + s * w;
-            /* Newton on z itself (two steps of at most CDK_Z_STEP) to land on the plane. A step
+            /* Newton on z itself (two steps of at most CD_CD_Z_STEP) to land on the plane. A step
              * below half an ulp of t leaves t as it was: its cos and sin are reused. */
             double tl = NAN, sn = 0.0, cs = 0.0; /* the angle of the last sincos */
             int skip = 0;
@@ -505,7 +501,7 @@ CD_INLINE cdist_status cdk_solve(cdist_query *q, cdist_method method, const cdk 
                 }
                 if (zp == 0.0 || z == 0.0) break;
                 double st = z / zp;
-                if (fabs(st) > CDK_Z_STEP) break;
+                if (fabs(st) > CD_CD_Z_STEP) break;
                 t -= st;
             }
             if (skip) continue;
@@ -568,7 +564,7 @@ CD_INLINE cdist_status cdk_solve(cdist_query *q, cdist_method method, const cdk 
         } else {
             /* Flat minima near the best: a neighbour of a cluster below the certification width
              * (multiple roots) is looked for by the dyadic scan. */
-            double Fv[CDK_CAP], f2v[CDK_CAP], Fbest = INFINITY, flat = CDK_FLAT * k->rho * scale;
+            double Fv[CDK_CAP], f2v[CDK_CAP], Fbest = INFINITY, flat = CD_CD_FLAT_REL * k->rho * scale;
             for (int i = 0; i < n; i++) {
                 sincos(ts[i], &tsn[i], &tc[i]);
                 Fv[i] = cdk_rim_cs(k, tc[i], tsn[i], NULL, &f2v[i]);

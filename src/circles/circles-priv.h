@@ -10,12 +10,6 @@
 #include "internal.h"
 #include "circles/ring_eval.h"
 
-/* F constant on a circle (equidistant configuration (a)): variation below CC_EQUI_ULPS eps L. */
-#define CC_EQUI_ULPS 32.0
-/* A closest point on the other circle's axis (equidistant configuration (b)): its axis distance
- * within CC_AXIS_EPS_ULPS rounding units of the positions (eps (R + |C|)), times min(1, s / L)
- * (the other circle's closest point direction is lost to rounding there). */
-#define CC_AXIS_EPS_ULPS 8.0
 
 /* The parameterised circle A at the origin and the other circle B. */
 typedef struct cdist__cc_frame {
