@@ -27,35 +27,8 @@ typedef struct ck_block {
     double d[64]; /* the distance there */
 } ck_block;
 
-#define CD_LANES 1
-#include "base/lanes/lanes_def.h"
-#include "base/lanes/lanes_vec.h"
-#include "base/dd.h"
-#include "circles/cc_search_body.h"
-#include "cc_kernel_body.h"
-#include "base/lanes/lanes_undef.h"
-
-#ifdef CD_X86_KERNELS
-CD_LANES_TARGET_PUSH("avx512f,fma")
-#define CD_LANES 8
-#include "base/lanes/lanes_def.h"
-#include "base/lanes/lanes_vec.h"
-#include "base/dd.h"
-#include "circles/cc_search_body.h"
-#include "cc_kernel_body.h"
-#include "base/lanes/lanes_undef.h"
-CD_LANES_TARGET_POP
-
-CD_LANES_TARGET_PUSH("avx2,fma")
-#define CD_LANES 4
-#include "base/lanes/lanes_def.h"
-#include "base/lanes/lanes_vec.h"
-#include "base/dd.h"
-#include "circles/cc_search_body.h"
-#include "cc_kernel_body.h"
-#include "base/lanes/lanes_undef.h"
-CD_LANES_TARGET_POP
-#endif
+#define CC_LANES_BODY "batch/cc_kernel_body.h"
+#include "circles/cc_search_lanes.h"
 
 typedef unsigned (*ck_setup_fn)(const cdist__job *job, double unit_tol, size_t lo, int base, int n, ck_block *b);
 typedef unsigned (*ck_search_fn)(ck_block *b, int g);

@@ -50,35 +50,8 @@ static void cc_tables_init(void)
 
 void cdist__cc_search_tables(void) { pthread_once(&cc_tab_once, cc_tables_init); }
 
-#define CD_LANES 1
-#include "base/lanes/lanes_def.h"
-#include "base/lanes/lanes_vec.h"
-#include "base/dd.h"
-#include "circles/cc_search_body.h"
-#include "circles/cc_quick_body.h"
-#include "base/lanes/lanes_undef.h"
-
-#ifdef CD_X86_KERNELS
-CD_LANES_TARGET_PUSH("avx512f,fma")
-#define CD_LANES 8
-#include "base/lanes/lanes_def.h"
-#include "base/lanes/lanes_vec.h"
-#include "base/dd.h"
-#include "circles/cc_search_body.h"
-#include "circles/cc_quick_body.h"
-#include "base/lanes/lanes_undef.h"
-CD_LANES_TARGET_POP
-
-CD_LANES_TARGET_PUSH("avx2,fma")
-#define CD_LANES 4
-#include "base/lanes/lanes_def.h"
-#include "base/lanes/lanes_vec.h"
-#include "base/dd.h"
-#include "circles/cc_search_body.h"
-#include "circles/cc_quick_body.h"
-#include "base/lanes/lanes_undef.h"
-CD_LANES_TARGET_POP
-#endif
+#define CC_LANES_BODY "circles/cc_quick_body.h"
+#include "circles/cc_search_lanes.h"
 
 CD_FMA_CLONES double cdist__cc_point_d2(const cdist__ring *rg, double s, double c, double sn)
 {
