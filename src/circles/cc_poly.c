@@ -1,47 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 /* Circle-circle by the degree-8 polynomial (Eberly, distance-to-circles-3d §5), plus the helpers
- * shared with the geometric iteration (src/circles/cc_iteration.c): the true distance function with its
- * derivatives, the Newton polish, and the closed forms of the special configurations.
- *
- * Frame. The dispatcher puts c0's centre at the origin and c1 at D. For a point P on circle s
- * (the "moving" circle, angle t in its own basis u, v) the distance to the other circle f is
- * closed form (point-circle, §2): with Delta = P - C_f, h = n_f . Delta, rho = |n_f x Delta|,
- *     F_s(t) = (rho - r_f)^2 + h^2                           (rho from the cross product: no
- *                                                              cancellation near the axis).
- * With E = Delta - K the vector from the closest point K = C_f + r_f w / rho (w the in-plane part
- * of Delta) to P, the gradient of the squared point-circle distance is 2E and its Hessian is
- * 2(I - (r_f / rho) tau tau^T) with tau = (n_f x Delta) / rho the circle's tangent at K, so
- *     F'  = 2 E . P',        P' = r_s(-sin t u + cos t v),
- *     F'' = 2 (r_s^2 - r_f (tau_rho . P')^2 / rho^3) - 2 E . P      (tau_rho = n_f x Delta).
- * E is formed as h n_f + ((rho - r_f) / rho) w, which stays accurate when the distance is tiny.
- * Every candidate angle (polynomial root, closed form, sample) is polished by safeguarded Newton
- * on F' and evaluated on F: the polynomial only brackets.
- *
- * Polynomial (§5). Eberly's F'(t) = 0 for the point P(t) of the moving circle against the fixed
- * circle of radius r0 is, squared to remove the root |N0 x Delta|,
- *     H(g, s) = (p0 + s p1)(p2 + s p3)^2 - r0^2 (p4 + s p5)^2 = p6(g) + s p7(g),  g = cos t,
- * s = sin t, and eliminating s with s^2 = 1 - g^2 gives phi(g) = p6^2 - (1 - g^2) p7^2 (degree
- * <= 8). Conditioning: the fixed circle is the LARGER one at the origin, scaled to the unit
- * circle (everything divided by its radius, or by the centre distance when that is larger:
- * H is homogeneous, so only over/underflow depends on the scale), so the moving circle's
- * radius is <= 1 and the coefficients have comparable sizes. a5 - a7 = r1^2 ((N0.V1)^2 -
- * (N0.U1)^2) is formed as a product (it vanishes for parallel planes), a2, a3, a4 from the cross
- * product N0 x D. For each real root, s = -p6/p7 gives the sign of sin t (both signs where p7
- * is within rounding of zero: the p7 = 0 branch; p7 == 0 identically when the centres lie on
- * the normal line, §5.3). Near-symmetric configurations make true and spurious roots
- * near-double, and then even a clearly non-zero -p6/p7 can have the wrong sign (seen: nearly
- * coplanar overlapping circles); the other sign costs one evaluation, so it is always offered
- * as well. Double roots come out of the eigenvalue solver as complex pairs with imaginary parts
- * ~ sqrt(eps) or more: roots are accepted with imaginary part up to 1e-2 (CD_CC_POLY_IMAG_TOL) and
- * real part up to 1 + 1e-3 in magnitude (clamped). Four samples of the moving circle are
- * candidates too. Every candidate is evaluated on F; those within 1e-3 F_min + 1e-4 L^2 of the
- * lowest are polished (an inaccurate root of a near-double pair is still in its basin).
- * Special cases: zero radii (point-circle), coaxial circles (§5.1 concentric, §5.2 with the
- * centres on the common axis: equidistant), parallel planes (§5.1 separated / tangent /
- * overlapping / containing, §5.2): closed-form candidates; centres on the normal line (§5.3) and,
- * more generally, axes that meet: the configuration is symmetric about the plane through both
- * axes, so the points of the moving circle in that plane are candidates and every minimum's
- * mirror image is polished too (symmetric pairs come out equally accurate). */
+ * shared with the geometric iteration (cc_iteration.c): the true distance function with its
+ * derivatives, the Newton polish, and the closed forms of the special configurations. The
+ * frame, the polynomial and the special cases: docs/circles.md. */
 #include <math.h>
 
 #include "circles/circles-priv.h"

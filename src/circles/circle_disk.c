@@ -1,21 +1,9 @@
 /* SPDX-License-Identifier: MIT */
 /* Circle to disk (point-curve-circle-to-disk §2-§4; derivations in docs/disk.md). Disk to disk
  * (disk_disk.c) runs this twice, rim of each against the other disk (the second time without
- * the rim-to-rim minima, which the first has found).
- *
- * The one lemma everything here rests on. Let G(X) be the distance from X to the disk, F(X)
- * the distance to its rim circle and h(X) the signed height over the disk's plane. Then
- *     G(X) = |h(X)|   when X projects into the disk,     G(X) = F(X)   otherwise,
- * and always G <= F with equality exactly when the projection is outside or on the rim.
- * For a curve X(t): if t* is a local minimum of G(X(t)) and X(t*) projects outside or onto
- * the rim, then F >= G >= G(t*) = F(t*) nearby, so t* is a local minimum of F too. If X(t*)
- * projects strictly inside, G = |h| nearby, so h(t*) = 0 or h'(t*) = 0. Hence
- *     min_t G = min( G at the critical points of F,  G at the zeros and critical points of h,
- *                    G at the ends of the parameter range ),
- * which replaces the paper's partition of the parameter range into inside/outside
- * subintervals (the partition points are never needed: a partition point that is a minimum of
- * G is a minimum of F). Every candidate is evaluated with the TRUE point-disk distance G, so a
- * spurious candidate can never make the answer too small. */
+ * the rim-to-rim minima, which the first has found). The lemma it rests on (minima of the disk
+ * distance are minima of the rim distance, or zeros or critical points of the height):
+ * docs/circles.md. */
 #include <math.h>
 #include <pthread.h>
 #include <string.h>
