@@ -160,10 +160,3 @@ int cdist__poly_real_roots(cdist__poly_ws *ws, const double *coef, int degree, d
     sort_ascending(roots, n);
     return n;
 }
-
-void cdist__poly_mul(const double *a, int da, const double *b, int db, int fused, double *out)
-{
-    for (int i = 0; i <= da + db; i++) out[i] = 0.0;
-    for (int i = 0; i <= da; i++)
-        for (int j = 0; j <= db; j++) out[i + j] = fused ? fma(a[i], b[j], out[i + j]) : out[i + j] + a[i] * b[j];
-}
