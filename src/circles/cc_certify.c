@@ -49,7 +49,6 @@ static void cc_detail(const cdist__cc_frame *f, cdist__cc_pt *p)
     p->eF2 = 64 * DBL_EPSILON * (W1 * W1 + (Lw + ar) * g1e * irho + f->Hh * f->Hh + (fabs(v.h) + Lw) * f->Hh);
 }
 
-
 /* Bounds rho_lo <= rho <= rho_hi on [a, b] (rho is W1-Lipschitz in t); 0 when rho_lo <= 0 (the
  * F certificates below divide by it). */
 static int rho_range(const cdist__cc_frame *f, const cdist__cc_pt *a, const cdist__cc_pt *b, double *rlo, double *rhi)
@@ -136,7 +135,6 @@ int cdist__cc_certified(const cdist__cc_frame *f, cdist__cc_pt *a, cdist__cc_pt 
     return 0;
 }
 
-
 /* 1 / (2 cos(w/2)) for the interval width 2 pi / CC_INIT_INTERVALS / 2^level: the values of
  * 0.5 / cos(M_PI / CC_INIT_INTERVALS / 2^level) for CC_INIT_INTERVALS = 8, as literals (a static
  * initializer cannot call cos in standard C; clang rejects it). Printed with %.17g from
@@ -151,7 +149,6 @@ const double cdist__cc_half_sec[32] = {
     0.50000000000000011, 0.50000000000000011, 0.5, 0.5,
     0.5, 0.5, 0.5, 0.5,
 };
-
 
 /* A lower bound of F on the arc [a, b] of width 2 pi / CC_INIT_INTERVALS / 2^level. In the
  * plane of z = (cos t, sin t), F extends to G(z) = |D|^2 + s^2 - 2 s |w| with |D|^2 replaced by

@@ -12,7 +12,6 @@ typedef struct tpoly {
     double re[9], im[9];
 } tpoly;
 
-
 static void tp_zero(tpoly *p) { memset(p, 0, sizeof *p); }
 /* Add a cos(k t) + b sin(k t). */
 static void tp_term(tpoly *p, int k, double a, double b)

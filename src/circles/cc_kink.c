@@ -22,7 +22,6 @@ static inline void grid_sincos(double t, int exact, double ch, double sh, double
     }
 }
 
-
 /* F on a window around tc, whose cosine and sine are known: cos and sin of t by the addition
  * theorem with small_sincos of the offset (no transcendental call per step). */
 typedef struct cc_window {

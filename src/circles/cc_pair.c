@@ -52,7 +52,6 @@ CD_FMA_CLONES void cdist__cc_pair_final(const cdist__cc_frame *f, double t, doub
     cc_pair(f, cdist__cc_param(t), c, s, 1, k);
 }
 
-
 void cdist__cc_settle_d2(const cdist__cc_frame *f, const cdist__cc_sink *k)
 {
     cdist__best *b = k->best;

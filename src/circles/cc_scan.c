@@ -83,7 +83,6 @@ void cdist__cc_emit(cdist__cc_sink *k, const cdist__cc_pt *a, const cdist__cc_pt
     }
 }
 
-
 /* Walks [-pi, pi) (see the header comment) and hands every critical bracket to the sink.
  * Fmax: largest F at the partition points. Returns 1 when the certification gave up and the
  * sink does not allow the dense scan (nothing was emitted then), else 0. */

@@ -51,7 +51,6 @@ typedef struct KN(ck_ring) {
     V alx, aly, alz, bex, bey, bez, gax, gay, gaz, ha, hb, hc, s, R2, W1, Hh, Hc0, Lw;
 } KN(ck_ring);
 
-
 /* F at (c, s): (|w| - s)^2 + h^2. At a hull point (c, s scaled by 1/cos) this is F_ext of the
  * header comment. */
 CD_INLINE V KN(ck_f)(const KN(ck_ring) *r, V c, V s)

@@ -10,7 +10,6 @@
 #include "internal.h"
 #include "circles/ring_eval.h"
 
-
 /* The parameterised circle A at the origin and the other circle B. */
 typedef struct cdist__cc_frame {
     double R, s;       /* radii of A and B */
@@ -203,7 +202,6 @@ CD_INLINE void cdist__cc_track(cdist__cc_sink *k, const cdist__cc_pt *cur, doubl
     }
 }
 
-
 /* cos h and sin h for |h| <= 0.1 by their Taylor series (truncation below 1e-26 there): the kink
  * grid's offsets, combined with cos t, sin t of the centre by the addition theorem, so the grid
  * costs no transcendental call. */
@@ -219,7 +217,6 @@ CD_INLINE void cdist__cc_small_sincos(double h, double *sn, double *cs)
 extern const double cdist__cc_half_sec[32];
 CD_INLINE int cdist__cc_hs_index(int level) { return level + CC_LEVEL0 < 31 ? level + CC_LEVEL0 : 31; }
 
-
 /* The neighbourhoods of the lowest grid points of the sampled intervals, minimised only after the
  * whole circle is scanned: then the attained minimum is known, and a neighbourhood whose
  * Lipschitz lower bound (d is R-Lipschitz in the angle) lies above it by more than the tie
@@ -229,7 +226,6 @@ typedef struct cdist__cc_deferred {
     int n;
     double t[CC_DEFER], hw[CC_DEFER], d[CC_DEFER]; /* lowest grid point, half-width, its distance */
 } cdist__cc_deferred;
-
 
 /* Certificates on [a, b] (cc_certify.c): at most one root of H; no critical point of F; F
  * convex. Each reads (and completes on demand) the detail of a and b. */
