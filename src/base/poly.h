@@ -3,6 +3,8 @@
 #ifndef CDIST_POLY_H
 #define CDIST_POLY_H
 
+#include <math.h>
+
 #define CD_POLY_MAX_DEGREE 8
 
 typedef struct cdist__poly_ws cdist__poly_ws;
@@ -21,6 +23,16 @@ void cdist__poly_ws_free(cdist__poly_ws *ws);
 #define CD_POLY_ZERO (-1)
 #define CD_POLY_FAIL (-2)
 int cdist__poly_real_roots(cdist__poly_ws *ws, const double *coef, int degree, double imag_tol, double *roots);
+
+/* out = a b for ascending coefficients of degrees da and db (out, of degree da + db, must not
+ * alias them); each product added with one rounding (fma) when fused, else two. The two methods
+ * that call it keep their own rounding (results bit for bit). */
+static inline void cdist__poly_mul(const double *a, int da, const double *b, int db, int fused, double *out)
+{
+    for (int i = 0; i <= da + db; i++) out[i] = 0.0;
+    for (int i = 0; i <= da; i++)
+        for (int j = 0; j <= db; j++) out[i + j] = fused ? fma(a[i], b[j], out[i + j]) : out[i + j] + a[i] * b[j];
+}
 
 /* Horner evaluation of the polynomial and its derivative. */
 double cdist__poly_eval(const double *coef, int degree, double x, double *deriv);

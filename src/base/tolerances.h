@@ -204,14 +204,15 @@
  * plus CD_CC_SETTLE_ULPS * eps * L of the best: every one that can be reported. */
 #define CD_CC_SETTLE_ULPS 64.0
 
-/* The batch circle-circle distance kernel (src/batch/cc_kernel.c), in the robust method's
- * scaled units (L in [0.5, 1), so F = squared distance <= 4):
+/* The certified search of circle-circle (src/circles/cc_search_body.h: the single query's and
+ * the batch kernel's), in the robust method's scaled units (L in [0.5, 1), so F = squared
+ * distance <= 4):
  *   - the answer F* is certified when the lower bound of F on every region outside the final
  *     basin exceeds it by CD_CCK_CERT_MARGIN: above the rounding of both (about 20 eps * 9 <
  *     1e-13) 25 times over, so no region can hold a smaller F; a near-tie of two minima goes
  *     to the scalar path instead;
  *   - F''/2 at a basin's ends carries CD_CCK_F2_ULPS * eps times the magnitude of its terms
- *     (as the bound of the engine's convex(), cc_engine.c);
+ *     (as the bound of cdist__cc_convex, cc_certify.c);
  *   - Newton in the certified basin settles a lane after its first step below
  *     CD_CCK_NEWTON_STEP rad: its angle is then within about (F''' / F'') step^2 < 1e-19 rad
  *     of the minimum, and the angle's own rounding (1e-15 rad) dominates;
@@ -224,13 +225,13 @@
 #define CD_CCK_NEWTON_STEP 1e-10
 #define CD_CCK_MIN_F 1e-24
 
-/* Circle-circle engine (cc_engine.c refine): the bracketed Newton on F' stops after a step dx
+/* Circle-circle engine (cc_scan.c refine): the bracketed Newton on F' stops after a step dx
  * (rad) once its quadratic-convergence error, about dx^2 / l for F's features of width
  * l = min(1, rho / W1) rad (rho: the axis distance of B, W1 >= |w'|; every derivative of
  * rho = |w| brings a factor W1 / rho), is below CD_CC_REFINE_QUAD rad: far below the angle's
- * own rounding (1e-16 rad), so the root is the true F''s to rounding. Where rho >= W1 this is
- * the former fixed cut dx <= 1e-9; beside a tiny B (radius 4.7e-9 of A's) the minimum sits at
- * rho ~ s, where that cut left it 5e-12 rad off (6.4e-13 of scale in circle-disk). */
+ * own rounding (1e-16 rad), so the root is the true F''s to rounding. A fixed cut of dx would
+ * not do: beside a tiny B (radius 4.7e-9 of A's) the minimum sits at rho ~ s, where dx <= 1e-9
+ * leaves it 5e-12 rad off. */
 #define CD_CC_REFINE_QUAD 1e-18
 
 /* Circle-circle, the single query: the certified search of the kernel (cdist__cc_quick) runs
@@ -243,6 +244,54 @@
  * then a function of cos(t - phi), mirror-symmetric, and its minima come in tied pairs that the
  * search leaves to the scan anyway (the cc_center_on_axis family). Routing only. */
 #define CD_CC_QUICK_AXIS_REL 1e-9
+
+/* Circle-circle equidistance, scaled units (docs/circles.md): (a) F constant on a circle when
+ * the distance varies by at most CD_CC_EQUI_ULPS eps L over it (the rounding of the distance at
+ * 16 points, a few eps L each, with margin); (b) a closest point on the other circle's axis when
+ * its axis distance is within CD_CC_AXIS_ULPS rounding units of the positions (eps (R + |C|)),
+ * times min(1, s / L) (the other circle's closest point direction is lost to rounding there). */
+#define CD_CC_EQUI_ULPS 32.0
+#define CD_CC_AXIS_ULPS 8.0
+
+/* Circle-circle engine, scaled units (L in [0.5, 1)):
+ *   - intervals narrower than CD_CC_MIN_WIDTH rad (2^-30) stay uncertified and are only
+ *     sign-checked: a further min/max pair hidden inside one would lie within 2^-30 rad;
+ *   - a near-crossing of B's axis is a minimum of rho <= CD_CC_KINK_REL L: there H is below its
+ *     rounding (relative eps L / rho) and cannot be certified, so the window is scanned on a
+ *     geometric grid instead;
+ *   - the bounds M1..M3 of H's derivatives are widened by CD_CC_BOUND_REL of themselves plus
+ *     CD_CC_BOUND_ABS (the rounding of the coefficient arithmetic, a few eps relatively, and a
+ *     floor for H = 0); the certified search widens its bound of |rho''| at the basin's ends
+ *     the same way;
+ *   - a certificate comparing a value with a bound times a width (monotone, convex) asks for a
+ *     relative excess CD_CC_CERT_REL (dimensionless), above the rounding of the comparison. */
+#define CD_CC_MIN_WIDTH (1.0 / 1073741824.0)
+#define CD_CC_KINK_REL 1e-6
+#define CD_CC_BOUND_REL 1e-9
+#define CD_CC_BOUND_ABS 1e-300
+#define CD_CC_CERT_REL 1e-12
+
+/* Circle-circle, polynomial and iteration methods (scale L in [1, 2)):
+ *   - the planes are parallel below |n0 x n1| = CD_CC_POLY_PARALLEL (the rounding of unit
+ *     normals, with margin): closed forms; closed-form candidates are added up to
+ *     CD_CC_POLY_NEAR_PARALLEL (starting points only: the polish finds the true minima);
+ *   - roots of the degree-8 polynomial count as real with imaginary parts up to
+ *     CD_CC_POLY_IMAG_TOL (relative): near-symmetric configurations make roots near-double and
+ *     rounding splits them into complex pairs (imaginary parts ~1e-4 with a centre 2e-6 off the
+ *     other's axis); every candidate is polished and evaluated on the true distance;
+ *   - the iteration stops when the point on the first circle moves by at most
+ *     CD_CC_ITER_TOL L (it only seeds the polish on the true distance). */
+#define CD_CC_POLY_PARALLEL 1e-13
+#define CD_CC_POLY_NEAR_PARALLEL 1e-2
+#define CD_CC_POLY_IMAG_TOL 1e-2
+#define CD_CC_ITER_TOL 1e-6
+
+/* Circle-disk, scaled units: the plane crossings are refined by two Newton steps on the height,
+ * each at most CD_CD_Z_STEP rad of the circle's angle; an extremum of the rim distance whose
+ * |F''| is at most CD_CD_FLAT_REL rho L (rho: the circle's radius) is flat enough to hide a
+ * neighbouring one below the sampling, so its neighbourhood is scanned. */
+#define CD_CD_Z_STEP 1e-3
+#define CD_CD_FLAT_REL 0.05
 
 /* ---- linking and time of impact (src/topology) ---- */
 

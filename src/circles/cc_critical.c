@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 /* The critical-angle service of circle-circle (used by circle-disk and the arcs): every
- * critical angle of theta -> dist^2(c0(theta), c1), from the engine of cc_engine.c. */
+ * critical angle of theta -> dist^2(c0(theta), c1), from the engine (docs/circles.md). */
 #include <math.h>
 
 #include "circles/circles-priv.h"
@@ -45,12 +45,13 @@ CD_INLINE int axis_crossings(const cdist__cc_frame *f, double *t)
     return n;
 }
 
-/* c0 at the origin and c1 relative to it, scaled by a power of two (returned) to L in
- * [0.5, 1): angles do not change under scaling (see cc_robust). */
+/* c0 at the origin and c1 relative to it, scaled as the robust method scales
+ * (cdist__circles_scale, half = 1); returns the factor. Angles do not change under scaling. */
 CD_INLINE double scaled_pair(const cdist__circle *c0, const cdist__circle *c1, cdist__circle *a, cdist__circle *b)
 {
     vec3 C = v_sub(c1->c, c0->c);
-    double up, sc = cdist__cc_scale_to_half(cdist__fmax(cdist__fmax(c0->r, c1->r), v_norm(C)), &up);
+    double up, sc;
+    cdist__circles_scale(cdist__fmax(cdist__fmax(c0->r, c1->r), v_norm(C)), 1, &sc, &up);
     *a = *c0;
     *b = *c1;
     a->c = v3(0, 0, 0);
@@ -106,7 +107,7 @@ CD_FMA_CLONES int cdist__circle_circle_critical(cdist_query *q, const cdist__cir
             dhi = cdist__fmax(dhi, p.d);
             if (i < cap) theta0[i] = tp[i];
         }
-        if (dhi - dlo <= CC_EQUI_ULPS * DBL_EPSILON * f.L) return -1;
+        if (dhi - dlo <= CD_CC_EQUI_ULPS * DBL_EPSILON * f.L) return -1;
         return np < cap ? np : cap;
     }
     cdist__cc_scan(&f, &k, &Fmax);
@@ -115,7 +116,7 @@ CD_FMA_CLONES int cdist__circle_circle_critical(cdist_query *q, const cdist__cir
     double L = cdist__fmax(cdist__fmax(c0->r, c1->r), v_norm(C));
     /* Constant F (also when F' never changes sign: a periodic F that is not constant has a
      * bracketed minimum and maximum). */
-    double tol = CC_EQUI_ULPS * DBL_EPSILON * L;
+    double tol = CD_CC_EQUI_ULPS * DBL_EPSILON * L;
     if (!minima) {
         if (k.count == 0 || sqrt(Fmax) - k.dmin <= tol) return -1;
     } else if (sqrt(Fmax) - sqrt(k.Fmin) <= tol && (k.count == 0 || sqrt(Fmax) - k.dmin <= tol)) {
@@ -133,3 +134,28 @@ CD_FMA_CLONES int cdist__circle_circle_critical(cdist_query *q, const cdist__cir
     return n < cap ? n : cap;
 }
 
+/* Parallel planes (distance-to-circles-3d §5.2): when A's height over B's plane varies by at most
+ * CD_CC_PARALLEL_ULPS eps L along A, F = (rho - s)^2 + h^2 with h constant to that level and
+ * rho^2 = R^2 + e^2 - 2 R e cos(t - t0), where (e, t0) are the polar coordinates of B's centre
+ * projected into A's plane. F's critical angles are then rho's extremes t0 and t0 + pi and the
+ * angles where rho = s (the projections cross), in closed form. Writes them (up to 4), returns
+ * the count, or -1 when the planes are not parallel. The distances at these angles are
+ * evaluated on the true F, so the tilt below the threshold moves the answer by at most
+ * 2 CD_CC_PARALLEL_ULPS eps L. */
+int cdist__cc_parallel_critical(const cdist__cc_frame *f, double *t)
+{
+    if (!(cdist__norm2(f->rg.ha, f->rg.hb) <= CD_CC_PARALLEL_ULPS * DBL_EPSILON * f->L)) return -1;
+    double e = cdist__norm2(f->Cu, f->Cv), R = f->R, s = f->s;
+    double t0 = e > 0 ? atan2(f->Cv, f->Cu) : 0.0;
+    int n = 0;
+    t[n++] = t0;
+    t[n++] = cdist__wrap_angle(t0 + M_PI);
+    if (e > 0 && fabs(R - e) < s && s < R + e) {
+        /* rho = s: cos(t - t0) = (R^2 + e^2 - s^2) / (2 R e), by the half angle (acos lost
+         * the crossing of a tiny B across A's rim, the cosine rounding to 1) */
+        double a = cdist__crossing_angle(R, e, s);
+        t[n++] = cdist__wrap_angle(t0 + a);
+        t[n++] = cdist__wrap_angle(t0 - a);
+    }
+    return n;
+}

@@ -1,43 +1,11 @@
 /* SPDX-License-Identifier: MIT */
 /* Circle-circle by geometric iteration (Li, Wu, Wang, Zhang 2015; English summary in
- * ../shared/refs/README.md).
- *
- * Algorithm 1 (axes not parallel): alternate orthogonal projections point -> C0 -> C1 -> C0 ...
- * Each projection cannot increase the distance between the current pair, so the distance
- * decreases monotonically to a fixed point, which is a critical pair (each point is the
- * foot of the other). The paper does the projection onto C1 in C1's own frame (its transforms
- * (1)/(2)); here both projections are done in vector form (closed-form point-circle projection
- * with |N x Delta|), which is the same map. Algorithm 2 (parallel axes) is the same alternating
- * projection with both projections in C0's frame: in vector form it is identical, so one loop
- * serves both; for parallel planes (|N0 x N1| <= 1e-13) the paper's closed forms of §2.3 (separated,
- * overlapping: two pairs at distance |pz|, contained) are used instead (shared with the
- * polynomial method: cdist__cc_parallel_candidates), and §2.4 (coincident axes: every pair
- * closest, distance sqrt((R1 - R)^2 + pz^2), equidistant) by cdist__cc_closed_form. Remark 1
- * (perpendicular axes meeting with the centre of C1 on C0's axis) is a case of meeting axes
- * handled below.
- *
- * Guards:
- * - Stopping: an iteration stops when the point on C0 moves by at most CC_ITER_TOL * L, when
- *   the distance stops decreasing (the paper's rule), or after q->max_iterations iterations.
- * - Non-global fixed points: eight starts (four evenly spread points of each circle), then
- *   a final check of F on 16 evenly spread angles of C0; a sample below every fixed point found
- *   starts one more iteration.
- * - Linear (and, near tangency, sublinear) convergence: every distinct fixed point is finished
- *   by safeguarded Newton on the true distance F(theta) (cdist__cc_polish), so the answer is exact
- *   to a few ulps whatever the iteration's tolerance.
- * - Axes that meet: the paper reflects the C0 point about the plane through both axes and
- *   iterates again for the second pair; here the reflected point is polished directly, so both
- *   symmetric pairs come out equally accurate.
- * - Scale: the query runs on a copy scaled by a power of two (cdist__cc_scale), so squares neither
- *   overflow nor underflow; ties, flat minima and circles at constant distance from the other
- *   are sorted out by cdist__cc_offer_minima, shared with the polynomial method.
- * The iteration count reported is that of the start which produced the reported pair (<= the
- * cap); closed forms (points, coaxial, parallel planes) report 0. */
+ * ../shared/refs/README.md): alternating projections from several starts, each fixed point
+ * polished on the true distance. The algorithms and the guards: docs/circles.md. */
 #include <math.h>
 
 #include "internal.h"
 
-#define CC_ITER_TOL 1e-6
 #define CC_STARTS 8
 #define CC_CHECKS 16
 
@@ -73,7 +41,7 @@ static double iterate(const cdist__cc *g, vec3 x1, int cap, int *count)
         double mx = k0n.x - k0.x, my = k0n.y - k0.y, mz = k0n.z - k0.z;
         double d2n = ex * ex + ey * ey + ez * ez;
         double move = sqrt(mx * mx + my * my + mz * mz);
-        int stop = move <= CC_ITER_TOL * g->L || !(d2n < d2);
+        int stop = move <= CD_CC_ITER_TOL * g->L || !(d2n < d2);
         if (d2n <= d2) k0 = k0n;
         d2 = fmin(d2, d2n);
         if (stop) break;
@@ -110,7 +78,7 @@ static cdist_status iteration(cdist_query *q, const cdist__circle *c0, const cdi
     *iterations = 0;
     if (cdist__cc_closed_form(&g, b)) return CDIST_OK; /* points; §2.4 coincident axes */
     double sn = v_norm(v_cross(c0->n, c1->n));
-    if (sn <= 1e-13) { /* §2.3: parallel axes, closed forms, polished */
+    if (sn <= CD_CC_POLY_PARALLEL) { /* §2.3: parallel axes, closed forms, polished */
         double t0[4];
         int k = cdist__cc_parallel_candidates(&g, t0);
         int sd[4] = {0, 0, 0, 0};

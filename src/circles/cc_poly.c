@@ -1,50 +1,11 @@
 /* SPDX-License-Identifier: MIT */
 /* Circle-circle by the degree-8 polynomial (Eberly, distance-to-circles-3d §5), plus the helpers
- * shared with the geometric iteration (src/circles/cc_iteration.c): the true distance function with its
- * derivatives, the Newton polish, and the closed forms of the special configurations.
- *
- * Frame. The dispatcher puts c0's centre at the origin and c1 at D. For a point P on circle s
- * (the "moving" circle, angle t in its own basis u, v) the distance to the other circle f is
- * closed form (point-circle, §2): with Delta = P - C_f, h = n_f . Delta, rho = |n_f x Delta|,
- *     F_s(t) = (rho - r_f)^2 + h^2                           (rho from the cross product: no
- *                                                              cancellation near the axis).
- * With E = Delta - K the vector from the closest point K = C_f + r_f w / rho (w the in-plane part
- * of Delta) to P, the gradient of the squared point-circle distance is 2E and its Hessian is
- * 2(I - (r_f / rho) tau tau^T) with tau = (n_f x Delta) / rho the circle's tangent at K, so
- *     F'  = 2 E . P',        P' = r_s(-sin t u + cos t v),
- *     F'' = 2 (r_s^2 - r_f (tau_rho . P')^2 / rho^3) - 2 E . P      (tau_rho = n_f x Delta).
- * E is formed as h n_f + ((rho - r_f) / rho) w, which stays accurate when the distance is tiny.
- * Every candidate angle (polynomial root, closed form, sample) is polished by safeguarded Newton
- * on F' and evaluated on F: the polynomial only brackets.
- *
- * Polynomial (§5). Eberly's F'(t) = 0 for the point P(t) of the moving circle against the fixed
- * circle of radius r0 is, squared to remove the root |N0 x Delta|,
- *     H(g, s) = (p0 + s p1)(p2 + s p3)^2 - r0^2 (p4 + s p5)^2 = p6(g) + s p7(g),  g = cos t,
- * s = sin t, and eliminating s with s^2 = 1 - g^2 gives phi(g) = p6^2 - (1 - g^2) p7^2 (degree
- * <= 8). Conditioning: the fixed circle is the LARGER one at the origin, scaled to the unit
- * circle (everything divided by its radius, or by the centre distance when that is larger:
- * H is homogeneous, so only over/underflow depends on the scale), so the moving circle's
- * radius is <= 1 and the coefficients have comparable sizes. a5 - a7 = r1^2 ((N0.V1)^2 -
- * (N0.U1)^2) is formed as a product (it vanishes for parallel planes), a2, a3, a4 from the cross
- * product N0 x D. For each real root, s = -p6/p7 gives the sign of sin t (both signs where p7
- * is within rounding of zero: the p7 = 0 branch; p7 == 0 identically when the centres lie on
- * the normal line, §5.3). Near-symmetric configurations make true and spurious roots
- * near-double, and then even a clearly non-zero -p6/p7 can have the wrong sign (seen: nearly
- * coplanar overlapping circles); the other sign costs one evaluation, so it is always offered
- * as well. Double roots come out of the eigenvalue solver as complex pairs with imaginary parts
- * ~ sqrt(eps) or more: roots are accepted with imaginary part up to 1e-2 (CC_IMAG_TOL) and
- * real part up to 1 + 1e-3 in magnitude (clamped). Four samples of the moving circle are
- * candidates too. Every candidate is evaluated on F; those within 1e-3 F_min + 1e-4 L^2 of the
- * lowest are polished (an inaccurate root of a near-double pair is still in its basin).
- * Special cases: zero radii (point-circle), coaxial circles (§5.1 concentric, §5.2 with the
- * centres on the common axis: equidistant), parallel planes (§5.1 separated / tangent /
- * overlapping / containing, §5.2): closed-form candidates; centres on the normal line (§5.3) and,
- * more generally, axes that meet: the configuration is symmetric about the plane through both
- * axes, so the points of the moving circle in that plane are candidates and every minimum's
- * mirror image is polished too (symmetric pairs come out equally accurate). */
+ * shared with the geometric iteration (cc_iteration.c): the true distance function with its
+ * derivatives, the Newton polish, and the closed forms of the special configurations. The
+ * frame, the polynomial and the special cases: docs/circles.md. */
 #include <math.h>
 
-#include "internal.h"
+#include "circles/circles-priv.h"
 
 /* ---------------------------------------------------------------------------------------- */
 /* Shared helpers (prototypes in the cc_methods block of internal.h)                          */
@@ -145,9 +106,8 @@ void cdist__cc_offer(const cdist__cc *g, int side, double t, cdist__best *b)
 
 void cdist__cc_scale(const cdist__circle *c0, const cdist__circle *c1, double L, cdist__circle *a, cdist__circle *b, double *s)
 {
-    int e = 0;
-    frexp(L > 0.0 && isfinite(L) ? L : 1.0, &e); /* L = m 2^e, m in [0.5, 1) */
-    double k = ldexp(1.0, 1 - e);                /* L k in [1, 2) */
+    double k, up;
+    cdist__circles_scale(L, 0, &k, &up);
     *a = *c0;
     *b = *c1;
     a->c = v3(0, 0, 0);
@@ -228,12 +188,6 @@ void cdist__cc_offer_minima(const cdist__cc *g, int n, const int *side, const do
     }
 }
 
-/* Normals parallel to rounding: below this |n0 x n1| the planes are treated as parallel. */
-#define CC_PARALLEL 1e-13
-/* Closed-form candidates for parallel planes are added up to this |n0 x n1| (they are only
- * starting points; the polish finds the true minima of slightly tilted circles). */
-#define CC_NEAR_PARALLEL 1e-2
-
 int cdist__cc_closed_form(const cdist__cc *g, cdist__best *b)
 {
     const cdist__circle *c0 = g->c[0], *c1 = g->c[1];
@@ -310,7 +264,7 @@ int cdist__cc_mirror(const cdist__cc *g, vec3 *m)
 {
     vec3 c = v_cross(g->c[0]->n, g->c[1]->n);
     double s = v_norm(c);
-    if (!(s > CC_PARALLEL)) return 0;
+    if (!(s > CD_CC_POLY_PARALLEL)) return 0;
     vec3 mm = v_scale(1.0 / s, c);
     if (fabs(v_dot(g->D, mm)) > 1e-9 * g->L) return 0;
     *m = mm;
@@ -322,11 +276,6 @@ int cdist__cc_mirror(const cdist__cc *g, vec3 *m)
 /* ---------------------------------------------------------------------------------------- */
 
 #define CC_MAXCAND 48
-/* Roots of phi are accepted with imaginary parts up to this (relative): near-symmetric
- * configurations make true and spurious roots near-double, and rounding splits them into
- * complex pairs (imaginary parts ~1e-4 were seen with a centre 2e-6 off the other's axis).
- * Their real parts are only candidates, evaluated and polished on the true distance. */
-#define CC_IMAG_TOL 1e-2
 
 /* Candidates are kept as (cos t, sin t): roots come as (gamma, sigma), and most candidates are
  * only evaluated, never polished, so atan2/sincos are spent only on the few that are. */
@@ -406,7 +355,7 @@ static void finish_candidates(const cdist__cc *g, cc_cands *c, cdist__best *b)
 static void special_candidates(const cdist__cc *g, cc_cands *c)
 {
     double sn = v_norm(v_cross(g->c[0]->n, g->c[1]->n));
-    if (sn <= CC_NEAR_PARALLEL) {
+    if (sn <= CD_CC_POLY_NEAR_PARALLEL) {
         double t0[4];
         int k = cdist__cc_parallel_candidates(g, t0);
         for (int i = 0; i < k; i++) cand_add(c, 0, t0[i]);
@@ -425,15 +374,6 @@ static void special_candidates(const cdist__cc *g, cc_cands *c)
 /* ---------------------------------------------------------------------------------------- */
 /* The polynomial                                                                            */
 /* ---------------------------------------------------------------------------------------- */
-
-/* out = a * b (degrees da, db); out must not alias. */
-static int pmul(const double *a, int da, const double *b, int db, double *out)
-{
-    for (int i = 0; i <= da + db; i++) out[i] = 0.0;
-    for (int i = 0; i <= da; i++)
-        for (int j = 0; j <= db; j++) out[i + j] += a[i] * b[j];
-    return da + db;
-}
 
 /* out = a + s * b (out may alias a), returns the degree max(da, db). */
 static int paxpy(double *out, int da, double s, const double *b, int db)
@@ -474,30 +414,30 @@ static void build_phi(const cdist__cc *g, int side, double *p6, double *p7, doub
     double t1[9], t2[9], t3[9], t4[9];
     /* S = p2^2 + (1 - g^2) p3^2 (deg 2) */
     double S[3];
-    pmul(P2, 1, P2, 1, S);
+    cdist__poly_mul(P2, 1, P2, 1, 0, S);
     double p33 = P3[0] * P3[0];
     paxpy(S, 2, p33, OM, 2);
     /* p6 = p0 S + (1 - g^2) 2 p1 p2 p3 - r0^2 (p4^2 + (1 - g^2) p5^2) */
-    pmul(P0, 2, S, 2, p6); /* deg 4 */
-    pmul(P1, 1, P2, 1, t1); /* deg 2 */
-    pmul(t1, 2, OM, 2, t2); /* deg 4 */
+    cdist__poly_mul(P0, 2, S, 2, 0, p6); /* deg 4 */
+    cdist__poly_mul(P1, 1, P2, 1, 0, t1); /* deg 2 */
+    cdist__poly_mul(t1, 2, OM, 2, 0, t2); /* deg 4 */
     paxpy(p6, 4, 2.0 * P3[0], t2, 4);
-    pmul(P4, 2, P4, 2, t1); /* deg 4 */
+    cdist__poly_mul(P4, 2, P4, 2, 0, t1); /* deg 4 */
     paxpy(p6, 4, -r02, t1, 4);
-    pmul(P5, 1, P5, 1, t3); /* deg 2 */
-    pmul(t3, 2, OM, 2, t4); /* deg 4 */
+    cdist__poly_mul(P5, 1, P5, 1, 0, t3); /* deg 2 */
+    cdist__poly_mul(t3, 2, OM, 2, 0, t4); /* deg 4 */
     paxpy(p6, 4, -r02, t4, 4);
     /* p7 = 2 p0 p2 p3 + p1 S - 2 r0^2 p4 p5 */
-    pmul(P0, 2, P2, 1, p7); /* deg 3 */
+    cdist__poly_mul(P0, 2, P2, 1, 0, p7); /* deg 3 */
     for (int i = 0; i <= 3; i++) p7[i] *= 2.0 * P3[0];
-    pmul(P1, 1, S, 2, t1); /* deg 3 */
+    cdist__poly_mul(P1, 1, S, 2, 0, t1); /* deg 3 */
     paxpy(p7, 3, 1.0, t1, 3);
-    pmul(P4, 2, P5, 1, t1); /* deg 3 */
+    cdist__poly_mul(P4, 2, P5, 1, 0, t1); /* deg 3 */
     paxpy(p7, 3, -2.0 * r02, t1, 3);
     /* phi = p6^2 - (1 - g^2) p7^2 */
-    pmul(p6, 4, p6, 4, phi);
-    pmul(p7, 3, p7, 3, t1); /* deg 6 */
-    pmul(t1, 6, OM, 2, t2); /* deg 8 */
+    cdist__poly_mul(p6, 4, p6, 4, 0, phi);
+    cdist__poly_mul(p7, 3, p7, 3, 0, t1); /* deg 6 */
+    cdist__poly_mul(t1, 6, OM, 2, 0, t2); /* deg 8 */
     paxpy(phi, 8, -1.0, t2, 8);
 }
 
@@ -543,10 +483,10 @@ static cdist_status polynomial(cdist_query *q, const cdist__circle *c0, const cd
             cand_add(&c, s, a2 + M_PI);
         }
     }
-    if (!concentric && (sn > CC_PARALLEL || c.n == 0)) {
+    if (!concentric && (sn > CD_CC_POLY_PARALLEL || c.n == 0)) {
         double p6[5], p7[4], phi[9], roots[8];
         build_phi(&g, side, p6, p7, phi);
-        int nr = cdist__poly_real_roots(q->poly, phi, 8, CC_IMAG_TOL, roots);
+        int nr = cdist__poly_real_roots(q->poly, phi, 8, CD_CC_POLY_IMAG_TOL, roots);
         if (nr == CD_POLY_FAIL) return cdist__fail(q, CDIST_ERR_INTERNAL, "circle-circle: polynomial solver failed");
         double s7 = 0.0;
         for (int i = 0; i <= 3; i++) s7 += fabs(p7[i]);

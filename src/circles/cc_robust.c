@@ -1,10 +1,10 @@
 /* SPDX-License-Identifier: MIT */
 /* Circle to circle, the robust method (the AUTO answer), on the larger circle: parallel planes
- * in closed form; else first the certified search of the batch kernel with its angles in lanes
- * (cdist__cc_quick, src/batch/cc_kernel.c: a grid, concave hull bounds, a zoomed basin
- * certified convex, Newton), which answers when the closest point is certified unique and not
+ * in closed form; else first the certified search with its angles in lanes (cdist__cc_quick,
+ * cc_search.c: a grid, concave hull bounds, a zoomed basin certified convex, Newton), which
+ * answers when the closest point is certified unique and not
  * on or near the other's axis (97% of random pairs); else the root-isolation engine of
- * cc_engine.c, which also answers every tie, equidistant set and touching pair. The search is
+ * docs/circles.md, which also answers every tie, equidistant set and touching pair. The search is
  * not tried where it cannot certify (cdist__cc_quick_worth). */
 #include <math.h>
 
@@ -31,9 +31,9 @@ CD_FMA_CLONES int cdist__cc_prepare(const cdist__circle *c0, const cdist__circle
     p->swapped = param_second(c0, c1, C);
     const cdist__circle *A = p->swapped ? c1 : c0, *B = p->swapped ? c0 : c1;
     if (A->r == 0.0 || B->r == 0.0) return 0;
-    /* Scale the problem by a power of two (exact) so that L is about 1: H has terms of order
-     * L^6, which would overflow or underflow for coordinates near the 1e150 limit. */
-    double sc = cdist__cc_scale_to_half(cdist__fmax(cdist__fmax(c0->r, c1->r), v_norm(C)), &p->unscale);
+    /* H has terms of order L^6 */
+    double sc;
+    cdist__circles_scale(cdist__fmax(cdist__fmax(c0->r, c1->r), v_norm(C)), 1, &sc, &p->unscale);
     p->A = *A;
     p->B = *B;
     p->A.c = v_scale(sc, A->c);
@@ -107,8 +107,8 @@ cdist_status cdist__cc_robust(cdist_query *q, const cdist__circle *c0, const cdi
     if (b->n == 0 || !isfinite(k.dmin)) return cdist__fail(q, CDIST_ERR_INTERNAL, "circle-circle: no minimum found");
     cdist__cc_settle_d2(&f, &k);
     /* (a) F constant on A; (b) the closest point of A on B's axis. */
-    if (sqrt(Fmax) - k.dmin <= CC_EQUI_ULPS * DBL_EPSILON * f.L) b->equidistant = 1;
-    if (k.rho_min <= CC_AXIS_EPS_ULPS * f.epsL * cdist__fmin(1.0, f.s / f.L)) b->equidistant = 1;
+    if (sqrt(Fmax) - k.dmin <= CD_CC_EQUI_ULPS * DBL_EPSILON * f.L) b->equidistant = 1;
+    if (k.rho_min <= CD_CC_AXIS_ULPS * f.epsL * cdist__fmin(1.0, f.s / f.L)) b->equidistant = 1;
     return CDIST_OK;
 }
 

@@ -2,7 +2,7 @@
 /* Circle to circle: public entry points, the one scaling rule of the family, method dispatch
  * (AUTO = the robust method of cc_robust.c, also the fallback of the polynomial and iteration
  * methods), and the method-independent equidistance tests and same-basin filter described in
- * cc_engine.c. */
+ * docs/circles.md. */
 #include <math.h>
 #include <stdio.h>
 
@@ -27,13 +27,13 @@ static void cc_equidistant_post(const cdist__circle *c0, const cdist__circle *c1
     if (b->equidistant || b->n == 0) return;
     const cdist__circle *cs[2] = {c0, c1};
     double d = sqrt(b->c[0].d2), Cn = v_norm(v_sub(c1->c, c0->c));
-    double L = fmax(fmax(c0->r, c1->r), Cn), tol = CC_EQUI_ULPS * DBL_EPSILON * L;
+    double L = fmax(fmax(c0->r, c1->r), Cn), tol = CD_CC_EQUI_ULPS * DBL_EPSILON * L;
     for (int side = 0; side < 2; side++) {
         const cdist__circle *me = cs[side], *other = cs[1 - side];
         if (other->r > 0 && me->r >= 0) {
             double rho;
             pc_dist(b->c[0].p[side], other, &rho);
-            if (rho <= CC_AXIS_EPS_ULPS * DBL_EPSILON * (me->r + other->r + Cn) * fmin(1.0, other->r / L)) {
+            if (rho <= CD_CC_AXIS_ULPS * DBL_EPSILON * (me->r + other->r + Cn) * fmin(1.0, other->r / L)) {
                 b->equidistant = 1;
                 return;
             }
@@ -121,8 +121,8 @@ CD_FMA_CLONES int cdist__circles_frame(cdist__circle *a, cdist__circle *b, vec3 
     *offset = a->c;
     a->c = v3(0, 0, 0);
     b->c = v_sub(b->c, *offset);
-    int e = cdist__scale_exponent(cdist__fmax(cdist__fmax(a->r, b->r), v_maxabs(b->c)));
-    double down = cdist__pow2(-e); /* normal for |e| <= CD_SCALE_MAX_EXP: x * down is ldexp(x, -e) */
+    double down, up;
+    int e = cdist__circles_scale(cdist__fmax(cdist__fmax(a->r, b->r), v_maxabs(b->c)), 0, &down, &up);
     a->r *= down;
     b->r *= down;
     b->c = v_scale(down, b->c);
@@ -168,7 +168,7 @@ cdist_status cdist_circle_circle(cdist_query *q, const cdist_circle *c0, const c
     cdist_method answered = CDIST_METHOD_ROBUST;
     if (!(st = cdist__check_circle(q, c0, "first circle", &a)) && !(st = cdist__check_circle(q, c1, "second circle", &b))) {
         /* The robust method (AUTO) runs the same computation in both orders by construction
-         * (cc_engine.c); the polynomial and iteration methods are given the circles in
+         * (docs/circles.md); the polynomial and iteration methods are given the circles in
          * lexicographic order, so that their ties, pair counts and equidistant decisions do not
          * depend on the argument order either. */
         cdist_method m = cdist__family_method(q, CD_FAM_CIRCLE_CIRCLE);

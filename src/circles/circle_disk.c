@@ -1,21 +1,9 @@
 /* SPDX-License-Identifier: MIT */
 /* Circle to disk (point-curve-circle-to-disk §2-§4; derivations in docs/disk.md). Disk to disk
  * (disk_disk.c) runs this twice, rim of each against the other disk (the second time without
- * the rim-to-rim minima, which the first has found).
- *
- * The one lemma everything here rests on. Let G(X) be the distance from X to the disk, F(X)
- * the distance to its rim circle and h(X) the signed height over the disk's plane. Then
- *     G(X) = |h(X)|   when X projects into the disk,     G(X) = F(X)   otherwise,
- * and always G <= F with equality exactly when the projection is outside or on the rim.
- * For a curve X(t): if t* is a local minimum of G(X(t)) and X(t*) projects outside or onto
- * the rim, then F >= G >= G(t*) = F(t*) nearby, so t* is a local minimum of F too. If X(t*)
- * projects strictly inside, G = |h| nearby, so h(t*) = 0 or h'(t*) = 0. Hence
- *     min_t G = min( G at the critical points of F,  G at the zeros and critical points of h,
- *                    G at the ends of the parameter range ),
- * which replaces the paper's partition of the parameter range into inside/outside
- * subintervals (the partition points are never needed: a partition point that is a minimum of
- * G is a minimum of F). Every candidate is evaluated with the TRUE point-disk distance G, so a
- * spurious candidate can never make the answer too small. */
+ * the rim-to-rim minima, which the first has found). The lemma it rests on (minima of the disk
+ * distance are minima of the rim distance, or zeros or critical points of the height):
+ * docs/circles.md. */
 #include <math.h>
 #include <pthread.h>
 #include <string.h>
@@ -140,12 +128,9 @@ CD_INLINE void cdk_offer(const cdk *k, double t, cdist__best *b)
     cdk_offer_cs(k, t, cs, sn, b);
 }
 
-/* The plane crossings are refined by Newton steps on z of at most CDK_Z_STEP each (two). */
-#define CDK_Z_STEP 1e-3
-
 /* Whether the plane crossing first estimated at (cs, sn), with height z there, is certainly far
  * above b's best (CD_CD_FAR_REL) wherever its two Newton steps take it: they move the circle
- * point by at most 2 CDK_Z_STEP rho (the distance to the disk is 1-Lipschitz), and twice the
+ * point by at most 2 CD_CD_Z_STEP rho (the distance to the disk is 1-Lipschitz), and twice the
  * far margin covers the plain square root used here for hypot. Its offer would then be dropped
  * anyway, so the steps and the offer are skipped. */
 CD_INLINE int cdk_crossing_far(const cdk *k, double cs, double sn, double z, const cdist__best *b)
@@ -156,7 +141,7 @@ CD_INLINE int cdk_crossing_far(const cdk *k, double cs, double sn, double z, con
         double rho = sqrt(x * x + y * y), dr = k->small_circle ? ex / (rho + k->R) : rho - k->R;
         g = sqrt(dr * dr + z * z);
     }
-    return g - 2.0 * CDK_Z_STEP * k->rho > sqrt(b->c[0].d2) + 2.0 * CD_CD_FAR_REL * b->scale;
+    return g - 2.0 * CD_CD_Z_STEP * k->rho > sqrt(b->c[0].d2) + 2.0 * CD_CD_FAR_REL * b->scale;
 }
 
 /* Bracketed root of F' in [a, b] with sg F'(a) < 0 < sg F'(b) (sg = 1: a minimum of F, -1: a
@@ -198,13 +183,6 @@ static void trig_to_quad(const double *c, double s, double *q)
     q[2] = (c[0] - c[1]) * s;
 }
 
-static void pmul(const double *a, int da, const double *b, int db, double *out)
-{
-    for (int i = 0; i <= da + db; i++) out[i] = 0.0;
-    for (int i = 0; i <= da; i++)
-        for (int j = 0; j <= db; j++) out[i + j] = fma(a[i], b[j], out[i + j]);
-}
-
 /* Critical points of F by the degree-8 polynomial (point-curve-circle-to-disk §4.3, in the
  * half-angle variable): F' = 0 <=> S rho = R T, squared: (x^2+y^2) S^2 - R^2 T^2 = 0, with
  * T = x x' + y y'. Returns the number of angles written, or -1 when F is constant, -2 on failure. */
@@ -221,17 +199,17 @@ static int cdk_poly_critical(cdist_query *q, const cdk *k, double *ts)
     trig_to_quad(dY, s, qyp);
     trig_to_quad(k->S, s * s, qs);
     double xx[5], yy[5], xxp[5], yyp[5], rho2[5], T[5], S2[5], a[9], bq[9];
-    pmul(qx, 2, qx, 2, xx);
-    pmul(qy, 2, qy, 2, yy);
-    pmul(qx, 2, qxp, 2, xxp);
-    pmul(qy, 2, qyp, 2, yyp);
+    cdist__poly_mul(qx, 2, qx, 2, 1, xx);
+    cdist__poly_mul(qy, 2, qy, 2, 1, yy);
+    cdist__poly_mul(qx, 2, qxp, 2, 1, xxp);
+    cdist__poly_mul(qy, 2, qyp, 2, 1, yyp);
     for (int i = 0; i < 5; i++) {
         rho2[i] = xx[i] + yy[i];
         T[i] = xxp[i] + yyp[i];
     }
-    pmul(qs, 2, qs, 2, S2);
-    pmul(rho2, 4, S2, 4, a);
-    pmul(T, 4, T, 4, bq);
+    cdist__poly_mul(qs, 2, qs, 2, 1, S2);
+    cdist__poly_mul(rho2, 4, S2, 4, 1, a);
+    cdist__poly_mul(T, 4, T, 4, 1, bq);
     double R2 = (k->R * s) * (k->R * s);
     for (int i = 0; i < 9; i++) a[i] = fma(-R2, bq[i], a[i]);
     double roots[8];
@@ -315,7 +293,6 @@ static int cdk_scan(const cdk *k, double t1, double a, double b, double *out, in
  * every sign change from - to + (a minimum of F). Returns the number of angles written. */
 #define CDK_SAMPLES 48
 #define CDK_CAP 48
-#define CDK_FLAT 0.05
 static const double cdk_grid_cs[CDK_SAMPLES][2] = {
     {-1, -1.2246467991473532e-16},
     {-0.99144486137381038, -0.13052619222005157},
@@ -377,7 +354,7 @@ static int cdk_robust_critical(const cdk *k, double *ts, int cap, double scale)
     for (int i = 1; i < CDK_SAMPLES; i++) Fmin = cdist__fmin(Fmin, Fs[i]);
     /* A cluster can only hold the global minimum where F is within this margin of the best. */
     double margin = Fmin + 0.01 * scale * scale;
-    double flat = CDK_FLAT * k->rho * scale;
+    double flat = CD_CD_FLAT_REL * k->rho * scale;
     int n = 0;
     for (int i = 0; i < CDK_SAMPLES && n < cap; i++) {
         double a = -M_PI + i * h, b = a + h;
@@ -414,7 +391,7 @@ static int cdk_poly_minima(cdist_query *q, const cdk *k, double *ts, int cap, do
     if (nr < 0) return nr;
     int n = 0;
     double Fbest = INFINITY;
-    double Fv[16], f2v[16], flat = CDK_FLAT * k->rho * scale;
+    double Fv[16], f2v[16], flat = CD_CD_FLAT_REL * k->rho * scale;
     for (int i = 0; i < nr && n < cap; i++) {
         double f1, f2;
         cdk_rim(k, roots[i], &f1, &f2);
@@ -496,7 +473,7 @@ CD_INLINE cdist_status cdk_solve(cdist_query *q, cdist_method method, const cdk 
         double w = acos(cz);
         for (int s = -1; s <= 1; s += 2) {
             double t = phi + s * w;
-            /* Newton on z itself (two steps of at most CDK_Z_STEP) to land on the plane. A step
+            /* Newton on z itself (two steps of at most CD_CD_Z_STEP) to land on the plane. A step
              * below half an ulp of t leaves t as it was: its cos and sin are reused. */
             double tl = NAN, sn = 0.0, cs = 0.0; /* the angle of the last sincos */
             int skip = 0;
@@ -512,7 +489,7 @@ CD_INLINE cdist_status cdk_solve(cdist_query *q, cdist_method method, const cdk 
                 }
                 if (zp == 0.0 || z == 0.0) break;
                 double st = z / zp;
-                if (fabs(st) > CDK_Z_STEP) break;
+                if (fabs(st) > CD_CD_Z_STEP) break;
                 t -= st;
             }
             if (skip) continue;
@@ -533,7 +510,7 @@ CD_INLINE cdist_status cdk_solve(cdist_query *q, cdist_method method, const cdk 
     }
     if (n < 0) {
         /* ROBUST: every critical angle of F with certified root isolation (circle-circle robust
-         * method, Fourier bounds on the squared derivative, src/circles/cc_engine.c), the rim being a
+         * method, Fourier bounds on the squared derivative, docs/circles.md), the rim being a
          * circle; its own sampling as the fallback. */
         *used = CDIST_METHOD_ROBUST;
         /* Only the minima of F matter (the lemma), and only those below the best candidate so
@@ -548,7 +525,7 @@ CD_INLINE cdist_status cdk_solve(cdist_query *q, cdist_method method, const cdk 
              * G <= F); the others lie above it by the certificate's margin */
             *rim_certified = 1;
             n = 0;
-            /* the engine's own cut-off in minima mode (cc_engine.c): the cap and a tie */
+            /* the engine's own cut-off in minima mode (cc_scan.c): the cap and a tie */
             if (dq <= dcap * (1 + 8 * DBL_EPSILON) + CD_TIE_ULPS * DBL_EPSILON * scale) {
                 ts[0] = tq;
                 tc[0] = cq;
@@ -575,7 +552,7 @@ CD_INLINE cdist_status cdk_solve(cdist_query *q, cdist_method method, const cdk 
         } else {
             /* Flat minima near the best: a neighbour of a cluster below the certification width
              * (multiple roots) is looked for by the dyadic scan. */
-            double Fv[CDK_CAP], f2v[CDK_CAP], Fbest = INFINITY, flat = CDK_FLAT * k->rho * scale;
+            double Fv[CDK_CAP], f2v[CDK_CAP], Fbest = INFINITY, flat = CD_CD_FLAT_REL * k->rho * scale;
             for (int i = 0; i < n; i++) {
                 sincos(ts[i], &tsn[i], &tc[i]);
                 Fv[i] = cdk_rim_cs(k, tc[i], tsn[i], NULL, &f2v[i]);

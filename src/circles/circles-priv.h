@@ -1,20 +1,14 @@
 /* SPDX-License-Identifier: MIT */
 /* Private declarations of the circles family (src/circles): the trigonometric root-isolation
- * engine of circle-circle (cc_engine.c, described there) shared by the robust method
+ * engine of circle-circle (docs/circles.md; cc_frame.c, cc_certify.c, cc_kink.c, cc_scan.c,
+ * cc_pair.c) shared by the robust method
  * (cc_robust.c), the critical-angle service (cc_critical.c) and the dispatcher
- * (circle_circle.c). Everything is in the units of a problem scaled to L in [1, 2). */
+ * (circle_circle.c). Everything is in the units of a problem scaled by cdist__circles_scale. */
 #ifndef CDIST_CIRCLES_PRIV_H
 #define CDIST_CIRCLES_PRIV_H
 
 #include "internal.h"
 #include "circles/ring_eval.h"
-
-/* F constant on a circle (equidistant configuration (a)): variation below CC_EQUI_ULPS eps L. */
-#define CC_EQUI_ULPS 32.0
-/* A closest point on the other circle's axis (equidistant configuration (b)): its axis distance
- * within CC_AXIS_EPS_ULPS rounding units of the positions (eps (R + |C|)), times min(1, s / L)
- * (the other circle's closest point direction is lost to rounding there). */
-#define CC_AXIS_EPS_ULPS 8.0
 
 /* The parameterised circle A at the origin and the other circle B. */
 typedef struct cdist__cc_frame {
@@ -35,7 +29,7 @@ typedef struct cdist__cc_frame {
 /* Values at one angle. */
 typedef struct cdist__cc_pt {
     double t, c, s;
-    int detail;   /* the certificates' values below are set (cc_engine.c computes them on demand) */
+    int detail;   /* the certificates' values below are set (cc_certify.c computes them on demand) */
     double H, H1, H2; /* H, H', H'' */
     double eH, eH1, eH2; /* their rounding bounds at this point */
     double F1, eF1; /* F'/2 and its rounding bound */
@@ -67,7 +61,7 @@ static inline double cdist__cc_dot3(vec3 a, vec3 b) { return cdist__ring_dot(a, 
 
 /* The one evaluation of a point of the engine at angle t with (c, s) = (cos t, sin t): F, its
  * root d, F'/2, rho, Q, g (what pruning, bracketing and the sampled regions read). The
- * certificates' values (H's, F''s and the rounding bounds) come on demand, in cc_engine.c: most
+ * certificates' values (H's, F''s and the rounding bounds) come on demand, in cc_certify.c: most
  * intervals are pruned first. */
 static inline void cdist__cc_eval_lean(const cdist__cc_frame *f, double t, double c, double s, cdist__cc_pt *p)
 {
@@ -86,7 +80,7 @@ static inline void cdist__cc_eval_lean(const cdist__cc_frame *f, double t, doubl
 }
 
 /* The squared distance from A's point at (c, sn) = (cos t, sin t) to B (radius s) as the robust
- * method reports it, from the ring rg of the pair (ring_eval.h; cc_engine.c). The one formula
+ * method reports it, from the ring rg of the pair (ring_eval.h; cc_search_body.h). The one formula
  * of the answer: of the robust method's (applied to the candidates it keeps,
  * cdist__cc_settle_d2) and of the batch kernel's (src/batch/cc_kernel.c).
  * Evaluated in double-double: its rounding (far below an ulp of the scale) then leaves the
@@ -96,20 +90,21 @@ static inline void cdist__cc_eval_lean(const cdist__cc_frame *f, double t, doubl
  * touching or crossing circles, to the single query). */
 double cdist__cc_point_d2(const cdist__ring *rg, double s, double c, double sn);
 
-/* The power of two sc scaling a length L > 0 (finite) into [0.5, 1), frexp's, and *up = 1 / sc:
- * the robust method's problem scale (H has terms of order L^6). By exponent bits where both are
- * doubles, else by the library. */
-static inline double cdist__cc_scale_to_half(double L, double *up)
+/* The one scaling rule of the family: the problem scale L (max of the radii and the centre
+ * offset) times *down = 2^-e lies in [2^-half, 2^(1 - half)) ([1, 2) for half = 0, [0.5, 1) for
+ * half = 1), *up = 2^e; returns e. Exact (powers of two): squares neither overflow nor underflow,
+ * and answers scale back exactly. e is cdist__scale_exponent(L) + half, so clamped to
+ * CD_SCALE_MAX_EXP (+ 1): an L outside [2^-1000, 2^1000) lands outside the range but far from
+ * overflow and underflow. half = 1 for the robust engine (cdist__cc_prepare, the critical-angle
+ * service): its rounding bounds and certificate thresholds are absolute in these units, so
+ * moving its range would move results; half = 0 elsewhere (the frame of every query, the
+ * polynomial and iteration methods). */
+static inline int cdist__circles_scale(double L, int half, double *down, double *up)
 {
-    if (L >= 0x1p-1000 && L < 0x1p1000) {
-        int ex = cdist__scale_exponent(L) + 1;
-        *up = cdist__pow2(ex);
-        return cdist__pow2(-ex);
-    }
-    int ex;
-    frexp(L, &ex);
-    *up = ldexp(1.0, ex);
-    return ldexp(1.0, -ex);
+    int e = cdist__scale_exponent(L) + half;
+    *down = cdist__pow2(-e);
+    *up = cdist__pow2(e);
+    return e;
 }
 
 /* The reported parameter of an angle t on A in (-3 pi, 3 pi): t wrapped to (-pi, pi] (the
@@ -125,7 +120,7 @@ static inline double cdist__cc_param(double t)
 void cdist__cc_frame_init(cdist__cc_frame *f, const cdist__circle *A, vec3 C, const cdist__circle *B);
 void cdist__cc_frame_ring(cdist__cc_frame *f, const cdist__circle *A, vec3 C, const cdist__circle *B);
 void cdist__cc_frame_bounds(cdist__cc_frame *f);
-/* The batch kernel's certified search (src/batch/cc_kernel.c) for the one pair of frame f (only
+/* The certified search (cc_search.c, shared with the batch kernel) for the one pair of frame f (only
  * its ring part is read), with the angles in lanes: 1, the angle *t of the closest point on A
  * and its cosine *c and sine *s when the closest point is certified unique (every other region
  * of A at least CD_CCK_CERT_MARGIN farther in F) and the distance is not tiny
@@ -148,7 +143,7 @@ static inline int cdist__cc_quick_worth(const cdist__cc_frame *f)
  * its cosine *c and sine *s and the distance *d there; 0 when not certified (or a radius is 0,
  * or the planes are parallel). For circle-disk, whose rim needs only F's global minimum. */
 int cdist__cc_quick_minimum(const cdist__circle *c0, const cdist__circle *c1, double *t, double *c, double *s, double *d);
-/* Walks [-pi, pi) and hands every critical bracket of F to the sink (see cc_engine.c). Fmax:
+/* Walks [-pi, pi) and hands every critical bracket of F to the sink (docs/circles.md). Fmax:
  * largest F seen at the partition points. */
 int cdist__cc_scan(const cdist__cc_frame *f, cdist__cc_sink *k, double *Fmax);
 /* The distances of the best candidate kept by the sink's collector (robust mode) and of those
@@ -164,8 +159,8 @@ void cdist__cc_pair_final(const cdist__cc_frame *f, double t, double c, double s
 /* Parallel planes: F's critical angles in closed form (up to 4), or -1 when not parallel. */
 int cdist__cc_parallel_critical(const cdist__cc_frame *f, double *t);
 /* The robust method's problem: A, the circle it parameterises (the larger; ties by a rule
- * antisymmetric in the arguments), and B, both scaled by unscale^-1 (a power of two) so that
- * L = max(r0, r1, |C|) is in [0.5, 1); CB: B's centre relative to A's, scaled; C: c1's centre
+ * antisymmetric in the arguments), and B, both scaled by unscale^-1 (cdist__circles_scale, half
+ * = 1) so that L = max(r0, r1, |C|) is in [0.5, 1); CB: B's centre relative to A's, scaled; C: c1's centre
  * relative to c0's, unscaled. */
 typedef struct cdist__cc_problem {
     int swapped; /* A is c1 */
@@ -191,5 +186,67 @@ cdist_status cdist__circle_disk_core_ex(cdist_query *q, cdist_method method, con
                                         double dcap, int rim, cdist__best *b, cdist_method *used, int *rim_certified);
 #define CD_DISK_METHODS (CD_HAS(CDIST_METHOD_POLYNOMIAL) | CD_HAS(CDIST_METHOD_ROBUST))
 #define CD_DISK_AUTO CDIST_METHOD_ROBUST
+
+/* ---- the engine's parts (cc_frame.c, cc_certify.c, cc_kink.c, cc_scan.c, cc_pair.c) ---- */
+
+#define CC_INIT_INTERVALS 16 /* a power of two >= 8 (cdist__cc_half_sec); the scan's table holds 16 angles */
+#define CC_LEVEL0 1 /* log2(CC_INIT_INTERVALS / 8): cdist__cc_half_sec index of the initial intervals */
+
+/* Track the extremes of F seen by the scan. */
+CD_INLINE void cdist__cc_track(cdist__cc_sink *k, const cdist__cc_pt *cur, double *Fmax)
+{
+    if (cur->F > *Fmax) *Fmax = cur->F;
+    if (cur->F < k->Fmin) {
+        k->Fmin = cur->F;
+        k->tmin = cur->t;
+    }
+}
+
+/* cos h and sin h for |h| <= 0.1 by their Taylor series (truncation below 1e-26 there): the kink
+ * grid's offsets, combined with cos t, sin t of the centre by the addition theorem, so the grid
+ * costs no transcendental call. */
+CD_INLINE void cdist__cc_small_sincos(double h, double *sn, double *cs)
+{
+    double x = h * h;
+    *sn = h * (1 - x / 6 * (1 - x / 20 * (1 - x / 42 * (1 - x / 72 * (1 - x / 110 * (1 - x / 156))))));
+    *cs = 1 - x / 2 * (1 - x / 12 * (1 - x / 30 * (1 - x / 56 * (1 - x / 90 * (1 - x / 132 * (1 - x / 182))))));
+}
+
+/* 1 / (2 cos(w/2)) for the interval width w = 2 pi / 8 / 2^i (cc_certify.c), and the index i
+ * of a subdivision level (clamped: the entries are 0.5 from 26 on). */
+extern const double cdist__cc_half_sec[32];
+CD_INLINE int cdist__cc_hs_index(int level) { return level + CC_LEVEL0 < 31 ? level + CC_LEVEL0 : 31; }
+
+/* The neighbourhoods of the lowest grid points of the sampled intervals, minimised only after the
+ * whole circle is scanned: then the attained minimum is known, and a neighbourhood whose
+ * Lipschitz lower bound (d is R-Lipschitz in the angle) lies above it by more than the tie
+ * tolerance cannot hold the closest pair or a second one, and costs nothing. */
+#define CC_DEFER 32
+typedef struct cdist__cc_deferred {
+    int n;
+    double t[CC_DEFER], hw[CC_DEFER], d[CC_DEFER]; /* lowest grid point, half-width, its distance */
+} cdist__cc_deferred;
+
+/* Certificates on [a, b] (cc_certify.c): at most one root of H; no critical point of F; F
+ * convex. Each reads (and completes on demand) the detail of a and b. */
+int cdist__cc_certified(const cdist__cc_frame *f, cdist__cc_pt *a, cdist__cc_pt *b);
+int cdist__cc_monotone(const cdist__cc_frame *f, cdist__cc_pt *a, cdist__cc_pt *b);
+int cdist__cc_convex(const cdist__cc_frame *f, cdist__cc_pt *a, cdist__cc_pt *b);
+/* Lower bounds of F: on an interval of the subdivision at `level`, and on [t - h, t + h]. */
+double cdist__cc_hull_bound(const cdist__cc_frame *f, const cdist__cc_pt *a, const cdist__cc_pt *b, int level);
+double cdist__cc_window_hull_bound(const cdist__cc_frame *f, double t, double h);
+/* A critical bracket [a, b] of F (a sign change of F'), refined and handed to the sink (cc_scan.c). */
+void cdist__cc_emit(cdist__cc_sink *k, const cdist__cc_pt *a, const cdist__cc_pt *b);
+/* The uncertifiable regions (cc_kink.c): near-crossings of B's axis (angles and core
+ * half-widths), their geometric grids, an interval past its budget, the dense fallback, and the
+ * deferred minimisations. */
+int cdist__cc_near_kinks(const cdist__cc_frame *f, const cdist__cc_pt *init, double *tk);
+double cdist__cc_kink_core(const cdist__cc_frame *f, double t);
+void cdist__cc_scan_kink(const cdist__cc_frame *f, cdist__cc_sink *k, double t, double core, double *Fmax,
+                         cdist__cc_deferred *df);
+void cdist__cc_emit_sampled(const cdist__cc_frame *f, cdist__cc_sink *k, const cdist__cc_pt *a, const cdist__cc_pt *b,
+                            double *Fmax, cdist__cc_deferred *df);
+void cdist__cc_scan_dense(const cdist__cc_frame *f, cdist__cc_sink *k, double *Fmax);
+void cdist__cc_deferred_offer(const cdist__cc_frame *f, cdist__cc_sink *k, const cdist__cc_deferred *df);
 
 #endif

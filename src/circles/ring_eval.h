@@ -9,7 +9,7 @@
  * F of the disk's rim (the lemma of circle_disk.c); the point-disk distance it reports (h^2 where
  * the point projects into the disk, F elsewhere) is formed in circle_disk.c, which decides
  * "projects into" by an error-free expansion (rim_excess) that this evaluator does not need.
- * Used by the root-isolation engine (cc_engine.c), circle-disk (circle_disk.c, B the rim), and
+ * Used by the root-isolation engine (docs/circles.md), circle-disk (circle_disk.c, B the rim), and
  * the polynomial and iteration methods (cc_poly.c, which form w, h from 3D points and call
  * cdist__ring_dist directly). Plain arithmetic, no fma(): without -mfma fma() is a libm call, and
  * every caller recomputes its final distances separately. */

@@ -12,7 +12,7 @@
  * - the cosine and sine returned are those of the angle to 4e-15 (the angle's own rounding).
  * And the search certifies at least 95% of cc_random (the rest costs a failed search plus the
  * scan, so this is the speed claim's premise). */
-#include "../../src/batch/cc_kernel.c"
+#include "../../src/circles/cc_search.c"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -178,7 +178,7 @@ int main(int argc, char **argv)
         fprintf(stderr, "usage: test_cc_quick DIR\n");
         return 2;
     }
-    pthread_once(&ck_tab_once, ck_tables_init);
+    cdist__cc_search_tables();
     cdist_query *q = cdist_query_new();
     size_t n_random = load(argv[1], "random", 0);
     size_t n = load(argv[1], "hard", n_random);
