@@ -128,7 +128,7 @@ static int bf_periodic(const bf *f, int k)
 }
 static ld bf_eval(const bf *f, const ld *t)
 {
-    ld tt[4];
+    ld tt[4] = {0, 0, 0, 0};
     int d = bf_dims(f);
     for (int k = 0; k < d; k++) {
         tt[k] = t[k];
