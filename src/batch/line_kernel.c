@@ -53,6 +53,7 @@ typedef struct lk_block {
 #define LK_CHAINS 1
 #include "base/lanes/lanes_def.h"
 #include "base/lanes/lanes_vec.h"
+#include "base/point_circle_lanes.h"
 #include "base/roots_halley.h"
 #include "lines/line_circle_body.h"
 #include "line_kernel_body.h"
@@ -68,6 +69,7 @@ CD_LANES_TARGET_PUSH("avx512f,fma")
 #define LK_CHAINS LK_WIDE_CHAINS
 #include "base/lanes/lanes_def.h"
 #include "base/lanes/lanes_vec.h"
+#include "base/point_circle_lanes.h"
 #include "base/roots_halley.h"
 #include "lines/line_circle_body.h"
 #include "line_kernel_body.h"
@@ -82,6 +84,7 @@ CD_LANES_TARGET_PUSH("avx2,fma")
 #define LK_CHAINS LK_WIDE_CHAINS
 #include "base/lanes/lanes_def.h"
 #include "base/lanes/lanes_vec.h"
+#include "base/point_circle_lanes.h"
 #include "base/roots_halley.h"
 #include "lines/line_circle_body.h"
 #include "line_kernel_body.h"
