@@ -26,7 +26,8 @@ typedef struct KN(point_lane) {
 CD_INLINE KN(point_lane) KN(point_fast)(const V p[3], const V c[3], const V d[3], V r, double unit_tol, int disk)
 {
     KN(point_lane) f;
-    M ok = mand(KN(in_range)(p[0], p[1], p[2]), KN(circle_fast)(c, d, r, unit_tol, f.n));
+    M ok = KN(circle_fast)(c, d, r, unit_tol, f.n);
+    ok = mand(KN(in_range)(p[0], p[1], p[2]), ok);
     f.rel[0] = vsub(p[0], c[0]), f.rel[1] = vsub(p[1], c[1]), f.rel[2] = vsub(p[2], c[2]);
     f.e = KN(point_circle)(f.n, f.rel, r);
     /* |rel|^2 = |n x rel|^2 + h^2 */
