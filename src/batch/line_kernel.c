@@ -53,8 +53,6 @@ typedef struct lk_block {
 #define LK_CHAINS 1
 #include "base/lanes/lanes_def.h"
 #include "base/lanes/lanes_vec.h"
-#include "base/point_circle_lanes.h"
-#include "api/circle_fast_lanes.h"
 #include "base/roots_halley.h"
 #include "lines/line_circle_body.h"
 #include "line_kernel_body.h"
@@ -70,8 +68,6 @@ CD_LANES_TARGET_PUSH("avx512f,fma")
 #define LK_CHAINS LK_WIDE_CHAINS
 #include "base/lanes/lanes_def.h"
 #include "base/lanes/lanes_vec.h"
-#include "base/point_circle_lanes.h"
-#include "api/circle_fast_lanes.h"
 #include "base/roots_halley.h"
 #include "lines/line_circle_body.h"
 #include "line_kernel_body.h"
@@ -86,8 +82,6 @@ CD_LANES_TARGET_PUSH("avx2,fma")
 #define LK_CHAINS LK_WIDE_CHAINS
 #include "base/lanes/lanes_def.h"
 #include "base/lanes/lanes_vec.h"
-#include "base/point_circle_lanes.h"
-#include "api/circle_fast_lanes.h"
 #include "base/roots_halley.h"
 #include "lines/line_circle_body.h"
 #include "line_kernel_body.h"

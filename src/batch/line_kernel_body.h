@@ -13,6 +13,8 @@
  * model; 2 (the entries where F' is not monotone) the branch brackets; 3 (every bracket) the
  * solver; 4 (all entries) the distance. */
 
+#include "api/circle_fast_lanes.h"
+
 /* offer_end's squared distance at t. */
 CD_INLINE V KN(end_d2)(V Bx, V By, V Bz, V Mx, V My, V Mz, V t, V nx, V ny, V nz, V r)
 {

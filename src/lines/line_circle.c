@@ -37,7 +37,6 @@
 #define CD_LANES 1
 #include "base/lanes/lanes_def.h"
 #include "base/lanes/lanes_vec.h"
-#include "base/point_circle_lanes.h"
 #include "base/roots_halley.h"
 #include "lines/line_circle_body.h"
 #include "base/lanes/lanes_undef.h"

@@ -2,11 +2,12 @@
 /* The straight-line arithmetic of the line-circle ROBUST core (the model, its derivatives, the
  * brackets and starts of the solver, one solver iteration), written once over lanes; the model
  * and its derivation are described in line_circle.c and docs/lines.md. Included after
- * lanes_def.h, lanes_vec.h, base/point_circle_lanes.h and base/roots_halley.h:
- * src/lines/line_circle.c includes it for 1
+ * lanes_def.h, lanes_vec.h and base/roots_halley.h: src/lines/line_circle.c includes it for 1
  * lane (the single query), src/batch/line_kernel.c for 4 and 8 lanes (the batch kernels), so
  * an entry the kernels answer gets the single query's distance bit for bit. Cases lanes do not
  * follow are returned as masks for the caller to branch on. No include guard. */
+
+#include "base/point_circle_lanes.h"
 
 /* The model in the frame of the line (scaled units): h(s) = h + a s, x2(s) = c2 + m0 s, x1. */
 typedef struct KN(lc_model) {
