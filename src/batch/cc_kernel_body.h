@@ -4,6 +4,8 @@
  * the set-up of W entries in lanes, the search over them (lanes are entries) and the distance at
  * the angles found. */
 
+#include "api/circle_fast_lanes.h"
+
 /* The ring of the lane group from g (the block's columns). */
 CD_INLINE void KN(ck_load)(const ck_block *b, int g, KN(ck_ring) *r)
 {
@@ -17,24 +19,6 @@ CD_INLINE void KN(ck_load)(const ck_block *b, int g, KN(ck_ring) *r)
 }
 
 /* ---- per-entry set-up in lanes ---- */
-
-/* cdist__circle_fast (src/api/validate.c) of the circles in columns p (centre x y z, normal x y
- * z, radius): the mask of those it accepts and their unit normals n. */
-CD_INLINE M KN(ck_circle_fast)(const V *p, double unit_tol, V *n)
-{
-    V m = vabs(p[3]); /* v_maxabs, as written */
-    m = vsel(vgt(vabs(p[4]), m), vabs(p[4]), m);
-    m = vsel(vgt(vabs(p[5]), m), vabs(p[5]), m);
-    M ok = mand(KN(in_range)(p[0], p[1], p[2]), mand(vge(p[6], vset(0.0)), vle(p[6], vset(CD_MAX_ABS))));
-    ok = mand(ok, mand(vge(m, vset(CD_MIN_NORMAL_FAST)), vle(m, vset(CD_MAX_ABS))));
-    V len = vsqrt(KN(dot)(p[3], p[4], p[5], p[3], p[4], p[5]));
-    ok = mand(ok, vle(vabs(vsub(len, vset(1.0))), vset(unit_tol)));
-    V in = vdiv(vset(1.0), len);
-    n[0] = vmul(in, p[3]);
-    n[1] = vmul(in, p[4]);
-    n[2] = vmul(in, p[5]);
-    return ok;
-}
 
 /* v_basis (src/base/vec.h) of unit normals n: u, v. */
 CD_INLINE void KN(ck_basis)(const V *n, V *u, V *v)
@@ -88,7 +72,7 @@ static unsigned KN(ck_setup)(const cdist__job *job, double unit_tol, size_t lo, 
         }
     }
     V na[3], nb[3];
-    M ok = mand(KN(ck_circle_fast)(ca, unit_tol, na), KN(ck_circle_fast)(cb, unit_tol, nb));
+    M ok = mand(KN(circle_fast)(ca, ca + 3, ca[6], unit_tol, na), KN(circle_fast)(cb, cb + 3, cb[6], unit_tol, nb));
     /* cdist__circles_frame: B's centre relative to A's, scaled by 2^-e */
     V Cx = vsub(cb[0], ca[0]), Cy = vsub(cb[1], ca[1]), Cz = vsub(cb[2], ca[2]);
     V mc = vabs(Cx);

@@ -13,6 +13,8 @@
  * model; 2 (the entries where F' is not monotone) the branch brackets; 3 (every bracket) the
  * solver; 4 (all entries) the distance. */
 
+#include "api/circle_fast_lanes.h"
+
 /* offer_end's squared distance at t. */
 CD_INLINE V KN(end_d2)(V Bx, V By, V Bz, V Mx, V My, V Mz, V t, V nx, V ny, V nz, V r)
 {
@@ -32,14 +34,10 @@ static void KN(stage_frame)(double in[13][W], int shape, double tol, lk_block *b
     V r = vld(in[12]);
 
     /* ---- validation: cdist__check_point / cdist__check_direction / circle_fast ---- */
-    M ok = mand(mand(KN(in_range)(ax, ay, az), KN(in_range)(bx, by, bz)), KN(in_range)(cx, cy, cz));
-    ok = mand(ok, mand(KN(in_range)(ndx, ndy, ndz), mand(vge(r, zero), vle(r, vset(CD_MAX_ABS)))));
-    V nm = KN(max3)(ndx, ndy, ndz);
-    ok = mand(ok, vge(nm, vset(CD_MIN_NORMAL_FAST)));
-    V nlen = vsqrt(KN(dot)(ndx, ndy, ndz, ndx, ndy, ndz));
-    ok = mand(ok, vle(vabs(vsub(nlen, one)), vset(tol)));
-    V inl = vdiv(one, nlen);
-    V nx = vmul(inl, ndx), ny = vmul(inl, ndy), nz = vmul(inl, ndz);
+    const V cc[3] = {cx, cy, cz}, nd[3] = {ndx, ndy, ndz};
+    V un[3];
+    M ok = mand(mand(KN(in_range)(ax, ay, az), KN(in_range)(bx, by, bz)), KN(circle_fast)(cc, nd, r, tol, un));
+    V nx = un[0], ny = un[1], nz = un[2];
     /* v_basis: e = the axis of the smallest |n_k| (first on ties), u = normalise(e - (e.n) n), v = n x u */
     V anx = vabs(nx), any = vabs(ny), anz = vabs(nz);
     M kx = mand(vle(anx, any), vle(anx, anz));

@@ -12,6 +12,7 @@ CD_LANES_TARGET_PUSH("avx2,fma")
 #include "base/lanes/lanes_def.h"
 #include "base/lanes/lanes_vec.h"
 #include "base/point_circle_lanes.h"
+#include "api/circle_fast_lanes.h"
 #include "point/point_body.h"
 
 static uint64_t KN(kernel)(const cdist__job *job, int disk, double tol, size_t lo, size_t count)

@@ -3,6 +3,7 @@
  * collector, and the distances of the kept candidates settled in double-double. */
 #include <math.h>
 
+#include "base/point_circle.h"
 #include "circles/circles-priv.h"
 
 /* The pair at angle t of A ((c, s) = (cos t, sin t)) with its squared distance: plain, or
@@ -10,15 +11,13 @@
 CD_INLINE void cc_pair(const cdist__cc_frame *f, double t, double c, double s, int final, cdist__cc_sink *k)
 {
     vec3 P = v_axpy(v_scale(f->R * c, f->u), f->R * s, f->v);
-    vec3 D = v_sub(P, f->C);
-    vec3 w = v_cross(f->m, D);
-    double h = v_dot(f->m, D), rho = v_norm(w);
-    double dr = rho - f->s;
-    double d2 = final ? cdist__cc_point_d2(&f->rg, f->s, c, s) : fma(dr, dr, h * h);
+    cdist__pc_parts e = cdist__point_circle(f->m, v_sub(P, f->C), f->s);
+    double rho = e.rho;
+    double d2 = final ? cdist__cc_point_d2(&f->rg, f->s, c, s) : e.d2;
     vec3 dir;
     double tb;
     if (rho > 0) {
-        dir = v_cross(w, f->m);
+        dir = cdist__pc_inplane(e.np, f->m);
         /* within 1e-150 of B's axis |dir|^2 is subnormal: normalised from its largest component */
         dir = rho < 0x1p-500 ? v_scale(f->s, v_unit_or_zero(dir)) : v_scale(f->s / v_norm(dir), dir);
         tb = cdist__circle_angle(k->B, dir);

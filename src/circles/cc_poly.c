@@ -5,6 +5,7 @@
  * frame, the polynomial and the special cases: docs/circles.md. */
 #include <math.h>
 
+#include "base/point_circle.h"
 #include "circles/circles-priv.h"
 
 /* ---------------------------------------------------------------------------------------- */
@@ -213,7 +214,7 @@ int cdist__cc_closed_form(const cdist__cc *g, cdist__best *b)
      * 1-Lipschitz in both; likewise with the roles exchanged. The representative pair is polished
      * on the true distance, so the distance is the exact minimum of the doubles given. */
     double sn = v_norm(v_cross(c0->n, c1->n));
-    double d0 = v_norm(v_cross(c0->n, g->D)), d1 = v_norm(v_cross(c1->n, g->D));
+    double d0 = cdist__point_circle(c0->n, g->D, c0->r).rho, d1 = cdist__point_circle(c1->n, g->D, c1->r).rho;
     double var = fmin(2.0 * d0 + c1->r * sn * (2.0 + sn), 2.0 * d1 + c0->r * sn * (2.0 + sn));
     if (var <= CD_TIE_ULPS * DBL_EPSILON * g->L) {
         double F;
@@ -235,14 +236,15 @@ int cdist__cc_parallel_candidates(const cdist__cc *g, double *t0)
 {
     const cdist__circle *c0 = g->c[0], *c1 = g->c[1];
     vec3 n = c0->n;
-    vec3 nd = v_cross(n, g->D);
-    double din = v_norm(nd);
+    cdist__pc_parts e = cdist__point_circle(n, g->D, c0->r);
+    vec3 nd = e.np;
+    double din = e.rho;
     if (!(din > 0.0)) {
         t0[0] = 0.0, t0[1] = 0.5 * M_PI, t0[2] = M_PI, t0[3] = -0.5 * M_PI;
         return 4;
     }
-    vec3 W = v_scale(1.0 / din, v_cross(nd, n)); /* in-plane direction towards c1's centre */
-    vec3 T = v_scale(1.0 / din, nd);             /* n x W */
+    vec3 W = v_scale(1.0 / din, cdist__pc_inplane(nd, n)); /* in-plane direction towards c1's centre */
+    vec3 T = v_scale(1.0 / din, nd); /* n x W */
     double r0 = c0->r, r1 = c1->r;
     int k = 0;
     if (din >= r0 + r1 || din + r1 <= r0) {

@@ -6,16 +6,15 @@
 #include <math.h>
 #include <stdio.h>
 
+#include "base/point_circle.h"
 #include "circles/circles-priv.h"
 
 /* Distance from X to circle c (closed form, |N x D| for the axis distance). */
 static double pc_dist(vec3 X, const cdist__circle *c, double *rho_out)
 {
-    vec3 D = v_sub(X, c->c);
-    vec3 w = v_cross(c->n, D);
-    double rho = v_norm(w), h = v_dot(c->n, D), dr = rho - c->r;
-    if (rho_out) *rho_out = rho;
-    return sqrt(fma(dr, dr, h * h));
+    cdist__pc_parts e = cdist__point_circle(c->n, v_sub(X, c->c), c->r);
+    if (rho_out) *rho_out = e.rho;
+    return sqrt(e.d2);
 }
 
 /* The equidistance tests (a) and (b) of the header comment, method independent, applied to the

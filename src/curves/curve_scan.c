@@ -7,6 +7,7 @@
  * curve_scan.h. */
 #include <math.h>
 
+#include "base/point_circle.h"
 #include "curve_scan.h"
 
 /* ---- collector ---- */
@@ -82,7 +83,7 @@ int cdist__cs_near_axis(const cdist__cs_coll *k, vec3 rel, const cdist__circle *
 {
     /* Within this distance of the axis the distance to the circle's points varies by less
      * than the tie tolerance: the closest pairs form a continuum up to rounding. */
-    return c->r > 0.0 && v_norm(v_cross(c->n, rel)) <= CD_CURVE_AXIS_ULPS * DBL_EPSILON * k->b.scale;
+    return c->r > 0.0 && cdist__point_circle(c->n, rel, c->r).rho <= CD_CURVE_AXIS_ULPS * DBL_EPSILON * k->b.scale;
 }
 
 /* ---- the objective ---- */

@@ -7,6 +7,8 @@
  * an entry the kernels answer gets the single query's distance bit for bit. Cases lanes do not
  * follow are returned as masks for the caller to branch on. No include guard. */
 
+#include "base/point_circle_lanes.h"
+
 /* The model in the frame of the line (scaled units): h(s) = h + a s, x2(s) = c2 + m0 s, x1. */
 typedef struct KN(lc_model) {
     V r;        /* radius */
@@ -120,11 +122,11 @@ CD_INLINE void KN(lc_iterate)(const KN(lc_model) *m, KN(halley) *s)
 CD_INLINE V KN(lc_end)(V Bx, V By, V Bz, V Mx, V My, V Mz, V t, V nx, V ny, V nz, V r, V P[3], V np[3], V *rho)
 {
     P[0] = vfma(t, Mx, Bx), P[1] = vfma(t, My, By), P[2] = vfma(t, Mz, Bz);
-    KN(cross)(nx, ny, nz, P[0], P[1], P[2], &np[0], &np[1], &np[2]);
-    V h = KN(dot)(nx, ny, nz, P[0], P[1], P[2]);
-    *rho = vsqrt(KN(dot)(np[0], np[1], np[2], np[0], np[1], np[2]));
-    V dr = vsub(*rho, r);
-    return vfma(dr, dr, vmul(h, h));
+    const V n[3] = {nx, ny, nz};
+    KN(pc_parts) e = KN(point_circle)(n, P, r);
+    np[0] = e.np[0], np[1] = e.np[1], np[2] = e.np[2];
+    *rho = e.rho;
+    return e.d2;
 }
 
 /* ---- the frame and the model ---- */

@@ -4,6 +4,7 @@
  * over the disk and the rim-circle distance elsewhere) is stated at the top of src/circles/circle_disk.c and in docs/disk.md. */
 #include <math.h>
 
+#include "base/point_circle.h"
 #include "internal.h"
 
 /* ------------------------------------------------------------------------------------------ */
@@ -31,7 +32,7 @@ CD_FMA_CLONES static cdist_status linear_disk(cdist_query *q, cdist_method metho
     double R = d->r;
     double mn = v_dot(d->n, M), hB = v_dot(d->n, B);
     /* In-plane parts of B and M. */
-    vec3 Mp = v_cross(v_cross(d->n, M), d->n), Bp = v_cross(v_cross(d->n, B), d->n);
+    vec3 Mp = cdist__pc_inplane(v_cross(d->n, M), d->n), Bp = cdist__pc_inplane(v_cross(d->n, B), d->n);
     double mp2 = v_sqr(Mp);
     double eq_d2 = INFINITY;
     /* Candidates are collected in loc, then merged into b; into b itself when b is still

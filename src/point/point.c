@@ -13,6 +13,7 @@
 #include "base/lanes/lanes_def.h"
 #undef KN
 #define KN(name) CD_LANE1_KN(name)
+#include "api/circle_fast_lanes.h"
 #include "point_body.h"
 #include "base/lanes/lanes_undef.h"
 

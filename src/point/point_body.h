@@ -3,7 +3,8 @@
  * fast path (src/point/point.c) is its one-lane instance, the batch point kernel
  * (src/batch/point_kernel.c) its 4- and 8-lane instances, so that the kernel's distances are the
  * single query's bit for bit. The includer defines the lanes (src/base/lanes/lanes_def.h) and
- * includes lanes_vec.h and base/point_circle_lanes.h before this file. No include guard. */
+ * includes lanes_vec.h, base/point_circle_lanes.h and api/circle_fast_lanes.h before this file.
+ * No include guard. */
 
 /* The squared distance of a point to the circle of radius r, or (disk) to the disk, from its
  * evaluation (point_circle_lanes.h: rho, hh, d2): h^2 where it is over the disk (rho <= r), else
@@ -25,15 +26,8 @@ typedef struct KN(point_lane) {
 CD_INLINE KN(point_lane) KN(point_fast)(const V p[3], const V c[3], const V d[3], V r, double unit_tol, int disk)
 {
     KN(point_lane) f;
-    const V one = vset(1.0);
-    M ok = mand(KN(in_range)(p[0], p[1], p[2]), KN(in_range)(c[0], c[1], c[2]));
-    ok = mand(ok, mand(vge(r, vset(0.0)), vle(r, vset(CD_MAX_ABS))));
-    ok = mand(ok, mand(KN(in_range)(d[0], d[1], d[2]), vge(KN(max3)(d[0], d[1], d[2]), vset(CD_MIN_NORMAL_FAST))));
-    V len = vsqrt(KN(dot)(d[0], d[1], d[2], d[0], d[1], d[2]));
-    ok = mand(ok, vle(vabs(vsub(len, one)), vset(unit_tol)));
-    V il = vdiv(one, len);
-    /* written out: gcc vectorises a loop over the components into round trips through memory */
-    f.n[0] = vmul(il, d[0]), f.n[1] = vmul(il, d[1]), f.n[2] = vmul(il, d[2]);
+    M ok = KN(circle_fast)(c, d, r, unit_tol, f.n);
+    ok = mand(KN(in_range)(p[0], p[1], p[2]), ok);
     f.rel[0] = vsub(p[0], c[0]), f.rel[1] = vsub(p[1], c[1]), f.rel[2] = vsub(p[2], c[2]);
     f.e = KN(point_circle)(f.n, f.rel, r);
     /* |rel|^2 = |n x rel|^2 + h^2 */
