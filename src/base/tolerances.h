@@ -214,6 +214,13 @@
  * then a function of cos(t - phi), mirror-symmetric, and its minima come in tied pairs that the
  * search leaves to the scan anyway (the cc_center_on_axis family). Routing only. */
 #define CD_CC_QUICK_AXIS_REL 1e-9
+/* Circle-circle polynomial and iteration methods: a point P of one circle whose axis distance
+ * rho to the other is below CD_CC_AXIS_NOISE_REL * |P - C| (max norm) has its closest point on
+ * the other circle normalised from the in-plane vector w = (n x (P - C)) x n itself rather than
+ * by rho: the cross product carries about eps |P - C| of rounding not orthogonal to n, which
+ * shortens |w| below rho by a relative (eps |P - C| / rho)^2, beyond an ulp only below about
+ * 2^-24 |P - C|; 2^-20 leaves a margin and changes no point farther from the axis. */
+#define CD_CC_AXIS_NOISE_REL 0x1p-20
 
 /* ---- linking and time of impact (src/topology) ---- */
 
