@@ -45,23 +45,9 @@ WRAP(helix_circle, cdist_helix, cdist_circle, cdist_result)
 WRAP(helix_disk, cdist_helix, cdist_circle, cdist_result)
 WRAP(bezier3_circle, cdist_bezier3, cdist_circle, cdist_result)
 WRAP(bezier3_disk, cdist_bezier3, cdist_circle, cdist_result)
-WRAP_GRAD(torus_torus, cdist_torus, cdist_torus, cdist_contact)
-WRAP_GRAD(torus_capsule, cdist_torus, cdist_capsule, cdist_contact)
-WRAP_GRAD(torus_sphere, cdist_torus, cdist_sphere, cdist_contact)
-WRAP_GRAD(torus_rounded_disk, cdist_torus, cdist_rounded_disk, cdist_contact)
-WRAP_GRAD(capsule_capsule, cdist_capsule, cdist_capsule, cdist_contact)
-WRAP_GRAD(capsule_sphere, cdist_capsule, cdist_sphere, cdist_contact)
-WRAP_GRAD(capsule_rounded_disk, cdist_capsule, cdist_rounded_disk, cdist_contact)
-WRAP_GRAD(sphere_sphere, cdist_sphere, cdist_sphere, cdist_contact)
-WRAP_GRAD(sphere_rounded_disk, cdist_sphere, cdist_rounded_disk, cdist_contact)
-WRAP_GRAD(rounded_disk_rounded_disk, cdist_rounded_disk, cdist_rounded_disk, cdist_contact)
-WRAP_GRAD(torus_line, cdist_torus, cdist_line, cdist_contact)
-WRAP_GRAD(torus_ray, cdist_torus, cdist_ray, cdist_contact)
-WRAP_GRAD(torus_segment, cdist_torus, cdist_segment, cdist_contact)
-WRAP_GRAD(capsule_circle, cdist_capsule, cdist_circle, cdist_contact)
-WRAP_GRAD(capsule_disk, cdist_capsule, cdist_circle, cdist_contact)
-WRAP_GRAD(sphere_circle, cdist_sphere, cdist_circle, cdist_contact)
-WRAP_GRAD(sphere_disk, cdist_sphere, cdist_circle, cdist_contact)
+#define WRAP_SWEPT(name, NAME, TA, TB, A, B, core, swap) WRAP_GRAD(name, TA, TB, cdist_contact)
+CD_SWEPT_QUERIES(WRAP_SWEPT)
+#undef WRAP_SWEPT
 #undef WRAP_GRAD
 #undef WRAP
 
@@ -85,7 +71,12 @@ enum {
     LINE_CIRCLE_KERNEL, /* the line kernels in the order of their shapes: line, ray, segment */
     RAY_CIRCLE_KERNEL,
     SEGMENT_CIRCLE_KERNEL,
-    CIRCLE_CIRCLE_KERNEL
+    CIRCLE_CIRCLE_KERNEL,
+    /* cores of swept kinds (CD_SWEPT_QUERIES) without a kernel: they take the scalar path */
+    CIRCLE_DISK_KERNEL = NO_KERNEL,
+    SEGMENT_DISK_KERNEL = NO_KERNEL,
+    DISK_DISK_KERNEL = NO_KERNEL,
+    NONE_KERNEL = NO_KERNEL /* closed forms: point-point, point-segment, segment-segment */
 };
 
 /* Byte offset of a swept object's radius; a plain object (radius 0) has none. Each swept struct
@@ -95,6 +86,11 @@ enum { PLAIN = -1 };
 #define R_CAPSULE ((int)offsetof(cdist_capsule, radius))
 #define R_SPHERE ((int)offsetof(cdist_sphere, radius))
 #define R_RDISK ((int)offsetof(cdist_rounded_disk, radius))
+#define R_LINE PLAIN
+#define R_RAY PLAIN
+#define R_SEGMENT PLAIN
+#define R_CIRCLE PLAIN
+#define R_DISK PLAIN
 _Static_assert(offsetof(cdist_torus, circle) == 0 && offsetof(cdist_capsule, segment) == 0 &&
                    offsetof(cdist_sphere, center) == 0 && offsetof(cdist_rounded_disk, disk) == 0,
                "a swept object starts with its core");
@@ -114,8 +110,8 @@ typedef struct kind_row {
 } kind_row;
 
 #define PLAIN_ROW(K, TA, TB, fn, ...) [CDIST_KIND_##K] = {NULL, sizeof(TA), sizeof(TB), k_##fn, __VA_ARGS__}
-#define CONTACT_ROW(K, name_, TA, TB, kernel_, swap_, ra, rb)                                                  \
-    [CDIST_KIND_##K] = {#name_, sizeof(TA), sizeof(TB), k_##name_, g_##name_, kernel_, 1, swap_, ra, rb}
+#define CONTACT_ROW(name_, K, TA, TB, A, B, core, swap_)                                                     \
+    [CDIST_KIND_##K] = {#name_, sizeof(TA), sizeof(TB), k_##name_, g_##name_, core##_KERNEL, 1, swap_, R_##A, R_##B},
 static const kind_row kinds[] = {
     PLAIN_ROW(POINT_CIRCLE, cdist_vec3, cdist_circle, point_circle, g_point_circle, POINT_CIRCLE_KERNEL),
     PLAIN_ROW(POINT_DISK, cdist_vec3, cdist_circle, point_disk, g_point_disk, POINT_DISK_KERNEL),
@@ -138,30 +134,8 @@ static const kind_row kinds[] = {
     PLAIN_ROW(HELIX_DISK, cdist_helix, cdist_circle, helix_disk, NULL),
     PLAIN_ROW(BEZIER3_CIRCLE, cdist_bezier3, cdist_circle, bezier3_circle, NULL),
     PLAIN_ROW(BEZIER3_DISK, cdist_bezier3, cdist_circle, bezier3_disk, NULL),
-    /* Contact kinds. Cores without a kernel (circle-disk, disk-disk, segment-disk and the
-     * closed forms point-point, point-segment, segment-segment) take the scalar path. */
-    CONTACT_ROW(TORUS_TORUS, torus_torus, cdist_torus, cdist_torus, CIRCLE_CIRCLE_KERNEL, 0, R_TORUS, R_TORUS),
-    CONTACT_ROW(TORUS_CAPSULE, torus_capsule, cdist_torus, cdist_capsule, SEGMENT_CIRCLE_KERNEL, 1, R_TORUS, R_CAPSULE),
-    CONTACT_ROW(TORUS_SPHERE, torus_sphere, cdist_torus, cdist_sphere, POINT_CIRCLE_KERNEL, 1, R_TORUS, R_SPHERE),
-    CONTACT_ROW(TORUS_ROUNDED_DISK, torus_rounded_disk, cdist_torus, cdist_rounded_disk, NO_KERNEL, 0, R_TORUS,
-                R_RDISK),
-    CONTACT_ROW(CAPSULE_CAPSULE, capsule_capsule, cdist_capsule, cdist_capsule, NO_KERNEL, 0, R_CAPSULE, R_CAPSULE),
-    CONTACT_ROW(CAPSULE_SPHERE, capsule_sphere, cdist_capsule, cdist_sphere, NO_KERNEL, 0, R_CAPSULE, R_SPHERE),
-    CONTACT_ROW(CAPSULE_ROUNDED_DISK, capsule_rounded_disk, cdist_capsule, cdist_rounded_disk, NO_KERNEL, 0,
-                R_CAPSULE, R_RDISK),
-    CONTACT_ROW(SPHERE_SPHERE, sphere_sphere, cdist_sphere, cdist_sphere, NO_KERNEL, 0, R_SPHERE, R_SPHERE),
-    CONTACT_ROW(SPHERE_ROUNDED_DISK, sphere_rounded_disk, cdist_sphere, cdist_rounded_disk, POINT_DISK_KERNEL, 0,
-                R_SPHERE, R_RDISK),
-    CONTACT_ROW(ROUNDED_DISK_ROUNDED_DISK, rounded_disk_rounded_disk, cdist_rounded_disk, cdist_rounded_disk,
-                NO_KERNEL, 0, R_RDISK, R_RDISK),
-    CONTACT_ROW(TORUS_LINE, torus_line, cdist_torus, cdist_line, LINE_CIRCLE_KERNEL, 1, R_TORUS, PLAIN),
-    CONTACT_ROW(TORUS_RAY, torus_ray, cdist_torus, cdist_ray, RAY_CIRCLE_KERNEL, 1, R_TORUS, PLAIN),
-    CONTACT_ROW(TORUS_SEGMENT, torus_segment, cdist_torus, cdist_segment, SEGMENT_CIRCLE_KERNEL, 1, R_TORUS, PLAIN),
-    CONTACT_ROW(CAPSULE_CIRCLE, capsule_circle, cdist_capsule, cdist_circle, SEGMENT_CIRCLE_KERNEL, 0, R_CAPSULE,
-                PLAIN),
-    CONTACT_ROW(CAPSULE_DISK, capsule_disk, cdist_capsule, cdist_circle, NO_KERNEL, 0, R_CAPSULE, PLAIN),
-    CONTACT_ROW(SPHERE_CIRCLE, sphere_circle, cdist_sphere, cdist_circle, POINT_CIRCLE_KERNEL, 0, R_SPHERE, PLAIN),
-    CONTACT_ROW(SPHERE_DISK, sphere_disk, cdist_sphere, cdist_circle, POINT_DISK_KERNEL, 0, R_SPHERE, PLAIN),
+    /* Contact kinds: the kernel of the core's kind, if any. */
+    CD_SWEPT_QUERIES(CONTACT_ROW)
 };
 #undef PLAIN_ROW
 #undef CONTACT_ROW

@@ -26,6 +26,54 @@ typedef struct cdist__core_obj {
     int swept;       /* 1 for a swept object (its radius is an input) */
 } cdist__core_obj;
 
+/* The core of a swept object (its radius read only when the object is given: a NULL object
+ * stays NULL so that the query reports it), and a plain object as its own core. */
+static inline cdist__core_obj cdist__swept_core(cdist__core_type type, const void *core, const double *radius)
+{
+    cdist__core_obj o = {type, core, core ? *radius : 0.0, 1};
+    return o;
+}
+static inline cdist__core_obj cdist__plain_core(cdist__core_type type, const void *obj)
+{
+    cdist__core_obj o = {type, obj, 0.0, 0};
+    return o;
+}
+/* The core of each object type of CD_SWEPT_QUERIES (a swept struct starts with its core). */
+#define CD_SWEPT_TORUS(x) cdist__swept_core(CD_CORE_CIRCLE, (x) ? &(x)->circle : NULL, (x) ? &(x)->tube_radius : NULL)
+#define CD_SWEPT_CAPSULE(x) cdist__swept_core(CD_CORE_SEGMENT, (x) ? &(x)->segment : NULL, (x) ? &(x)->radius : NULL)
+#define CD_SWEPT_SPHERE(x) cdist__swept_core(CD_CORE_POINT, (x) ? &(x)->center : NULL, (x) ? &(x)->radius : NULL)
+#define CD_SWEPT_RDISK(x) cdist__swept_core(CD_CORE_DISK, (x) ? &(x)->disk : NULL, (x) ? &(x)->radius : NULL)
+#define CD_SWEPT_LINE(x) cdist__plain_core(CD_CORE_LINE, x)
+#define CD_SWEPT_RAY(x) cdist__plain_core(CD_CORE_RAY, x)
+#define CD_SWEPT_SEGMENT(x) cdist__plain_core(CD_CORE_SEGMENT, x)
+#define CD_SWEPT_CIRCLE(x) cdist__plain_core(CD_CORE_CIRCLE, x)
+#define CD_SWEPT_DISK(x) cdist__plain_core(CD_CORE_DISK, x)
+
+/* The swept queries cdist_<name> (and cdist_<name>_grad, and the batch kind CDIST_KIND_<NAME>),
+ * one row each: X(name, NAME, TA, TB, A, B, CORE, SWAP). TA, TB: the objects' types; A, B: their
+ * cores (CD_SWEPT_<A>); CORE: the cdist_kind of the core query (NONE: a closed form with no kind
+ * of its own), SWAP: 1 when that kind takes the two objects in the other order. */
+#define CD_SWEPT_QUERIES(X)                                                                                       \
+    X(torus_torus, TORUS_TORUS, cdist_torus, cdist_torus, TORUS, TORUS, CIRCLE_CIRCLE, 0)                        \
+    X(torus_capsule, TORUS_CAPSULE, cdist_torus, cdist_capsule, TORUS, CAPSULE, SEGMENT_CIRCLE, 1)               \
+    X(torus_sphere, TORUS_SPHERE, cdist_torus, cdist_sphere, TORUS, SPHERE, POINT_CIRCLE, 1)                     \
+    X(torus_rounded_disk, TORUS_ROUNDED_DISK, cdist_torus, cdist_rounded_disk, TORUS, RDISK, CIRCLE_DISK, 0)     \
+    X(capsule_capsule, CAPSULE_CAPSULE, cdist_capsule, cdist_capsule, CAPSULE, CAPSULE, NONE, 0)                 \
+    X(capsule_sphere, CAPSULE_SPHERE, cdist_capsule, cdist_sphere, CAPSULE, SPHERE, NONE, 0)                     \
+    X(capsule_rounded_disk, CAPSULE_ROUNDED_DISK, cdist_capsule, cdist_rounded_disk, CAPSULE, RDISK,             \
+      SEGMENT_DISK, 0)                                                                                            \
+    X(sphere_sphere, SPHERE_SPHERE, cdist_sphere, cdist_sphere, SPHERE, SPHERE, NONE, 0)                         \
+    X(sphere_rounded_disk, SPHERE_ROUNDED_DISK, cdist_sphere, cdist_rounded_disk, SPHERE, RDISK, POINT_DISK, 0)  \
+    X(rounded_disk_rounded_disk, ROUNDED_DISK_ROUNDED_DISK, cdist_rounded_disk, cdist_rounded_disk, RDISK,       \
+      RDISK, DISK_DISK, 0)                                                                                        \
+    X(torus_line, TORUS_LINE, cdist_torus, cdist_line, TORUS, LINE, LINE_CIRCLE, 1)                              \
+    X(torus_ray, TORUS_RAY, cdist_torus, cdist_ray, TORUS, RAY, RAY_CIRCLE, 1)                                   \
+    X(torus_segment, TORUS_SEGMENT, cdist_torus, cdist_segment, TORUS, SEGMENT, SEGMENT_CIRCLE, 1)               \
+    X(capsule_circle, CAPSULE_CIRCLE, cdist_capsule, cdist_circle, CAPSULE, CIRCLE, SEGMENT_CIRCLE, 0)           \
+    X(capsule_disk, CAPSULE_DISK, cdist_capsule, cdist_circle, CAPSULE, DISK, SEGMENT_DISK, 0)                   \
+    X(sphere_circle, SPHERE_CIRCLE, cdist_sphere, cdist_circle, SPHERE, CIRCLE, POINT_CIRCLE, 0)                 \
+    X(sphere_disk, SPHERE_DISK, cdist_sphere, cdist_circle, SPHERE, DISK, POINT_DISK, 0)
+
 /* The core query between a and b (any order: a missing order is answered swapped). */
 cdist_status cdist__core_query(cdist_query *q, const cdist__core_obj *a, const cdist__core_obj *b, cdist_result *r);
 /* A swept query: validates the radii, answers the core query, writes the contact. core
