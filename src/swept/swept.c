@@ -308,7 +308,7 @@ static vec3 touch_normal(const cdist__core_obj *a, const cdist__core_obj *b, vec
     vec3 ta = core_tangent(a, pa), tb = core_tangent(b, pb);
     if (v_sqr(ta) > 0.0 && v_sqr(tb) > 0.0) {
         vec3 x = v_cross(ta, tb);
-        if (v_norm(x) > 1e-8) n = v_unit_or_zero(x);
+        if (v_norm(x) > CD_CONTACT_TANGENT_SIN) n = v_unit_or_zero(x);
     }
     if (v_sqr(n) == 0.0) n = core_plane_normal(a);
     if (v_sqr(n) == 0.0) n = core_plane_normal(b);
@@ -370,7 +370,7 @@ cdist_status cdist__swept_query(cdist_query *q, const cdist__core_obj *a, const 
         vec3 d = v_sub(pb, pa);
         double L = fmax(v_maxabs(pa), v_maxabs(pb));
         vec3 n;
-        if (!(r->distance > 16.0 * DBL_EPSILON * L) || v_maxabs(d) == 0.0) {
+        if (!(r->distance > CD_CONTACT_TOUCH_ULPS * DBL_EPSILON * L) || v_maxabs(d) == 0.0) {
             n = touch_normal(a, b, pa, pb);
             c->flags |= CDIST_CONTACT_CORE_TOUCH;
         } else {
