@@ -143,7 +143,7 @@ const cdq_kind cdq_kinds[] = {
 #define CD_KIND(KIND, number, name, letters, TA, TB, grad, methods, auto_method, gsl_methods, kernel, help)        \
     CDQ_ROW(letters, name, TA, TB, objects_##name, number, help)
 #ifndef CDQ_NO_SWEPT
-#define CD_CONTACT_KIND(KIND, number, name, letters, TA, TB, kernel, swap, help)                                   \
+#define CD_CONTACT_KIND(KIND, number, name, letters, TA, TB, A, B, core, swap, help)                             \
     CDQ_ROW(letters, name, TA, TB, NULL, -1, help)
 #endif
 #include "../src/api/kinds.def"

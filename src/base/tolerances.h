@@ -244,6 +244,13 @@
  * then a function of cos(t - phi), mirror-symmetric, and its minima come in tied pairs that the
  * search leaves to the scan anyway (the cc_center_on_axis family). Routing only. */
 #define CD_CC_QUICK_AXIS_REL 1e-9
+/* Circle-circle polynomial and iteration methods: a point P of one circle whose axis distance
+ * rho to the other is below CD_CC_AXIS_NOISE_REL * |P - C| (max norm) has its closest point on
+ * the other circle normalised from the in-plane vector w = (n x (P - C)) x n itself rather than
+ * by rho: the cross product carries about eps |P - C| of rounding not orthogonal to n, which
+ * shortens |w| below rho by a relative (eps |P - C| / rho)^2, beyond an ulp only below about
+ * 2^-24 |P - C|; 2^-20 leaves a margin and changes no point farther from the axis. */
+#define CD_CC_AXIS_NOISE_REL 0x1p-20
 
 /* Circle-circle equidistance, scaled units (docs/circles.md): (a) F constant on a circle when
  * the distance varies by at most CD_CC_EQUI_ULPS eps L over it (the rounding of the distance at
@@ -311,6 +318,10 @@
  * ulps to each coordinate; the swept queries' distance is exact to CD_TIE_ULPS). A conservative
  * step advances by (distance - target - slack) / bound. */
 #define CD_TOI_POSE_ULPS 64.0
+/* Time of impact: the bound on the shrinking speed (a sum of products of norms) is rounded up by
+ * the factor 1 + CD_TOI_SPEED_ULPS * eps, above the few roundings of each term, so that it stays
+ * an upper bound and a conservative step never passes the impact. */
+#define CD_TOI_SPEED_ULPS 64.0
 /* Scenes (src/scene): every bound of the broad phase (boxes, balls, circle-plane slabs) is
  * widened by CD_SCENE_BOUND_REL times the objects' coordinate scale S (largest |coordinate| plus
  * the radii). The bounds take a handful of roundings (about 10 eps S) and the exact queries
@@ -337,5 +348,13 @@
  * many eps times the magnitude of its end positions (measured from the shorter segment's
  * start): the rounding of those positions. */
 #define CD_SEG_OVERLAP_ULPS 8.0
+/* Contacts (CDIST_CONTACT_CORE_TOUCH, as circledist.h states it): the cores touch when their
+ * distance is at most CD_CONTACT_TOUCH_ULPS * eps times the largest coordinate of the core
+ * points, the rounding of a distance computed from those coordinates; then the touch normal
+ * is t0 x t1 when the unit tangents' cross product exceeds CD_CONTACT_TANGENT_SIN
+ * (dimensionless: the sine of their angle), far above its rounding (a few eps) so that the
+ * normalised product has its direction to at least 8 digits. */
+#define CD_CONTACT_TOUCH_ULPS 16.0
+#define CD_CONTACT_TANGENT_SIN 1e-8
 
 #endif

@@ -48,7 +48,12 @@ enum {
     LINE_CIRCLE_KERNEL, /* the line kernels in the order of their shapes: line, ray, segment */
     RAY_CIRCLE_KERNEL,
     SEGMENT_CIRCLE_KERNEL,
-    CIRCLE_CIRCLE_KERNEL
+    CIRCLE_CIRCLE_KERNEL,
+    /* the core kinds of contact kinds without a kernel: they take the scalar path */
+    CIRCLE_DISK_KERNEL = NO_KERNEL,
+    SEGMENT_DISK_KERNEL = NO_KERNEL,
+    DISK_DISK_KERNEL = NO_KERNEL,
+    NONE_KERNEL = NO_KERNEL /* closed forms: point-point, point-segment, segment-segment */
 };
 
 /* Byte offset of a swept object's radius, by type; a plain object (radius 0) has none. Each swept
@@ -87,8 +92,9 @@ static const kind_row kinds[] = {
     [CDIST_KIND_##KIND] = {#name, sizeof(TA), sizeof(TB), k_##name, GRAD_FN_##grad(name), kernel, 0, 0, PLAIN, PLAIN},
 #define CD_CURVE_KIND(KIND, number, name, TB, ...)                                                                   \
     [CDIST_KIND_##KIND] = {#name, sizeof(cdist_curve), sizeof(TB), k_##name, NULL, NO_KERNEL, 0, 0, PLAIN, PLAIN},
-#define CD_CONTACT_KIND(KIND, number, name, letters, TA, TB, kernel, swap, help)                                     \
-    [CDIST_KIND_##KIND] = {#name, sizeof(TA), sizeof(TB), k_##name, g_##name, kernel, 1, swap, RADIUS_##TA, RADIUS_##TB},
+#define CD_CONTACT_KIND(KIND, number, name, letters, TA, TB, A, B, core, swap, help)                               \
+    [CDIST_KIND_##KIND] = {#name, sizeof(TA), sizeof(TB), k_##name, g_##name, core##_KERNEL, 1, swap, RADIUS_##TA, \
+                           RADIUS_##TB},
 #include "api/kinds.def"
 };
 #undef GRAD_FN_GRAD

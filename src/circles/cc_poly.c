@@ -35,9 +35,11 @@ static inline double eval_cs(const cdist__cc *g, int side, double ct, double st,
         vec3 w = v_cross(nd, n);
         double kr = f->r / rho, er = e / rho;
         k = v3(kr * w.x, kr * w.y, kr * w.z);
-        /* within 1e-150 of the axis |nd|^2 is subnormal and rho inexact: the point normalised
-         * from w's largest component instead (only where it is reported) */
-        if (K && rho < 0x1p-500) k = v_scale(f->r, v_unit_or_zero(w));
+        /* near the axis nd is rounding noise of the cross product, not orthogonal to n, so
+         * |w| < rho and r w / rho falls inside the circle (within 1e-150 rho is inexact too):
+         * the point normalised from w itself (only where it is reported) */
+        if (K && (rho < CD_MIN_NORMAL_FAST || rho < CD_CC_AXIS_NOISE_REL * v_maxabs(dl)))
+            k = v_scale(f->r, v_unit_or_zero(w));
         E = v3(h * n.x + er * w.x, h * n.y + er * w.y, h * n.z + er * w.z);
         double tp = (nd.x * dp.x + nd.y * dp.y + nd.z * dp.z) / rho;
         d2f -= 2.0 * f->r * tp * tp / rho;

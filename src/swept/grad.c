@@ -325,41 +325,10 @@ static cdist_status swept_grad_query(cdist_query *q, cdist__core_obj a, cdist__c
     return CDIST_OK;
 }
 
-static cdist__core_obj sw(cdist__core_type t, const void *obj, const double *radius)
-{
-    cdist__core_obj o = {t, obj, obj ? *radius : 0.0, 1};
-    return o;
-}
-static cdist__core_obj plain(cdist__core_type t, const void *obj)
-{
-    cdist__core_obj o = {t, obj, 0.0, 0};
-    return o;
-}
-#define TORUS(x) sw(CD_CORE_CIRCLE, (x) ? &(x)->circle : NULL, (x) ? &(x)->tube_radius : NULL)
-#define CAPSULE(x) sw(CD_CORE_SEGMENT, (x) ? &(x)->segment : NULL, (x) ? &(x)->radius : NULL)
-#define SPHERE(x) sw(CD_CORE_POINT, (x) ? &(x)->center : NULL, (x) ? &(x)->radius : NULL)
-#define RDISK(x) sw(CD_CORE_DISK, (x) ? &(x)->disk : NULL, (x) ? &(x)->radius : NULL)
-
-#define SWEPT_GRAD(name, TA, TB, mka, mkb)                                                                         \
-    cdist_status name(cdist_query *q, const TA *a, const TB *b, cdist_contact *c, cdist_grad *g)                   \
+/* The contact queries' gradients, one per contact kind of the registry. */
+#define CD_CONTACT_KIND(KIND, number, name, letters, TA, TB, A, B, core, swap, help)                               \
+    cdist_status cdist_##name##_grad(cdist_query *q, const TA *a, const TB *b, cdist_contact *c, cdist_grad *g)    \
     {                                                                                                              \
-        return swept_grad_query(q, mka, mkb, c, g);                                                                \
+        return swept_grad_query(q, CD_SWEPT_##A(a), CD_SWEPT_##B(b), c, g);                                        \
     }
-
-SWEPT_GRAD(cdist_torus_torus_grad, cdist_torus, cdist_torus, TORUS(a), TORUS(b))
-SWEPT_GRAD(cdist_torus_capsule_grad, cdist_torus, cdist_capsule, TORUS(a), CAPSULE(b))
-SWEPT_GRAD(cdist_torus_sphere_grad, cdist_torus, cdist_sphere, TORUS(a), SPHERE(b))
-SWEPT_GRAD(cdist_torus_rounded_disk_grad, cdist_torus, cdist_rounded_disk, TORUS(a), RDISK(b))
-SWEPT_GRAD(cdist_capsule_capsule_grad, cdist_capsule, cdist_capsule, CAPSULE(a), CAPSULE(b))
-SWEPT_GRAD(cdist_capsule_sphere_grad, cdist_capsule, cdist_sphere, CAPSULE(a), SPHERE(b))
-SWEPT_GRAD(cdist_capsule_rounded_disk_grad, cdist_capsule, cdist_rounded_disk, CAPSULE(a), RDISK(b))
-SWEPT_GRAD(cdist_sphere_sphere_grad, cdist_sphere, cdist_sphere, SPHERE(a), SPHERE(b))
-SWEPT_GRAD(cdist_sphere_rounded_disk_grad, cdist_sphere, cdist_rounded_disk, SPHERE(a), RDISK(b))
-SWEPT_GRAD(cdist_rounded_disk_rounded_disk_grad, cdist_rounded_disk, cdist_rounded_disk, RDISK(a), RDISK(b))
-SWEPT_GRAD(cdist_torus_line_grad, cdist_torus, cdist_line, TORUS(a), plain(CD_CORE_LINE, b))
-SWEPT_GRAD(cdist_torus_ray_grad, cdist_torus, cdist_ray, TORUS(a), plain(CD_CORE_RAY, b))
-SWEPT_GRAD(cdist_torus_segment_grad, cdist_torus, cdist_segment, TORUS(a), plain(CD_CORE_SEGMENT, b))
-SWEPT_GRAD(cdist_capsule_circle_grad, cdist_capsule, cdist_circle, CAPSULE(a), plain(CD_CORE_CIRCLE, b))
-SWEPT_GRAD(cdist_capsule_disk_grad, cdist_capsule, cdist_circle, CAPSULE(a), plain(CD_CORE_DISK, b))
-SWEPT_GRAD(cdist_sphere_circle_grad, cdist_sphere, cdist_circle, SPHERE(a), plain(CD_CORE_CIRCLE, b))
-SWEPT_GRAD(cdist_sphere_disk_grad, cdist_sphere, cdist_circle, SPHERE(a), plain(CD_CORE_DISK, b))
+#include "api/kinds.def"

@@ -26,6 +26,30 @@ typedef struct cdist__core_obj {
     int swept;       /* 1 for a swept object (its radius is an input) */
 } cdist__core_obj;
 
+/* The core of a swept object (its radius read only when the object is given: a NULL object
+ * stays NULL so that the query reports it), and a plain object as its own core. */
+static inline cdist__core_obj cdist__swept_core(cdist__core_type type, const void *core, const double *radius)
+{
+    cdist__core_obj o = {type, core, core ? *radius : 0.0, 1};
+    return o;
+}
+static inline cdist__core_obj cdist__plain_core(cdist__core_type type, const void *obj)
+{
+    cdist__core_obj o = {type, obj, 0.0, 0};
+    return o;
+}
+/* The core of each object type of the contact kinds (src/api/kinds.def; a swept struct starts
+ * with its core). */
+#define CD_SWEPT_TORUS(x) cdist__swept_core(CD_CORE_CIRCLE, (x) ? &(x)->circle : NULL, (x) ? &(x)->tube_radius : NULL)
+#define CD_SWEPT_CAPSULE(x) cdist__swept_core(CD_CORE_SEGMENT, (x) ? &(x)->segment : NULL, (x) ? &(x)->radius : NULL)
+#define CD_SWEPT_SPHERE(x) cdist__swept_core(CD_CORE_POINT, (x) ? &(x)->center : NULL, (x) ? &(x)->radius : NULL)
+#define CD_SWEPT_RDISK(x) cdist__swept_core(CD_CORE_DISK, (x) ? &(x)->disk : NULL, (x) ? &(x)->radius : NULL)
+#define CD_SWEPT_LINE(x) cdist__plain_core(CD_CORE_LINE, x)
+#define CD_SWEPT_RAY(x) cdist__plain_core(CD_CORE_RAY, x)
+#define CD_SWEPT_SEGMENT(x) cdist__plain_core(CD_CORE_SEGMENT, x)
+#define CD_SWEPT_CIRCLE(x) cdist__plain_core(CD_CORE_CIRCLE, x)
+#define CD_SWEPT_DISK(x) cdist__plain_core(CD_CORE_DISK, x)
+
 /* The core query between a and b (any order: a missing order is answered swapped). */
 cdist_status cdist__core_query(cdist_query *q, const cdist__core_obj *a, const cdist__core_obj *b, cdist_result *r);
 /* A swept query: validates the radii, answers the core query, writes the contact. core

@@ -308,7 +308,7 @@ static vec3 touch_normal(const cdist__core_obj *a, const cdist__core_obj *b, vec
     vec3 ta = core_tangent(a, pa), tb = core_tangent(b, pb);
     if (v_sqr(ta) > 0.0 && v_sqr(tb) > 0.0) {
         vec3 x = v_cross(ta, tb);
-        if (v_norm(x) > 1e-8) n = v_unit_or_zero(x);
+        if (v_norm(x) > CD_CONTACT_TANGENT_SIN) n = v_unit_or_zero(x);
     }
     if (v_sqr(n) == 0.0) n = core_plane_normal(a);
     if (v_sqr(n) == 0.0) n = core_plane_normal(b);
@@ -370,7 +370,7 @@ cdist_status cdist__swept_query(cdist_query *q, const cdist__core_obj *a, const 
         vec3 d = v_sub(pb, pa);
         double L = fmax(v_maxabs(pa), v_maxabs(pb));
         vec3 n;
-        if (!(r->distance > 16.0 * DBL_EPSILON * L) || v_maxabs(d) == 0.0) {
+        if (!(r->distance > CD_CONTACT_TOUCH_ULPS * DBL_EPSILON * L) || v_maxabs(d) == 0.0) {
             n = touch_normal(a, b, pa, pb);
             c->flags |= CDIST_CONTACT_CORE_TOUCH;
         } else {
@@ -403,54 +403,11 @@ size_t cdist_swept_size(int which)
     }
 }
 
-/* Object descriptors (NULL objects stay NULL so the query reports them). */
-static cdist__core_obj torus_obj(const cdist_torus *t)
-{
-    cdist__core_obj o = {CD_CORE_CIRCLE, t ? (const void *)&t->circle : NULL, t ? t->tube_radius : 0.0, 1};
-    return o;
-}
-static cdist__core_obj capsule_obj(const cdist_capsule *t)
-{
-    cdist__core_obj o = {CD_CORE_SEGMENT, t ? (const void *)&t->segment : NULL, t ? t->radius : 0.0, 1};
-    return o;
-}
-static cdist__core_obj sphere_obj(const cdist_sphere *t)
-{
-    cdist__core_obj o = {CD_CORE_POINT, t ? (const void *)&t->center : NULL, t ? t->radius : 0.0, 1};
-    return o;
-}
-static cdist__core_obj rdisk_obj(const cdist_rounded_disk *t)
-{
-    cdist__core_obj o = {CD_CORE_DISK, t ? (const void *)&t->disk : NULL, t ? t->radius : 0.0, 1};
-    return o;
-}
-static cdist__core_obj plain_obj(cdist__core_type type, const void *p)
-{
-    cdist__core_obj o = {type, p, 0.0, 0};
-    return o;
-}
-
-#define SWEPT_QUERY(name, TA, TB, mka, mkb)                                                                        \
-    cdist_status name(cdist_query *q, const TA *a, const TB *b, cdist_contact *c)                                  \
+/* The contact queries, one per contact kind of the registry. */
+#define CD_CONTACT_KIND(KIND, number, name, letters, TA, TB, A, B, core, swap, help)                               \
+    cdist_status cdist_##name(cdist_query *q, const TA *a, const TB *b, cdist_contact *c)                         \
     {                                                                                                              \
-        cdist__core_obj oa = mka, ob = mkb;                                                                            \
-        return cdist__swept_query(q, &oa, &ob, c, NULL);                                                               \
+        cdist__core_obj oa = CD_SWEPT_##A(a), ob = CD_SWEPT_##B(b);                                              \
+        return cdist__swept_query(q, &oa, &ob, c, NULL);                                                           \
     }
-
-SWEPT_QUERY(cdist_torus_torus, cdist_torus, cdist_torus, torus_obj(a), torus_obj(b))
-SWEPT_QUERY(cdist_torus_capsule, cdist_torus, cdist_capsule, torus_obj(a), capsule_obj(b))
-SWEPT_QUERY(cdist_torus_sphere, cdist_torus, cdist_sphere, torus_obj(a), sphere_obj(b))
-SWEPT_QUERY(cdist_torus_rounded_disk, cdist_torus, cdist_rounded_disk, torus_obj(a), rdisk_obj(b))
-SWEPT_QUERY(cdist_capsule_capsule, cdist_capsule, cdist_capsule, capsule_obj(a), capsule_obj(b))
-SWEPT_QUERY(cdist_capsule_sphere, cdist_capsule, cdist_sphere, capsule_obj(a), sphere_obj(b))
-SWEPT_QUERY(cdist_capsule_rounded_disk, cdist_capsule, cdist_rounded_disk, capsule_obj(a), rdisk_obj(b))
-SWEPT_QUERY(cdist_sphere_sphere, cdist_sphere, cdist_sphere, sphere_obj(a), sphere_obj(b))
-SWEPT_QUERY(cdist_sphere_rounded_disk, cdist_sphere, cdist_rounded_disk, sphere_obj(a), rdisk_obj(b))
-SWEPT_QUERY(cdist_rounded_disk_rounded_disk, cdist_rounded_disk, cdist_rounded_disk, rdisk_obj(a), rdisk_obj(b))
-SWEPT_QUERY(cdist_torus_line, cdist_torus, cdist_line, torus_obj(a), plain_obj(CD_CORE_LINE, b))
-SWEPT_QUERY(cdist_torus_ray, cdist_torus, cdist_ray, torus_obj(a), plain_obj(CD_CORE_RAY, b))
-SWEPT_QUERY(cdist_torus_segment, cdist_torus, cdist_segment, torus_obj(a), plain_obj(CD_CORE_SEGMENT, b))
-SWEPT_QUERY(cdist_capsule_circle, cdist_capsule, cdist_circle, capsule_obj(a), plain_obj(CD_CORE_CIRCLE, b))
-SWEPT_QUERY(cdist_capsule_disk, cdist_capsule, cdist_circle, capsule_obj(a), plain_obj(CD_CORE_DISK, b))
-SWEPT_QUERY(cdist_sphere_circle, cdist_sphere, cdist_circle, sphere_obj(a), plain_obj(CD_CORE_CIRCLE, b))
-SWEPT_QUERY(cdist_sphere_disk, cdist_sphere, cdist_circle, sphere_obj(a), plain_obj(CD_CORE_DISK, b))
+#include "api/kinds.def"

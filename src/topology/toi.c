@@ -157,7 +157,7 @@ cdist_status cdist_toi(cdist_query *q, const cdist_shape *a, const cdist_motion 
     vec3 ta = ma ? ma->translation : v3(0, 0, 0), tb = mb ? mb->translation : v3(0, 0, 0);
     double wa = ma ? v_norm(ma->rotation) : 0.0, wb = mb ? v_norm(mb->rotation) : 0.0;
     double rho_a = core_reach(a, ma ? ma->center : v3(0, 0, 0)), rho_b = core_reach(b, mb ? mb->center : v3(0, 0, 0));
-    double speed = (v_norm(v_sub(ta, tb)) + wa * rho_a + wb * rho_b) * (1.0 + 64.0 * DBL_EPSILON);
+    double speed = (v_norm(v_sub(ta, tb)) + wa * rho_a + wb * rho_b) * (1.0 + CD_TOI_SPEED_ULPS * DBL_EPSILON);
     double slack = CD_TOI_POSE_ULPS * DBL_EPSILON * fmax(motion_scale(a, ma), motion_scale(b, mb));
     double tol = fmax(tolerance, 2.0 * slack);
 

@@ -519,7 +519,9 @@ static void overlaps(cdist_query *q)
     enum { N = 100 };
     /* one buffer holding the inputs and, wrongly, the outputs */
     size_t bytes = N * sizeof(cdist_circle) * 2 + N * sizeof(cdist_result) + 4096;
-    unsigned char *buf = malloc(bytes), *copy = malloc(bytes);
+    /* zeroed: the bytes past the inputs are compared too (an uninitialised tail is what
+     * valgrind reported, not the library's structs, which have no padding) */
+    unsigned char *buf = calloc(1, bytes), *copy = malloc(bytes);
     cdist_circle *a = (cdist_circle *)buf, *b = a + N;
     for (int i = 0; i < N; i++) {
         a[i] = (cdist_circle){{0.1 * i, 0, 0}, {0, 0, 1}, 1.0};
@@ -611,6 +613,79 @@ static void conventions(cdist_query *q)
           "signed distance %.17g", d);
 }
 
+/* Every batch entry with each of its output arrays laid over the middle of each input array:
+ * refused with CDIST_ERR_OVERLAP before anything is read or written (the inputs and every
+ * output left as they were), the message naming the two arrays. */
+enum { E_RESULT, E_DISTANCE, E_CONTACT, E_GRAD, E_COUNT };
+static const char *const entry_name[E_COUNT] = {"cdist_batch", "cdist_batch_distance", "cdist_batch_contact",
+                                                "cdist_batch_grad"};
+
+static cdist_status call_entry(cdist_query *q, int entry, cdist_kind kind, size_t n, const void *a, ptrdiff_t sa,
+                               const void *b, ptrdiff_t sb, void *out, cdist_grad *g, cdist_status *st)
+{
+    switch (entry) {
+    case E_RESULT: return cdist_batch(q, kind, n, a, sa, b, sb, out, st);
+    case E_DISTANCE: return cdist_batch_distance(q, kind, n, a, sa, b, sb, out, st);
+    case E_CONTACT: return cdist_batch_contact(q, kind, n, a, sa, b, sb, out, st);
+    default: return cdist_batch_grad(q, kind, n, a, sa, b, sb, out, g, st);
+    }
+}
+
+static void overlaps_every_entry(cdist_query *q)
+{
+    enum { N = 64 };
+    /* inputs first, then room for the outputs that are not under test */
+    size_t in_bytes = 2 * N * sizeof(cdist_torus), out_bytes = N * (sizeof(cdist_contact) + sizeof(cdist_grad) + 64);
+    unsigned char *buf = calloc(1, in_bytes + out_bytes), *copy = malloc(in_bytes + out_bytes);
+    for (int entry = 0; entry < E_COUNT; entry++) {
+        for (int contact = 0; contact < 2; contact++) {
+            if ((entry == E_RESULT && contact) || (entry == E_CONTACT && !contact)) continue;
+            cdist_kind kind = contact ? CDIST_KIND_TORUS_TORUS : CDIST_KIND_CIRCLE_CIRCLE;
+            size_t so = contact ? sizeof(cdist_torus) : sizeof(cdist_circle);
+            unsigned char *a = buf, *b = buf + N * so;
+            for (int i = 0; i < N; i++) {
+                cdist_torus ta = {{{0.1 * i, 0, 0}, {0, 0, 1}, 1.0}, 0.1}, tb = {{{0, 0.2 * i, 1}, {0, 1, 0}, 0.5}, 0.1};
+                memcpy(a + i * so, &ta, so); /* a circle is a torus's first member */
+                memcpy(b + i * so, &tb, so);
+            }
+            /* the outputs: 0 the entry's main array, 1 the gradients (cdist_batch_grad), 2 statuses */
+            for (int which = 0; which < 3; which++) {
+                if (which == 1 && entry != E_GRAD) continue;
+                for (int over = 0; over < 2; over++) {
+                    unsigned char *target = (over ? b : a) + (N / 2) * so;
+                    unsigned char *free_area = buf + in_bytes;
+                    void *out = which == 0 ? (void *)target : (void *)free_area;
+                    cdist_grad *g = entry != E_GRAD ? NULL
+                                    : which == 1    ? (cdist_grad *)(void *)target
+                                                    : (cdist_grad *)(void *)(free_area + N * sizeof(cdist_contact));
+                    cdist_status *st = which == 2 ? (cdist_status *)(void *)target
+                                                  : (cdist_status *)(void *)(free_area + N * (sizeof(cdist_contact) +
+                                                                                            sizeof(cdist_grad)));
+                    memcpy(copy, buf, in_bytes + out_bytes);
+                    cdist_status ret = call_entry(q, entry, kind, N, a, (ptrdiff_t)so, b, (ptrdiff_t)so, out, g, st);
+                    const char *msg = cdist_query_last_error(q);
+                    CHECK(ret == CDIST_ERR_OVERLAP && !memcmp(buf, copy, in_bytes + out_bytes) &&
+                              strstr(msg, over ? "second object" : "first object") &&
+                              strstr(msg, which == 0 ? (entry == E_DISTANCE ? "distances" : "results")
+                                          : which == 1 ? "gradients"
+                                                       : "statuses"),
+                          "%s (%s) with output %d over the %s array: %s, '%s'", entry_name[entry],
+                          cdist_kind_name(kind), which, over ? "second" : "first", cdist_status_name(ret), msg);
+                }
+            }
+            /* the same call with every array apart is answered */
+            unsigned char *free_area = buf + in_bytes;
+            cdist_grad *g = entry == E_GRAD ? (cdist_grad *)(void *)(free_area + N * sizeof(cdist_contact)) : NULL;
+            cdist_status *st =
+                (cdist_status *)(void *)(free_area + N * (sizeof(cdist_contact) + sizeof(cdist_grad)));
+            CHECK(call_entry(q, entry, kind, N, a, (ptrdiff_t)so, b, (ptrdiff_t)so, free_area, g, st) == CDIST_OK,
+                  "%s (%s) with separate arrays", entry_name[entry], cdist_kind_name(kind));
+        }
+    }
+    free(buf);
+    free(copy);
+}
+
 int main(int argc, char **argv)
 {
     test_rng = 0x9E3779B97F4A7C15ull;
@@ -621,6 +696,7 @@ int main(int argc, char **argv)
     cdist_query *q = cdist_query_new();
     conventions(q);
     overlaps(q);
+    overlaps_every_entry(q);
     progress_cancel(q);
     const char *sets[] = {"random", "hard"};
     for (int s = 0; s < 2; s++) {
