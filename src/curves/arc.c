@@ -43,9 +43,14 @@
 typedef struct arcx {
     cdist__circle c; /* centre in the query's frame; u, v the library basis */
     vec3 U, V;   /* the arc's frame */
-    double start, end;
+    double start, end; /* the range, start taken modulo 2 pi when |start| > 4 pi (arc_ref) */
+    double user_start, user_end; /* the caller's range */
     double phi0; /* library-basis angle of U: library angle = arc angle + phi0 */
 } arcx;
+
+/* An angle equal to t modulo 2 pi (within a few ulps of pi), t itself when |t| <= 4 pi: offsets
+ * from a start such as 1e17 would round by whole radians. */
+static double arc_ref(double t) { return fabs(t) <= 2.0 * TWO_PI ? t : atan2(sin(t), cos(t)); }
 
 /* The span rule: end <= RU(start + 2 pi), RU rounding the exact sum up to a double (2 pi itself
  * rounded up). Exact, with a slack below one ulp of the end whatever |start|: an end computed in
@@ -76,8 +81,10 @@ static cdist_status check_arc(cdist_query *q, const cdist_arc *a, const char *wh
     if (!arc_span_ok(a->start, a->end))
         return cdist__fail(q, CDIST_ERR_BAD_INTERVAL, "%s end %.17g exceeds start %.17g + 2 pi (rounded up)", what,
                            a->end, a->start);
-    x->start = a->start;
-    x->end = a->end;
+    x->user_start = a->start;
+    x->user_end = a->end;
+    x->start = arc_ref(a->start);
+    x->end = x->start == a->start ? a->end : x->start + (a->end - a->start);
     x->phi0 = atan2(v_dot(x->U, x->c.v), v_dot(x->U, x->c.u));
     return CDIST_OK;
 }
@@ -319,6 +326,18 @@ static double arc_scale(const arcx *a, const cdist__circle *c)
 
 /* ---- arc to circle / disk ---- */
 
+/* The arc's parameters in r (which: 0 the first object, 1 the second) back in the caller's
+ * range when check_arc took the start modulo 2 pi. */
+static cdist_status arc_params_back(cdist_status st, const arcx *x, cdist_result *r, int which)
+{
+    if (st || x->start == x->user_start) return st;
+    for (int i = 0; i < r->num_pairs; i++) {
+        double t = r->pairs[i].param[which];
+        if (t == t) r->pairs[i].param[which] = fmin(fmax(x->user_start + (t - x->start), x->user_start), x->user_end);
+    }
+    return st;
+}
+
 static cdist_status arc_target(cdist_query *q, const void *obj, const cdist_circle *c, cdist_result *r, int disk)
 {
     const cdist_arc *a = obj;
@@ -350,7 +369,7 @@ static cdist_status arc_target(cdist_query *q, const void *obj, const cdist_circ
          * cdist_circle_circle flags it): every arc point is closest. */
         if (constant && A.end > A.start) k.b.equidistant = 1;
     }
-    return cdist__cs_coll_result(&k, cdist__pow2(e), origin, r);
+    return arc_params_back(cdist__cs_coll_result(&k, cdist__pow2(e), origin, r), &A, r, 0);
 }
 
 cdist_status cdist_arc_circle(cdist_query *q, const cdist_arc *a, const cdist_circle *c, cdist_result *r)
@@ -446,7 +465,8 @@ static cdist_status arc_arc(cdist_query *q, const cdist_arc *a0, const cdist_arc
                 return st;
         }
     }
-    return cdist__cs_coll_result(&k, cdist__pow2(e), origin, r);
+    return arc_params_back(arc_params_back(cdist__cs_coll_result(&k, cdist__pow2(e), origin, r), &A, r, 0), &B, r,
+                           1);
 }
 
 /* ---- segment to arc ---- */
@@ -525,7 +545,7 @@ static cdist_status segment_arc(cdist_query *q, const cdist_segment *sg, const c
             }
         }
     }
-    return cdist__cs_coll_result(&k, cdist__pow2(e), origin, r);
+    return arc_params_back(cdist__cs_coll_result(&k, cdist__pow2(e), origin, r), &A, r, 1);
 }
 
 cdist_status cdist_arc_arc(cdist_query *q, const cdist_arc *a0, const cdist_arc *a1, cdist_result *r)

@@ -331,6 +331,18 @@ for i, w in enumerate(want):
     check(i < len(o) and o[i].startswith("error: line %d:" % (i + 1)) and w in o[i], "bad line %d: %r" % (i + 1, o[i] if i < len(o) else None))
 check(len(o) == 6 and abs(float(o[5].split()[0]) - 1) < 1e-15, "good line after bad ones")
 
+# Arcs with a huge start (1e17: an offset from it rounds by whole radians) against a coaxial arc,
+# in both orders: the brute force's distance, and no equidistant flag (one point arc).
+huge = ["0 0 0 0 0 1 1 1 0 0 1e17 1e17", "0 0 0.5 0 0 1 1 1 0 0 0 0.001"]
+lines = "aa %s  %s\naa %s  %s\n" % (huge[0], huge[1], huge[1], huge[0])
+p = subprocess.run([tool, "-"], input=lines, capture_output=True, text=True, timeout=60)
+o = p.stdout.splitlines()
+e = brute("aa", [float(x) for x in (huge[0] + " " + huge[1]).split()])
+for i, line in enumerate(o):
+    f = line.split()
+    check(abs(mp.mpf(f[0]) - e) < 1e-14 and f[2] == "0", "huge arc start, order %d: %s (brute force %s)" % (i, line, mp.nstr(e, 17)))
+check(len(o) == 2, "huge arc start: two answers")
+
 for k in sorted(worst):
     print("%s: max error %.3g of scale" % (k, worst[k]))
 finish("curve-tool")
