@@ -356,5 +356,10 @@
  * normalised product has its direction to at least 8 digits. */
 #define CD_CONTACT_TOUCH_ULPS 16.0
 #define CD_CONTACT_TANGENT_SIN 1e-8
+/* Gradients: a curve or a second disk crossing a disk inside its rim keeps the distance 0 on a
+ * neighbourhood (CDIST_GRAD_NOT_DIFFERENTIABLE stays clear) when it leaves the disk's plane at
+ * a sine above CD_GRAD_TRANSVERSAL_SIN (dimensionless), far above the rounding of the unit
+ * vectors involved. */
+#define CD_GRAD_TRANSVERSAL_SIN 1e-6
 
 #endif

@@ -189,7 +189,6 @@ static int disks_cross_inside(const cdist_circle *d0, vec3 N0, const cdist_circl
  * it: one stable crossing keeps the distance 0 whatever the other pairs do. */
 static int zero_on_neighbourhood(const cdist__core_obj *a, const cdist__core_obj *b, const cdist_result *r)
 {
-    const double transversal = 1e-6; /* sine of the smallest crossing angle treated as stable */
     const cdist__core_obj *ob[2] = {a, b};
     for (int i = 0; i < r->num_pairs; i++)
         for (int k = 0; k < 2; k++) {
@@ -201,22 +200,15 @@ static int zero_on_neighbourhood(const cdist__core_obj *a, const cdist__core_obj
             if (o->type == CD_CORE_DISK) {
                 const cdist_circle *d2 = o->obj;
                 vec3 N2 = v_unit_or_zero(d2->normal);
-                if (v_norm(v_cross(N, N2)) > transversal && disks_cross_inside(dk, N, d2, N2, X)) return 1;
+                if (v_norm(v_cross(N, N2)) > CD_GRAD_TRANSVERSAL_SIN && disks_cross_inside(dk, N, d2, N2, X)) return 1;
                 continue;
             }
             if (!disk_interior(dk, N, r->pairs[i].point[k])) continue;
             int interior;
             vec3 t = curve_tangent(o, X, r->pairs[i].param[1 - k], &interior);
-            if (interior && fabs(v_dot(t, N)) > transversal) return 1;
+            if (interior && fabs(v_dot(t, N)) > CD_GRAD_TRANSVERSAL_SIN) return 1;
         }
     return 0;
-}
-
-/* Zero distance, or within rounding of zero (the points' coordinates' last bits). */
-static int distance_zero(const cdist_result *r)
-{
-    vec3 P = r->pairs[0].point[0], Q = r->pairs[0].point[1];
-    return !(r->distance > 16.0 * DBL_EPSILON * fmax(v_maxabs(P), v_maxabs(Q))) || v_maxabs(v_sub(P, Q)) == 0.0;
 }
 
 /* The one decision of the flag CDIST_GRAD_NOT_DIFFERENTIABLE (the rules of circledist.h): at
@@ -226,7 +218,7 @@ static int distance_zero(const cdist_result *r)
  * derivative from the right). */
 static int not_differentiable(const cdist__core_obj *a, const cdist__core_obj *b, const cdist_result *r)
 {
-    if (distance_zero(r)) return !zero_on_neighbourhood(a, b, r);
+    if (cdist__cores_touch(r, 0)) return !zero_on_neighbourhood(a, b, r);
     if (r->num_pairs == 2 || r->equidistant) return 1;
     const cdist__core_obj *ob[2] = {a, b};
     for (int k = 0; k < 2; k++)
@@ -242,7 +234,7 @@ void cdist__grad_fill(const cdist__core_obj *a, const cdist__core_obj *b, const 
     if (not_differentiable(a, b, r)) g->flags |= CDIST_GRAD_NOT_DIFFERENTIABLE;
     /* At zero distance the gradient is 0 (in the Clarke subdifferential; the true, two-sided
      * derivative where the distance stays 0 nearby). */
-    if (distance_zero(r)) return;
+    if (cdist__cores_touch(r, 0)) return;
     vec3 P = r->pairs[0].point[0], Q = r->pairs[0].point[1];
     vec3 w = v_unit_or_zero(v_sub(P, Q));
     /* At a disk's interior point w is exactly along the disk's normal (first-order optimality);

@@ -52,6 +52,15 @@ static inline cdist__core_obj cdist__plain_core(cdist__core_type type, const voi
 
 /* The core query between a and b (any order: a missing order is answered swapped). */
 cdist_status cdist__core_query(cdist_query *q, const cdist__core_obj *a, const cdist__core_obj *b, cdist_result *r);
+/* The cores touch at pair i of r: their distance within the rounding of the points'
+ * coordinates (CD_CONTACT_TOUCH_ULPS), or the two points equal. */
+static inline int cdist__cores_touch(const cdist_result *r, int i)
+{
+    vec3 p = r->pairs[i].point[0], q = r->pairs[i].point[1];
+    return !(r->distance > CD_CONTACT_TOUCH_ULPS * DBL_EPSILON * fmax(v_maxabs(p), v_maxabs(q))) ||
+           v_maxabs(v_sub(q, p)) == 0.0;
+}
+
 /* A swept query: validates the radii, answers the core query, writes the contact. core
  * (may be NULL) receives the core result. */
 cdist_status cdist__swept_query(cdist_query *q, const cdist__core_obj *a, const cdist__core_obj *b, cdist_contact *c,

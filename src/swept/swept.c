@@ -368,9 +368,8 @@ cdist_status cdist__swept_query(cdist_query *q, const cdist__core_obj *a, const 
         cdist_contact_pair *cp = &c->pairs[i];
         vec3 pa = r->pairs[i].point[0], pb = r->pairs[i].point[1];
         vec3 d = v_sub(pb, pa);
-        double L = fmax(v_maxabs(pa), v_maxabs(pb));
         vec3 n;
-        if (!(r->distance > CD_CONTACT_TOUCH_ULPS * DBL_EPSILON * L) || v_maxabs(d) == 0.0) {
+        if (cdist__cores_touch(r, i)) {
             n = touch_normal(a, b, pa, pb);
             c->flags |= CDIST_CONTACT_CORE_TOUCH;
         } else {
