@@ -883,7 +883,8 @@ CDIST_API cdist_status cdist_link_tori(cdist_query *q, const cdist_torus *a, con
  *  are answered exactly as cdist_link_circles() answers them. Runs on the calling thread and
  *  never allocates. Returns ::CDIST_OK, else the status of the lowest failing entry
  *  (cdist_query_last_error() names it); NULL handle or arrays (n > 0):
- *  ::CDIST_ERR_NULL_ARGUMENT for every entry. */
+ *  ::CDIST_ERR_NULL_ARGUMENT for every entry; out or statuses overlapping an input or each
+ *  other: ::CDIST_ERR_OVERLAP before anything is read or written. */
 CDIST_API cdist_status cdist_link_circles_batch(cdist_query *q, size_t n, const void *a, ptrdiff_t a_stride,
                                                 const void *b, ptrdiff_t b_stride, cdist_link *out,
                                                 cdist_status *statuses);

@@ -6,6 +6,7 @@
 #include <math.h>
 #include <stdatomic.h>
 #include <stddef.h>
+#include <stdint.h>
 
 #include "circledist.h"
 #include "base/numeric.h"
@@ -153,6 +154,23 @@ static inline cdist_status cdist__leave(cdist_query *q, cdist_result *r, cdist_s
 /* The same flag for the option setters (no result). */
 cdist_status cdist__enter_setter(cdist_query *q);
 void cdist__leave_setter(cdist_query *q);
+/* The bytes [lo, hi) spanned by n strided items of `size` bytes from p (n > 0). */
+typedef struct cdist__span {
+    uintptr_t lo, hi;
+    const char *what;
+} cdist__span;
+cdist__span cdist__span_of(const void *p, size_t n, ptrdiff_t stride, size_t size, const char *what);
+/* Batch arrays: s[0 .. n_inputs) are inputs (they may overlap each other), the rest outputs. 1
+ * when an output overlaps any earlier array, with the two names in *x, *y. Checked before any
+ * entry is read or written: an output written over a later entry's input would change that
+ * entry's answer. */
+int cdist__spans_overlap(const cdist__span *s, int count, int n_inputs, const char **x, const char **y);
+#define CDIST__OVERLAP_MESSAGE                                                                                         \
+    "batch: the %s overlap the %s (outputs must not overlap the inputs or each other); nothing was written"
+
+/* The roles of the two objects exchanged: points and parameters of every pair (f(b, a) from
+ * f(a, b)). */
+void cdist__result_swap(cdist_result *r);
 /* The error state of a result: NaN distances, points and parameters, no pairs. */
 void cdist__result_set_error(cdist_result *r);
 /* The unused fields of a successful result: pairs from index n on NaN, iterations and reserved

@@ -5,6 +5,40 @@
 
 #include "api/api-priv.h"
 
+cdist__span cdist__span_of(const void *p, size_t n, ptrdiff_t stride, size_t size, const char *what)
+{
+    uintptr_t base = (uintptr_t)p;
+    uintptr_t last = base + (uintptr_t)((ptrdiff_t)(n - 1) * stride); /* wraps back for a negative stride */
+    cdist__span s = {stride < 0 ? last : base, (stride < 0 ? base : last) + size, what};
+    return s;
+}
+
+int cdist__spans_overlap(const cdist__span *s, int count, int n_inputs, const char **x, const char **y)
+{
+    for (int i = n_inputs; i < count; i++) {
+        if (!s[i].what) continue;
+        for (int j = 0; j < i; j++) {
+            if (!s[j].what || !(s[i].lo < s[j].hi && s[j].lo < s[i].hi)) continue;
+            *x = s[i].what;
+            *y = s[j].what;
+            return 1;
+        }
+    }
+    return 0;
+}
+
+void cdist__result_swap(cdist_result *r)
+{
+    for (int i = 0; i < r->num_pairs; i++) {
+        vec3 p = r->pairs[i].point[0];
+        r->pairs[i].point[0] = r->pairs[i].point[1];
+        r->pairs[i].point[1] = p;
+        double t = r->pairs[i].param[0];
+        r->pairs[i].param[0] = r->pairs[i].param[1];
+        r->pairs[i].param[1] = t;
+    }
+}
+
 void cdist__result_set_error(cdist_result *r)
 {
     memset(r, 0, sizeof *r);

@@ -288,54 +288,22 @@ static cdist_status fail_all(cdist_query *q, cdist_status st, const cdist__job *
     return cdist__fail(q, st, "batch: %s", why);
 }
 
-/* The bytes [lo, hi) spanned by n strided items of `size` bytes from p. */
-typedef struct span {
-    uintptr_t lo, hi;
-    const char *what;
-} span;
-
-static span span_of(const void *p, size_t n, ptrdiff_t stride, size_t size, const char *what)
-{
-    uintptr_t base = (uintptr_t)p;
-    uintptr_t last = base + (uintptr_t)((ptrdiff_t)(n - 1) * stride); /* wraps back for a negative stride */
-    span s = {stride < 0 ? last : base, (stride < 0 ? base : last) + size, what};
-    return s;
-}
-
-/* The name of the first pair of an output and another array that overlap (NULL: none). Checked
- * before any entry is read or written: an output written over a later entry's input would
- * change that entry's answer. */
-static int overlap(const span *s, int count, const char **x, const char **y)
-{
-    for (int i = 0; i < count; i++) {
-        if (!s[i].what || i < 2) continue; /* the inputs (0, 1) may overlap each other */
-        for (int j = 0; j < i; j++) {
-            if (!s[j].what || !(s[i].lo < s[j].hi && s[j].lo < s[i].hi)) continue;
-            *x = s[i].what;
-            *y = s[j].what;
-            return 1;
-        }
-    }
-    return 0;
-}
-
 static cdist_status check_overlap(cdist_query *q, const cdist__job *job)
 {
     size_t n = job->n;
-    span s[6] = {
-        span_of(job->a, n, job->a_stride, kinds[job->kind].size_a, "first object array"),
-        span_of(job->b, n, job->b_stride, kinds[job->kind].size_b, "second object array"),
+    cdist__span s[6] = {
+        cdist__span_of(job->a, n, job->a_stride, kinds[job->kind].size_a, "first object array"),
+        cdist__span_of(job->b, n, job->b_stride, kinds[job->kind].size_b, "second object array"),
     };
     int k = 2;
-    if (job->results) s[k++] = span_of(job->results, n, (ptrdiff_t)job->result_size, job->result_size, "results");
-    if (job->distances) s[k++] = span_of(job->distances, n, sizeof(double), sizeof(double), "distances");
-    if (job->grads) s[k++] = span_of(job->grads, n, sizeof(cdist_grad), sizeof(cdist_grad), "gradients");
-    if (job->statuses) s[k++] = span_of(job->statuses, n, sizeof(cdist_status), sizeof(cdist_status), "statuses");
+    if (job->results) s[k++] = cdist__span_of(job->results, n, (ptrdiff_t)job->result_size, job->result_size, "results");
+    if (job->distances) s[k++] = cdist__span_of(job->distances, n, sizeof(double), sizeof(double), "distances");
+    if (job->grads) s[k++] = cdist__span_of(job->grads, n, sizeof(cdist_grad), sizeof(cdist_grad), "gradients");
+    if (job->statuses) s[k++] = cdist__span_of(job->statuses, n, sizeof(cdist_status), sizeof(cdist_status), "statuses");
     const char *x, *y;
-    if (!overlap(s, k, &x, &y)) return CDIST_OK;
+    if (!cdist__spans_overlap(s, k, 2, &x, &y)) return CDIST_OK;
     cdist__begin(q, NULL);
-    return cdist__fail(q, CDIST_ERR_OVERLAP, "batch: the %s overlap the %s (outputs must not overlap the inputs or "
-                       "each other); nothing was written", x, y);
+    return cdist__fail(q, CDIST_ERR_OVERLAP, CDIST__OVERLAP_MESSAGE, x, y);
 }
 
 /* The kinds an output answers: full results the plain kinds, contacts the contact kinds,

@@ -548,11 +548,33 @@ static cdist_status segment_arc(cdist_query *q, const cdist_segment *sg, const c
     return arc_params_back(cdist__cs_coll_result(&k, cdist__pow2(e), origin, r), &A, r, 1);
 }
 
+/* Lexicographic order of two arcs' numbers (circle, zero direction, start, end): 1 when a comes
+ * first. */
+static int arc_less(const cdist_arc *a, const cdist_arc *b)
+{
+    if (cdist__circle_less(&a->circle, &b->circle)) return 1;
+    if (cdist__circle_less(&b->circle, &a->circle)) return 0;
+    const double va[5] = {a->zero_direction.x, a->zero_direction.y, a->zero_direction.z, a->start, a->end};
+    const double vb[5] = {b->zero_direction.x, b->zero_direction.y, b->zero_direction.z, b->start, b->end};
+    for (int i = 0; i < 5; i++)
+        if (va[i] != vb[i]) return va[i] < vb[i];
+    return 0;
+}
+
+/* The arcs are taken in lexicographic order, so f(a, b) and f(b, a) are the same computation:
+ * the frame, the scale and every near-tie decision (equidistant flag, pair count) do not depend
+ * on the argument order. */
 cdist_status cdist_arc_arc(cdist_query *q, const cdist_arc *a0, const cdist_arc *a1, cdist_result *r)
 {
     cdist_status st = cdist__enter(q, r);
     if (st) return st;
-    return cdist__leave(q, r, arc_arc(q, a0, a1, r), CDIST_METHOD_ROBUST);
+    if (a0 && a1 && arc_less(a1, a0)) {
+        st = arc_arc(q, a1, a0, r);
+        if (st == CDIST_OK) cdist__result_swap(r);
+    } else {
+        st = arc_arc(q, a0, a1, r);
+    }
+    return cdist__leave(q, r, st, CDIST_METHOD_ROBUST);
 }
 
 cdist_status cdist_segment_arc(cdist_query *q, const cdist_segment *sg, const cdist_arc *a, cdist_result *r)

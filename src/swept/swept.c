@@ -168,18 +168,6 @@ static cdist_status segment_segment(cdist_query *q, const cdist_segment *a, cons
 
 /* ---- core dispatch ---- */
 
-static void result_swap(cdist_result *r)
-{
-    for (int i = 0; i < r->num_pairs; i++) {
-        vec3 p = r->pairs[i].point[0];
-        r->pairs[i].point[0] = r->pairs[i].point[1];
-        r->pairs[i].point[1] = p;
-        double t = r->pairs[i].param[0];
-        r->pairs[i].param[0] = r->pairs[i].param[1];
-        r->pairs[i].param[1] = t;
-    }
-}
-
 /* The core query for (ta, tb) in this order, or -1 when that order has none. */
 static int core_direct(cdist_query *q, cdist__core_type ta, const void *a, cdist__core_type tb, const void *b,
                        cdist_result *r, cdist_status *st)
@@ -214,7 +202,7 @@ cdist_status cdist__core_query(cdist_query *q, const cdist__core_obj *a, const c
     cdist_status st = CDIST_ERR_INTERNAL;
     if (core_direct(q, a->type, a->obj, b->type, b->obj, r, &st) == 0) return st;
     if (core_direct(q, b->type, b->obj, a->type, a->obj, r, &st) == 0) {
-        if (st == CDIST_OK) result_swap(r);
+        if (st == CDIST_OK) cdist__result_swap(r);
         return st;
     }
     if ((st = cdist__enter(q, r))) return st;

@@ -7,6 +7,7 @@
  * reported touching. */
 #include <math.h>
 #include <stdint.h>
+#include <stdio.h>
 #include <string.h>
 
 #include "internal.h"
@@ -153,6 +154,10 @@ cdist_status cdist_link_tori(cdist_query *q, const cdist_torus *a, const cdist_t
 /* ---- batches: one entry at a time on the calling thread, the lowest failing entry reported ---- */
 
 typedef cdist_status (*link_fn)(cdist_query *, const void *, const void *, cdist_link *);
+typedef struct link_kind {
+    link_fn fn;
+    size_t size; /* bytes of one object */
+} link_kind;
 static cdist_status link_circles_entry(cdist_query *q, const void *a, const void *b, cdist_link *out)
 {
     return cdist_link_circles(q, a, b, out);
@@ -162,7 +167,7 @@ static cdist_status link_tori_entry(cdist_query *q, const void *a, const void *b
     return cdist_link_tori(q, a, b, out);
 }
 
-static cdist_status link_batch(cdist_query *q, link_fn fn, size_t n, const void *a, ptrdiff_t a_stride,
+static cdist_status link_batch(cdist_query *q, link_kind kind, size_t n, const void *a, ptrdiff_t a_stride,
                                const void *b, ptrdiff_t b_stride, cdist_link *out, cdist_status *statuses)
 {
     if (n == 0) return CDIST_OK;
@@ -174,10 +179,16 @@ static cdist_status link_batch(cdist_query *q, link_fn fn, size_t n, const void 
         return cdist__topology_batch_report(q, SIZE_MAX, CDIST_ERR_NULL_ARGUMENT,
                                             "a handle, object array or output array is NULL");
     }
+    cdist__span s[4] = {cdist__span_of(a, n, a_stride, kind.size, "first object array"),
+                        cdist__span_of(b, n, b_stride, kind.size, "second object array"),
+                        cdist__span_of(out, n, sizeof *out, sizeof *out, "results"),
+                        cdist__span_of(statuses, n, sizeof *statuses, sizeof *statuses, statuses ? "statuses" : NULL)};
+    cdist_status st = cdist__topology_overlap(q, s, 4, 2);
+    if (st) return st;
     cdist__topology_failure fail = {SIZE_MAX, CDIST_OK, ""};
     for (size_t i = 0; i < n; i++) {
         const char *ai = (const char *)a + (ptrdiff_t)i * a_stride, *bi = (const char *)b + (ptrdiff_t)i * b_stride;
-        cdist_status st = fn(q, ai, bi, &out[i]);
+        st = kind.fn(q, ai, bi, &out[i]);
         if (statuses) statuses[i] = st;
         cdist__topology_note(q, &fail, i, st);
     }
@@ -199,6 +210,15 @@ cdist_status cdist__topology_finish(cdist_query *q, const cdist__topology_failur
     return cdist__topology_batch_report(q, f->first, f->status, f->message);
 }
 
+cdist_status cdist__topology_overlap(cdist_query *q, const cdist__span *s, int count, int n_inputs)
+{
+    const char *x, *y;
+    if (!cdist__spans_overlap(s, count, n_inputs, &x, &y)) return CDIST_OK;
+    char why[200];
+    snprintf(why, sizeof why, CDIST__OVERLAP_MESSAGE, x, y);
+    return cdist__topology_batch_report(q, SIZE_MAX, CDIST_ERR_OVERLAP, why);
+}
+
 cdist_status cdist__topology_batch_report(cdist_query *q, size_t first, cdist_status st, const char *message)
 {
     if (!q || cdist__enter_setter(q)) return st;
@@ -211,11 +231,11 @@ cdist_status cdist__topology_batch_report(cdist_query *q, size_t first, cdist_st
 cdist_status cdist_link_circles_batch(cdist_query *q, size_t n, const void *a, ptrdiff_t a_stride, const void *b,
                                       ptrdiff_t b_stride, cdist_link *out, cdist_status *statuses)
 {
-    return link_batch(q, link_circles_entry, n, a, a_stride, b, b_stride, out, statuses);
+    return link_batch(q, (link_kind){link_circles_entry, sizeof(cdist_circle)}, n, a, a_stride, b, b_stride, out, statuses);
 }
 
 cdist_status cdist_link_tori_batch(cdist_query *q, size_t n, const void *a, ptrdiff_t a_stride, const void *b,
                                    ptrdiff_t b_stride, cdist_link *out, cdist_status *statuses)
 {
-    return link_batch(q, link_tori_entry, n, a, a_stride, b, b_stride, out, statuses);
+    return link_batch(q, (link_kind){link_tori_entry, sizeof(cdist_torus)}, n, a, a_stride, b, b_stride, out, statuses);
 }

@@ -209,13 +209,21 @@ cdist_status cdist_toi_batch(cdist_query *q, size_t n, const cdist_shape *a, ptr
         }
         return cdist__topology_batch_report(q, SIZE_MAX, CDIST_ERR_NULL_ARGUMENT, "a handle, shape array or output array is NULL");
     }
+    cdist__span s[6] = {cdist__span_of(a, n, a_stride, sizeof *a, "first shape array"),
+                        cdist__span_of(ma, n, ma_stride, sizeof *ma, ma ? "first motion array" : NULL),
+                        cdist__span_of(b, n, b_stride, sizeof *b, "second shape array"),
+                        cdist__span_of(mb, n, mb_stride, sizeof *mb, mb ? "second motion array" : NULL),
+                        cdist__span_of(out, n, sizeof *out, sizeof *out, "results"),
+                        cdist__span_of(statuses, n, sizeof *statuses, sizeof *statuses, statuses ? "statuses" : NULL)};
+    cdist_status st = cdist__topology_overlap(q, s, 6, 4);
+    if (st) return st;
     cdist__topology_failure fail = {SIZE_MAX, CDIST_OK, ""};
     for (size_t i = 0; i < n; i++) {
         const cdist_shape *ai = (const void *)((const char *)a + (ptrdiff_t)i * a_stride);
         const cdist_shape *bi = (const void *)((const char *)b + (ptrdiff_t)i * b_stride);
         const cdist_motion *mai = ma ? (const void *)((const char *)ma + (ptrdiff_t)i * ma_stride) : NULL;
         const cdist_motion *mbi = mb ? (const void *)((const char *)mb + (ptrdiff_t)i * mb_stride) : NULL;
-        cdist_status st = cdist_toi(q, ai, mai, bi, mbi, target, tolerance, max_iterations, &out[i]);
+        st = cdist_toi(q, ai, mai, bi, mbi, target, tolerance, max_iterations, &out[i]);
         if (statuses) statuses[i] = st;
         cdist__topology_note(q, &fail, i, st);
     }

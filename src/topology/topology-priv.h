@@ -14,6 +14,9 @@ int cdist__link_count(const cdist__circle *a, const cdist__circle *b, double d, 
  * first is SIZE_MAX) on q, under its in-use flag (a busy or NULL handle is left alone), and
  * returns st. */
 cdist_status cdist__topology_batch_report(cdist_query *q, size_t first, cdist_status st, const char *message);
+/* CDIST_ERR_OVERLAP, reported before anything is written, when an output span overlaps an earlier
+ * span (cdist__spans_overlap); else CDIST_OK. */
+cdist_status cdist__topology_overlap(cdist_query *q, const cdist__span *s, int count, int n_inputs);
 
 /* The lowest failing entry of a batch and its message: cdist__topology_note records entry i's
  * status (the first failure only, copying the handle's message), cdist__topology_finish

@@ -12,7 +12,8 @@
  * - progress: called from the calling thread, done increasing, at the end done == total; a
  *   non-zero return cancels: the first entries keep their answers, the others get
  *   CDIST_ERR_CANCELLED and NaN; every thread count;
- * - overlapping outputs: CDIST_ERR_OVERLAP, nothing written. */
+ * - overlapping outputs: CDIST_ERR_OVERLAP, nothing written (also the linking and time-of-impact
+ *   batches). */
 #include <math.h>
 #include <pthread.h>
 #include <stdint.h>
@@ -555,6 +556,38 @@ static void overlaps(cdist_query *q)
           "adjacent outputs");
     CHECK(cdist_batch_grad(q, CDIST_KIND_CIRCLE_CIRCLE, N, a, sizeof *a, a + 1, 0, NULL, g, NULL) == CDIST_OK,
           "gradients only");
+    /* the linking and time-of-impact batches: results or statuses over an input */
+    memcpy(buf, copy, bytes);
+    cdist_link *l_over_b = (cdist_link *)(void *)(b + N / 2);
+    CHECK(cdist_link_circles_batch(q, N, a, sizeof *a, b, sizeof *b, l_over_b, NULL) == CDIST_ERR_OVERLAP &&
+              strstr(cdist_query_last_error(q), "results"),
+          "link results over b: '%s'", cdist_query_last_error(q));
+    cdist_status *st_over_a = (cdist_status *)(void *)(a + 1);
+    cdist_link *l_after = (cdist_link *)(void *)(b + N);
+    CHECK(cdist_link_circles_batch(q, 4, a, sizeof *a, b, sizeof *b, l_after, st_over_a) == CDIST_ERR_OVERLAP &&
+              strstr(cdist_query_last_error(q), "statuses"),
+          "link statuses over a: '%s'", cdist_query_last_error(q));
+    CHECK(!memcmp(buf, copy, bytes), "an overlapping link batch wrote something");
+    CHECK(cdist_link_circles_batch(q, N, a, sizeof *a, b, sizeof *b, l_after, NULL) == CDIST_OK, "link adjacent");
+    memcpy(buf, copy, bytes);
+    cdist_shape *sh = (cdist_shape *)(void *)buf;
+    cdist_motion *mo = (cdist_motion *)(void *)(sh + 4);
+    for (int i = 0; i < 4; i++) {
+        sh[i] = (cdist_shape){.type = CDIST_SHAPE_SPHERE};
+        sh[i].u.sphere = (cdist_sphere){{3.0 * i, 0, 0}, 1.0};
+        mo[i] = (cdist_motion){{3.0 * i, 0, 0}, {0, 1, 0}, {0, 0, 0}};
+    }
+    memcpy(copy, buf, bytes);
+    cdist_toi_result *t_over_m = (cdist_toi_result *)(void *)(mo + 1);
+    CHECK(cdist_toi_batch(q, 4, sh, sizeof *sh, mo, sizeof *mo, sh, 0, NULL, 0, 0.0, 1e-9, 100, t_over_m, NULL) ==
+                  CDIST_ERR_OVERLAP &&
+              strstr(cdist_query_last_error(q), "first motion"),
+          "toi results over the motions: '%s'", cdist_query_last_error(q));
+    CHECK(!memcmp(buf, copy, bytes), "an overlapping toi batch wrote something");
+    cdist_toi_result *t_after = (cdist_toi_result *)(void *)(mo + 4);
+    CHECK(cdist_toi_batch(q, 4, sh, sizeof *sh, mo, sizeof *mo, sh, 0, NULL, 0, 0.0, 1e-9, 100, t_after, NULL) ==
+              CDIST_OK,
+          "toi adjacent: '%s'", cdist_query_last_error(q));
     free(g);
     free(buf);
     free(copy);
