@@ -95,7 +95,7 @@ static vec3 arc_point(const arcx *a, double ang)
     return v_axpy(v_axpy(a->c.c, a->c.r * c, a->U), a->c.r * s, a->V);
 }
 
-static cdist_status arc_eval(cdist_query *q, const void *ctx, double t, vec3 *p, vec3 *dp)
+CD_FMA_CLONES static cdist_status arc_eval(cdist_query *q, const void *ctx, double t, vec3 *p, vec3 *dp)
 {
     (void)q;
     const arcx *a = ctx;

@@ -16,9 +16,9 @@ static inline vec3 bez_point(const bez_x *b, double t)
     return v_axpy(v_axpy(v_axpy(v_scale(b0, b->p[0]), b1, b->p[1]), b2, b->p[2]), b3, b->p[3]);
 }
 
-static vec3 bez_pos(const void *ctx, double t) { return bez_point(ctx, t); }
+CD_FMA_CLONES static vec3 bez_pos(const void *ctx, double t) { return bez_point(ctx, t); }
 
-static cdist_status bez_eval(cdist_query *q, const void *ctx, double t, vec3 *p, vec3 *dp)
+CD_FMA_CLONES static cdist_status bez_eval(cdist_query *q, const void *ctx, double t, vec3 *p, vec3 *dp)
 {
     (void)q;
     const bez_x *b = ctx;

@@ -17,7 +17,7 @@ static vec3 helix_pos(const void *ctx, double t)
     return v_axpy(v_axpy(h->c, h->r, radial), h->rise * t, h->n);
 }
 
-static cdist_status helix_eval(cdist_query *q, const void *ctx, double t, vec3 *p, vec3 *dp)
+CD_FMA_CLONES static cdist_status helix_eval(cdist_query *q, const void *ctx, double t, vec3 *p, vec3 *dp)
 {
     (void)q;
     const helix_x *h = ctx;
