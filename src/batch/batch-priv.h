@@ -26,6 +26,9 @@ typedef struct cdist__job {
     cdist__out out;
     size_t result_size;
     cdist_grad *grads; /* gradient batch, else NULL */
+    /* A screen (cdist__batch_screen), else NULL: entry i needs its exact distance only near
+     * cutoffs[i]. */
+    const double *cutoffs;
 } cdist__job;
 
 static inline const void *cdist__job_a(const cdist__job *j, size_t i) { return j->a + (ptrdiff_t)i * j->a_stride; }
@@ -72,5 +75,13 @@ uint64_t cdist__line_distance_kernel(const cdist__job *job, int shape, double un
  * found by another search; the distances agree to an ulp or two of the scale
  * (src/batch/cc_kernel.c). */
 uint64_t cdist__cc_distance_kernel(const cdist__job *job, double unit_tol, size_t lo, size_t count);
+
+/* A circle-circle screen for scenes: distances[i] is the exact distance of cdist_batch_distance,
+ * or, when the distance is certainly above cutoffs[i], a certified lower bound above
+ * cutoffs[i] (rounding included), or -INFINITY when it is certainly at most cutoffs[i] (a grid
+ * point of the search is that close; the caller answers such a pair in full). The kernel
+ * decides the last two from its first grid and skips the rest of the search. */
+cdist_status cdist__batch_screen(cdist_query *q, size_t n, const cdist_circle *a, const cdist_circle *b,
+                                 const double *cutoffs, double *distances);
 
 #endif

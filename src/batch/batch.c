@@ -382,7 +382,15 @@ static cdist_status batch_call(cdist_query *q, cdist_kind kind, size_t n, const 
     size_t result_size = out == CD_OUT_CONTACT  ? sizeof(cdist_contact)
                          : out == CD_OUT_RESULT ? sizeof(cdist_result)
                                                 : cdist_kind_result_size(kind);
-    cdist__job job = {kind, n, a, b, a_stride, b_stride, results, distances, statuses, 0, out, result_size, grads};
+    cdist__job job = {kind, n, a, b, a_stride, b_stride, results, distances, statuses, 0, out, result_size, grads, NULL};
+    return run(q, &job);
+}
+
+cdist_status cdist__batch_screen(cdist_query *q, size_t n, const cdist_circle *a, const cdist_circle *b,
+                                 const double *cutoffs, double *distances)
+{
+    cdist__job job = {CDIST_KIND_CIRCLE_CIRCLE, n, (const char *)a, (const char *)b, sizeof *a, sizeof *b, NULL,
+                      distances, NULL, 0, CD_OUT_DISTANCE, 0, NULL, cutoffs};
     return run(q, &job);
 }
 

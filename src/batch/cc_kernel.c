@@ -19,12 +19,15 @@
  * W1 = |al| + |be| >= |w'|, Hh = |ha| + |hb|, Hc0 = |hc|, Lw = 2 R + |C| of convex(), and the
  * two factors scaling the distance back (cdist__cc_prepare's unscale, 2^e of the frame). */
 enum { CK_C_ALX, CK_C_ALY, CK_C_ALZ, CK_C_BEX, CK_C_BEY, CK_C_BEZ, CK_C_GAX, CK_C_GAY, CK_C_GAZ, CK_C_HA, CK_C_HB,
-       CK_C_HC, CK_C_S, CK_C_R2, CK_C_W1, CK_C_HH, CK_C_HC0, CK_C_LW, CK_C_UNSC, CK_C_UP, CK_NC };
+       CK_C_HC, CK_C_S, CK_C_R2, CK_C_W1, CK_C_HH, CK_C_HC0, CK_C_LW, CK_C_UNSC, CK_C_UP, CK_C_CUT, CK_NC };
 typedef struct ck_block {
     double col[CK_NC][64];
     double t[64]; /* the angle found */
     double ct[64], st[64]; /* its cosine and sine, by rotation from the basin's centre */
     double d[64]; /* the distance there */
+    /* a screen's verdicts (cdist__batch_screen): -inf at most the cutoff, else a certified lower
+     * bound above it */
+    double screen[64];
 } ck_block;
 
 #define CC_LANES_BODY "batch/cc_kernel_body.h"
@@ -33,16 +36,67 @@ typedef struct ck_block {
 typedef unsigned (*ck_setup_fn)(const cdist__job *job, double unit_tol, size_t lo, int base, int n, ck_block *b);
 typedef unsigned (*ck_search_fn)(ck_block *b, int g);
 typedef void (*ck_final_fn)(ck_block *b, int g);
+typedef struct ck_variant {
+    ck_setup_fn setup;
+    ck_search_fn search, screen;
+    ck_final_fn final;
+    int lanes;
+} ck_variant;
 
-static uint64_t ck_run(ck_setup_fn setup, ck_search_fn search, ck_final_fn final, int lanes, const cdist__job *job,
-                       double unit_tol, size_t lo, size_t count)
+static uint64_t ck_run(const ck_variant *v, const cdist__job *job, double unit_tol, size_t lo, size_t count);
+
+/* A screen's block: the verdicts of the first grid where it decides; the entries it leaves are
+ * packed into lanes of their own for the whole search (so that a group's lanes stop together). */
+static uint64_t ck_run_screen(const ck_variant *v, const cdist__job *job, double unit_tol, size_t lo, int n,
+                              uint64_t left, ck_block *b)
+{
+    int lanes = v->lanes, groups = (n + lanes - 1) / lanes * lanes;
+    uint64_t open = 0, all = n < 64 ? ((uint64_t)1 << n) - 1 : ~(uint64_t)0;
+    for (int g = 0; g < groups; g += lanes) {
+        uint64_t lane_mask = ((uint64_t)1 << lanes) - 1;
+        if (((left >> g) & lane_mask) != lane_mask) open |= (uint64_t)v->screen(b, g) << g;
+    }
+    open &= all & ~left;
+    cdist_circle pa[64], pb[64];
+    double pd[64];
+    int idx[64], m = 0;
+    for (int k = 0; k < n; k++) {
+        if (left >> k & 1) continue;
+        if (!(open >> k & 1)) {
+            job->distances[lo + (size_t)k] = b->screen[k];
+            continue;
+        }
+        memcpy(&pa[m], cdist__job_a(job, lo + (size_t)k), sizeof pa[m]);
+        memcpy(&pb[m], cdist__job_b(job, lo + (size_t)k), sizeof pb[m]);
+        idx[m++] = k;
+    }
+    if (m == 0) return left;
+    cdist__job packed = *job;
+    packed.n = (size_t)m;
+    packed.a = (const char *)pa;
+    packed.b = (const char *)pb;
+    packed.a_stride = packed.b_stride = sizeof pa[0];
+    packed.distances = pd;
+    packed.cutoffs = NULL;
+    uint64_t pl = ck_run(v, &packed, unit_tol, 0, (size_t)m);
+    for (int j = 0; j < m; j++) {
+        if (pl >> j & 1) left |= (uint64_t)1 << idx[j];
+        else job->distances[lo + (size_t)idx[j]] = pd[j];
+    }
+    return left;
+}
+
+static uint64_t ck_run(const ck_variant *v, const cdist__job *job, double unit_tol, size_t lo, size_t count)
 {
     cdist__cc_search_tables();
     ck_block b;
     uint64_t left = 0;
-    int n = (int)count, groups = (n + lanes - 1) / lanes * lanes;
+    int lanes = v->lanes, n = (int)count, groups = (n + lanes - 1) / lanes * lanes;
+    ck_search_fn search = v->search;
+    ck_final_fn final = v->final;
     for (int g = 0; g < groups; g += lanes)
-        left |= (uint64_t)setup(job, unit_tol, lo, g, n - g < lanes ? n - g : lanes, &b) << g;
+        left |= (uint64_t)v->setup(job, unit_tol, lo, g, n - g < lanes ? n - g : lanes, &b) << g;
+    if (job->cutoffs) return ck_run_screen(v, job, unit_tol, lo, n, left, &b);
     for (int g = 0; g < groups; g += lanes) {
         uint64_t lane_mask = ((uint64_t)1 << lanes) - 1;
         if (((left >> g) & lane_mask) == lane_mask) continue;
@@ -61,20 +115,23 @@ static uint64_t ck_run(ck_setup_fn setup, ck_search_fn search, ck_final_fn final
 static uint64_t kernel_scalar(const cdist__job *job, int shape, double tol, size_t lo, size_t count)
 {
     (void)shape;
-    return ck_run(ck_setup_1, ck_search_1, ck_final_1, 1, job, tol, lo, count);
+    static const ck_variant v = {ck_setup_1, ck_search_1, ck_screen_1, ck_final_1, 1};
+    return ck_run(&v, job, tol, lo, count);
 }
 
 #ifdef CD_X86_KERNELS
 static uint64_t kernel_avx512(const cdist__job *job, int shape, double tol, size_t lo, size_t count)
 {
     (void)shape;
-    return ck_run(ck_setup_8, ck_search_8, ck_final_8, 8, job, tol, lo, count);
+    static const ck_variant v = {ck_setup_8, ck_search_8, ck_screen_8, ck_final_8, 8};
+    return ck_run(&v, job, tol, lo, count);
 }
 
 static uint64_t kernel_avx2(const cdist__job *job, int shape, double tol, size_t lo, size_t count)
 {
     (void)shape;
-    return ck_run(ck_setup_4, ck_search_4, ck_final_4, 4, job, tol, lo, count);
+    static const ck_variant v = {ck_setup_4, ck_search_4, ck_screen_4, ck_final_4, 4};
+    return ck_run(&v, job, tol, lo, count);
 }
 #endif
 

@@ -116,8 +116,14 @@ static unsigned KN(ck_setup)(const cdist__job *job, double unit_tol, size_t lo, 
     V W1 = vadd(vsqrt(KN(dot)(al[0], al[1], al[2], al[0], al[1], al[2])),
                 vsqrt(KN(dot)(be[0], be[1], be[2], be[0], be[1], be[2])));
     V Lw = vadd(vmul(vset(2.0), R), vsqrt(KN(dot)(CBx, CBy, CBz, CBx, CBy, CBz)));
+    V cut = vset(NAN);
+    if (job->cutoffs) {
+        double cv[W];
+        for (int l = 0; l < W; l++) cv[l] = job->cutoffs[lo + (size_t)base + (size_t)(l < n ? l : 0)];
+        cut = vld(cv);
+    }
     const V cols[CK_NC] = {al[0], al[1], al[2], be[0], be[1], be[2], ga[0], ga[1], ga[2], ha, hb, hc, s,
-                           vmul(R, R), W1, vadd(vabs(ha), vabs(hb)), vabs(hc), Lw, unsc, up};
+                           vmul(R, R), W1, vadd(vabs(ha), vabs(hb)), vabs(hc), Lw, unsc, up, cut};
     V zero = vset(0.0);
     for (int c = 0; c < CK_NC; c++) vst(&b->col[c][base], vsel(ok, cols[c], zero));
     unsigned left = mbits(mnot(ok)) & ((1u << W) - 1u);
@@ -125,9 +131,18 @@ static unsigned KN(ck_setup)(const cdist__job *job, double unit_tol, size_t lo, 
     return left;
 }
 
+/* The bound of F on grid interval j: the smaller end value, and the concave hull bound. */
+CD_INLINE V KN(ck_grid_lb)(const KN(ck_ring) *r, const V *Fg, int j, V R2tan)
+{
+    return vmin(vmin(Fg[j], Fg[(j + 1) % CK_GRID]),
+                vsub(KN(ck_f)(r, vset(cdist__cc_tab.hull_c[j]), vset(cdist__cc_tab.hull_s[j])), R2tan));
+}
+
 /* The search for the W entries of the block from g: angles t[] of the closest points of the
- * entries it certifies; returns the lane mask (bit k: entry g + k) of those it does not. */
-static unsigned KN(ck_search)(ck_block *b, int g)
+ * entries it certifies; returns the lane mask (bit k: entry g + k) of those it does not. With
+ * `screen` (a constant: two instances), the first grid only: the verdicts of a screen
+ * (cdist__batch_screen) into b->screen, and the mask of the lanes it leaves undecided. */
+CD_INLINE unsigned KN(ck_search_in)(ck_block *b, int g, const int screen)
 {
     KN(ck_ring) r;
     KN(ck_load)(b, g, &r);
@@ -147,10 +162,25 @@ static unsigned KN(ck_search)(ck_block *b, int g)
     V minlb = vset(INFINITY), R2tan = vmul(r.R2, vset(cdist__cc_tab.grid_tan2));
     M nan = mfalse(); /* a NaN bound would drop out of minlb (min keeps the other operand) */
     V c = vset(0.0), s = vset(0.0), Fl = vset(0.0), Fr = vset(0.0);
+    if (screen) {
+        /* The distance is above the cutoff when the smallest bound of all intervals, less the
+         * margin, is (its square root scaled back and rounded down: a certified lower bound, the
+         * verdict), and at most the cutoff when a grid point is that close (-inf). */
+        V alllb = vset(INFINITY);
+        for (int j = 0; j < CK_GRID; j++) {
+            V lb = KN(ck_grid_lb)(&r, Fg, j, R2tan);
+            alllb = vmin(alllb, lb);
+            nan = mor(nan, vne(lb, lb));
+        }
+        V cut = vld(&b->col[CK_C_CUT][g]), scale = vmul(vld(&b->col[CK_C_UNSC][g]), vld(&b->col[CK_C_UP][g]));
+        V dlb = vmul(vmul(vsqrt(vmax(vsub(alllb, margin), vset(0.0))), scale), vset(1.0 - 4.0 * DBL_EPSILON));
+        M above = mandn(nan, vgt(dlb, cut)), below = vle(vmul(vsqrt(bestF), scale), cut);
+        vst(&b->screen[g], vsel(above, dlb, vset(-INFINITY)));
+        return mbits(mnot(mor(above, below)));
+    }
     for (int j = 0; j < CK_GRID; j++) {
         int jn = (j + 1) % CK_GRID, jp = (j + CK_GRID - 1) % CK_GRID;
-        V lb = vmin(vmin(Fg[j], Fg[jn]),
-                    vsub(KN(ck_f)(&r, vset(cdist__cc_tab.hull_c[j]), vset(cdist__cc_tab.hull_s[j])), R2tan));
+        V lb = KN(ck_grid_lb)(&r, Fg, j, R2tan);
         M at = veq(vset((double)j), bestJ), before = veq(vset((double)jn), bestJ);
         minlb = vsel(mor(at, before), minlb, vmin(minlb, lb));
         nan = mor(nan, vne(lb, lb));
@@ -261,6 +291,9 @@ static unsigned KN(ck_search)(ck_block *b, int g)
     return mbits(fail);
 }
 
+static unsigned KN(ck_search)(ck_block *b, int g) { return KN(ck_search_in)(b, g, 0); }
+static unsigned KN(ck_screen)(ck_block *b, int g) { return KN(ck_search_in)(b, g, 1); }
+
 /* ---- the distance at the angle found, in lanes ---- */
 
 /* The distances of the lanes of the group from g at their angles (b->ct, b->st: cosine and
@@ -274,4 +307,3 @@ static void KN(ck_final)(ck_block *b, int g)
     V u = vld(&b->col[CK_C_UNSC][g]);
     vst(&b->d[g], vmul(vsqrt(vmul(vmul(d2, u), u)), vld(&b->col[CK_C_UP][g])));
 }
-

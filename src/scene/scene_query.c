@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "base/pool.h"
+#include "batch/batch-priv.h"
 #include "scene-priv.h"
 
 /* Keys answered by one thread at a time, and chunks per thread and round of the narrow phase
@@ -303,17 +304,27 @@ static int list_action(narrow *w, size_t k, const cdist__scene_obj *a, const cdi
     return ACT_ANSWER;
 }
 
-/* One chunk of keys. Pairs of two circle cores are screened first by the batch distance kernel
- * (hs, one thread): its distance is within 2 ulps of the scale of the full query's, far inside
- * the bound margin, so a pair it puts above lim + margin is above lim; the others get the full
- * query. */
+/* The cutoff of a screened pair: the smallest core distance c with (c - radii) - margin > lim
+ * in floating point, so that a distance the screen puts above it passes the same test. */
+static double screen_cutoff(double lim, double margin, double radii)
+{
+    double c = (lim + margin) + radii;
+    while (!((c - radii) - margin > lim) && c < INFINITY) c = nextafter(c, INFINITY);
+    return c;
+}
+
+/* One chunk of keys. Pairs of two circle cores are screened first by the circle-circle kernel
+ * (hs, one thread; cdist__batch_screen): its distance is within 2 ulps of the scale of the full
+ * query's, far inside the bound margin, so a pair it puts above lim + margin is above lim; its
+ * first grid alone often decides (a certified lower bound above the cutoff, or a point within
+ * it). The others get the full query. */
 static void run_chunk(narrow *w, cdist_query *h, cdist_query *hs, size_t c)
 {
     size_t lo = c * CD_SCENE_CHUNK, hi = lo + CD_SCENE_CHUNK < w->n ? lo + CD_SCENE_CHUNK : w->n;
     size_t slot = c - w->round_lo, m = 0, nc = 0, full = 0, box = 0, past = 0;
     cdist_scene_pair *out = w->buf + slot * CD_SCENE_CHUNK;
     cdist_circle ca[CD_SCENE_CHUNK], cb[CD_SCENE_CHUNK];
-    double dist[CD_SCENE_CHUNK];
+    double dist[CD_SCENE_CHUNK], cut[CD_SCENE_CHUNK];
     unsigned char act[CD_SCENE_CHUNK];
     double mm[CD_SCENE_CHUNK], mg[CD_SCENE_CHUNK]; /* list: the objects' motions, the margin */
     for (size_t k = lo; k < hi; k++) {
@@ -325,13 +336,13 @@ static void run_chunk(narrow *w, cdist_query *h, cdist_query *hs, size_t c)
             what = ACT_SCREEN;
             ca[nc] = a->g.circle;
             cb[nc] = b->g.circle;
+            cut[nc] = screen_cutoff(w->lim, w->lo ? mg[k - lo] : cdist__scene_margin(a, b), a->r + b->r);
             nc++;
         }
         past += what != ACT_SKIP;
         act[k - lo] = (unsigned char)what;
     }
-    if (nc > 0 && cdist_batch_distance(hs, CDIST_KIND_CIRCLE_CIRCLE, nc, ca, sizeof ca[0], cb, sizeof cb[0], dist, NULL) ==
-                      CDIST_ERR_HANDLE_BUSY)
+    if (nc > 0 && cdist__batch_screen(hs, nc, ca, cb, cut, dist) == CDIST_ERR_HANDLE_BUSY)
         for (size_t t = 0; t < nc; t++) dist[t] = NAN;
     nc = 0;
     for (size_t k = lo; k < hi; k++) {
@@ -342,8 +353,12 @@ static void run_chunk(narrow *w, cdist_query *h, cdist_query *hs, size_t c)
         if (act[k - lo] == ACT_SCREEN) {
             if (!w->lo) margin = cdist__scene_margin(a, b);
             d = dist[nc++] - (a->r + b->r);
-            if (w->lo) list_learn(w, k, mm[k - lo], d - margin, d + margin);
-            if (d - margin > w->lim) continue;
+            /* above: d is the distance or a lower bound of it; otherwise the full query below
+             * learns the exact distance */
+            if (d - margin > w->lim) {
+                if (w->lo) list_learn(w, k, mm[k - lo], d - margin, INFINITY);
+                continue;
+            }
         }
         m += answer(h, a, b, i, j, w->lim, &out[m], &d);
         if (w->lo) list_learn(w, k, mm[k - lo], d - margin, d + margin);

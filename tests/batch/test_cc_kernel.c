@@ -161,7 +161,7 @@ static int check_kernel(const char *name, kfn k, cdist_query *q, size_t n, const
                         unsigned char *left_map)
 {
     cdist__job job = {CDIST_KIND_CIRCLE_CIRCLE, n, (const char *)A, (const char *)B, sizeof A[0], sizeof B[0],
-                      NULL, D, NULL, 64, CD_OUT_DISTANCE, 0, NULL};
+                      NULL, D, NULL, 64, CD_OUT_DISTANCE, 0, NULL, NULL};
     int bad = 0, badref = 0, wrong_left = 0, left_valid = 0, answered = 0, identical = 0;
     double worst = 0;
     *left_file = 0;
@@ -226,6 +226,53 @@ static void check_batch(cdist_query *q, size_t n, const char *what)
     CHECK(bad == 0, "batch %s: %d entries differ from the single query", what, bad);
 }
 
+/* The scenes' screen (cdist__batch_screen) at cutoffs below, near and above each entry's
+ * distance d (the single query's): a verdict -inf only when d <= cutoff (to rounding: 1e-13 of
+ * scale), a finite answer either d (2 ulps of scale, as the kernel) or a lower bound of d above
+ * the cutoff; a bad entry NaN. And the screen decides most entries from its grid when the cutoff
+ * is far from d, which is what it is for. */
+static void check_screen(cdist_query *q, size_t n, const char *what)
+{
+    static double cut[MAXN], out[MAXN], exact[MAXN];
+    static cdist_status st[MAXN];
+    for (size_t i = 0; i < n; i++) {
+        cdist_result r;
+        st[i] = cdist_circle_circle(q, &A[i], &B[i], &r);
+        exact[i] = r.distance;
+    }
+    const double rel[] = {0.0, 0.5, 1.0 - 1e-3, 1.0 - 1e-9, 1.0, 1.0 + 1e-9, 1.0 + 1e-3, 2.0};
+    int bad = 0, far = 0, far_decided = 0;
+    for (size_t c = 0; c < sizeof rel / sizeof rel[0]; c++) {
+        for (size_t i = 0; i < n; i++) cut[i] = st[i] ? 1.0 : exact[i] * rel[c];
+        cdist_status ret = cdist__batch_screen(q, n, A, B, cut, out);
+        CHECK(ret == CDIST_OK || ret == CDIST_ERR_NOT_FINITE || ret == CDIST_ERR_ZERO_VECTOR ||
+                  ret == CDIST_ERR_NOT_UNIT || ret == CDIST_ERR_NEGATIVE_RADIUS || ret == CDIST_ERR_OUT_OF_RANGE,
+              "screen %s: %s", what, cdist_status_name(ret));
+        for (size_t i = 0; i < n; i++) {
+            int ok;
+            if (st[i]) ok = isnan(out[i]);
+            else {
+                double d = exact[i], L = scale_of(i, d);
+                int same = fabs(out[i] - d) <= 2.0 * ulp(L);
+                if (out[i] == -INFINITY) ok = d <= cut[i] + 1e-13 * L;
+                else ok = same || (out[i] > cut[i] && out[i] <= d + 2.0 * ulp(L));
+                if (rel[c] == 0.5 || rel[c] == 2.0) {
+                    far += d > 1e-3 * L;
+                    far_decided += d > 1e-3 * L && !same;
+                }
+            }
+            if (!ok && bad++ < 3)
+                CHECK(0, "screen %s entry %zu, cutoff %.17g: %.17g, distance %.17g (%s)", what, i, cut[i], out[i],
+                      exact[i], cdist_status_name(st[i]));
+        }
+    }
+    CHECK(bad == 0, "screen %s: %d verdicts wrong", what, bad);
+    CHECK(far_decided * 2 >= far, "screen %s: %d of %d entries with the cutoff at half or twice the distance decided "
+          "by the grid", what, far_decided, far);
+    printf("  %-6s screen: %d of %d entries decided by the grid at half or twice their distance\n", what, far_decided,
+           far);
+}
+
 typedef unsigned (*sfn)(const cdist__job *, double, size_t, int, int, ck_block *);
 typedef void (*ffn)(ck_block *, int);
 
@@ -236,7 +283,7 @@ typedef void (*ffn)(ck_block *, int);
 static void check_setup(const char *name, sfn setup, ffn final, int lanes, cdist_query *q, size_t n)
 {
     cdist__job job = {CDIST_KIND_CIRCLE_CIRCLE, n, (const char *)A, (const char *)B, sizeof A[0], sizeof B[0],
-                      NULL, D, NULL, 64, CD_OUT_DISTANCE, 0, NULL};
+                      NULL, D, NULL, 64, CD_OUT_DISTANCE, 0, NULL, NULL};
     static ck_block blk;
     int differ = 0, accept_bad = 0, checked = 0, dist_differ = 0;
     for (size_t lo = 0; lo < n; lo += 64) {
@@ -354,6 +401,7 @@ int main(int argc, char **argv)
         if (s == 0)
             CHECK(left_file * 20 <= valid_file, "random: %d of %d valid entries left", left_file, valid_file);
         check_batch(q, n, sets[s]);
+        check_screen(q, n, sets[s]);
         cdist_query_set_threads(q, 2);
         check_batch(q, n, sets[s]);
         cdist_query_set_threads(q, 1);

@@ -160,7 +160,7 @@ static int check_kernel(const char *name, kfn k, cdist_query *q, int shape, size
     cdist_kind kind = shape == LK_LINE ? CDIST_KIND_LINE_CIRCLE
                       : shape == LK_RAY ? CDIST_KIND_RAY_CIRCLE
                                         : CDIST_KIND_SEGMENT_CIRCLE;
-    cdist__job job = {kind, n, (const char *)A, (const char *)C, sizeof A[0], sizeof C[0], NULL, D, NULL, 64, CD_OUT_DISTANCE, 0, NULL};
+    cdist__job job = {kind, n, (const char *)A, (const char *)C, sizeof A[0], sizeof C[0], NULL, D, NULL, 64, CD_OUT_DISTANCE, 0, NULL, NULL};
     int bad = 0, wrong_left = 0, left_valid = 0, answered = 0, identical = 0;
     *left_file = 0;
     double tol = q->unit_tol;
@@ -283,7 +283,7 @@ static void check_strides(cdist_query *q)
     for (int v = 0; v < 3; v++) {
         if (!ks[v]) continue;
         cdist__job job = {CDIST_KIND_LINE_CIRCLE, N, (const char *)&items[N - 1].line, (const char *)&c,
-                          -(ptrdiff_t)sizeof items[0], 0, NULL, d, NULL, 64, CD_OUT_DISTANCE, 0, NULL};
+                          -(ptrdiff_t)sizeof items[0], 0, NULL, d, NULL, 64, CD_OUT_DISTANCE, 0, NULL, NULL};
         bad = 0;
         for (size_t lo = 0; lo < N; lo += 64) {
             size_t cnt = N - lo < 64 ? N - lo : 64;

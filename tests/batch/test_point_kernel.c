@@ -61,7 +61,7 @@ static void check_kernel(const char *name, kfn k, cdist_query *q, double tol)
     cdist_query_set_unit_tolerance(q, tol);
     for (int disk = 0; disk < 2; disk++) {
         cdist__job job = {disk ? CDIST_KIND_POINT_DISK : CDIST_KIND_POINT_CIRCLE, N, (const char *)P, (const char *)C,
-                      sizeof P[0], sizeof C[0], NULL, D, NULL, 64, CD_OUT_DISTANCE, 0, NULL};
+                      sizeof P[0], sizeof C[0], NULL, D, NULL, 64, CD_OUT_DISTANCE, 0, NULL, NULL};
         int bad = 0, wrong_left = 0, checked = 0;
         for (size_t lo = 0; lo < N; lo += 64) {
             size_t cnt = N - lo < 64 ? N - lo : 64;
@@ -110,7 +110,7 @@ static void check_tiny_normals(const char *name, kfn k, cdist_query *q)
     cdist_query_set_unit_tolerance(q, INFINITY);
     for (int disk = 0; disk < 2; disk++) {
         cdist__job job = {disk ? CDIST_KIND_POINT_DISK : CDIST_KIND_POINT_CIRCLE, NT, (const char *)tp, (const char *)tc,
-                          sizeof tp[0], sizeof tc[0], NULL, td, NULL, 64, CD_OUT_DISTANCE, 0, NULL};
+                          sizeof tp[0], sizeof tc[0], NULL, td, NULL, 64, CD_OUT_DISTANCE, 0, NULL, NULL};
         for (int i = 0; i < NT; i++) td[i] = -1.0;
         uint64_t left = k(&job, disk, INFINITY, 0, NT);
         for (int i = 0; i < NT; i++) {
