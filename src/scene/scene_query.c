@@ -99,6 +99,9 @@ typedef struct broad {
     const double *reach; /* time of impact: by id, how far the object's solid moves; a pair is
                           * kept when its distance may be <= delta + reach[i] + reach[j] */
     int list;        /* the pair list of a moving scene: every pair whose boxes are within lim */
+    int screen;      /* the narrow phase screens pairs of circle cores (cdist__batch_screen), whose
+                      * first grid costs about what the bounds of cdist__scene_excluded cost and
+                      * decides far more pairs: those bounds are left out for them */
 } broad;
 
 static void push(broad *b, uint64_t key)
@@ -156,7 +159,8 @@ static void test_pos(broad *b, uint32_t pa, uint32_t pb)
         return;
     }
     if (b->link ? link_excluded(oa, ob)
-                : cdist__scene_excluded(oa, ob, b->reach ? b->delta + b->reach[i] + b->reach[j] : b->delta, 0))
+                : !(b->screen && cdist__scene_circle_pair(oa, ob)) &&
+                      cdist__scene_excluded(oa, ob, b->reach ? b->delta + b->reach[i] + b->reach[j] : b->delta, 0))
         return;
     push(b, (uint64_t)i << 32 | j);
 }
@@ -297,7 +301,7 @@ static int list_action(narrow *w, size_t k, const cdist__scene_obj *a, const cdi
         }
     }
     (*box)++;
-    if (cdist__scene_excluded(a, b, w->lim, 0)) {
+    if (!(w->hs && cdist__scene_circle_pair(a, b)) && cdist__scene_excluded(a, b, w->lim, 0)) {
         list_learn(w, k, mm, w->lim, NAN);
         return ACT_SKIP;
     }
@@ -696,7 +700,7 @@ static cdist_status list_make(cdist_query *q, cdist_scene *s, double delta, pool
     double mean = s->step_count ? s->step_sum / (double)s->step_count : 0.0;
     double skin = fmin(CD_SCENE_SKIN_STEPS * mean, boxes ? extent / (double)boxes : 0.0);
     double reach = fmax(delta, 0.0) + skin;
-    broad b = {s, s, 1, reach, delta, 0, s->cand, 0, s->cand_cap, 0, 0, NULL, 1};
+    broad b = {s, s, 1, reach, delta, 0, s->cand, 0, s->cand_cap, 0, 0, NULL, 1, 0};
     cdist_status st = broad_run(q, &b, p, "pairs_within");
     if (st || (st = sort_keys(q, s->cand, b.n))) return st;
     if (s->list_cap < b.n) {
@@ -737,7 +741,7 @@ static cdist_status pairs_run(cdist_query *q, cdist_scene *sa, cdist_scene *sb, 
     cdist_query *handles[256], **screen;
     pool p;
     pool_start(&p, call_threads(q, sa, handles, &screen));
-    broad b = {sa, sb, sa == sb, fmax(delta, 0.0), delta, 0, sa->cand, 0, sa->cand_cap, 0, 0, NULL, 0};
+    broad b = {sa, sb, sa == sb, fmax(delta, 0.0), delta, 0, sa->cand, 0, sa->cand_cap, 0, 0, NULL, 0, screen != NULL};
     if (list) {
         if (reuse || !(st = list_make(q, sa, delta, &p))) b.n = sa->list_n;
     } else if (!(st = broad_run(q, &b, &p, what))) {
@@ -910,7 +914,7 @@ static double link_box_reach(const cdist_scene *s)
 
 static cdist_status linked_run(cdist_query *q, cdist_scene *s, cdist_scene_link *out, size_t capacity, size_t *count)
 {
-    broad b = {s, s, 1, link_box_reach(s), 0.0, 0, s->cand, 0, s->cand_cap, 0, 1, NULL, 0};
+    broad b = {s, s, 1, link_box_reach(s), 0.0, 0, s->cand, 0, s->cand_cap, 0, 1, NULL, 0, 0};
     pair_job job = {.chunk = CD_SCENE_CHUNK, .res_size = sizeof(cdist_link), .one = link_one};
     cdist_status st = pair_job_run(q, s, &b, "linked_pairs", &job);
     cdist_link *res = job.res;
@@ -1049,7 +1053,7 @@ static cdist_status toi_run(cdist_query *q, cdist_scene *s, const cdist_motion *
     double lim = target + tolerance;
     for (size_t i = 0; i < s->n; i++) reach[i] *= 1.0 + CD_SCENE_TOI_REACH_REL;
     most *= 1.0 + CD_SCENE_TOI_REACH_REL;
-    broad b = {s, s, 1, fmax(lim, 0.0) + 2.0 * most, lim, 0, s->cand, 0, s->cand_cap, 0, 0, reach, 0};
+    broad b = {s, s, 1, fmax(lim, 0.0) + 2.0 * most, lim, 0, s->cand, 0, s->cand_cap, 0, 0, reach, 0, 0};
     toi_args args = {motions, stride, target, tolerance, max_iterations};
     pair_job job = {.chunk = CD_SCENE_TOI_CHUNK, .res_size = sizeof(cdist_toi_result), .ctx = &args, .one = toi_one};
     st = pair_job_run(q, s, &b, "toi", &job);
@@ -1367,7 +1371,7 @@ cdist_status cdist_scene_within(cdist_query *q, cdist_scene *s, cdist_scene_kind
     cdist__scene_obj qo;
     if (!(st = check_delta(q, delta, out, capacity)) && !(st = query_object(q, kind, object, &qo)) &&
         !(st = cdist__scene_prepare(q, s))) {
-        broad b = {s, s, 0, fmax(delta, 0.0), delta, 0, s->cand, 0, s->cand_cap, 0, 0, NULL, 0};
+        broad b = {s, s, 0, fmax(delta, 0.0), delta, 0, s->cand, 0, s->cand_cap, 0, 0, NULL, 0, 0};
         s->list_ok = 0;
         near_q c;
         memset(&c, 0, sizeof c);
