@@ -330,7 +330,7 @@ static void run_chunk(narrow *w, cdist_query *h, cdist_query *hs, size_t c)
     cdist_circle ca[CD_SCENE_CHUNK], cb[CD_SCENE_CHUNK];
     double dist[CD_SCENE_CHUNK], cut[CD_SCENE_CHUNK];
     unsigned char act[CD_SCENE_CHUNK];
-    double mm[CD_SCENE_CHUNK], mg[CD_SCENE_CHUNK]; /* list: the objects' motions, the margin */
+    double mm[CD_SCENE_CHUNK], mg[CD_SCENE_CHUNK]; /* the objects' motions (list), the margin */
     for (size_t k = lo; k < hi; k++) {
         size_t i, j;
         const cdist__scene_obj *b = key_pair(w, k, &i, &j), *a = &w->sa->obj[i];
@@ -340,7 +340,8 @@ static void run_chunk(narrow *w, cdist_query *h, cdist_query *hs, size_t c)
             what = ACT_SCREEN;
             ca[nc] = a->g.circle;
             cb[nc] = b->g.circle;
-            cut[nc] = screen_cutoff(w->lim, w->lo ? mg[k - lo] : cdist__scene_margin(a, b), a->r + b->r);
+            if (!w->lo) mg[k - lo] = cdist__scene_margin(a, b);
+            cut[nc] = screen_cutoff(w->lim, mg[k - lo], a->r + b->r);
             nc++;
         }
         past += what != ACT_SKIP;
@@ -355,7 +356,7 @@ static void run_chunk(narrow *w, cdist_query *h, cdist_query *hs, size_t c)
         const cdist__scene_obj *b = key_pair(w, k, &i, &j), *a = &w->sa->obj[i];
         double margin = w->lo ? mg[k - lo] : 0.0, d;
         if (act[k - lo] == ACT_SCREEN) {
-            if (!w->lo) margin = cdist__scene_margin(a, b);
+            margin = mg[k - lo];
             d = dist[nc++] - (a->r + b->r);
             /* above: d is the distance or a lower bound of it; otherwise the full query below
              * learns the exact distance */
