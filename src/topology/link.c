@@ -167,56 +167,74 @@ static cdist_status link_tori_entry(cdist_query *q, const void *a, const void *b
     return cdist_link_tori(q, a, b, out);
 }
 
+static void link_error_at(void *out) { link_set_error(out); }
+
+typedef struct link_job {
+    link_kind kind;
+    const char *a, *b;
+    ptrdiff_t a_stride, b_stride;
+    cdist_link *out;
+} link_job;
+
+static cdist_status link_entry(cdist_query *q, const void *ctx, size_t i)
+{
+    const link_job *j = ctx;
+    return j->kind.fn(q, j->a + (ptrdiff_t)i * j->a_stride, j->b + (ptrdiff_t)i * j->b_stride, &j->out[i]);
+}
+
 static cdist_status link_batch(cdist_query *q, link_kind kind, size_t n, const void *a, ptrdiff_t a_stride,
                                const void *b, ptrdiff_t b_stride, cdist_link *out, cdist_status *statuses)
 {
     if (n == 0) return CDIST_OK;
-    if (!q || !a || !b || !out) {
+    cdist__span in[2] = {cdist__span_of(a, n, a_stride, kind.size, "first object array"),
+                         cdist__span_of(b, n, b_stride, kind.size, "second object array")};
+    cdist_status st = cdist__topology_begin(q, n, q && a && b && out, out, sizeof *out, link_error_at, statuses,
+                                            "a handle, object array or output array is NULL", in, 2);
+    if (st) return st;
+    link_job job = {kind, a, b, a_stride, b_stride, out};
+    return cdist__topology_run(q, n, link_entry, &job, statuses);
+}
+
+cdist_status cdist__topology_begin(cdist_query *q, size_t n, int args_ok, void *out, size_t out_size,
+                                   void (*set_error)(void *), cdist_status *statuses, const char *missing,
+                                   const cdist__span *in, int n_in)
+{
+    if (!args_ok) {
         for (size_t i = 0; i < n; i++) {
-            if (out) link_set_error(&out[i]);
+            if (out) set_error((char *)out + i * out_size);
             if (statuses) statuses[i] = CDIST_ERR_NULL_ARGUMENT;
         }
-        return cdist__topology_batch_report(q, SIZE_MAX, CDIST_ERR_NULL_ARGUMENT,
-                                            "a handle, object array or output array is NULL");
+        return cdist__topology_batch_report(q, SIZE_MAX, CDIST_ERR_NULL_ARGUMENT, missing);
     }
-    cdist__span s[4] = {cdist__span_of(a, n, a_stride, kind.size, "first object array"),
-                        cdist__span_of(b, n, b_stride, kind.size, "second object array"),
-                        cdist__span_of(out, n, sizeof *out, sizeof *out, "results"),
-                        cdist__span_of(statuses, n, sizeof *statuses, sizeof *statuses, statuses ? "statuses" : NULL)};
-    cdist_status st = cdist__topology_overlap(q, s, 4, 2);
-    if (st) return st;
-    cdist__topology_failure fail = {SIZE_MAX, CDIST_OK, ""};
-    for (size_t i = 0; i < n; i++) {
-        const char *ai = (const char *)a + (ptrdiff_t)i * a_stride, *bi = (const char *)b + (ptrdiff_t)i * b_stride;
-        st = kind.fn(q, ai, bi, &out[i]);
-        if (statuses) statuses[i] = st;
-        cdist__topology_note(q, &fail, i, st);
-    }
-    return cdist__topology_finish(q, &fail);
-}
-
-void cdist__topology_note(const cdist_query *q, cdist__topology_failure *f, size_t i, cdist_status st)
-{
-    if (!st || f->first != SIZE_MAX) return;
-    f->first = i;
-    f->status = st;
-    if (st != CDIST_ERR_HANDLE_BUSY) memcpy(f->message, q->message, sizeof f->message);
-}
-
-cdist_status cdist__topology_finish(cdist_query *q, const cdist__topology_failure *f)
-{
-    if (f->first == SIZE_MAX) return CDIST_OK;
-    if (f->status == CDIST_ERR_HANDLE_BUSY) return f->status;
-    return cdist__topology_batch_report(q, f->first, f->status, f->message);
-}
-
-cdist_status cdist__topology_overlap(cdist_query *q, const cdist__span *s, int count, int n_inputs)
-{
+    cdist__span s[8];
+    memcpy(s, in, (size_t)n_in * sizeof *s);
+    s[n_in] = cdist__span_of(out, n, (ptrdiff_t)out_size, out_size, "results");
+    s[n_in + 1] = cdist__span_of(statuses, n, sizeof *statuses, sizeof *statuses, statuses ? "statuses" : NULL);
     const char *x, *y;
-    if (!cdist__spans_overlap(s, count, n_inputs, &x, &y)) return CDIST_OK;
+    if (!cdist__spans_overlap(s, n_in + 2, n_in, &x, &y)) return CDIST_OK;
     char why[200];
     snprintf(why, sizeof why, CDIST__OVERLAP_MESSAGE, x, y);
     return cdist__topology_batch_report(q, SIZE_MAX, CDIST_ERR_OVERLAP, why);
+}
+
+cdist_status cdist__topology_run(cdist_query *q, size_t n, cdist_status (*entry)(cdist_query *, const void *, size_t),
+                                 const void *ctx, cdist_status *statuses)
+{
+    size_t first = SIZE_MAX; /* the lowest failing entry, its status and message */
+    cdist_status fail = CDIST_OK;
+    char message[CD_MESSAGE_LEN] = "";
+    for (size_t i = 0; i < n; i++) {
+        cdist_status st = entry(q, ctx, i);
+        if (statuses) statuses[i] = st;
+        if (st && first == SIZE_MAX) {
+            first = i;
+            fail = st;
+            if (st != CDIST_ERR_HANDLE_BUSY) memcpy(message, q->message, sizeof message);
+        }
+    }
+    if (first == SIZE_MAX) return CDIST_OK;
+    if (fail == CDIST_ERR_HANDLE_BUSY) return fail;
+    return cdist__topology_batch_report(q, first, fail, message);
 }
 
 cdist_status cdist__topology_batch_report(cdist_query *q, size_t first, cdist_status st, const char *message)

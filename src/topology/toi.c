@@ -196,36 +196,40 @@ cdist_status cdist_toi(cdist_query *q, const cdist_shape *a, const cdist_motion 
     }
 }
 
+static void toi_error_at(void *out) { toi_set_error(out); }
+
+typedef struct toi_job {
+    const char *a, *ma, *b, *mb;
+    ptrdiff_t a_stride, ma_stride, b_stride, mb_stride;
+    double target, tolerance;
+    int max_iterations;
+    cdist_toi_result *out;
+} toi_job;
+
+static cdist_status toi_entry(cdist_query *q, const void *ctx, size_t i)
+{
+    const toi_job *j = ctx;
+    const void *mai = j->ma ? j->ma + (ptrdiff_t)i * j->ma_stride : NULL;
+    const void *mbi = j->mb ? j->mb + (ptrdiff_t)i * j->mb_stride : NULL;
+    return cdist_toi(q, (const void *)(j->a + (ptrdiff_t)i * j->a_stride), mai,
+                     (const void *)(j->b + (ptrdiff_t)i * j->b_stride), mbi, j->target, j->tolerance,
+                     j->max_iterations, &j->out[i]);
+}
+
 cdist_status cdist_toi_batch(cdist_query *q, size_t n, const cdist_shape *a, ptrdiff_t a_stride,
                              const cdist_motion *ma, ptrdiff_t ma_stride, const cdist_shape *b, ptrdiff_t b_stride,
                              const cdist_motion *mb, ptrdiff_t mb_stride, double target, double tolerance,
                              int max_iterations, cdist_toi_result *out, cdist_status *statuses)
 {
     if (n == 0) return CDIST_OK;
-    if (!q || !a || !b || !out) {
-        for (size_t i = 0; i < n; i++) {
-            if (out) toi_set_error(&out[i]);
-            if (statuses) statuses[i] = CDIST_ERR_NULL_ARGUMENT;
-        }
-        return cdist__topology_batch_report(q, SIZE_MAX, CDIST_ERR_NULL_ARGUMENT, "a handle, shape array or output array is NULL");
-    }
-    cdist__span s[6] = {cdist__span_of(a, n, a_stride, sizeof *a, "first shape array"),
-                        cdist__span_of(ma, n, ma_stride, sizeof *ma, ma ? "first motion array" : NULL),
-                        cdist__span_of(b, n, b_stride, sizeof *b, "second shape array"),
-                        cdist__span_of(mb, n, mb_stride, sizeof *mb, mb ? "second motion array" : NULL),
-                        cdist__span_of(out, n, sizeof *out, sizeof *out, "results"),
-                        cdist__span_of(statuses, n, sizeof *statuses, sizeof *statuses, statuses ? "statuses" : NULL)};
-    cdist_status st = cdist__topology_overlap(q, s, 6, 4);
+    cdist__span in[4] = {cdist__span_of(a, n, a_stride, sizeof *a, "first shape array"),
+                         cdist__span_of(ma, n, ma_stride, sizeof *ma, ma ? "first motion array" : NULL),
+                         cdist__span_of(b, n, b_stride, sizeof *b, "second shape array"),
+                         cdist__span_of(mb, n, mb_stride, sizeof *mb, mb ? "second motion array" : NULL)};
+    cdist_status st = cdist__topology_begin(q, n, q && a && b && out, out, sizeof *out, toi_error_at, statuses,
+                                            "a handle, shape array or output array is NULL", in, 4);
     if (st) return st;
-    cdist__topology_failure fail = {SIZE_MAX, CDIST_OK, ""};
-    for (size_t i = 0; i < n; i++) {
-        const cdist_shape *ai = (const void *)((const char *)a + (ptrdiff_t)i * a_stride);
-        const cdist_shape *bi = (const void *)((const char *)b + (ptrdiff_t)i * b_stride);
-        const cdist_motion *mai = ma ? (const void *)((const char *)ma + (ptrdiff_t)i * ma_stride) : NULL;
-        const cdist_motion *mbi = mb ? (const void *)((const char *)mb + (ptrdiff_t)i * mb_stride) : NULL;
-        st = cdist_toi(q, ai, mai, bi, mbi, target, tolerance, max_iterations, &out[i]);
-        if (statuses) statuses[i] = st;
-        cdist__topology_note(q, &fail, i, st);
-    }
-    return cdist__topology_finish(q, &fail);
+    toi_job job = {(const char *)a, (const char *)ma, (const char *)b, (const char *)mb, a_stride, ma_stride,
+                   b_stride, mb_stride, target, tolerance, max_iterations, out};
+    return cdist__topology_run(q, n, toi_entry, &job, statuses);
 }

@@ -14,19 +14,18 @@ int cdist__link_count(const cdist__circle *a, const cdist__circle *b, double d, 
  * first is SIZE_MAX) on q, under its in-use flag (a busy or NULL handle is left alone), and
  * returns st. */
 cdist_status cdist__topology_batch_report(cdist_query *q, size_t first, cdist_status st, const char *message);
-/* CDIST_ERR_OVERLAP, reported before anything is written, when an output span overlaps an earlier
- * span (cdist__spans_overlap); else CDIST_OK. */
-cdist_status cdist__topology_overlap(cdist_query *q, const cdist__span *s, int count, int n_inputs);
-
-/* The lowest failing entry of a batch and its message: cdist__topology_note records entry i's
- * status (the first failure only, copying the handle's message), cdist__topology_finish
- * returns CDIST_OK or reports that failure. */
-typedef struct cdist__topology_failure {
-    size_t first; /* SIZE_MAX: none */
-    cdist_status status;
-    char message[CD_MESSAGE_LEN];
-} cdist__topology_failure;
-void cdist__topology_note(const cdist_query *q, cdist__topology_failure *f, size_t i, cdist_status st);
-cdist_status cdist__topology_finish(cdist_query *q, const cdist__topology_failure *f);
+/* The checks of a batch of n > 0 entries before any entry is answered. Arguments missing
+ * (!args_ok): every out[i] (out_size bytes each; none when out is NULL) in its error state by
+ * set_error, every status CDIST_ERR_NULL_ARGUMENT, reported with `missing`. Else out or
+ * statuses overlapping an input (the spans in[0 .. n_in)) or each other (cdist__spans_overlap):
+ * CDIST_ERR_OVERLAP, nothing written. CDIST_OK to go on. */
+cdist_status cdist__topology_begin(cdist_query *q, size_t n, int args_ok, void *out, size_t out_size,
+                                   void (*set_error)(void *), cdist_status *statuses, const char *missing,
+                                   const cdist__span *in, int n_in);
+/* Entries 0 .. n-1 of a batch, one at a time on the calling thread: statuses[i] (when not NULL)
+ * gets entry(q, ctx, i); returns CDIST_OK, else reports the lowest failing entry with its
+ * message. */
+cdist_status cdist__topology_run(cdist_query *q, size_t n, cdist_status (*entry)(cdist_query *, const void *, size_t),
+                                 const void *ctx, cdist_status *statuses);
 
 #endif
