@@ -106,7 +106,8 @@ static cdist_status enter_option_setter(cdist_query *q)
     return CDIST_OK;
 }
 
-/* A public option setter: the *_locked body under the handle's flag (enter_option_setter). */
+/* A public option setter: the *_locked body under the handle's flag (enter_option_setter, which
+ * refuses a NULL handle). */
 #define OPTION_SETTER(name, type, locked)                                                          \
     cdist_status name(cdist_query *q, type value)                                                  \
     {                                                                                              \
@@ -128,7 +129,6 @@ static cdist_status setter_ok(cdist_query *q)
 
 static cdist_status query_set_method_locked(cdist_query *q, cdist_method method)
 {
-    if (!q) return CDIST_ERR_NULL_ARGUMENT;
     if ((unsigned)method > CDIST_METHOD_ITERATION)
         return cdist__fail(q, CDIST_ERR_BAD_OPTION, "method %d is not a cdist_method (0..3)", (int)method);
     q->method = method;
@@ -141,7 +141,6 @@ cdist_method cdist_query_get_method(const cdist_query *q) { return q ? q->method
 
 static cdist_status query_set_unit_tolerance_locked(cdist_query *q, double tol)
 {
-    if (!q) return CDIST_ERR_NULL_ARGUMENT;
     if (!(tol >= 0.0)) return cdist__fail(q, CDIST_ERR_BAD_OPTION, "unit tolerance must be >= 0 (got %g)", tol);
     q->unit_tol = tol;
     return setter_ok(q);
@@ -153,7 +152,6 @@ double cdist_query_get_unit_tolerance(const cdist_query *q) { return q ? q->unit
 
 static cdist_status query_set_curve_samples_locked(cdist_query *q, int samples)
 {
-    if (!q) return CDIST_ERR_NULL_ARGUMENT;
     if (samples < 8 || samples > CD_MAX_CURVE_SAMPLES)
         return cdist__fail(q, CDIST_ERR_BAD_OPTION, "curve samples must be in [8, %d] (got %d)", CD_MAX_CURVE_SAMPLES,
                        samples);
@@ -174,7 +172,6 @@ int cdist_query_get_curve_samples(const cdist_query *q) { return q ? q->curve_sa
 
 static cdist_status query_set_max_iterations_locked(cdist_query *q, int max_iterations)
 {
-    if (!q) return CDIST_ERR_NULL_ARGUMENT;
     if (max_iterations < 1)
         return cdist__fail(q, CDIST_ERR_BAD_OPTION, "max iterations must be >= 1 (got %d)", max_iterations);
     q->max_iterations = max_iterations;
