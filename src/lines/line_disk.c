@@ -100,18 +100,13 @@ CD_FMA_CLONES static cdist_status linear_disk(cdist_query *q, cdist_method metho
                 cdist__best_offer_flag(loc, k->equidistant, k->d2, k->p[0], k->p[1], k->param[0], k->param[1]);
             }
         }
-        if (!both && tmin < lo) {
+        /* the parts of the range before and after [lo, hi] */
+        const double from[2] = {tmin, hi}, to[2] = {lo, tmax};
+        for (int part = 0; part < 2 && !both; part++) {
+            if (!(from[part] < to[part])) continue;
             cdist__best t;
             cdist__best_init(&t, b->scale);
-            if ((st = cdist__linear_circle_ex(q, method, B, M, tmin, lo, d, &t, &u1))) return st;
-            if (u1 == CDIST_METHOD_ROBUST) *used = u1;
-            double m2 = cdist__best_merge(loc, &t, v3(0, 0, 0), 0);
-            if (cdist__best_is_equidistant(&t) && m2 < eq_d2) eq_d2 = m2;
-        }
-        if (!both && hi < tmax) {
-            cdist__best t;
-            cdist__best_init(&t, b->scale);
-            if ((st = cdist__linear_circle_ex(q, method, B, M, hi, tmax, d, &t, &u1))) return st;
+            if ((st = cdist__linear_circle_ex(q, method, B, M, from[part], to[part], d, &t, &u1))) return st;
             if (u1 == CDIST_METHOD_ROBUST) *used = u1;
             double m2 = cdist__best_merge(loc, &t, v3(0, 0, 0), 0);
             if (cdist__best_is_equidistant(&t) && m2 < eq_d2) eq_d2 = m2;
