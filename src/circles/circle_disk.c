@@ -13,18 +13,7 @@
 /* ------------------------------------------------------------------------------------------ */
 /* Circle to disk                                                                               */
 
-/* The circle P(t) = rho (cos t A + sin t B) (centre at the origin) in the disk's frame:
- * x(t) = X[0] + X[1] cos t + X[2] sin t, the same for y, z; S(t) = Delta . Delta'. */
-typedef struct cdk {
-    double X[3], Y[3], Z[3], S[3];
-    cdist__ring rg;          /* the same circle for the ring evaluator (w = (x, y, 0), h = z) */
-    double E0;           /* X0^2 + Y0^2 - R^2, to the last bit (see rim_excess) */
-    int small_circle;    /* rho <= R: rim_excess expands around the circle's centre */
-    double R;            /* disk radius */
-    double rho;          /* circle radius */
-    vec3 A, B, D, n, u, v;
-    const cdist__circle *c, *d; /* the circle (centre at the origin) and the disk */
-} cdk;
+typedef cdist__cdk cdk;
 
 CD_INLINE void cdk_init(cdk *k, const cdist__circle *c, const cdist__circle *d)
 {
@@ -93,11 +82,19 @@ CD_INLINE double rim_excess(const cdk *k, double x, double y, double cs, double 
     return k->E0 + (2.0 * (k->X[0] * a + k->Y[0] * b) + (a * a + b * b));
 }
 
+/* Where the candidates go: b (the single query: pairs, points, angles) or, b NULL, only their
+ * smallest squared distance (the batch kernel); d2 is b's best so far either way (the offers
+ * below drop only candidates above it), scale b's scale. */
+typedef struct cdk_sink {
+    cdist__best *b;
+    double d2, scale;
+} cdk_sink;
+
 /* Offer the circle point at angle t, (cs, sn) = (cos t, sin t), with its closest disk point (the
- * true point-disk distance); nothing when its distance is far above b's best (CD_CD_FAR_REL). */
-CD_INLINE void cdk_offer_cs(const cdk *k, double t, double cs, double sn, cdist__best *b)
+ * true point-disk distance); nothing when its distance is far above the best (CD_CD_FAR_REL). */
+CD_INLINE void cdk_offer_cs(const cdk *k, double t, double cs, double sn, cdk_sink *o)
 {
-    double far = b->n > 0 ? sqrt(b->c[0].d2) + CD_CD_FAR_REL * b->scale : INFINITY, far2 = far * far;
+    double far = o->d2 < INFINITY ? sqrt(o->d2) + CD_CD_FAR_REL * o->scale : INFINITY, far2 = far * far;
     double x = trig1(k->X, cs, sn), y = trig1(k->Y, cs, sn), z = trig1(k->Z, cs, sn), zz = z * z;
     if (zz > far2) return; /* the distance is at least |z| */
     double ex = rim_excess(k, x, y, cs, sn);
@@ -110,6 +107,8 @@ CD_INLINE void cdk_offer_cs(const cdk *k, double t, double cs, double sn, cdist_
         d2 = fma(dr, dr, zz);
     }
     if (d2 > far2) return;
+    if (d2 < o->d2) o->d2 = d2;
+    if (!o->b) return;
     vec3 P = v_axpy(v_scale(k->rho * cs, k->A), k->rho * sn, k->B);
     vec3 K;
     if (ex <= 0.0) {
@@ -118,14 +117,14 @@ CD_INLINE void cdk_offer_cs(const cdk *k, double t, double cs, double sn, cdist_
         double s = k->R / rho;
         K = v_axpy(v_axpy(k->D, s * x, k->u), s * y, k->v);
     }
-    cdist__best_offer(b, d2, P, K, k->rho > 0.0 ? cdist__wrap_angle(t) : NAN, cdist__polar_angle(x, y));
+    cdist__best_offer(o->b, d2, P, K, k->rho > 0.0 ? cdist__wrap_angle(t) : NAN, cdist__polar_angle(x, y));
 }
 
-CD_INLINE void cdk_offer(const cdk *k, double t, cdist__best *b)
+CD_INLINE void cdk_offer(const cdk *k, double t, cdk_sink *o)
 {
     double sn, cs;
     sincos(t, &sn, &cs);
-    cdk_offer_cs(k, t, cs, sn, b);
+    cdk_offer_cs(k, t, cs, sn, o);
 }
 
 /* Whether the plane crossing first estimated at (cs, sn), with height z there, is certainly far
@@ -133,15 +132,15 @@ CD_INLINE void cdk_offer(const cdk *k, double t, cdist__best *b)
  * point by at most 2 CD_CD_Z_STEP rho (the distance to the disk is 1-Lipschitz), and twice the
  * far margin covers the plain square root used here for hypot. Its offer would then be dropped
  * anyway, so the steps and the offer are skipped. */
-CD_INLINE int cdk_crossing_far(const cdk *k, double cs, double sn, double z, const cdist__best *b)
+CD_INLINE int cdk_crossing_far(const cdk *k, double cs, double sn, double z, const cdk_sink *o)
 {
-    if (b->n == 0) return 0;
+    if (!(o->d2 < INFINITY)) return 0;
     double x = trig1(k->X, cs, sn), y = trig1(k->Y, cs, sn), ex = rim_excess(k, x, y, cs, sn), g = fabs(z);
     if (ex > 0.0) {
         double rho = sqrt(x * x + y * y), dr = k->small_circle ? ex / (rho + k->R) : rho - k->R;
         g = sqrt(dr * dr + z * z);
     }
-    return g - 2.0 * CD_CD_Z_STEP * k->rho > sqrt(b->c[0].d2) + 2.0 * CD_CD_FAR_REL * b->scale;
+    return g - 2.0 * CD_CD_Z_STEP * k->rho > sqrt(o->d2) + 2.0 * CD_CD_FAR_REL * o->scale;
 }
 
 /* Bracketed root of F' in [a, b] with sg F'(a) < 0 < sg F'(b) (sg = 1: a minimum of F, -1: a
@@ -416,10 +415,12 @@ static int cdk_poly_minima(cdist_query *q, const cdk *k, double *ts, int cap, do
 }
 
 /* Parallel planes (within rounding): closed forms (docs/disk.md). Returns 1 when handled. */
-static int cdk_parallel(const cdk *k, cdist__best *b)
+/* Whether the planes are parallel within rounding. */
+CD_INLINE int cdk_is_parallel(const cdk *k) { return cdist__norm2(k->Z[1], k->Z[2]) <= 8.0 * DBL_EPSILON * k->rho; }
+
+static int cdk_parallel(const cdk *k, cdk_sink *o)
 {
-    double sinang = cdist__norm2(k->Z[1], k->Z[2]);
-    if (!(sinang <= 8.0 * DBL_EPSILON * k->rho)) return 0;
+    if (!cdk_is_parallel(k)) return 0;
     double ex = k->X[0], ey = k->Y[0], e = cdist__norm2(ex, ey);
     double rho = k->rho, R = k->R;
     double tol = 8.0 * DBL_EPSILON * cdist__fmax(cdist__fmax(rho, R), e);
@@ -429,13 +430,13 @@ static int cdk_parallel(const cdk *k, cdist__best *b)
     double t0;
     if (e <= tol) {
         t0 = 0.0;
-        cdk_offer(k, t0, b);
-        if (rho > 0.0) b->equidistant = 1;
+        cdk_offer(k, t0, o);
+        if (rho > 0.0) o->b->equidistant = 1;
         return 1;
     }
     t0 = atan2(-v_dot(Ein, k->B), -v_dot(Ein, k->A));
-    cdk_offer(k, t0, b);
-    if (fabs(e - rho) < R && rho > 0.0 && R > 0.0) b->equidistant = 1; /* an arc lies over the face */
+    cdk_offer(k, t0, o);
+    if (fabs(e - rho) < R && rho > 0.0 && R > 0.0) o->b->equidistant = 1; /* an arc lies over the face */
     return 1;
 }
 
@@ -454,55 +455,101 @@ CD_INLINE int cdk_rim_far(const cdk *k, double dcap, double scale)
     return sqrt(lr * lr + lz * lz) > dcap + CD_CD_FAR_REL * scale;
 }
 
-CD_INLINE cdist_status cdk_solve(cdist_query *q, cdist_method method, const cdk *k, cdist__best *b, double dcap0, int rim,
-                                 cdist_method *used, int *rim_certified)
+/* The candidates at the extremes and zeros of the height z(t) = Z0 + amp cos(t - phi). */
+CD_INLINE void cdk_height(const cdk *k, cdk_sink *o)
 {
-    *used = method;
-    *rim_certified = 1; /* the parallel closed forms */
-    if (cdk_parallel(k, b)) return CDIST_OK;
-    *rim_certified = 0;
-    /* Zeros and extremes of the height z(t) = Z0 + amp cos(t - phi). */
     double amp = cdist__norm2(k->Z[1], k->Z[2]), phi = atan2(k->Z[2], k->Z[1]);
     /* The extremes' cos and sin are (Z1, Z2) / amp and their negatives, as accurate as sincos of
      * the rounded phi and without it (the angles reported are still phi, phi + pi). */
     double ce = k->Z[1] / amp, se = k->Z[2] / amp;
-    cdk_offer_cs(k, phi, ce, se, b);
-    cdk_offer_cs(k, phi + M_PI, -ce, -se, b);
+    cdk_offer_cs(k, phi, ce, se, o);
+    cdk_offer_cs(k, phi + M_PI, -ce, -se, o);
     double cz = -k->Z[0] / amp;
-    if (fabs(cz) <= 1.0) {
-        double w = acos(cz);
-        for (int s = -1; s <= 1; s += 2) {
-            double t = phi + s * w;
-            /* Newton on z itself (two steps of at most CD_CD_Z_STEP) to land on the plane. A step
-             * below half an ulp of t leaves t as it was: its cos and sin are reused. */
-            double tl = NAN, sn = 0.0, cs = 0.0; /* the angle of the last sincos */
-            int skip = 0;
-            for (int it = 0; it < 2; it++) {
-                if (!(t == tl)) {
-                    sincos(t, &sn, &cs);
-                    tl = t;
-                }
-                double z = trig1(k->Z, cs, sn), zp = trig1d(k->Z, cs, sn);
-                if (it == 0 && cdk_crossing_far(k, cs, sn, z, b)) {
-                    skip = 1;
-                    break;
-                }
-                if (zp == 0.0 || z == 0.0) break;
-                double st = z / zp;
-                if (fabs(st) > CD_CD_Z_STEP) break;
-                t -= st;
+    if (!(fabs(cz) <= 1.0)) return;
+    double w = acos(cz);
+    for (int s = -1; s <= 1; s += 2) {
+        double t = phi + s * w;
+        /* Newton on z itself (two steps of at most CD_CD_Z_STEP) to land on the plane. A step
+         * below half an ulp of t leaves t as it was: its cos and sin are reused. */
+        double tl = NAN, sn = 0.0, cs = 0.0; /* the angle of the last sincos */
+        int skip = 0;
+        for (int it = 0; it < 2; it++) {
+            if (!(t == tl)) {
+                sincos(t, &sn, &cs);
+                tl = t;
             }
-            if (skip) continue;
-            if (t == tl) cdk_offer_cs(k, t, cs, sn, b);
-            else cdk_offer(k, t, b);
+            double z = trig1(k->Z, cs, sn), zp = trig1d(k->Z, cs, sn);
+            if (it == 0 && cdk_crossing_far(k, cs, sn, z, o)) {
+                skip = 1;
+                break;
+            }
+            if (zp == 0.0 || z == 0.0) break;
+            double st = z / zp;
+            if (fabs(st) > CD_CD_Z_STEP) break;
+            t -= st;
         }
+        if (skip) continue;
+        if (t == tl) cdk_offer_cs(k, t, cs, sn, o);
+        else cdk_offer(k, t, o);
     }
+}
+
+/* The scale of the rim search's thresholds (the flat test, the cut-off). */
+CD_INLINE double cdk_scale(const cdk *k)
+{
+    return cdist__fmax(cdist__fmax(k->rho, k->R), sqrt(k->X[0] * k->X[0] + k->Y[0] * k->Y[0] + k->Z[0] * k->Z[0]));
+}
+
+/* Whether the certified minimum of the rim distance, dq, can be the answer or tie with it: the
+ * engine's own cut-off in minima mode (cc_scan.c), the cap and a tie. */
+CD_INLINE int cdk_rim_below_cap(double dq, double dcap, double scale)
+{
+    return dq <= dcap * (1 + 8 * DBL_EPSILON) + CD_TIE_ULPS * DBL_EPSILON * scale;
+}
+
+/* The minima of F at ts[0 .. n) (their cos and sin into tc, tsn) and the neighbours of the flat
+ * ones near the best: a neighbour of a cluster below the certification width (multiple roots) is
+ * looked for by the dyadic scan. Returns the new count (the scan's minima after the n). */
+static int cdk_flat_scan(const cdk *k, double *ts, double *tc, double *tsn, int n, double scale)
+{
+    double Fv[CDK_CAP], f2v[CDK_CAP], Fbest = INFINITY, flat = CD_CD_FLAT_REL * k->rho * scale;
+    for (int i = 0; i < n; i++) {
+        sincos(ts[i], &tsn[i], &tc[i]);
+        Fv[i] = cdk_rim_cs(k, tc[i], tsn[i], NULL, &f2v[i]);
+        Fbest = cdist__fmin(Fbest, Fv[i]);
+    }
+    int n0 = n;
+    for (int i = 0; i < n0 && n < CDK_CAP; i++)
+        if (Fv[i] <= Fbest + 0.01 * scale * scale && fabs(f2v[i]) <= flat)
+            n += cdk_scan(k, ts[i], ts[i] - 0.15, ts[i] + 0.15, ts + n, CDK_CAP - n);
+    return n;
+}
+
+/* Offer the minima of F at ts[0 .. n), the first nc at their cos and sin tc, tsn. */
+CD_INLINE void cdk_offer_minima(const cdk *k, const double *ts, const double *tc, const double *tsn, int n, int nc,
+                                cdk_sink *o)
+{
+    for (int i = 0; i < n; i++) {
+        if (i < nc) cdk_offer_cs(k, ts[i], tc[i], tsn[i], o);
+        else cdk_offer(k, ts[i], o);
+    }
+}
+
+CD_INLINE cdist_status cdk_solve(cdist_query *q, cdist_method method, const cdk *k, cdist__best *b, double dcap0, int rim,
+                                 cdist_method *used, int *rim_certified)
+{
+    cdk_sink o = {b, INFINITY, b->scale};
+    *used = method;
+    *rim_certified = 1; /* the parallel closed forms */
+    if (cdk_parallel(k, &o)) return CDIST_OK;
+    *rim_certified = 0;
+    cdk_height(k, &o);
     /* Critical points of the rim distance (not asked for: the caller has them, see
      * cdist__circle_disk_core_ex). */
     if (!rim) return CDIST_OK;
     double ts[CDK_CAP], tc[CDK_CAP], tsn[CDK_CAP]; /* angles, and cos, sin of the first nc of them */
     int nc = 0;
-    double scale = cdist__fmax(cdist__fmax(k->rho, k->R), sqrt(k->X[0] * k->X[0] + k->Y[0] * k->Y[0] + k->Z[0] * k->Z[0]));
+    double scale = cdk_scale(k);
     int n = -2;
     if (method == CDIST_METHOD_POLYNOMIAL) {
         n = cdk_poly_minima(q, k, ts, CDK_CAP, scale);
@@ -515,22 +562,20 @@ CD_INLINE cdist_status cdk_solve(cdist_query *q, cdist_method method, const cdk 
         *used = CDIST_METHOD_ROBUST;
         /* Only the minima of F matter (the lemma), and only those below the best candidate so
          * far (a z candidate, whose distance is the true one): the engine prunes the rest. */
-        double dcap = b->n > 0 ? cdist__fmin(dcap0, sqrt(b->c[0].d2)) : dcap0, tq, cq, sq, dq;
+        double dcap = o.d2 < INFINITY ? cdist__fmin(dcap0, sqrt(o.d2)) : dcap0, tq, cq, sq, sc;
+        cdist__cc_frame f;
         if (cdk_rim_far(k, dcap, scale)) {
             n = 0;
             *rim_certified = 1;
-        } else if (cdist__cc_quick_minimum(k->c, k->d, &tq, &cq, &sq, &dq)) {
+        } else if (cdist__cc_quick_frame(k->c, k->d, &f, &sc) && cdist__cc_quick(&f, &tq, &cq, &sq)) {
             /* F's global minimum, certified unique: the one minimum of F that can hold G's (a
              * minimum of G on the rim side is a global minimum of F, by the lemma, since
              * G <= F); the others lie above it by the certificate's margin */
             *rim_certified = 1;
             n = 0;
-            /* the engine's own cut-off in minima mode (cc_scan.c): the cap and a tie */
-            if (dq <= dcap * (1 + 8 * DBL_EPSILON) + CD_TIE_ULPS * DBL_EPSILON * scale) {
-                ts[0] = tq;
-                tc[0] = cq;
-                tsn[0] = sq;
-                n = nc = 1;
+            if (cdk_rim_below_cap(cdist__cc_quick_distance(&f, sc, cq, sq), dcap, scale)) {
+                ts[0] = cdist__cc_param(tq);
+                n = 1;
             }
         } else {
             int sampled;
@@ -550,26 +595,43 @@ CD_INLINE cdist_status cdk_solve(cdist_query *q, cdist_method method, const cdk 
             *rim_certified = 0; /* the sampling fallback */
             n = cdk_robust_critical(k, ts, CDK_CAP, scale);
         } else {
-            /* Flat minima near the best: a neighbour of a cluster below the certification width
-             * (multiple roots) is looked for by the dyadic scan. */
-            double Fv[CDK_CAP], f2v[CDK_CAP], Fbest = INFINITY, flat = CD_CD_FLAT_REL * k->rho * scale;
-            for (int i = 0; i < n; i++) {
-                sincos(ts[i], &tsn[i], &tc[i]);
-                Fv[i] = cdk_rim_cs(k, tc[i], tsn[i], NULL, &f2v[i]);
-                Fbest = cdist__fmin(Fbest, Fv[i]);
-            }
             nc = n;
-            int n0 = n;
-            for (int i = 0; i < n0 && n < CDK_CAP; i++)
-                if (Fv[i] <= Fbest + 0.01 * scale * scale && fabs(f2v[i]) <= flat)
-                    n += cdk_scan(k, ts[i], ts[i] - 0.15, ts[i] + 0.15, ts + n, CDK_CAP - n);
+            n = cdk_flat_scan(k, ts, tc, tsn, n, scale);
         }
     }
-    for (int i = 0; i < n; i++) {
-        if (i < nc) cdk_offer_cs(k, ts[i], tc[i], tsn[i], b);
-        else cdk_offer(k, ts[i], b);
-    }
+    cdk_offer_minima(k, ts, tc, tsn, n, nc, &o);
     return CDIST_OK;
+}
+
+CD_FMA_CLONES int cdist__cd_stage_start(cdist__cd_stage *st, const cdist__circle *c, const cdist__circle *d, double bscale,
+                                       int rim)
+{
+    if (c->r == 0.0 || d->r == 0.0) return CD_STAGE_SCALAR;
+    st->c = *c;
+    st->d = *d;
+    cdk *k = &st->k;
+    cdk_init(k, &st->c, &st->d);
+    if (cdk_is_parallel(k)) return CD_STAGE_SCALAR;
+    cdk_sink o = {NULL, INFINITY, bscale};
+    cdk_height(k, &o);
+    st->d2 = o.d2;
+    st->bscale = bscale;
+    if (!rim) return CD_STAGE_DONE;
+    st->scale = cdk_scale(k);
+    st->dcap = o.d2 < INFINITY ? sqrt(o.d2) : INFINITY;
+    if (cdk_rim_far(k, st->dcap, st->scale)) return CD_STAGE_DONE;
+    return cdist__cc_quick_frame(&st->c, &st->d, &st->f, &st->sc) ? CD_STAGE_SEARCH : CD_STAGE_SCALAR;
+}
+
+CD_FMA_CLONES void cdist__cd_stage_finish(cdist__cd_stage *st, double t, double c, double s)
+{
+    if (!cdk_rim_below_cap(cdist__cc_quick_distance(&st->f, st->sc, c, s), st->dcap, st->scale)) return;
+    double ts[CDK_CAP], tc[CDK_CAP], tsn[CDK_CAP];
+    ts[0] = cdist__cc_param(t);
+    int n = cdk_flat_scan(&st->k, ts, tc, tsn, 1, st->scale);
+    cdk_sink o = {NULL, st->d2, st->bscale};
+    cdk_offer_minima(&st->k, ts, tc, tsn, n, 1, &o);
+    st->d2 = o.d2;
 }
 
 /* Circle c (centre at the origin) to disk d (centre relative to c's). An FMA clone: the fma()

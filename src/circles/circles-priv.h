@@ -139,10 +139,13 @@ static inline int cdist__cc_quick_worth(const cdist__cc_frame *f)
 }
 
 /* The same search for circles c0 (parameterised) and c1 as given (no choice of the larger, any
- * centres): 1, the angle *t on c0 (in (-pi, pi]) of the certified unique closest point to c1,
- * its cosine *c and sine *s and the distance *d there; 0 when not certified (or a radius is 0,
- * or the planes are parallel). For circle-disk, whose rim needs only F's global minimum. */
-int cdist__cc_quick_minimum(const cdist__circle *c0, const cdist__circle *c1, double *t, double *c, double *s, double *d);
+ * centres), for circle-disk, whose rim needs only F's global minimum: cdist__cc_quick_frame
+ * sets the frame *f of the pair scaled by *sc and returns whether the search is to run on it
+ * (not when a radius is 0, the planes are parallel or the search cannot certify,
+ * cdist__cc_quick_worth); cdist__cc_quick_distance is the distance at the point (c, s) =
+ * (cos t, sin t) of c0 it finds, in c0's units. */
+int cdist__cc_quick_frame(const cdist__circle *c0, const cdist__circle *c1, cdist__cc_frame *f, double *sc);
+double cdist__cc_quick_distance(const cdist__cc_frame *f, double sc, double c, double s);
 /* Walks [-pi, pi) and hands every critical bracket of F to the sink (docs/circles.md). Fmax:
  * largest F seen at the partition points. */
 int cdist__cc_scan(const cdist__cc_frame *f, cdist__cc_sink *k, double *Fmax);
@@ -184,6 +187,38 @@ cdist_status cdist__cc_robust(cdist_query *q, const cdist__circle *c0, const cdi
  * sampled region, a bound or a closed form (not the sampling fallback). */
 cdist_status cdist__circle_disk_core_ex(cdist_query *q, cdist_method method, const cdist__circle *c, const cdist__circle *d,
                                         double dcap, int rim, cdist__best *b, cdist_method *used, int *rim_certified);
+
+/* The circle P(t) = rho (cos t A + sin t B) (centre at the origin) in the disk's frame:
+ * x(t) = X[0] + X[1] cos t + X[2] sin t, the same for y, z; S(t) = Delta . Delta'
+ * (circle_disk.c). */
+typedef struct cdist__cdk {
+    double X[3], Y[3], Z[3], S[3];
+    cdist__ring rg;      /* the same circle for the ring evaluator (w = (x, y, 0), h = z) */
+    double E0;           /* X0^2 + Y0^2 - R^2, to the last bit (see rim_excess) */
+    int small_circle;    /* rho <= R: rim_excess expands around the circle's centre */
+    double R;            /* disk radius */
+    double rho;          /* circle radius */
+    vec3 A, B, D, n, u, v;
+    const cdist__circle *c, *d; /* the circle (centre at the origin) and the disk */
+} cdist__cdk;
+
+/* The distance of cdist__circle_disk_core_ex (ROBUST method, cap INFINITY, a fresh collector
+ * of scale bscale) in stages, the single query's own steps, for the batch kernel, which runs
+ * the rim's certified search of many entries in lanes (src/batch/cd_kernel.c):
+ * cdist__cd_stage_start (c, d in the frame's units) offers the candidates over the face and
+ * returns CD_STAGE_DONE (d2 is the squared distance: no rim minimum can be below it, or rim =
+ * 0), CD_STAGE_SEARCH (the certified search cdist__cc_quick is to run on f; with the angle t
+ * and the cos c and sin s it finds, cdist__cd_stage_finish completes d2) or CD_STAGE_SCALAR
+ * (the query takes a path the stages do not: a zero radius, parallel planes, the engine). */
+typedef struct cdist__cd_stage {
+    cdist__circle c, d;
+    cdist__cdk k;
+    double d2, bscale, scale, dcap, sc;
+    cdist__cc_frame f;
+} cdist__cd_stage;
+enum { CD_STAGE_DONE, CD_STAGE_SEARCH, CD_STAGE_SCALAR };
+int cdist__cd_stage_start(cdist__cd_stage *st, const cdist__circle *c, const cdist__circle *d, double bscale, int rim);
+void cdist__cd_stage_finish(cdist__cd_stage *st, double t, double c, double s);
 #define CD_DISK_METHODS (CD_HAS(CDIST_METHOD_POLYNOMIAL) | CD_HAS(CDIST_METHOD_ROBUST))
 #define CD_DISK_AUTO CDIST_METHOD_ROBUST
 
