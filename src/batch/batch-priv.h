@@ -73,4 +73,20 @@ uint64_t cdist__line_distance_kernel(const cdist__job *job, int shape, double un
  * (src/batch/cc_kernel.c). */
 uint64_t cdist__cc_distance_kernel(const cdist__job *job, double unit_tol, size_t lo, size_t count);
 
+/* The single circle-circle query's certified search (cdist__cc_quick) of the frames f[k] that
+ * are not NULL, k < count <= 64, in lanes (one frame per lane; lanes: 1, 4 or 8, the
+ * instruction set's, the caller's check; 0: this CPU's widest): the mask of those it
+ * certifies, with the angle found, its cosine and sine in t[k], c[k], s[k], each bit-identical
+ * to cdist__cc_quick's (src/batch/cc_kernel.c). */
+struct cdist__cc_frame;
+uint64_t cdist__cc_quick_lanes(const struct cdist__cc_frame *const *f, int count, int lanes, double *t, double *c,
+                               double *s);
+
+/* Distance kernels of circle-disk (disk = 0) and disk-disk (1), ROBUST method, for entries
+ * [lo, lo + count), count <= 64: the single query's own stages (cdist__cd_stage_start) with the
+ * rim searches of the block in lanes (cdist__cc_quick_lanes), so the distances are
+ * bit-identical to the single query's; the mask of the entries left for the scalar path
+ * (src/batch/cd_kernel.c). */
+uint64_t cdist__cd_distance_kernel(const cdist__job *job, int disk, double unit_tol, size_t lo, size_t count);
+
 #endif

@@ -126,8 +126,12 @@ static unsigned KN(ck_setup)(const cdist__job *job, double unit_tol, size_t lo, 
 }
 
 /* The search for the W entries of the block from g: angles t[] of the closest points of the
- * entries it certifies; returns the lane mask (bit k: entry g + k) of those it does not. */
-static unsigned KN(ck_search)(ck_block *b, int g)
+ * entries it certifies; returns the lane mask (bit k: entry g + k) of those it does not. quick
+ * (a constant): certify exactly what the single query's search (cdist__cc_quick,
+ * src/circles/cc_quick_body.h) certifies, which gives up earlier (CK_QUICK_LEVELS, a basin
+ * near B's axis, an F below CD_CCK_MIN_F on the way, a near-tie seen before the end, a NaN);
+ * where both certify, the angle and its cos and sin are the same. */
+CD_INLINE unsigned KN(ck_search_mode)(ck_block *b, int g, int quick)
 {
     KN(ck_ring) r;
     KN(ck_load)(b, g, &r);
@@ -146,13 +150,17 @@ static unsigned KN(ck_search)(ck_block *b, int g)
     M fail = mfalse();
     V minlb = vset(INFINITY), R2tan = vmul(r.R2, vset(cdist__cc_tab.grid_tan2));
     M nan = mfalse(); /* a NaN bound would drop out of minlb (min keeps the other operand) */
-    V c = vset(0.0), s = vset(0.0), Fl = vset(0.0), Fr = vset(0.0);
+    V c = vset(0.0), s = vset(0.0), Fl = vset(0.0), Fr = vset(0.0), lbb = vset(INFINITY);
     for (int j = 0; j < CK_GRID; j++) {
         int jn = (j + 1) % CK_GRID, jp = (j + CK_GRID - 1) % CK_GRID;
         V lb = vmin(vmin(Fg[j], Fg[jn]),
                     vsub(KN(ck_f)(&r, vset(cdist__cc_tab.hull_c[j]), vset(cdist__cc_tab.hull_s[j])), R2tan));
         M at = veq(vset((double)j), bestJ), before = veq(vset((double)jn), bestJ);
         minlb = vsel(mor(at, before), minlb, vmin(minlb, lb));
+        if (quick) {
+            lbb = vsel(mor(at, before), vmin(lbb, lb), lbb);
+            nan = mor(nan, vne(Fg[j], Fg[j]));
+        }
         nan = mor(nan, vne(lb, lb));
         c = vsel(at, vset(cdist__cc_tab.grid_c[j]), c);
         s = vsel(at, vset(cdist__cc_tab.grid_s[j]), s);
@@ -160,20 +168,31 @@ static unsigned KN(ck_search)(ck_block *b, int g)
         Fr = vsel(veq(vset((double)jp), bestJ), Fg[j], Fr);
     }
     V t = vmul(bestJ, vset(2.0 * M_PI / CK_GRID));
+    const V margin_q = vset(CD_CCK_CERT_MARGIN);
+    if (quick) fail = mor(nan, mnot(vgt(minlb, vadd(lbb, margin_q))));
+    const int levels = quick ? CK_QUICK_LEVELS : CK_LEVELS;
 
     /* Zoom: certify the basin [t - h, t + h] convex, else split it in 8, keep the two
      * subintervals around the best point and add the hull bounds of the other six to minlb. */
     M done = mfalse();
     V hdone = vset(0.0);
-    for (int l = 0; l < CK_LEVELS; l++) {
+    for (int l = 0; l < levels; l++) {
         M active = mnot(mor(done, fail));
+        if (quick) {
+            fail = mor(fail, mandn(vge(bestF, vset(CD_CCK_MIN_F)), active));
+            active = mnot(mor(done, fail));
+        }
         if (!many(active)) break;
-        M near_axis;
+        M near_axis = mfalse();
         M conv = l < CK_FIRST_CONVEX ? mfalse() : mand(active, KN(ck_convex)(&r, c, s, l, &near_axis));
         done = mor(done, conv);
         hdone = vsel(conv, vset(cdist__cc_tab.half[l]), hdone);
         active = mandn(conv, active);
-        if (!many(active) || l + 1 == CK_LEVELS) break;
+        if (quick) {
+            fail = mor(fail, mand(active, near_axis));
+            active = mandn(near_axis, active);
+        }
+        if (!many(active) || l + 1 == levels) break;
         V Fk[9], Ck[9], Sk[9];
         Fk[0] = Fl;
         Fk[4] = bestF;
@@ -188,13 +207,15 @@ static unsigned KN(ck_search)(ck_block *b, int g)
             Fk[4 - k] = KN(ck_f)(&r, Ck[4 - k], Sk[4 - k]);
         }
         V nF = Fk[4], kb = vset(4.0);
+        M nanF = mfalse();
         for (int k = 0; k < 9; k++) {
             M lt = vlt(Fk[k], nF);
             nF = vsel(lt, Fk[k], nF);
             kb = vsel(lt, vset((double)k), kb);
+            if (quick) nanF = mor(nanF, vne(Fk[k], Fk[k]));
         }
         M edge = mor(veq(kb, vset(0.0)), veq(kb, vset(8.0)));
-        V R2tan_sub = vmul(r.R2, vset(cdist__cc_tab.sub_tan2[l]));
+        V R2tan_sub = vmul(r.R2, vset(cdist__cc_tab.sub_tan2[l])), lbk = vset(INFINITY);
         for (int i = 0; i < 8; i++) {
             int m = i < 4 ? 3 - i : i - 4; /* hull point of [i, i+1] at (2 (i - 4) + 1) h / 8 */
             double sg = i < 4 ? -1.0 : 1.0;
@@ -203,8 +224,10 @@ static unsigned KN(ck_search)(ck_block *b, int g)
             V lb = vmin(vmin(Fk[i], Fk[i + 1]), vsub(KN(ck_f)(&r, hc, hs), R2tan_sub));
             M keep = mor(veq(vset((double)i), kb), veq(vset((double)(i + 1)), kb));
             minlb = vsel(mandn(keep, active), vmin(minlb, lb), minlb);
+            if (quick) lbk = vsel(keep, vmin(lbk, lb), lbk);
             nan = mor(nan, mand(active, vne(lb, lb)));
         }
+        if (quick) edge = mor(edge, mor(mor(nanF, nan), mnot(vgt(minlb, vadd(lbk, margin_q)))));
         fail = mor(fail, mand(active, edge));
         active = mandn(edge, active);
         V nc = c, ns = s, nl = Fl, nr = Fr;
@@ -260,6 +283,9 @@ static unsigned KN(ck_search)(ck_block *b, int g)
     vst(&b->st[g], sf);
     return mbits(fail);
 }
+
+static unsigned KN(ck_search)(ck_block *b, int g) { return KN(ck_search_mode)(b, g, 0); }
+static unsigned KN(ck_search_quick)(ck_block *b, int g) { return KN(ck_search_mode)(b, g, 1); }
 
 /* ---- the distance at the angle found, in lanes ---- */
 

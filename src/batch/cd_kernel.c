@@ -1,0 +1,82 @@
+/* SPDX-License-Identifier: MIT */
+/* Distance kernels of circle-disk and disk-disk for cdist_batch_distance: each entry runs the
+ * single query's own steps (cdist__cd_stage_start, _finish: validation, framing, the candidates
+ * over the disk's face, the bound that spares the rim), and the rims' certified searches of the
+ * block run together in lanes (cdist__cc_quick_lanes, which certifies what the single query's
+ * search certifies, with the same angle to the last bit). The distances are therefore the
+ * single query's bit for bit; an entry whose query takes another path (a failed fast check, a
+ * zero radius, parallel planes, the rim search's engine) is left to the scalar path. */
+#include <math.h>
+#include <stdint.h>
+#include <string.h>
+
+#include "batch-priv.h"
+#include "api/api-priv.h"
+#include "circles/circles-priv.h"
+
+/* One entry: its stage, the frame's exponent and, for disk-disk, the second half's distance. */
+typedef struct cd_entry {
+    cdist__cd_stage st;
+    int e;
+    double d2_other;
+} cd_entry;
+
+/* Entry i up to the rim search: CD_STAGE_* (CD_STAGE_SCALAR also for a failed fast check). */
+static int cd_start(const cdist__job *job, int disk, double unit_tol, size_t i, cd_entry *x)
+{
+    const cdist_circle *p = cdist__job_a(job, i), *r = cdist__job_b(job, i);
+    cdist__circle a, e;
+    if (!cdist__circle_fast_basis(unit_tol, p, &a) || !cdist__circle_fast_basis(unit_tol, r, &e))
+        return CD_STAGE_SCALAR;
+    if (disk && cdist__circle_less(r, p)) {
+        cdist__circle t = a;
+        a = e;
+        e = t;
+    }
+    vec3 offset;
+    cdist__best best;
+    x->e = cdist__circles_frame(&a, &e, &offset, &best);
+    x->d2_other = INFINITY;
+    if (disk) {
+        /* the rim of e over a's face, e's centre the origin (dd_query) */
+        cdist__circle a1 = a, e1 = e;
+        a1.c = v_neg(e.c);
+        e1.c = v3(0, 0, 0);
+        if (cdist__cd_stage_start(&x->st, &e1, &a1, best.scale, 0) != CD_STAGE_DONE) return CD_STAGE_SCALAR;
+        x->d2_other = x->st.d2;
+    }
+    return cdist__cd_stage_start(&x->st, &a, &e, best.scale, 1);
+}
+
+/* The kernel with the rim searches in the given number of lanes (cdist__cc_quick_lanes). */
+static uint64_t cd_kernel(const cdist__job *job, int disk, double unit_tol, size_t lo, size_t count, int lanes)
+{
+    cd_entry x[64];
+    const cdist__cc_frame *f[64] = {0};
+    double t[64], c[64], s[64];
+    int state[64], n = (int)count;
+    uint64_t left = 0;
+    for (int k = 0; k < n; k++) {
+        state[k] = cd_start(job, disk, unit_tol, lo + (size_t)k, &x[k]);
+        f[k] = state[k] == CD_STAGE_SEARCH ? &x[k].st.f : NULL;
+    }
+    uint64_t found = cdist__cc_quick_lanes(f, n, lanes, t, c, s);
+    for (int k = 0; k < n; k++) {
+        if (state[k] == CD_STAGE_SEARCH) {
+            if (!(found >> k & 1)) state[k] = CD_STAGE_SCALAR;
+            else cdist__cd_stage_finish(&x[k].st, t[k], c[k], s[k]);
+        }
+        double d2 = x[k].st.d2 < x[k].d2_other ? x[k].st.d2 : x[k].d2_other;
+        if (state[k] == CD_STAGE_SCALAR || !(d2 < INFINITY)) {
+            left |= (uint64_t)1 << k;
+            continue;
+        }
+        job->distances[lo + (size_t)k] = sqrt(d2) * cdist__pow2(x[k].e);
+    }
+    return left;
+}
+
+uint64_t cdist__cd_distance_kernel(const cdist__job *job, int disk, double unit_tol, size_t lo, size_t count)
+{
+    return cd_kernel(job, disk, unit_tol, lo, count, 0);
+}
