@@ -94,10 +94,16 @@ static size_t extra(size_t n)
         A[n] = s[k][0];
         B[n] = s[k][1];
     }
-    for (int k = 0; k < 1600; k++, n++) {
+    for (int k = 0; k < 2000; k++, n++) {
         cdist_vec3 na = rnd_unit_vec(), nb = rnd_unit_vec(), ca = rvec(3), cb;
         double ra = 0.1 + 2 * rnd01(), rb = 0.1 + 2 * rnd01();
-        switch (k % 4) {
+        switch (k % 5) {
+        case 4: /* the circle passes near the disk's axis (F's kink) */
+            nb = (cdist_vec3){0, 0, 1};
+            ca = (cdist_vec3){ra + pow(10, -1 - 8 * rnd01()), 0.3 * rnd01(), 0.2 + rnd01()};
+            na = (cdist_vec3){0.3 * rnd01(), 1, 0.3 * rnd01()};
+            cb = (cdist_vec3){0, 0, 0};
+            break;
         case 0: cb = rvec(3); break;                                   /* general */
         case 1: cb = add3(ca, rvec(0.5 * ra)); break;                  /* near: often piercing */
         case 2:                                                        /* nearly coaxial */
@@ -110,8 +116,8 @@ static size_t extra(size_t n)
             else rb *= 1e6;
             break;
         }
-        double l = sqrt(nb.x * nb.x + nb.y * nb.y + nb.z * nb.z);
-        A[n] = (cdist_circle){ca, na, ra};
+        double l = sqrt(nb.x * nb.x + nb.y * nb.y + nb.z * nb.z), la = sqrt(na.x * na.x + na.y * na.y + na.z * na.z);
+        A[n] = (cdist_circle){ca, scale3(1 / la, na), ra};
         B[n] = (cdist_circle){cb, scale3(1 / l, nb), rb};
     }
     return n;
