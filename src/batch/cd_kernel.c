@@ -22,7 +22,7 @@ typedef struct cd_entry {
 } cd_entry;
 
 /* Entry i up to the rim search: CD_STAGE_* (CD_STAGE_SCALAR also for a failed fast check). */
-static int cd_start(const cdist__job *job, int disk, double unit_tol, size_t i, cd_entry *x)
+CD_INLINE int cd_start(const cdist__job *job, int disk, double unit_tol, size_t i, cd_entry *x)
 {
     const cdist_circle *p = cdist__job_a(job, i), *r = cdist__job_b(job, i);
     cdist__circle a, e;
@@ -48,30 +48,41 @@ static int cd_start(const cdist__job *job, int disk, double unit_tol, size_t i, 
     return cdist__cd_stage_start(&x->st, &a, &e, best.scale, 1);
 }
 
-/* The kernel with the rim searches in the given number of lanes (cdist__cc_quick_lanes). */
-static uint64_t cd_kernel(const cdist__job *job, int disk, double unit_tol, size_t lo, size_t count, int lanes)
+/* The kernel with the rim searches in the given number of lanes (cdist__cc_quick_lanes), over
+ * sub-blocks of CD_SUB entries (their stages stay in the first-level cache). An FMA clone, like
+ * the single query's stages: the fma() of the validation and framing are instructions there. */
+enum { CD_SUB = 16 };
+CD_FMA_CLONES static uint64_t cd_kernel(const cdist__job *job, int disk, double unit_tol, size_t lo, size_t count,
+                                        int lanes)
 {
-    cd_entry x[64];
-    const cdist__cc_frame *f[64] = {0};
-    double t[64], c[64], s[64];
-    int state[64], n = (int)count;
+    cd_entry x[CD_SUB];
+    const cdist__cc_frame *f[CD_SUB];
+    double t[CD_SUB], c[CD_SUB], s[CD_SUB];
+    int state[CD_SUB], at[CD_SUB]; /* the searches packed: f[j] is entry at[j]'s */
     uint64_t left = 0;
-    for (int k = 0; k < n; k++) {
-        state[k] = cd_start(job, disk, unit_tol, lo + (size_t)k, &x[k]);
-        f[k] = state[k] == CD_STAGE_SEARCH ? &x[k].st.f : NULL;
-    }
-    uint64_t found = cdist__cc_quick_lanes(f, n, lanes, t, c, s);
-    for (int k = 0; k < n; k++) {
-        if (state[k] == CD_STAGE_SEARCH) {
-            if (!(found >> k & 1)) state[k] = CD_STAGE_SCALAR;
-            else cdist__cd_stage_finish(&x[k].st, t[k], c[k], s[k]);
+    for (int b = 0; b < (int)count; b += CD_SUB) {
+        int n = (int)count - b < CD_SUB ? (int)count - b : CD_SUB, m = 0;
+        for (int k = 0; k < n; k++) {
+            state[k] = cd_start(job, disk, unit_tol, lo + (size_t)(b + k), &x[k]);
+            if (state[k] == CD_STAGE_SEARCH) {
+                at[m] = k;
+                f[m++] = &x[k].st.f;
+            }
         }
-        double d2 = x[k].st.d2 < x[k].d2_other ? x[k].st.d2 : x[k].d2_other;
-        if (state[k] == CD_STAGE_SCALAR || !(d2 < INFINITY)) {
-            left |= (uint64_t)1 << k;
-            continue;
+        uint64_t found = m ? cdist__cc_quick_lanes(f, m, lanes, t, c, s) : 0;
+        for (int j = 0; j < m; j++) {
+            int k = at[j];
+            if (!(found >> j & 1)) state[k] = CD_STAGE_SCALAR;
+            else cdist__cd_stage_finish(&x[k].st, t[j], c[j], s[j]);
         }
-        job->distances[lo + (size_t)k] = sqrt(d2) * cdist__pow2(x[k].e);
+        for (int k = 0; k < n; k++) {
+            double d2 = x[k].st.d2 < x[k].d2_other ? x[k].st.d2 : x[k].d2_other;
+            if (state[k] == CD_STAGE_SCALAR || !(d2 < INFINITY)) {
+                left |= (uint64_t)1 << (b + k);
+                continue;
+            }
+            job->distances[lo + (size_t)(b + k)] = sqrt(d2) * cdist__pow2(x[k].e);
+        }
     }
     return left;
 }
