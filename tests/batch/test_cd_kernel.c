@@ -25,6 +25,7 @@
 #include "check.h"
 #include "query_io.h"
 #include "test_rand.h"
+#include "circle_pairs.h"
 
 enum { MAXN = 6000 };
 static cdist_circle A[MAXN], B[MAXN];
@@ -38,33 +39,9 @@ static cdist_circle circ(double cx, double cy, double cz, double nx, double ny, 
 
 static size_t load(const char *dir, const char *kind, const char *set, size_t n)
 {
-    char path[1024], buf[2048], err[256];
+    char path[1024];
     snprintf(path, sizeof path, "%s/%s_%s.txt", dir, kind, set);
-    FILE *f = fopen(path, "r");
-    CHECK(f != NULL, "cannot read %s", path);
-    while (f && n < MAXN - 2000 && fgets(buf, sizeof buf, f)) {
-        cdq_line ql;
-        if (cdq_parse(buf, &ql, err, sizeof err) <= 0) continue;
-        memcpy(&A[n], ql.v, sizeof A[n]);
-        memcpy(&B[n], ql.v + 7, sizeof B[n]);
-        n++;
-    }
-    if (f) fclose(f);
-    return n;
-}
-
-static void corrupt(size_t i)
-{
-    cdist_circle *c = (next_rand() & 1) ? &A[i] : &B[i];
-    switch (next_rand() % 7) {
-    case 0: c->center.y = NAN; break;
-    case 1: c->normal.z = INFINITY; break;
-    case 2: c->normal = (cdist_vec3){0, 0, 0}; break;
-    case 3: c->normal.x *= 1.01; break;
-    case 4: c->radius = -1.0; break;
-    case 5: c->center.x = 2e150; break;
-    default: c->radius = NAN; break;
-    }
+    return load_circle_pairs(path, A, B, n, MAXN - 2000);
 }
 
 static cdist_vec3 rvec(double s) { return (cdist_vec3){s * (2 * rnd01() - 1), s * (2 * rnd01() - 1), s * (2 * rnd01() - 1)}; }
@@ -256,7 +233,7 @@ int main(int argc, char **argv)
         size_t n = load(argv[1], kinds[disk], "hard", nr);
         n = extra(n);
         check_set(q, disk, n, 0, "files, special and random pairs");
-        for (size_t i = 0; i < n; i += 37) corrupt(i);
+        for (size_t i = 0; i < n; i += 37) corrupt_circle_pair(&A[i], &B[i]);
         check_set(q, disk, n, 0, "with bad entries");
         check_public(q, disk, n);
     }
