@@ -77,10 +77,16 @@ uint64_t cdist__cc_distance_kernel(const cdist__job *job, double unit_tol, size_
  * are not NULL, k < count <= 64, in lanes (one frame per lane; lanes: 1, 4 or 8, the
  * instruction set's, the caller's check; 0: this CPU's widest): the mask of those it
  * certifies, with the angle found, its cosine and sine in t[k], c[k], s[k], each bit-identical
- * to cdist__cc_quick's (src/batch/cc_kernel.c). */
+ * to cdist__cc_quick's of the same width, and the squared distance there in d2[k]
+ * (cdist__cc_point_d2's, in the frame's units) (src/batch/cc_kernel.c). */
 struct cdist__cc_frame;
 uint64_t cdist__cc_quick_lanes(const struct cdist__cc_frame *const *f, int count, int lanes, double *t, double *c,
-                               double *s);
+                               double *s, double *d2);
+/* The single query's fast validation and basis (cdist__circle_fast_basis) of both circles of
+ * the entries [lo, lo + count), count <= 64, in lanes (lanes as above): a[k], b[k] where
+ * accepted; returns the mask of the entries it does not accept. */
+uint64_t cdist__circle_pairs_lanes(const cdist__job *job, double unit_tol, size_t lo, int count, int lanes,
+                                   cdist__circle *a, cdist__circle *b);
 
 /* Distance kernels of circle-disk (disk = 0) and disk-disk (1), ROBUST method, for entries
  * [lo, lo + count), count <= 64: the single query's own stages (cdist__cd_stage_start) with the

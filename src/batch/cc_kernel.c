@@ -78,54 +78,79 @@ static uint64_t kernel_avx2(const cdist__job *job, int shape, double tol, size_t
 }
 #endif
 
-/* The certified search of the single query in lanes over frames f[0 .. count): the columns of
- * the entries to search (f[k] not NULL), the search in its quick mode, the angles found. */
-static uint64_t ck_quick_run(ck_search_fn search, int lanes, const cdist__cc_frame *const *f, int count, double *t,
-                             double *c, double *s)
+/* The circle-disk kernel's parts in one instruction set's lanes. */
+typedef struct ck_quick_variant {
+    int lanes;
+    ck_search_fn search;
+    ck_final_fn point_d2;
+    unsigned (*circles)(const cdist__job *job, double unit_tol, size_t lo, int base, int n, cdist__circle *a,
+                        cdist__circle *b);
+} ck_quick_variant;
+
+static const ck_quick_variant *ck_variant(int lanes)
 {
+    static const ck_quick_variant v1 = {1, ck_search_quick_1, ck_point_d2_1, ck_circles_1};
+#ifdef CD_X86_KERNELS
+    static const ck_quick_variant v4 = {4, ck_search_quick_4, ck_point_d2_4, ck_circles_4};
+    static const ck_quick_variant v8 = {8, ck_search_quick_8, ck_point_d2_8, ck_circles_8};
+    if (!lanes) {
+        int isa = cdist__lanes_isa();
+        lanes = isa == CD_ISA_AVX512 ? 8 : isa == CD_ISA_AVX2 ? 4 : 1;
+    }
+    if (lanes == 8) return &v8;
+    if (lanes == 4) return &v4;
+#else
+    (void)lanes;
+#endif
+    return &v1;
+}
+
+uint64_t cdist__cc_quick_lanes(const cdist__cc_frame *const *f, int count, int lanes, double *t, double *c, double *s,
+                               double *d2)
+{
+    const ck_quick_variant *v = ck_variant(lanes);
     cdist__cc_search_tables();
     ck_block b;
     uint64_t todo = 0;
-    int groups = (count + lanes - 1) / lanes * lanes;
+    int W = v->lanes, groups = (count + W - 1) / W * W;
     for (int k = 0; k < groups; k++) {
         const cdist__cc_frame *e = k < count ? f[k] : NULL;
         if (e) todo |= (uint64_t)1 << k;
-        const double v[CK_NC] = {e ? e->rg.al.x : 0.0, e ? e->rg.al.y : 0.0, e ? e->rg.al.z : 0.0,
-                                 e ? e->rg.be.x : 0.0, e ? e->rg.be.y : 0.0, e ? e->rg.be.z : 0.0,
-                                 e ? e->rg.ga.x : 0.0, e ? e->rg.ga.y : 0.0, e ? e->rg.ga.z : 0.0,
-                                 e ? e->rg.ha : 0.0,   e ? e->rg.hb : 0.0,   e ? e->rg.hc : 0.0,
-                                 e ? e->s : 0.0,       e ? e->R * e->R : 0.0, e ? e->W1 : 0.0,
-                                 e ? e->Hh : 0.0,      e ? e->Hc0 : 0.0,    e ? e->Lw : 0.0, 0.0, 0.0};
-        for (int j = 0; j < CK_NC; j++) b.col[j][k] = v[j];
+        const double col[CK_NC] = {e ? e->rg.al.x : 0.0, e ? e->rg.al.y : 0.0, e ? e->rg.al.z : 0.0,
+                                   e ? e->rg.be.x : 0.0, e ? e->rg.be.y : 0.0, e ? e->rg.be.z : 0.0,
+                                   e ? e->rg.ga.x : 0.0, e ? e->rg.ga.y : 0.0, e ? e->rg.ga.z : 0.0,
+                                   e ? e->rg.ha : 0.0,   e ? e->rg.hb : 0.0,   e ? e->rg.hc : 0.0,
+                                   e ? e->s : 0.0,       e ? e->R * e->R : 0.0, e ? e->W1 : 0.0,
+                                   e ? e->Hh : 0.0,      e ? e->Hc0 : 0.0,    e ? e->Lw : 0.0, 0.0, 0.0};
+        for (int j = 0; j < CK_NC; j++) b.col[j][k] = col[j];
     }
-    uint64_t found = 0, lane_mask = ((uint64_t)1 << lanes) - 1;
-    for (int g = 0; g < groups; g += lanes) {
+    uint64_t found = 0, lane_mask = ((uint64_t)1 << W) - 1;
+    for (int g = 0; g < groups; g += W) {
         if (!((todo >> g) & lane_mask)) continue;
-        found |= (~(uint64_t)search(&b, g) & lane_mask) << g;
+        uint64_t ok = ~(uint64_t)v->search(&b, g) & lane_mask & (todo >> g);
+        if (ok) v->point_d2(&b, g);
+        found |= ok << g;
     }
-    found &= todo;
     for (int k = 0; k < count; k++)
         if (found >> k & 1) {
             t[k] = b.t[k];
             c[k] = b.ct[k];
             s[k] = b.st[k];
+            d2[k] = b.d[k];
         }
     return found;
 }
 
-uint64_t cdist__cc_quick_lanes(const cdist__cc_frame *const *f, int count, int lanes, double *t, double *c, double *s)
+uint64_t cdist__circle_pairs_lanes(const cdist__job *job, double unit_tol, size_t lo, int count, int lanes,
+                                   cdist__circle *a, cdist__circle *b)
 {
-#ifdef CD_X86_KERNELS
-    if (!lanes) {
-        int isa = cdist__lanes_isa();
-        lanes = isa == CD_ISA_AVX512 ? 8 : isa == CD_ISA_AVX2 ? 4 : 1;
+    const ck_quick_variant *v = ck_variant(lanes);
+    uint64_t bad = 0;
+    for (int g = 0; g < count; g += v->lanes) {
+        int n = count - g < v->lanes ? count - g : v->lanes;
+        bad |= (uint64_t)v->circles(job, unit_tol, lo, g, n, a + g, b + g) << g;
     }
-    if (lanes == 8) return ck_quick_run(ck_search_quick_8, 8, f, count, t, c, s);
-    if (lanes == 4) return ck_quick_run(ck_search_quick_4, 4, f, count, t, c, s);
-#else
-    (void)lanes;
-#endif
-    return ck_quick_run(ck_search_quick_1, 1, f, count, t, c, s);
+    return bad;
 }
 
 uint64_t cdist__cc_distance_kernel(const cdist__job *job, double unit_tol, size_t lo, size_t count)

@@ -47,9 +47,10 @@ CD_INLINE V KN(ck_rdot)(V ax, V ay, V az, V bx, V by, V bz)
  * operation, into the block's columns from base; returns the lanes left to the scalar path
  * (also the lanes >= n, and where the radii are equal: the tie rule of cdist__cc_prepare is not
  * repeated here). */
-static unsigned KN(ck_setup)(const cdist__job *job, double unit_tol, size_t lo, int base, int n, ck_block *b)
+/* The two circles of the entries [lo + base, lo + base + n), n <= W (the lanes from n repeat
+ * the first entry), as 7 columns each: centre, normal, radius. */
+CD_INLINE void KN(ck_load_pairs)(const cdist__job *job, size_t lo, int base, int n, V *ca, V *cb)
 {
-    V ca[8], cb[8];
 #ifdef vload_objects
     if (n == W) {
         vload_objects(cdist__job_a(job, lo + (size_t)base), job->a_stride, 7, ca);
@@ -71,6 +72,37 @@ static unsigned KN(ck_setup)(const cdist__job *job, double unit_tol, size_t lo, 
             cb[f] = vld(in[7 + f]);
         }
     }
+}
+
+/* The single query's fast validation and basis (cdist__circle_fast_basis, operation by
+ * operation) of both circles of the entries [lo + base, lo + base + n), n <= W, into a[k], b[k]
+ * (k < n); returns the lanes it does not accept (a full check must decide). */
+static unsigned KN(ck_circles)(const cdist__job *job, double unit_tol, size_t lo, int base, int n, cdist__circle *a,
+                               cdist__circle *b)
+{
+    V c[2][8], nn[2][3], u[2][3], v[2][3];
+    KN(ck_load_pairs)(job, lo, base, n, c[0], c[1]);
+    M ok = mand(KN(circle_fast)(c[0], c[0] + 3, c[0][6], unit_tol, nn[0]),
+                KN(circle_fast)(c[1], c[1] + 3, c[1][6], unit_tol, nn[1]));
+    for (int o = 0; o < 2; o++) {
+        KN(ck_basis)(nn[o], u[o], v[o]);
+        double col[13][W];
+        const V *src[13] = {&c[o][0], &c[o][1], &c[o][2], &nn[o][0], &nn[o][1], &nn[o][2], &u[o][0],
+                            &u[o][1], &u[o][2], &v[o][0], &v[o][1], &v[o][2], &c[o][6]};
+        for (int j = 0; j < 13; j++) vst(col[j], *src[j]);
+        cdist__circle *out = o ? b : a;
+        for (int k = 0; k < n; k++)
+            out[k] = (cdist__circle){v3(col[0][k], col[1][k], col[2][k]), v3(col[3][k], col[4][k], col[5][k]),
+                                     v3(col[6][k], col[7][k], col[8][k]), v3(col[9][k], col[10][k], col[11][k]),
+                                     col[12][k]};
+    }
+    return mbits(mnot(ok)) & ((1u << n) - 1u);
+}
+
+static unsigned KN(ck_setup)(const cdist__job *job, double unit_tol, size_t lo, int base, int n, ck_block *b)
+{
+    V ca[8], cb[8];
+    KN(ck_load_pairs)(job, lo, base, n, ca, cb);
     V na[3], nb[3];
     M ok = mand(KN(circle_fast)(ca, ca + 3, ca[6], unit_tol, na), KN(circle_fast)(cb, cb + 3, cb[6], unit_tol, nb));
     /* cdist__circles_frame: B's centre relative to A's, scaled by 2^-e */
@@ -301,3 +333,12 @@ static void KN(ck_final)(ck_block *b, int g)
     vst(&b->d[g], vmul(vsqrt(vmul(vmul(d2, u), u)), vld(&b->col[CK_C_UP][g])));
 }
 
+
+/* The squared distances at the angles found (b->ct, b->st) of the lane group from g, in the
+ * ring's units (no scaling back), into b->d: cdist__cc_point_d2 in lanes. */
+static void KN(ck_point_d2)(ck_block *b, int g)
+{
+    KN(ck_ring) r;
+    KN(ck_load)(b, g, &r);
+    vst(&b->d[g], KN(cc_point_d2)(&r, vld(&b->ct[g]), vld(&b->st[g])));
+}

@@ -21,14 +21,11 @@ typedef struct cd_entry {
     double d2_other;
 } cd_entry;
 
-/* Entry i up to the rim search: CD_STAGE_* (CD_STAGE_SCALAR also for a failed fast check). */
-CD_INLINE int cd_start(const cdist__job *job, int disk, double unit_tol, size_t i, cd_entry *x)
+/* Entry i, its circles a, e validated (cdist__circle_pairs_lanes), up to the rim search:
+ * CD_STAGE_*. */
+CD_INLINE int cd_start(const cdist__job *job, int disk, size_t i, cdist__circle a, cdist__circle e, cd_entry *x)
 {
-    const cdist_circle *p = cdist__job_a(job, i), *r = cdist__job_b(job, i);
-    cdist__circle a, e;
-    if (!cdist__circle_fast_basis(unit_tol, p, &a) || !cdist__circle_fast_basis(unit_tol, r, &e))
-        return CD_STAGE_SCALAR;
-    if (disk && cdist__circle_less(r, p)) {
+    if (disk && cdist__circle_less(cdist__job_b(job, i), cdist__job_a(job, i))) {
         cdist__circle t = a;
         a = e;
         e = t;
@@ -56,28 +53,34 @@ CD_FMA_CLONES static uint64_t cd_kernel(const cdist__job *job, int disk, double 
                                         int lanes)
 {
     cd_entry x[CD_SUB];
+    cdist__circle a[CD_SUB], e[CD_SUB];
     const cdist__cc_frame *f[CD_SUB];
-    double t[CD_SUB], c[CD_SUB], s[CD_SUB];
+    double t[CD_SUB], c[CD_SUB], s[CD_SUB], d2r[CD_SUB];
     int state[CD_SUB], at[CD_SUB]; /* the searches packed: f[j] is entry at[j]'s */
     uint64_t left = 0;
     for (int b = 0; b < (int)count; b += CD_SUB) {
         int n = (int)count - b < CD_SUB ? (int)count - b : CD_SUB, m = 0;
+        uint64_t bad = cdist__circle_pairs_lanes(job, unit_tol, lo + (size_t)b, n, lanes, a, e);
         for (int k = 0; k < n; k++) {
-            state[k] = cd_start(job, disk, unit_tol, lo + (size_t)(b + k), &x[k]);
+            state[k] = bad >> k & 1 ? CD_STAGE_SCALAR : cd_start(job, disk, lo + (size_t)(b + k), a[k], e[k], &x[k]);
             if (state[k] == CD_STAGE_SEARCH) {
                 at[m] = k;
                 f[m++] = &x[k].st.f;
             }
         }
-        uint64_t found = m ? cdist__cc_quick_lanes(f, m, lanes, t, c, s) : 0;
+        uint64_t found = m ? cdist__cc_quick_lanes(f, m, lanes, t, c, s, d2r) : 0;
         for (int j = 0; j < m; j++) {
             int k = at[j];
             if (!(found >> j & 1)) state[k] = CD_STAGE_SCALAR;
-            else cdist__cd_stage_finish(&x[k].st, t[j], c[j], s[j]);
+            else cdist__cd_stage_finish(&x[k].st, t[j], d2r[j]);
         }
         for (int k = 0; k < n; k++) {
+            if (state[k] == CD_STAGE_SCALAR) {
+                left |= (uint64_t)1 << (b + k);
+                continue;
+            }
             double d2 = x[k].st.d2 < x[k].d2_other ? x[k].st.d2 : x[k].d2_other;
-            if (state[k] == CD_STAGE_SCALAR || !(d2 < INFINITY)) {
+            if (!(d2 < INFINITY)) {
                 left |= (uint64_t)1 << (b + k);
                 continue;
             }

@@ -73,7 +73,7 @@ CD_FMA_CLONES int cdist__cc_quick_frame(const cdist__circle *c0, const cdist__ci
 
 CD_FMA_CLONES double cdist__cc_quick_distance(const cdist__cc_frame *f, double sc, double c, double s)
 {
-    return sqrt(cdist__cc_point_d2(&f->rg, f->s, c, s)) / sc;
+    return cdist__cc_quick_unscale(cdist__cc_point_d2(&f->rg, f->s, c, s), sc);
 }
 
 CD_FMA_CLONES int cdist__circle_circle_critical(cdist_query *q, const cdist__circle *c0, const cdist__circle *c1, double dcap, double *theta0,

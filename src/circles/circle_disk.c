@@ -623,9 +623,9 @@ CD_FMA_CLONES int cdist__cd_stage_start(cdist__cd_stage *st, const cdist__circle
     return cdist__cc_quick_frame(&st->c, &st->d, &st->f, &st->sc) ? CD_STAGE_SEARCH : CD_STAGE_SCALAR;
 }
 
-CD_FMA_CLONES void cdist__cd_stage_finish(cdist__cd_stage *st, double t, double c, double s)
+CD_FMA_CLONES void cdist__cd_stage_finish(cdist__cd_stage *st, double t, double d2)
 {
-    if (!cdk_rim_below_cap(cdist__cc_quick_distance(&st->f, st->sc, c, s), st->dcap, st->scale)) return;
+    if (!cdk_rim_below_cap(cdist__cc_quick_unscale(d2, st->sc), st->dcap, st->scale)) return;
     double ts[CDK_CAP], tc[CDK_CAP], tsn[CDK_CAP];
     ts[0] = cdist__cc_param(t);
     int n = cdk_flat_scan(&st->k, ts, tc, tsn, 1, st->scale);

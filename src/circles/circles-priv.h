@@ -146,6 +146,8 @@ static inline int cdist__cc_quick_worth(const cdist__cc_frame *f)
  * (cos t, sin t) of c0 it finds, in c0's units. */
 int cdist__cc_quick_frame(const cdist__circle *c0, const cdist__circle *c1, cdist__cc_frame *f, double *sc);
 double cdist__cc_quick_distance(const cdist__cc_frame *f, double sc, double c, double s);
+/* The distance of cdist__cc_quick_distance from the squared distance d2 in the frame's units. */
+static inline double cdist__cc_quick_unscale(double d2, double sc) { return sqrt(d2) / sc; }
 /* Walks [-pi, pi) and hands every critical bracket of F to the sink (docs/circles.md). Fmax:
  * largest F seen at the partition points. */
 int cdist__cc_scan(const cdist__cc_frame *f, cdist__cc_sink *k, double *Fmax);
@@ -208,7 +210,7 @@ typedef struct cdist__cdk {
  * cdist__cd_stage_start (c, d in the frame's units) offers the candidates over the face and
  * returns CD_STAGE_DONE (d2 is the squared distance: no rim minimum can be below it, or rim =
  * 0), CD_STAGE_SEARCH (the certified search cdist__cc_quick is to run on f; with the angle t
- * and the cos c and sin s it finds, cdist__cd_stage_finish completes d2) or CD_STAGE_SCALAR
+ * it finds and cdist__cc_point_d2 there, cdist__cd_stage_finish completes d2) or CD_STAGE_SCALAR
  * (the query takes a path the stages do not: a zero radius, parallel planes, the engine). */
 typedef struct cdist__cd_stage {
     cdist__circle c, d;
@@ -218,7 +220,7 @@ typedef struct cdist__cd_stage {
 } cdist__cd_stage;
 enum { CD_STAGE_DONE, CD_STAGE_SEARCH, CD_STAGE_SCALAR };
 int cdist__cd_stage_start(cdist__cd_stage *st, const cdist__circle *c, const cdist__circle *d, double bscale, int rim);
-void cdist__cd_stage_finish(cdist__cd_stage *st, double t, double c, double s);
+void cdist__cd_stage_finish(cdist__cd_stage *st, double t, double d2);
 #define CD_DISK_METHODS (CD_HAS(CDIST_METHOD_POLYNOMIAL) | CD_HAS(CDIST_METHOD_ROBUST))
 #define CD_DISK_AUTO CDIST_METHOD_ROBUST
 

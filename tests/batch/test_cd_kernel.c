@@ -145,7 +145,7 @@ static void check_widths(int disk, size_t n, const char *what)
 {
     static cd_entry x[64];
     const cdist__cc_frame *f[64];
-    double t[64], c[64], s[64];
+    double t[64], c[64], s[64], d2[64];
     int bad = 0, searched = 0;
     typedef int (*quick_fn)(const cdist__cc_frame *, double *, double *, double *);
     quick_fn quick[3] = {ck_quick_1, NULL, NULL};
@@ -159,19 +159,37 @@ static void check_widths(int disk, size_t n, const char *what)
         int cnt = n - lo < 64 ? (int)(n - lo) : 64;
         cdist__job job = {disk ? CDIST_KIND_DISK_DISK : CDIST_KIND_CIRCLE_DISK, n, (const char *)A, (const char *)B,
                           sizeof(cdist_circle), sizeof(cdist_circle), NULL, D, NULL, 64, CD_OUT_DISTANCE, 0, NULL};
+        cdist__circle a[64], e[64];
+        uint64_t bad1 = cdist__circle_pairs_lanes(&job, 1e-6, lo, cnt, 1, a, e);
         for (int k = 0; k < cnt; k++) {
-            f[k] = cd_start(&job, disk, 1e-6, lo + (size_t)k, &x[k]) == CD_STAGE_SEARCH ? &x[k].st.f : NULL;
+            f[k] = !(bad1 >> k & 1) && cd_start(&job, disk, lo + (size_t)k, a[k], e[k], &x[k]) == CD_STAGE_SEARCH
+                       ? &x[k].st.f
+                       : NULL;
             searched += f[k] != NULL;
         }
         for (int w = 0; w < 3; w++) {
             if (!quick[w]) continue;
-            uint64_t found = cdist__cc_quick_lanes(f, cnt, widths[w], t, c, s);
+            /* the validation in lanes: the single query's (the scalar check) bit for bit */
+            cdist__circle aw[64], ew[64];
+            uint64_t badw = cdist__circle_pairs_lanes(&job, 1e-6, lo, cnt, widths[w], aw, ew);
+            int vbad = badw != bad1;
+            for (int k = 0; k < cnt; k++) {
+                cdist__circle as, es;
+                int ok = cdist__circle_fast_basis(1e-6, &A[lo + (size_t)k], &as) &&
+                         cdist__circle_fast_basis(1e-6, &B[lo + (size_t)k], &es);
+                vbad |= ok == (int)(badw >> k & 1);
+                if (ok) vbad |= memcmp(&as, &aw[k], sizeof as) || memcmp(&es, &ew[k], sizeof es);
+            }
+            CHECK(!vbad, "%s %s from %zu, %d lanes: the validation differs from the single query's", disk ? "dd" : "cd",
+                  what, lo, widths[w]);
+            uint64_t found = cdist__cc_quick_lanes(f, cnt, widths[w], t, c, s, d2);
             for (int k = 0; k < cnt; k++) {
                 if (!f[k]) continue;
                 double t1, c1, s1;
                 int ok = quick[w](f[k], &t1, &c1, &s1);
+                double d21 = ok ? cdist__cc_point_d2(&f[k]->rg, f[k]->s, c1, s1) : 0.0;
                 if ((ok != (int)(found >> k & 1) || (ok && (memcmp(&t1, &t[k], 8) || memcmp(&c1, &c[k], 8) ||
-                                                             memcmp(&s1, &s[k], 8)))) &&
+                                                             memcmp(&s1, &s[k], 8) || memcmp(&d21, &d2[k], 8)))) &&
                     bad++ < 5)
                     CHECK(0, "%s %s entry %zu, %d lanes: certified %d, single query's search %d; angle %.17g vs %.17g",
                           disk ? "dd" : "cd", what, lo + (size_t)k, widths[w], (int)(found >> k & 1), ok, t[k], t1);
