@@ -191,15 +191,23 @@ cdist_status cdist__circle_disk_core_ex(cdist_query *q, cdist_method method, con
                                         double dcap, int rim, cdist__best *b, cdist_method *used, int *rim_certified);
 
 /* The circle P(t) = rho (cos t A + sin t B) (centre at the origin) in the disk's frame:
- * x(t) = X[0] + X[1] cos t + X[2] sin t, the same for y, z; S(t) = Delta . Delta'
- * (circle_disk.c). */
+ * x(t) = X[0] + X[1] cos t + X[2] sin t, the same for y, z, over lanes of type V with masks M
+ * (cd_body.h); E0 = X0^2 + Y0^2 - R^2 to the last bit (see its rim excess), R the disk's radius,
+ * rho the circle's, small: rho <= R (the rim excess expands around the circle's centre). */
+#define CDK_LANES_FIELDS(V, M)                                                                                 \
+    V X[3], Y[3], Z[3];                                                                                        \
+    V E0, R, rho;                                                                                              \
+    M small;
+typedef struct cdk_lanes_1 {
+    CDK_LANES_FIELDS(double, int)
+} cdk_lanes_1;
+
+/* The circle and disk of a circle-disk query (circle_disk.c): g, and S(t) = Delta . Delta' (the
+ * polynomial method's), the ring of the rim distance (w = (x, y, 0), h = z), the bases. */
 typedef struct cdist__cdk {
-    double X[3], Y[3], Z[3], S[3];
-    cdist__ring rg;      /* the same circle for the ring evaluator (w = (x, y, 0), h = z) */
-    double E0;           /* X0^2 + Y0^2 - R^2, to the last bit (see rim_excess) */
-    int small_circle;    /* rho <= R: rim_excess expands around the circle's centre */
-    double R;            /* disk radius */
-    double rho;          /* circle radius */
+    cdk_lanes_1 g;
+    double S[3];
+    cdist__ring rg;
     vec3 A, B, D, n, u, v;
     const cdist__circle *c, *d; /* the circle (centre at the origin) and the disk */
 } cdist__cdk;
