@@ -1,18 +1,54 @@
 /* SPDX-License-Identifier: MIT */
-/* Distance kernels of circle-disk and disk-disk for cdist_batch_distance: each entry runs the
- * single query's own steps (cdist__cd_stage_start, _finish: validation, framing, the candidates
- * over the disk's face, the bound that spares the rim), and the rims' certified searches of the
- * block run together in lanes (cdist__cc_quick_lanes, which certifies what the single query's
- * search certifies, with the same angle to the last bit). The distances are therefore the
- * single query's bit for bit; an entry whose query takes another path (a failed fast check, a
- * zero radius, parallel planes, the rim search's engine) is left to the scalar path. */
+/* Distance kernels of circle-disk and disk-disk for cdist_batch_distance: the single query's
+ * steps for many entries at once. The circles are validated in lanes (cdist__circle_pairs_lanes),
+ * framed one by one (cdist__circles_frame), their candidates over the disks' faces computed in
+ * lanes (src/circles/cd_body.h, which the single query runs in one lane), the rim searches packed
+ * into lanes (cdist__cc_quick_lanes, which certifies what the single query's search certifies,
+ * with the same angle to the last bit) and finished one by one (cdist__cd_stage_finish). The
+ * distances are therefore the single query's bit for bit; an entry whose query takes another
+ * path (a failed fast check, a zero radius, parallel planes, the rim search's engine) is left to
+ * the scalar path. */
 #include <math.h>
 #include <stdint.h>
 #include <string.h>
 
 #include "batch-priv.h"
 #include "api/api-priv.h"
+#include "base/lanes/lanes.h"
 #include "circles/circles-priv.h"
+
+#define CDK_OFFER_PAIR(...) ((void)0) /* distances only: no pairs */
+#define CD_LANES 1
+#include "cd_kernel_body.h"
+#ifdef CD_X86_KERNELS
+#define CD_LANES 8
+#include "cd_kernel_body.h"
+#define CD_LANES 4
+#include "cd_kernel_body.h"
+#endif
+
+/* The stages in one instruction set's lanes. */
+typedef struct cd_variant {
+    int lanes;
+    unsigned (*face)(const cdist__circle *const *c, const cdist__circle *const *d, int neg, const double *bscale, int n,
+                     cdk_lanes_1 *g, double *min);
+    unsigned (*rim_far)(const cdk_lanes_1 *g, const double *min, int n, double *scale, double *dcap);
+} cd_variant;
+
+static const cd_variant *cd_variant_of(int lanes)
+{
+    static const cd_variant v1 = {1, cd_face_1, cd_rim_far_1};
+#ifdef CD_X86_KERNELS
+    static const cd_variant v4 = {4, cd_face_4, cd_rim_far_4}, v8 = {8, cd_face_8, cd_rim_far_8};
+    if (!lanes) {
+        int isa = cdist__lanes_isa();
+        lanes = isa == CD_ISA_AVX512 ? 8 : isa == CD_ISA_AVX2 ? 4 : 1;
+    }
+    if (lanes == 8) return &v8;
+    if (lanes == 4) return &v4;
+#endif
+    return &v1;
+}
 
 /* One entry: its stage, the frame's exponent and, for disk-disk, the second half's distance. */
 typedef struct cd_entry {
@@ -21,66 +57,95 @@ typedef struct cd_entry {
     double d2_other;
 } cd_entry;
 
-/* Entry i, its circles a, e validated (cdist__circle_pairs_lanes), up to the rim search:
- * CD_STAGE_*. */
-CD_INLINE int cd_start(const cdist__job *job, int disk, size_t i, cdist__circle a, cdist__circle e, cd_entry *x)
+enum { CD_SUB = 16 };
+enum { CD_PENDING = -1, CD_DONE, CD_SEARCH, CD_SCALAR };
+
+/* Entries [lo, lo + n), n <= CD_SUB, up to the rim search: state[k] CD_DONE (x[k]'s d2 and
+ * d2_other hold the distance), CD_SEARCH (the search is to run on x[k].st.f) or CD_SCALAR. */
+static void cd_stages(const cd_variant *v, const cdist__job *job, int disk, double unit_tol, size_t lo, int n,
+                      cd_entry *x, int *state)
 {
-    if (disk && cdist__circle_less(cdist__job_b(job, i), cdist__job_a(job, i))) {
-        cdist__circle t = a;
-        a = e;
-        e = t;
+    cdist__circle a[CD_SUB], e[CD_SUB];
+    const cdist__circle *pa[CD_SUB], *pe[CD_SUB];
+    cdk_lanes_1 g[CD_SUB];
+    double bscale[CD_SUB], min[CD_SUB], scale[CD_SUB], dcap[CD_SUB];
+    uint64_t bad = cdist__circle_pairs_lanes(job, unit_tol, lo, n, v->lanes, a, e);
+    for (int k = 0; k < n; k++) {
+        pa[k] = &x[k].st.c;
+        pe[k] = &x[k].st.d;
+        state[k] = bad >> k & 1 ? CD_SCALAR : CD_PENDING;
+        if (state[k] == CD_SCALAR) {
+            x[k].st.c = x[k].st.d = (cdist__circle){v3(0, 0, 0), v3(0, 0, 1), v3(1, 0, 0), v3(0, 1, 0), 1.0};
+            bscale[k] = 1.0;
+            continue;
+        }
+        if (disk && cdist__circle_less(cdist__job_b(job, lo + (size_t)k), cdist__job_a(job, lo + (size_t)k))) {
+            cdist__circle t = a[k];
+            a[k] = e[k];
+            e[k] = t;
+        }
+        vec3 offset;
+        cdist__best best;
+        x[k].e = cdist__circles_frame(&a[k], &e[k], &offset, &best);
+        x[k].st.c = a[k];
+        x[k].st.d = e[k];
+        x[k].st.bscale = bscale[k] = best.scale;
+        x[k].d2_other = INFINITY;
     }
-    vec3 offset;
-    cdist__best best;
-    x->e = cdist__circles_frame(&a, &e, &offset, &best);
-    x->d2_other = INFINITY;
-    if (disk) {
-        /* the rim of e over a's face, e's centre the origin (dd_query) */
-        cdist__circle a1 = a, e1 = e;
-        a1.c = v_neg(e.c);
-        e1.c = v3(0, 0, 0);
-        if (cdist__cd_stage_start(&x->st, &e1, &a1, best.scale, 0) != CD_STAGE_DONE) return CD_STAGE_SCALAR;
-        x->d2_other = x->st.d2;
+    for (int k0 = 0; k0 < n; k0 += v->lanes) {
+        int m = n - k0 < v->lanes ? n - k0 : v->lanes;
+        if (disk) {
+            /* the rim of e over a's face, e's centre the origin (dd_query): e at the origin, a's
+             * centre -e's */
+            unsigned out = v->face(pe + k0, pa + k0, 1, bscale + k0, m, g + k0, min + k0);
+            for (int k = k0; k < k0 + m; k++) {
+                if (out >> (k - k0) & 1) state[k] = CD_SCALAR;
+                x[k].d2_other = min[k];
+            }
+        }
+        unsigned out = v->face(pa + k0, pe + k0, 0, bscale + k0, m, g + k0, min + k0);
+        unsigned spared = v->rim_far(g + k0, min + k0, m, scale + k0, dcap + k0);
+        for (int k = k0; k < k0 + m; k++) {
+            if (out >> (k - k0) & 1) state[k] = CD_SCALAR;
+            if (state[k] == CD_SCALAR) continue;
+            x[k].st.k.g = g[k];
+            x[k].st.d2 = min[k];
+            x[k].st.scale = scale[k];
+            x[k].st.dcap = dcap[k];
+            if (spared >> (k - k0) & 1) state[k] = CD_DONE;
+            else state[k] = cdist__cd_stage_frame(&x[k].st) ? CD_SEARCH : CD_SCALAR;
+        }
     }
-    return cdist__cd_stage_start(&x->st, &a, &e, best.scale, 1);
 }
 
-/* The kernel with the rim searches in the given number of lanes (cdist__cc_quick_lanes), over
- * sub-blocks of CD_SUB entries (their stages stay in the first-level cache). An FMA clone, like
- * the single query's stages: the fma() of the validation and framing are instructions there. */
-enum { CD_SUB = 16 };
+/* The kernel with the stages and rim searches in the given number of lanes (0: this CPU's
+ * widest), over sub-blocks of CD_SUB entries (their stages stay in the first-level cache). */
 CD_FMA_CLONES static uint64_t cd_kernel(const cdist__job *job, int disk, double unit_tol, size_t lo, size_t count,
                                         int lanes)
 {
+    const cd_variant *v = cd_variant_of(lanes);
     cd_entry x[CD_SUB];
-    cdist__circle a[CD_SUB], e[CD_SUB];
     const cdist__cc_frame *f[CD_SUB];
     double t[CD_SUB], c[CD_SUB], s[CD_SUB], d2r[CD_SUB];
     int state[CD_SUB], at[CD_SUB]; /* the searches packed: f[j] is entry at[j]'s */
     uint64_t left = 0;
     for (int b = 0; b < (int)count; b += CD_SUB) {
         int n = (int)count - b < CD_SUB ? (int)count - b : CD_SUB, m = 0;
-        uint64_t bad = cdist__circle_pairs_lanes(job, unit_tol, lo + (size_t)b, n, lanes, a, e);
-        for (int k = 0; k < n; k++) {
-            state[k] = bad >> k & 1 ? CD_STAGE_SCALAR : cd_start(job, disk, lo + (size_t)(b + k), a[k], e[k], &x[k]);
-            if (state[k] == CD_STAGE_SEARCH) {
+        cd_stages(v, job, disk, unit_tol, lo + (size_t)b, n, x, state);
+        for (int k = 0; k < n; k++)
+            if (state[k] == CD_SEARCH) {
                 at[m] = k;
                 f[m++] = &x[k].st.f;
             }
-        }
         uint64_t found = m ? cdist__cc_quick_lanes(f, m, lanes, t, c, s, d2r) : 0;
         for (int j = 0; j < m; j++) {
             int k = at[j];
-            if (!(found >> j & 1)) state[k] = CD_STAGE_SCALAR;
+            if (!(found >> j & 1)) state[k] = CD_SCALAR;
             else cdist__cd_stage_finish(&x[k].st, t[j], d2r[j]);
         }
         for (int k = 0; k < n; k++) {
-            if (state[k] == CD_STAGE_SCALAR) {
-                left |= (uint64_t)1 << (b + k);
-                continue;
-            }
             double d2 = x[k].st.d2 < x[k].d2_other ? x[k].st.d2 : x[k].d2_other;
-            if (!(d2 < INFINITY)) {
+            if (state[k] == CD_SCALAR || !(d2 < INFINITY)) {
                 left |= (uint64_t)1 << (b + k);
                 continue;
             }

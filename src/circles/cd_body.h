@@ -144,10 +144,10 @@ CD_INLINE void KN(cdk_offer)(const KN(cdk_lanes) *k, M m, V t, V cs, V sn, V *mi
     V d2 = vsel(out, vfma(dr, dr, zz), zz);
     m = mandn(vgt(d2, far2), m);
     *min = vsel(mand(m, vlt(d2, *min)), d2, *min);
+    (void)t;
 #if W == 1
     if (m && ctx) CDK_OFFER_PAIR(ctx, t, cs, sn, x, y, z, ex, out ? rho : 0.0, d2);
 #else
-    (void)t;
     (void)ctx;
 #endif
 }
@@ -176,15 +176,15 @@ CD_INLINE M KN(cdk_crossing_far)(const KN(cdk_lanes) *k, V cs, V sn, V z, V min,
 CD_INLINE void KN(cdk_height)(const KN(cdk_lanes) *k, V *min, V scale, void *ctx)
 {
     V amp = vsqrt(vadd(vmul(k->Z[1], k->Z[1]), vmul(k->Z[2], k->Z[2])));
-    M all = mtrue();
-    V phi = KN(cdk_call2)(atan2, all, k->Z[2], k->Z[1]);
+    V cz = vdiv(vneg(k->Z[0]), amp);
+    M all = mtrue(), cross = vle(vabs(cz), vset(1.0));
+    /* phi: the extremes' angle (reported with the pairs) and the crossings' start */
+    V phi = KN(cdk_call2)(atan2, ctx ? all : cross, k->Z[2], k->Z[1]);
     /* The extremes' cos and sin are (Z1, Z2) / amp and their negatives, as accurate as sincos of
      * the rounded phi and without it (the angles reported are still phi, phi + pi). */
     V ce = vdiv(k->Z[1], amp), se = vdiv(k->Z[2], amp);
     KN(cdk_offer)(k, all, phi, ce, se, min, scale, ctx);
     KN(cdk_offer)(k, all, vadd(phi, vset(M_PI)), vneg(ce), vneg(se), min, scale, ctx);
-    V cz = vdiv(vneg(k->Z[0]), amp);
-    M cross = vle(vabs(cz), vset(1.0));
     if (!many(cross)) return;
     V w = KN(cdk_acos)(cross, cz);
     for (int s = -1; s <= 1; s += 2) {

@@ -68,6 +68,13 @@ CD_INLINE void cdk_offer_pair(void *ctx, double t, double cs, double sn, double 
 #include "circles/cd_body.h"
 #include "base/lanes/lanes_undef.h"
 
+/* The circle as the ring evaluator sees it (w = (x, y, 0), h = z). */
+CD_INLINE void cdk_ring(cdk *k)
+{
+    k->rg = (cdist__ring){v3(k->g.X[1], k->g.Y[1], 0.0), v3(k->g.X[2], k->g.Y[2], 0.0), v3(k->g.X[0], k->g.Y[0], 0.0),
+                          k->g.Z[1], k->g.Z[2], k->g.Z[0]};
+}
+
 CD_INLINE void cdk_init(cdk *k, const cdist__circle *c, const cdist__circle *d)
 {
     vec3 D = d->c;
@@ -82,8 +89,7 @@ CD_INLINE void cdk_init(cdk *k, const cdist__circle *c, const cdist__circle *d)
     const double Dv[3] = {D.x, D.y, D.z}, dn[3] = {d->n.x, d->n.y, d->n.z}, du[3] = {d->u.x, d->u.y, d->u.z},
                  dv[3] = {d->v.x, d->v.y, d->v.z}, cu[3] = {c->u.x, c->u.y, c->u.z}, cv[3] = {c->v.x, c->v.y, c->v.z};
     cdk_lanes_init_1(&k->g, Dv, dn, du, dv, cu, cv, c->r, d->r);
-    k->rg = (cdist__ring){v3(k->g.X[1], k->g.Y[1], 0.0), v3(k->g.X[2], k->g.Y[2], 0.0), v3(k->g.X[0], k->g.Y[0], 0.0),
-                          k->g.Z[1], k->g.Z[2], k->g.Z[0]};
+    cdk_ring(k);
     /* Delta . Delta' = (P - D) . P' = -D . P' since |P| is constant. */
     double r = c->r;
     k->S[0] = 0.0; k->S[1] = -r * v_dot(D, c->v); k->S[2] = r * v_dot(D, c->u);
@@ -508,24 +514,13 @@ CD_INLINE cdist_status cdk_solve(cdist_query *q, cdist_method method, const cdk 
     return CDIST_OK;
 }
 
-CD_FMA_CLONES int cdist__cd_stage_start(cdist__cd_stage *st, const cdist__circle *c, const cdist__circle *d, double bscale,
-                                       int rim)
+CD_FMA_CLONES int cdist__cd_stage_frame(cdist__cd_stage *st)
 {
-    if (c->r == 0.0 || d->r == 0.0) return CD_STAGE_SCALAR;
-    st->c = *c;
-    st->d = *d;
     cdk *k = &st->k;
-    cdk_init(k, &st->c, &st->d);
-    if (cdk_parallel_1(&k->g)) return CD_STAGE_SCALAR;
-    cdk_sink o = {k, NULL, INFINITY, bscale};
-    cdk_height(k, &o);
-    st->d2 = o.d2;
-    st->bscale = bscale;
-    if (!rim) return CD_STAGE_DONE;
-    st->scale = cdk_scale_1(&k->g);
-    st->dcap = o.d2 < INFINITY ? sqrt(o.d2) : INFINITY;
-    if (cdk_rim_far_1(&k->g, st->dcap, st->scale)) return CD_STAGE_DONE;
-    return cdist__cc_quick_frame(&st->c, &st->d, &st->f, &st->sc) ? CD_STAGE_SEARCH : CD_STAGE_SCALAR;
+    k->c = &st->c;
+    k->d = &st->d;
+    cdk_ring(k);
+    return cdist__cc_quick_frame(&st->c, &st->d, &st->f, &st->sc);
 }
 
 CD_FMA_CLONES void cdist__cd_stage_finish(cdist__cd_stage *st, double t, double d2)

@@ -213,21 +213,20 @@ typedef struct cdist__cdk {
 } cdist__cdk;
 
 /* The distance of cdist__circle_disk_core_ex (ROBUST method, cap INFINITY, a fresh collector
- * of scale bscale) in stages, the single query's own steps, for the batch kernel, which runs
- * the rim's certified search of many entries in lanes (src/batch/cd_kernel.c):
- * cdist__cd_stage_start (c, d in the frame's units) offers the candidates over the face and
- * returns CD_STAGE_DONE (d2 is the squared distance: no rim minimum can be below it, or rim =
- * 0), CD_STAGE_SEARCH (the certified search cdist__cc_quick is to run on f; with the angle t
- * it finds and cdist__cc_point_d2 there, cdist__cd_stage_finish completes d2) or CD_STAGE_SCALAR
- * (the query takes a path the stages do not: a zero radius, parallel planes, the engine). */
+ * of scale bscale) in stages, the single query's own steps, for the batch kernel
+ * (src/batch/cd_kernel.c), which computes the candidates over the face of many entries in
+ * lanes (cd_body.h) into k.g and d2, the cap dcap and the scale, and spares the rim where the
+ * bound allows (cdk_rim_far); for the others cdist__cd_stage_frame (c, d: the circle and disk
+ * in the frame's units) sets the rim search's frame f and returns whether the search is to run
+ * (else the query takes the engine); with the angle t the search (cdist__cc_quick) finds and
+ * cdist__cc_point_d2 there, cdist__cd_stage_finish completes d2. */
 typedef struct cdist__cd_stage {
     cdist__circle c, d;
     cdist__cdk k;
     double d2, bscale, scale, dcap, sc;
     cdist__cc_frame f;
 } cdist__cd_stage;
-enum { CD_STAGE_DONE, CD_STAGE_SEARCH, CD_STAGE_SCALAR };
-int cdist__cd_stage_start(cdist__cd_stage *st, const cdist__circle *c, const cdist__circle *d, double bscale, int rim);
+int cdist__cd_stage_frame(cdist__cd_stage *st);
 void cdist__cd_stage_finish(cdist__cd_stage *st, double t, double d2);
 #define CD_DISK_METHODS (CD_HAS(CDIST_METHOD_POLYNOMIAL) | CD_HAS(CDIST_METHOD_ROBUST))
 #define CD_DISK_AUTO CDIST_METHOD_ROBUST

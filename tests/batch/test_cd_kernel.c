@@ -8,6 +8,8 @@
  * beside huge, far away) and random pairs (general, piercing, nearly coaxial, mixed scales):
  * - the kernel answers an entry only if the single query (method AUTO) accepts it, and then
  *   with the single query's distance bit for bit;
+ * - the validation and the candidates over the face in every lane width are the one-lane body's
+ *   (the single query's) bit for bit;
  * - the rim searches in every lane width certify the entries the single query's search of that
  *   width (cdist__cc_quick's variant for that instruction set) certifies, with its angle, cosine
  *   and sine bit for bit;
@@ -143,10 +145,11 @@ static size_t run_width(cdist_query *q, int disk, int lanes, size_t n, const cha
  * AVX-512's reciprocal square root), so their answers may differ in the last bits. */
 static void check_widths(int disk, size_t n, const char *what)
 {
-    static cd_entry x[64];
-    const cdist__cc_frame *f[64];
-    double t[64], c[64], s[64], d2[64];
-    int bad = 0, searched = 0;
+    static cd_entry x[CD_SUB], xw[CD_SUB];
+    const cdist__cc_frame *f[CD_SUB];
+    double t[CD_SUB], c[CD_SUB], s[CD_SUB], d2[CD_SUB];
+    int state[CD_SUB], statew[CD_SUB];
+    int bad = 0, sbad = 0, searched = 0;
     typedef int (*quick_fn)(const cdist__cc_frame *, double *, double *, double *);
     quick_fn quick[3] = {ck_quick_1, NULL, NULL};
     int widths[3] = {1, 4, 8};
@@ -155,24 +158,21 @@ static void check_widths(int disk, size_t n, const char *what)
     if (__builtin_cpu_supports("avx512f")) quick[2] = ck_quick_8;
 #endif
     cdist__cc_search_tables();
-    for (size_t lo = 0; lo < n; lo += 64) {
-        int cnt = n - lo < 64 ? (int)(n - lo) : 64;
-        cdist__job job = {disk ? CDIST_KIND_DISK_DISK : CDIST_KIND_CIRCLE_DISK, n, (const char *)A, (const char *)B,
-                          sizeof(cdist_circle), sizeof(cdist_circle), NULL, D, NULL, 64, CD_OUT_DISTANCE, 0, NULL};
-        cdist__circle a[64], e[64];
-        uint64_t bad1 = cdist__circle_pairs_lanes(&job, 1e-6, lo, cnt, 1, a, e);
+    cdist__job job = {disk ? CDIST_KIND_DISK_DISK : CDIST_KIND_CIRCLE_DISK, n, (const char *)A, (const char *)B,
+                      sizeof(cdist_circle), sizeof(cdist_circle), NULL, D, NULL, 64, CD_OUT_DISTANCE, 0, NULL};
+    for (size_t lo = 0; lo < n; lo += CD_SUB) {
+        int cnt = n - lo < CD_SUB ? (int)(n - lo) : CD_SUB;
+        cd_stages(cd_variant_of(1), &job, disk, 1e-6, lo, cnt, x, state);
         for (int k = 0; k < cnt; k++) {
-            f[k] = !(bad1 >> k & 1) && cd_start(&job, disk, lo + (size_t)k, a[k], e[k], &x[k]) == CD_STAGE_SEARCH
-                       ? &x[k].st.f
-                       : NULL;
+            f[k] = state[k] == CD_SEARCH ? &x[k].st.f : NULL;
             searched += f[k] != NULL;
         }
         for (int w = 0; w < 3; w++) {
             if (!quick[w]) continue;
             /* the validation in lanes: the single query's (the scalar check) bit for bit */
-            cdist__circle aw[64], ew[64];
+            cdist__circle aw[CD_SUB], ew[CD_SUB];
             uint64_t badw = cdist__circle_pairs_lanes(&job, 1e-6, lo, cnt, widths[w], aw, ew);
-            int vbad = badw != bad1;
+            int vbad = 0;
             for (int k = 0; k < cnt; k++) {
                 cdist__circle as, es;
                 int ok = cdist__circle_fast_basis(1e-6, &A[lo + (size_t)k], &as) &&
@@ -182,6 +182,18 @@ static void check_widths(int disk, size_t n, const char *what)
             }
             CHECK(!vbad, "%s %s from %zu, %d lanes: the validation differs from the single query's", disk ? "dd" : "cd",
                   what, lo, widths[w]);
+            /* the candidates over the face in lanes: the one-lane body's (the single query's) */
+            cd_stages(cd_variant_of(widths[w]), &job, disk, 1e-6, lo, cnt, xw, statew);
+            for (int k = 0; k < cnt; k++) {
+                int differ = statew[k] != state[k];
+                if (!differ && state[k] != CD_SCALAR)
+                    differ = memcmp(&x[k].st.d2, &xw[k].st.d2, 8) || memcmp(&x[k].d2_other, &xw[k].d2_other, 8) ||
+                             memcmp(&x[k].st.dcap, &xw[k].st.dcap, 8) ||
+                             memcmp(&x[k].st.k.g, &xw[k].st.k.g, offsetof(cdk_lanes_1, small));
+                if (differ && sbad++ < 5)
+                    CHECK(0, "%s %s entry %zu, %d lanes: the stages differ from one lane's (state %d vs %d)",
+                          disk ? "dd" : "cd", what, lo + (size_t)k, widths[w], statew[k], state[k]);
+            }
             uint64_t found = cdist__cc_quick_lanes(f, cnt, widths[w], t, c, s, d2);
             for (int k = 0; k < cnt; k++) {
                 if (!f[k]) continue;
@@ -198,6 +210,7 @@ static void check_widths(int disk, size_t n, const char *what)
     }
     CHECK(bad == 0, "%s %s: %d rim searches differ from the single query's of their width", disk ? "dd" : "cd", what,
           bad);
+    CHECK(sbad == 0, "%s %s: %d entries' stages differ between lane widths", disk ? "dd" : "cd", what, sbad);
     CHECK(searched > 0, "%s %s: no rim search ran", disk ? "dd" : "cd", what);
 }
 

@@ -1,0 +1,120 @@
+/* SPDX-License-Identifier: MIT */
+/* One instance of the circle-disk kernel's stages in lanes (src/batch/cd_kernel.c) for the lanes
+ * the includer chose (CD_LANES), compiled for their instruction set: the candidates over the
+ * disk's face of W entries at once (src/circles/cd_body.h, the single query's arithmetic) and the
+ * bound that spares the rim. No include guard. */
+#if CD_LANES == 8
+CD_LANES_TARGET_PUSH("avx512f,fma")
+#elif CD_LANES == 4
+CD_LANES_TARGET_PUSH("avx2,fma")
+#endif
+#include "base/lanes/lanes_def.h"
+#include "base/lanes/lanes_vec.h"
+#include "circles/cd_body.h"
+
+/* The circle c and disk d of the lanes in the frame of c's centre: d's centre, or with neg (the
+ * other half of disk-disk, the circle c being the disk at C, d the one at the origin) -C;
+ * lanes >= n repeat lane 0. */
+CD_INLINE void KN(cd_load)(const cdist__circle *const *c, const cdist__circle *const *d, int neg, int n, V *D, V *dn,
+                           V *du, V *dv, V *cu, V *cv, V *r, V *R)
+{
+    double col[17][W];
+    for (int l = 0; l < W; l++) {
+        const cdist__circle *a = c[l < n ? l : 0], *e = d[l < n ? l : 0];
+        const double v[17] = {neg ? -a->c.x : e->c.x, neg ? -a->c.y : e->c.y, neg ? -a->c.z : e->c.z,
+                              e->n.x, e->n.y, e->n.z, e->u.x, e->u.y, e->u.z, e->v.x, e->v.y, e->v.z,
+                              a->u.x, a->u.y, a->u.z, a->v.x, a->v.y};
+        for (int j = 0; j < 17; j++) col[j][l] = v[j];
+    }
+    for (int j = 0; j < 3; j++) {
+        D[j] = vld(col[j]);
+        dn[j] = vld(col[3 + j]);
+        du[j] = vld(col[6 + j]);
+        dv[j] = vld(col[9 + j]);
+    }
+    cu[0] = vld(col[12]), cu[1] = vld(col[13]), cu[2] = vld(col[14]);
+    cv[0] = vld(col[15]), cv[1] = vld(col[16]);
+    double z[W], rr[W], RR[W];
+    for (int l = 0; l < W; l++) {
+        z[l] = c[l < n ? l : 0]->v.z;
+        rr[l] = c[l < n ? l : 0]->r;
+        RR[l] = d[l < n ? l : 0]->r;
+    }
+    cv[2] = vld(z), *r = vld(rr), *R = vld(RR);
+}
+
+/* The candidates over the face of the pairs (c[l], d[l]), l < n <= W (cdist__cd_stage_start's):
+ * into g[l] the circle in the disk's frame, min[l] the smallest squared distance; returns the
+ * lanes the stages do not take (a zero radius, parallel planes). */
+static unsigned KN(cd_face)(const cdist__circle *const *c, const cdist__circle *const *d, int neg, const double *bscale,
+                            int n, cdk_lanes_1 *g, double *min)
+{
+    V D[3], dn[3], du[3], dv[3], cu[3], cv[3], r, R;
+    KN(cd_load)(c, d, neg, n, D, dn, du, dv, cu, cv, &r, &R);
+    double sc[W];
+    for (int l = 0; l < W; l++) sc[l] = bscale[l < n ? l : 0];
+    KN(cdk_lanes) k;
+    KN(cdk_lanes_init)(&k, D, dn, du, dv, cu, cv, r, R);
+    M bad = mor(mor(veq(r, vset(0.0)), veq(R, vset(0.0))), KN(cdk_parallel)(&k));
+    V m = vset(INFINITY);
+    KN(cdk_height)(&k, &m, vld(sc), NULL);
+    double f[13][W];
+    const V *src[13] = {&k.X[0], &k.X[1], &k.X[2], &k.Y[0], &k.Y[1], &k.Y[2], &k.Z[0], &k.Z[1], &k.Z[2],
+                        &k.E0, &k.R, &k.rho, &m};
+    for (int j = 0; j < 13; j++) vst(f[j], *src[j]);
+    for (int l = 0; l < n; l++) {
+        cdk_lanes_1 *o = &g[l];
+        for (int j = 0; j < 3; j++) {
+            o->X[j] = f[j][l];
+            o->Y[j] = f[3 + j][l];
+            o->Z[j] = f[6 + j][l];
+        }
+        o->E0 = f[9][l];
+        o->R = f[10][l];
+        o->rho = f[11][l];
+        o->small = o->rho <= o->R;
+        min[l] = f[12][l];
+    }
+    return mbits(bad) & ((1u << n) - 1u);
+}
+
+/* The bound that spares the rim search (cdk_rim_far) of lanes l < n <= W with their circles in
+ * the disks' frames g[l], squared best min[l]: the lanes it spares; scale[l], dcap[l] set. */
+static unsigned KN(cd_rim_far)(const cdk_lanes_1 *g, const double *min, int n, double *scale, double *dcap)
+{
+    double f[12][W], mn[W];
+    for (int l = 0; l < W; l++) {
+        const cdk_lanes_1 *o = &g[l < n ? l : 0];
+        for (int j = 0; j < 3; j++) {
+            f[j][l] = o->X[j];
+            f[3 + j][l] = o->Y[j];
+            f[6 + j][l] = o->Z[j];
+        }
+        f[9][l] = o->E0;
+        f[10][l] = o->R;
+        f[11][l] = o->rho;
+        mn[l] = min[l < n ? l : 0];
+    }
+    KN(cdk_lanes) k;
+    for (int j = 0; j < 3; j++) {
+        k.X[j] = vld(f[j]);
+        k.Y[j] = vld(f[3 + j]);
+        k.Z[j] = vld(f[6 + j]);
+    }
+    k.E0 = vld(f[9]), k.R = vld(f[10]), k.rho = vld(f[11]);
+    k.small = vle(k.rho, k.R);
+    V m = vld(mn), s = KN(cdk_scale)(&k), cap = vsel(vlt(m, vset(INFINITY)), vsqrt(m), vset(INFINITY));
+    double ss[W], cc[W];
+    vst(ss, s);
+    vst(cc, cap);
+    for (int l = 0; l < n; l++) {
+        scale[l] = ss[l];
+        dcap[l] = cc[l];
+    }
+    return mbits(KN(cdk_rim_far)(&k, cap, s)) & ((1u << n) - 1u);
+}
+
+#if W > 1
+CD_LANES_TARGET_POP
+#endif
+#include "base/lanes/lanes_undef.h"
