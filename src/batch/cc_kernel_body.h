@@ -36,11 +36,6 @@ CD_INLINE void KN(ck_basis)(const V *n, V *u, V *v)
     KN(cross)(n[0], n[1], n[2], u[0], u[1], u[2], &v[0], &v[1], &v[2]);
 }
 
-/* a.x b.x + a.y b.y + a.z b.z as cdist__ring_dot, left to right */
-CD_INLINE V KN(ck_rdot)(V ax, V ay, V az, V bx, V by, V bz)
-{
-    return vadd(vadd(vmul(ax, bx), vmul(ay, by)), vmul(az, bz));
-}
 
 /* The single query's validation, framing (cdist__circles_frame), problem (cdist__cc_prepare)
  * and ring (cdist__ring_init) of the entries [lo + base, lo + base + n), n <= W, operation by
@@ -142,9 +137,9 @@ static unsigned KN(ck_setup)(const cdist__job *job, double unit_tol, size_t lo, 
         be[k] = vmul(R, be[k]);
         ga[k] = vneg(ga[k]);
     }
-    V ha = vmul(R, KN(ck_rdot)(m[0], m[1], m[2], u[0], u[1], u[2]));
-    V hb = vmul(R, KN(ck_rdot)(m[0], m[1], m[2], v[0], v[1], v[2]));
-    V hc = vneg(KN(ck_rdot)(m[0], m[1], m[2], CBx, CBy, CBz));
+    V ha = vmul(R, KN(ring_dot)(m[0], m[1], m[2], u[0], u[1], u[2]));
+    V hb = vmul(R, KN(ring_dot)(m[0], m[1], m[2], v[0], v[1], v[2]));
+    V hc = vneg(KN(ring_dot)(m[0], m[1], m[2], CBx, CBy, CBz));
     V W1 = vadd(vsqrt(KN(dot)(al[0], al[1], al[2], al[0], al[1], al[2])),
                 vsqrt(KN(dot)(be[0], be[1], be[2], be[0], be[1], be[2])));
     V Lw = vadd(vmul(vset(2.0), R), vsqrt(KN(dot)(CBx, CBy, CBz, CBx, CBy, CBz)));

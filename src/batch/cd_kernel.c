@@ -33,13 +33,16 @@ typedef struct cd_variant {
     unsigned (*face)(const cdist__circle *const *c, const cdist__circle *const *d, int neg, const double *bscale, int n,
                      cdk_lanes_1 *g, double *min);
     unsigned (*rim_far)(const cdk_lanes_1 *g, const double *min, int n, double *scale, double *dcap);
+    unsigned (*rim_frame)(const cdist__circle *const *c, const cdist__circle *const *d, int n, cdist__cc_frame *const *f,
+                          double *sc);
 } cd_variant;
 
 static const cd_variant *cd_variant_of(int lanes)
 {
-    static const cd_variant v1 = {1, cd_face_1, cd_rim_far_1};
+    static const cd_variant v1 = {1, cd_face_1, cd_rim_far_1, cd_rim_frame_1};
 #ifdef CD_X86_KERNELS
-    static const cd_variant v4 = {4, cd_face_4, cd_rim_far_4}, v8 = {8, cd_face_8, cd_rim_far_8};
+    static const cd_variant v4 = {4, cd_face_4, cd_rim_far_4, cd_rim_frame_4},
+                            v8 = {8, cd_face_8, cd_rim_far_8, cd_rim_frame_8};
     if (!lanes) {
         int isa = cdist__lanes_isa();
         lanes = isa == CD_ISA_AVX512 ? 8 : isa == CD_ISA_AVX2 ? 4 : 1;
@@ -68,11 +71,13 @@ static void cd_stages(const cd_variant *v, const cdist__job *job, int disk, doub
     cdist__circle a[CD_SUB], e[CD_SUB];
     const cdist__circle *pa[CD_SUB], *pe[CD_SUB];
     cdk_lanes_1 g[CD_SUB];
-    double bscale[CD_SUB], min[CD_SUB], scale[CD_SUB], dcap[CD_SUB];
+    cdist__cc_frame *f[CD_SUB];
+    double bscale[CD_SUB], min[CD_SUB], scale[CD_SUB], dcap[CD_SUB], sc[CD_SUB];
     uint64_t bad = cdist__circle_pairs_lanes(job, unit_tol, lo, n, v->lanes, a, e);
     for (int k = 0; k < n; k++) {
         pa[k] = &x[k].st.c;
         pe[k] = &x[k].st.d;
+        f[k] = &x[k].st.f;
         state[k] = bad >> k & 1 ? CD_SCALAR : CD_PENDING;
         if (state[k] == CD_SCALAR) {
             x[k].st.c = x[k].st.d = (cdist__circle){v3(0, 0, 0), v3(0, 0, 1), v3(1, 0, 0), v3(0, 1, 0), 1.0};
@@ -104,7 +109,7 @@ static void cd_stages(const cd_variant *v, const cdist__job *job, int disk, doub
             }
         }
         unsigned out = v->face(pa + k0, pe + k0, 0, bscale + k0, m, g + k0, min + k0);
-        unsigned spared = v->rim_far(g + k0, min + k0, m, scale + k0, dcap + k0);
+        unsigned spared = v->rim_far(g + k0, min + k0, m, scale + k0, dcap + k0), search = 0;
         for (int k = k0; k < k0 + m; k++) {
             if (out >> (k - k0) & 1) state[k] = CD_SCALAR;
             if (state[k] == CD_SCALAR) continue;
@@ -112,9 +117,21 @@ static void cd_stages(const cd_variant *v, const cdist__job *job, int disk, doub
             x[k].st.d2 = min[k];
             x[k].st.scale = scale[k];
             x[k].st.dcap = dcap[k];
-            if (spared >> (k - k0) & 1) state[k] = CD_DONE;
-            else state[k] = cdist__cd_stage_frame(&x[k].st) ? CD_SEARCH : CD_SCALAR;
+            if (spared >> (k - k0) & 1) {
+                state[k] = CD_DONE;
+            } else {
+                state[k] = CD_SEARCH;
+                search |= 1u << (k - k0);
+            }
         }
+        if (!search) continue;
+        unsigned engine = v->rim_frame(pa + k0, pe + k0, m, f + k0, sc + k0);
+        for (int k = k0; k < k0 + m; k++)
+            if (search >> (k - k0) & 1) {
+                if (engine >> (k - k0) & 1) state[k] = CD_SCALAR;
+                x[k].st.sc = sc[k];
+                cdist__cd_stage_ring(&x[k].st);
+            }
     }
 }
 

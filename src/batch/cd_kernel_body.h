@@ -114,6 +114,80 @@ static unsigned KN(cd_rim_far)(const cdk_lanes_1 *g, const double *min, int n, d
     return mbits(KN(cdk_rim_far)(&k, cap, s)) & ((1u << n) - 1u);
 }
 
+
+/* The rim search's frame of the pairs (c[l], d[l]), l < n <= W, as cdist__cc_quick_frame
+ * builds it (scaled_pair, cdist__cc_frame_ring, the parallel and worth tests) operation by
+ * operation: the fields the search reads into *f[l] (the ring, R, s, W1, Hh, Hc0, Lw) and the
+ * scaling into sc[l]; returns the lanes whose search is not to run (the query takes the
+ * engine). */
+static unsigned KN(cd_rim_frame)(const cdist__circle *const *c, const cdist__circle *const *d, int n,
+                                 cdist__cc_frame *const *f, double *sc)
+{
+    double col[14][W];
+    for (int l = 0; l < W; l++) {
+        const cdist__circle *a = c[l < n ? l : 0], *e = d[l < n ? l : 0];
+        const double v[14] = {e->c.x, e->c.y, e->c.z, e->n.x, e->n.y, e->n.z, a->u.x,
+                              a->u.y, a->u.z, a->v.x, a->v.y, a->v.z, a->r,   e->r};
+        for (int j = 0; j < 14; j++) col[j][l] = v[j];
+    }
+    V C[3], m[3], u[3], v[3];
+    for (int j = 0; j < 3; j++) {
+        C[j] = vld(col[j]);
+        m[j] = vld(col[3 + j]);
+        u[j] = vld(col[6 + j]);
+        v[j] = vld(col[9 + j]);
+    }
+    V r0 = vld(col[12]), r1 = vld(col[13]);
+    /* scaled_pair: the pair scaled by 2^-(e + 1), L 2^-e in [1, 2) */
+    V L0 = KN(fmax)(KN(fmax)(r0, r1), vsqrt(KN(dot)(C[0], C[1], C[2], C[0], C[1], C[2])));
+    M bad = mnot(vge(L0, vset(0x1p-1022)));
+    V down = vmul(vrecip2(KN(pow2_of)(L0)), vset(0.5));
+    V R = vmul(r0, down), s = vmul(r1, down);
+    for (int j = 0; j < 3; j++) C[j] = vmul(down, C[j]);
+    /* cdist__ring_init */
+    V al[3], be[3], ga[3];
+    KN(cross)(m[0], m[1], m[2], u[0], u[1], u[2], &al[0], &al[1], &al[2]);
+    KN(cross)(m[0], m[1], m[2], v[0], v[1], v[2], &be[0], &be[1], &be[2]);
+    KN(cross)(m[0], m[1], m[2], C[0], C[1], C[2], &ga[0], &ga[1], &ga[2]);
+    for (int j = 0; j < 3; j++) {
+        al[j] = vmul(R, al[j]);
+        be[j] = vmul(R, be[j]);
+        ga[j] = vneg(ga[j]);
+    }
+    V ha = vmul(R, KN(ring_dot)(m[0], m[1], m[2], u[0], u[1], u[2]));
+    V hb = vmul(R, KN(ring_dot)(m[0], m[1], m[2], v[0], v[1], v[2]));
+    V hc = vneg(KN(ring_dot)(m[0], m[1], m[2], C[0], C[1], C[2]));
+    /* cdist__cc_frame_ring's bounds */
+    V Cu = KN(ring_dot)(C[0], C[1], C[2], u[0], u[1], u[2]), Cv = KN(ring_dot)(C[0], C[1], C[2], v[0], v[1], v[2]);
+    V aa = KN(ring_dot)(al[0], al[1], al[2], al[0], al[1], al[2]), bb = KN(ring_dot)(be[0], be[1], be[2], be[0], be[1], be[2]);
+    V gg = KN(ring_dot)(ga[0], ga[1], ga[2], ga[0], ga[1], ga[2]), Lc = vsqrt(KN(dot)(C[0], C[1], C[2], C[0], C[1], C[2]));
+    V L = KN(fmax)(KN(fmax)(R, s), Lc), Lw = vadd(vmul(vset(2.0), R), Lc);
+    V W1 = vadd(vsqrt(aa), vsqrt(bb)), nga = vsqrt(gg), Hh = vadd(vabs(ha), vabs(hb)), Hc0 = vabs(hc);
+    /* cdist__cc_parallel_critical's test and cdist__cc_quick_worth */
+    bad = mor(bad, vle(vsqrt(vadd(vmul(ha, ha), vmul(hb, hb))), vmul(vset(CD_CC_PARALLEL_ULPS * DBL_EPSILON), L)));
+    V e2 = vadd(vmul(Cu, Cu), vmul(Cv, Cv)), dr = vsub(vsqrt(e2), R), lim = vmul(vset(CD_CC_QUICK_CENTRE_REL), s);
+    bad = mor(bad, vle(vadd(vmul(dr, dr), vsub(KN(ring_dot)(C[0], C[1], C[2], C[0], C[1], C[2]), e2)), vmul(lim, lim)));
+    V axis = vmul(vset(CD_CC_QUICK_AXIS_REL), L);
+    bad = mor(bad, mnot(mand(vgt(e2, vmul(axis, axis)), vgt(nga, axis))));
+    double o[19][W];
+    const V *src[19] = {&al[0], &al[1], &al[2], &be[0], &be[1], &be[2], &ga[0], &ga[1], &ga[2], &ha,
+                        &hb,    &hc,    &R,     &s,     &W1,    &Hh,    &Hc0,   &Lw,    &down};
+    for (int j = 0; j < 19; j++) vst(o[j], *src[j]);
+    for (int l = 0; l < n; l++) {
+        cdist__cc_frame *x = f[l];
+        x->rg = (cdist__ring){v3(o[0][l], o[1][l], o[2][l]), v3(o[3][l], o[4][l], o[5][l]),
+                              v3(o[6][l], o[7][l], o[8][l]), o[9][l], o[10][l], o[11][l]};
+        x->R = o[12][l];
+        x->s = o[13][l];
+        x->W1 = o[14][l];
+        x->Hh = o[15][l];
+        x->Hc0 = o[16][l];
+        x->Lw = o[17][l];
+        sc[l] = o[18][l];
+    }
+    return mbits(bad) & ((1u << n) - 1u);
+}
+
 #if W > 1
 CD_LANES_TARGET_POP
 #endif

@@ -514,12 +514,17 @@ CD_INLINE cdist_status cdk_solve(cdist_query *q, cdist_method method, const cdk 
     return CDIST_OK;
 }
 
-CD_FMA_CLONES int cdist__cd_stage_frame(cdist__cd_stage *st)
+void cdist__cd_stage_ring(cdist__cd_stage *st)
 {
     cdk *k = &st->k;
     k->c = &st->c;
     k->d = &st->d;
     cdk_ring(k);
+}
+
+int cdist__cd_stage_frame(cdist__cd_stage *st)
+{
+    cdist__cd_stage_ring(st);
     return cdist__cc_quick_frame(&st->c, &st->d, &st->f, &st->sc);
 }
 

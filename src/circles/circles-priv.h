@@ -227,6 +227,9 @@ typedef struct cdist__cd_stage {
     cdist__cc_frame f;
 } cdist__cd_stage;
 int cdist__cd_stage_frame(cdist__cd_stage *st);
+/* The ring of k (and its circles' pointers) from k.g: what cdist__cd_stage_frame sets besides
+ * the frame, for a kernel that builds the frame in lanes. */
+void cdist__cd_stage_ring(cdist__cd_stage *st);
 void cdist__cd_stage_finish(cdist__cd_stage *st, double t, double d2);
 #define CD_DISK_METHODS (CD_HAS(CDIST_METHOD_POLYNOMIAL) | CD_HAS(CDIST_METHOD_ROBUST))
 #define CD_DISK_AUTO CDIST_METHOD_ROBUST

@@ -194,6 +194,23 @@ static void check_widths(int disk, size_t n, const char *what)
                     CHECK(0, "%s %s entry %zu, %d lanes: the stages differ from one lane's (state %d vs %d)",
                           disk ? "dd" : "cd", what, lo + (size_t)k, widths[w], statew[k], state[k]);
             }
+            /* the rim search's frame in lanes: cdist__cc_quick_frame's (the decision and the fields
+             * the search reads) */
+            for (int k = 0; k < cnt; k++) {
+                if (state[k] == CD_SCALAR) continue;
+                const cdist__circle *pc = &x[k].st.c, *pd = &x[k].st.d;
+                cdist__cc_frame fl, fs, *pf = &fl;
+                double scl, scs;
+                int engine = (int)(cd_variant_of(widths[w])->rim_frame(&pc, &pd, 1, &pf, &scl) & 1);
+                int quick = cdist__cc_quick_frame(pc, pd, &fs, &scs);
+                int differ = engine == quick;
+                if (quick && !engine)
+                    differ = memcmp(&fl.rg, &fs.rg, sizeof fs.rg) || memcmp(&scl, &scs, 8) || fl.R != fs.R ||
+                             fl.s != fs.s || fl.W1 != fs.W1 || fl.Hh != fs.Hh || fl.Hc0 != fs.Hc0 || fl.Lw != fs.Lw;
+                if (differ && sbad++ < 5)
+                    CHECK(0, "%s %s entry %zu, %d lanes: the rim frame differs from the single query's", disk ? "dd" : "cd",
+                          what, lo + (size_t)k, widths[w]);
+            }
             uint64_t found = cdist__cc_quick_lanes(f, cnt, widths[w], t, c, s, d2);
             for (int k = 0; k < cnt; k++) {
                 if (!f[k]) continue;

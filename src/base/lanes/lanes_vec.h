@@ -25,6 +25,12 @@ CD_INLINE V KN(max3)(V x, V y, V z) { return vmax(vmax(vabs(x), vabs(y)), vabs(z
 /* fma(a.x, b.x, fma(a.y, b.y, a.z * b.z)) as v_dot */
 CD_INLINE V KN(dot)(V ax, V ay, V az, V bx, V by, V bz) { return vfma(ax, bx, vfma(ay, by, vmul(az, bz))); }
 
+/* a.x b.x + a.y b.y + a.z b.z as cdist__ring_dot, left to right */
+CD_INLINE V KN(ring_dot)(V ax, V ay, V az, V bx, V by, V bz)
+{
+    return vadd(vadd(vmul(ax, bx), vmul(ay, by)), vmul(az, bz));
+}
+
 /* v_cross: (a.y b.z - a.z b.y, a.z b.x - a.x b.z, a.x b.y - a.y b.x) */
 CD_INLINE void KN(cross)(V ax, V ay, V az, V bx, V by, V bz, V *x, V *y, V *z)
 {
