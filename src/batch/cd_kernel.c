@@ -63,8 +63,8 @@ typedef struct cd_entry {
 enum { CD_SUB = 16 };
 enum { CD_PENDING = -1, CD_DONE, CD_SEARCH, CD_SCALAR };
 
-/* Entries [lo, lo + n), n <= CD_SUB, up to the rim search: state[k] CD_DONE (x[k]'s d2 and
- * d2_other hold the distance), CD_SEARCH (the search is to run on x[k].st.f) or CD_SCALAR. */
+/* Entries [lo, lo + n), n <= CD_SUB, up to the rim search: state[k] CD_DONE (x[k]'s d2 holds
+ * the first half's distance), CD_SEARCH (the search is to run on x[k].st.f) or CD_SCALAR. */
 static void cd_stages(const cd_variant *v, const cdist__job *job, int disk, double unit_tol, size_t lo, int n,
                       cd_entry *x, int *state)
 {
@@ -97,17 +97,9 @@ static void cd_stages(const cd_variant *v, const cdist__job *job, int disk, doub
         x[k].st.bscale = bscale[k] = best.scale;
         x[k].d2_other = INFINITY;
     }
+    for (int k = 0; k < n; k++) min[k] = INFINITY;
     for (int k0 = 0; k0 < n; k0 += v->lanes) {
         int m = n - k0 < v->lanes ? n - k0 : v->lanes;
-        if (disk) {
-            /* the rim of e over a's face, e's centre the origin (dd_query): e at the origin, a's
-             * centre -e's */
-            unsigned out = v->face(pe + k0, pa + k0, 1, bscale + k0, m, g + k0, min + k0);
-            for (int k = k0; k < k0 + m; k++) {
-                if (out >> (k - k0) & 1) state[k] = CD_SCALAR;
-                x[k].d2_other = min[k];
-            }
-        }
         unsigned out = v->face(pa + k0, pe + k0, 0, bscale + k0, m, g + k0, min + k0);
         unsigned spared = v->rim_far(g + k0, min + k0, m, scale + k0, dcap + k0), search = 0;
         for (int k = k0; k < k0 + m; k++) {
@@ -135,6 +127,34 @@ static void cd_stages(const cd_variant *v, const cdist__job *job, int disk, doub
     }
 }
 
+/* Disk-disk's other half (dd_query): the rim of e over a's face, e's centre the origin, into
+ * d2_other of the entries answered so far. Its candidates far above the first half's answer
+ * cannot be the answer, so they are dropped from the start: the answer, the smaller of the
+ * halves, is the same. */
+static void cd_other_half(const cd_variant *v, int n, cd_entry *x, int *state)
+{
+    const cdist__circle *pa[CD_SUB], *pe[CD_SUB];
+    cdk_lanes_1 g[CD_SUB];
+    double bscale[CD_SUB], min[CD_SUB];
+    int at[CD_SUB], m = 0;
+    for (int k = 0; k < n; k++)
+        if (state[k] == CD_DONE) {
+            at[m] = k;
+            pa[m] = &x[k].st.c;
+            pe[m] = &x[k].st.d;
+            bscale[m] = x[k].st.bscale;
+            min[m++] = x[k].st.d2;
+        }
+    for (int j0 = 0; j0 < m; j0 += v->lanes) {
+        int w = m - j0 < v->lanes ? m - j0 : v->lanes;
+        unsigned out = v->face(pe + j0, pa + j0, 1, bscale + j0, w, g + j0, min + j0);
+        for (int j = j0; j < j0 + w; j++) {
+            if (out >> (j - j0) & 1) state[at[j]] = CD_SCALAR;
+            x[at[j]].d2_other = min[j];
+        }
+    }
+}
+
 /* The kernel with the stages and rim searches in the given number of lanes (0: this CPU's
  * widest), over sub-blocks of CD_SUB entries (their stages stay in the first-level cache). */
 CD_FMA_CLONES static uint64_t cd_kernel(const cdist__job *job, int disk, double unit_tol, size_t lo, size_t count,
@@ -157,9 +177,14 @@ CD_FMA_CLONES static uint64_t cd_kernel(const cdist__job *job, int disk, double 
         uint64_t found = m ? cdist__cc_quick_lanes(f, m, lanes, t, c, s, d2r) : 0;
         for (int j = 0; j < m; j++) {
             int k = at[j];
-            if (!(found >> j & 1)) state[k] = CD_SCALAR;
-            else cdist__cd_stage_finish(&x[k].st, t[j], d2r[j]);
+            if (!(found >> j & 1)) {
+                state[k] = CD_SCALAR;
+            } else {
+                cdist__cd_stage_finish(&x[k].st, t[j], d2r[j]);
+                state[k] = CD_DONE;
+            }
         }
+        if (disk) cd_other_half(v, n, x, state);
         for (int k = 0; k < n; k++) {
             double d2 = x[k].st.d2 < x[k].d2_other ? x[k].st.d2 : x[k].d2_other;
             if (state[k] == CD_SCALAR || !(d2 < INFINITY)) {

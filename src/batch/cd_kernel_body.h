@@ -43,20 +43,25 @@ CD_INLINE void KN(cd_load)(const cdist__circle *const *c, const cdist__circle *c
     cv[2] = vld(z), *r = vld(rr), *R = vld(RR);
 }
 
-/* The candidates over the face of the pairs (c[l], d[l]), l < n <= W (cdist__cd_stage_start's):
- * into g[l] the circle in the disk's frame, min[l] the smallest squared distance; returns the
- * lanes the stages do not take (a zero radius, parallel planes). */
+/* The candidates over the face of the pairs (c[l], d[l]), l < n <= W (cdk_height): into g[l]
+ * the circle in the disk's frame, into min[l] the smallest squared distance, from min[l] on
+ * (INFINITY: the query's own start; a distance attained elsewhere drops the candidates far
+ * above it, which cannot be the answer); returns the lanes the stages do not take (a zero
+ * radius, parallel planes). */
 static unsigned KN(cd_face)(const cdist__circle *const *c, const cdist__circle *const *d, int neg, const double *bscale,
                             int n, cdk_lanes_1 *g, double *min)
 {
     V D[3], dn[3], du[3], dv[3], cu[3], cv[3], r, R;
     KN(cd_load)(c, d, neg, n, D, dn, du, dv, cu, cv, &r, &R);
-    double sc[W];
-    for (int l = 0; l < W; l++) sc[l] = bscale[l < n ? l : 0];
+    double sc[W], m0[W];
+    for (int l = 0; l < W; l++) {
+        sc[l] = bscale[l < n ? l : 0];
+        m0[l] = min[l < n ? l : 0];
+    }
     KN(cdk_lanes) k;
     KN(cdk_lanes_init)(&k, D, dn, du, dv, cu, cv, r, R);
     M bad = mor(mor(veq(r, vset(0.0)), veq(R, vset(0.0))), KN(cdk_parallel)(&k));
-    V m = vset(INFINITY);
+    V m = vld(m0);
     KN(cdk_height)(&k, &m, vld(sc), NULL);
     double f[13][W];
     const V *src[13] = {&k.X[0], &k.X[1], &k.X[2], &k.Y[0], &k.Y[1], &k.Y[2], &k.Z[0], &k.Z[1], &k.Z[2],

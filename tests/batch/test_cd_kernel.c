@@ -184,6 +184,15 @@ static void check_widths(int disk, size_t n, const char *what)
                   what, lo, widths[w]);
             /* the candidates over the face in lanes: the one-lane body's (the single query's) */
             cd_stages(cd_variant_of(widths[w]), &job, disk, 1e-6, lo, cnt, xw, statew);
+            if (disk) { /* the other half of the entries the stages answered */
+                int s1[CD_SUB], sw[CD_SUB];
+                memcpy(s1, state, sizeof s1);
+                memcpy(sw, statew, sizeof sw);
+                cd_other_half(cd_variant_of(1), cnt, x, s1);
+                cd_other_half(cd_variant_of(widths[w]), cnt, xw, sw);
+                for (int k = 0; k < cnt; k++)
+                    if (s1[k] != sw[k] || (s1[k] == CD_DONE && memcmp(&x[k].d2_other, &xw[k].d2_other, 8))) sbad++;
+            }
             for (int k = 0; k < cnt; k++) {
                 int differ = statew[k] != state[k];
                 if (!differ && state[k] != CD_SCALAR)
