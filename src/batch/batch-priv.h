@@ -84,9 +84,11 @@ uint64_t cdist__cc_quick_lanes(const struct cdist__cc_frame *const *f, int count
                                double *s, double *d2);
 /* The single query's fast validation and basis (cdist__circle_fast_basis) of both circles of
  * the entries [lo, lo + count), count <= 64, in lanes (lanes as above): a[k], b[k] where
- * accepted; returns the mask of the entries it does not accept. */
+ * accepted, exchanged where bit k of swap is set; with up not NULL also framed as
+ * cdist__circles_frame frames them (a at the origin, both scaled by 1 / up[k], the collector's
+ * scale bscale[k]); returns the mask of the entries it does not accept. */
 uint64_t cdist__circle_pairs_lanes(const cdist__job *job, double unit_tol, size_t lo, int count, int lanes,
-                                   cdist__circle *a, cdist__circle *b);
+                                   uint64_t swap, cdist__circle *a, cdist__circle *b, double *up, double *bscale);
 
 /* Distance kernels of circle-disk (disk = 0) and disk-disk (1), ROBUST method, for entries
  * [lo, lo + count), count <= 64: the single query's own stages (cdist__cd_stage_start) with the

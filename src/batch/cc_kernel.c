@@ -83,8 +83,8 @@ typedef struct ck_quick_variant {
     int lanes;
     ck_search_fn search;
     ck_final_fn point_d2;
-    unsigned (*circles)(const cdist__job *job, double unit_tol, size_t lo, int base, int n, cdist__circle *a,
-                        cdist__circle *b);
+    unsigned (*circles)(const cdist__job *job, double unit_tol, size_t lo, int base, int n, unsigned swap,
+                        cdist__circle *a, cdist__circle *b, double *up, double *bscale);
 } ck_quick_variant;
 
 static const ck_quick_variant *ck_variant(int lanes)
@@ -142,13 +142,16 @@ uint64_t cdist__cc_quick_lanes(const cdist__cc_frame *const *f, int count, int l
 }
 
 uint64_t cdist__circle_pairs_lanes(const cdist__job *job, double unit_tol, size_t lo, int count, int lanes,
-                                   cdist__circle *a, cdist__circle *b)
+                                   uint64_t swap, cdist__circle *a, cdist__circle *b, double *up, double *bscale)
 {
     const ck_quick_variant *v = ck_variant(lanes);
     uint64_t bad = 0;
     for (int g = 0; g < count; g += v->lanes) {
         int n = count - g < v->lanes ? count - g : v->lanes;
-        bad |= (uint64_t)v->circles(job, unit_tol, lo, g, n, a + g, b + g) << g;
+        unsigned sw = (unsigned)(swap >> g) & ((1u << v->lanes) - 1u);
+        bad |= (uint64_t)v->circles(job, unit_tol, lo, g, n, sw, a + g, b + g, up ? up + g : NULL,
+                                    bscale ? bscale + g : NULL)
+               << g;
     }
     return bad;
 }

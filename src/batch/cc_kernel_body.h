@@ -71,20 +71,59 @@ CD_INLINE void KN(ck_load_pairs)(const cdist__job *job, size_t lo, int base, int
 
 /* The single query's fast validation and basis (cdist__circle_fast_basis, operation by
  * operation) of both circles of the entries [lo + base, lo + base + n), n <= W, into a[k], b[k]
- * (k < n); returns the lanes it does not accept (a full check must decide). */
-static unsigned KN(ck_circles)(const cdist__job *job, double unit_tol, size_t lo, int base, int n, cdist__circle *a,
-                               cdist__circle *b)
+ * (k < n), exchanged in the lanes of swap; with up (not NULL) also framed as
+ * cdist__circles_frame frames them (a's centre the origin, both scaled by 1 / up[k]; bscale[k]
+ * the collector's scale); returns the lanes it does not take (a full check must decide). */
+static unsigned KN(ck_circles)(const cdist__job *job, double unit_tol, size_t lo, int base, int n, unsigned swap,
+                               cdist__circle *a, cdist__circle *b, double *up, double *bscale)
 {
     V c[2][8], nn[2][3], u[2][3], v[2][3];
     KN(ck_load_pairs)(job, lo, base, n, c[0], c[1]);
     M ok = mand(KN(circle_fast)(c[0], c[0] + 3, c[0][6], unit_tol, nn[0]),
                 KN(circle_fast)(c[1], c[1] + 3, c[1][6], unit_tol, nn[1]));
+    for (int o = 0; o < 2; o++) KN(ck_basis)(nn[o], u[o], v[o]);
+    V *comp[2][13];
     for (int o = 0; o < 2; o++) {
-        KN(ck_basis)(nn[o], u[o], v[o]);
+        V *p[13] = {&c[o][0], &c[o][1], &c[o][2], &nn[o][0], &nn[o][1], &nn[o][2], &u[o][0],
+                    &u[o][1], &u[o][2], &v[o][0], &v[o][1], &v[o][2], &c[o][6]};
+        memcpy(comp[o], p, sizeof p);
+    }
+    if (swap) {
+        double sw[W];
+        for (int l = 0; l < W; l++) sw[l] = swap >> l & 1 ? 1.0 : 0.0;
+        M m = veq(vld(sw), vset(1.0));
+        for (int j = 0; j < 13; j++) {
+            V x = *comp[0][j], y = *comp[1][j];
+            *comp[0][j] = vsel(m, y, x);
+            *comp[1][j] = vsel(m, x, y);
+        }
+    }
+    if (up) {
+        /* cdist__circles_frame: b's centre relative to a's, both scaled by 2^-e */
+        V zero = vset(0.0), bc[3];
+        for (int j = 0; j < 3; j++) bc[j] = vsub(c[1][j], c[0][j]);
+        V L = KN(fmax)(KN(fmax)(c[0][6], c[1][6]), KN(max3)(bc[0], bc[1], bc[2]));
+        ok = mand(ok, vge(L, vset(0x1p-1022))); /* a subnormal or zero scale: the scalar path */
+        V p = KN(pow2_of)(L), down = vrecip2(p);
+        c[0][6] = vmul(c[0][6], down);
+        c[1][6] = vmul(c[1][6], down);
+        for (int j = 0; j < 3; j++) {
+            c[0][j] = zero;
+            c[1][j] = vmul(down, bc[j]);
+        }
+        V sc = KN(fmax)(KN(fmax)(c[0][6], c[1][6]), vsqrt(KN(dot)(c[1][0], c[1][1], c[1][2], c[1][0], c[1][1], c[1][2])));
+        sc = vsel(mand(vgt(sc, zero), vle(sc, vset(DBL_MAX))), sc, vset(1.0)); /* cdist__best_init */
+        double pu[W], ps[W];
+        vst(pu, p);
+        vst(ps, sc);
+        for (int k = 0; k < n; k++) {
+            up[k] = pu[k];
+            bscale[k] = ps[k];
+        }
+    }
+    for (int o = 0; o < 2; o++) {
         double col[13][W];
-        const V *src[13] = {&c[o][0], &c[o][1], &c[o][2], &nn[o][0], &nn[o][1], &nn[o][2], &u[o][0],
-                            &u[o][1], &u[o][2], &v[o][0], &v[o][1], &v[o][2], &c[o][6]};
-        for (int j = 0; j < 13; j++) vst(col[j], *src[j]);
+        for (int j = 0; j < 13; j++) vst(col[j], *comp[o][j]);
         cdist__circle *out = o ? b : a;
         for (int k = 0; k < n; k++)
             out[k] = (cdist__circle){v3(col[0][k], col[1][k], col[2][k]), v3(col[3][k], col[4][k], col[5][k]),

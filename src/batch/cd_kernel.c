@@ -53,11 +53,10 @@ static const cd_variant *cd_variant_of(int lanes)
     return &v1;
 }
 
-/* One entry: its stage, the frame's exponent and, for disk-disk, the second half's distance. */
+/* One entry: its stage, the frame's scale 2^e and, for disk-disk, the second half's distance. */
 typedef struct cd_entry {
     cdist__cd_stage st;
-    int e;
-    double d2_other;
+    double up, d2_other;
 } cd_entry;
 
 enum { CD_SUB = 16 };
@@ -72,8 +71,12 @@ static void cd_stages(const cd_variant *v, const cdist__job *job, int disk, doub
     const cdist__circle *pa[CD_SUB], *pe[CD_SUB];
     cdk_lanes_1 g[CD_SUB];
     cdist__cc_frame *f[CD_SUB];
-    double bscale[CD_SUB], min[CD_SUB], scale[CD_SUB], dcap[CD_SUB], sc[CD_SUB];
-    uint64_t bad = cdist__circle_pairs_lanes(job, unit_tol, lo, n, v->lanes, a, e);
+    double bscale[CD_SUB], up[CD_SUB], min[CD_SUB], scale[CD_SUB], dcap[CD_SUB], sc[CD_SUB];
+    uint64_t swap = 0;
+    for (int k = 0; disk && k < n; k++)
+        if (cdist__circle_less(cdist__job_b(job, lo + (size_t)k), cdist__job_a(job, lo + (size_t)k)))
+            swap |= (uint64_t)1 << k;
+    uint64_t bad = cdist__circle_pairs_lanes(job, unit_tol, lo, n, v->lanes, swap, a, e, up, bscale);
     for (int k = 0; k < n; k++) {
         pa[k] = &x[k].st.c;
         pe[k] = &x[k].st.d;
@@ -84,17 +87,10 @@ static void cd_stages(const cd_variant *v, const cdist__job *job, int disk, doub
             bscale[k] = 1.0;
             continue;
         }
-        if (disk && cdist__circle_less(cdist__job_b(job, lo + (size_t)k), cdist__job_a(job, lo + (size_t)k))) {
-            cdist__circle t = a[k];
-            a[k] = e[k];
-            e[k] = t;
-        }
-        vec3 offset;
-        cdist__best best;
-        x[k].e = cdist__circles_frame(&a[k], &e[k], &offset, &best);
+        x[k].up = up[k];
         x[k].st.c = a[k];
         x[k].st.d = e[k];
-        x[k].st.bscale = bscale[k] = best.scale;
+        x[k].st.bscale = bscale[k];
         x[k].d2_other = INFINITY;
     }
     for (int k = 0; k < n; k++) min[k] = INFINITY;
@@ -191,7 +187,7 @@ CD_FMA_CLONES static uint64_t cd_kernel(const cdist__job *job, int disk, double 
                 left |= (uint64_t)1 << (b + k);
                 continue;
             }
-            job->distances[lo + (size_t)(b + k)] = sqrt(d2) * cdist__pow2(x[k].e);
+            job->distances[lo + (size_t)(b + k)] = sqrt(d2) * x[k].up;
         }
     }
     return left;

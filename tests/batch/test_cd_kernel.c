@@ -171,7 +171,7 @@ static void check_widths(int disk, size_t n, const char *what)
             if (!quick[w]) continue;
             /* the validation in lanes: the single query's (the scalar check) bit for bit */
             cdist__circle aw[CD_SUB], ew[CD_SUB];
-            uint64_t badw = cdist__circle_pairs_lanes(&job, 1e-6, lo, cnt, widths[w], aw, ew);
+            uint64_t badw = cdist__circle_pairs_lanes(&job, 1e-6, lo, cnt, widths[w], 0, aw, ew, NULL, NULL);
             int vbad = 0;
             for (int k = 0; k < cnt; k++) {
                 cdist__circle as, es;
@@ -179,6 +179,27 @@ static void check_widths(int disk, size_t n, const char *what)
                          cdist__circle_fast_basis(1e-6, &B[lo + (size_t)k], &es);
                 vbad |= ok == (int)(badw >> k & 1);
                 if (ok) vbad |= memcmp(&as, &aw[k], sizeof as) || memcmp(&es, &ew[k], sizeof es);
+            }
+            /* the framing in lanes: cdist__circles_frame's */
+            double upw[CD_SUB], bsw[CD_SUB];
+            uint64_t swap = (uint64_t)next_rand();
+            uint64_t badf = cdist__circle_pairs_lanes(&job, 1e-6, lo, cnt, widths[w], swap, aw, ew, upw, bsw);
+            for (int k = 0; k < cnt; k++) {
+                cdist__circle as, es;
+                if (badf >> k & 1) continue; /* the scalar path (a zero or subnormal scale among them) */
+                if (!(cdist__circle_fast_basis(1e-6, &A[lo + (size_t)k], &as) &&
+                      cdist__circle_fast_basis(1e-6, &B[lo + (size_t)k], &es)))
+                    continue;
+                if (swap >> k & 1) {
+                    cdist__circle t0 = as;
+                    as = es;
+                    es = t0;
+                }
+                vec3 off;
+                cdist__best best;
+                int ex = cdist__circles_frame(&as, &es, &off, &best);
+                vbad |= memcmp(&as, &aw[k], sizeof as) || memcmp(&es, &ew[k], sizeof es) || upw[k] != cdist__pow2(ex) ||
+                        bsw[k] != best.scale;
             }
             CHECK(!vbad, "%s %s from %zu, %d lanes: the validation differs from the single query's", disk ? "dd" : "cd",
                   what, lo, widths[w]);
