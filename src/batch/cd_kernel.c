@@ -31,18 +31,16 @@
 typedef struct cd_variant {
     int lanes;
     unsigned (*face)(const cdist__circle *const *c, const cdist__circle *const *d, int neg, const double *bscale, int n,
-                     cdk_lanes_1 *g, double *min);
-    unsigned (*rim_far)(const cdk_lanes_1 *g, const double *min, int n, double *scale, double *dcap);
+                     cdk_lanes_1 *const *g, double *min, unsigned *spared, double *scale, double *dcap);
     unsigned (*rim_frame)(const cdist__circle *const *c, const cdist__circle *const *d, int n, cdist__cc_frame *const *f,
                           double *sc);
 } cd_variant;
 
 static const cd_variant *cd_variant_of(int lanes)
 {
-    static const cd_variant v1 = {1, cd_face_1, cd_rim_far_1, cd_rim_frame_1};
+    static const cd_variant v1 = {1, cd_face_1, cd_rim_frame_1};
 #ifdef CD_X86_KERNELS
-    static const cd_variant v4 = {4, cd_face_4, cd_rim_far_4, cd_rim_frame_4},
-                            v8 = {8, cd_face_8, cd_rim_far_8, cd_rim_frame_8};
+    static const cd_variant v4 = {4, cd_face_4, cd_rim_frame_4}, v8 = {8, cd_face_8, cd_rim_frame_8};
     if (!lanes) {
         int isa = cdist__lanes_isa();
         lanes = isa == CD_ISA_AVX512 ? 8 : isa == CD_ISA_AVX2 ? 4 : 1;
@@ -69,7 +67,7 @@ static void cd_stages(const cd_variant *v, const cdist__job *job, int disk, doub
 {
     cdist__circle a[CD_SUB], e[CD_SUB];
     const cdist__circle *pa[CD_SUB], *pe[CD_SUB];
-    cdk_lanes_1 g[CD_SUB];
+    cdk_lanes_1 *g[CD_SUB];
     cdist__cc_frame *f[CD_SUB];
     double bscale[CD_SUB], up[CD_SUB], min[CD_SUB], scale[CD_SUB], dcap[CD_SUB], sc[CD_SUB];
     uint64_t swap = 0;
@@ -81,6 +79,7 @@ static void cd_stages(const cd_variant *v, const cdist__job *job, int disk, doub
         pa[k] = &x[k].st.c;
         pe[k] = &x[k].st.d;
         f[k] = &x[k].st.f;
+        g[k] = &x[k].st.k.g;
         state[k] = bad >> k & 1 ? CD_SCALAR : CD_PENDING;
         if (state[k] == CD_SCALAR) {
             x[k].st.c = x[k].st.d = (cdist__circle){v3(0, 0, 0), v3(0, 0, 1), v3(1, 0, 0), v3(0, 1, 0), 1.0};
@@ -96,12 +95,11 @@ static void cd_stages(const cd_variant *v, const cdist__job *job, int disk, doub
     for (int k = 0; k < n; k++) min[k] = INFINITY;
     for (int k0 = 0; k0 < n; k0 += v->lanes) {
         int m = n - k0 < v->lanes ? n - k0 : v->lanes;
-        unsigned out = v->face(pa + k0, pe + k0, 0, bscale + k0, m, g + k0, min + k0);
-        unsigned spared = v->rim_far(g + k0, min + k0, m, scale + k0, dcap + k0), search = 0;
+        unsigned spared, search = 0;
+        unsigned out = v->face(pa + k0, pe + k0, 0, bscale + k0, m, g + k0, min + k0, &spared, scale + k0, dcap + k0);
         for (int k = k0; k < k0 + m; k++) {
             if (out >> (k - k0) & 1) state[k] = CD_SCALAR;
             if (state[k] == CD_SCALAR) continue;
-            x[k].st.k.g = g[k];
             x[k].st.d2 = min[k];
             x[k].st.scale = scale[k];
             x[k].st.dcap = dcap[k];
@@ -130,7 +128,7 @@ static void cd_stages(const cd_variant *v, const cdist__job *job, int disk, doub
 static void cd_other_half(const cd_variant *v, int n, cd_entry *x, int *state)
 {
     const cdist__circle *pa[CD_SUB], *pe[CD_SUB];
-    cdk_lanes_1 g[CD_SUB];
+    cdk_lanes_1 scratch[CD_SUB], *g[CD_SUB];
     double bscale[CD_SUB], min[CD_SUB];
     int at[CD_SUB], m = 0;
     for (int k = 0; k < n; k++)
@@ -139,11 +137,12 @@ static void cd_other_half(const cd_variant *v, int n, cd_entry *x, int *state)
             pa[m] = &x[k].st.c;
             pe[m] = &x[k].st.d;
             bscale[m] = x[k].st.bscale;
+            g[m] = &scratch[m];
             min[m++] = x[k].st.d2;
         }
     for (int j0 = 0; j0 < m; j0 += v->lanes) {
         int w = m - j0 < v->lanes ? m - j0 : v->lanes;
-        unsigned out = v->face(pe + j0, pa + j0, 1, bscale + j0, w, g + j0, min + j0);
+        unsigned out = v->face(pe + j0, pa + j0, 1, bscale + j0, w, g + j0, min + j0, NULL, NULL, NULL);
         for (int j = j0; j < j0 + w; j++) {
             if (out >> (j - j0) & 1) state[at[j]] = CD_SCALAR;
             x[at[j]].d2_other = min[j];

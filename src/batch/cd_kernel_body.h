@@ -43,32 +43,42 @@ CD_INLINE void KN(cd_load)(const cdist__circle *const *c, const cdist__circle *c
     cv[2] = vld(z), *r = vld(rr), *R = vld(RR);
 }
 
-/* The candidates over the face of the pairs (c[l], d[l]), l < n <= W (cdk_height): into g[l]
+/* The lanes' values x[l] (l < n), lanes >= n repeating lane 0. */
+CD_INLINE V KN(cd_vld)(const double *x, int n)
+{
+    double a[W];
+    for (int l = 0; l < W; l++) a[l] = x[l < n ? l : 0];
+    return vld(a);
+}
+
+/* The candidates over the face of the pairs (c[l], d[l]), l < n <= W (cdk_height): into *g[l]
  * the circle in the disk's frame, into min[l] the smallest squared distance, from min[l] on
  * (INFINITY: the query's own start; a distance attained elsewhere drops the candidates far
- * above it, which cannot be the answer); returns the lanes the stages do not take (a zero
- * radius, parallel planes). */
+ * above it, which cannot be the answer); with spared not NULL also the bound that spares the
+ * rim search (cdk_rim_far, its lanes into *spared) at the cap dcap[l] = sqrt(min[l]), and the
+ * scale scale[l]. Returns the lanes the stages do not take (a zero radius, parallel planes). */
 static unsigned KN(cd_face)(const cdist__circle *const *c, const cdist__circle *const *d, int neg, const double *bscale,
-                            int n, cdk_lanes_1 *g, double *min)
+                            int n, cdk_lanes_1 *const *g, double *min, unsigned *spared, double *scale, double *dcap)
 {
     V D[3], dn[3], du[3], dv[3], cu[3], cv[3], r, R;
     KN(cd_load)(c, d, neg, n, D, dn, du, dv, cu, cv, &r, &R);
-    double sc[W], m0[W];
-    for (int l = 0; l < W; l++) {
-        sc[l] = bscale[l < n ? l : 0];
-        m0[l] = min[l < n ? l : 0];
-    }
     KN(cdk_lanes) k;
     KN(cdk_lanes_init)(&k, D, dn, du, dv, cu, cv, r, R);
     M bad = mor(mor(veq(r, vset(0.0)), veq(R, vset(0.0))), KN(cdk_parallel)(&k));
-    V m = vld(m0);
-    KN(cdk_height)(&k, &m, vld(sc), NULL);
-    double f[13][W];
+    V m = KN(cd_vld)(min, n);
+    KN(cdk_height)(&k, &m, KN(cd_vld)(bscale, n), NULL);
+    double f[15][W];
     const V *src[13] = {&k.X[0], &k.X[1], &k.X[2], &k.Y[0], &k.Y[1], &k.Y[2], &k.Z[0], &k.Z[1], &k.Z[2],
                         &k.E0, &k.R, &k.rho, &m};
     for (int j = 0; j < 13; j++) vst(f[j], *src[j]);
+    if (spared) {
+        V s = KN(cdk_scale)(&k), cap = vsel(vlt(m, vset(INFINITY)), vsqrt(m), vset(INFINITY));
+        vst(f[13], s);
+        vst(f[14], cap);
+        *spared = mbits(KN(cdk_rim_far)(&k, cap, s)) & ((1u << n) - 1u);
+    }
     for (int l = 0; l < n; l++) {
-        cdk_lanes_1 *o = &g[l];
+        cdk_lanes_1 *o = g[l];
         for (int j = 0; j < 3; j++) {
             o->X[j] = f[j][l];
             o->Y[j] = f[3 + j][l];
@@ -79,45 +89,14 @@ static unsigned KN(cd_face)(const cdist__circle *const *c, const cdist__circle *
         o->rho = f[11][l];
         o->small = o->rho <= o->R;
         min[l] = f[12][l];
+        if (spared) {
+            scale[l] = f[13][l];
+            dcap[l] = f[14][l];
+        }
     }
     return mbits(bad) & ((1u << n) - 1u);
 }
 
-/* The bound that spares the rim search (cdk_rim_far) of lanes l < n <= W with their circles in
- * the disks' frames g[l], squared best min[l]: the lanes it spares; scale[l], dcap[l] set. */
-static unsigned KN(cd_rim_far)(const cdk_lanes_1 *g, const double *min, int n, double *scale, double *dcap)
-{
-    double f[12][W], mn[W];
-    for (int l = 0; l < W; l++) {
-        const cdk_lanes_1 *o = &g[l < n ? l : 0];
-        for (int j = 0; j < 3; j++) {
-            f[j][l] = o->X[j];
-            f[3 + j][l] = o->Y[j];
-            f[6 + j][l] = o->Z[j];
-        }
-        f[9][l] = o->E0;
-        f[10][l] = o->R;
-        f[11][l] = o->rho;
-        mn[l] = min[l < n ? l : 0];
-    }
-    KN(cdk_lanes) k;
-    for (int j = 0; j < 3; j++) {
-        k.X[j] = vld(f[j]);
-        k.Y[j] = vld(f[3 + j]);
-        k.Z[j] = vld(f[6 + j]);
-    }
-    k.E0 = vld(f[9]), k.R = vld(f[10]), k.rho = vld(f[11]);
-    k.small = vle(k.rho, k.R);
-    V m = vld(mn), s = KN(cdk_scale)(&k), cap = vsel(vlt(m, vset(INFINITY)), vsqrt(m), vset(INFINITY));
-    double ss[W], cc[W];
-    vst(ss, s);
-    vst(cc, cap);
-    for (int l = 0; l < n; l++) {
-        scale[l] = ss[l];
-        dcap[l] = cc[l];
-    }
-    return mbits(KN(cdk_rim_far)(&k, cap, s)) & ((1u << n) - 1u);
-}
 
 
 /* The rim search's frame of the pairs (c[l], d[l]), l < n <= W, as cdist__cc_quick_frame
