@@ -154,10 +154,10 @@ CD_INLINE void KN(cdk_offer)(const KN(cdk_lanes) *k, M m, V t, V cs, V sn, V *mi
 
 /* Whether the plane crossing first estimated at (cs, sn), with height z there, is certainly far
  * above the best (CD_CD_FAR_REL) wherever its two Newton steps take it: they move the circle
- * point by at most 2 CD_CD_Z_STEP rho (the distance to the disk is 1-Lipschitz), and twice the
- * far margin covers the plain square root used here for hypot. Its offer would then be dropped
- * anyway, so the steps and the offer are skipped. */
-CD_INLINE M KN(cdk_crossing_far)(const KN(cdk_lanes) *k, V cs, V sn, V z, V min, V scale)
+ * point by at most 2 CD_CD_Z_STEP rho (move = 2 CD_CD_Z_STEP; the distance to the disk is
+ * 1-Lipschitz), and twice the far margin covers the plain square root used here for hypot. Its
+ * offer would then be dropped anyway, so the steps and the offer are skipped. */
+CD_INLINE M KN(cdk_crossing_far)(const KN(cdk_lanes) *k, V cs, V sn, V z, V min, V scale, double move)
 {
 #if W == 1
     if (!(min < INFINITY)) return 0;
@@ -166,7 +166,7 @@ CD_INLINE M KN(cdk_crossing_far)(const KN(cdk_lanes) *k, V cs, V sn, V z, V min,
     V rho = vsqrt(vadd(vmul(x, x), vmul(y, y)));
     V dr = vsel(k->small, vdiv(ex, vadd(rho, k->R)), vsub(rho, k->R));
     V g = vsel(vgt(ex, vset(0.0)), vsqrt(vadd(vmul(dr, dr), vmul(z, z))), vabs(z));
-    M far = vgt(vsub(g, vmul(vset(2.0 * CD_CD_Z_STEP), k->rho)),
+    M far = vgt(vsub(g, vmul(vset(move), k->rho)),
                 vadd(vsqrt(min), vmul(vset(2.0 * CD_CD_FAR_REL), scale)));
     return mand(vlt(min, vset(INFINITY)), far);
 }
@@ -186,20 +186,39 @@ CD_INLINE void KN(cdk_height)(const KN(cdk_lanes) *k, V *min, V scale, void *ctx
     KN(cdk_offer)(k, all, phi, ce, se, min, scale, ctx);
     KN(cdk_offer)(k, all, vadd(phi, vset(M_PI)), vneg(ce), vneg(se), min, scale, ctx);
     if (!many(cross)) return;
+#if W > 1
+    /* The kernel: each crossing's start from (cos phi, sin phi) and cz by the angle sum, without
+     * the library calls; a crossing certainly far from there (CD_CD_CROSS_START: its angle's
+     * error) would be dropped or skipped anyway, and its calls are spared. */
+    V sw = vsqrt(vmax(vsub(vset(1.0), vmul(cz, cz)), vset(0.0)));
+    M near[2];
+    for (int i = 0; i < 2; i++) {
+        V ssw = i ? sw : vneg(sw);
+        V c0 = vsub(vmul(ce, cz), vmul(se, ssw)), s0 = vadd(vmul(se, cz), vmul(ce, ssw));
+        V z0 = KN(cdk_trig)(k->Z, c0, s0);
+        near[i] = mandn(KN(cdk_crossing_far)(k, c0, s0, z0, *min, scale, 2.0 * CD_CD_Z_STEP + CD_CD_CROSS_START), cross);
+    }
+    cross = mor(near[0], near[1]);
+    if (!many(cross)) return;
+#endif
     V w = KN(cdk_acos)(cross, cz);
     for (int s = -1; s <= 1; s += 2) {
         V t = vadd(phi, vmul(vset((double)s), w));
         /* Newton on z itself (two steps of at most CD_CD_Z_STEP) to land on the plane. A step
          * below half an ulp of t leaves t as it was: its cos and sin are reused. */
         V tl = vset(NAN), sn = vset(0.0), cs = vset(0.0); /* the angle of the last sincos */
+#if W > 1
+        M live = near[s > 0], skip = mandn(live, cross);
+#else
         M live = cross, skip = mfalse();
+#endif
         for (int it = 0; it < 2; it++) {
             M fresh = mandn(veq(t, tl), live);
             KN(cdk_sincos)(fresh, t, &sn, &cs);
             tl = vsel(fresh, t, tl);
             V z = KN(cdk_trig)(k->Z, cs, sn), zp = KN(cdk_trigd)(k->Z, cs, sn);
             if (it == 0) {
-                M far = mand(live, KN(cdk_crossing_far)(k, cs, sn, z, *min, scale));
+                M far = mand(live, KN(cdk_crossing_far)(k, cs, sn, z, *min, scale, 2.0 * CD_CD_Z_STEP));
                 skip = mor(skip, far);
                 live = mandn(far, live);
             }
