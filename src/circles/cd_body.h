@@ -139,6 +139,16 @@ CD_INLINE void KN(cdk_offer)(const KN(cdk_lanes) *k, M m, V t, V cs, V sn, V *mi
 #endif
     V ex = KN(cdk_rim_excess)(k, x, y, cs, sn);
     M out = mnot(vle(ex, vset(0.0)));
+#if W > 1
+    /* The kernel: a candidate certainly above far2 by the plain root (within a few ulps of
+     * hypot's; CD_CD_HYPOT_ULPS covers it and the roundings to d2) is dropped before hypot, as
+     * the test below would drop it. */
+    V ra = vsqrt(vadd(vmul(x, x), vmul(y, y)));
+    V rlo = vmul(ra, vset(1.0 - CD_CD_HYPOT_ULPS * DBL_EPSILON)), rhi = vmul(ra, vset(1.0 + CD_CD_HYPOT_ULPS * DBL_EPSILON));
+    V drl = vmax(vsel(k->small, vdiv(ex, vadd(rhi, k->R)), vsub(rlo, k->R)), vset(0.0));
+    V d2l = vmul(vfma(drl, drl, zz), vset(1.0 - CD_CD_HYPOT_ULPS * DBL_EPSILON));
+    m = mandn(mand(out, vgt(d2l, far2)), m);
+#endif
     V rho = KN(cdk_call2)(hypot, mand(m, out), x, y);
     V dr = vsel(k->small, vdiv(ex, vadd(rho, k->R)), vsub(rho, k->R));
     V d2 = vsel(out, vfma(dr, dr, zz), zz);
