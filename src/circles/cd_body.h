@@ -188,8 +188,13 @@ CD_INLINE void KN(cdk_height)(const KN(cdk_lanes) *k, V *min, V scale, void *ctx
     V amp = vsqrt(vadd(vmul(k->Z[1], k->Z[1]), vmul(k->Z[2], k->Z[2])));
     V cz = vdiv(vneg(k->Z[0]), amp);
     M all = mtrue(), cross = vle(vabs(cz), vset(1.0));
-    /* phi: the extremes' angle (reported with the pairs) and the crossings' start */
+    /* phi: the extremes' angle (reported with the pairs) and the crossings' start (the kernel
+     * takes it below, for the crossings it keeps) */
+#if W == 1
     V phi = KN(cdk_call2)(atan2, ctx ? all : cross, k->Z[2], k->Z[1]);
+#else
+    V phi = vset(0.0);
+#endif
     /* The extremes' cos and sin are (Z1, Z2) / amp and their negatives, as accurate as sincos of
      * the rounded phi and without it (the angles reported are still phi, phi + pi). */
     V ce = vdiv(k->Z[1], amp), se = vdiv(k->Z[2], amp);
@@ -210,6 +215,7 @@ CD_INLINE void KN(cdk_height)(const KN(cdk_lanes) *k, V *min, V scale, void *ctx
     }
     cross = mor(near[0], near[1]);
     if (!many(cross)) return;
+    phi = KN(cdk_call2)(atan2, cross, k->Z[2], k->Z[1]);
 #endif
     V w = KN(cdk_acos)(cross, cz);
     for (int s = -1; s <= 1; s += 2) {
