@@ -1,13 +1,14 @@
 /* SPDX-License-Identifier: MIT */
 /* Distance kernels of circle-disk and disk-disk for cdist_batch_distance: the single query's
- * steps for many entries at once. The circles are validated in lanes (cdist__circle_pairs_lanes),
- * framed one by one (cdist__circles_frame), their candidates over the disks' faces computed in
- * lanes (src/circles/cd_body.h, which the single query runs in one lane), the rim searches packed
- * into lanes (cdist__cc_quick_lanes, which certifies what the single query's search certifies,
- * with the same angle to the last bit) and finished one by one (cdist__cd_stage_finish). The
- * distances are therefore the single query's bit for bit; an entry whose query takes another
- * path (a failed fast check, a zero radius, parallel planes, the rim search's engine) is left to
- * the scalar path. */
+ * steps for many entries at once. The circles are validated and framed in lanes
+ * (cdist__circle_pairs_lanes), their candidates over the disks' faces computed in lanes
+ * (src/circles/cd_body.h, which the single query runs in one lane; cd_kernel_body.h), the rim
+ * searches' frames built and the searches run in lanes (cdist__cc_quick_lanes, which certifies
+ * what the single query's search certifies, with the same angle to the last bit) and finished one
+ * by one (cdist__cd_stage_finish). The distances are the single query's bit for bit (candidates
+ * that cannot be the smallest may be left out: docs/architecture.md); an entry whose query takes
+ * another path (a failed fast check, a zero radius, parallel planes, the rim search's engine) is
+ * left to the scalar path. */
 #include <math.h>
 #include <stdint.h>
 #include <string.h>

@@ -522,12 +522,6 @@ void cdist__cd_stage_ring(cdist__cd_stage *st)
     cdk_ring(k);
 }
 
-int cdist__cd_stage_frame(cdist__cd_stage *st)
-{
-    cdist__cd_stage_ring(st);
-    return cdist__cc_quick_frame(&st->c, &st->d, &st->f, &st->sc);
-}
-
 CD_FMA_CLONES void cdist__cd_stage_finish(cdist__cd_stage *st, double t, double d2)
 {
     if (!cdk_rim_below_cap(cdist__cc_quick_unscale(d2, st->sc), st->dcap, st->scale)) return;

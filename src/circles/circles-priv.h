@@ -213,22 +213,20 @@ typedef struct cdist__cdk {
 } cdist__cdk;
 
 /* The distance of cdist__circle_disk_core_ex (ROBUST method, cap INFINITY, a fresh collector
- * of scale bscale) in stages, the single query's own steps, for the batch kernel
- * (src/batch/cd_kernel.c), which computes the candidates over the face of many entries in
- * lanes (cd_body.h) into k.g and d2, the cap dcap and the scale, and spares the rim where the
- * bound allows (cdk_rim_far); for the others cdist__cd_stage_frame (c, d: the circle and disk
- * in the frame's units) sets the rim search's frame f and returns whether the search is to run
- * (else the query takes the engine); with the angle t the search (cdist__cc_quick) finds and
- * cdist__cc_point_d2 there, cdist__cd_stage_finish completes d2. */
+ * of scale bscale) in stages, for the batch kernel (src/batch/cd_kernel.c), which frames the
+ * circle c and the disk d, computes the candidates over the face (cd_body.h: k.g, their
+ * smallest squared distance d2, the cap dcap = sqrt(d2) and the scale), the bound that spares
+ * the rim and the rim search's frame f (cdist__cc_quick_frame's: its ring, and the scaling sc)
+ * of many entries in lanes: cdist__cd_stage_ring sets k's ring (and its circles' pointers) from
+ * k.g; with the angle t the search (cdist__cc_quick) finds and cdist__cc_point_d2 there,
+ * cdist__cd_stage_finish completes d2 as the single query does (the cut-off, the flat scan, the
+ * offers). */
 typedef struct cdist__cd_stage {
     cdist__circle c, d;
     cdist__cdk k;
     double d2, bscale, scale, dcap, sc;
     cdist__cc_frame f;
 } cdist__cd_stage;
-int cdist__cd_stage_frame(cdist__cd_stage *st);
-/* The ring of k (and its circles' pointers) from k.g: what cdist__cd_stage_frame sets besides
- * the frame, for a kernel that builds the frame in lanes. */
 void cdist__cd_stage_ring(cdist__cd_stage *st);
 void cdist__cd_stage_finish(cdist__cd_stage *st, double t, double d2);
 #define CD_DISK_METHODS (CD_HAS(CDIST_METHOD_POLYNOMIAL) | CD_HAS(CDIST_METHOD_ROBUST))
