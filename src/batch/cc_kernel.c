@@ -93,10 +93,7 @@ static const ck_quick_variant *ck_variant(int lanes)
 #ifdef CD_X86_KERNELS
     static const ck_quick_variant v4 = {4, ck_search_quick_4, ck_point_d2_4, ck_circles_4};
     static const ck_quick_variant v8 = {8, ck_search_quick_8, ck_point_d2_8, ck_circles_8};
-    if (!lanes) {
-        int isa = cdist__lanes_isa();
-        lanes = isa == CD_ISA_AVX512 ? 8 : isa == CD_ISA_AVX2 ? 4 : 1;
-    }
+    lanes = cdist__lanes_width(lanes);
     if (lanes == 8) return &v8;
     if (lanes == 4) return &v4;
 #else

@@ -5,6 +5,7 @@
  * the angles found. */
 
 #include "api/circle_fast_lanes.h"
+#include "circles/ring_lanes.h"
 
 /* The ring of the lane group from g (the block's columns). */
 CD_INLINE void KN(ck_load)(const ck_block *b, int g, KN(ck_ring) *r)
@@ -167,18 +168,9 @@ static unsigned KN(ck_setup)(const cdist__job *job, double unit_tol, size_t lo, 
     }
     KN(ck_basis)(nA, u, v);
     /* cdist__ring_init */
-    V al[3], be[3], ga[3];
-    KN(cross)(m[0], m[1], m[2], u[0], u[1], u[2], &al[0], &al[1], &al[2]);
-    KN(cross)(m[0], m[1], m[2], v[0], v[1], v[2], &be[0], &be[1], &be[2]);
-    KN(cross)(m[0], m[1], m[2], CBx, CBy, CBz, &ga[0], &ga[1], &ga[2]);
-    for (int k = 0; k < 3; k++) {
-        al[k] = vmul(R, al[k]);
-        be[k] = vmul(R, be[k]);
-        ga[k] = vneg(ga[k]);
-    }
-    V ha = vmul(R, KN(ring_dot)(m[0], m[1], m[2], u[0], u[1], u[2]));
-    V hb = vmul(R, KN(ring_dot)(m[0], m[1], m[2], v[0], v[1], v[2]));
-    V hc = vneg(KN(ring_dot)(m[0], m[1], m[2], CBx, CBy, CBz));
+    V al[3], be[3], ga[3], ha, hb, hc;
+    const V CB[3] = {CBx, CBy, CBz};
+    KN(ring_init)(R, u, v, CB, m, al, be, ga, &ha, &hb, &hc);
     V W1 = vadd(vsqrt(KN(dot)(al[0], al[1], al[2], al[0], al[1], al[2])),
                 vsqrt(KN(dot)(be[0], be[1], be[2], be[0], be[1], be[2])));
     V Lw = vadd(vmul(vset(2.0), R), vsqrt(KN(dot)(CBx, CBy, CBz, CBx, CBy, CBz)));

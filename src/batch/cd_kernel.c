@@ -42,10 +42,7 @@ static const cd_variant *cd_variant_of(int lanes)
     static const cd_variant v1 = {1, cd_face_1, cd_rim_frame_1};
 #ifdef CD_X86_KERNELS
     static const cd_variant v4 = {4, cd_face_4, cd_rim_frame_4}, v8 = {8, cd_face_8, cd_rim_frame_8};
-    if (!lanes) {
-        int isa = cdist__lanes_isa();
-        lanes = isa == CD_ISA_AVX512 ? 8 : isa == CD_ISA_AVX2 ? 4 : 1;
-    }
+    lanes = cdist__lanes_width(lanes);
     if (lanes == 8) return &v8;
     if (lanes == 4) return &v4;
 #endif

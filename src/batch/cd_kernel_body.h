@@ -11,6 +11,7 @@ CD_LANES_TARGET_PUSH("avx2,fma")
 #include "base/lanes/lanes_def.h"
 #include "base/lanes/lanes_vec.h"
 #include "circles/cd_body.h"
+#include "circles/ring_lanes.h"
 
 /* The circle c and disk d of the lanes in the frame of c's centre: d's centre, or with neg (the
  * other half of disk-disk, the circle c being the disk at C, d the one at the origin) -C;
@@ -128,19 +129,8 @@ static unsigned KN(cd_rim_frame)(const cdist__circle *const *c, const cdist__cir
     V down = vmul(vrecip2(KN(pow2_of)(L0)), vset(0.5));
     V R = vmul(r0, down), s = vmul(r1, down);
     for (int j = 0; j < 3; j++) C[j] = vmul(down, C[j]);
-    /* cdist__ring_init */
-    V al[3], be[3], ga[3];
-    KN(cross)(m[0], m[1], m[2], u[0], u[1], u[2], &al[0], &al[1], &al[2]);
-    KN(cross)(m[0], m[1], m[2], v[0], v[1], v[2], &be[0], &be[1], &be[2]);
-    KN(cross)(m[0], m[1], m[2], C[0], C[1], C[2], &ga[0], &ga[1], &ga[2]);
-    for (int j = 0; j < 3; j++) {
-        al[j] = vmul(R, al[j]);
-        be[j] = vmul(R, be[j]);
-        ga[j] = vneg(ga[j]);
-    }
-    V ha = vmul(R, KN(ring_dot)(m[0], m[1], m[2], u[0], u[1], u[2]));
-    V hb = vmul(R, KN(ring_dot)(m[0], m[1], m[2], v[0], v[1], v[2]));
-    V hc = vneg(KN(ring_dot)(m[0], m[1], m[2], C[0], C[1], C[2]));
+    V al[3], be[3], ga[3], ha, hb, hc;
+    KN(ring_init)(R, u, v, C, m, al, be, ga, &ha, &hb, &hc);
     /* cdist__cc_frame_ring's bounds */
     V Cu = KN(ring_dot)(C[0], C[1], C[2], u[0], u[1], u[2]), Cv = KN(ring_dot)(C[0], C[1], C[2], v[0], v[1], v[2]);
     V aa = KN(ring_dot)(al[0], al[1], al[2], al[0], al[1], al[2]), bb = KN(ring_dot)(be[0], be[1], be[2], be[0], be[1], be[2]);

@@ -187,14 +187,10 @@ static void check_widths(int disk, size_t n, const char *what)
             for (int k = 0; k < cnt; k++) {
                 cdist__circle as, es;
                 if (badf >> k & 1) continue; /* the scalar path (a zero or subnormal scale among them) */
-                if (!(cdist__circle_fast_basis(1e-6, &A[lo + (size_t)k], &as) &&
-                      cdist__circle_fast_basis(1e-6, &B[lo + (size_t)k], &es)))
+                const cdist_circle *in[2] = {&A[lo + (size_t)k], &B[lo + (size_t)k]};
+                int sw = (int)(swap >> k & 1); /* exchanged */
+                if (!(cdist__circle_fast_basis(1e-6, in[sw], &as) && cdist__circle_fast_basis(1e-6, in[1 - sw], &es)))
                     continue;
-                if (swap >> k & 1) {
-                    cdist__circle t0 = as;
-                    as = es;
-                    es = t0;
-                }
                 vec3 off;
                 cdist__best best;
                 int ex = cdist__circles_frame(&as, &es, &off, &best);
