@@ -149,9 +149,18 @@ CD_INLINE void KN(cdk_offer)(const KN(cdk_lanes) *k, M m, V t, V cs, V sn, V *mi
     V d2l = vmul(vfma(drl, drl, zz), vset(1.0 - CD_CD_HYPOT_ULPS * DBL_EPSILON));
     m = mandn(mand(out, vgt(d2l, far2)), m);
 #endif
+#if W == 1
+    double rho = 0.0, d2 = zz;
+    if (out) {
+        rho = hypot(x, y);
+        double dr = k->small ? ex / (rho + k->R) : rho - k->R;
+        d2 = fma(dr, dr, zz);
+    }
+#else
     V rho = KN(cdk_call2)(hypot, mand(m, out), x, y);
     V dr = vsel(k->small, vdiv(ex, vadd(rho, k->R)), vsub(rho, k->R));
     V d2 = vsel(out, vfma(dr, dr, zz), zz);
+#endif
     m = mandn(vgt(d2, far2), m);
     *min = vsel(mand(m, vlt(d2, *min)), d2, *min);
     (void)t;
@@ -173,9 +182,17 @@ CD_INLINE M KN(cdk_crossing_far)(const KN(cdk_lanes) *k, V cs, V sn, V z, V min,
     if (!(min < INFINITY)) return 0;
 #endif
     V x = KN(cdk_trig)(k->X, cs, sn), y = KN(cdk_trig)(k->Y, cs, sn), ex = KN(cdk_rim_excess)(k, x, y, cs, sn);
+#if W == 1
+    double g = fabs(z);
+    if (ex > 0.0) {
+        double rho = sqrt(x * x + y * y), dr = k->small ? ex / (rho + k->R) : rho - k->R;
+        g = sqrt(dr * dr + z * z);
+    }
+#else
     V rho = vsqrt(vadd(vmul(x, x), vmul(y, y)));
     V dr = vsel(k->small, vdiv(ex, vadd(rho, k->R)), vsub(rho, k->R));
     V g = vsel(vgt(ex, vset(0.0)), vsqrt(vadd(vmul(dr, dr), vmul(z, z))), vabs(z));
+#endif
     M far = vgt(vsub(g, vmul(vset(move), k->rho)),
                 vadd(vsqrt(min), vmul(vset(2.0 * CD_CD_FAR_REL), scale)));
     return mand(vlt(min, vset(INFINITY)), far);
