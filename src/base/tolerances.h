@@ -298,6 +298,15 @@
  * |F''| is at most CD_CD_FLAT_REL rho L (rho: the circle's radius) is flat enough to hide a
  * neighbouring one below the sampling, so its neighbourhood is scanned. */
 #define CD_CD_Z_STEP 1e-3
+/* Circle-disk batch kernel: the angle (rad) by which a plane crossing's start taken by the
+ * angle sum (cos, sin of phi and of acos(cz) = sqrt(1 - cz^2), unit lengths to rounding) may
+ * differ from the single query's sincos(phi +- acos(cz)): sqrt(1 - cz^2) near cz = +-1 loses
+ * up to sqrt(2 eps) ~ 2e-8 and acos itself as much; 50 times that. */
+#define CD_CD_CROSS_START 1e-6
+/* Circle-disk batch kernel: relative bound (in eps) on sqrt(x^2 + y^2) against hypot(x, y) and
+ * on the roundings of the squared distance formed from either; a candidate whose lower bound
+ * so formed is above the far limit is dropped before hypot. A few ulps each; 16 covers them. */
+#define CD_CD_HYPOT_ULPS 16
 #define CD_CD_FLAT_REL 0.05
 
 /* ---- linking and time of impact (src/topology) ---- */

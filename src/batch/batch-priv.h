@@ -84,4 +84,28 @@ uint64_t cdist__cc_distance_kernel(const cdist__job *job, double unit_tol, size_
 cdist_status cdist__batch_screen(cdist_query *q, size_t n, const cdist_circle *a, const cdist_circle *b,
                                  const double *cutoffs, double *distances);
 
+/* The single circle-circle query's certified search (cdist__cc_quick) of the frames f[k] that
+ * are not NULL, k < count <= 64, in lanes (one frame per lane; lanes: 1, 4 or 8, the
+ * instruction set's, the caller's check; 0: this CPU's widest): the mask of those it
+ * certifies, with the angle found, its cosine and sine in t[k], c[k], s[k], each bit-identical
+ * to cdist__cc_quick's of the same width, and the squared distance there in d2[k]
+ * (cdist__cc_point_d2's, in the frame's units) (src/batch/cc_kernel.c). */
+struct cdist__cc_frame;
+uint64_t cdist__cc_quick_lanes(const struct cdist__cc_frame *const *f, int count, int lanes, double *t, double *c,
+                               double *s, double *d2);
+/* The single query's fast validation and basis (cdist__circle_fast_basis) of both circles of
+ * the entries [lo, lo + count), count <= 64, in lanes (lanes as above): a[k], b[k] where
+ * accepted, exchanged where bit k of swap is set; with up not NULL also framed as
+ * cdist__circles_frame frames them (a at the origin, both scaled by 1 / up[k], the collector's
+ * scale bscale[k]); returns the mask of the entries it does not accept. */
+uint64_t cdist__circle_pairs_lanes(const cdist__job *job, double unit_tol, size_t lo, int count, int lanes,
+                                   uint64_t swap, cdist__circle *a, cdist__circle *b, double *up, double *bscale);
+
+/* Distance kernels of circle-disk (disk = 0) and disk-disk (1), ROBUST method, for entries
+ * [lo, lo + count), count <= 64: the single query's own stages (cdist__cd_stage_start) with the
+ * rim searches of the block in lanes (cdist__cc_quick_lanes), so the distances are
+ * bit-identical to the single query's; the mask of the entries left for the scalar path
+ * (src/batch/cd_kernel.c). */
+uint64_t cdist__cd_distance_kernel(const cdist__job *job, int disk, double unit_tol, size_t lo, size_t count);
+
 #endif

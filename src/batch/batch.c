@@ -49,10 +49,10 @@ enum {
     RAY_CIRCLE_KERNEL,
     SEGMENT_CIRCLE_KERNEL,
     CIRCLE_CIRCLE_KERNEL,
+    CIRCLE_DISK_KERNEL,
+    DISK_DISK_KERNEL,
     /* the core kinds of contact kinds without a kernel: they take the scalar path */
-    CIRCLE_DISK_KERNEL = NO_KERNEL,
     SEGMENT_DISK_KERNEL = NO_KERNEL,
-    DISK_DISK_KERNEL = NO_KERNEL,
     NONE_KERNEL = NO_KERNEL /* closed forms: point-point, point-segment, segment-segment */
 };
 
@@ -170,7 +170,7 @@ static inline size_t lowest_bit(uint64_t x)
 
 /* The kernel of a job, if it is to run: distance-only, and the line and circle kernels only for
  * the method they implement (the ROBUST core; the three line kinds run the line-circle family's
- * method). */
+ * method; circle-disk and disk-disk the ROBUST method of their own families). */
 static int job_kernel(const cdist_query *h, const cdist__job *job)
 {
     int kernel = job->out == CD_OUT_DISTANCE ? kinds[job->kind].kernel : NO_KERNEL;
@@ -179,6 +179,10 @@ static int job_kernel(const cdist_query *h, const cdist__job *job)
         return NO_KERNEL;
     if (kernel == CIRCLE_CIRCLE_KERNEL && cdist__family_method(h, CD_FAM_CIRCLE_CIRCLE) != CDIST_METHOD_ROBUST)
         return NO_KERNEL;
+    if (kernel == CIRCLE_DISK_KERNEL && cdist__family_method(h, CD_FAM_CIRCLE_DISK) != CDIST_METHOD_ROBUST)
+        return NO_KERNEL;
+    if (kernel == DISK_DISK_KERNEL && cdist__family_method(h, CD_FAM_DISK_DISK) != CDIST_METHOD_ROBUST)
+        return NO_KERNEL;
     return kernel;
 }
 
@@ -186,6 +190,8 @@ static int job_kernel(const cdist_query *h, const cdist__job *job)
 static uint64_t run_kernel(int kernel, const cdist_query *h, const cdist__job *job, size_t lo, size_t count)
 {
     if (kernel == CIRCLE_CIRCLE_KERNEL) return cdist__cc_distance_kernel(job, h->unit_tol, lo, count);
+    if (kernel == CIRCLE_DISK_KERNEL || kernel == DISK_DISK_KERNEL)
+        return cdist__cd_distance_kernel(job, kernel == DISK_DISK_KERNEL, h->unit_tol, lo, count);
     if (kernel >= LINE_CIRCLE_KERNEL)
         return cdist__line_distance_kernel(job, kernel - LINE_CIRCLE_KERNEL, h->unit_tol, lo, count);
     return cdist__point_distance_kernel(job, kernel == POINT_DISK_KERNEL, h->unit_tol, lo, count);

@@ -36,12 +36,25 @@ typedef struct ck_block {
 typedef unsigned (*ck_setup_fn)(const cdist__job *job, double unit_tol, size_t lo, int base, int n, ck_block *b);
 typedef unsigned (*ck_search_fn)(ck_block *b, int g);
 typedef void (*ck_final_fn)(ck_block *b, int g);
+/* The kernel's parts in one instruction set's lanes. */
 typedef struct ck_variant {
-    ck_setup_fn setup;
-    ck_search_fn search, screen;
-    ck_final_fn final;
     int lanes;
+    ck_setup_fn setup;
+    ck_search_fn search, screen, search_quick;
+    ck_final_fn final, point_d2;
+    /* the circle-disk kernel's validation and framing (cdist__circle_pairs_lanes) */
+    unsigned (*circles)(const cdist__job *job, double unit_tol, size_t lo, int base, int n, unsigned swap,
+                        cdist__circle *a, cdist__circle *b, double *up, double *bscale);
 } ck_variant;
+
+static const ck_variant ck_v1 = {1, ck_setup_1, ck_search_1, ck_screen_1, ck_search_quick_1, ck_final_1,
+                                 ck_point_d2_1, ck_circles_1};
+#ifdef CD_X86_KERNELS
+static const ck_variant ck_v4 = {4, ck_setup_4, ck_search_4, ck_screen_4, ck_search_quick_4, ck_final_4,
+                                 ck_point_d2_4, ck_circles_4};
+static const ck_variant ck_v8 = {8, ck_setup_8, ck_search_8, ck_screen_8, ck_search_quick_8, ck_final_8,
+                                 ck_point_d2_8, ck_circles_8};
+#endif
 
 static uint64_t ck_run(const ck_variant *v, const cdist__job *job, double unit_tol, size_t lo, size_t count);
 
@@ -115,25 +128,86 @@ static uint64_t ck_run(const ck_variant *v, const cdist__job *job, double unit_t
 static uint64_t kernel_scalar(const cdist__job *job, int shape, double tol, size_t lo, size_t count)
 {
     (void)shape;
-    static const ck_variant v = {ck_setup_1, ck_search_1, ck_screen_1, ck_final_1, 1};
-    return ck_run(&v, job, tol, lo, count);
+    return ck_run(&ck_v1, job, tol, lo, count);
 }
 
 #ifdef CD_X86_KERNELS
 static uint64_t kernel_avx512(const cdist__job *job, int shape, double tol, size_t lo, size_t count)
 {
     (void)shape;
-    static const ck_variant v = {ck_setup_8, ck_search_8, ck_screen_8, ck_final_8, 8};
-    return ck_run(&v, job, tol, lo, count);
+    return ck_run(&ck_v8, job, tol, lo, count);
 }
 
 static uint64_t kernel_avx2(const cdist__job *job, int shape, double tol, size_t lo, size_t count)
 {
     (void)shape;
-    static const ck_variant v = {ck_setup_4, ck_search_4, ck_screen_4, ck_final_4, 4};
-    return ck_run(&v, job, tol, lo, count);
+    return ck_run(&ck_v4, job, tol, lo, count);
 }
 #endif
+
+/* The variant of a lane width (cdist__lanes_width). */
+static const ck_variant *ck_variant_of(int lanes)
+{
+#ifdef CD_X86_KERNELS
+    lanes = cdist__lanes_width(lanes);
+    if (lanes == 8) return &ck_v8;
+    if (lanes == 4) return &ck_v4;
+#else
+    (void)lanes;
+#endif
+    return &ck_v1;
+}
+
+uint64_t cdist__cc_quick_lanes(const cdist__cc_frame *const *f, int count, int lanes, double *t, double *c, double *s,
+                               double *d2)
+{
+    const ck_variant *v = ck_variant_of(lanes);
+    cdist__cc_search_tables();
+    ck_block b;
+    uint64_t todo = 0;
+    int W = v->lanes, groups = (count + W - 1) / W * W;
+    for (int k = 0; k < groups; k++) {
+        const cdist__cc_frame *e = k < count ? f[k] : NULL;
+        if (e) todo |= (uint64_t)1 << k;
+        const double col[CK_NC] = {e ? e->rg.al.x : 0.0, e ? e->rg.al.y : 0.0, e ? e->rg.al.z : 0.0,
+                                   e ? e->rg.be.x : 0.0, e ? e->rg.be.y : 0.0, e ? e->rg.be.z : 0.0,
+                                   e ? e->rg.ga.x : 0.0, e ? e->rg.ga.y : 0.0, e ? e->rg.ga.z : 0.0,
+                                   e ? e->rg.ha : 0.0,   e ? e->rg.hb : 0.0,   e ? e->rg.hc : 0.0,
+                                   e ? e->s : 0.0,       e ? e->R * e->R : 0.0, e ? e->W1 : 0.0,
+                                   e ? e->Hh : 0.0,      e ? e->Hc0 : 0.0,    e ? e->Lw : 0.0, 0.0, 0.0, NAN};
+        for (int j = 0; j < CK_NC; j++) b.col[j][k] = col[j];
+    }
+    uint64_t found = 0, lane_mask = ((uint64_t)1 << W) - 1;
+    for (int g = 0; g < groups; g += W) {
+        if (!((todo >> g) & lane_mask)) continue;
+        uint64_t ok = ~(uint64_t)v->search_quick(&b, g) & lane_mask & (todo >> g);
+        if (ok) v->point_d2(&b, g);
+        found |= ok << g;
+    }
+    for (int k = 0; k < count; k++)
+        if (found >> k & 1) {
+            t[k] = b.t[k];
+            c[k] = b.ct[k];
+            s[k] = b.st[k];
+            d2[k] = b.d[k];
+        }
+    return found;
+}
+
+uint64_t cdist__circle_pairs_lanes(const cdist__job *job, double unit_tol, size_t lo, int count, int lanes,
+                                   uint64_t swap, cdist__circle *a, cdist__circle *b, double *up, double *bscale)
+{
+    const ck_variant *v = ck_variant_of(lanes);
+    uint64_t bad = 0;
+    for (int g = 0; g < count; g += v->lanes) {
+        int n = count - g < v->lanes ? count - g : v->lanes;
+        unsigned sw = (unsigned)(swap >> g) & ((1u << v->lanes) - 1u);
+        bad |= (uint64_t)v->circles(job, unit_tol, lo, g, n, sw, a + g, b + g, up ? up + g : NULL,
+                                    bscale ? bscale + g : NULL)
+               << g;
+    }
+    return bad;
+}
 
 uint64_t cdist__cc_distance_kernel(const cdist__job *job, double unit_tol, size_t lo, size_t count)
 {

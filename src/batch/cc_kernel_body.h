@@ -5,6 +5,7 @@
  * the angles found. */
 
 #include "api/circle_fast_lanes.h"
+#include "circles/ring_lanes.h"
 
 /* The ring of the lane group from g (the block's columns). */
 CD_INLINE void KN(ck_load)(const ck_block *b, int g, KN(ck_ring) *r)
@@ -36,20 +37,16 @@ CD_INLINE void KN(ck_basis)(const V *n, V *u, V *v)
     KN(cross)(n[0], n[1], n[2], u[0], u[1], u[2], &v[0], &v[1], &v[2]);
 }
 
-/* a.x b.x + a.y b.y + a.z b.z as cdist__ring_dot, left to right */
-CD_INLINE V KN(ck_rdot)(V ax, V ay, V az, V bx, V by, V bz)
-{
-    return vadd(vadd(vmul(ax, bx), vmul(ay, by)), vmul(az, bz));
-}
 
 /* The single query's validation, framing (cdist__circles_frame), problem (cdist__cc_prepare)
  * and ring (cdist__ring_init) of the entries [lo + base, lo + base + n), n <= W, operation by
  * operation, into the block's columns from base; returns the lanes left to the scalar path
  * (also the lanes >= n, and where the radii are equal: the tie rule of cdist__cc_prepare is not
  * repeated here). */
-static unsigned KN(ck_setup)(const cdist__job *job, double unit_tol, size_t lo, int base, int n, ck_block *b)
+/* The two circles of the entries [lo + base, lo + base + n), n <= W (the lanes from n repeat
+ * the first entry), as 7 columns each: centre, normal, radius. */
+CD_INLINE void KN(ck_load_pairs)(const cdist__job *job, size_t lo, int base, int n, V *ca, V *cb)
 {
-    V ca[8], cb[8];
 #ifdef vload_objects
     if (n == W) {
         vload_objects(cdist__job_a(job, lo + (size_t)base), job->a_stride, 7, ca);
@@ -71,6 +68,76 @@ static unsigned KN(ck_setup)(const cdist__job *job, double unit_tol, size_t lo, 
             cb[f] = vld(in[7 + f]);
         }
     }
+}
+
+/* The single query's fast validation and basis (cdist__circle_fast_basis, operation by
+ * operation) of both circles of the entries [lo + base, lo + base + n), n <= W, into a[k], b[k]
+ * (k < n), exchanged in the lanes of swap; with up (not NULL) also framed as
+ * cdist__circles_frame frames them (a's centre the origin, both scaled by 1 / up[k]; bscale[k]
+ * the collector's scale); returns the lanes it does not take (a full check must decide). */
+static unsigned KN(ck_circles)(const cdist__job *job, double unit_tol, size_t lo, int base, int n, unsigned swap,
+                               cdist__circle *a, cdist__circle *b, double *up, double *bscale)
+{
+    V c[2][8], nn[2][3], u[2][3], v[2][3];
+    KN(ck_load_pairs)(job, lo, base, n, c[0], c[1]);
+    M ok = mand(KN(circle_fast)(c[0], c[0] + 3, c[0][6], unit_tol, nn[0]),
+                KN(circle_fast)(c[1], c[1] + 3, c[1][6], unit_tol, nn[1]));
+    for (int o = 0; o < 2; o++) KN(ck_basis)(nn[o], u[o], v[o]);
+    V *comp[2][13];
+    for (int o = 0; o < 2; o++) {
+        V *p[13] = {&c[o][0], &c[o][1], &c[o][2], &nn[o][0], &nn[o][1], &nn[o][2], &u[o][0],
+                    &u[o][1], &u[o][2], &v[o][0], &v[o][1], &v[o][2], &c[o][6]};
+        memcpy(comp[o], p, sizeof p);
+    }
+    if (swap) {
+        double sw[W];
+        for (int l = 0; l < W; l++) sw[l] = swap >> l & 1 ? 1.0 : 0.0;
+        M m = veq(vld(sw), vset(1.0));
+        for (int j = 0; j < 13; j++) {
+            V x = *comp[0][j], y = *comp[1][j];
+            *comp[0][j] = vsel(m, y, x);
+            *comp[1][j] = vsel(m, x, y);
+        }
+    }
+    if (up) {
+        /* cdist__circles_frame: b's centre relative to a's, both scaled by 2^-e */
+        V zero = vset(0.0), bc[3];
+        for (int j = 0; j < 3; j++) bc[j] = vsub(c[1][j], c[0][j]);
+        V L = KN(fmax)(KN(fmax)(c[0][6], c[1][6]), KN(max3)(bc[0], bc[1], bc[2]));
+        ok = mand(ok, vge(L, vset(0x1p-1022))); /* a subnormal or zero scale: the scalar path */
+        V p = KN(pow2_of)(L), down = vrecip2(p);
+        c[0][6] = vmul(c[0][6], down);
+        c[1][6] = vmul(c[1][6], down);
+        for (int j = 0; j < 3; j++) {
+            c[0][j] = zero;
+            c[1][j] = vmul(down, bc[j]);
+        }
+        V sc = KN(fmax)(KN(fmax)(c[0][6], c[1][6]), vsqrt(KN(dot)(c[1][0], c[1][1], c[1][2], c[1][0], c[1][1], c[1][2])));
+        sc = vsel(mand(vgt(sc, zero), vle(sc, vset(DBL_MAX))), sc, vset(1.0)); /* cdist__best_init */
+        double pu[W], ps[W];
+        vst(pu, p);
+        vst(ps, sc);
+        for (int k = 0; k < n; k++) {
+            up[k] = pu[k];
+            bscale[k] = ps[k];
+        }
+    }
+    for (int o = 0; o < 2; o++) {
+        double col[13][W];
+        for (int j = 0; j < 13; j++) vst(col[j], *comp[o][j]);
+        cdist__circle *out = o ? b : a;
+        for (int k = 0; k < n; k++)
+            out[k] = (cdist__circle){v3(col[0][k], col[1][k], col[2][k]), v3(col[3][k], col[4][k], col[5][k]),
+                                     v3(col[6][k], col[7][k], col[8][k]), v3(col[9][k], col[10][k], col[11][k]),
+                                     col[12][k]};
+    }
+    return mbits(mnot(ok)) & ((1u << n) - 1u);
+}
+
+static unsigned KN(ck_setup)(const cdist__job *job, double unit_tol, size_t lo, int base, int n, ck_block *b)
+{
+    V ca[8], cb[8];
+    KN(ck_load_pairs)(job, lo, base, n, ca, cb);
     V na[3], nb[3];
     M ok = mand(KN(circle_fast)(ca, ca + 3, ca[6], unit_tol, na), KN(circle_fast)(cb, cb + 3, cb[6], unit_tol, nb));
     /* cdist__circles_frame: B's centre relative to A's, scaled by 2^-e */
@@ -101,18 +168,9 @@ static unsigned KN(ck_setup)(const cdist__job *job, double unit_tol, size_t lo, 
     }
     KN(ck_basis)(nA, u, v);
     /* cdist__ring_init */
-    V al[3], be[3], ga[3];
-    KN(cross)(m[0], m[1], m[2], u[0], u[1], u[2], &al[0], &al[1], &al[2]);
-    KN(cross)(m[0], m[1], m[2], v[0], v[1], v[2], &be[0], &be[1], &be[2]);
-    KN(cross)(m[0], m[1], m[2], CBx, CBy, CBz, &ga[0], &ga[1], &ga[2]);
-    for (int k = 0; k < 3; k++) {
-        al[k] = vmul(R, al[k]);
-        be[k] = vmul(R, be[k]);
-        ga[k] = vneg(ga[k]);
-    }
-    V ha = vmul(R, KN(ck_rdot)(m[0], m[1], m[2], u[0], u[1], u[2]));
-    V hb = vmul(R, KN(ck_rdot)(m[0], m[1], m[2], v[0], v[1], v[2]));
-    V hc = vneg(KN(ck_rdot)(m[0], m[1], m[2], CBx, CBy, CBz));
+    V al[3], be[3], ga[3], ha, hb, hc;
+    const V CB[3] = {CBx, CBy, CBz};
+    KN(ring_init)(R, u, v, CB, m, al, be, ga, &ha, &hb, &hc);
     V W1 = vadd(vsqrt(KN(dot)(al[0], al[1], al[2], al[0], al[1], al[2])),
                 vsqrt(KN(dot)(be[0], be[1], be[2], be[0], be[1], be[2])));
     V Lw = vadd(vmul(vset(2.0), R), vsqrt(KN(dot)(CBx, CBy, CBz, CBx, CBy, CBz)));
@@ -139,10 +197,14 @@ CD_INLINE V KN(ck_grid_lb)(const KN(ck_ring) *r, const V *Fg, int j, V R2tan)
 }
 
 /* The search for the W entries of the block from g: angles t[] of the closest points of the
- * entries it certifies; returns the lane mask (bit k: entry g + k) of those it does not. With
- * `screen` (a constant: two instances), the first grid only: the verdicts of a screen
- * (cdist__batch_screen) into b->screen, and the mask of the lanes it leaves undecided. */
-CD_INLINE unsigned KN(ck_search_in)(ck_block *b, int g, const int screen)
+ * entries it certifies; returns the lane mask (bit k: entry g + k) of those it does not. quick
+ * (a constant): certify exactly what the single query's search (cdist__cc_quick,
+ * src/circles/cc_quick_body.h) certifies, which gives up earlier (CK_QUICK_LEVELS, a basin
+ * near B's axis, an F below CD_CCK_MIN_F on the way, a near-tie seen before the end, a NaN);
+ * where both certify, the angle and its cos and sin are the same. screen (a constant): the
+ * first grid only, the verdicts of a screen (cdist__batch_screen) into b->screen, and the mask
+ * of the lanes it leaves undecided. */
+CD_INLINE unsigned KN(ck_search_mode)(ck_block *b, int g, int quick, int screen)
 {
     KN(ck_ring) r;
     KN(ck_load)(b, g, &r);
@@ -161,7 +223,7 @@ CD_INLINE unsigned KN(ck_search_in)(ck_block *b, int g, const int screen)
     M fail = mfalse();
     V minlb = vset(INFINITY), R2tan = vmul(r.R2, vset(cdist__cc_tab.grid_tan2));
     M nan = mfalse(); /* a NaN bound would drop out of minlb (min keeps the other operand) */
-    V c = vset(0.0), s = vset(0.0), Fl = vset(0.0), Fr = vset(0.0);
+    V c = vset(0.0), s = vset(0.0), Fl = vset(0.0), Fr = vset(0.0), lbb = vset(INFINITY);
     if (screen) {
         /* The distance is above the cutoff when the smallest bound of all intervals, less the
          * margin, is (its square root scaled back and rounded down: a certified lower bound, the
@@ -183,6 +245,10 @@ CD_INLINE unsigned KN(ck_search_in)(ck_block *b, int g, const int screen)
         V lb = KN(ck_grid_lb)(&r, Fg, j, R2tan);
         M at = veq(vset((double)j), bestJ), before = veq(vset((double)jn), bestJ);
         minlb = vsel(mor(at, before), minlb, vmin(minlb, lb));
+        if (quick) {
+            lbb = vsel(mor(at, before), vmin(lbb, lb), lbb);
+            nan = mor(nan, vne(Fg[j], Fg[j]));
+        }
         nan = mor(nan, vne(lb, lb));
         c = vsel(at, vset(cdist__cc_tab.grid_c[j]), c);
         s = vsel(at, vset(cdist__cc_tab.grid_s[j]), s);
@@ -190,20 +256,31 @@ CD_INLINE unsigned KN(ck_search_in)(ck_block *b, int g, const int screen)
         Fr = vsel(veq(vset((double)jp), bestJ), Fg[j], Fr);
     }
     V t = vmul(bestJ, vset(2.0 * M_PI / CK_GRID));
+    const V margin_q = vset(CD_CCK_CERT_MARGIN);
+    if (quick) fail = mor(nan, mnot(vgt(minlb, vadd(lbb, margin_q))));
+    const int levels = quick ? CK_QUICK_LEVELS : CK_LEVELS;
 
     /* Zoom: certify the basin [t - h, t + h] convex, else split it in 8, keep the two
      * subintervals around the best point and add the hull bounds of the other six to minlb. */
     M done = mfalse();
     V hdone = vset(0.0);
-    for (int l = 0; l < CK_LEVELS; l++) {
+    for (int l = 0; l < levels; l++) {
         M active = mnot(mor(done, fail));
+        if (quick) {
+            fail = mor(fail, mandn(vge(bestF, vset(CD_CCK_MIN_F)), active));
+            active = mnot(mor(done, fail));
+        }
         if (!many(active)) break;
-        M near_axis;
+        M near_axis = mfalse();
         M conv = l < CK_FIRST_CONVEX ? mfalse() : mand(active, KN(ck_convex)(&r, c, s, l, &near_axis));
         done = mor(done, conv);
         hdone = vsel(conv, vset(cdist__cc_tab.half[l]), hdone);
         active = mandn(conv, active);
-        if (!many(active) || l + 1 == CK_LEVELS) break;
+        if (quick) {
+            fail = mor(fail, mand(active, near_axis));
+            active = mandn(near_axis, active);
+        }
+        if (!many(active) || l + 1 == levels) break;
         V Fk[9], Ck[9], Sk[9];
         Fk[0] = Fl;
         Fk[4] = bestF;
@@ -218,13 +295,15 @@ CD_INLINE unsigned KN(ck_search_in)(ck_block *b, int g, const int screen)
             Fk[4 - k] = KN(ck_f)(&r, Ck[4 - k], Sk[4 - k]);
         }
         V nF = Fk[4], kb = vset(4.0);
+        M nanF = mfalse();
         for (int k = 0; k < 9; k++) {
             M lt = vlt(Fk[k], nF);
             nF = vsel(lt, Fk[k], nF);
             kb = vsel(lt, vset((double)k), kb);
+            if (quick) nanF = mor(nanF, vne(Fk[k], Fk[k]));
         }
         M edge = mor(veq(kb, vset(0.0)), veq(kb, vset(8.0)));
-        V R2tan_sub = vmul(r.R2, vset(cdist__cc_tab.sub_tan2[l]));
+        V R2tan_sub = vmul(r.R2, vset(cdist__cc_tab.sub_tan2[l])), lbk = vset(INFINITY);
         for (int i = 0; i < 8; i++) {
             int m = i < 4 ? 3 - i : i - 4; /* hull point of [i, i+1] at (2 (i - 4) + 1) h / 8 */
             double sg = i < 4 ? -1.0 : 1.0;
@@ -233,8 +312,10 @@ CD_INLINE unsigned KN(ck_search_in)(ck_block *b, int g, const int screen)
             V lb = vmin(vmin(Fk[i], Fk[i + 1]), vsub(KN(ck_f)(&r, hc, hs), R2tan_sub));
             M keep = mor(veq(vset((double)i), kb), veq(vset((double)(i + 1)), kb));
             minlb = vsel(mandn(keep, active), vmin(minlb, lb), minlb);
+            if (quick) lbk = vsel(keep, vmin(lbk, lb), lbk);
             nan = mor(nan, mand(active, vne(lb, lb)));
         }
+        if (quick) edge = mor(edge, mor(mor(nanF, nan), mnot(vgt(minlb, vadd(lbk, margin_q)))));
         fail = mor(fail, mand(active, edge));
         active = mandn(edge, active);
         V nc = c, ns = s, nl = Fl, nr = Fr;
@@ -291,8 +372,9 @@ CD_INLINE unsigned KN(ck_search_in)(ck_block *b, int g, const int screen)
     return mbits(fail);
 }
 
-static unsigned KN(ck_search)(ck_block *b, int g) { return KN(ck_search_in)(b, g, 0); }
-static unsigned KN(ck_screen)(ck_block *b, int g) { return KN(ck_search_in)(b, g, 1); }
+static unsigned KN(ck_search)(ck_block *b, int g) { return KN(ck_search_mode)(b, g, 0, 0); }
+static unsigned KN(ck_search_quick)(ck_block *b, int g) { return KN(ck_search_mode)(b, g, 1, 0); }
+static unsigned KN(ck_screen)(ck_block *b, int g) { return KN(ck_search_mode)(b, g, 0, 1); }
 
 /* ---- the distance at the angle found, in lanes ---- */
 
@@ -306,4 +388,14 @@ static void KN(ck_final)(ck_block *b, int g)
     V d2 = KN(cc_point_d2)(&r, vld(&b->ct[g]), vld(&b->st[g]));
     V u = vld(&b->col[CK_C_UNSC][g]);
     vst(&b->d[g], vmul(vsqrt(vmul(vmul(d2, u), u)), vld(&b->col[CK_C_UP][g])));
+}
+
+
+/* The squared distances at the angles found (b->ct, b->st) of the lane group from g, in the
+ * ring's units (no scaling back), into b->d: cdist__cc_point_d2 in lanes. */
+static void KN(ck_point_d2)(ck_block *b, int g)
+{
+    KN(ck_ring) r;
+    KN(ck_load)(b, g, &r);
+    vst(&b->d[g], KN(cc_point_d2)(&r, vld(&b->ct[g]), vld(&b->st[g])));
 }

@@ -61,19 +61,19 @@ CD_INLINE double scaled_pair(const cdist__circle *c0, const cdist__circle *c1, c
     return sc;
 }
 
-CD_FMA_CLONES int cdist__cc_quick_minimum(const cdist__circle *c0, const cdist__circle *c1, double *t, double *c, double *s,
-                                          double *d)
+CD_FMA_CLONES int cdist__cc_quick_frame(const cdist__circle *c0, const cdist__circle *c1, cdist__cc_frame *f, double *sc)
 {
     if (c0->r == 0.0 || c1->r == 0.0) return 0;
     cdist__circle a, b;
-    double sc = scaled_pair(c0, c1, &a, &b), tp[4];
-    cdist__cc_frame f;
-    cdist__cc_frame_ring(&f, &a, b.c, &b);
-    if (cdist__cc_parallel_critical(&f, tp) >= 0 || !cdist__cc_quick_worth(&f) || !cdist__cc_quick(&f, t, c, s))
-        return 0;
-    *t = cdist__cc_param(*t);
-    *d = sqrt(cdist__cc_point_d2(&f.rg, f.s, *c, *s)) / sc;
-    return 1;
+    double tp[4];
+    *sc = scaled_pair(c0, c1, &a, &b);
+    cdist__cc_frame_ring(f, &a, b.c, &b);
+    return cdist__cc_parallel_critical(f, tp) < 0 && cdist__cc_quick_worth(f);
+}
+
+CD_FMA_CLONES double cdist__cc_quick_distance(const cdist__cc_frame *f, double sc, double c, double s)
+{
+    return cdist__cc_quick_unscale(cdist__cc_point_d2(&f->rg, f->s, c, s), sc);
 }
 
 CD_FMA_CLONES int cdist__circle_circle_critical(cdist_query *q, const cdist__circle *c0, const cdist__circle *c1, double dcap, double *theta0,

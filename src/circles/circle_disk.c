@@ -13,52 +13,7 @@
 /* ------------------------------------------------------------------------------------------ */
 /* Circle to disk                                                                               */
 
-/* The circle P(t) = rho (cos t A + sin t B) (centre at the origin) in the disk's frame:
- * x(t) = X[0] + X[1] cos t + X[2] sin t, the same for y, z; S(t) = Delta . Delta'. */
-typedef struct cdk {
-    double X[3], Y[3], Z[3], S[3];
-    cdist__ring rg;          /* the same circle for the ring evaluator (w = (x, y, 0), h = z) */
-    double E0;           /* X0^2 + Y0^2 - R^2, to the last bit (see rim_excess) */
-    int small_circle;    /* rho <= R: rim_excess expands around the circle's centre */
-    double R;            /* disk radius */
-    double rho;          /* circle radius */
-    vec3 A, B, D, n, u, v;
-    const cdist__circle *c, *d; /* the circle (centre at the origin) and the disk */
-} cdk;
-
-CD_INLINE void cdk_init(cdk *k, const cdist__circle *c, const cdist__circle *d)
-{
-    vec3 D = d->c;
-    k->c = c;
-    k->d = d;
-    k->D = D;
-    k->n = d->n;
-    k->u = d->u;
-    k->v = d->v;
-    k->A = c->u;
-    k->B = c->v;
-    k->rho = c->r;
-    k->R = d->r;
-    double r = c->r;
-    k->X[0] = -v_dot(d->u, D); k->X[1] = r * v_dot(d->u, c->u); k->X[2] = r * v_dot(d->u, c->v);
-    k->Y[0] = -v_dot(d->v, D); k->Y[1] = r * v_dot(d->v, c->u); k->Y[2] = r * v_dot(d->v, c->v);
-    k->Z[0] = -v_dot(d->n, D); k->Z[1] = r * v_dot(d->n, c->u); k->Z[2] = r * v_dot(d->n, c->v);
-    /* E0 by error-free products and sums (base/numeric.h): the in-plane excess of the circle's
-     * centre over the rim, exact to rounding even when R is huge and the gap tiny. */
-    double xl, yl, rl, e1, e2;
-    double xh = cdist__two_prod(k->X[0], k->X[0], &xl), yh = cdist__two_prod(k->Y[0], k->Y[0], &yl);
-    double rh = cdist__two_prod(k->R, k->R, &rl);
-    double s1 = cdist__two_sum(xh, yh, &e1), s2 = cdist__two_sum(s1, -rh, &e2);
-    k->E0 = s2 + (e2 + e1 + xl + yl - rl);
-    k->small_circle = k->rho <= k->R;
-    k->rg = (cdist__ring){v3(k->X[1], k->Y[1], 0.0), v3(k->X[2], k->Y[2], 0.0), v3(k->X[0], k->Y[0], 0.0),
-                      k->Z[1], k->Z[2], k->Z[0]};
-    /* Delta . Delta' = (P - D) . P' = -D . P' since |P| is constant. */
-    k->S[0] = 0.0; k->S[1] = -r * v_dot(D, c->v); k->S[2] = r * v_dot(D, c->u);
-}
-
-CD_INLINE double trig1(const double *a, double cs, double sn) { return fma(a[1], cs, fma(a[2], sn, a[0])); }
-CD_INLINE double trig1d(const double *a, double cs, double sn) { return fma(a[2], cs, -a[1] * sn); }
+typedef cdist__cdk cdk;
 
 /* Half squared rim distance F = ((rho - R)^2 + z^2) / 2 along the circle: value, F', F''
  * (the ring evaluator; on the disk's axis F has a cusp, a maximum, where F'' is set to 1). */
@@ -66,7 +21,7 @@ static double cdk_rim_cs(const cdk *k, double cs, double sn, double *f1, double 
 {
     cdist__ring_val v;
     v.F1 = v.F2 = 0.0;
-    cdist__ring_eval(&k->rg, k->R, cs, sn, f2 ? 2 : f1 ? 1 : 0, &v);
+    cdist__ring_eval(&k->rg, k->g.R, cs, sn, f2 ? 2 : f1 ? 1 : 0, &v);
     if (f1) *f1 = v.F1;
     if (f2) *f2 = v.rho > 0.0 ? v.F2 : 1.0;
     return 0.5 * v.F;
@@ -79,69 +34,79 @@ static double cdk_rim(const cdk *k, double t, double *f1, double *f2)
     return cdk_rim_cs(k, cs, sn, f1, f2);
 }
 
-/* x^2 + y^2 - R^2 at the circle point (cs, sn), with x, y its in-plane coordinates relative to
- * the disk centre. A circle much smaller than the disk (mixed scales: r = 1e-8 beside R = 1e8)
- * sits where x, y are large and their squares carry an absolute rounding of eps R^2, which would
- * turn a gap of 1e-8 into a false contact; expanded around the circle's centre,
- *     x^2 + y^2 - R^2 = E0 + 2 (X0 a + Y0 b) + a^2 + b^2    (a = x - X0, b = y - Y0),
- * the error is eps (R r + r^2) instead. For a circle at least as large as the disk the direct
- * form is the more accurate one (its x, y are small where it matters). */
-CD_INLINE double rim_excess(const cdk *k, double x, double y, double cs, double sn)
-{
-    if (!k->small_circle) return fma(x, x, fma(y, y, -k->R * k->R));
-    double a = k->X[1] * cs + k->X[2] * sn, b = k->Y[1] * cs + k->Y[2] * sn;
-    return k->E0 + (2.0 * (k->X[0] * a + k->Y[0] * b) + (a * a + b * b));
-}
+/* Where the candidates go: b (the single query: pairs, points, angles) or, b NULL, only their
+ * smallest squared distance (the batch kernel); d2 is b's best so far either way (the offers
+ * drop only candidates above it), scale b's scale. */
+typedef struct cdk_sink {
+    const cdk *k;
+    cdist__best *b;
+    double d2, scale;
+} cdk_sink;
 
-/* Offer the circle point at angle t, (cs, sn) = (cos t, sin t), with its closest disk point (the
- * true point-disk distance); nothing when its distance is far above b's best (CD_CD_FAR_REL). */
-CD_INLINE void cdk_offer_cs(const cdk *k, double t, double cs, double sn, cdist__best *b)
+/* The pair of an offer (cd_body.h): the circle point and its closest disk point (the
+ * projection onto the plane, or the rim point over it). */
+CD_INLINE void cdk_offer_pair(void *ctx, double t, double cs, double sn, double x, double y, double z, double ex,
+                              double rho, double d2)
 {
-    double far = b->n > 0 ? sqrt(b->c[0].d2) + CD_CD_FAR_REL * b->scale : INFINITY, far2 = far * far;
-    double x = trig1(k->X, cs, sn), y = trig1(k->Y, cs, sn), z = trig1(k->Z, cs, sn), zz = z * z;
-    if (zz > far2) return; /* the distance is at least |z| */
-    double ex = rim_excess(k, x, y, cs, sn);
-    double d2, rho = 0.0;
-    if (ex <= 0.0) {
-        d2 = zz;
-    } else {
-        rho = hypot(x, y);
-        double dr = k->small_circle ? ex / (rho + k->R) : rho - k->R;
-        d2 = fma(dr, dr, zz);
-    }
-    if (d2 > far2) return;
-    vec3 P = v_axpy(v_scale(k->rho * cs, k->A), k->rho * sn, k->B);
+    const cdk_sink *o = ctx;
+    const cdk *k = o->k;
+    vec3 P = v_axpy(v_scale(k->g.rho * cs, k->A), k->g.rho * sn, k->B);
     vec3 K;
     if (ex <= 0.0) {
         K = v_axpy(P, -z, k->n); /* the projection onto the plane */
     } else {
-        double s = k->R / rho;
+        double s = k->g.R / rho;
         K = v_axpy(v_axpy(k->D, s * x, k->u), s * y, k->v);
     }
-    cdist__best_offer(b, d2, P, K, k->rho > 0.0 ? cdist__wrap_angle(t) : NAN, cdist__polar_angle(x, y));
+    cdist__best_offer(o->b, d2, P, K, k->g.rho > 0.0 ? cdist__wrap_angle(t) : NAN, cdist__polar_angle(x, y));
 }
 
-CD_INLINE void cdk_offer(const cdk *k, double t, cdist__best *b)
+#define CDK_OFFER_PAIR cdk_offer_pair
+#define CD_LANES 1
+#include "base/lanes/lanes_def.h"
+#include "base/lanes/lanes_vec.h"
+#include "circles/cd_body.h"
+#include "base/lanes/lanes_undef.h"
+
+/* The circle as the ring evaluator sees it (w = (x, y, 0), h = z). */
+CD_INLINE void cdk_ring(cdk *k)
+{
+    k->rg = (cdist__ring){v3(k->g.X[1], k->g.Y[1], 0.0), v3(k->g.X[2], k->g.Y[2], 0.0), v3(k->g.X[0], k->g.Y[0], 0.0),
+                          k->g.Z[1], k->g.Z[2], k->g.Z[0]};
+}
+
+CD_INLINE void cdk_init(cdk *k, const cdist__circle *c, const cdist__circle *d)
+{
+    vec3 D = d->c;
+    k->c = c;
+    k->d = d;
+    k->D = D;
+    k->n = d->n;
+    k->u = d->u;
+    k->v = d->v;
+    k->A = c->u;
+    k->B = c->v;
+    const double Dv[3] = {D.x, D.y, D.z}, dn[3] = {d->n.x, d->n.y, d->n.z}, du[3] = {d->u.x, d->u.y, d->u.z},
+                 dv[3] = {d->v.x, d->v.y, d->v.z}, cu[3] = {c->u.x, c->u.y, c->u.z}, cv[3] = {c->v.x, c->v.y, c->v.z};
+    cdk_lanes_init_1(&k->g, Dv, dn, du, dv, cu, cv, c->r, d->r);
+    cdk_ring(k);
+    /* Delta . Delta' = (P - D) . P' = -D . P' since |P| is constant. */
+    double r = c->r;
+    k->S[0] = 0.0; k->S[1] = -r * v_dot(D, c->v); k->S[2] = r * v_dot(D, c->u);
+}
+
+/* Offer the circle point at angle t, (cs, sn) = (cos t, sin t), with its closest disk point (the
+ * true point-disk distance); nothing when its distance is far above the best (CD_CD_FAR_REL). */
+CD_INLINE void cdk_offer_cs(const cdk *k, double t, double cs, double sn, cdk_sink *o)
+{
+    cdk_offer_1(&k->g, 1, t, cs, sn, &o->d2, o->scale, o->b ? o : NULL);
+}
+
+CD_INLINE void cdk_offer(const cdk *k, double t, cdk_sink *o)
 {
     double sn, cs;
     sincos(t, &sn, &cs);
-    cdk_offer_cs(k, t, cs, sn, b);
-}
-
-/* Whether the plane crossing first estimated at (cs, sn), with height z there, is certainly far
- * above b's best (CD_CD_FAR_REL) wherever its two Newton steps take it: they move the circle
- * point by at most 2 CD_CD_Z_STEP rho (the distance to the disk is 1-Lipschitz), and twice the
- * far margin covers the plain square root used here for hypot. Its offer would then be dropped
- * anyway, so the steps and the offer are skipped. */
-CD_INLINE int cdk_crossing_far(const cdk *k, double cs, double sn, double z, const cdist__best *b)
-{
-    if (b->n == 0) return 0;
-    double x = trig1(k->X, cs, sn), y = trig1(k->Y, cs, sn), ex = rim_excess(k, x, y, cs, sn), g = fabs(z);
-    if (ex > 0.0) {
-        double rho = sqrt(x * x + y * y), dr = k->small_circle ? ex / (rho + k->R) : rho - k->R;
-        g = sqrt(dr * dr + z * z);
-    }
-    return g - 2.0 * CD_CD_Z_STEP * k->rho > sqrt(b->c[0].d2) + 2.0 * CD_CD_FAR_REL * b->scale;
+    cdk_offer_cs(k, t, cs, sn, o);
 }
 
 /* Bracketed root of F' in [a, b] with sg F'(a) < 0 < sg F'(b) (sg = 1: a minimum of F, -1: a
@@ -188,13 +153,13 @@ static void trig_to_quad(const double *c, double s, double *q)
  * T = x x' + y y'. Returns the number of angles written, or -1 when F is constant, -2 on failure. */
 static int cdk_poly_critical(cdist_query *q, const cdk *k, double *ts)
 {
-    double s = cdist__fmax(cdist__fmax(k->rho, k->R), cdist__fmax(fabs(k->X[0]), cdist__fmax(fabs(k->Y[0]), fabs(k->Z[0]))));
+    double s = cdist__fmax(cdist__fmax(k->g.rho, k->g.R), cdist__fmax(fabs(k->g.X[0]), cdist__fmax(fabs(k->g.Y[0]), fabs(k->g.Z[0]))));
     if (!(s > 0.0)) return 0;
     s = 1.0 / s;
-    double dX[3] = {0.0, k->X[2], -k->X[1]}, dY[3] = {0.0, k->Y[2], -k->Y[1]};
+    double dX[3] = {0.0, k->g.X[2], -k->g.X[1]}, dY[3] = {0.0, k->g.Y[2], -k->g.Y[1]};
     double qx[3], qy[3], qxp[3], qyp[3], qs[3];
-    trig_to_quad(k->X, s, qx);
-    trig_to_quad(k->Y, s, qy);
+    trig_to_quad(k->g.X, s, qx);
+    trig_to_quad(k->g.Y, s, qy);
     trig_to_quad(dX, s, qxp);
     trig_to_quad(dY, s, qyp);
     trig_to_quad(k->S, s * s, qs);
@@ -210,7 +175,7 @@ static int cdk_poly_critical(cdist_query *q, const cdk *k, double *ts)
     cdist__poly_mul(qs, 2, qs, 2, 1, S2);
     cdist__poly_mul(rho2, 4, S2, 4, 1, a);
     cdist__poly_mul(T, 4, T, 4, 1, bq);
-    double R2 = (k->R * s) * (k->R * s);
+    double R2 = (k->g.R * s) * (k->g.R * s);
     for (int i = 0; i < 9; i++) a[i] = fma(-R2, bq[i], a[i]);
     double roots[8];
     int nr = cdist__poly_real_roots(q->poly, a, 8, 1e-3, roots);
@@ -354,7 +319,7 @@ static int cdk_robust_critical(const cdk *k, double *ts, int cap, double scale)
     for (int i = 1; i < CDK_SAMPLES; i++) Fmin = cdist__fmin(Fmin, Fs[i]);
     /* A cluster can only hold the global minimum where F is within this margin of the best. */
     double margin = Fmin + 0.01 * scale * scale;
-    double flat = CD_CD_FLAT_REL * k->rho * scale;
+    double flat = CD_CD_FLAT_REL * k->g.rho * scale;
     int n = 0;
     for (int i = 0; i < CDK_SAMPLES && n < cap; i++) {
         double a = -M_PI + i * h, b = a + h;
@@ -391,7 +356,7 @@ static int cdk_poly_minima(cdist_query *q, const cdk *k, double *ts, int cap, do
     if (nr < 0) return nr;
     int n = 0;
     double Fbest = INFINITY;
-    double Fv[16], f2v[16], flat = CD_CD_FLAT_REL * k->rho * scale;
+    double Fv[16], f2v[16], flat = CD_CD_FLAT_REL * k->g.rho * scale;
     for (int i = 0; i < nr && n < cap; i++) {
         double f1, f2;
         cdk_rim(k, roots[i], &f1, &f2);
@@ -402,7 +367,7 @@ static int cdk_poly_minima(cdist_query *q, const cdk *k, double *ts, int cap, do
          * while a root of F' (even one of a cluster, resolved to ~eps^(1/3)) has |F'| ~ 1e-15 --
          * unless F'' is huge (a disk much smaller than the circle: features of width R / rho), so
          * a seed whose Newton step is short is kept. */
-        if (fabs(f1) > 1e-6 * k->rho * scale && !(f2 > 0.0 && fabs(f1) < 1e-3 * f2)) continue;
+        if (fabs(f1) > 1e-6 * k->g.rho * scale && !(f2 > 0.0 && fabs(f1) < 1e-3 * f2)) continue;
         ts[n] = cdk_descend(k, roots[i], 1e-9);
         Fv[n] = cdk_rim(k, ts[n], NULL, &f2v[n]);
         Fbest = cdist__fmin(Fbest, Fv[n]);
@@ -416,12 +381,12 @@ static int cdk_poly_minima(cdist_query *q, const cdk *k, double *ts, int cap, do
 }
 
 /* Parallel planes (within rounding): closed forms (docs/disk.md). Returns 1 when handled. */
-static int cdk_parallel(const cdk *k, cdist__best *b)
+
+static int cdk_parallel(const cdk *k, cdk_sink *o)
 {
-    double sinang = cdist__norm2(k->Z[1], k->Z[2]);
-    if (!(sinang <= 8.0 * DBL_EPSILON * k->rho)) return 0;
-    double ex = k->X[0], ey = k->Y[0], e = cdist__norm2(ex, ey);
-    double rho = k->rho, R = k->R;
+    if (!cdk_parallel_1(&k->g)) return 0;
+    double ex = k->g.X[0], ey = k->g.Y[0], e = cdist__norm2(ex, ey);
+    double rho = k->g.rho, R = k->g.R;
     double tol = 8.0 * DBL_EPSILON * cdist__fmax(cdist__fmax(rho, R), e);
     /* Angle on the circle of the point whose projection is nearest the disk centre: direction
      * -E in the disk plane, expressed in the circle's basis. */
@@ -429,80 +394,73 @@ static int cdk_parallel(const cdk *k, cdist__best *b)
     double t0;
     if (e <= tol) {
         t0 = 0.0;
-        cdk_offer(k, t0, b);
-        if (rho > 0.0) b->equidistant = 1;
+        cdk_offer(k, t0, o);
+        if (rho > 0.0) o->b->equidistant = 1;
         return 1;
     }
     t0 = atan2(-v_dot(Ein, k->B), -v_dot(Ein, k->A));
-    cdk_offer(k, t0, b);
-    if (fabs(e - rho) < R && rho > 0.0 && R > 0.0) b->equidistant = 1; /* an arc lies over the face */
+    cdk_offer(k, t0, o);
+    if (fabs(e - rho) < R && rho > 0.0 && R > 0.0) o->b->equidistant = 1; /* an arc lies over the face */
     return 1;
 }
 
-/* Whether the whole circle is certainly further from the rim than the cap plus CD_CD_FAR_REL * L
- * (then no minimum of F can be the answer, nor tie with it): the rim distance is at least
- * sqrt((rho - R)^2 + z^2) with the axis distance rho within e +- m of the centre's (m >= the
- * circle's largest in-plane radius, the Frobenius norm of its projection) and the height z
- * within |Z0| -+ amp; the margin covers the rounding of these bounds. */
-CD_INLINE int cdk_rim_far(const cdk *k, double dcap, double scale)
+
+/* The candidates at the extremes and zeros of the height (cd_body.h). */
+CD_INLINE void cdk_height(const cdk *k, cdk_sink *o)
 {
-    if (!(dcap < INFINITY)) return 0;
-    double e = cdist__norm2(k->X[0], k->Y[0]);
-    double m = sqrt(k->X[1] * k->X[1] + k->X[2] * k->X[2] + k->Y[1] * k->Y[1] + k->Y[2] * k->Y[2]);
-    double lr = cdist__fmax(cdist__fmax(e - m - k->R, k->R - e - m), 0.0);
-    double lz = cdist__fmax(fabs(k->Z[0]) - cdist__norm2(k->Z[1], k->Z[2]), 0.0);
-    return sqrt(lr * lr + lz * lz) > dcap + CD_CD_FAR_REL * scale;
+    cdk_height_1(&k->g, &o->d2, o->scale, o->b ? o : NULL);
+}
+
+/* Whether the certified minimum of the rim distance, dq, can be the answer or tie with it: the
+ * engine's own cut-off in minima mode (cc_scan.c), the cap and a tie. */
+CD_INLINE int cdk_rim_below_cap(double dq, double dcap, double scale)
+{
+    return dq <= dcap * (1 + 8 * DBL_EPSILON) + CD_TIE_ULPS * DBL_EPSILON * scale;
+}
+
+/* The minima of F at ts[0 .. n) (their cos and sin into tc, tsn) and the neighbours of the flat
+ * ones near the best: a neighbour of a cluster below the certification width (multiple roots) is
+ * looked for by the dyadic scan. Returns the new count (the scan's minima after the n). */
+static int cdk_flat_scan(const cdk *k, double *ts, double *tc, double *tsn, int n, double scale)
+{
+    double Fv[CDK_CAP], f2v[CDK_CAP], Fbest = INFINITY, flat = CD_CD_FLAT_REL * k->g.rho * scale;
+    for (int i = 0; i < n; i++) {
+        sincos(ts[i], &tsn[i], &tc[i]);
+        Fv[i] = cdk_rim_cs(k, tc[i], tsn[i], NULL, &f2v[i]);
+        Fbest = cdist__fmin(Fbest, Fv[i]);
+    }
+    int n0 = n;
+    for (int i = 0; i < n0 && n < CDK_CAP; i++)
+        if (Fv[i] <= Fbest + 0.01 * scale * scale && fabs(f2v[i]) <= flat)
+            n += cdk_scan(k, ts[i], ts[i] - 0.15, ts[i] + 0.15, ts + n, CDK_CAP - n);
+    return n;
+}
+
+/* Offer the minima of F at ts[0 .. n), the first nc at their cos and sin tc, tsn. */
+CD_INLINE void cdk_offer_minima(const cdk *k, const double *ts, const double *tc, const double *tsn, int n, int nc,
+                                cdk_sink *o)
+{
+    for (int i = 0; i < n; i++) {
+        if (i < nc) cdk_offer_cs(k, ts[i], tc[i], tsn[i], o);
+        else cdk_offer(k, ts[i], o);
+    }
 }
 
 CD_INLINE cdist_status cdk_solve(cdist_query *q, cdist_method method, const cdk *k, cdist__best *b, double dcap0, int rim,
                                  cdist_method *used, int *rim_certified)
 {
+    cdk_sink o = {k, b, INFINITY, b->scale};
     *used = method;
     *rim_certified = 1; /* the parallel closed forms */
-    if (cdk_parallel(k, b)) return CDIST_OK;
+    if (cdk_parallel(k, &o)) return CDIST_OK;
     *rim_certified = 0;
-    /* Zeros and extremes of the height z(t) = Z0 + amp cos(t - phi). */
-    double amp = cdist__norm2(k->Z[1], k->Z[2]), phi = atan2(k->Z[2], k->Z[1]);
-    /* The extremes' cos and sin are (Z1, Z2) / amp and their negatives, as accurate as sincos of
-     * the rounded phi and without it (the angles reported are still phi, phi + pi). */
-    double ce = k->Z[1] / amp, se = k->Z[2] / amp;
-    cdk_offer_cs(k, phi, ce, se, b);
-    cdk_offer_cs(k, phi + M_PI, -ce, -se, b);
-    double cz = -k->Z[0] / amp;
-    if (fabs(cz) <= 1.0) {
-        double w = acos(cz);
-        for (int s = -1; s <= 1; s += 2) {
-            double t = phi + s * w;
-            /* Newton on z itself (two steps of at most CD_CD_Z_STEP) to land on the plane. A step
-             * below half an ulp of t leaves t as it was: its cos and sin are reused. */
-            double tl = NAN, sn = 0.0, cs = 0.0; /* the angle of the last sincos */
-            int skip = 0;
-            for (int it = 0; it < 2; it++) {
-                if (!(t == tl)) {
-                    sincos(t, &sn, &cs);
-                    tl = t;
-                }
-                double z = trig1(k->Z, cs, sn), zp = trig1d(k->Z, cs, sn);
-                if (it == 0 && cdk_crossing_far(k, cs, sn, z, b)) {
-                    skip = 1;
-                    break;
-                }
-                if (zp == 0.0 || z == 0.0) break;
-                double st = z / zp;
-                if (fabs(st) > CD_CD_Z_STEP) break;
-                t -= st;
-            }
-            if (skip) continue;
-            if (t == tl) cdk_offer_cs(k, t, cs, sn, b);
-            else cdk_offer(k, t, b);
-        }
-    }
+    cdk_height(k, &o);
     /* Critical points of the rim distance (not asked for: the caller has them, see
      * cdist__circle_disk_core_ex). */
     if (!rim) return CDIST_OK;
     double ts[CDK_CAP], tc[CDK_CAP], tsn[CDK_CAP]; /* angles, and cos, sin of the first nc of them */
     int nc = 0;
-    double scale = cdist__fmax(cdist__fmax(k->rho, k->R), sqrt(k->X[0] * k->X[0] + k->Y[0] * k->Y[0] + k->Z[0] * k->Z[0]));
+    double scale = cdk_scale_1(&k->g);
     int n = -2;
     if (method == CDIST_METHOD_POLYNOMIAL) {
         n = cdk_poly_minima(q, k, ts, CDK_CAP, scale);
@@ -515,22 +473,20 @@ CD_INLINE cdist_status cdk_solve(cdist_query *q, cdist_method method, const cdk 
         *used = CDIST_METHOD_ROBUST;
         /* Only the minima of F matter (the lemma), and only those below the best candidate so
          * far (a z candidate, whose distance is the true one): the engine prunes the rest. */
-        double dcap = b->n > 0 ? cdist__fmin(dcap0, sqrt(b->c[0].d2)) : dcap0, tq, cq, sq, dq;
-        if (cdk_rim_far(k, dcap, scale)) {
+        double dcap = o.d2 < INFINITY ? cdist__fmin(dcap0, sqrt(o.d2)) : dcap0, tq, cq, sq, sc;
+        cdist__cc_frame f;
+        if (cdk_rim_far_1(&k->g, dcap, scale)) {
             n = 0;
             *rim_certified = 1;
-        } else if (cdist__cc_quick_minimum(k->c, k->d, &tq, &cq, &sq, &dq)) {
+        } else if (cdist__cc_quick_frame(k->c, k->d, &f, &sc) && cdist__cc_quick(&f, &tq, &cq, &sq)) {
             /* F's global minimum, certified unique: the one minimum of F that can hold G's (a
              * minimum of G on the rim side is a global minimum of F, by the lemma, since
              * G <= F); the others lie above it by the certificate's margin */
             *rim_certified = 1;
             n = 0;
-            /* the engine's own cut-off in minima mode (cc_scan.c): the cap and a tie */
-            if (dq <= dcap * (1 + 8 * DBL_EPSILON) + CD_TIE_ULPS * DBL_EPSILON * scale) {
-                ts[0] = tq;
-                tc[0] = cq;
-                tsn[0] = sq;
-                n = nc = 1;
+            if (cdk_rim_below_cap(cdist__cc_quick_distance(&f, sc, cq, sq), dcap, scale)) {
+                ts[0] = cdist__cc_param(tq);
+                n = 1;
             }
         } else {
             int sampled;
@@ -550,26 +506,31 @@ CD_INLINE cdist_status cdk_solve(cdist_query *q, cdist_method method, const cdk 
             *rim_certified = 0; /* the sampling fallback */
             n = cdk_robust_critical(k, ts, CDK_CAP, scale);
         } else {
-            /* Flat minima near the best: a neighbour of a cluster below the certification width
-             * (multiple roots) is looked for by the dyadic scan. */
-            double Fv[CDK_CAP], f2v[CDK_CAP], Fbest = INFINITY, flat = CD_CD_FLAT_REL * k->rho * scale;
-            for (int i = 0; i < n; i++) {
-                sincos(ts[i], &tsn[i], &tc[i]);
-                Fv[i] = cdk_rim_cs(k, tc[i], tsn[i], NULL, &f2v[i]);
-                Fbest = cdist__fmin(Fbest, Fv[i]);
-            }
             nc = n;
-            int n0 = n;
-            for (int i = 0; i < n0 && n < CDK_CAP; i++)
-                if (Fv[i] <= Fbest + 0.01 * scale * scale && fabs(f2v[i]) <= flat)
-                    n += cdk_scan(k, ts[i], ts[i] - 0.15, ts[i] + 0.15, ts + n, CDK_CAP - n);
+            n = cdk_flat_scan(k, ts, tc, tsn, n, scale);
         }
     }
-    for (int i = 0; i < n; i++) {
-        if (i < nc) cdk_offer_cs(k, ts[i], tc[i], tsn[i], b);
-        else cdk_offer(k, ts[i], b);
-    }
+    cdk_offer_minima(k, ts, tc, tsn, n, nc, &o);
     return CDIST_OK;
+}
+
+void cdist__cd_stage_ring(cdist__cd_stage *st)
+{
+    cdk *k = &st->k;
+    k->c = &st->c;
+    k->d = &st->d;
+    cdk_ring(k);
+}
+
+CD_FMA_CLONES void cdist__cd_stage_finish(cdist__cd_stage *st, double t, double d2)
+{
+    if (!cdk_rim_below_cap(cdist__cc_quick_unscale(d2, st->sc), st->dcap, st->scale)) return;
+    double ts[CDK_CAP], tc[CDK_CAP], tsn[CDK_CAP];
+    ts[0] = cdist__cc_param(t);
+    int n = cdk_flat_scan(&st->k, ts, tc, tsn, 1, st->scale);
+    cdk_sink o = {&st->k, NULL, st->d2, st->bscale};
+    cdk_offer_minima(&st->k, ts, tc, tsn, n, 1, &o);
+    st->d2 = o.d2;
 }
 
 /* Circle c (centre at the origin) to disk d (centre relative to c's). An FMA clone: the fma()

@@ -139,10 +139,15 @@ static inline int cdist__cc_quick_worth(const cdist__cc_frame *f)
 }
 
 /* The same search for circles c0 (parameterised) and c1 as given (no choice of the larger, any
- * centres): 1, the angle *t on c0 (in (-pi, pi]) of the certified unique closest point to c1,
- * its cosine *c and sine *s and the distance *d there; 0 when not certified (or a radius is 0,
- * or the planes are parallel). For circle-disk, whose rim needs only F's global minimum. */
-int cdist__cc_quick_minimum(const cdist__circle *c0, const cdist__circle *c1, double *t, double *c, double *s, double *d);
+ * centres), for circle-disk, whose rim needs only F's global minimum: cdist__cc_quick_frame
+ * sets the frame *f of the pair scaled by *sc and returns whether the search is to run on it
+ * (not when a radius is 0, the planes are parallel or the search cannot certify,
+ * cdist__cc_quick_worth); cdist__cc_quick_distance is the distance at the point (c, s) =
+ * (cos t, sin t) of c0 it finds, in c0's units. */
+int cdist__cc_quick_frame(const cdist__circle *c0, const cdist__circle *c1, cdist__cc_frame *f, double *sc);
+double cdist__cc_quick_distance(const cdist__cc_frame *f, double sc, double c, double s);
+/* The distance of cdist__cc_quick_distance from the squared distance d2 in the frame's units. */
+static inline double cdist__cc_quick_unscale(double d2, double sc) { return sqrt(d2) / sc; }
 /* Walks [-pi, pi) and hands every critical bracket of F to the sink (docs/circles.md). Fmax:
  * largest F seen at the partition points. */
 int cdist__cc_scan(const cdist__cc_frame *f, cdist__cc_sink *k, double *Fmax);
@@ -184,6 +189,46 @@ cdist_status cdist__cc_robust(cdist_query *q, const cdist__circle *c0, const cdi
  * sampled region, a bound or a closed form (not the sampling fallback). */
 cdist_status cdist__circle_disk_core_ex(cdist_query *q, cdist_method method, const cdist__circle *c, const cdist__circle *d,
                                         double dcap, int rim, cdist__best *b, cdist_method *used, int *rim_certified);
+
+/* The circle P(t) = rho (cos t A + sin t B) (centre at the origin) in the disk's frame:
+ * x(t) = X[0] + X[1] cos t + X[2] sin t, the same for y, z, over lanes of type V with masks M
+ * (cd_body.h); E0 = X0^2 + Y0^2 - R^2 to the last bit (see its rim excess), R the disk's radius,
+ * rho the circle's, small: rho <= R (the rim excess expands around the circle's centre). */
+#define CDK_LANES_FIELDS(V, M)                                                                                 \
+    V X[3], Y[3], Z[3];                                                                                        \
+    V E0, R, rho;                                                                                              \
+    M small;
+typedef struct cdk_lanes_1 {
+    CDK_LANES_FIELDS(double, int)
+} cdk_lanes_1;
+
+/* The circle and disk of a circle-disk query (circle_disk.c): g, and S(t) = Delta . Delta' (the
+ * polynomial method's), the ring of the rim distance (w = (x, y, 0), h = z), the bases. */
+typedef struct cdist__cdk {
+    cdk_lanes_1 g;
+    double S[3];
+    cdist__ring rg;
+    vec3 A, B, D, n, u, v;
+    const cdist__circle *c, *d; /* the circle (centre at the origin) and the disk */
+} cdist__cdk;
+
+/* The distance of cdist__circle_disk_core_ex (ROBUST method, cap INFINITY, a fresh collector
+ * of scale bscale) in stages, for the batch kernel (src/batch/cd_kernel.c), which frames the
+ * circle c and the disk d, computes the candidates over the face (cd_body.h: k.g, their
+ * smallest squared distance d2, the cap dcap = sqrt(d2) and the scale), the bound that spares
+ * the rim and the rim search's frame f (cdist__cc_quick_frame's: its ring, and the scaling sc)
+ * of many entries in lanes: cdist__cd_stage_ring sets k's ring (and its circles' pointers) from
+ * k.g; with the angle t the search (cdist__cc_quick) finds and cdist__cc_point_d2 there,
+ * cdist__cd_stage_finish completes d2 as the single query does (the cut-off, the flat scan, the
+ * offers). */
+typedef struct cdist__cd_stage {
+    cdist__circle c, d;
+    cdist__cdk k;
+    double d2, bscale, scale, dcap, sc;
+    cdist__cc_frame f;
+} cdist__cd_stage;
+void cdist__cd_stage_ring(cdist__cd_stage *st);
+void cdist__cd_stage_finish(cdist__cd_stage *st, double t, double d2);
 #define CD_DISK_METHODS (CD_HAS(CDIST_METHOD_POLYNOMIAL) | CD_HAS(CDIST_METHOD_ROBUST))
 #define CD_DISK_AUTO CDIST_METHOD_ROBUST
 

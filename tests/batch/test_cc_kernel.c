@@ -26,6 +26,7 @@
 #include "check.h"
 #include "test_rand.h"
 #include "query_io.h"
+#include "circle_pairs.h"
 
 enum { MAXN = 2900 };
 static cdist_circle A[MAXN], B[MAXN];
@@ -36,16 +37,7 @@ static size_t n_file;
 /* One of the documented bad inputs, in either circle. */
 static void corrupt(size_t i)
 {
-    cdist_circle *c = (next_rand() & 1) ? &A[i] : &B[i];
-    switch (next_rand() % 7) {
-    case 0: c->center.y = NAN; break;
-    case 1: c->normal.z = INFINITY; break;
-    case 2: c->normal = (cdist_vec3){0, 0, 0}; break;
-    case 3: c->normal.x *= 1.01; break;
-    case 4: c->radius = -1.0; break;
-    case 5: c->center.x = 2e150; break;
-    default: c->radius = NAN; break;
-    }
+    corrupt_circle_pair(&A[i], &B[i]);
     REF[i] = NAN;
 }
 

@@ -20,6 +20,7 @@
 #include "check.h"
 #include "test_rand.h"
 #include "query_io.h"
+#include "circle_pairs.h"
 
 typedef int (*quick_fn)(const cdist__cc_frame *f, double *t, double *c, double *s);
 
@@ -44,19 +45,9 @@ static cdist_vec3 ortho(cdist_vec3 n)
 
 static size_t load(const char *dir, const char *set, size_t n)
 {
-    char path[1024], buf[2048], err[256];
+    char path[1024];
     snprintf(path, sizeof path, "%s/cc_%s.txt", dir, set);
-    FILE *f = fopen(path, "r");
-    CHECK(f != NULL, "cannot read %s", path);
-    while (f && n < MAXN && fgets(buf, sizeof buf, f)) {
-        cdq_line ql;
-        if (cdq_parse(buf, &ql, err, sizeof err) <= 0) continue;
-        memcpy(&A[n], ql.v, sizeof A[n]);
-        memcpy(&B[n], ql.v + 7, sizeof B[n]);
-        n++;
-    }
-    if (f) fclose(f);
-    return n;
+    return load_circle_pairs(path, A, B, n, MAXN);
 }
 
 /* Constructed pairs (see the header comment). */

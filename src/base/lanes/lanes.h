@@ -27,6 +27,9 @@
 /* The lane instruction set this CPU runs, found once (src/base/lanes/lanes_isa.c). */
 enum { CD_ISA_SCALAR, CD_ISA_AVX2, CD_ISA_AVX512 };
 int cdist__lanes_isa(void);
+/* The lane width a variant of the given width runs: lanes (1, 4 or 8, the caller's check), or
+ * for 0 this CPU's widest (8 with AVX-512, 4 with AVX2 + FMA, else 1). */
+int cdist__lanes_width(int lanes);
 
 /* The AVX-512 and AVX2 variants of a kernel for cdist__kernel_choose(), NULL where they are not
  * built. */

@@ -18,3 +18,10 @@ int cdist__lanes_isa(void)
     __atomic_store_n(&isa, v, __ATOMIC_RELAXED);
     return v;
 }
+
+int cdist__lanes_width(int lanes)
+{
+    if (lanes) return lanes;
+    int isa = cdist__lanes_isa();
+    return isa == CD_ISA_AVX512 ? 8 : isa == CD_ISA_AVX2 ? 4 : 1;
+}

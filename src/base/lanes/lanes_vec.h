@@ -3,6 +3,16 @@
  * (src/base/vec.h, numeric.h) lane by lane with the same roundings. Included after lanes_def.h
  * by each kernel body (line_kernel_body.h, cc_kernel_body.h); no include guard. */
 
+/* each width's instance once per translation unit (a unit may hold several bodies of a width) */
+#if (W == 1 && !defined(CD_LANES_VEC_1)) || (W == 4 && !defined(CD_LANES_VEC_4)) || (W == 8 && !defined(CD_LANES_VEC_8))
+#if W == 1
+#define CD_LANES_VEC_1
+#elif W == 4
+#define CD_LANES_VEC_4
+#else
+#define CD_LANES_VEC_8
+#endif
+
 /* |a| <= CD_MAX_ABS for each component (false for NaN and infinities) */
 CD_INLINE M KN(in_range)(V x, V y, V z)
 {
@@ -14,6 +24,12 @@ CD_INLINE V KN(max3)(V x, V y, V z) { return vmax(vmax(vabs(x), vabs(y)), vabs(z
 
 /* fma(a.x, b.x, fma(a.y, b.y, a.z * b.z)) as v_dot */
 CD_INLINE V KN(dot)(V ax, V ay, V az, V bx, V by, V bz) { return vfma(ax, bx, vfma(ay, by, vmul(az, bz))); }
+
+/* a.x b.x + a.y b.y + a.z b.z as cdist__ring_dot, left to right */
+CD_INLINE V KN(ring_dot)(V ax, V ay, V az, V bx, V by, V bz)
+{
+    return vadd(vadd(vmul(ax, bx), vmul(ay, by)), vmul(az, bz));
+}
 
 /* v_cross: (a.y b.z - a.z b.y, a.z b.x - a.x b.z, a.x b.y - a.y b.x) */
 CD_INLINE void KN(cross)(V ax, V ay, V az, V bx, V by, V bz, V *x, V *y, V *z)
@@ -33,3 +49,5 @@ CD_INLINE V KN(pow2_of)(V x)
     V p = vexpbits(x);
     return vmax(vmin(p, vset(0x1p1000)), vset(0x1p-1000));
 }
+
+#endif
