@@ -45,7 +45,8 @@ client=Client("tcp://host:8786"))`; when this file is imported as a module rathe
 the workers need it too (`client.upload_file("dask_chainmail.py")`). Choose `per_task` so
 that a task takes 0.1-1 s (about 1.5 us of CPU per ring here) and there are several tasks per
 worker thread. The driver holds the array and its partitions (about 140 bytes per ring) and
-the answers twice while merging them (2 x 136 bytes per pair).
+the answers twice while merging them (2 x 136 bytes per pair, plus 24 bytes of keys and
+places).
 
 What made the old example 2x slower under Dask than in one process, and what this one does:
 - Task size: 32 fixed partitions made ~13 ms tasks at 10^5 rings, so scheduling dominated.
@@ -55,8 +56,10 @@ What made the old example 2x slower under Dask than in one process, and what thi
   Now the rings are cut once by the driver (CPU 0.12-0.14 s for 10^6 rings) and each task is
   one scene query; the partitions' queries together take less CPU than the one big scene
   (1.43-1.45 s against 1.65-1.90 s for 10^6 rings, same run: smaller trees stay in cache).
-  Merging the answers costs the driver 0.1-0.5 s (concatenation, sort by (i, j), gather of
-  ~95 MB; most of the spread is first-touch page faults).
+  Merging the answers costs the driver 0.12-0.22 s at 10^6 rings: the keys (i, j) alone are
+  sorted (8 bytes a pair) and each 136-byte record is copied once, straight to its place (a
+  concatenation followed by a gather in sorted order copied each record twice and took
+  0.3-0.45 s, most of it first-touch page faults).
 - The workers' glibc settings: distributed's nanny sets MALLOC_TRIM_THRESHOLD_=65536 in each
   worker process (`distributed.nanny.pre-spawn-environ`); setting any malloc threshold turns off
   glibc's dynamic mmap threshold, so every array above 128 KiB is a fresh mmap whose pages are
@@ -70,46 +73,30 @@ What made the old example 2x slower under Dask than in one process, and what thi
   still run in parallel: the scene query releases the GIL and takes
   it back only to copy each block of answers (about 1000 blocks per task of 125 000 rings).
 
-Measured on the development machine, today: 2 cores shared with four other jobs (the 1-minute
-load average was 7-12 throughout, so a second worker found no idle core: on this machine even
-the library's own threads gave nothing then, 2.49-3.77 s with one thread against 2.67-3.69 s
-with two); release build; wall seconds, minimum of the repeats, single process and Dask
-alternating in the same run; chain-mail sheet, delta 0.1 R (0.70 pairs per ring); "one process"
-is one Scene with one thread; the Dask times include cutting, scattering and merging, not the
-cluster start; "N workers": N worker processes of one thread each (`--processes`), "in-process":
-workers as threads of this process (the default since these runs):
+Measured on the development machine, today (2026-11-27): 2 cores, nothing else running (a
+fuzzer that shares the machine was paused for these runs; the 1-minute load average was
+0.8-1.2 before and after each row); release build; wall seconds, minimum of the repeats (5 at
+10^6, 2 at 10^7), one process and Dask alternating in the same run; chain-mail sheet, delta 0.1 R
+(0.70 pairs per ring); "one process" is one Scene with one thread; the Dask times include
+cutting, scattering and merging, not the cluster start; "in-process": workers as threads of
+this process (the default), "processes": `--processes`, one thread each:
 
-    rings  cluster                         one process  Dask     Dask / one  load (before -> after)
-    10^6   2 workers                       1.79 s       3.15 s   1.76        8.0 -> 6.8
-    10^6   1 worker                        2.93 s       6.01 s   2.05        6.8 -> 8.9
-    10^6   2 workers, --dask-malloc        1.68 s       3.77 s   2.24        8.9 -> 10.7
-    10^6   1 worker of 2 threads, in-process  1.99 s    2.21 s   1.11        10.7 -> 9.4
-    10^6   2 workers, in-process           5.46 s       6.52 s   1.19        7.0 -> 11.0
-    10^6   1 worker of 2 threads, in-process  4.08 s    5.84 s   1.43        11.0 -> 11.5
-    10^6   2 workers                       3.16 s       6.93 s   2.19        11.5 -> 11.8
-    10^6   2 workers                       4.15 s       5.81 s   1.40        9.3 -> 10.6
-    10^6   1 worker                        4.90 s       4.26 s   0.87        10.6 -> 11.3
-    10^7   2 workers                       21.5 s       34.2 s   1.59        11.3 -> 7.2
-    10^7   1 worker                        57.2 s       93.9 s   1.64        7.2 -> 10.6
-    10^7   2 workers, in-process           50.05 s      50.34 s  1.01        7.1 -> 7.2
+    rings  cluster                    one process  Dask     Dask / one  Dask phases (cut, scatter, tasks, merge)
+    10^6   2 workers, in-process      1.24 s       0.95 s   0.77        0.14  0.04  0.65  0.12
+    10^6   1 worker, in-process       1.22 s       1.46 s   1.20        0.14  0.04  1.12  0.15
+    10^6   2 workers, processes       1.18 s       1.29 s   1.09        0.13  0.11  0.83  0.22
+    10^6   1 worker, processes        1.20 s       1.63 s   1.36        0.13  0.10  1.27  0.12
+    10^7   2 workers, in-process      15.11 s      12.10 s  0.80        1.50  0.39  6.60  3.60
+    10^7   1 worker, in-process       14.81 s      16.19 s  1.09        1.41  0.39  11.24 3.15
 
-(minimum of 5 alternating runs per row at 10^6, except the last two 10^6 rows: 3; 2 at 10^7 with
-worker processes, 1 in-process; the first of the 1-worker pair at 10^7 overlapped with another
-run of ours.) At 10^7, 84 tasks: with 2 worker processes cut 2.45 s, scatter 6.1 s, tasks
-21.0 s, merge 4.6 s, the driver peaking at 7.4 GB resident; in-process cut 3.9 s, scatter
-0.9 s, tasks 33.4 s, merge 12.1 s, 5.8 GB. Every run gave the one-process answer bit for bit
-(702 270 pairs at 10^6, 7 034 993 at 10^7).
-
-So on this machine, as loaded today, Dask was at best as fast as one process (1.01x at 10^7
-and 1.11x at 10^6 in-process, 0.87x in one 10^6 run with one worker process) and mostly slower
-(up to 2.2x with worker processes): with no idle core a second worker adds no CPU, and what
-Dask adds (cutting, scattering, merging: about 0.5 s of driver CPU at 10^6, and with worker
-processes the pickling) is not paid back. The done-criterion "no slower than one process at
-10^6" is therefore not shown here. What should scale: the tasks are independent and together
-cheaper than the one scene, so on idle cores the task phase divides by the number of workers
-and the driver's share is what remains; that was not measurable on this machine today.
-The MALLOC_TRIM_THRESHOLD_ entry matters only for worker processes; at this load its effect
-(1.68/3.77 s with it against 1.79/3.15 s without, one pair of runs each) is inside the noise.
+Every run gave the one-process answer bit for bit (702 270 pairs at 10^6, 7 034 993 at 10^7).
+With both cores to work on, Dask is faster than one process (0.77x at 10^6, 0.80x at 10^7):
+the tasks run in parallel and together cost less CPU than the one big scene, and the driver's
+share (cutting, scattering, merging: about 0.3 s at 10^6) is paid back. With one worker it
+is slower by that share (1.1-1.4x), and worker processes add the pickling of the partitions
+and answers. The merge is the driver's largest part at 10^7 (3-4 s for 7 x 10^6 pairs: the
+key sort and the scattered copy of 0.96 GB). The MALLOC_TRIM_THRESHOLD_ entry matters only
+for worker processes; at the load of an earlier day its effect was inside the noise.
 """
 import argparse
 import itertools
@@ -241,12 +228,22 @@ def screen_partition(part, delta, threads=1):
 
 
 def combine(raws):
-    """Task answers as one ScenePairs sorted by (i, j)."""
-    raw = np.concatenate(raws) if raws else np.empty(0, SCENE_PAIR_DTYPE)
-    # each task's pairs are sorted already: a stable sort of the runs is a merge
-    key = raw["i"] * np.uint64(max(1, int(raw["j"].max(initial=0)) + 1)) + raw["j"]
-    raw = raw[np.argsort(key, kind="stable")]
-    return cd.ScenePairs(raw)
+    """Task answers as one ScenePairs sorted by (i, j). No pair is in two tasks, so the keys
+    (i, j) are distinct: their order (8 bytes a pair) gives each record its place, and each
+    record is copied once, straight to it."""
+    raws = [r for r in raws if len(r)]
+    out = np.empty(sum(len(r) for r in raws), SCENE_PAIR_DTYPE)
+    if not raws:
+        return cd.ScenePairs(out)
+    width = np.uint64(max(int(r["j"].max()) for r in raws) + 1)
+    keys = np.concatenate([r["i"] * width + r["j"] for r in raws])
+    place = np.empty(len(keys), np.int64)
+    place[np.argsort(keys)] = np.arange(len(keys))
+    start = 0
+    for r in raws:
+        out[place[start:start + len(r)]] = r
+        start += len(r)
+    return cd.ScenePairs(out)
 
 
 def run(rings, delta, client=None, per_task=125000, threads=1, timings=None):
