@@ -579,9 +579,12 @@ cdist_status cdist__circle_disk_core_ex(cdist_query *q, cdist_method method, con
     return CDIST_OK;
 }
 
-/* The scaled problem (c at the origin): the core, then r written in full. */
-static cdist_status circle_disk_query(cdist_query *q, cdist__circle a, cdist__circle e, cdist_result *r, cdist_method *used)
+/* The scaled problem (c at the origin): the core, then r written in full (the objects' order
+ * is the caller's: swap unused). */
+static cdist_status circle_disk_query(cdist_query *q, cdist__circle a, cdist__circle e, int swap, cdist_result *r,
+                                      cdist_method *used)
 {
+    (void)swap;
     vec3 offset;
     cdist__best best;
     int ex = cdist__circles_frame(&a, &e, &offset, &best);
@@ -594,11 +597,5 @@ static cdist_status circle_disk_query(cdist_query *q, cdist__circle a, cdist__ci
 
 cdist_status cdist_circle_disk(cdist_query *q, const cdist_circle *c, const cdist_circle *d, cdist_result *r)
 {
-    cdist_status st = cdist__enter(q, r);
-    if (st) return st;
-    cdist__circle a, e;
-    cdist_method used = cdist__family_method(q, CD_FAM_CIRCLE_DISK);
-    if (!(st = cdist__check_circle(q, c, "circle", &a)) && !(st = cdist__check_circle(q, d, "disk", &e)))
-        st = circle_disk_query(q, a, e, r, &used);
-    return cdist__leave(q, r, st, used);
+    return cdist__circles_entry(q, c, "circle", d, "disk", CD_FAM_CIRCLE_DISK, circle_disk_query, r);
 }

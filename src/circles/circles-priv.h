@@ -138,6 +138,14 @@ static inline int cdist__cc_quick_worth(const cdist__cc_frame *f)
     return e2 > axis * axis && f->nga > axis;
 }
 
+/* The public entry of circle-disk and disk-disk: the handle taken, both objects validated
+ * (named what0, what1), then query(q, a, b, swap, r, &used) with used the family's method and
+ * swap 1 when c1 comes before c0 in lexicographic order (cdist__circle_less). */
+typedef cdist_status (*cdist__circles_query_fn)(cdist_query *q, cdist__circle a, cdist__circle b, int swap,
+                                                cdist_result *r, cdist_method *used);
+cdist_status cdist__circles_entry(cdist_query *q, const cdist_circle *c0, const char *what0, const cdist_circle *c1,
+                                  const char *what1, int family, cdist__circles_query_fn query, cdist_result *r);
+
 /* The same search for circles c0 (parameterised) and c1 as given (no choice of the larger, any
  * centres), for circle-disk, whose rim needs only F's global minimum: cdist__cc_quick_frame
  * sets the frame *f of the pair scaled by *sc and returns whether the search is to run on it

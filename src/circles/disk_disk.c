@@ -65,13 +65,19 @@ static cdist_status dd_query(cdist_query *q, cdist__circle a, cdist__circle e, i
     return CDIST_OK;
 }
 
-cdist_status cdist_disk_disk(cdist_query *q, const cdist_circle *d0, const cdist_circle *d1, cdist_result *r)
+cdist_status cdist__circles_entry(cdist_query *q, const cdist_circle *c0, const char *what0, const cdist_circle *c1,
+                                  const char *what1, int family, cdist__circles_query_fn query, cdist_result *r)
 {
     cdist_status st = cdist__enter(q, r);
     if (st) return st;
     cdist__circle a, e;
-    cdist_method used = cdist__family_method(q, CD_FAM_DISK_DISK);
-    if (!(st = cdist__check_circle(q, d0, "first disk", &a)) && !(st = cdist__check_circle(q, d1, "second disk", &e)))
-        st = dd_query(q, a, e, cdist__circle_less(d1, d0), r, &used);
+    cdist_method used = cdist__family_method(q, family);
+    if (!(st = cdist__check_circle(q, c0, what0, &a)) && !(st = cdist__check_circle(q, c1, what1, &e)))
+        st = query(q, a, e, cdist__circle_less(c1, c0), r, &used);
     return cdist__leave(q, r, st, used);
+}
+
+cdist_status cdist_disk_disk(cdist_query *q, const cdist_circle *d0, const cdist_circle *d1, cdist_result *r)
+{
+    return cdist__circles_entry(q, d0, "first disk", d1, "second disk", CD_FAM_DISK_DISK, dd_query, r);
 }
