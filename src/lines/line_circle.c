@@ -443,14 +443,41 @@ cdist_status cdist_ray_circle(cdist_query *q, const cdist_ray *l, const cdist_ci
 }
 
 /* FMA clone, as linear_public (the core is inlined into it). */
-CD_FMA_CLONES static cdist_status segment_core(cdist_query *q, vec3 p0, vec3 Ds, vec3 M, double len, vec3 p1,
-                                              const cdist__circle *c, cdist_result *r, cdist_method *used)
+CD_FMA_CLONES static cdist_status segment_public(cdist_query *q, const cdist_segment *s, const cdist_circle *c,
+                                                cdist_result *r)
 {
-    (void)p1;
-    return run(q, p0, Ds, M, len, 0.0, 1.0, c, r, used);
+    cdist_status st = cdist__enter(q, r);
+    if (st) return st;
+    cdist__circle cc;
+    cdist_method used = cdist__family_method(q, CD_FAM_SEGMENT_CIRCLE);
+    if ((st = cdist__check_segment(q, s)) || (st = cdist__check_circle(q, c, "circle", &cc)))
+        return cdist__leave(q, r, st, used);
+    vec3 D = v_sub(s->p1, s->p0);
+    if (D.x == 0.0 && D.y == 0.0 && D.z == 0.0) {
+        /* p0 == p1: the segment is a point; s = 0. */
+        cdist__point_result(s->p0, &cc, 0, r);
+        r->pairs[0].param[0] = 0.0;
+        return cdist__leave(q, r, CDIST_OK, used);
+    }
+    /* scaled before D is normalised, so that 2^k times the input gives exactly 2^k times the
+     * answer (the normalisation of a tiny D takes another path) */
+    int e = cdist__lines_scale_exponent(s->p0, &s->p1, &cc);
+    double down = cdist__pow2(-e);
+    cdist__circle_scale(&cc, down);
+    vec3 Ds = v_scale(down, D), M;
+    double len;
+    if (!(st = cdist__check_direction(q, &Ds, "segment direction p1 - p0", 0, &M, &len)) &&
+        !(st = run(q, v_scale(down, s->p0), Ds, M, len, 0.0, 1.0, &cc, r, &used))) {
+        cdist__result_unscale(r, cdist__pow2(e));
+        for (int i = 0; i < r->num_pairs; i++) { /* exactly the caller's end points */
+            if (r->pairs[i].param[0] == 0.0) r->pairs[i].point[0] = s->p0;
+            if (r->pairs[i].param[0] == 1.0) r->pairs[i].point[0] = s->p1;
+        }
+    }
+    return cdist__leave(q, r, st, used);
 }
 
 cdist_status cdist_segment_circle(cdist_query *q, const cdist_segment *s, const cdist_circle *c, cdist_result *r)
 {
-    return cdist__segment_entry(q, s, c, 0, segment_core, r);
+    return segment_public(q, s, c, r);
 }

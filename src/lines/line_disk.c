@@ -100,13 +100,18 @@ CD_FMA_CLONES static cdist_status linear_disk(cdist_query *q, cdist_method metho
                 cdist__best_offer_flag(loc, k->equidistant, k->d2, k->p[0], k->p[1], k->param[0], k->param[1]);
             }
         }
-        /* the parts of the range before and after [lo, hi] */
-        const double from[2] = {tmin, hi}, to[2] = {lo, tmax};
-        for (int part = 0; part < 2 && !both; part++) {
-            if (!(from[part] < to[part])) continue;
+        if (!both && tmin < lo) {
             cdist__best t;
             cdist__best_init(&t, b->scale);
-            if ((st = cdist__linear_circle_ex(q, method, B, M, from[part], to[part], d, &t, &u1))) return st;
+            if ((st = cdist__linear_circle_ex(q, method, B, M, tmin, lo, d, &t, &u1))) return st;
+            if (u1 == CDIST_METHOD_ROBUST) *used = u1;
+            double m2 = cdist__best_merge(loc, &t, v3(0, 0, 0), 0);
+            if (cdist__best_is_equidistant(&t) && m2 < eq_d2) eq_d2 = m2;
+        }
+        if (!both && hi < tmax) {
+            cdist__best t;
+            cdist__best_init(&t, b->scale);
+            if ((st = cdist__linear_circle_ex(q, method, B, M, hi, tmax, d, &t, &u1))) return st;
             if (u1 == CDIST_METHOD_ROBUST) *used = u1;
             double m2 = cdist__best_merge(loc, &t, v3(0, 0, 0), 0);
             if (cdist__best_is_equidistant(&t) && m2 < eq_d2) eq_d2 = m2;
@@ -224,47 +229,33 @@ cdist_status cdist_ray_disk(cdist_query *q, const cdist_ray *l, const cdist_circ
     return line_ray_disk(q, l, l ? &l->origin : NULL, l ? &l->direction : NULL, 1, d, r);
 }
 
-CD_FMA_CLONES static cdist_status segment_disk_core(cdist_query *q, vec3 p0, vec3 Ds, vec3 M, double len, vec3 p1,
-                                                   const cdist__circle *d, cdist_result *r, cdist_method *used)
-{
-    return linear_disk_query(q, p0, Ds, len, M, 0.0, 1.0, &p1, d, r, used);
-}
-
-cdist_status cdist__segment_entry(cdist_query *q, const cdist_segment *s, const cdist_circle *c, int disk,
-                                  cdist__segment_core_fn core, cdist_result *r)
+cdist_status cdist_segment_disk(cdist_query *q, const cdist_segment *s, const cdist_circle *d, cdist_result *r)
 {
     cdist_status st = cdist__enter(q, r);
     if (st) return st;
-    cdist__circle cc;
-    cdist_method used = cdist__family_method(q, disk ? CD_FAM_SEGMENT_DISK : CD_FAM_SEGMENT_CIRCLE);
-    if ((st = cdist__check_segment(q, s)) || (st = cdist__check_circle(q, c, disk ? "disk" : "circle", &cc)))
+    cdist__circle dk;
+    cdist_method used = cdist__family_method(q, CD_FAM_SEGMENT_DISK);
+    if ((st = cdist__check_segment(q, s)) || (st = cdist__check_circle(q, d, "disk", &dk)))
         return cdist__leave(q, r, st, used);
     vec3 D = v_sub(s->p1, s->p0);
     if (D.x == 0.0 && D.y == 0.0 && D.z == 0.0) {
-        /* p0 == p1: the segment is a point; s = 0. */
-        cdist__point_result(s->p0, &cc, disk, r);
+        /* A point: point-disk, with s = 0. */
+        cdist__point_result(s->p0, &dk, 1, r);
         r->pairs[0].param[0] = 0.0;
         return cdist__leave(q, r, CDIST_OK, used);
     }
-    /* scaled before D is normalised, so that 2^k times the input gives exactly 2^k times the
-     * answer (the normalisation of a tiny D takes another path) */
-    int e = cdist__lines_scale_exponent(s->p0, &s->p1, &cc);
+    int e = cdist__lines_scale_exponent(s->p0, &s->p1, &dk);
     double down = cdist__pow2(-e);
-    cdist__circle_scale(&cc, down);
-    vec3 Ds = v_scale(down, D), M;
+    cdist__circle_scale(&dk, down);
+    vec3 p0 = v_scale(down, s->p0), p1 = v_scale(down, s->p1), Ds = v_scale(down, D), M;
     double len;
     if (!(st = cdist__check_direction(q, &Ds, "segment direction p1 - p0", 0, &M, &len)) &&
-        !(st = core(q, v_scale(down, s->p0), Ds, M, len, v_scale(down, s->p1), &cc, r, &used))) {
+        !(st = linear_disk_query(q, p0, Ds, len, M, 0.0, 1.0, &p1, &dk, r, &used))) {
         cdist__result_unscale(r, cdist__pow2(e));
-        for (int i = 0; i < r->num_pairs; i++) { /* exactly the caller's end points */
-            if (r->pairs[i].param[0] == 0.0) r->pairs[i].point[0] = s->p0;
+        for (int i = 0; i < r->num_pairs; i++) {
+            if (r->pairs[i].param[0] == 0.0) r->pairs[i].point[0] = s->p0; /* exactly the caller's end points */
             if (r->pairs[i].param[0] == 1.0) r->pairs[i].point[0] = s->p1;
         }
     }
     return cdist__leave(q, r, st, used);
-}
-
-cdist_status cdist_segment_disk(cdist_query *q, const cdist_segment *s, const cdist_circle *d, cdist_result *r)
-{
-    return cdist__segment_entry(q, s, d, 1, segment_disk_core, r);
 }

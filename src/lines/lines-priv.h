@@ -29,17 +29,6 @@ vec3 cdist__line_near_centre(vec3 origin, vec3 D, vec3 C, double tmin, double tm
 cdist_status cdist__linear_disk_ex(cdist_query *q, cdist_method method, vec3 B, vec3 M, double tmin, double tmax,
                                const cdist__circle *d, cdist__best *b, cdist_method *used);
 
-/* The core of a segment query on the scaled problem: start p0, direction Ds (unit M, length
- * len), end p1, circle or disk c; the answer in r with parameters in [0, 1]. */
-typedef cdist_status (*cdist__segment_core_fn)(cdist_query *q, vec3 p0, vec3 Ds, vec3 M, double len, vec3 p1,
-                                               const cdist__circle *c, cdist_result *r, cdist_method *used);
-/* The public entry of segment-circle (disk 0) and segment-disk (1): the handle, the segment and
- * the circle validated, a point segment answered as point-circle/disk, the problem scaled for
- * the core, its answer scaled back with the segment's ends exactly the caller's
- * (src/lines/line_disk.c). */
-cdist_status cdist__segment_entry(cdist_query *q, const cdist_segment *s, const cdist_circle *c, int disk,
-                                  cdist__segment_core_fn core, cdist_result *r);
-
 /* Scale exponent of a linear query (origin, optional segment end p1, circle c): from
  * max(r, |origin - C|, |p1 - C|), see cdist__scale_exponent. */
 static inline int cdist__lines_scale_exponent(vec3 origin, const vec3 *p1, const cdist__circle *c)
