@@ -308,8 +308,9 @@ static int list_action(narrow *w, size_t k, const cdist__scene_obj *a, const cdi
     return ACT_ANSWER;
 }
 
-/* The cutoff of a screened pair: the smallest core distance c with (c - radii) - margin > lim
- * in floating point, so that a distance the screen puts above it passes the same test. */
+/* The cutoff of a screened pair: the first core distance c from (lim + margin) + radii upward
+ * with (c - radii) - margin > lim in floating point, so that a distance the screen puts above
+ * it passes the same test. */
 static double screen_cutoff(double lim, double margin, double radii)
 {
     double c = (lim + margin) + radii;
