@@ -83,6 +83,7 @@ static uint64_t ck_run_screen(const ck_variant *v, const cdist__job *job, double
         memcpy(&pb[m], cdist__job_b(job, lo + (size_t)k), sizeof pb[m]);
         idx[m++] = k;
     }
+    left &= all; /* the lanes past the block's last entry are no entries */
     if (m == 0) return left;
     cdist__job packed = *job;
     packed.n = (size_t)m;

@@ -259,6 +259,14 @@ static void check_screen(cdist_query *q, size_t n, const char *what)
         }
     }
     CHECK(bad == 0, "screen %s: %d verdicts wrong", what, bad);
+    /* a count that leaves part of a lane group empty: nothing past the last entry is written
+     * (nor answered: the empty lanes are no entries) */
+    size_t m = n > 13 ? n - 13 : 1;
+    for (size_t i = m; i < n; i++) out[i] = 12345.0;
+    cdist__batch_screen(q, m, A, B, cut, out);
+    int past = 0;
+    for (size_t i = m; i < n; i++) past += out[i] != 12345.0;
+    CHECK(past == 0, "screen %s: %d distances written past the %zu entries", what, past, m);
     CHECK(far_decided * 2 >= far, "screen %s: %d of %d entries with the cutoff at half or twice the distance decided "
           "by the grid", what, far_decided, far);
     printf("  %-6s screen: %d of %d entries decided by the grid at half or twice their distance\n", what, far_decided,
