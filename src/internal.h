@@ -54,7 +54,16 @@ void cdist__circles_result(const cdist__best *best, int swap, int e, vec3 offset
 /* Lexicographic order of two circles' numbers (centre, normal, radius): 1 when a comes first.
  * Families that swap their inputs into this order run the same computation for f(a, b) and
  * f(b, a). */
-int cdist__circle_less(const cdist_circle *a, const cdist_circle *b);
+static inline int cdist__circle_less(const cdist_circle *a, const cdist_circle *b)
+{
+    const double va[7] = {a->center.x, a->center.y, a->center.z, a->normal.x, a->normal.y, a->normal.z, a->radius};
+    const double vb[7] = {b->center.x, b->center.y, b->center.z, b->normal.x, b->normal.y, b->normal.z, b->radius};
+    for (int i = 0; i < 7; i++) {
+        if (va[i] < vb[i]) return 1;
+        if (va[i] > vb[i]) return 0;
+    }
+    return 0;
+}
 
 
 /* ---- cc_methods block: helpers shared by cdist__cc_polynomial and cdist__cc_iteration (defined in

@@ -1,11 +1,11 @@
 /* SPDX-License-Identifier: MIT */
 /* Distance kernels of circle-disk and disk-disk for cdist_batch_distance: the single query's
  * steps for many entries at once. The circles are validated and framed in lanes
- * (cdist__circle_pairs_lanes), their candidates over the disks' faces computed in lanes
- * (src/circles/cd_body.h, which the single query runs in one lane; cd_kernel_body.h), the rim
- * searches' frames built and the searches run in lanes (cdist__cc_quick_lanes, which certifies
- * what the single query's search certifies, with the same angle to the last bit) and finished one
- * by one (cdist__cd_stage_finish). The distances are the single query's bit for bit (candidates
+ * (cdist__circle_pairs_lanes), the rim searches' frames built and the searches run in lanes
+ * (cdist__cc_quick_lanes, which certifies what the single query's search certifies, with the
+ * same angle to the last bit) and finished one by one (cdist__cd_stage_finish), then the
+ * candidates over the disks' faces computed in lanes (src/circles/cd_body.h, which the single
+ * query runs in one lane; cd_kernel_body.h). The distances are the single query's bit for bit (candidates
  * that cannot be the smallest may be left out: docs/architecture.md); an entry whose query takes
  * another path (a failed fast check, a zero radius, parallel planes, the rim search's engine) is
  * left to the scalar path. */
@@ -32,7 +32,7 @@
 typedef struct cd_variant {
     int lanes;
     unsigned (*face)(const cdist__circle *const *c, const cdist__circle *const *d, int neg, const double *bscale, int n,
-                     cdk_lanes_1 *const *g, double *min, unsigned *spared, double *scale, double *dcap);
+                     cdk_lanes_1 *const *g, double *scale, double *min);
     unsigned (*rim_frame)(const cdist__circle *const *c, const cdist__circle *const *d, int n, cdist__cc_frame *const *f,
                           double *sc);
 } cd_variant;
@@ -49,17 +49,21 @@ static const cd_variant *cd_variant_of(int lanes)
     return &v1;
 }
 
-/* One entry: its stage, the frame's scale 2^e and, for disk-disk, the second half's distance. */
+/* One entry: its stage and the frame's scale 2^e. */
 typedef struct cd_entry {
     cdist__cd_stage st;
-    double up, d2_other;
+    double up;
 } cd_entry;
 
 enum { CD_SUB = 16 };
-enum { CD_PENDING = -1, CD_DONE, CD_SEARCH, CD_SCALAR };
+enum { CD_DONE, CD_SEARCH, CD_SCALAR };
 
-/* Entries [lo, lo + n), n <= CD_SUB, up to the rim search: state[k] CD_DONE (x[k]'s d2 holds
- * the first half's distance), CD_SEARCH (the search is to run on x[k].st.f) or CD_SCALAR. */
+/* Entries [lo, lo + n), n <= CD_SUB, up to the rim search: state[k] CD_SEARCH (the search is to
+ * run on x[k].st.f, the circle in the disk's frame is in x[k].st.k) or CD_SCALAR. The rim search
+ * runs first, with no cap: its minimum is a candidate like the others (the single query may
+ * leave it out where it is far above the face's candidates; it cannot be the answer there), and
+ * its distance, usually the answer, drops the face's candidates far above it before their
+ * library calls. */
 static void cd_stages(const cd_variant *v, const cdist__job *job, int disk, double unit_tol, size_t lo, int n,
                       cd_entry *x, int *state)
 {
@@ -67,7 +71,7 @@ static void cd_stages(const cd_variant *v, const cdist__job *job, int disk, doub
     const cdist__circle *pa[CD_SUB], *pe[CD_SUB];
     cdk_lanes_1 *g[CD_SUB];
     cdist__cc_frame *f[CD_SUB];
-    double bscale[CD_SUB], up[CD_SUB], min[CD_SUB], scale[CD_SUB], dcap[CD_SUB], sc[CD_SUB];
+    double bscale[CD_SUB], up[CD_SUB], scale[CD_SUB], sc[CD_SUB];
     uint64_t swap = 0;
     for (int k = 0; disk && k < n; k++)
         if (cdist__circle_less(cdist__job_b(job, lo + (size_t)k), cdist__job_a(job, lo + (size_t)k)))
@@ -78,7 +82,7 @@ static void cd_stages(const cd_variant *v, const cdist__job *job, int disk, doub
         pe[k] = &x[k].st.d;
         f[k] = &x[k].st.f;
         g[k] = &x[k].st.k.g;
-        state[k] = bad >> k & 1 ? CD_SCALAR : CD_PENDING;
+        state[k] = bad >> k & 1 ? CD_SCALAR : CD_SEARCH;
         if (state[k] == CD_SCALAR) {
             x[k].st.c = x[k].st.d = (cdist__circle){v3(0, 0, 0), v3(0, 0, 1), v3(1, 0, 0), v3(0, 1, 0), 1.0};
             bscale[k] = 1.0;
@@ -88,45 +92,28 @@ static void cd_stages(const cd_variant *v, const cdist__job *job, int disk, doub
         x[k].st.c = a[k];
         x[k].st.d = e[k];
         x[k].st.bscale = bscale[k];
-        x[k].d2_other = INFINITY;
+        x[k].st.d2 = x[k].st.dcap = INFINITY;
     }
-    for (int k = 0; k < n; k++) min[k] = INFINITY;
     for (int k0 = 0; k0 < n; k0 += v->lanes) {
         int m = n - k0 < v->lanes ? n - k0 : v->lanes;
-        unsigned spared, search = 0;
-        unsigned out = v->face(pa + k0, pe + k0, 0, bscale + k0, m, g + k0, min + k0, &spared, scale + k0, dcap + k0);
+        unsigned out = v->face(pa + k0, pe + k0, 0, bscale + k0, m, g + k0, scale + k0, NULL);
+        out |= v->rim_frame(pa + k0, pe + k0, m, f + k0, sc + k0);
         for (int k = k0; k < k0 + m; k++) {
             if (out >> (k - k0) & 1) state[k] = CD_SCALAR;
             if (state[k] == CD_SCALAR) continue;
-            x[k].st.d2 = min[k];
             x[k].st.scale = scale[k];
-            x[k].st.dcap = dcap[k];
-            if (spared >> (k - k0) & 1) {
-                state[k] = CD_DONE;
-            } else {
-                state[k] = CD_SEARCH;
-                search |= 1u << (k - k0);
-            }
+            x[k].st.sc = sc[k];
+            cdist__cd_stage_ring(&x[k].st);
         }
-        if (!search) continue;
-        unsigned engine = v->rim_frame(pa + k0, pe + k0, m, f + k0, sc + k0);
-        for (int k = k0; k < k0 + m; k++)
-            if (search >> (k - k0) & 1) {
-                if (engine >> (k - k0) & 1) state[k] = CD_SCALAR;
-                x[k].st.sc = sc[k];
-                cdist__cd_stage_ring(&x[k].st);
-            }
     }
 }
 
-/* Disk-disk's other half (dd_query): the rim of e over a's face, e's centre the origin, into
- * d2_other of the entries answered so far. Its candidates far above the first half's answer
- * cannot be the answer, so they are dropped from the start: the answer, the smaller of the
- * halves, is the same. */
-static void cd_other_half(const cd_variant *v, int n, cd_entry *x, int *state)
+/* The candidates over the faces of the entries answered so far, from their rim minimum on: the
+ * circle's over the disk's face, and for disk-disk the other half of dd_query (the rim of e over
+ * a's face, e's centre the origin; no rim minima of its own: see dd_query). */
+static void cd_faces(const cd_variant *v, int disk, int n, cd_entry *x, int *state)
 {
     const cdist__circle *pa[CD_SUB], *pe[CD_SUB];
-    cdk_lanes_1 scratch[CD_SUB], *g[CD_SUB];
     double bscale[CD_SUB], min[CD_SUB];
     int at[CD_SUB], m = 0;
     for (int k = 0; k < n; k++)
@@ -135,15 +122,15 @@ static void cd_other_half(const cd_variant *v, int n, cd_entry *x, int *state)
             pa[m] = &x[k].st.c;
             pe[m] = &x[k].st.d;
             bscale[m] = x[k].st.bscale;
-            g[m] = &scratch[m];
             min[m++] = x[k].st.d2;
         }
     for (int j0 = 0; j0 < m; j0 += v->lanes) {
         int w = m - j0 < v->lanes ? m - j0 : v->lanes;
-        unsigned out = v->face(pe + j0, pa + j0, 1, bscale + j0, w, g + j0, min + j0, NULL, NULL, NULL);
+        unsigned out = v->face(pa + j0, pe + j0, 0, bscale + j0, w, NULL, NULL, min + j0);
+        if (disk) out |= v->face(pe + j0, pa + j0, 1, bscale + j0, w, NULL, NULL, min + j0);
         for (int j = j0; j < j0 + w; j++) {
             if (out >> (j - j0) & 1) state[at[j]] = CD_SCALAR;
-            x[at[j]].d2_other = min[j];
+            x[at[j]].st.d2 = min[j];
         }
     }
 }
@@ -177,9 +164,9 @@ CD_FMA_CLONES static uint64_t cd_kernel(const cdist__job *job, int disk, double 
                 state[k] = CD_DONE;
             }
         }
-        if (disk) cd_other_half(v, n, x, state);
+        cd_faces(v, disk, n, x, state);
         for (int k = 0; k < n; k++) {
-            double d2 = x[k].st.d2 < x[k].d2_other ? x[k].st.d2 : x[k].d2_other;
+            double d2 = x[k].st.d2;
             if (state[k] == CD_SCALAR || !(d2 < INFINITY)) {
                 left |= (uint64_t)1 << (b + k);
                 continue;

@@ -2,7 +2,7 @@
 /* One instance of the circle-disk kernel's stages in lanes (src/batch/cd_kernel.c) for the lanes
  * the includer chose (CD_LANES), compiled for their instruction set: the candidates over the
  * disk's face of W entries at once (src/circles/cd_body.h, the single query's arithmetic) and the
- * bound that spares the rim. No include guard. */
+ * rim search's frame. No include guard. */
 #if CD_LANES == 8
 CD_LANES_TARGET_PUSH("avx512f,fma")
 #elif CD_LANES == 4
@@ -52,53 +52,46 @@ CD_INLINE V KN(cd_vld)(const double *x, int n)
     return vld(a);
 }
 
-/* The candidates over the face of the pairs (c[l], d[l]), l < n <= W (cdk_height): into *g[l]
- * the circle in the disk's frame, into min[l] the smallest squared distance, from min[l] on
- * (INFINITY: the query's own start; a distance attained elsewhere drops the candidates far
- * above it, which cannot be the answer); with spared not NULL also the bound that spares the
- * rim search (cdk_rim_far, its lanes into *spared) at the cap dcap[l] = sqrt(min[l]), and the
- * scale scale[l]. Returns the lanes the stages do not take (a zero radius, parallel planes). */
+/* The pairs (c[l], d[l]), l < n <= W, the circle in the disk's frame: with g not NULL, into
+ * *g[l] that frame and into scale[l] the scale of the rim search's thresholds; with min not
+ * NULL, the candidates over the face (cdk_height) into min[l], from min[l] on (INFINITY: the
+ * query's own start; a distance attained elsewhere drops the candidates far above it, which
+ * cannot be the answer). Returns the lanes the stages do not take (a zero radius, parallel
+ * planes). */
 static unsigned KN(cd_face)(const cdist__circle *const *c, const cdist__circle *const *d, int neg, const double *bscale,
-                            int n, cdk_lanes_1 *const *g, double *min, unsigned *spared, double *scale, double *dcap)
+                            int n, cdk_lanes_1 *const *g, double *scale, double *min)
 {
     V D[3], dn[3], du[3], dv[3], cu[3], cv[3], r, R;
     KN(cd_load)(c, d, neg, n, D, dn, du, dv, cu, cv, &r, &R);
     KN(cdk_lanes) k;
     KN(cdk_lanes_init)(&k, D, dn, du, dv, cu, cv, r, R);
     M bad = mor(mor(veq(r, vset(0.0)), veq(R, vset(0.0))), KN(cdk_parallel)(&k));
-    V m = KN(cd_vld)(min, n);
-    KN(cdk_height)(&k, &m, KN(cd_vld)(bscale, n), NULL);
-    double f[15][W];
-    const V *src[13] = {&k.X[0], &k.X[1], &k.X[2], &k.Y[0], &k.Y[1], &k.Y[2], &k.Z[0], &k.Z[1], &k.Z[2],
-                        &k.E0, &k.R, &k.rho, &m};
-    for (int j = 0; j < 13; j++) vst(f[j], *src[j]);
-    if (spared) {
-        V s = KN(cdk_scale)(&k), cap = vsel(vlt(m, vset(INFINITY)), vsqrt(m), vset(INFINITY));
-        vst(f[13], s);
-        vst(f[14], cap);
-        *spared = mbits(KN(cdk_rim_far)(&k, cap, s)) & ((1u << n) - 1u);
+    double f[13][W];
+    if (min) {
+        V m = KN(cd_vld)(min, n);
+        KN(cdk_height)(&k, &m, KN(cd_vld)(bscale, n), NULL);
+        vst(f[0], m);
+        for (int l = 0; l < n; l++) min[l] = f[0][l];
     }
+    if (!g) return mbits(bad) & ((1u << n) - 1u);
+    const V s = KN(cdk_scale)(&k), *src[13] = {&s,       &k.X[0], &k.X[1], &k.X[2], &k.Y[0], &k.Y[1], &k.Y[2],
+                                               &k.Z[0], &k.Z[1], &k.Z[2], &k.E0,   &k.R,    &k.rho};
+    for (int j = 0; j < 13; j++) vst(f[j], *src[j]);
     for (int l = 0; l < n; l++) {
         cdk_lanes_1 *o = g[l];
+        scale[l] = f[0][l];
         for (int j = 0; j < 3; j++) {
-            o->X[j] = f[j][l];
-            o->Y[j] = f[3 + j][l];
-            o->Z[j] = f[6 + j][l];
+            o->X[j] = f[1 + j][l];
+            o->Y[j] = f[4 + j][l];
+            o->Z[j] = f[7 + j][l];
         }
-        o->E0 = f[9][l];
-        o->R = f[10][l];
-        o->rho = f[11][l];
+        o->E0 = f[10][l];
+        o->R = f[11][l];
+        o->rho = f[12][l];
         o->small = o->rho <= o->R;
-        min[l] = f[12][l];
-        if (spared) {
-            scale[l] = f[13][l];
-            dcap[l] = f[14][l];
-        }
     }
     return mbits(bad) & ((1u << n) - 1u);
 }
-
-
 
 /* The rim search's frame of the pairs (c[l], d[l]), l < n <= W, as cdist__cc_quick_frame
  * builds it (scaled_pair, cdist__cc_frame_ring, the parallel and worth tests) operation by

@@ -134,9 +134,7 @@ CD_INLINE void KN(cdk_offer)(const KN(cdk_lanes) *k, M m, V t, V cs, V sn, V *mi
     V far2 = KN(cdk_far2)(*min, scale);
     V x = KN(cdk_trig)(k->X, cs, sn), y = KN(cdk_trig)(k->Y, cs, sn), z = KN(cdk_trig)(k->Z, cs, sn), zz = vmul(z, z);
     m = mandn(vgt(zz, far2), m); /* the distance is at least |z| */
-#if W == 1
-    if (!m) return;
-#endif
+    if (!many(m)) return;
     V ex = KN(cdk_rim_excess)(k, x, y, cs, sn);
     M out = mnot(vle(ex, vset(0.0)));
 #if W > 1
@@ -148,6 +146,7 @@ CD_INLINE void KN(cdk_offer)(const KN(cdk_lanes) *k, M m, V t, V cs, V sn, V *mi
     V drl = vmax(vsel(k->small, vdiv(ex, vadd(rhi, k->R)), vsub(rlo, k->R)), vset(0.0));
     V d2l = vmul(vfma(drl, drl, zz), vset(1.0 - CD_CD_HYPOT_ULPS * DBL_EPSILON));
     m = mandn(mand(out, vgt(d2l, far2)), m);
+    if (!many(m)) return;
 #endif
 #if W == 1
     double rho = 0.0, d2 = zz;

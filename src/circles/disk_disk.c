@@ -7,17 +7,6 @@
 
 #include "circles/circles-priv.h"
 
-int cdist__circle_less(const cdist_circle *a, const cdist_circle *b)
-{
-    const double va[7] = {a->center.x, a->center.y, a->center.z, a->normal.x, a->normal.y, a->normal.z, a->radius};
-    const double vb[7] = {b->center.x, b->center.y, b->center.z, b->normal.x, b->normal.y, b->normal.z, b->radius};
-    for (int i = 0; i < 7; i++) {
-        if (va[i] < vb[i]) return 1;
-        if (va[i] > vb[i]) return 0;
-    }
-    return 0;
-}
-
 /* The validated problem, swapped into the canonical order: the core, then r written in full. */
 static cdist_status dd_query(cdist_query *q, cdist__circle a, cdist__circle e, int swap, cdist_result *r, cdist_method *used)
 {

@@ -199,26 +199,36 @@ static void check_widths(int disk, size_t n, const char *what)
             }
             CHECK(!vbad, "%s %s from %zu, %d lanes: the validation differs from the single query's", disk ? "dd" : "cd",
                   what, lo, widths[w]);
-            /* the candidates over the face in lanes: the one-lane body's (the single query's) */
+            /* the circle in the disk's frame in lanes: the one-lane body's (the single query's) */
             cd_stages(cd_variant_of(widths[w]), &job, disk, 1e-6, lo, cnt, xw, statew);
-            if (disk) { /* the other half of the entries the stages answered */
-                int s1[CD_SUB], sw[CD_SUB];
-                memcpy(s1, state, sizeof s1);
-                memcpy(sw, statew, sizeof sw);
-                cd_other_half(cd_variant_of(1), cnt, x, s1);
-                cd_other_half(cd_variant_of(widths[w]), cnt, xw, sw);
-                for (int k = 0; k < cnt; k++)
-                    if (s1[k] != sw[k] || (s1[k] == CD_DONE && memcmp(&x[k].d2_other, &xw[k].d2_other, 8))) sbad++;
-            }
             for (int k = 0; k < cnt; k++) {
                 int differ = statew[k] != state[k];
                 if (!differ && state[k] != CD_SCALAR)
-                    differ = memcmp(&x[k].st.d2, &xw[k].st.d2, 8) || memcmp(&x[k].d2_other, &xw[k].d2_other, 8) ||
-                             memcmp(&x[k].st.dcap, &xw[k].st.dcap, 8) ||
+                    differ = memcmp(&x[k].st.scale, &xw[k].st.scale, 8) ||
                              memcmp(&x[k].st.k.g, &xw[k].st.k.g, offsetof(cdk_lanes_1, small));
                 if (differ && sbad++ < 5)
                     CHECK(0, "%s %s entry %zu, %d lanes: the stages differ from one lane's (state %d vs %d)",
                           disk ? "dd" : "cd", what, lo + (size_t)k, widths[w], statew[k], state[k]);
+            }
+            /* the candidates over the faces in lanes: one lane's, from no start and from starts
+             * below, at and above their answer (the far candidates dropped) */
+            static cd_entry x1[CD_SUB];
+            double start[CD_SUB];
+            for (int pass = 0; pass < 2; pass++) {
+                int s1[CD_SUB], sw[CD_SUB];
+                memcpy(x1, x, sizeof x1);
+                for (int k = 0; k < cnt; k++) {
+                    s1[k] = sw[k] = state[k] == CD_SEARCH && statew[k] == CD_SEARCH ? CD_DONE : CD_SCALAR;
+                    x1[k].st.d2 = xw[k].st.d2 = pass ? start[k] : INFINITY;
+                }
+                cd_faces(cd_variant_of(1), disk, cnt, x1, s1);
+                cd_faces(cd_variant_of(widths[w]), disk, cnt, xw, sw);
+                for (int k = 0; k < cnt; k++) {
+                    if ((s1[k] != sw[k] || (s1[k] == CD_DONE && memcmp(&x1[k].st.d2, &xw[k].st.d2, 8))) && sbad++ < 5)
+                        CHECK(0, "%s %s entry %zu, %d lanes, start %d: the faces' candidates differ from one lane's",
+                              disk ? "dd" : "cd", what, lo + (size_t)k, widths[w], pass);
+                    start[k] = x1[k].st.d2 * (k % 3 == 0 ? 0.25 : k % 3 == 1 ? 1.0 : 4.0);
+                }
             }
             /* the rim search's frame in lanes: cdist__cc_quick_frame's (the decision and the fields
              * the search reads) */
