@@ -393,88 +393,44 @@ CD_INLINE cdist_status run(cdist_query *q, vec3 origin, vec3 D, vec3 M, double l
     return CDIST_OK;
 }
 
-/* Frame and scale: the whole query scaled by 2^-e (exact) so that max(r, |origin - C|) is in
- * [1, 2); the parameter t is unchanged (D is scaled with the origin), the
- * distances and points are scaled back exactly. Inputs already validated. */
-CD_INLINE cdist_status run_scaled(cdist_query *q, vec3 origin, vec3 D, vec3 M, double len, double tmin, double tmax,
-                               cdist__circle cc, cdist_result *r, cdist_method *used)
+/* The line's or ray's core, the query scaled (cdist__linear_query). */
+CD_INLINE cdist_status linear_core(cdist_query *q, vec3 origin, vec3 Ds, vec3 M, double len, double tmin, double tmax,
+                                   const cdist__circle *cc, cdist_result *r, cdist_method *used)
 {
-    int e = cdist__lines_scale_exponent(origin, NULL, &cc);
-    double down = cdist__pow2(-e);
-    cdist__circle_scale(&cc, down);
-    vec3 Ds = v_scale(down, D);
-    cdist_status st = run(q, v_scale(down, origin), Ds, M, cdist__lines_scaled_length(len, Ds, down), tmin, tmax, &cc,
-                          r, used);
-    if (st == CDIST_OK) cdist__result_unscale(r, cdist__pow2(e));
-    return st;
+    return run(q, origin, Ds, M, len, tmin, tmax, cc, r, used);
 }
 
 /* FMA clone: the circle's basis (v_basis) inlined here is a chain of fma() calls, which outside
  * a clone are calls to the C library's fma (same results, slower). */
-CD_FMA_CLONES static cdist_status linear_public(cdist_query *q, const cdist_vec3 *origin, const cdist_vec3 *dir, const void *obj,
-                                  int is_ray, double tmin, double tmax, const cdist_circle *c, cdist_result *r)
+CD_FMA_CLONES static cdist_status linear_public(cdist_query *q, const cdist_vec3 *origin, const cdist_vec3 *dir,
+                                                const void *obj, int is_ray, const cdist_circle *c, cdist_result *r)
 {
-    cdist_status st = cdist__enter(q, r);
-    if (st) return st;
-    cdist__circle cc;
-    vec3 M;
-    double len;
-    cdist_method used = CDIST_METHOD_ROBUST;
-    /* The circle's normal and basis (two divisions and a square root each) are the longest
-     * chain before the core: started first. The fast check has no side effects; a circle it
-     * does not accept is checked, and reported, after the line as before. */
-    int fast = cdist__circle_fast_basis(q->unit_tol, c, &cc);
-    if (!(st = cdist__check_line_ray(q, obj, origin, dir, is_ray, &M, &len)) &&
-        (fast || !(st = cdist__check_circle(q, c, "circle", &cc)))) {
-        /* t is reported for the direction as passed */
-        st = run_scaled(q, *origin, *dir, M, len, tmin, tmax, cc, r, &used);
-    }
-    return cdist__leave(q, r, st, used);
+    return cdist__linear_query(q, obj, origin, dir, is_ray, c, 0, linear_core, r);
 }
 
 cdist_status cdist_line_circle(cdist_query *q, const cdist_line *l, const cdist_circle *c, cdist_result *r)
 {
-    return linear_public(q, l ? &l->origin : NULL, l ? &l->direction : NULL, l, 0, -INFINITY, INFINITY, c, r);
+    return linear_public(q, l ? &l->origin : NULL, l ? &l->direction : NULL, l, 0, c, r);
 }
 
 cdist_status cdist_ray_circle(cdist_query *q, const cdist_ray *l, const cdist_circle *c, cdist_result *r)
 {
-    return linear_public(q, l ? &l->origin : NULL, l ? &l->direction : NULL, l, 1, 0.0, INFINITY, c, r);
+    return linear_public(q, l ? &l->origin : NULL, l ? &l->direction : NULL, l, 1, c, r);
+}
+
+/* The segment's core: the line's, on t in [0, 1]. */
+CD_INLINE cdist_status segment_core(cdist_query *q, vec3 p0, vec3 p1, vec3 Ds, vec3 M, double len,
+                                    const cdist__circle *cc, cdist_result *r, cdist_method *used)
+{
+    (void)p1;
+    return run(q, p0, Ds, M, len, 0.0, 1.0, cc, r, used);
 }
 
 /* FMA clone, as linear_public (the core is inlined into it). */
 CD_FMA_CLONES static cdist_status segment_public(cdist_query *q, const cdist_segment *s, const cdist_circle *c,
                                                 cdist_result *r)
 {
-    cdist_status st = cdist__enter(q, r);
-    if (st) return st;
-    cdist__circle cc;
-    cdist_method used = cdist__family_method(q, CD_FAM_SEGMENT_CIRCLE);
-    if ((st = cdist__check_segment(q, s)) || (st = cdist__check_circle(q, c, "circle", &cc)))
-        return cdist__leave(q, r, st, used);
-    vec3 D = v_sub(s->p1, s->p0);
-    if (D.x == 0.0 && D.y == 0.0 && D.z == 0.0) {
-        /* p0 == p1: the segment is a point; s = 0. */
-        cdist__point_result(s->p0, &cc, 0, r);
-        r->pairs[0].param[0] = 0.0;
-        return cdist__leave(q, r, CDIST_OK, used);
-    }
-    /* scaled before D is normalised, so that 2^k times the input gives exactly 2^k times the
-     * answer (the normalisation of a tiny D takes another path) */
-    int e = cdist__lines_scale_exponent(s->p0, &s->p1, &cc);
-    double down = cdist__pow2(-e);
-    cdist__circle_scale(&cc, down);
-    vec3 Ds = v_scale(down, D), M;
-    double len;
-    if (!(st = cdist__check_direction(q, &Ds, "segment direction p1 - p0", 0, &M, &len)) &&
-        !(st = run(q, v_scale(down, s->p0), Ds, M, len, 0.0, 1.0, &cc, r, &used))) {
-        cdist__result_unscale(r, cdist__pow2(e));
-        for (int i = 0; i < r->num_pairs; i++) { /* exactly the caller's end points */
-            if (r->pairs[i].param[0] == 0.0) r->pairs[i].point[0] = s->p0;
-            if (r->pairs[i].param[0] == 1.0) r->pairs[i].point[0] = s->p1;
-        }
-    }
-    return cdist__leave(q, r, st, used);
+    return cdist__segment_query(q, s, c, 0, segment_core, r);
 }
 
 cdist_status cdist_segment_circle(cdist_query *q, const cdist_segment *s, const cdist_circle *c, cdist_result *r)

@@ -100,18 +100,13 @@ CD_FMA_CLONES static cdist_status linear_disk(cdist_query *q, cdist_method metho
                 cdist__best_offer_flag(loc, k->equidistant, k->d2, k->p[0], k->p[1], k->param[0], k->param[1]);
             }
         }
-        if (!both && tmin < lo) {
+        /* else each outer piece on its own: [tmin, lo], then [hi, tmax] */
+        const double piece[2][2] = {{tmin, lo}, {hi, tmax}};
+        for (int k = 0; k < 2 && !both; k++) {
+            if (!(piece[k][0] < piece[k][1])) continue;
             cdist__best t;
             cdist__best_init(&t, b->scale);
-            if ((st = cdist__linear_circle_ex(q, method, B, M, tmin, lo, d, &t, &u1))) return st;
-            if (u1 == CDIST_METHOD_ROBUST) *used = u1;
-            double m2 = cdist__best_merge(loc, &t, v3(0, 0, 0), 0);
-            if (cdist__best_is_equidistant(&t) && m2 < eq_d2) eq_d2 = m2;
-        }
-        if (!both && hi < tmax) {
-            cdist__best t;
-            cdist__best_init(&t, b->scale);
-            if ((st = cdist__linear_circle_ex(q, method, B, M, hi, tmax, d, &t, &u1))) return st;
+            if ((st = cdist__linear_circle_ex(q, method, B, M, piece[k][0], piece[k][1], d, &t, &u1))) return st;
             if (u1 == CDIST_METHOD_ROBUST) *used = u1;
             double m2 = cdist__best_merge(loc, &t, v3(0, 0, 0), 0);
             if (cdist__best_is_equidistant(&t) && m2 < eq_d2) eq_d2 = m2;
@@ -193,30 +188,19 @@ CD_FMA_CLONES static cdist_status linear_disk_query(cdist_query *q, vec3 origin,
     return CDIST_OK;
 }
 
-/* Line or ray: validate, frame and scale (as in line_circle.c's run_scaled), core, result. */
-/* FMA clone: as line_circle.c's linear_public (the inlined basis is a chain of fma() calls). */
-CD_FMA_CLONES static cdist_status line_ray_disk(cdist_query *q, const void *obj, const cdist_vec3 *origin, const cdist_vec3 *dir,
-                                  int is_ray, const cdist_circle *d, cdist_result *r)
+/* The line's or ray's core, the query scaled (cdist__linear_query). */
+static cdist_status linear_core(cdist_query *q, vec3 origin, vec3 Ds, vec3 M, double len, double tmin, double tmax,
+                                const cdist__circle *dk, cdist_result *r, cdist_method *used)
 {
-    cdist_status st = cdist__enter(q, r);
-    if (st) return st;
-    vec3 M;
-    double len;
-    cdist__circle dk;
-    cdist_method used = CDIST_METHOD_ROBUST;
-    /* the disk's normal and basis first, as in line_circle.c's linear_public */
-    int fast = cdist__circle_fast_basis(q->unit_tol, d, &dk);
-    if (!(st = cdist__check_line_ray(q, obj, origin, dir, is_ray, &M, &len)) &&
-        (fast || !(st = cdist__check_circle(q, d, "disk", &dk)))) {
-        int e = cdist__lines_scale_exponent(*origin, NULL, &dk);
-        double down = cdist__pow2(-e);
-        cdist__circle_scale(&dk, down);
-        vec3 Ds = v_scale(down, *dir);
-        st = linear_disk_query(q, v_scale(down, *origin), Ds, cdist__lines_scaled_length(len, Ds, down), M,
-                               is_ray ? 0.0 : -INFINITY, INFINITY, NULL, &dk, r, &used);
-        if (st == CDIST_OK) cdist__result_unscale(r, cdist__pow2(e));
-    }
-    return cdist__leave(q, r, st, used);
+    return linear_disk_query(q, origin, Ds, len, M, tmin, tmax, NULL, dk, r, used);
+}
+
+/* FMA clone: as line_circle.c's linear_public (the inlined basis is a chain of fma() calls). */
+CD_FMA_CLONES static cdist_status line_ray_disk(cdist_query *q, const void *obj, const cdist_vec3 *origin,
+                                                const cdist_vec3 *dir, int is_ray, const cdist_circle *d,
+                                                cdist_result *r)
+{
+    return cdist__linear_query(q, obj, origin, dir, is_ray, d, 1, linear_core, r);
 }
 
 cdist_status cdist_line_disk(cdist_query *q, const cdist_line *l, const cdist_circle *d, cdist_result *r)
@@ -229,33 +213,14 @@ cdist_status cdist_ray_disk(cdist_query *q, const cdist_ray *l, const cdist_circ
     return line_ray_disk(q, l, l ? &l->origin : NULL, l ? &l->direction : NULL, 1, d, r);
 }
 
+/* The segment's core: the line's, on t in [0, 1], with its end point p1. */
+static cdist_status segment_core(cdist_query *q, vec3 p0, vec3 p1, vec3 Ds, vec3 M, double len,
+                                 const cdist__circle *dk, cdist_result *r, cdist_method *used)
+{
+    return linear_disk_query(q, p0, Ds, len, M, 0.0, 1.0, &p1, dk, r, used);
+}
+
 cdist_status cdist_segment_disk(cdist_query *q, const cdist_segment *s, const cdist_circle *d, cdist_result *r)
 {
-    cdist_status st = cdist__enter(q, r);
-    if (st) return st;
-    cdist__circle dk;
-    cdist_method used = cdist__family_method(q, CD_FAM_SEGMENT_DISK);
-    if ((st = cdist__check_segment(q, s)) || (st = cdist__check_circle(q, d, "disk", &dk)))
-        return cdist__leave(q, r, st, used);
-    vec3 D = v_sub(s->p1, s->p0);
-    if (D.x == 0.0 && D.y == 0.0 && D.z == 0.0) {
-        /* A point: point-disk, with s = 0. */
-        cdist__point_result(s->p0, &dk, 1, r);
-        r->pairs[0].param[0] = 0.0;
-        return cdist__leave(q, r, CDIST_OK, used);
-    }
-    int e = cdist__lines_scale_exponent(s->p0, &s->p1, &dk);
-    double down = cdist__pow2(-e);
-    cdist__circle_scale(&dk, down);
-    vec3 p0 = v_scale(down, s->p0), p1 = v_scale(down, s->p1), Ds = v_scale(down, D), M;
-    double len;
-    if (!(st = cdist__check_direction(q, &Ds, "segment direction p1 - p0", 0, &M, &len)) &&
-        !(st = linear_disk_query(q, p0, Ds, len, M, 0.0, 1.0, &p1, &dk, r, &used))) {
-        cdist__result_unscale(r, cdist__pow2(e));
-        for (int i = 0; i < r->num_pairs; i++) {
-            if (r->pairs[i].param[0] == 0.0) r->pairs[i].point[0] = s->p0; /* exactly the caller's end points */
-            if (r->pairs[i].param[0] == 1.0) r->pairs[i].point[0] = s->p1;
-        }
-    }
-    return cdist__leave(q, r, st, used);
+    return cdist__segment_query(q, s, d, 1, segment_core, r);
 }

@@ -7,6 +7,7 @@
 #include "api/api-priv.h"
 #include "base/best.h"
 #include "base/vec.h"
+#include "point/point-priv.h"
 
 /* ---- lines family (src/lines/line_circle.c) ----
  * cdist__linear_circle_ex: points B + t M, t in [tmin, tmax] (infinite ends allowed), M unit, B
@@ -48,6 +49,83 @@ static inline double cdist__lines_scaled_length(double len, vec3 Ds, double down
     if (len >= 0x1p-1022 || !(m > 0.0)) return len * down;
     int k = cdist__scale_exponent(m);
     return v_norm(v_scale(cdist__pow2(-k), Ds)) * cdist__pow2(k);
+}
+
+/* The core of a line or ray query: origin + t Ds, t in [tmin, tmax] (origin, Ds and c scaled
+ * by 2^-e, M the unit direction, len = |Ds|), into r and the method that answered. */
+typedef cdist_status (*cdist__linear_core_fn)(cdist_query *q, vec3 origin, vec3 Ds, vec3 M, double len, double tmin,
+                                              double tmax, const cdist__circle *c, cdist_result *r,
+                                              cdist_method *used);
+
+/* A line or ray query (to a circle, disk 0, or a disk, 1) from its entry to its result: the
+ * validation, the scaling by 2^-e (exact; t is unchanged, D being scaled with the origin), the
+ * core, the result scaled back. The circle's normal and basis (two divisions and a square root
+ * each) are the longest chain before the core: started first. The fast check has no side
+ * effects; a circle it does not accept is checked, and reported, after the line. Inlined into
+ * each entry (an FMA clone: the inlined basis is a chain of fma() calls), the core with it. */
+CD_INLINE cdist_status cdist__linear_query(cdist_query *q, const void *obj, const cdist_vec3 *origin,
+                                           const cdist_vec3 *dir, int is_ray, const cdist_circle *c, int disk,
+                                           cdist__linear_core_fn core, cdist_result *r)
+{
+    cdist_status st = cdist__enter(q, r);
+    if (st) return st;
+    cdist__circle cc;
+    vec3 M;
+    double len;
+    cdist_method used = CDIST_METHOD_ROBUST;
+    int fast = cdist__circle_fast_basis(q->unit_tol, c, &cc);
+    if (!(st = cdist__check_line_ray(q, obj, origin, dir, is_ray, &M, &len)) &&
+        (fast || !(st = cdist__check_circle(q, c, disk ? "disk" : "circle", &cc)))) {
+        int e = cdist__lines_scale_exponent(*origin, NULL, &cc);
+        double down = cdist__pow2(-e);
+        cdist__circle_scale(&cc, down);
+        vec3 Ds = v_scale(down, *dir);
+        st = core(q, v_scale(down, *origin), Ds, M, cdist__lines_scaled_length(len, Ds, down), is_ray ? 0.0 : -INFINITY,
+                  INFINITY, &cc, r, &used);
+        if (st == CDIST_OK) cdist__result_unscale(r, cdist__pow2(e));
+    }
+    return cdist__leave(q, r, st, used);
+}
+
+/* The core of a segment query: the segment p0 + t Ds, t in [0, 1] (p0, p1 = p0 + Ds and c
+ * scaled by 2^-e, M = Ds / len), into r and the method that answered. */
+typedef cdist_status (*cdist__segment_core_fn)(cdist_query *q, vec3 p0, vec3 p1, vec3 Ds, vec3 M, double len,
+                                               const cdist__circle *c, cdist_result *r, cdist_method *used);
+
+/* A segment query (segment-circle, disk 0; segment-disk, 1) from its entry to its result: the
+ * validation, a segment that is a point (point-circle or point-disk with s = 0), the scaling
+ * (before D is normalised, so that 2^k times the input gives exactly 2^k times the answer; the
+ * normalisation of a tiny D takes another path), the core, and end points that are exactly the
+ * caller's. Inlined into each entry, the core with it. */
+CD_INLINE cdist_status cdist__segment_query(cdist_query *q, const cdist_segment *s, const cdist_circle *c, int disk,
+                                            cdist__segment_core_fn core, cdist_result *r)
+{
+    cdist_status st = cdist__enter(q, r);
+    if (st) return st;
+    cdist__circle cc;
+    cdist_method used = cdist__family_method(q, disk ? CD_FAM_SEGMENT_DISK : CD_FAM_SEGMENT_CIRCLE);
+    if ((st = cdist__check_segment(q, s)) || (st = cdist__check_circle(q, c, disk ? "disk" : "circle", &cc)))
+        return cdist__leave(q, r, st, used);
+    vec3 D = v_sub(s->p1, s->p0);
+    if (D.x == 0.0 && D.y == 0.0 && D.z == 0.0) {
+        cdist__point_result(s->p0, &cc, disk, r);
+        r->pairs[0].param[0] = 0.0;
+        return cdist__leave(q, r, CDIST_OK, used);
+    }
+    int e = cdist__lines_scale_exponent(s->p0, &s->p1, &cc);
+    double down = cdist__pow2(-e);
+    cdist__circle_scale(&cc, down);
+    vec3 Ds = v_scale(down, D), M;
+    double len;
+    if (!(st = cdist__check_direction(q, &Ds, "segment direction p1 - p0", 0, &M, &len)) &&
+        !(st = core(q, v_scale(down, s->p0), v_scale(down, s->p1), Ds, M, len, &cc, r, &used))) {
+        cdist__result_unscale(r, cdist__pow2(e));
+        for (int i = 0; i < r->num_pairs; i++) {
+            if (r->pairs[i].param[0] == 0.0) r->pairs[i].point[0] = s->p0;
+            if (r->pairs[i].param[0] == 1.0) r->pairs[i].point[0] = s->p1;
+        }
+    }
+    return cdist__leave(q, r, st, used);
 }
 
 #endif
