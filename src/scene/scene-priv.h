@@ -42,6 +42,7 @@ typedef struct cdist__node {
 } cdist__node;
 
 #define CD_SCENE_NO_POS UINT32_MAX
+enum { CD_SCENE_T_GONE, CD_SCENE_T_OTHER, CD_SCENE_T_CIRCLE };
 /* The most objects a leaf holds (src/scene/scene.c builds leaves of up to CD_SCENE_LEAF). */
 #define CD_SCENE_LEAF_MAX 8
 
@@ -55,6 +56,9 @@ struct cdist_scene {
     size_t tree_n;
     uint32_t *perm;          /* by position: the id */
     cdist__box *box;         /* by position: the object's box (empty when removed) */
+    uint8_t *tcore;          /* by position: CD_SCENE_T_GONE (removed), _T_CIRCLE (a circle
+                              * core: circle, torus) or _T_OTHER; what the broad phase asks of
+                              * an object, kept in tree order so that it reads no object */
     cdist__node *node;
     size_t node_n, node_cap;
     int dirty;               /* objects added or revived since the build: rebuild before a query */
@@ -105,6 +109,8 @@ int cdist__scene_excluded(const cdist__scene_obj *a, const cdist__scene_obj *b, 
 /* ring 0 leaves the ring screen out for two circle cores (cdist__scene_circle_pair: circles and
  * tori), which the narrow phase screens with the batch distance kernel instead. */
 int cdist__scene_circle_pair(const cdist__scene_obj *a, const cdist__scene_obj *b);
+/* An object's tcore value (CD_SCENE_T_OTHER or _T_CIRCLE). */
+uint8_t cdist__scene_tcore(const cdist__scene_obj *o);
 /* The bound margin of a pair: CD_SCENE_BOUND_REL times the two objects' coordinate scales. */
 double cdist__scene_margin(const cdist__scene_obj *a, const cdist__scene_obj *b);
 /* A bound of how far any point of a's solid is from b's when the object changes from a to b

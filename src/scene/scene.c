@@ -311,6 +311,11 @@ int cdist__scene_circle_pair(const cdist__scene_obj *a, const cdist__scene_obj *
     return core_type(a->kind) == CD_CORE_CIRCLE && core_type(b->kind) == CD_CORE_CIRCLE;
 }
 
+uint8_t cdist__scene_tcore(const cdist__scene_obj *o)
+{
+    return core_type(o->kind) == CD_CORE_CIRCLE ? CD_SCENE_T_CIRCLE : CD_SCENE_T_OTHER;
+}
+
 int cdist__scene_excluded(const cdist__scene_obj *oa, const cdist__scene_obj *ob, double lim, int ring)
 {
     bound a, b;
@@ -389,27 +394,40 @@ static uint64_t spread21(uint64_t x)
     return x;
 }
 
-/* Stable LSD radix sort of keys with their payload (8 bits a pass; passes whose digit is the
- * same for every key are skipped). */
+/* Stable LSD radix sort of keys with their payload (8 bits a pass; the digits counted in one
+ * read; passes whose digit is the same for every key are skipped; the arrays and their
+ * workspaces take turns, one copy at the end at most). */
 static void radix_sort(uint64_t *key, uint32_t *val, uint64_t *key_tmp, uint32_t *val_tmp, size_t n)
 {
-    for (int shift = 0; shift < 64; shift += 8) {
-        size_t cnt[256] = {0};
-        for (size_t i = 0; i < n; i++) cnt[(key[i] >> shift) & 255]++;
-        if (n == 0 || cnt[(key[0] >> shift) & 255] == n) continue;
+    if (n == 0) return;
+    size_t cnt[8][256] = {{0}};
+    for (size_t i = 0; i < n; i++)
+        for (int d = 0; d < 8; d++) cnt[d][(key[i] >> (8 * d)) & 255]++;
+    uint64_t *ks = key, *kd = key_tmp;
+    uint32_t *vs = val, *vd = val_tmp;
+    for (int d = 0; d < 8; d++) {
+        int shift = 8 * d;
+        size_t *c = cnt[d];
+        if (c[(key[0] >> shift) & 255] == n) continue;
         size_t sum = 0;
-        for (int d = 0; d < 256; d++) {
-            size_t c = cnt[d];
-            cnt[d] = sum;
-            sum += c;
+        for (int x = 0; x < 256; x++) {
+            size_t t = c[x];
+            c[x] = sum;
+            sum += t;
         }
         for (size_t i = 0; i < n; i++) {
-            size_t at = cnt[(key[i] >> shift) & 255]++;
-            key_tmp[at] = key[i];
-            if (val) val_tmp[at] = val[i];
+            size_t at = c[(ks[i] >> shift) & 255]++;
+            kd[at] = ks[i];
+            if (val) vd[at] = vs[i];
         }
-        memcpy(key, key_tmp, n * sizeof *key);
-        if (val) memcpy(val, val_tmp, n * sizeof *val);
+        uint64_t *kt = ks;
+        ks = kd, kd = kt;
+        uint32_t *vt = vs;
+        vs = vd, vd = vt;
+    }
+    if (ks != key) {
+        memcpy(key, ks, n * sizeof *key);
+        if (val) memcpy(val, vs, n * sizeof *val);
     }
 }
 
@@ -465,8 +483,9 @@ static cdist_status build(cdist_query *q, cdist_scene *s)
     uint32_t *perm = malloc((m ? m : 1) * sizeof *perm), *perm_tmp = malloc((m ? m : 1) * sizeof *perm_tmp);
     cdist__box *box = malloc((m ? m : 1) * sizeof *box);
     cdist__node *node = malloc((m ? m : 1) * sizeof *node);
-    if (!key || !key_tmp || !perm || !perm_tmp || !box || !node) {
-        free(key), free(key_tmp), free(perm), free(perm_tmp), free(box), free(node);
+    uint8_t *tcore = malloc(m ? m : 1);
+    if (!key || !key_tmp || !perm || !perm_tmp || !box || !node || !tcore) {
+        free(key), free(key_tmp), free(perm), free(perm_tmp), free(box), free(node), free(tcore);
         return cdist__fail(q, CDIST_ERR_NO_MEMORY, "scene: out of memory for the tree of %zu objects", m);
     }
     /* The centres of the cores' bounding balls (the centres of their boxes) by id order first
@@ -510,9 +529,11 @@ static cdist_status build(cdist_query *q, cdist_scene *s)
     /* Boxes into tree order. */
     for (size_t p = 0; p < m; p++) cdist__scene_box(&s->obj[perm[p]], &box[p]);
     for (size_t p = 0; p < m; p++) s->pos[perm[p]] = (uint32_t)p;
-    free(s->perm), free(s->box), free(s->node);
+    for (size_t p = 0; p < m; p++) tcore[p] = cdist__scene_tcore(&s->obj[perm[p]]);
+    free(s->perm), free(s->box), free(s->node), free(s->tcore);
     s->perm = perm;
     s->box = box;
+    s->tcore = tcore;
     s->node = node;
     s->node_cap = m ? m : 1;
     s->tree_n = m;
@@ -559,7 +580,7 @@ void cdist_scene_free(cdist_scene *s)
     for (int i = 0; i < s->screen_n; i++) cdist_query_free(s->screen[i]);
     free(s->worker);
     free(s->screen);
-    free(s->obj), free(s->pos), free(s->perm), free(s->box), free(s->node);
+    free(s->obj), free(s->pos), free(s->perm), free(s->box), free(s->node), free(s->tcore);
     free(s->cand), free(s->filter), free(s->chunk_buf);
     free(s->moved), free(s->list_lo), free(s->list_hi);
     free(s);
@@ -729,6 +750,7 @@ cdist_status cdist_scene_update(cdist_query *q, cdist_scene *s, size_t n, const 
                     /* The tree keeps its shape; the boxes above are refitted before the
                      * next query (cdist__scene_prepare). */
                     cdist__scene_box(t, &s->box[p]);
+                    s->tcore[p] = cdist__scene_tcore(t);
                     s->refit_pending = 1;
                 }
             }
@@ -755,7 +777,10 @@ cdist_status cdist_scene_remove(cdist_query *q, cdist_scene *s, size_t n, const 
         if (o->state == CD_SCENE_LIVE) s->live--;
         o->state = CD_SCENE_REMOVED;
         /* An empty box is near nothing; the node boxes above it only stay larger than needed. */
-        if (s->pos[id] != CD_SCENE_NO_POS) box_empty(&s->box[s->pos[id]]);
+        if (s->pos[id] != CD_SCENE_NO_POS) {
+            box_empty(&s->box[s->pos[id]]);
+            s->tcore[s->pos[id]] = CD_SCENE_T_GONE;
+        }
     }
     return leave(q, s, report(q, &f, "remove"));
 }
@@ -807,7 +832,7 @@ cdist_status cdist_scene_get_stats(const cdist_scene *s, cdist_scene_stats *out)
     out->live = s->live;
     out->nodes = s->node_n;
     out->bytes = sizeof *s + s->cap * (sizeof *s->obj + sizeof *s->pos) +
-                 s->tree_n * (sizeof *s->perm + sizeof *s->box) + s->node_cap * sizeof *s->node +
+                 s->tree_n * (sizeof *s->perm + sizeof *s->box + sizeof *s->tcore) + s->node_cap * sizeof *s->node +
                  s->cand_cap * sizeof *s->cand + (s->filter ? 2 * s->cap * sizeof *s->filter : 0) + s->chunk_buf_cap * sizeof *s->chunk_buf +
                  (s->moved ? s->cap * sizeof *s->moved : 0) + 2 * s->list_cap * sizeof *s->list_lo +
                  (size_t)(s->worker_n + s->screen_n) * sizeof(cdist_query);

@@ -120,19 +120,26 @@ static void push(broad *b, uint64_t key)
 }
 
 /* The objects at tree positions pa of sa and pb of sb, ordered i < j within one scene (self):
- * 0 when either is not live or the pair is skipped. */
+ * 0 when either is removed (the objects in a tree are live otherwise) or the pair is skipped.
+ * The objects themselves are not read. */
 static int pair_at(const cdist_scene *sa, const cdist_scene *sb, int self, int filter, uint32_t pa, uint32_t pb,
                    size_t *pi, size_t *pj, const cdist__scene_obj **poa, const cdist__scene_obj **pob)
 {
+    if (sa->tcore[pa] == CD_SCENE_T_GONE || sb->tcore[pb] == CD_SCENE_T_GONE) return 0;
     size_t i = sa->perm[pa], j = sb->perm[pb];
     if (self && i > j) {
         size_t t = i;
         i = j, j = t;
     }
-    const cdist__scene_obj *oa = &sa->obj[i], *ob = &sb->obj[j];
-    if (oa->state != CD_SCENE_LIVE || ob->state != CD_SCENE_LIVE || (self && filter && skipped(sa, i, j))) return 0;
-    *pi = i, *pj = j, *poa = oa, *pob = ob;
+    if (self && filter && skipped(sa, i, j)) return 0;
+    *pi = i, *pj = j, *poa = &sa->obj[i], *pob = &sb->obj[j];
     return 1;
+}
+
+/* Both objects at tree positions pa of sa and pb of sb have circle cores. */
+static int circle_pair_at(const broad *b, uint32_t pa, uint32_t pb)
+{
+    return b->sa->tcore[pa] == CD_SCENE_T_CIRCLE && b->sb->tcore[pb] == CD_SCENE_T_CIRCLE;
 }
 
 /* Two rings (circle or torus objects) whose solids' bounding balls are apart by more than
@@ -152,14 +159,14 @@ static void test_pos(broad *b, uint32_t pa, uint32_t pb)
     size_t i, j;
     const cdist__scene_obj *oa, *ob;
     if (!pair_at(b->sa, b->sb, b->self, !b->link, pa, pb, &i, &j, &oa, &ob)) return;
-    if (b->link && !cdist__scene_circle_pair(oa, ob)) return;
+    if (b->link && !circle_pair_at(b, pa, pb)) return;
     b->box_pairs++;
     if (b->list) {
         push(b, (uint64_t)i << 32 | j);
         return;
     }
     if (b->link ? link_excluded(oa, ob)
-                : !(b->screen && cdist__scene_circle_pair(oa, ob)) &&
+                : !(b->screen && circle_pair_at(b, pa, pb)) &&
                       cdist__scene_excluded(oa, ob, b->reach ? b->delta + b->reach[i] + b->reach[j] : b->delta, 0))
         return;
     push(b, (uint64_t)i << 32 | j);
