@@ -101,6 +101,13 @@ uint64_t cdist__cc_quick_lanes(const struct cdist__cc_frame *const *f, int count
 uint64_t cdist__circle_pairs_lanes(const cdist__job *job, double unit_tol, size_t lo, int count, int lanes,
                                    uint64_t swap, cdist__circle *a, cdist__circle *b, double *up, double *bscale);
 
+/* cdist_circle_circle(q, a[k], b[k], r[k]) for k < n, every answer the same to the bit, each
+ * followed by done(ctx, k, its status) (q's message is the entry's then); the certified searches
+ * of the entries that reach them run in lanes together (cdist__cc_staged_start,
+ * cdist__cc_quick_lanes, cdist__cc_staged_finish). */
+void cdist__circle_circle_many(cdist_query *q, size_t n, const cdist_circle *const *a, const cdist_circle *const *b,
+                               cdist_result *const *r, void (*done)(void *ctx, size_t i, cdist_status st), void *ctx);
+
 /* Distance kernels of circle-disk (disk = 0) and disk-disk (1), ROBUST method, for entries
  * [lo, lo + count), count <= 64: the single query's own stages (cdist__cd_stage_start) with the
  * rim searches of the block in lanes (cdist__cc_quick_lanes), so the distances are

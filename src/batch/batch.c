@@ -230,8 +230,45 @@ static uint64_t run_contact_kernel(int kernel, const cdist_query *h, const cdist
     return left;
 }
 
+/* An entry of a circle-circle batch answered (cdist__circle_circle_many). */
+typedef struct cc_many_ctx {
+    cdist_query *h;
+    const cdist__job *job;
+    size_t lo;
+    cdist__slot *slot;
+} cc_many_ctx;
+
+static void cc_many_done(void *ctx, size_t k, cdist_status st)
+{
+    cc_many_ctx *x = ctx;
+    if (x->job->statuses) x->job->statuses[x->lo + k] = st;
+    record(x->slot, x->h, x->lo + k, st);
+}
+
+/* Full circle-circle results, their searches in lanes: the entries [lo, hi) by blocks. */
+static void cc_many_range(cdist_query *h, const cdist__job *job, size_t lo, size_t hi, cdist__slot *slot)
+{
+    enum { BLOCK = 64 };
+    const cdist_circle *a[BLOCK], *b[BLOCK];
+    cdist_result *r[BLOCK];
+    for (size_t i = lo; i < hi; i += BLOCK) {
+        size_t cnt = hi - i < BLOCK ? hi - i : BLOCK;
+        for (size_t k = 0; k < cnt; k++) {
+            a[k] = cdist__job_a(job, i + k);
+            b[k] = cdist__job_b(job, i + k);
+            r[k] = (cdist_result *)((char *)job->results + (i + k) * job->result_size);
+        }
+        cc_many_ctx x = {h, job, i, slot};
+        cdist__circle_circle_many(h, cnt, a, b, r, cc_many_done, &x);
+    }
+}
+
 void cdist__batch_range(cdist_query *h, const cdist__job *job, size_t lo, size_t hi, cdist__slot *slot)
 {
+    if (job->out == CD_OUT_RESULT && job->kind == CDIST_KIND_CIRCLE_CIRCLE) {
+        cc_many_range(h, job, lo, hi, slot);
+        return;
+    }
     int kernel = job_kernel(h, job);
     if (kernel != NO_KERNEL) {
         int contact = kinds[job->kind].contact;

@@ -195,6 +195,33 @@ uint64_t cdist__cc_quick_lanes(const cdist__cc_frame *const *f, int count, int l
     return found;
 }
 
+void cdist__circle_circle_many(cdist_query *q, size_t n, const cdist_circle *const *a, const cdist_circle *const *b,
+                               cdist_result *const *r, void (*done)(void *ctx, size_t i, cdist_status st), void *ctx)
+{
+    enum { SUB = 16 }; /* the entries whose stages are kept at once (in the first-level cache) */
+    cdist__cc_staged x[SUB];
+    const cdist__cc_frame *f[SUB];
+    double t[SUB], c[SUB], s[SUB], d2[SUB];
+    int staged[SUB];
+    for (size_t lo = 0; lo < n; lo += SUB) {
+        int cnt = n - lo < SUB ? (int)(n - lo) : SUB, m = 0;
+        for (int k = 0; k < cnt; k++)
+            if ((staged[k] = cdist__cc_staged_start(q, a[lo + (size_t)k], b[lo + (size_t)k], &x[k]))) f[m++] = &x[k].rs.f;
+        uint64_t found = m ? cdist__cc_quick_lanes(f, m, 0, t, c, s, d2) : 0;
+        for (int k = 0, j = 0; k < cnt; k++) {
+            size_t i = lo + (size_t)k;
+            cdist_status st;
+            if (!staged[k]) {
+                st = cdist_circle_circle(q, a[i], b[i], r[i]);
+            } else {
+                st = cdist__cc_staged_finish(q, &x[k], (int)(found >> j & 1), t[j], c[j], s[j], r[i]);
+                j++;
+            }
+            done(ctx, i, st);
+        }
+    }
+}
+
 uint64_t cdist__circle_pairs_lanes(const cdist__job *job, double unit_tol, size_t lo, int count, int lanes,
                                    uint64_t swap, cdist__circle *a, cdist__circle *b, double *up, double *bscale)
 {

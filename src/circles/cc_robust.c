@@ -44,18 +44,21 @@ CD_FMA_CLONES int cdist__cc_prepare(const cdist__circle *c0, const cdist__circle
     return 1;
 }
 
-/* The robust method (see the header comment). */
-cdist_status cdist__cc_robust(cdist_query *q, const cdist__circle *c0, const cdist__circle *c1, cdist__best *b)
+/* The robust method up to its certified search (the state in *s, which the sink points into:
+ * not to be moved): CDIST__CC_ANSWERED (a radius 0: b holds the answer), CDIST__CC_SEARCH (the
+ * search is to run on s->f, then cdist__cc_pair_final or, when it does not certify,
+ * cdist__cc_robust_engine) or CDIST__CC_ENGINE (the search cannot certify here). */
+int cdist__cc_robust_start(const cdist__circle *c0, const cdist__circle *c1, cdist__best *b, cdist__cc_robust_state *s)
 {
-    cdist__cc_problem pb;
-    if (!cdist__cc_prepare(c0, c1, &pb)) {
-        vec3 C = pb.C;
-        int sw = pb.swapped;
+    cdist__cc_problem *pb = &s->pb;
+    if (!cdist__cc_prepare(c0, c1, pb)) {
+        vec3 C = pb->C;
+        int sw = pb->swapped;
         const cdist__circle *A = sw ? c1 : c0;
         if (A->r == 0.0) {
             /* Both are points. */
             cdist__best_offer(b, v_sqr(C), c0->c, c1->c, NAN, NAN);
-            return CDIST_OK;
+            return CDIST__CC_ANSWERED;
         }
         /* B is a point: the point-circle core (equidistant when it is on A's axis). */
         if (!sw) {
@@ -68,47 +71,62 @@ cdist_status cdist__cc_robust(cdist_query *q, const cdist__circle *c0, const cdi
                 cdist__best_offer_flag(b, t.c[i].equidistant, t.c[i].d2, v_add(t.c[i].p[0], C), v_add(t.c[i].p[1], C),
                                    t.c[i].param[0], t.c[i].param[1]);
         }
-        return CDIST_OK;
+        return CDIST__CC_ANSWERED;
     }
-    int sw = pb.swapped;
-    double unsc = pb.unscale;
-    const cdist__circle *A = &pb.A, *B = &pb.B;
-    vec3 CB = pb.CB;
-    cdist__cc_frame f;
-    cdist__cc_frame_ring(&f, A, CB, B);
-    cdist__cc_sink k = {.f = &f, .best = b, .prune = 1, .unscale = unsc, .swapped = sw, .A = A, .B = B,  .Fmin = INFINITY,
-                 .dmin = INFINITY, .rho_min = INFINITY};
-    double Fmax, tp[4], tq, cq, sq;
-    int np = cdist__cc_parallel_critical(&f, tp);
-    if (np < 0 && cdist__cc_quick_worth(&f) && cdist__cc_quick(&f, &tq, &cq, &sq)) {
-        /* One certified minimum, not tiny: its pair. Neither equidistance test below can hold:
-         * (a) F rises by the certificate's margin elsewhere, and (b) the convex basin keeps
-         * B's axis more than 3 W1 h >= 2e-3 R away (ck_convex), far above its threshold. */
-        cdist__cc_pair_final(&f, tq, cq, sq, &k);
-        return CDIST_OK;
-    }
-    if (np < 0) cdist__cc_frame_bounds(&f);
+    cdist__cc_frame_ring(&s->f, &pb->A, pb->CB, &pb->B);
+    s->k = (cdist__cc_sink){.f = &s->f, .best = b, .prune = 1, .unscale = pb->unscale, .swapped = pb->swapped,
+                            .A = &pb->A, .B = &pb->B, .Fmin = INFINITY, .dmin = INFINITY, .rho_min = INFINITY};
+    s->np = cdist__cc_parallel_critical(&s->f, s->tp);
+    return s->np < 0 && cdist__cc_quick_worth(&s->f) ? CDIST__CC_SEARCH : CDIST__CC_ENGINE;
+}
+
+/* The robust method after its search (or without it): the closed forms of parallel planes, else
+ * the root-isolation engine. */
+cdist_status cdist__cc_robust_engine(cdist_query *q, cdist__cc_robust_state *s)
+{
+    cdist__cc_frame *fp = &s->f;
+    cdist__cc_sink *k = &s->k;
+    cdist__best *b = k->best;
+    double Fmax;
+    int np = s->np;
+    if (np < 0) cdist__cc_frame_bounds(fp);
     if (np > 0) {
         /* Closed form; F's extremes are at rho's extremes (the first two angles). */
         Fmax = 0;
         for (int i = 0; i < np; i++) {
             cdist__cc_pt p;
-            double c, s;
-            sincos(tp[i], &s, &c);
-            cdist__cc_eval_lean(&f, tp[i], c, s, &p);
+            double c, sn;
+            sincos(s->tp[i], &sn, &c);
+            cdist__cc_eval_lean(fp, s->tp[i], c, sn, &p);
             if (p.F > Fmax) Fmax = p.F;
-            cdist__cc_pair_at(&f, tp[i], &k);
+            cdist__cc_pair_at(fp, s->tp[i], k);
         }
     } else {
-        cdist__cc_scan(&f, &k, &Fmax);
+        cdist__cc_scan(fp, k, &Fmax);
     }
     /* F' never went from - to +: F is constant to rounding; any point is a closest one. */
-    if (b->n == 0 && isfinite(k.Fmin)) cdist__cc_pair_at(&f, k.tmin, &k);
-    if (b->n == 0 || !isfinite(k.dmin)) return cdist__fail(q, CDIST_ERR_INTERNAL, "circle-circle: no minimum found");
-    cdist__cc_settle_d2(&f, &k);
+    if (b->n == 0 && isfinite(k->Fmin)) cdist__cc_pair_at(fp, k->tmin, k);
+    if (b->n == 0 || !isfinite(k->dmin)) return cdist__fail(q, CDIST_ERR_INTERNAL, "circle-circle: no minimum found");
+    cdist__cc_settle_d2(fp, k);
     /* (a) F constant on A; (b) the closest point of A on B's axis. */
-    if (sqrt(Fmax) - k.dmin <= CD_CC_EQUI_ULPS * DBL_EPSILON * f.L) b->equidistant = 1;
-    if (k.rho_min <= CD_CC_AXIS_ULPS * f.epsL * cdist__fmin(1.0, f.s / f.L)) b->equidistant = 1;
+    if (sqrt(Fmax) - k->dmin <= CD_CC_EQUI_ULPS * DBL_EPSILON * fp->L) b->equidistant = 1;
+    if (k->rho_min <= CD_CC_AXIS_ULPS * fp->epsL * cdist__fmin(1.0, fp->s / fp->L)) b->equidistant = 1;
     return CDIST_OK;
 }
 
+/* The robust method (see the header comment). */
+cdist_status cdist__cc_robust(cdist_query *q, const cdist__circle *c0, const cdist__circle *c1, cdist__best *b)
+{
+    cdist__cc_robust_state s;
+    int next = cdist__cc_robust_start(c0, c1, b, &s);
+    if (next == CDIST__CC_ANSWERED) return CDIST_OK;
+    double tq, cq, sq;
+    if (next == CDIST__CC_SEARCH && cdist__cc_quick(&s.f, &tq, &cq, &sq)) {
+        /* One certified minimum, not tiny: its pair. Neither equidistance test of the engine can
+         * hold: (a) F rises by the certificate's margin elsewhere, and (b) the convex basin keeps
+         * B's axis more than 3 W1 h >= 2e-3 R away (ck_convex), far above its threshold. */
+        cdist__cc_pair_final(&s.f, tq, cq, sq, &s.k);
+        return CDIST_OK;
+    }
+    return cdist__cc_robust_engine(q, &s);
+}

@@ -159,6 +159,37 @@ static cdist_status cc_query(cdist_query *q, cdist_method method, cdist__circle 
     return CDIST_OK;
 }
 
+int cdist__cc_staged_start(cdist_query *q, const cdist_circle *c0, const cdist_circle *c1, cdist__cc_staged *s)
+{
+    if (!q) return 0;
+    cdist_method m = cdist__family_method(q, CD_FAM_CIRCLE_CIRCLE);
+    if (m != CDIST_METHOD_AUTO && m != CDIST_METHOD_ROBUST) return 0;
+    /* the fast check accepts what cdist__check_circle accepts, with the same circle */
+    if (!cdist__circle_fast_basis(q->unit_tol, c0, &s->a) || !cdist__circle_fast_basis(q->unit_tol, c1, &s->b)) return 0;
+    s->e = cdist__circles_frame(&s->a, &s->b, &s->offset, &s->best);
+    cdist__best_init(&s->best, s->best.scale);
+    return cdist__cc_robust_start(&s->a, &s->b, &s->best, &s->rs) == CDIST__CC_SEARCH;
+}
+
+cdist_status cdist__cc_staged_finish(cdist_query *q, cdist__cc_staged *s, int found, double t, double c, double sn,
+                                     cdist_result *r)
+{
+    cdist_status st = cdist__enter(q, r);
+    if (st) return st;
+    if (found) cdist__cc_pair_final(&s->rs.f, t, c, sn, &s->rs.k);
+    else st = cdist__cc_robust_engine(q, &s->rs);
+    if (st == CDIST_OK) {
+        cc_same_basin_filter(&s->a, &s->b, &s->best);
+        if (s->best.n == 0) {
+            st = cdist__fail(q, CDIST_ERR_INTERNAL, "circle-circle found no candidate");
+        } else {
+            cdist__circles_result(&s->best, 0, s->e, s->offset, r);
+            r->iterations = 0;
+        }
+    }
+    return cdist__leave(q, r, st, CDIST_METHOD_ROBUST);
+}
+
 cdist_status cdist_circle_circle(cdist_query *q, const cdist_circle *c0, const cdist_circle *c1, cdist_result *r)
 {
     cdist_status st = cdist__enter(q, r);

@@ -187,6 +187,35 @@ typedef struct cdist__cc_problem {
 int cdist__cc_prepare(const cdist__circle *c0, const cdist__circle *c1, cdist__cc_problem *p);
 /* The robust method (c0 at the origin). */
 cdist_status cdist__cc_robust(cdist_query *q, const cdist__circle *c0, const cdist__circle *c1, cdist__best *b);
+/* The robust method in stages (cc_robust.c): its state up to the certified search, the start
+ * and the engine that follows a search that does not certify. */
+typedef struct cdist__cc_robust_state {
+    cdist__cc_problem pb;
+    cdist__cc_frame f;
+    cdist__cc_sink k;
+    double tp[4];
+    int np;
+} cdist__cc_robust_state;
+enum { CDIST__CC_ANSWERED, CDIST__CC_SEARCH, CDIST__CC_ENGINE };
+int cdist__cc_robust_start(const cdist__circle *c0, const cdist__circle *c1, cdist__best *b, cdist__cc_robust_state *s);
+cdist_status cdist__cc_robust_engine(cdist_query *q, cdist__cc_robust_state *s);
+
+/* cdist_circle_circle() in stages, for batches that run many entries' certified searches in
+ * lanes (src/batch): cdist__cc_staged_start returns 1 when the query (method AUTO or ROBUST,
+ * both circles accepted by the fast check) reaches the search with frame s->rs.f, and writes
+ * nothing else (0: the caller asks cdist_circle_circle); cdist__cc_staged_finish, given what
+ * the search found (found, its angle t and cos, sin), completes r and returns the status exactly
+ * as cdist_circle_circle() does. *s is not to be moved in between (the sink points into it). */
+typedef struct cdist__cc_staged {
+    cdist__circle a, b;
+    vec3 offset;
+    int e;
+    cdist__best best;
+    cdist__cc_robust_state rs;
+} cdist__cc_staged;
+int cdist__cc_staged_start(cdist_query *q, const cdist_circle *c0, const cdist_circle *c1, cdist__cc_staged *s);
+cdist_status cdist__cc_staged_finish(cdist_query *q, cdist__cc_staged *s, int found, double t, double c, double sn,
+                                     cdist_result *r);
 /* Circle c (centre at the origin) to disk d, solved into a fresh collector and merged into b
  * (an equidistant sub-result makes b equidistant only where it attains b's minimum); dcap: a
  * distance attained elsewhere (INFINITY: none), like b's best: minima of the rim distance above
