@@ -230,43 +230,72 @@ static uint64_t run_contact_kernel(int kernel, const cdist_query *h, const cdist
     return left;
 }
 
-/* An entry of a circle-circle batch answered (cdist__circle_circle_many). */
-typedef struct cc_many_ctx {
+/* Circle-circle and torus-torus entries with full results, contacts or gradients: the single
+ * queries, their cores' certified searches in lanes (cdist__circle_circle_many), each core
+ * answer then made the entry's as its query makes it (cdist__swept_query's contact,
+ * cdist__grad_fill's gradient). */
+enum { MANY_BLOCK = 16 }; /* about 10 KB of block on the stack */
+typedef struct many_block {
     cdist_query *h;
     const cdist__job *job;
     size_t lo;
     cdist__slot *slot;
-} cc_many_ctx;
+    cdist__core_obj a[MANY_BLOCK], b[MANY_BLOCK];
+    cdist_result core[MANY_BLOCK], *r[MANY_BLOCK]; /* where each core answer goes */
+    cdist_contact contact[MANY_BLOCK], *c[MANY_BLOCK];
+} many_block;
 
-static void cc_many_done(void *ctx, size_t k, cdist_status st)
+static int many_job(const cdist__job *job)
 {
-    cc_many_ctx *x = ctx;
-    if (x->job->statuses) x->job->statuses[x->lo + k] = st;
-    record(x->slot, x->h, x->lo + k, st);
+    return job->out != CD_OUT_DISTANCE &&
+           (job->kind == CDIST_KIND_CIRCLE_CIRCLE || job->kind == CDIST_KIND_TORUS_TORUS);
 }
 
-/* Full circle-circle results, their searches in lanes: the entries [lo, hi) by blocks. */
-static void cc_many_range(cdist_query *h, const cdist__job *job, size_t lo, size_t hi, cdist__slot *slot)
+static void many_done(void *ctx, size_t k, cdist_status st)
 {
-    enum { BLOCK = 64 };
-    const cdist_circle *a[BLOCK], *b[BLOCK];
-    cdist_result *r[BLOCK];
-    for (size_t i = lo; i < hi; i += BLOCK) {
-        size_t cnt = hi - i < BLOCK ? hi - i : BLOCK;
+    many_block *x = ctx;
+    const cdist__job *job = x->job;
+    size_t i = x->lo + k;
+    if (job->kind == CDIST_KIND_TORUS_TORUS)
+        st = cdist__contact_of_core_query(x->h, &x->a[k], &x->b[k], st, x->r[k], x->c[k]);
+    if (job->out == CD_OUT_GRAD && st == CDIST_OK) cdist__grad_fill(&x->a[k], &x->b[k], x->r[k], &job->grads[i]);
+    if (job->statuses) job->statuses[i] = st;
+    record(x->slot, x->h, i, st);
+}
+
+static void many_range(cdist_query *h, const cdist__job *job, size_t lo, size_t hi, cdist__slot *slot)
+{
+    many_block x;
+    int torus = job->kind == CDIST_KIND_TORUS_TORUS;
+    const cdist_circle *pa[MANY_BLOCK], *pb[MANY_BLOCK];
+    for (size_t i = lo; i < hi; i += MANY_BLOCK) {
+        size_t cnt = hi - i < MANY_BLOCK ? hi - i : MANY_BLOCK;
+        x.h = h, x.job = job, x.lo = i, x.slot = slot;
         for (size_t k = 0; k < cnt; k++) {
-            a[k] = cdist__job_a(job, i + k);
-            b[k] = cdist__job_b(job, i + k);
-            r[k] = (cdist_result *)((char *)job->results + (i + k) * job->result_size);
+            const void *ea = cdist__job_a(job, i + k), *eb = cdist__job_b(job, i + k);
+            char *kept = job->results ? (char *)job->results + (i + k) * job->result_size : NULL;
+            if (torus) {
+                x.a[k] = CD_SWEPT_TORUS((const cdist_torus *)ea);
+                x.b[k] = CD_SWEPT_TORUS((const cdist_torus *)eb);
+                x.r[k] = &x.core[k];
+                x.c[k] = kept ? (cdist_contact *)kept : &x.contact[k];
+            } else {
+                x.a[k] = cdist__plain_core(CD_CORE_CIRCLE, ea);
+                x.b[k] = cdist__plain_core(CD_CORE_CIRCLE, eb);
+                x.r[k] = kept ? (cdist_result *)kept : &x.core[k];
+            }
+            pa[k] = x.a[k].obj;
+            pb[k] = x.b[k].obj;
+            if (job->out == CD_OUT_GRAD) cdist__grad_set_error(&job->grads[i + k]);
         }
-        cc_many_ctx x = {h, job, i, slot};
-        cdist__circle_circle_many(h, cnt, a, b, r, cc_many_done, &x);
+        cdist__circle_circle_many(h, cnt, pa, pb, x.r, many_done, &x);
     }
 }
 
 void cdist__batch_range(cdist_query *h, const cdist__job *job, size_t lo, size_t hi, cdist__slot *slot)
 {
-    if (job->out == CD_OUT_RESULT && job->kind == CDIST_KIND_CIRCLE_CIRCLE) {
-        cc_many_range(h, job, lo, hi, slot);
+    if (many_job(job) && cdist__family_method(h, CD_FAM_CIRCLE_CIRCLE) == CDIST_METHOD_ROBUST) {
+        many_range(h, job, lo, hi, slot);
         return;
     }
     int kernel = job_kernel(h, job);

@@ -159,7 +159,8 @@ static cdist_status cc_query(cdist_query *q, cdist_method method, cdist__circle 
     return CDIST_OK;
 }
 
-int cdist__cc_staged_start(cdist_query *q, const cdist_circle *c0, const cdist_circle *c1, cdist__cc_staged *s)
+/* FMA clones: the inlined checks and bases are chains of fma() calls outside a clone. */
+CD_FMA_CLONES int cdist__cc_staged_start(cdist_query *q, const cdist_circle *c0, const cdist_circle *c1, cdist__cc_staged *s)
 {
     if (!q) return 0;
     cdist_method m = cdist__family_method(q, CD_FAM_CIRCLE_CIRCLE);
@@ -171,7 +172,7 @@ int cdist__cc_staged_start(cdist_query *q, const cdist_circle *c0, const cdist_c
     return cdist__cc_robust_start(&s->a, &s->b, &s->best, &s->rs) == CDIST__CC_SEARCH;
 }
 
-cdist_status cdist__cc_staged_finish(cdist_query *q, cdist__cc_staged *s, int found, double t, double c, double sn,
+CD_FMA_CLONES cdist_status cdist__cc_staged_finish(cdist_query *q, cdist__cc_staged *s, int found, double t, double c, double sn,
                                      cdist_result *r)
 {
     cdist_status st = cdist__enter(q, r);

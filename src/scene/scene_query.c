@@ -45,38 +45,78 @@ static void pair_error(cdist_scene_pair *p, size_t i, size_t j, cdist_status st)
     for (int k = 0; k < 2; k++) p->point[k][0] = p->point[k][1] = v3(NAN, NAN, NAN);
 }
 
-/* The exact answer of the pair (a first). Returns 1 when it is to be reported: distance <= lim,
- * or a failure (reported always). */
+/* The record of pair (i, j) from its contact c (status st): 1 when it is to be reported
+ * (distance <= lim, or a failure, reported always); *dist its distance (NaN on failure). */
+static int pair_record(const cdist_contact *c, cdist_status st, size_t i, size_t j, double lim, cdist_scene_pair *p,
+                       double *dist)
+{
+    if (dist) *dist = NAN;
+    if (st) {
+        pair_error(p, i, j, st);
+        return 1;
+    }
+    if (dist) *dist = c->distance;
+    if (!(c->distance <= lim)) return 0;
+    p->i = i;
+    p->j = j;
+    p->distance = c->distance;
+    p->status = CDIST_OK;
+    p->num_pairs = c->num_pairs;
+    p->flags = (c->equidistant ? CDIST_SCENE_PAIR_EQUIDISTANT : 0) |
+               ((c->flags & CDIST_CONTACT_CORE_TOUCH) ? CDIST_SCENE_PAIR_CORE_TOUCH : 0);
+    p->reserved = 0;
+    for (int k = 0; k < 2; k++) {
+        p->point[k][0] = k < c->num_pairs ? c->pairs[k].point[0] : v3(NAN, NAN, NAN);
+        p->point[k][1] = k < c->num_pairs ? c->pairs[k].point[1] : v3(NAN, NAN, NAN);
+    }
+    return 1;
+}
+
+/* The exact answer of the pair (a first), as pair_record reports it. */
 static int answer(cdist_query *h, const cdist__scene_obj *a, const cdist__scene_obj *b, size_t i, size_t j, double lim,
                   cdist_scene_pair *p, double *dist)
 {
     cdist__core_obj ca = cdist__scene_core(a), cb = cdist__scene_core(b);
-    if (dist) *dist = NAN;
     if (unsupported(ca.type, cb.type)) {
+        if (dist) *dist = NAN;
         pair_error(p, i, j, CDIST_ERR_BAD_KIND);
         return 1;
     }
     cdist_contact c;
     cdist_status st = cdist__swept_query(h, &ca, &cb, &c, NULL);
-    if (st) {
-        pair_error(p, i, j, st);
-        return 1;
+    return pair_record(&c, st, i, j, lim, p, dist);
+}
+
+/* The exact answers of pairs of circle cores (circles, tori), CIRCLES at a time: their cores'
+ * certified searches run in lanes together (cdist__circle_circle_many), each answer the swept
+ * query's to the bit. */
+enum { CIRCLES = 16 };
+typedef struct circles_ahead {
+    cdist__core_obj a[CIRCLES], b[CIRCLES];
+    cdist_result core[CIRCLES];
+    cdist_contact c[CIRCLES];
+    cdist_status st[CIRCLES];
+    cdist_query *h;
+    int n, used; /* answers made, taken */
+} circles_ahead;
+
+static void circles_done(void *ctx, size_t k, cdist_status st)
+{
+    circles_ahead *x = ctx;
+    x->st[k] = cdist__contact_of_core_query(x->h, &x->a[k], &x->b[k], st, &x->core[k], &x->c[k]);
+}
+
+static void circles_answer(circles_ahead *x)
+{
+    const cdist_circle *pa[CIRCLES], *pb[CIRCLES];
+    cdist_result *pr[CIRCLES];
+    for (int k = 0; k < x->n; k++) {
+        pa[k] = x->a[k].obj;
+        pb[k] = x->b[k].obj;
+        pr[k] = &x->core[k];
     }
-    if (dist) *dist = c.distance;
-    if (!(c.distance <= lim)) return 0;
-    p->i = i;
-    p->j = j;
-    p->distance = c.distance;
-    p->status = CDIST_OK;
-    p->num_pairs = c.num_pairs;
-    p->flags = (c.equidistant ? CDIST_SCENE_PAIR_EQUIDISTANT : 0) |
-               ((c.flags & CDIST_CONTACT_CORE_TOUCH) ? CDIST_SCENE_PAIR_CORE_TOUCH : 0);
-    p->reserved = 0;
-    for (int k = 0; k < 2; k++) {
-        p->point[k][0] = k < c.num_pairs ? c.pairs[k].point[0] : v3(NAN, NAN, NAN);
-        p->point[k][1] = k < c.num_pairs ? c.pairs[k].point[1] : v3(NAN, NAN, NAN);
-    }
-    return 1;
+    cdist__circle_circle_many(x->h, (size_t)x->n, pa, pb, pr, circles_done, x);
+    x->used = 0;
 }
 
 static const char *pair_message(cdist_status st)
@@ -358,22 +398,49 @@ static void run_chunk(narrow *w, cdist_query *h, cdist_query *hs, size_t c)
     if (nc > 0 && cdist__batch_screen(hs, nc, ca, cb, cut, dist) == CDIST_ERR_HANDLE_BUSY)
         for (size_t t = 0; t < nc; t++) dist[t] = NAN;
     nc = 0;
+    /* the pairs to answer exactly, in key order; those of two circle cores are answered
+     * CIRCLES at a time ahead of their turn */
+    size_t todo[CD_SCENE_CHUNK], nt = 0;
     for (size_t k = lo; k < hi; k++) {
         if (act[k - lo] == ACT_SKIP) continue;
-        size_t i, j;
-        const cdist__scene_obj *b = key_pair(w, k, &i, &j), *a = &w->sa->obj[i];
-        double margin = w->lo ? mg[k - lo] : 0.0, d;
         if (act[k - lo] == ACT_SCREEN) {
-            margin = mg[k - lo];
-            d = dist[nc++] - (a->r + b->r);
+            size_t i, j;
+            const cdist__scene_obj *b = key_pair(w, k, &i, &j), *a = &w->sa->obj[i];
+            double d = dist[nc++] - (a->r + b->r);
             /* above: d is the distance or a lower bound of it; otherwise the full query below
              * learns the exact distance */
-            if (d - margin > w->lim) {
-                if (w->lo) list_learn(w, k, mm[k - lo], d - margin, INFINITY);
+            if (d - mg[k - lo] > w->lim) {
+                if (w->lo) list_learn(w, k, mm[k - lo], d - mg[k - lo], INFINITY);
                 continue;
             }
         }
-        m += answer(h, a, b, i, j, w->lim, &out[m], &d);
+        todo[nt++] = k;
+    }
+    circles_ahead ahead;
+    ahead.h = h;
+    ahead.n = ahead.used = 0;
+    size_t scan = 0; /* todo[scan ..] not yet looked at for the answers ahead */
+    for (size_t t = 0; t < nt; t++) {
+        size_t k = todo[t], i, j;
+        const cdist__scene_obj *b = key_pair(w, k, &i, &j), *a = &w->sa->obj[i];
+        double margin = act[k - lo] == ACT_SCREEN || w->lo ? mg[k - lo] : 0.0, d;
+        if (cdist__scene_circle_pair(a, b)) {
+            if (ahead.used == ahead.n) {
+                ahead.n = 0;
+                for (scan = scan > t ? scan : t; scan < nt && ahead.n < CIRCLES; scan++) {
+                    size_t si, sj;
+                    const cdist__scene_obj *sb = key_pair(w, todo[scan], &si, &sj), *sa = &w->sa->obj[si];
+                    if (!cdist__scene_circle_pair(sa, sb)) continue;
+                    ahead.a[ahead.n] = cdist__scene_core(sa);
+                    ahead.b[ahead.n++] = cdist__scene_core(sb);
+                }
+                circles_answer(&ahead);
+            }
+            int u = ahead.used++;
+            m += pair_record(&ahead.c[u], ahead.st[u], i, j, w->lim, &out[m], &d);
+        } else {
+            m += answer(h, a, b, i, j, w->lim, &out[m], &d);
+        }
         if (w->lo) list_learn(w, k, mm[k - lo], d - margin, d + margin);
         full++;
     }

@@ -226,7 +226,8 @@ static int not_differentiable(const cdist__core_obj *a, const cdist__core_obj *b
     return 0;
 }
 
-void cdist__grad_fill(const cdist__core_obj *a, const cdist__core_obj *b, const cdist_result *r, cdist_grad *g)
+/* FMA clone: its fma() are instructions there, not calls. */
+CD_FMA_CLONES void cdist__grad_fill(const cdist__core_obj *a, const cdist__core_obj *b, const cdist_result *r, cdist_grad *g)
 {
     memset(g, 0, sizeof *g);
     if (a->swept) g->obj[0].d_radius_swept = -1.0;

@@ -57,7 +57,7 @@ cdist_status cdist__core_query(cdist_query *q, const cdist__core_obj *a, const c
 static inline int cdist__cores_touch(const cdist_result *r, int i)
 {
     vec3 p = r->pairs[i].point[0], q = r->pairs[i].point[1];
-    return !(r->distance > CD_CONTACT_TOUCH_ULPS * DBL_EPSILON * fmax(v_maxabs(p), v_maxabs(q))) ||
+    return !(r->distance > CD_CONTACT_TOUCH_ULPS * DBL_EPSILON * cdist__fmax(v_maxabs(p), v_maxabs(q))) ||
            v_maxabs(v_sub(q, p)) == 0.0;
 }
 
@@ -65,6 +65,18 @@ static inline int cdist__cores_touch(const cdist_result *r, int i)
  * (may be NULL) receives the core result. */
 cdist_status cdist__swept_query(cdist_query *q, const cdist__core_obj *a, const cdist__core_obj *b, cdist_contact *c,
                             cdist_result *core);
+/* The radius passes the swept query's check (finite, >= 0, <= CD_MAX_ABS; one comparison each,
+ * false for NaN), or the object has none. */
+static inline int cdist__radius_valid(const cdist__core_obj *o)
+{
+    return !o->swept || (o->radius >= 0.0 && o->radius <= CD_MAX_ABS);
+}
+/* The contact of a swept query from its core result r (the core query succeeded). */
+void cdist__contact_of_core(const cdist__core_obj *a, const cdist__core_obj *b, const cdist_result *r, cdist_contact *c);
+/* cdist__swept_query(q, a, b, c, core) for a contact c given, when the core query has already
+ * answered (status st, *core): the same contact and status, to the bit. */
+cdist_status cdist__contact_of_core_query(cdist_query *q, const cdist__core_obj *a, const cdist__core_obj *b,
+                                          cdist_status st, cdist_result *core, cdist_contact *c);
 /* A contact in the error state (NaN, no pairs, flags 0). */
 void cdist__contact_set_error(cdist_contact *c);
 /* Fill g from the core result r (the query succeeded). */

@@ -317,9 +317,6 @@ static cdist_status check_radius(cdist_query *q, const cdist__core_obj *o, const
     return CDIST_OK;
 }
 
-/* The radius passes check_radius (finite, >= 0, <= CD_MAX_ABS; one comparison each, false for
- * NaN), or the object has none. */
-static int radius_valid(const cdist__core_obj *o) { return !o->swept || (o->radius >= 0.0 && o->radius <= CD_MAX_ABS); }
 
 cdist_status cdist__swept_query(cdist_query *q, const cdist__core_obj *a, const cdist__core_obj *b, cdist_contact *c,
                             cdist_result *core)
@@ -330,7 +327,7 @@ cdist_status cdist__swept_query(cdist_query *q, const cdist__core_obj *a, const 
     /* Valid arguments go straight to the core query (which takes the handle's in-use flag
      * itself). Otherwise the failure is reported under the flag (a busy handle is left
      * untouched); afterwards only c is written: every field, in the error state on failure. */
-    if (!(c && a->obj && b->obj && radius_valid(a) && radius_valid(b))) {
+    if (!(c && a->obj && b->obj && cdist__radius_valid(a) && cdist__radius_valid(b))) {
         if (c) cdist__contact_set_error(c);
         if ((st = cdist__enter(q, r))) return st;
         if (!c) st = cdist__fail(q, CDIST_ERR_NULL_ARGUMENT, "contact pointer is NULL");
@@ -344,6 +341,26 @@ cdist_status cdist__swept_query(cdist_query *q, const cdist__core_obj *a, const 
         cdist__contact_set_error(c);
         return st;
     }
+    cdist__contact_of_core(a, b, r, c);
+    return CDIST_OK;
+}
+
+cdist_status cdist__contact_of_core_query(cdist_query *q, const cdist__core_obj *a, const cdist__core_obj *b,
+                                          cdist_status st, cdist_result *core, cdist_contact *c)
+{
+    if (!(a->obj && b->obj && cdist__radius_valid(a) && cdist__radius_valid(b))) /* the query reports it */
+        return cdist__swept_query(q, a, b, c, core);
+    if (st) {
+        cdist__contact_set_error(c);
+        return st;
+    }
+    cdist__contact_of_core(a, b, core, c);
+    return CDIST_OK;
+}
+
+/* FMA clone: its fma() (v_axpy, the touch normal) are instructions there, not calls. */
+CD_FMA_CLONES void cdist__contact_of_core(const cdist__core_obj *a, const cdist__core_obj *b, const cdist_result *r, cdist_contact *c)
+{
     c->core_distance = r->distance;
     c->distance = r->distance - (a->radius + b->radius);
     c->num_pairs = r->num_pairs;
@@ -371,7 +388,6 @@ cdist_status cdist__swept_query(cdist_query *q, const cdist__core_obj *a, const 
         cp->param[0] = r->pairs[i].param[0];
         cp->param[1] = r->pairs[i].param[1];
     }
-    return CDIST_OK;
 }
 
 /* ---- public entry points ---- */
