@@ -139,19 +139,23 @@ def main(argv=None):
         return q.torus_torus(cd.Torus(cd.Circle(*fields[0]), tubes[0]), cd.Torus(cd.Circle(*fields[1]), tubes[1]),
                              out=reuse_tt)
 
+    def py_tt_view():
+        return q.torus_torus(cd.Torus.from_array(TA), cd.Torus.from_array(TB), out=reuse_tt)
+
     rows = [("full, fresh buffers", c_full_fresh, py_full), ("full, reused buffers", c_full, py_full_out),
             ("full, from_array+out", c_full, py_view), ("distance only", c_dist, py_dist),
-            ("torus-torus, fresh", c_tt_fresh, py_tt), ("torus-torus, reused", c_tt, py_tt_out)]
+            ("torus-torus, fresh", c_tt_fresh, py_tt), ("torus-torus, reused", c_tt, py_tt_out),
+            ("torus-torus, from_array+out", c_tt, py_tt_view)]
     print("%d circle-circle queries, threads=%d, min of %d (C and Python interleaved)" % (
         n, args.threads, args.repeats))
-    print("%-22s %12s %12s %7s" % ("", "C batch", "Python", "ratio"))
+    print("%-28s %12s %12s %7s" % ("", "C batch", "Python", "ratio"))
     for name, c, p in rows:
         tc, tp = [], []
         for _ in range(args.repeats):
             tc.append(best(c, 1))
             tp.append(best(p, 1))
         tc, tp = min(tc), min(tp)
-        print("%-22s %9.3f us %9.3f us %7.3f" % (name, 1e6 * tc / n, 1e6 * tp / n, tp / tc))
+        print("%-28s %9.3f us %9.3f us %7.3f" % (name, 1e6 * tc / n, 1e6 * tp / n, tp / tc))
     # Noise-free view of the same thing: inside one Python call, the time spent in the C call
     # against the whole call (everything else is the binding's overhead).
     inner = []
