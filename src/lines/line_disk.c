@@ -24,6 +24,22 @@ CD_INLINE void lin_offer(vec3 B, vec3 M, double t, const cdist__circle *d, cdist
     cdist__best_offer(b, k.d2, p, k.k, t, k.angle);
 }
 
+/* An outer piece [t0, t1] of the line (beyond the disk's rim): line-circle's candidates, merged
+ * into loc; *eq_d2 the smallest equidistant distance. */
+CD_INLINE cdist_status outer_piece(cdist_query *q, cdist_method method, vec3 B, vec3 M, double t0, double t1,
+                                   const cdist__circle *d, cdist__best *loc, double *eq_d2, cdist_method *used)
+{
+    cdist__best t;
+    cdist_method u1;
+    cdist__best_init(&t, loc->scale);
+    cdist_status st = cdist__linear_circle_ex(q, method, B, M, t0, t1, d, &t, &u1);
+    if (st) return st;
+    if (u1 == CDIST_METHOD_ROBUST) *used = u1;
+    double m2 = cdist__best_merge(loc, &t, v3(0, 0, 0), 0);
+    if (cdist__best_is_equidistant(&t) && m2 < *eq_d2) *eq_d2 = m2;
+    return CDIST_OK;
+}
+
 CD_FMA_CLONES static cdist_status linear_disk(cdist_query *q, cdist_method method, vec3 B, vec3 M, double tmin, double tmax,
                                 const cdist__circle *d, cdist__best *b, cdist_method *used)
 {
@@ -100,17 +116,9 @@ CD_FMA_CLONES static cdist_status linear_disk(cdist_query *q, cdist_method metho
                 cdist__best_offer_flag(loc, k->equidistant, k->d2, k->p[0], k->p[1], k->param[0], k->param[1]);
             }
         }
-        /* else each outer piece on its own: [tmin, lo], then [hi, tmax] */
-        const double piece[2][2] = {{tmin, lo}, {hi, tmax}};
-        for (int k = 0; k < 2 && !both; k++) {
-            if (!(piece[k][0] < piece[k][1])) continue;
-            cdist__best t;
-            cdist__best_init(&t, b->scale);
-            if ((st = cdist__linear_circle_ex(q, method, B, M, piece[k][0], piece[k][1], d, &t, &u1))) return st;
-            if (u1 == CDIST_METHOD_ROBUST) *used = u1;
-            double m2 = cdist__best_merge(loc, &t, v3(0, 0, 0), 0);
-            if (cdist__best_is_equidistant(&t) && m2 < eq_d2) eq_d2 = m2;
-        }
+        /* else each outer piece on its own */
+        if (!both && tmin < lo && (st = outer_piece(q, method, B, M, tmin, lo, d, loc, &eq_d2, used))) return st;
+        if (!both && hi < tmax && (st = outer_piece(q, method, B, M, hi, tmax, d, loc, &eq_d2, used))) return st;
     } else {
         /* loc is empty here: the core offers into it directly */
         if ((st = cdist__linear_circle_ex(q, method, B, M, tmin, tmax, d, loc, &u1))) return st;
@@ -189,7 +197,7 @@ CD_FMA_CLONES static cdist_status linear_disk_query(cdist_query *q, vec3 origin,
 }
 
 /* The line's or ray's core, the query scaled (cdist__linear_query). */
-static cdist_status linear_core(cdist_query *q, vec3 origin, vec3 Ds, vec3 M, double len, double tmin, double tmax,
+CD_INLINE cdist_status linear_core(cdist_query *q, vec3 origin, vec3 Ds, vec3 M, double len, double tmin, double tmax,
                                 const cdist__circle *dk, cdist_result *r, cdist_method *used)
 {
     return linear_disk_query(q, origin, Ds, len, M, tmin, tmax, NULL, dk, r, used);
@@ -214,7 +222,7 @@ cdist_status cdist_ray_disk(cdist_query *q, const cdist_ray *l, const cdist_circ
 }
 
 /* The segment's core: the line's, on t in [0, 1], with its end point p1. */
-static cdist_status segment_core(cdist_query *q, vec3 p0, vec3 p1, vec3 Ds, vec3 M, double len,
+CD_INLINE cdist_status segment_core(cdist_query *q, vec3 p0, vec3 p1, vec3 Ds, vec3 M, double len,
                                  const cdist__circle *dk, cdist_result *r, cdist_method *used)
 {
     return linear_disk_query(q, p0, Ds, len, M, 0.0, 1.0, &p1, dk, r, used);
