@@ -289,6 +289,23 @@ static void check_batch_distance(const cdq_line *ql, cdist_status st, const cdis
     }
 }
 
+/* The full batch of the same query as one entry (circle-circle runs the single query in stages,
+ * its search in lanes; the other plain kinds the single query): the single query's status and
+ * result, to the bit. */
+static void check_batch_full(const cdq_line *ql, cdist_status st, const cdist_result *r)
+{
+    if (!ql->kind->objects || ql->kind->batch_kind < 0 || signed_kind(ql->kind->name)) return;
+    double a[32], b[32];
+    cdist_result rb;
+    cdist_status bs;
+    ql->kind->objects(ql->v, a, b);
+    cdist_batch(q, (cdist_kind)ql->kind->batch_kind, 1, a, 0, b, 0, &rb, &bs);
+    if (bs != st || (st == CDIST_OK && memcmp(&rb, r, sizeof rb))) {
+        fprintf(stderr, "fuzz: full batch: %s %.17g\n", cdist_status_name(bs), rb.distance);
+        violation(ql->kind->name, "the full batch differs from the single query", r);
+    }
+}
+
 /* f(a, b) = f(b, a) for kinds whose two objects have the same layout: both OK or both errors
  * (which error may differ: each object can be bad its own way, and the first is reported), the
  * same pair count and equidistant flag, and the distance to 16 ulps of the input's magnitude. */
@@ -321,6 +338,7 @@ static void run_checked(const cdq_line *ql)
     cdist_status st = cdq_run(q, ql, &r);
     check_result(ql->kind->name, st, &r);
     check_batch_distance(ql, st, &r);
+    check_batch_full(ql, st, &r);
     check_swapped(ql, st, &r);
     cur_v = ql->v; /* (check_swapped ran another query) */
     if (st != CDIST_OK) return;
