@@ -294,7 +294,7 @@ static void many_range(cdist_query *h, const cdist__job *job, size_t lo, size_t 
 
 void cdist__batch_range(cdist_query *h, const cdist__job *job, size_t lo, size_t hi, cdist__slot *slot)
 {
-    if (many_job(job) && cdist__family_method(h, CD_FAM_CIRCLE_CIRCLE) == CDIST_METHOD_ROBUST) {
+    if (many_job(job)) { /* (another method: cdist__cc_staged_start leaves every entry to its query) */
         many_range(h, job, lo, hi, slot);
         return;
     }

@@ -142,6 +142,17 @@ void cdist__circles_result(const cdist__best *best, int swap, int e, vec3 offset
         for (int j = 0; j < 2; j++) r->pairs[i].point[j] = v_add(v_scale(up, r->pairs[i].point[j]), offset);
 }
 
+/* r written in full from the collector of the scaled problem (cdist__circles_frame's e and
+ * offset). */
+static cdist_status cc_write(cdist_query *q, const cdist__best *best, int swap, int e, vec3 offset, int iterations,
+                             cdist_result *r)
+{
+    if (best->n == 0) return cdist__fail(q, CDIST_ERR_INTERNAL, "circle-circle found no candidate");
+    cdist__circles_result(best, swap, e, offset, r);
+    r->iterations = iterations;
+    return CDIST_OK;
+}
+
 /* The scaled problem (a at the origin): the core, then r written in full. swap: a and b are
  * the caller's second and first circles. */
 static cdist_status cc_query(cdist_query *q, cdist_method method, cdist__circle a, cdist__circle b, int swap,
@@ -152,11 +163,7 @@ static cdist_status cc_query(cdist_query *q, cdist_method method, cdist__circle 
     int e = cdist__circles_frame(&a, &b, &offset, &best);
     int iterations = 0;
     cdist_status st = cc_core(q, method, &a, &b, &best, &iterations, answered);
-    if (st) return st;
-    if (best.n == 0) return cdist__fail(q, CDIST_ERR_INTERNAL, "circle-circle found no candidate");
-    cdist__circles_result(&best, swap, e, offset, r);
-    r->iterations = iterations;
-    return CDIST_OK;
+    return st ? st : cc_write(q, &best, swap, e, offset, iterations, r);
 }
 
 /* FMA clones: the inlined checks and bases are chains of fma() calls outside a clone. */
@@ -181,12 +188,7 @@ CD_FMA_CLONES cdist_status cdist__cc_staged_finish(cdist_query *q, cdist__cc_sta
     else st = cdist__cc_robust_engine(q, &s->rs);
     if (st == CDIST_OK) {
         cc_same_basin_filter(&s->a, &s->b, &s->best);
-        if (s->best.n == 0) {
-            st = cdist__fail(q, CDIST_ERR_INTERNAL, "circle-circle found no candidate");
-        } else {
-            cdist__circles_result(&s->best, 0, s->e, s->offset, r);
-            r->iterations = 0;
-        }
+        st = cc_write(q, &s->best, 0, s->e, s->offset, 0, r);
     }
     return cdist__leave(q, r, st, CDIST_METHOD_ROBUST);
 }

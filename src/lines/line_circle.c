@@ -393,19 +393,12 @@ CD_INLINE cdist_status run(cdist_query *q, vec3 origin, vec3 D, vec3 M, double l
     return CDIST_OK;
 }
 
-/* The line's or ray's core, the query scaled (cdist__linear_query). */
-CD_INLINE cdist_status linear_core(cdist_query *q, vec3 origin, vec3 Ds, vec3 M, double len, double tmin, double tmax,
-                                   const cdist__circle *cc, cdist_result *r, cdist_method *used)
-{
-    return run(q, origin, Ds, M, len, tmin, tmax, cc, r, used);
-}
-
 /* FMA clone: the circle's basis (v_basis) inlined here is a chain of fma() calls, which outside
  * a clone are calls to the C library's fma (same results, slower). */
 CD_FMA_CLONES static cdist_status linear_public(cdist_query *q, const cdist_vec3 *origin, const cdist_vec3 *dir,
                                                 const void *obj, int is_ray, const cdist_circle *c, cdist_result *r)
 {
-    return cdist__linear_query(q, obj, origin, dir, is_ray, c, 0, linear_core, r);
+    return cdist__linear_query(q, obj, origin, dir, is_ray, c, 0, run, r);
 }
 
 cdist_status cdist_line_circle(cdist_query *q, const cdist_line *l, const cdist_circle *c, cdist_result *r)

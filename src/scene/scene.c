@@ -306,14 +306,14 @@ double cdist__scene_margin(const cdist__scene_obj *oa, const cdist__scene_obj *o
     return CD_SCENE_BOUND_REL * (a.scale + b.scale);
 }
 
-int cdist__scene_circle_pair(const cdist__scene_obj *a, const cdist__scene_obj *b)
-{
-    return core_type(a->kind) == CD_CORE_CIRCLE && core_type(b->kind) == CD_CORE_CIRCLE;
-}
-
 uint8_t cdist__scene_tcore(const cdist__scene_obj *o)
 {
     return core_type(o->kind) == CD_CORE_CIRCLE ? CD_SCENE_T_CIRCLE : CD_SCENE_T_OTHER;
+}
+
+int cdist__scene_circle_pair(const cdist__scene_obj *a, const cdist__scene_obj *b)
+{
+    return cdist__scene_tcore(a) == CD_SCENE_T_CIRCLE && cdist__scene_tcore(b) == CD_SCENE_T_CIRCLE;
 }
 
 int cdist__scene_excluded(const cdist__scene_obj *oa, const cdist__scene_obj *ob, double lim, int ring)

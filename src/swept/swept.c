@@ -317,6 +317,17 @@ static cdist_status check_radius(cdist_query *q, const cdist__core_obj *o, const
     return CDIST_OK;
 }
 
+/* The contact of a swept query whose core query answered with status st and result r. */
+static cdist_status contact_of_answer(const cdist__core_obj *a, const cdist__core_obj *b, cdist_status st,
+                                      const cdist_result *r, cdist_contact *c)
+{
+    if (st) {
+        cdist__contact_set_error(c);
+        return st;
+    }
+    cdist__contact_of_core(a, b, r, c);
+    return CDIST_OK;
+}
 
 cdist_status cdist__swept_query(cdist_query *q, const cdist__core_obj *a, const cdist__core_obj *b, cdist_contact *c,
                             cdist_result *core)
@@ -337,12 +348,7 @@ cdist_status cdist__swept_query(cdist_query *q, const cdist__core_obj *a, const 
         if (st) return cdist__leave(q, r, st, CDIST_METHOD_AUTO);
         cdist__leave_setter(q); /* releases the flag only: r is written by the core query */
     }
-    if ((st = cdist__core_query(q, a, b, r))) {
-        cdist__contact_set_error(c);
-        return st;
-    }
-    cdist__contact_of_core(a, b, r, c);
-    return CDIST_OK;
+    return contact_of_answer(a, b, cdist__core_query(q, a, b, r), r, c);
 }
 
 cdist_status cdist__contact_of_core_query(cdist_query *q, const cdist__core_obj *a, const cdist__core_obj *b,
@@ -350,12 +356,7 @@ cdist_status cdist__contact_of_core_query(cdist_query *q, const cdist__core_obj 
 {
     if (!(a->obj && b->obj && cdist__radius_valid(a) && cdist__radius_valid(b))) /* the query reports it */
         return cdist__swept_query(q, a, b, c, core);
-    if (st) {
-        cdist__contact_set_error(c);
-        return st;
-    }
-    cdist__contact_of_core(a, b, core, c);
-    return CDIST_OK;
+    return contact_of_answer(a, b, st, core, c);
 }
 
 /* FMA clone: its fma() (v_axpy, the touch normal) are instructions there, not calls. */
