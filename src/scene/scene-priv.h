@@ -7,6 +7,7 @@
 #include <stdatomic.h>
 #include <stdint.h>
 
+#include "base/mem.h"
 #include "internal.h"
 #include "swept/swept-priv.h"
 

@@ -479,11 +479,11 @@ static cdist_status build(cdist_query *q, cdist_scene *s)
 {
     size_t m = 0;
     for (size_t i = 0; i < s->n; i++) m += s->obj[i].state == CD_SCENE_LIVE;
-    uint64_t *key = malloc((m ? m : 1) * sizeof *key), *key_tmp = malloc((m ? m : 1) * sizeof *key_tmp);
-    uint32_t *perm = malloc((m ? m : 1) * sizeof *perm), *perm_tmp = malloc((m ? m : 1) * sizeof *perm_tmp);
-    cdist__box *box = malloc((m ? m : 1) * sizeof *box);
-    cdist__node *node = malloc((m ? m : 1) * sizeof *node);
-    uint8_t *tcore = malloc(m ? m : 1);
+    uint64_t *key = cdist__big_malloc((m ? m : 1) * sizeof *key), *key_tmp = cdist__big_malloc((m ? m : 1) * sizeof *key_tmp);
+    uint32_t *perm = cdist__big_malloc((m ? m : 1) * sizeof *perm), *perm_tmp = cdist__big_malloc((m ? m : 1) * sizeof *perm_tmp);
+    cdist__box *box = cdist__big_malloc((m ? m : 1) * sizeof *box);
+    cdist__node *node = cdist__big_malloc((m ? m : 1) * sizeof *node);
+    uint8_t *tcore = cdist__big_malloc(m ? m : 1);
     if (!key || !key_tmp || !perm || !perm_tmp || !box || !node || !tcore) {
         free(key), free(key_tmp), free(perm), free(perm_tmp), free(box), free(node), free(tcore);
         return cdist__fail(q, CDIST_ERR_NO_MEMORY, "scene: out of memory for the tree of %zu objects", m);
@@ -623,20 +623,20 @@ static cdist_status reserve(cdist_query *q, cdist_scene *s, size_t need)
     if (need <= s->cap) return CDIST_OK;
     size_t cap = s->cap + s->cap / 2;
     if (cap < need) cap = need; /* a bulk add gets exactly its size */
-    cdist__scene_obj *o = realloc(s->obj, cap * sizeof *o);
+    cdist__scene_obj *o = cdist__big_realloc(s->obj, cap * sizeof *o);
     if (!o) return cdist__fail(q, CDIST_ERR_NO_MEMORY, "scene: out of memory for %zu objects", need);
     s->obj = o;
-    uint32_t *p = realloc(s->pos, cap * sizeof *p);
+    uint32_t *p = cdist__big_realloc(s->pos, cap * sizeof *p);
     if (!p) return cdist__fail(q, CDIST_ERR_NO_MEMORY, "scene: out of memory for %zu objects", need);
     s->pos = p;
     if (s->filter) {
-        uint32_t *g = realloc(s->filter, 2 * cap * sizeof *g);
+        uint32_t *g = cdist__big_realloc(s->filter, 2 * cap * sizeof *g);
         if (!g) return cdist__fail(q, CDIST_ERR_NO_MEMORY, "scene: out of memory for %zu objects", need);
         memset(g + 2 * s->cap, 0, 2 * (cap - s->cap) * sizeof *g);
         s->filter = g;
     }
     if (s->moved) {
-        double *m = realloc(s->moved, cap * sizeof *m);
+        double *m = cdist__big_realloc(s->moved, cap * sizeof *m);
         if (!m) return cdist__fail(q, CDIST_ERR_NO_MEMORY, "scene: out of memory for %zu objects", need);
         memset(m + s->cap, 0, (cap - s->cap) * sizeof *m);
         s->moved = m;

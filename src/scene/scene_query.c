@@ -148,7 +148,7 @@ static void push(broad *b, uint64_t key)
 {
     if (b->n == b->cap) {
         size_t cap = b->cap ? 2 * b->cap : 1024;
-        uint64_t *k = realloc(b->key, cap * sizeof *k);
+        uint64_t *k = cdist__big_realloc(b->key, cap * sizeof *k);
         if (!k) {
             b->oom = 1;
             return;
@@ -603,7 +603,7 @@ static cdist_status check_delta(cdist_query *q, double delta, const void *out, s
 static cdist_status sort_keys(cdist_query *q, uint64_t *key, size_t n)
 {
     if (n < 2) return CDIST_OK;
-    uint64_t *tmp = malloc(n * sizeof *tmp);
+    uint64_t *tmp = cdist__big_malloc(n * sizeof *tmp);
     if (!tmp) return cdist__fail(q, CDIST_ERR_NO_MEMORY, "scene: out of memory for sorting %zu candidate pairs", n);
     cdist__radix_sort_keys(key, tmp, n);
     free(tmp);
@@ -724,7 +724,7 @@ static cdist_status broad_run(cdist_query *q, broad *b, pool *p, const char *wha
     uint64_t *key = per[0].key;
     size_t cap = per[0].cap;
     if (!oom && total > cap) {
-        uint64_t *k = realloc(key, total * sizeof *k);
+        uint64_t *k = cdist__big_realloc(key, total * sizeof *k);
         if (k) key = k, cap = total;
         else oom = 1;
     }
@@ -780,9 +780,9 @@ static cdist_status list_make(cdist_query *q, cdist_scene *s, double delta, pool
     cdist_status st = broad_run(q, &b, p, "pairs_within");
     if (st || (st = sort_keys(q, s->cand, b.n))) return st;
     if (s->list_cap < b.n) {
-        float *lo = realloc(s->list_lo, b.n * sizeof *lo);
+        float *lo = cdist__big_realloc(s->list_lo, b.n * sizeof *lo);
         if (lo) s->list_lo = lo;
-        float *hi = lo ? realloc(s->list_hi, b.n * sizeof *hi) : NULL;
+        float *hi = lo ? cdist__big_realloc(s->list_hi, b.n * sizeof *hi) : NULL;
         if (hi) s->list_hi = hi;
         if (!lo || !hi) return cdist__fail(q, CDIST_ERR_NO_MEMORY, "scene pairs_within: out of memory for the pair list");
         s->list_cap = b.n;
