@@ -34,8 +34,8 @@
 #endif
 
 /* gcc's basic-block (SLP) vectoriser packs the scalar x, y, z arithmetic of a short fused path
- * into 2-lane vectors whose shuffles and spills cost more than they save (the point query ran
- * 4% slower with it); such a path opts out. */
+ * into 2-lane vectors whose shuffles and spills cost more than they save; such a path opts
+ * out. */
 #if defined(__GNUC__) && !defined(__clang__)
 #define CD_NO_SLP __attribute__((optimize("no-tree-slp-vectorize")))
 #else

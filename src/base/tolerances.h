@@ -277,6 +277,23 @@
 #define CD_CC_BOUND_REL 1e-9
 #define CD_CC_BOUND_ABS 1e-300
 #define CD_CC_CERT_REL 1e-12
+/* The window around a near-crossing of B's axis (cc_kink.c), in rad of A's angle: half-width
+ * CD_CC_KINK_CORE_GAIN sqrt(rho / L) + CD_CC_KINK_CORE_MIN to start (rho, and so the window
+ * where H is below its rounding, grows with the distance from the crossing; the floor gives an
+ * exact crossing a window), doubled while rho at both ends is below CD_CC_KINK_REL L, at most
+ * CD_CC_KINK_CORE_MAX (half the geometric grid's widest offset, 0.1 rad). F is then minimised
+ * on each side over at least CD_CC_KINK_POLISH_MIN rad, so that a minimum next to the crossing
+ * is inside the minimisation's bracket whatever the window. Axis crossings are solved from a
+ * 2x2 system that is singular below CD_CC_AXIS_DET_REL times the product of its columns' norms
+ * (then on the segment its columns span), and a solution counts as a crossing when it is a unit
+ * vector to CD_CC_AXIS_UNIT_REL (relative; the crossings only add points where F is not
+ * smooth, the scan certifies around them). */
+#define CD_CC_KINK_CORE_GAIN 1e3
+#define CD_CC_KINK_CORE_MIN 1e-12
+#define CD_CC_KINK_CORE_MAX 0.05
+#define CD_CC_KINK_POLISH_MIN 1e-3
+#define CD_CC_AXIS_DET_REL 1e-12
+#define CD_CC_AXIS_UNIT_REL 1e-9
 
 /* Circle-circle, polynomial and iteration methods (scale L in [1, 2)):
  *   - the planes are parallel below |n0 x n1| = CD_CC_POLY_PARALLEL (the rounding of unit
@@ -292,6 +309,34 @@
 #define CD_CC_POLY_NEAR_PARALLEL 1e-2
 #define CD_CC_POLY_IMAG_TOL 1e-2
 #define CD_CC_ITER_TOL 1e-6
+/* Same methods, candidates (every one polished on the true distance, so these only decide which
+ * are kept):
+ *   - concentric when |C1 - C0| <= CD_CC_POLY_CONCENTRIC_REL max(r0, r1): closed-form critical
+ *     points instead of the degree-8 polynomial, whose QR iteration can fail to converge there;
+ *   - a root cos t of the polynomial is used when |cos t| <= 1 + CD_CC_POLY_COS_SLACK (rounding
+ *     puts roots at t = 0 or pi slightly outside [-1, 1]; they are clamped);
+ *   - the sign of sin t is -p6/p7 unless |p7| <= CD_CC_POLY_P7_REL of its coefficients' sum
+ *     (p7 within rounding of 0): then both signs;
+ *   - the polished candidates within CD_CC_KEEP_REL F_min + CD_CC_KEEP_ABS L^2 of the best are
+ *     kept (a root near a double root is found to about sqrt(eps), F to about 1e-8 L^2 of its
+ *     minimum); the iteration mirrors its fixed points within CD_CC_KEEP_REL F_min +
+ *     CD_CC_ITER_KEEP_ABS L^2 of the best (they are polished minima already);
+ *   - two polished fixed points of the iteration are the same when their angles differ by at
+ *     most CD_CC_ITER_SAME rad (polished angles agree to far less; distinct minima lie farther
+ *     apart);
+ *   - the axes meet (a mirror plane through both centres, the paper's second pair) when the
+ *     centre offset leaves the plane by at most CD_CC_MIRROR_REL L;
+ *   - a circle may be at constant distance from the other when F'' at the best candidate is at
+ *     most CD_CC_POLY_FLAT_REL r L (the samples then decide). */
+#define CD_CC_POLY_CONCENTRIC_REL 1e-6
+#define CD_CC_POLY_COS_SLACK 1e-3
+#define CD_CC_POLY_P7_REL 1e-6
+#define CD_CC_KEEP_REL 1e-3
+#define CD_CC_KEEP_ABS 1e-4
+#define CD_CC_ITER_KEEP_ABS 1e-6
+#define CD_CC_ITER_SAME 1e-9
+#define CD_CC_MIRROR_REL 1e-9
+#define CD_CC_POLY_FLAT_REL 1e-9
 
 /* Circle-disk, scaled units: the plane crossings are refined by two Newton steps on the height,
  * each at most CD_CD_Z_STEP rad of the circle's angle; an extremum of the rim distance whose
@@ -308,6 +353,23 @@
  * so formed is above the far limit is dropped before hypot. A few ulps each; 16 covers them. */
 #define CD_CD_HYPOT_ULPS 16
 #define CD_CD_FLAT_REL 0.05
+/* Circle-disk, polynomial method (circle_disk.c), scaled units:
+ *   - roots of the rim polynomial count as real with imaginary parts up to CD_CD_POLY_IMAG_TOL
+ *     (relative), as for line-circle: near-double roots split into complex pairs;
+ *   - a root is a clean maximum, skipped, when |F'| <= CD_CD_MAX_SLOPE_REL |F''| there (within
+ *     that many rad of its critical point; its neighbouring minima are roots of their own);
+ *   - a root is extraneous (of the squared equation) when |F'| > CD_CD_ROOT_SLOPE_REL rho L there:
+ *     F' is of the order rho L at those, ~1e-15 at a true root even in a cluster; unless its
+ *     Newton step |F' / F''| is below CD_CD_ROOT_STEP rad (a disk much smaller than the circle:
+ *     features of width R / rho, where F'' is huge);
+ *   - walks downhill start with a step of CD_CD_SHELL rad, and a critical point's neighbourhood
+ *     is scanned at offsets CD_CD_SHELL 2^j (j < 36): a neighbouring extremum closer than
+ *     2 CD_CD_SHELL differs from it by ~1e-36 of scale^2, below any rounding. */
+#define CD_CD_POLY_IMAG_TOL 1e-3
+#define CD_CD_MAX_SLOPE_REL 1e-6
+#define CD_CD_ROOT_SLOPE_REL 1e-6
+#define CD_CD_ROOT_STEP 1e-3
+#define CD_CD_SHELL 1e-9
 
 /* ---- linking and time of impact (src/topology) ---- */
 

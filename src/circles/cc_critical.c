@@ -13,9 +13,9 @@ CD_INLINE int axis_crossings(const cdist__cc_frame *f, double *t)
     v_basis(f->m, &e1, &e2);
     double ax = v_dot(f->rg.al, e1), ay = v_dot(f->rg.al, e2), bx = v_dot(f->rg.be, e1), by = v_dot(f->rg.be, e2);
     double gx = -v_dot(f->rg.ga, e1), gy = -v_dot(f->rg.ga, e2); /* solve a c + b s = -ga */
-    double det = ax * by - ay * bx, tol = 1e-9;
+    double det = ax * by - ay * bx, tol = CD_CC_AXIS_UNIT_REL;
     double an = hypot(ax, ay), bn = hypot(bx, by);
-    if (fabs(det) > 1e-12 * an * bn) {
+    if (fabs(det) > CD_CC_AXIS_DET_REL * an * bn) {
         double c = (gx * by - gy * bx) / det, s = (ax * gy - ay * gx) / det;
         double r = hypot(c, s);
         if (fabs(r - 1) <= tol) {

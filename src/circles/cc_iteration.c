@@ -10,8 +10,8 @@
 #define CC_CHECKS 16
 
 /* Orthogonal projection of x (relative to the origin = c0's centre) onto circle c centred at
- * cc. On the axis every point is a foot; the basis direction u is taken. Inlined into the loop:
- * left to gcc's heuristics it was once called out of line, 23% slower. */
+ * cc. On the axis every point is a foot; the basis direction u is taken. Forced inline: it is
+ * the loop's whole body, and a call there costs more than the projection. */
 CD_INLINE vec3 project(const cdist__circle *c, vec3 cc, vec3 x)
 {
     /* plain arithmetic: the inner loop (fma() is a library call without hardware FMA flags) */
@@ -122,7 +122,7 @@ static cdist_status iteration(cdist_query *q, const cdist__circle *c0, const cdi
         int dup = -1;
         for (int i = 0; i < nf; i++) {
             double dt = fabs(remainder(t - fp[i].t, 2.0 * M_PI));
-            if (dt <= 1e-9) dup = i;
+            if (dt <= CD_CC_ITER_SAME) dup = i;
         }
         if (dup >= 0) {
             if (cnt < fp[dup].iters) fp[dup].iters = cnt;
@@ -135,7 +135,7 @@ static cdist_status iteration(cdist_query *q, const cdist__circle *c0, const cdi
     vec3 m;
     if (cdist__cc_mirror(&g, &m)) {
         int n0 = nf;
-        double margin = 1e-3 * best + 1e-6 * g.L * g.L;
+        double margin = CD_CC_KEEP_REL * best + CD_CC_ITER_KEEP_ABS * g.L * g.L;
         for (int i = 0; i < n0; i++) {
             if (!(fp[i].F <= best + margin)) continue;
             vec3 p = v_axpy(v_scale(cos(fp[i].t), c0->u), sin(fp[i].t), c0->v);

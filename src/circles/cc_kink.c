@@ -134,19 +134,19 @@ double cdist__cc_kink_core(const cdist__cc_frame *f, double t)
     cdist__ring_val v;
     cdist__ring_eval(&f->rg, f->s, c, s, 0, &v);
     double r = sqrt(v.rho / f->L);
-    double core = cdist__fmin(0.05, 1e3 * r + 1e-12);
+    double core = cdist__fmin(CD_CC_KINK_CORE_MAX, CD_CC_KINK_CORE_GAIN * r + CD_CC_KINK_CORE_MIN);
     /* A tangent to B's axis keeps rho tiny over a wider window (rho ~ rho0 + k x^2 / 2), where H
      * stays below its rounding too: widen the core (doubling) while rho at both of its ends is
      * still below the near-crossing threshold. */
     double thr = CD_CC_KINK_REL * f->L;
-    while (core < 0.05) {
+    while (core < CD_CC_KINK_CORE_MAX) {
         double sh, ch;
         cdist__cc_small_sincos(core, &sh, &ch);
         cdist__ring_val lo, hi;
         cdist__ring_eval(&f->rg, f->s, c * ch + s * sh, s * ch - c * sh, 0, &lo);
         cdist__ring_eval(&f->rg, f->s, c * ch - s * sh, s * ch + c * sh, 0, &hi);
         if (cdist__fmax(lo.rho, hi.rho) > thr) break;
-        core = cdist__fmin(0.05, 2 * core);
+        core = cdist__fmin(CD_CC_KINK_CORE_MAX, 2 * core);
     }
     return core;
 }
@@ -199,7 +199,7 @@ void cdist__cc_scan_kink(const cdist__cc_frame *f, cdist__cc_sink *k, double t, 
     if (!k->best) return;
     /* Each side of the crossing separately (a minimum on either side: symmetric
      * configurations), over the core at least. */
-    double hw = cdist__fmax(1e-3, 2 * core);
+    double hw = cdist__fmax(CD_CC_KINK_POLISH_MIN, 2 * core);
     cdist__cc_pt p;
     cdist__cc_eval_lean(f, t, ct, st, &p);
     for (int side = -1; side <= 1; side += 2) {

@@ -170,7 +170,7 @@ void cdist__cc_offer_minima(const cdist__cc *g, int n, const int *side, const do
     double ao = cdist__circle_angle(g->c[1 - sb], K);
     cdist__cc_eval(g, 1 - sb, isnan(ao) ? 0.0 : ao, NULL, &f2[1 - sb], NULL, NULL);
     for (int s = 0; s < 2; s++) {
-        if (fabs(f2[s]) <= 1e-9 * g->c[s]->r * g->L && flat_side(g, s, dbest, tie)) {
+        if (fabs(f2[s]) <= CD_CC_POLY_FLAT_REL * g->c[s]->r * g->L && flat_side(g, s, dbest, tie)) {
             b->equidistant = 1;
             return;
         }
@@ -270,7 +270,7 @@ int cdist__cc_mirror(const cdist__cc *g, vec3 *m)
     double s = v_norm(c);
     if (!(s > CD_CC_POLY_PARALLEL)) return 0;
     vec3 mm = v_scale(1.0 / s, c);
-    if (fabs(v_dot(g->D, mm)) > 1e-9 * g->L) return 0;
+    if (fabs(v_dot(g->D, mm)) > CD_CC_MIRROR_REL * g->L) return 0;
     *m = mm;
     return 1;
 }
@@ -322,7 +322,7 @@ static void finish_candidates(const cdist__cc *g, cc_cands *c, cdist__best *b)
     }
     /* A root found to ~sqrt(eps) (near a double root) has F within ~1e-8 L^2 of its minimum;
      * the margin keeps every candidate that could polish below the best. */
-    double margin = 1e-3 * Fmin + 1e-4 * g->L * g->L;
+    double margin = CD_CC_KEEP_REL * Fmin + CD_CC_KEEP_ABS * g->L * g->L;
     vec3 m;
     int mir = cdist__cc_mirror(g, &m);
     double pt[CC_MAXCAND], pF[CC_MAXCAND];
@@ -475,7 +475,7 @@ static cdist_status polynomial(cdist_query *q, const cdist__circle *c0, const cd
      * F' = 0 where (N_f . e)(N_f . e') = 0, e(t) = cos t u + sin t v: e orthogonal to N_f (the
      * line where the planes meet) or e' orthogonal to N_f (the points furthest from the other
      * plane). Both sides; the small offset moves the minima by O(|D|), well inside their basins. */
-    int concentric = v_norm(c1->c) <= 1e-6 * fmax(c0->r, c1->r);
+    int concentric = v_norm(c1->c) <= CD_CC_POLY_CONCENTRIC_REL * fmax(c0->r, c1->r);
     if (concentric) {
         for (int s = 0; s < 2; s++) {
             const cdist__circle *m = g.c[s], *f = g.c[1 - s];
@@ -496,7 +496,7 @@ static cdist_status polynomial(cdist_query *q, const cdist__circle *c0, const cd
         for (int i = 0; i <= 3; i++) s7 += fabs(p7[i]);
         for (int i = 0; i < nr; i++) {
             double gm = roots[i];
-            if (!(fabs(gm) <= 1.0 + 1e-3)) continue;
+            if (!(fabs(gm) <= 1.0 + CD_CC_POLY_COS_SLACK)) continue;
             gm = fmax(-1.0, fmin(1.0, gm));
             double sg = sqrt((1.0 - gm) * (1.0 + gm));
             double v6 = (((p6[4] * gm + p6[3]) * gm + p6[2]) * gm + p6[1]) * gm + p6[0];
@@ -506,7 +506,7 @@ static cdist_status polynomial(cdist_query *q, const cdist__circle *c0, const cd
              * clearly non-zero p6/p7 sign unreliable, and the other sign costs one evaluation
              * (no measurable time), so it is always offered second. */
             double sgn = (v6 > 0.0) == (v7 > 0.0) ? -sg : sg;
-            if (fabs(v7) <= 1e-6 * s7) sgn = sg;
+            if (fabs(v7) <= CD_CC_POLY_P7_REL * s7) sgn = sg;
             cand_add_cs(&c, side, gm, sgn);
             if (sg > 0.0) cand_add_cs(&c, side, gm, -sgn);
         }

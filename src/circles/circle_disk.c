@@ -178,7 +178,7 @@ static int cdk_poly_critical(cdist_query *q, const cdk *k, double *ts)
     double R2 = (k->g.R * s) * (k->g.R * s);
     for (int i = 0; i < 9; i++) a[i] = fma(-R2, bq[i], a[i]);
     double roots[8];
-    int nr = cdist__poly_real_roots(q->poly, a, 8, 1e-3, roots);
+    int nr = cdist__poly_real_roots(q->poly, a, 8, CD_CD_POLY_IMAG_TOL, roots);
     if (nr == CD_POLY_ZERO) return -1;
     if (nr < 0) return -2;
     int n = 0;
@@ -187,7 +187,7 @@ static int cdk_poly_critical(cdist_query *q, const cdk *k, double *ts)
     return n;
 }
 
-/* The local minimum of F reached by walking downhill from t: steps doubling from 1e-9 until F'
+/* The local minimum of F reached by walking downhill from t: steps doubling from h0 (CD_CD_SHELL) until F'
  * changes sign, then the bracketed solver on the true derivative. */
 static double cdk_descend(const cdk *k, double t, double h0)
 {
@@ -204,20 +204,20 @@ static double cdk_descend(const cdk *k, double t, double h0)
     return prev;
 }
 
-/* cos and sin of the shells' offsets 1e-9 2^j, j < 36 (cdk_scan), computed once */
+/* cos and sin of the shells' offsets CD_CD_SHELL 2^j, j < 36 (cdk_scan), computed once */
 static struct {
     double c[36], s[36];
 } cdk_shell;
 static pthread_once_t cdk_shell_once = PTHREAD_ONCE_INIT;
 static void cdk_shell_init(void)
 {
-    for (int j = 0; j < 36; j++) sincos(1e-9 * cdist__pow2(j), &cdk_shell.s[j], &cdk_shell.c[j]);
+    for (int j = 0; j < 36; j++) sincos(CD_CD_SHELL * cdist__pow2(j), &cdk_shell.s[j], &cdk_shell.c[j]);
 }
 
 /* Minima of F hidden in [a, b] next to the critical point t1 (a minimum-maximum-minimum cluster
- * narrower than the sampling): F' at t1 -+ 1e-9 2^j covers every dyadic shell around t1, so the
- * sign change of a neighbour at distance >= 2e-9 is seen (closer ones differ from F(t1) by
- * ~1e-36 of scale^2). Every - to + change away from t1 is bracketed and solved. */
+ * narrower than the sampling): F' at t1 -+ CD_CD_SHELL 2^j covers every dyadic shell around t1,
+ * so the sign change of a neighbour at distance >= 2 CD_CD_SHELL is seen (closer ones differ
+ * from F(t1) by ~1e-36 of scale^2). Every - to + change away from t1 is bracketed and solved. */
 static int cdk_scan(const cdk *k, double t1, double a, double b, double *out, int cap)
 {
     double p[2 * 36 + 3], f[2 * 36 + 3];
@@ -229,20 +229,20 @@ static int cdk_scan(const cdk *k, double t1, double a, double b, double *out, in
     sincos(t1, &s1, &c1);
     p[m++] = a;
     cdk_rim(k, a, &f[0], NULL);
-    while (jl < 34 && 1e-9 * cdist__pow2(jl + 1) < t1 - a) jl++;
+    while (jl < 34 && CD_CD_SHELL * cdist__pow2(jl + 1) < t1 - a) jl++;
     for (int j = jl; j >= 0; j--)
-        if (t1 - 1e-9 * cdist__pow2(j) > a) {
+        if (t1 - CD_CD_SHELL * cdist__pow2(j) > a) {
             cdk_rim_cs(k, c1 * cdk_shell.c[j] + s1 * cdk_shell.s[j], s1 * cdk_shell.c[j] - c1 * cdk_shell.s[j], &f[m], NULL);
-            p[m++] = t1 - 1e-9 * cdist__pow2(j);
+            p[m++] = t1 - CD_CD_SHELL * cdist__pow2(j);
         }
     int i1 = m;
     cdk_rim_cs(k, c1, s1, &f[m], NULL);
     p[m++] = t1;
-    while (jr < 34 && 1e-9 * cdist__pow2(jr + 1) < b - t1) jr++;
+    while (jr < 34 && CD_CD_SHELL * cdist__pow2(jr + 1) < b - t1) jr++;
     for (int j = 0; j <= jr; j++)
-        if (t1 + 1e-9 * cdist__pow2(j) < b) {
+        if (t1 + CD_CD_SHELL * cdist__pow2(j) < b) {
             cdk_rim_cs(k, c1 * cdk_shell.c[j] - s1 * cdk_shell.s[j], s1 * cdk_shell.c[j] + c1 * cdk_shell.s[j], &f[m], NULL);
-            p[m++] = t1 + 1e-9 * cdist__pow2(j);
+            p[m++] = t1 + CD_CD_SHELL * cdist__pow2(j);
         }
     cdk_rim(k, b, &f[m], NULL);
     p[m++] = b;
@@ -361,14 +361,14 @@ static int cdk_poly_minima(cdist_query *q, const cdk *k, double *ts, int cap, do
         double f1, f2;
         cdk_rim(k, roots[i], &f1, &f2);
         /* A clean maximum: its neighbouring minima are roots of their own. */
-        if (f2 < -flat && fabs(f1) <= 1e-6 * fabs(f2)) continue;
+        if (f2 < -flat && fabs(f1) <= CD_CD_MAX_SLOPE_REL * fabs(f2)) continue;
         /* An extraneous root of the squared equation (S rho = -R T, where F' = 2 S) or the real
          * part of a complex pair far from any critical point: F' is of the order rho L there,
          * while a root of F' (even one of a cluster, resolved to ~eps^(1/3)) has |F'| ~ 1e-15 --
          * unless F'' is huge (a disk much smaller than the circle: features of width R / rho), so
          * a seed whose Newton step is short is kept. */
-        if (fabs(f1) > 1e-6 * k->g.rho * scale && !(f2 > 0.0 && fabs(f1) < 1e-3 * f2)) continue;
-        ts[n] = cdk_descend(k, roots[i], 1e-9);
+        if (fabs(f1) > CD_CD_ROOT_SLOPE_REL * k->g.rho * scale && !(f2 > 0.0 && fabs(f1) < CD_CD_ROOT_STEP * f2)) continue;
+        ts[n] = cdk_descend(k, roots[i], CD_CD_SHELL);
         Fv[n] = cdk_rim(k, ts[n], NULL, &f2v[n]);
         Fbest = cdist__fmin(Fbest, Fv[n]);
         n++;
