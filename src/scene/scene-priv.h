@@ -6,6 +6,9 @@
 
 #include <stdatomic.h>
 #include <stdint.h>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 #include "base/mem.h"
 #include "internal.h"
@@ -133,11 +136,23 @@ cdist_status cdist__scene_leave(cdist_query *q, cdist_scene *s, cdist_status st)
 /* Sort 64-bit keys ascending (tmp: n entries of scratch). */
 void cdist__radix_sort_keys(uint64_t *key, uint64_t *tmp, size_t n);
 
-/* Box gap test: every axis gap <= lim. */
+/* Box gap test: every axis gap <= lim (false for a NaN gap). With SSE2, the same six
+ * subtractions and comparisons two axes at a time (axis 1 twice). */
 static inline int cdist__box_near(const cdist__box *a, const cdist__box *b, double lim)
 {
+#if defined(__SSE2__)
+    __m128d l = _mm_set1_pd(lim);
+    __m128d x01 = _mm_sub_pd(_mm_loadu_pd(&b->lo[0]), _mm_loadu_pd(&a->hi[0]));
+    __m128d x12 = _mm_sub_pd(_mm_loadu_pd(&b->lo[1]), _mm_loadu_pd(&a->hi[1]));
+    __m128d y01 = _mm_sub_pd(_mm_loadu_pd(&a->lo[0]), _mm_loadu_pd(&b->hi[0]));
+    __m128d y12 = _mm_sub_pd(_mm_loadu_pd(&a->lo[1]), _mm_loadu_pd(&b->hi[1]));
+    __m128d ok = _mm_and_pd(_mm_and_pd(_mm_cmple_pd(x01, l), _mm_cmple_pd(x12, l)),
+                            _mm_and_pd(_mm_cmple_pd(y01, l), _mm_cmple_pd(y12, l)));
+    return _mm_movemask_pd(ok) == 3;
+#else
     return (b->lo[0] - a->hi[0] <= lim) & (a->lo[0] - b->hi[0] <= lim) & (b->lo[1] - a->hi[1] <= lim) &
            (a->lo[1] - b->hi[1] <= lim) & (b->lo[2] - a->hi[2] <= lim) & (a->lo[2] - b->hi[2] <= lim);
+#endif
 }
 /* The largest axis gap of two boxes (a lower bound of the distance of their contents when > 0). */
 static inline double cdist__box_gap(const cdist__box *a, const cdist__box *b)
