@@ -23,9 +23,6 @@
 
 /* ---- cores (inputs already translated so that the relevant centre is the origin) ---- */
 
-/* Circle c0 to circle c1 (c0->c at the origin, c1 relative to it). iterations may be NULL. */
-cdist_status cdist__circle_circle_core(cdist_query *q, cdist_method method, const cdist__circle *c0, const cdist__circle *c1,
-                                   cdist__best *b, int *iterations);
 /* The non-robust circle-circle methods (src/circles/cc_poly.c, src/circles/cc_iteration.c), called by the
  * dispatcher in src/circles/circle_circle.c with c0->c at the origin. Each handles every configuration
  * (setting b->equidistant where infinitely many pairs are closest) and offers its candidates to

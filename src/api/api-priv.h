@@ -98,11 +98,6 @@ cdist_status cdist__fail(cdist_query *q, cdist_status st, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)))
 #endif
     ;
-/* Record success on the handle. */
-cdist_status cdist__ok(cdist_query *q, cdist_result *r, int method);
-
-/* Check that q and r are non-NULL; on failure fills r (when it exists) and returns a status. */
-cdist_status cdist__check_handle(cdist_query *q, cdist_result *r);
 cdist_status cdist__check_ptr(cdist_query *q, const void *p, const char *what);
 cdist_status cdist__check_point_slow(cdist_query *q, const cdist_vec3 *p, const char *what);
 /* A point: finite, |components| <= CD_MAX_ABS (one comparison each: false for NaN and inf). */

@@ -240,14 +240,6 @@ void cdist__begin(cdist_query *q, cdist_result *r)
     }
 }
 
-cdist_status cdist__ok(cdist_query *q, cdist_result *r, int method)
-{
-    r->method = method;
-    q->last_status = CDIST_OK;
-    q->message[0] = '\0';
-    return CDIST_OK;
-}
-
 /* ---- circle frames (public) ---- */
 
 cdist_status cdist_circle_basis(const cdist_circle *c, cdist_vec3 *u, cdist_vec3 *v)

@@ -5,18 +5,6 @@
 
 #include "api/api-priv.h"
 
-cdist_status cdist__check_handle(cdist_query *q, cdist_result *r)
-{
-    if (q && atomic_load_explicit(&q->busy, memory_order_acquire)) {
-        if (r) cdist__result_set_error(r);
-        return CDIST_ERR_HANDLE_BUSY; /* a call through cdist__enter holds the handle */
-    }
-    cdist__begin(q, r);
-    if (!q) return CDIST_ERR_NULL_ARGUMENT;
-    if (!r) return cdist__fail(q, CDIST_ERR_NULL_ARGUMENT, "result pointer is NULL");
-    return CDIST_OK;
-}
-
 cdist_status cdist__check_ptr(cdist_query *q, const void *p, const char *what)
 {
     return p ? CDIST_OK : cdist__fail(q, CDIST_ERR_NULL_ARGUMENT, "%s pointer is NULL", what);

@@ -108,13 +108,6 @@ static cdist_status cc_core(cdist_query *q, cdist_method method, const cdist__ci
     return st;
 }
 
-cdist_status cdist__circle_circle_core(cdist_query *q, cdist_method method, const cdist__circle *c0, const cdist__circle *c1,
-                                   cdist__best *b, int *iterations)
-{
-    cdist_method answered;
-    return cc_core(q, method, c0, c1, b, iterations, &answered);
-}
-
 CD_FMA_CLONES int cdist__circles_frame(cdist__circle *a, cdist__circle *b, vec3 *offset, cdist__best *best)
 {
     *offset = a->c;

@@ -136,12 +136,6 @@ CD_FMA_CLONES static cdist_status linear_disk(cdist_query *q, cdist_method metho
     return CDIST_OK;
 }
 
-cdist_status cdist__linear_disk_ex(cdist_query *q, cdist_method method, vec3 B, vec3 M, double tmin, double tmax,
-                               const cdist__circle *d, cdist__best *b, cdist_method *used)
-{
-    return linear_disk(q, method, B, M, tmin, tmax, d, b, used);
-}
-
 /* The point of the segment p0 + s (p1 - p0), s in [0, 1], nearest C, relative to C, from the
  * exact differences p0 - C and p1 - p0 (a rounded p1 - p0 would tilt the segment: 1e-8 off at
  * 1e8 from its start); one rounding at the scale of the result. */

@@ -26,10 +26,6 @@ cdist_status cdist__linear_circle_ex(cdist_query *q, cdist_method method, vec3 B
  * (tmin - t0)|D| .. (tmax - t0)|D|; a candidate's parameter in units of D is t0 + t/|D|. */
 vec3 cdist__line_near_centre(vec3 origin, vec3 D, vec3 C, double tmin, double tmax, double *t0);
 
-/* Line-disk core: cdist__linear_circle_ex semantics against a disk (src/lines/line_disk.c). */
-cdist_status cdist__linear_disk_ex(cdist_query *q, cdist_method method, vec3 B, vec3 M, double tmin, double tmax,
-                               const cdist__circle *d, cdist__best *b, cdist_method *used);
-
 /* Scale exponent of a linear query (origin, optional segment end p1, circle c): from
  * max(r, |origin - C|, |p1 - C|), see cdist__scale_exponent. */
 static inline int cdist__lines_scale_exponent(vec3 origin, const vec3 *p1, const cdist__circle *c)
