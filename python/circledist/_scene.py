@@ -450,7 +450,9 @@ class Scene:
             if st == _CALLBACK_FAILED:  # an interrupt arrived where take() could not catch it
                 raise KeyboardInterrupt
             self._check(st, allow=(_BAD_KIND,))
-        raw = np.concatenate(chunks) if chunks else np.empty(0, SCENE_PAIR_DTYPE)
+        # joined as bytes: concatenating the structured arrays would promote their dtype per chunk
+        raw = np.concatenate([a.view(np.uint8) for a in chunks]).view(SCENE_PAIR_DTYPE) if chunks \
+            else np.empty(0, SCENE_PAIR_DTYPE)
         return ScenePairs(raw)
 
     def _sized(self, call, capacity, dtype=SCENE_PAIR_DTYPE, wrap=ScenePairs, allow=(_BAD_KIND,)):
