@@ -193,9 +193,9 @@ static int link_excluded(const cdist__scene_obj *a, const cdist__scene_obj *b)
     return c - (ca->radius + a->r + cb->radius + b->r) > CD_SCENE_LINK_REACH_REL * L + cdist__scene_margin(a, b);
 }
 
-static void test_pos(broad *b, uint32_t pa, uint32_t pb)
+/* The pair at tree positions pa, pb, whose boxes are within lim. */
+static void near_pos(broad *b, uint32_t pa, uint32_t pb)
 {
-    if (!cdist__box_near(&b->sa->box[pa], &b->sb->box[pb], b->lim)) return;
     size_t i, j;
     const cdist__scene_obj *oa, *ob;
     if (!pair_at(b->sa, b->sb, b->self, !b->link, pa, pb, &i, &j, &oa, &ob)) return;
@@ -220,13 +220,23 @@ static void cross(broad *b, uint32_t x, uint32_t y)
     if (!cdist__box_near(&nx->box, &ny->box, b->lim)) return;
     if (nx->count && ny->count) {
         /* Only the objects near the other leaf's box can pair: a pass per leaf first. */
+        /* branch-free filters: which objects pass is no pattern a predictor learns */
         uint32_t px[CD_SCENE_LEAF_MAX], py[CD_SCENE_LEAF_MAX], mx = 0, my = 0;
-        for (uint32_t p = nx->first; p < nx->first + nx->count; p++)
-            if (cdist__box_near(&b->sa->box[p], &ny->box, b->lim)) px[mx++] = p;
-        for (uint32_t q = ny->first; q < ny->first + ny->count; q++)
-            if (cdist__box_near(&b->sb->box[q], &nx->box, b->lim)) py[my++] = q;
+        for (uint32_t p = nx->first; p < nx->first + nx->count; p++) {
+            px[mx] = p;
+            mx += (uint32_t)cdist__box_near(&b->sa->box[p], &ny->box, b->lim);
+        }
+        for (uint32_t q = ny->first; q < ny->first + ny->count; q++) {
+            py[my] = q;
+            my += (uint32_t)cdist__box_near(&b->sb->box[q], &nx->box, b->lim);
+        }
+        uint32_t hit[CD_SCENE_LEAF_MAX * CD_SCENE_LEAF_MAX], nh = 0;
         for (uint32_t u = 0; u < mx; u++)
-            for (uint32_t v = 0; v < my; v++) test_pos(b, px[u], py[v]);
+            for (uint32_t v = 0; v < my; v++) {
+                hit[nh] = u << 8 | v;
+                nh += (uint32_t)cdist__box_near(&b->sa->box[px[u]], &b->sb->box[py[v]], b->lim);
+            }
+        for (uint32_t k = 0; k < nh; k++) near_pos(b, px[hit[k] >> 8], py[hit[k] & 255]);
     } else if (ny->count || (!nx->count && box_size(&nx->box) >= box_size(&ny->box))) {
         cross(b, nx->first, y);
         cross(b, nx->first + 1, y);
@@ -236,25 +246,35 @@ static void cross(broad *b, uint32_t x, uint32_t y)
     }
 }
 
-/* The tree of s against itself from node x: each leaf's pairs of positions to pos(ctx, p, q),
- * p < q, and each pair of sibling subtrees to cross(ctx, x, y). */
-static void self_walk(const cdist_scene *s, uint32_t x, void (*pos)(void *, uint32_t, uint32_t),
+/* The tree of s against itself from node x: each leaf (its positions first .. first + count - 1)
+ * to leaf(ctx, first, count), and each pair of sibling subtrees to cross(ctx, x, y). */
+static void self_walk(const cdist_scene *s, uint32_t x, void (*leaf)(void *, uint32_t, uint32_t),
                       void (*cross)(void *, uint32_t, uint32_t), void *ctx)
 {
     const cdist__node *nx = &s->node[x];
     if (nx->count) {
-        for (uint32_t p = nx->first; p < nx->first + nx->count; p++)
-            for (uint32_t q = p + 1; q < nx->first + nx->count; q++) pos(ctx, p, q);
+        leaf(ctx, nx->first, nx->count);
         return;
     }
-    self_walk(s, nx->first, pos, cross, ctx);
-    self_walk(s, nx->first + 1, pos, cross, ctx);
+    self_walk(s, nx->first, leaf, cross, ctx);
+    self_walk(s, nx->first + 1, leaf, cross, ctx);
     cross(ctx, nx->first, nx->first + 1);
 }
 
-static void test_pos_fn(void *b, uint32_t p, uint32_t q) { test_pos(b, p, q); }
+/* The pairs p < q of a leaf whose boxes are near, found without a branch per pair. */
+static void self_leaf(void *ctx, uint32_t first, uint32_t count)
+{
+    broad *b = ctx;
+    uint32_t hit[CD_SCENE_LEAF_MAX * CD_SCENE_LEAF_MAX], nh = 0;
+    for (uint32_t u = 0; u < count; u++)
+        for (uint32_t v = u + 1; v < count; v++) {
+            hit[nh] = u << 8 | v;
+            nh += (uint32_t)cdist__box_near(&b->sa->box[first + u], &b->sa->box[first + v], b->lim);
+        }
+    for (uint32_t k = 0; k < nh; k++) near_pos(b, first + (hit[k] >> 8), first + (hit[k] & 255));
+}
 static void cross_fn(void *b, uint32_t x, uint32_t y) { cross(b, x, y); }
-static void self(broad *b, uint32_t x) { self_walk(b->sa, x, test_pos_fn, cross_fn, b); }
+static void self(broad *b, uint32_t x) { self_walk(b->sa, x, self_leaf, cross_fn, b); }
 
 /* ---- narrow phase: threads, rounds, ordered commit ---- */
 
@@ -1261,9 +1281,13 @@ static void best_cross(closest *c, uint32_t x, uint32_t y)
     }
 }
 
-static void best_pos_fn(void *c, uint32_t p, uint32_t q) { best_pos(c, p, q); }
+static void best_leaf(void *c, uint32_t first, uint32_t count)
+{
+    for (uint32_t p = first; p < first + count; p++)
+        for (uint32_t q = p + 1; q < first + count; q++) best_pos(c, p, q);
+}
 static void best_cross_fn(void *c, uint32_t x, uint32_t y) { best_cross(c, x, y); }
-static void best_self(closest *c, uint32_t x) { self_walk(c->sa, x, best_pos_fn, best_cross_fn, c); }
+static void best_self(closest *c, uint32_t x) { self_walk(c->sa, x, best_leaf, best_cross_fn, c); }
 
 static cdist_status closest_entry(cdist_query *q, cdist_scene *sa, cdist_scene *sb, cdist_scene_pair *out)
 {
