@@ -219,8 +219,8 @@ static void cross(broad *b, uint32_t x, uint32_t y)
     const cdist__node *nx = &b->sa->node[x], *ny = &b->sb->node[y];
     if (!cdist__box_near(&nx->box, &ny->box, b->lim)) return;
     if (nx->count && ny->count) {
-        /* Only the objects near the other leaf's box can pair: a pass per leaf first. */
-        /* branch-free filters: which objects pass is no pattern a predictor learns */
+        /* Only the objects near the other leaf's box can pair: a pass per leaf first. Without a
+         * branch per object or pair: which pass is no pattern a predictor learns. */
         uint32_t px[CD_SCENE_LEAF_MAX], py[CD_SCENE_LEAF_MAX], mx = 0, my = 0;
         for (uint32_t p = nx->first; p < nx->first + nx->count; p++) {
             px[mx] = p;
