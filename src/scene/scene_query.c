@@ -193,6 +193,9 @@ static int link_excluded(const cdist__scene_obj *a, const cdist__scene_obj *b)
     return c - (ca->radius + a->r + cb->radius + b->r) > CD_SCENE_LINK_REACH_REL * L + cdist__scene_margin(a, b);
 }
 
+/* The leaves' box tests note a pair of leaf offsets u, v as u << 8 | v. */
+_Static_assert(CD_SCENE_LEAF_MAX <= 256, "leaf offsets fit in 8 bits");
+
 /* The pair at tree positions pa, pb, whose boxes are within lim. */
 static void near_pos(broad *b, uint32_t pa, uint32_t pb)
 {
