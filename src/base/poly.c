@@ -10,7 +10,7 @@
  * equal modulus that the shifted QR fails to separate). For such polynomials we solve for
  * y = x - s, with a small fixed shift s (an irrational-looking fraction of the roots' Fujiwara
  * bound) that breaks the symmetry; the roots are shifted back and polished on the original.
- * In tests (tests/test_poly.c) the shift removed every failure and introduced none; it cannot
+ * In tests (tests/base/test_poly.c) the shift removed every failure and introduced none; it cannot
  * be proved to exclude QR failure, so the ROBUST methods, which AUTO uses, never call GSL.
  * If a host has turned GSL's handler off and GSL still fails, the status is returned and the
  * caller falls back. */

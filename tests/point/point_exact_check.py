@@ -1,13 +1,13 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: MIT
-"""Point queries against exact values computed here (tests/point_exact.py, mpmath 50 digits).
+"""Point queries against exact values computed here (tests/point/point_exact.py, mpmath 50 digits).
 usage: point_exact_check.py REFCHECK DATA_DIR"""
 import os
 import subprocess
 import sys
 import tempfile
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "common"))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
 from checks import check, finish  # noqa: E402
 
 refcheck, data = sys.argv[1], sys.argv[2]

@@ -12,7 +12,7 @@
  * - the cosine and sine returned are those of the angle to 4e-15 (the angle's own rounding).
  * And the search certifies at least 95% of cc_random (the rest costs a failed search plus the
  * scan, so this is the speed claim's premise). */
-#include "../../src/circles/cc_search.c"
+#include "../../../src/circles/cc_search.c"
 
 #include <stdio.h>
 #include <stdlib.h>
