@@ -13,7 +13,9 @@
  * tolerance relative to the input's magnitude; swept kinds: the witness pair realises the signed
  * distance's magnitude); the distance-only batch agrees; kinds whose objects have the same
  * layout (cc, dd, aa, TT, KK, SS, RR) succeed or fail together and give the same distance, pair count and
- * equidistant flag in both argument orders; errors leave NaN, no pairs and a message; GSL's
+ * equidistant flag in both argument orders; a scene of tori from the same doubles reports
+ * exactly the pairs within delta that the single queries report, to the bit, before and after
+ * updates (check_scene); errors leave NaN, no pairs and a message; GSL's
  * error handler is never reached (an aborting one is installed) and GSL's solver is never
  * called under AUTO or ROBUST (interposed here). */
 #include <dlfcn.h>
@@ -368,6 +370,94 @@ static int fuzz_curve(void *user, double t, cdist_vec3 *p, cdist_vec3 *d)
 
 /* One input: as text, then as raw doubles for the query kind `only` (an index into cdq_kinds;
  * the count of kinds: the two callback-curve queries; -1: every kind and both callbacks). */
+/* ---- scenes: pairs within delta against the loop of single queries ---- */
+
+static void scene_violation(const char *what, const double *v, double delta)
+{
+    fprintf(stderr, "fuzz: scene contract violated: %s; delta %.17g, tori:", what, delta);
+    for (int i = 0; i < 24; i++) fprintf(stderr, " %.17g", v[i]);
+    fprintf(stderr, "\n");
+    abort();
+}
+
+enum { SCENE_N = 4 };
+
+/* The scene's pairs within delta are exactly the pairs i < j of valid objects whose single
+ * torus-torus query answers with a distance <= delta: same order, distances and points to the
+ * bit. A pair whose single query fails is left out of the comparison. */
+static void scene_vs_single(cdist_scene *s, const cdist_torus *t, const cdist_status *valid, double delta,
+                            const double *v)
+{
+    cdist_scene_pair out[SCENE_N * SCENE_N];
+    size_t count = 0, m = 0;
+    cdist_status st = cdist_scene_pairs_within(q, s, delta, out, SCENE_N * SCENE_N, &count);
+    if (isnan(delta)) {
+        if (st == CDIST_OK) scene_violation("NaN delta accepted", v, delta);
+        return;
+    }
+    if (count > SCENE_N * (SCENE_N - 1) / 2) scene_violation("more pairs than the scene has", v, delta);
+    for (size_t i = 0; i < SCENE_N; i++)
+        for (size_t j = i + 1; j < SCENE_N; j++) {
+            cdist_contact c;
+            cdist_status sc = valid[i] || valid[j] ? CDIST_ERR_BAD_KIND : cdist_torus_torus(q, &t[i], &t[j], &c);
+            while (m < count && (out[m].i < i || (out[m].i == i && out[m].j < j))) {
+                if (out[m].status == CDIST_OK) scene_violation("a pair the single query does not report", v, delta);
+                m++;
+            }
+            int there = m < count && out[m].i == i && out[m].j == j;
+            if (sc != CDIST_OK) {
+                m += (size_t)there;
+                continue;
+            }
+            if (!(c.distance <= delta)) {
+                if (there) scene_violation("a pair beyond delta reported", v, delta);
+                continue;
+            }
+            if (!there) scene_violation("a pair within delta missed", v, delta);
+            if (memcmp(&out[m].distance, &c.distance, sizeof c.distance) ||
+                memcmp(&out[m].point[0][0], &c.pairs[0].point[0], sizeof(cdist_vec3)) ||
+                memcmp(&out[m].point[0][1], &c.pairs[0].point[1], sizeof(cdist_vec3)))
+                scene_violation("distance or points differ from the single query's", v, delta);
+            m++;
+        }
+    for (; m < count; m++)
+        if (out[m].status == CDIST_OK) scene_violation("a pair the single query does not report", v, delta);
+}
+
+/* Three tori from the raw doubles (or, for half the selectors, with unit normals and radii of
+ * either sign made positive) and a copy of the first (identical objects), invalid ones included;
+ * queried, then moved twice (every pose passed on to the next id) and queried again,
+ * which reaches the refit and the pair list. */
+static void check_scene(const double *v, unsigned sel)
+{
+    static const double deltas[] = {0.0, 1.0, 1e300, -1e-3, 0.25, NAN};
+    double delta = deltas[sel % (sizeof deltas / sizeof deltas[0])];
+    cdist_torus t[SCENE_N];
+    cdist_status valid[SCENE_N];
+    for (int k = 0; k < 3; k++) {
+        const double *w = v + 8 * k;
+        cdist_torus x = {{{w[0], w[1], w[2]}, {w[3], w[4], w[5]}, w[6]}, w[7]};
+        double n = sqrt(w[3] * w[3] + w[4] * w[4] + w[5] * w[5]);
+        if (sel & 8 && n > 0 && isfinite(n)) { /* half the time valid tori, for the deep paths */
+            x.circle.normal.x /= n, x.circle.normal.y /= n, x.circle.normal.z /= n;
+            x.circle.radius = fabs(x.circle.radius), x.tube_radius = 0.25 * fabs(x.tube_radius);
+        }
+        t[k] = x;
+    }
+    t[3] = t[0];
+    cdist_scene *s = cdist_scene_new();
+    if (!s) return;
+    cdist_scene_add(q, s, CDIST_SCENE_TORUS, SCENE_N, t, sizeof t[0], NULL, valid);
+    for (int round = 0; round < 3; round++) {
+        scene_vs_single(s, t, valid, delta, v);
+        cdist_torus first = t[0];
+        for (int k = 0; k + 1 < SCENE_N; k++) t[k] = t[k + 1];
+        t[SCENE_N - 1] = first;
+        cdist_scene_update(q, s, SCENE_N, NULL, CDIST_SCENE_TORUS, t, sizeof t[0], valid);
+    }
+    cdist_scene_free(s);
+}
+
 static void fuzz_input(const uint8_t *data, size_t size, int only)
 {
     if (!q) {
@@ -409,6 +499,11 @@ static void fuzz_input(const uint8_t *data, size_t size, int only)
             if (!is_angle(k->name, i)) ql.v[i] *= scale;
         run_checked(&ql);
     }
+    if (only < 0 || only == nkinds + 1) {
+        double w[CDQ_MAX_VALUES];
+        for (int i = 0; i < CDQ_MAX_VALUES; i++) w[i] = i % 8 < 3 || i % 8 >= 6 ? v[i] * scale : v[i];
+        check_scene(w, (unsigned)(data[0] ^ size));
+    }
     if (only >= 0 && only != nkinds) return;
     for (int i = 0; i < 14; i++) v[i] *= scale;
     cdist_result r;
@@ -438,15 +533,15 @@ static int kind_count(void)
 }
 #endif
 
-/* Under libFuzzer the raw doubles go to one query kind, chosen by the input's last byte: every
- * execution costs one query (plus the text's lines), and new coverage is credited to the kind
- * that found it. */
+/* Under libFuzzer the raw doubles go to one query kind, the curve queries or the scene, chosen by
+ * the input's last byte: every execution costs one query (plus the text's lines), and new
+ * coverage is credited to the kind that found it. */
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     if (size < 1) return 0;
 #ifdef CDIST_LIBFUZZER
-    fuzz_input(data, size, data[size - 1] % (kind_count() + 1));
+    fuzz_input(data, size, data[size - 1] % (kind_count() + 2));
 #else
     fuzz_input(data, size, -1);
 #endif
