@@ -18,12 +18,12 @@ from checks import check, finish  # noqa: E402
 
 # Brute force per kind: command (before the query file) and whether it prints "LINE VALUE".
 EXACT = {
-    "pc": ([os.path.join(here, "point_exact.py")], False),
-    "pd": ([os.path.join(here, "point_exact.py")], False),
+    "pc": ([os.path.join(here, "point", "point_exact.py")], False),
+    "pd": ([os.path.join(here, "point", "point_exact.py")], False),
     "lc": ([os.path.join(here, "lines", "lc_exact.py")], False),
-    "ld": ([os.path.join(here, "disk", "disk_exact.py")], False),
-    "cd": ([os.path.join(here, "disk", "disk_exact.py"), "--samples=4096"], False),
-    "cc": ([os.path.join(here, "circle_circle", "cc_exact.py")], True),
+    "ld": ([os.path.join(here, "circles", "disk", "disk_exact.py")], False),
+    "cd": ([os.path.join(here, "circles", "disk", "disk_exact.py"), "--samples=4096"], False),
+    "cc": ([os.path.join(here, "circles", "circle_circle", "cc_exact.py")], True),
 }
 
 
