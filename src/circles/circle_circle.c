@@ -167,8 +167,7 @@ CD_FMA_CLONES int cdist__cc_staged_start(cdist_query *q, const cdist_circle *c0,
     if (m != CDIST_METHOD_AUTO && m != CDIST_METHOD_ROBUST) return 0;
     /* the fast check accepts what cdist__check_circle accepts, with the same circle */
     if (!cdist__circle_fast_basis(q->unit_tol, c0, &s->a) || !cdist__circle_fast_basis(q->unit_tol, c1, &s->b)) return 0;
-    s->e = cdist__circles_frame(&s->a, &s->b, &s->offset, &s->best);
-    cdist__best_init(&s->best, s->best.scale);
+    s->e = cdist__circles_frame(&s->a, &s->b, &s->offset, &s->best); /* and s->best empty */
     return cdist__cc_robust_start(&s->a, &s->b, &s->best, &s->rs) == CDIST__CC_SEARCH;
 }
 

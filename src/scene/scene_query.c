@@ -45,8 +45,9 @@ static void pair_error(cdist_scene_pair *p, size_t i, size_t j, cdist_status st)
     for (int k = 0; k < 2; k++) p->point[k][0] = p->point[k][1] = v3(NAN, NAN, NAN);
 }
 
-/* The record of pair (i, j) from its contact c (status st): 1 when it is to be reported
- * (distance <= lim, or a failure, reported always); *dist its distance (NaN on failure). */
+/* The record of pair (i, j) from its contact c (status st; c is not read on failure): 1 when it
+ * is to be reported (distance <= lim, or a failure, reported always); *dist its distance (NaN
+ * on failure). */
 static int pair_record(const cdist_contact *c, cdist_status st, size_t i, size_t j, double lim, cdist_scene_pair *p,
                        double *dist)
 {
@@ -77,11 +78,7 @@ static int answer(cdist_query *h, const cdist__scene_obj *a, const cdist__scene_
                   cdist_scene_pair *p, double *dist)
 {
     cdist__core_obj ca = cdist__scene_core(a), cb = cdist__scene_core(b);
-    if (unsupported(ca.type, cb.type)) {
-        if (dist) *dist = NAN;
-        pair_error(p, i, j, CDIST_ERR_BAD_KIND);
-        return 1;
-    }
+    if (unsupported(ca.type, cb.type)) return pair_record(NULL, CDIST_ERR_BAD_KIND, i, j, lim, p, dist);
     cdist_contact c;
     cdist_status st = cdist__swept_query(h, &ca, &cb, &c, NULL);
     return pair_record(&c, st, i, j, lim, p, dist);
@@ -215,6 +212,20 @@ static void near_pos(broad *b, uint32_t pa, uint32_t pb)
     push(b, (uint64_t)i << 32 | j);
 }
 
+/* The pairs of positions (px[u], py[v]) whose boxes are within lim, v > u only when upper (a
+ * leaf against itself), found without a branch per pair (which pairs pass is no pattern a
+ * predictor learns), then taken in (u, v) order. */
+static void near_pairs(broad *b, const uint32_t *px, uint32_t mx, const uint32_t *py, uint32_t my, int upper)
+{
+    uint32_t hit[CD_SCENE_LEAF_MAX * CD_SCENE_LEAF_MAX], nh = 0;
+    for (uint32_t u = 0; u < mx; u++)
+        for (uint32_t v = upper ? u + 1 : 0; v < my; v++) {
+            hit[nh] = u << 8 | v;
+            nh += (uint32_t)cdist__box_near(&b->sa->box[px[u]], &b->sb->box[py[v]], b->lim);
+        }
+    for (uint32_t k = 0; k < nh; k++) near_pos(b, px[hit[k] >> 8], py[hit[k] & 255]);
+}
+
 static double box_size(const cdist__box *x) { return (x->hi[0] - x->lo[0]) + (x->hi[1] - x->lo[1]) + (x->hi[2] - x->lo[2]); }
 
 static void cross(broad *b, uint32_t x, uint32_t y)
@@ -222,8 +233,8 @@ static void cross(broad *b, uint32_t x, uint32_t y)
     const cdist__node *nx = &b->sa->node[x], *ny = &b->sb->node[y];
     if (!cdist__box_near(&nx->box, &ny->box, b->lim)) return;
     if (nx->count && ny->count) {
-        /* Only the objects near the other leaf's box can pair: a pass per leaf first. Without a
-         * branch per object or pair: which pass is no pattern a predictor learns. */
+        /* Only the objects near the other leaf's box can pair: a pass per leaf first, also
+         * without a branch per object. */
         uint32_t px[CD_SCENE_LEAF_MAX], py[CD_SCENE_LEAF_MAX], mx = 0, my = 0;
         for (uint32_t p = nx->first; p < nx->first + nx->count; p++) {
             px[mx] = p;
@@ -233,13 +244,7 @@ static void cross(broad *b, uint32_t x, uint32_t y)
             py[my] = q;
             my += (uint32_t)cdist__box_near(&b->sb->box[q], &nx->box, b->lim);
         }
-        uint32_t hit[CD_SCENE_LEAF_MAX * CD_SCENE_LEAF_MAX], nh = 0;
-        for (uint32_t u = 0; u < mx; u++)
-            for (uint32_t v = 0; v < my; v++) {
-                hit[nh] = u << 8 | v;
-                nh += (uint32_t)cdist__box_near(&b->sa->box[px[u]], &b->sb->box[py[v]], b->lim);
-            }
-        for (uint32_t k = 0; k < nh; k++) near_pos(b, px[hit[k] >> 8], py[hit[k] & 255]);
+        near_pairs(b, px, mx, py, my, 0);
     } else if (ny->count || (!nx->count && box_size(&nx->box) >= box_size(&ny->box))) {
         cross(b, nx->first, y);
         cross(b, nx->first + 1, y);
@@ -264,17 +269,12 @@ static void self_walk(const cdist_scene *s, uint32_t x, void (*leaf)(void *, uin
     cross(ctx, nx->first, nx->first + 1);
 }
 
-/* The pairs p < q of a leaf whose boxes are near, found without a branch per pair. */
+/* The pairs p < q of a leaf whose boxes are near. */
 static void self_leaf(void *ctx, uint32_t first, uint32_t count)
 {
-    broad *b = ctx;
-    uint32_t hit[CD_SCENE_LEAF_MAX * CD_SCENE_LEAF_MAX], nh = 0;
-    for (uint32_t u = 0; u < count; u++)
-        for (uint32_t v = u + 1; v < count; v++) {
-            hit[nh] = u << 8 | v;
-            nh += (uint32_t)cdist__box_near(&b->sa->box[first + u], &b->sa->box[first + v], b->lim);
-        }
-    for (uint32_t k = 0; k < nh; k++) near_pos(b, first + (hit[k] >> 8), first + (hit[k] & 255));
+    uint32_t p[CD_SCENE_LEAF_MAX];
+    for (uint32_t u = 0; u < count; u++) p[u] = first + u;
+    near_pairs(ctx, p, count, p, count, 1);
 }
 static void cross_fn(void *b, uint32_t x, uint32_t y) { cross(b, x, y); }
 static void self(broad *b, uint32_t x) { self_walk(b->sa, x, self_leaf, cross_fn, b); }

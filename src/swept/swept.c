@@ -317,6 +317,39 @@ static cdist_status check_radius(cdist_query *q, const cdist__core_obj *o, const
     return CDIST_OK;
 }
 
+/* The contact of a swept query from its core result r (the core query succeeded). FMA clone:
+ * its fma() (v_axpy, the touch normal) are instructions there, not calls. */
+CD_FMA_CLONES static void contact_of_core(const cdist__core_obj *a, const cdist__core_obj *b, const cdist_result *r, cdist_contact *c)
+{
+    c->core_distance = r->distance;
+    c->distance = r->distance - (a->radius + b->radius);
+    c->num_pairs = r->num_pairs;
+    c->equidistant = r->equidistant;
+    c->method = r->method;
+    c->flags = 0;
+    memset(c->reserved, 0, sizeof c->reserved);
+    for (int i = r->num_pairs; i < 2; i++) contact_pair_unset(&c->pairs[i]);
+    for (int i = 0; i < r->num_pairs; i++) {
+        cdist_contact_pair *cp = &c->pairs[i];
+        vec3 pa = r->pairs[i].point[0], pb = r->pairs[i].point[1];
+        vec3 d = v_sub(pb, pa);
+        vec3 n;
+        if (cdist__cores_touch(r, i)) {
+            n = touch_normal(a, b, pa, pb);
+            c->flags |= CDIST_CONTACT_CORE_TOUCH;
+        } else {
+            n = v_unit_or_zero(d);
+        }
+        cp->core_point[0] = pa;
+        cp->core_point[1] = pb;
+        cp->normal = n;
+        cp->point[0] = v_axpy(pa, a->radius, n);
+        cp->point[1] = v_axpy(pb, -b->radius, n);
+        cp->param[0] = r->pairs[i].param[0];
+        cp->param[1] = r->pairs[i].param[1];
+    }
+}
+
 /* The contact of a swept query whose core query answered with status st and result r. */
 static cdist_status contact_of_answer(const cdist__core_obj *a, const cdist__core_obj *b, cdist_status st,
                                       const cdist_result *r, cdist_contact *c)
@@ -325,7 +358,7 @@ static cdist_status contact_of_answer(const cdist__core_obj *a, const cdist__cor
         cdist__contact_set_error(c);
         return st;
     }
-    cdist__contact_of_core(a, b, r, c);
+    contact_of_core(a, b, r, c);
     return CDIST_OK;
 }
 
@@ -357,38 +390,6 @@ cdist_status cdist__contact_of_core_query(cdist_query *q, const cdist__core_obj 
     if (!(a->obj && b->obj && cdist__radius_valid(a) && cdist__radius_valid(b))) /* the query reports it */
         return cdist__swept_query(q, a, b, c, core);
     return contact_of_answer(a, b, st, core, c);
-}
-
-/* FMA clone: its fma() (v_axpy, the touch normal) are instructions there, not calls. */
-CD_FMA_CLONES void cdist__contact_of_core(const cdist__core_obj *a, const cdist__core_obj *b, const cdist_result *r, cdist_contact *c)
-{
-    c->core_distance = r->distance;
-    c->distance = r->distance - (a->radius + b->radius);
-    c->num_pairs = r->num_pairs;
-    c->equidistant = r->equidistant;
-    c->method = r->method;
-    c->flags = 0;
-    memset(c->reserved, 0, sizeof c->reserved);
-    for (int i = r->num_pairs; i < 2; i++) contact_pair_unset(&c->pairs[i]);
-    for (int i = 0; i < r->num_pairs; i++) {
-        cdist_contact_pair *cp = &c->pairs[i];
-        vec3 pa = r->pairs[i].point[0], pb = r->pairs[i].point[1];
-        vec3 d = v_sub(pb, pa);
-        vec3 n;
-        if (cdist__cores_touch(r, i)) {
-            n = touch_normal(a, b, pa, pb);
-            c->flags |= CDIST_CONTACT_CORE_TOUCH;
-        } else {
-            n = v_unit_or_zero(d);
-        }
-        cp->core_point[0] = pa;
-        cp->core_point[1] = pb;
-        cp->normal = n;
-        cp->point[0] = v_axpy(pa, a->radius, n);
-        cp->point[1] = v_axpy(pb, -b->radius, n);
-        cp->param[0] = r->pairs[i].param[0];
-        cp->param[1] = r->pairs[i].param[1];
-    }
 }
 
 /* ---- public entry points ---- */
