@@ -13,6 +13,7 @@
 #include "check.h"
 #include "circle_curve.h"
 #include "query_io.h"
+#include "ref_lines.h"
 
 static double worst_arc = 0;
 static long worst_arc_line = 0;
@@ -61,17 +62,12 @@ int main(int argc, char **argv)
     if (!fq || !fe) return 2;
     cdist_query *q = cdist_query_new();
     CHECK(cdist_query_set_curve_samples(q, samples) == CDIST_OK, "samples");
-    char line[4096], eline[256];
     long lineno = 0;
     double worst = 0, worst_ratio = 0;
     long worst_line = 0;
-    while (fgets(line, sizeof line, fq)) {
-        lineno++;
-        cdq_line ql;
-        char err[256];
-        if (cdq_parse(line, &ql, err, sizeof err) != 1) continue;
-        if (!fgets(eline, sizeof eline, fe)) break;
-        long double e = strtold(eline, NULL);
+    cdq_line ql;
+    long double e;
+    while (ref_next(fq, fe, &ql, &e, &lineno)) {
         double L = cdq_scale(&ql, (double)e);
         int disk = !strcmp(ql.kind->name, "cd");
         cdist_circle c0 = {{ql.v[0], ql.v[1], ql.v[2]}, {ql.v[3], ql.v[4], ql.v[5]}, ql.v[6]};

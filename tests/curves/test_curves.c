@@ -10,6 +10,7 @@
 #include <string.h>
 
 #include "brute.h"
+#include "ref_lines.h"
 #include "query_io.h"
 
 static cdist_query *q;
@@ -65,15 +66,10 @@ static void shared_lines(const char *qpath, const char *epath, int disk)
     FILE *fq = fopen(qpath, "r"), *fe = fopen(epath, "r");
     CHECK(fq && fe, "open %s", qpath);
     if (!fq || !fe) return;
-    char line[4096], eline[256];
     long lineno = 0;
-    while (fgets(line, sizeof line, fq)) {
-        lineno++;
-        cdq_line ql;
-        char err[256];
-        if (cdq_parse(line, &ql, err, sizeof err) != 1) continue;
-        if (!fgets(eline, sizeof eline, fe)) break;
-        long double e = strtold(eline, NULL);
+    cdq_line ql;
+    long double e;
+    while (ref_next(fq, fe, &ql, &e, &lineno)) {
         double L = cdq_scale(&ql, (double)e);
         const double *v = ql.v;
         cdist_vec3 B = tv(v[0], v[1], v[2]), M = tv(v[3], v[4], v[5]);
