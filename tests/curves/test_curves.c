@@ -426,19 +426,14 @@ int main(int argc, char **argv)
 {
     q = cdist_query_new();
     if (argc >= 2) {
-        char a[4096], b[4096];
-        snprintf(a, sizeof a, "%s/lc_random.txt", argv[1]);
-        snprintf(b, sizeof b, "%s/lc_random.expected", argv[1]);
-        shared_lines(a, b, 0);
-        snprintf(a, sizeof a, "%s/lc_hard.txt", argv[1]);
-        snprintf(b, sizeof b, "%s/lc_hard.expected", argv[1]);
-        shared_lines(a, b, 0);
-        snprintf(a, sizeof a, "%s/ld_random.txt", argv[1]);
-        snprintf(b, sizeof b, "%s/ld_random.expected", argv[1]);
-        shared_lines(a, b, 1);
-        snprintf(a, sizeof a, "%s/ld_hard.txt", argv[1]);
-        snprintf(b, sizeof b, "%s/ld_hard.expected", argv[1]);
-        shared_lines(a, b, 1);
+        static const char *const set[] = {"random", "hard"};
+        for (int disk = 0; disk < 2; disk++)
+            for (int k = 0; k < 2; k++) {
+                char a[4096], b[4096];
+                snprintf(a, sizeof a, "%s/l%c_%s.txt", argv[1], disk ? 'd' : 'c', set[k]);
+                snprintf(b, sizeof b, "%s/l%c_%s.expected", argv[1], disk ? 'd' : 'c', set[k]);
+                shared_lines(a, b, disk);
+            }
     }
     random_segments();
     degenerate_segments();
