@@ -243,6 +243,7 @@ typedef struct many_block {
     cdist__core_obj a[MANY_BLOCK], b[MANY_BLOCK];
     cdist_result core[MANY_BLOCK], *r[MANY_BLOCK]; /* where each core answer goes */
     cdist_contact contact[MANY_BLOCK], *c[MANY_BLOCK];
+    uint32_t later; /* the entries whose contact many_later makes */
 } many_block;
 
 static int many_job(const cdist__job *job)
@@ -267,11 +268,31 @@ static void many_done(void *ctx, size_t k, cdist_status st)
     const cdist__job *job = x->job;
     size_t i = x->lo + k;
     output_prefetch(job, i + OUTPUT_AHEAD);
-    if (job->kind == CDIST_KIND_TORUS_TORUS)
+    if (job->kind == CDIST_KIND_TORUS_TORUS) {
+        if (st == CDIST_OK && cdist__radius_valid(&x->a[k]) && cdist__radius_valid(&x->b[k])) {
+            x->later |= (uint32_t)1 << k;
+            return;
+        }
         st = cdist__contact_of_core_query(x->h, &x->a[k], &x->b[k], st, x->r[k], x->c[k]);
+    }
     if (job->out == CD_OUT_GRAD && st == CDIST_OK) cdist__grad_fill(&x->a[k], &x->b[k], x->r[k], &job->grads[i]);
     if (job->statuses) job->statuses[i] = st;
     record(x->slot, x->h, i, st);
+}
+
+/* The contacts of the block's entries whose core query succeeded, made after its searches: one
+ * after another, their dependency chains (a division, a square root, a division) overlap. They
+ * cannot fail, so nothing is recorded. */
+static void many_later(const many_block *x, size_t cnt)
+{
+    const cdist__job *job = x->job;
+    for (size_t k = 0; k < cnt; k++) {
+        if (!(x->later >> k & 1)) continue;
+        size_t i = x->lo + k;
+        cdist__contact_of_core(&x->a[k], &x->b[k], x->r[k], x->c[k]);
+        if (job->out == CD_OUT_GRAD) cdist__grad_fill(&x->a[k], &x->b[k], x->r[k], &job->grads[i]);
+        if (job->statuses) job->statuses[i] = CDIST_OK;
+    }
 }
 
 static void many_range(cdist_query *h, const cdist__job *job, size_t lo, size_t hi, cdist__slot *slot)
@@ -281,7 +302,7 @@ static void many_range(cdist_query *h, const cdist__job *job, size_t lo, size_t 
     const cdist_circle *pa[MANY_BLOCK], *pb[MANY_BLOCK];
     for (size_t i = lo; i < hi; i += MANY_BLOCK) {
         size_t cnt = hi - i < MANY_BLOCK ? hi - i : MANY_BLOCK;
-        x.h = h, x.job = job, x.lo = i, x.slot = slot;
+        x.h = h, x.job = job, x.lo = i, x.slot = slot, x.later = 0;
         for (size_t k = 0; k < cnt; k++) {
             const void *ea = cdist__job_a(job, i + k), *eb = cdist__job_b(job, i + k);
             char *kept = job->results ? (char *)job->results + (i + k) * job->result_size : NULL;
@@ -300,6 +321,7 @@ static void many_range(cdist_query *h, const cdist__job *job, size_t lo, size_t 
             if (job->out == CD_OUT_GRAD) cdist__grad_set_error(&job->grads[i + k]);
         }
         cdist__circle_circle_many(h, cnt, pa, pb, x.r, many_done, &x);
+        many_later(&x, cnt);
     }
 }
 

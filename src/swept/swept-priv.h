@@ -71,6 +71,8 @@ static inline int cdist__radius_valid(const cdist__core_obj *o)
 {
     return !o->swept || (o->radius >= 0.0 && o->radius <= CD_MAX_ABS);
 }
+/* The contact c of a swept query whose core query answered r with CDIST_OK (radii valid). */
+void cdist__contact_of_core(const cdist__core_obj *a, const cdist__core_obj *b, const cdist_result *r, cdist_contact *c);
 /* cdist__swept_query(q, a, b, c, core) for a contact c given, when the core query has already
  * answered (status st, *core): the same contact and status, to the bit. */
 cdist_status cdist__contact_of_core_query(cdist_query *q, const cdist__core_obj *a, const cdist__core_obj *b,

@@ -339,7 +339,8 @@ CD_INLINE int contact_pair_of(const cdist__core_obj *a, const cdist__core_obj *b
 
 /* The contact of a swept query from its core result r (the core query succeeded). FMA clone:
  * its fma() (v_axpy) are instructions there, not calls. */
-CD_FMA_CLONES static void contact_of_core(const cdist__core_obj *a, const cdist__core_obj *b, const cdist_result *r, cdist_contact *c)
+CD_FMA_CLONES void cdist__contact_of_core(const cdist__core_obj *a, const cdist__core_obj *b, const cdist_result *r,
+                                         cdist_contact *c)
 {
     int np = r->num_pairs, touch = 0;
     c->core_distance = r->distance;
@@ -363,7 +364,7 @@ static cdist_status contact_of_answer(const cdist__core_obj *a, const cdist__cor
         cdist__contact_set_error(c);
         return st;
     }
-    contact_of_core(a, b, r, c);
+    cdist__contact_of_core(a, b, r, c);
     return CDIST_OK;
 }
 
