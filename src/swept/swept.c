@@ -290,7 +290,7 @@ static vec3 core_line_perp(const cdist__core_obj *o, vec3 p)
 }
 
 /* The documented normal when the cores touch (CDIST_CONTACT_CORE_TOUCH). */
-static __attribute__((noinline, cold)) vec3 touch_normal(const cdist__core_obj *a, const cdist__core_obj *b, vec3 pa, vec3 pb)
+static vec3 touch_normal(const cdist__core_obj *a, const cdist__core_obj *b, vec3 pa, vec3 pb)
 {
     vec3 n = v3(0, 0, 0);
     vec3 ta = core_tangent(a, pa), tb = core_tangent(b, pb);
@@ -317,43 +317,38 @@ static cdist_status check_radius(cdist_query *q, const cdist__core_obj *o, const
     return CDIST_OK;
 }
 
-/* Pair i of the contact from pair i of the core result r; returns whether the cores touch there.
- * The fields are written in memory order: an output array's lines then fill one after another. */
-CD_INLINE int contact_pair_of(const cdist__core_obj *a, const cdist__core_obj *b, const cdist_result *r, int i,
-                              cdist_contact_pair *cp)
-{
-    vec3 pa = r->pairs[i].point[0], pb = r->pairs[i].point[1];
-    vec3 d = v_sub(pb, pa), n;
-    int touch = cdist__cores_touch(r, i);
-    if (touch) n = touch_normal(a, b, pa, pb);
-    else n = v_unit_or_zero(d);
-    cp->point[0] = v_axpy(pa, a->radius, n);
-    cp->point[1] = v_axpy(pb, -b->radius, n);
-    cp->core_point[0] = pa;
-    cp->core_point[1] = pb;
-    cp->normal = n;
-    cp->param[0] = r->pairs[i].param[0];
-    cp->param[1] = r->pairs[i].param[1];
-    return touch;
-}
-
 /* The contact of a swept query from its core result r (the core query succeeded). FMA clone:
- * its fma() (v_axpy) are instructions there, not calls. */
+ * its fma() (v_axpy, the touch normal) are instructions there, not calls. */
 CD_FMA_CLONES void cdist__contact_of_core(const cdist__core_obj *a, const cdist__core_obj *b, const cdist_result *r,
                                          cdist_contact *c)
 {
-    int np = r->num_pairs, touch = 0;
     c->core_distance = r->distance;
     c->distance = r->distance - (a->radius + b->radius);
-    c->num_pairs = np;
+    c->num_pairs = r->num_pairs;
     c->equidistant = r->equidistant;
     c->method = r->method;
-    if (np > 0) touch |= contact_pair_of(a, b, r, 0, &c->pairs[0]);
-    else contact_pair_unset(&c->pairs[0]);
-    if (np > 1) touch |= contact_pair_of(a, b, r, 1, &c->pairs[1]);
-    else contact_pair_unset(&c->pairs[1]);
-    c->flags = touch ? CDIST_CONTACT_CORE_TOUCH : 0;
+    c->flags = 0;
     memset(c->reserved, 0, sizeof c->reserved);
+    for (int i = r->num_pairs; i < 2; i++) contact_pair_unset(&c->pairs[i]);
+    for (int i = 0; i < r->num_pairs; i++) {
+        cdist_contact_pair *cp = &c->pairs[i];
+        vec3 pa = r->pairs[i].point[0], pb = r->pairs[i].point[1];
+        vec3 d = v_sub(pb, pa);
+        vec3 n;
+        if (cdist__cores_touch(r, i)) {
+            n = touch_normal(a, b, pa, pb);
+            c->flags |= CDIST_CONTACT_CORE_TOUCH;
+        } else {
+            n = v_unit_or_zero(d);
+        }
+        cp->core_point[0] = pa;
+        cp->core_point[1] = pb;
+        cp->normal = n;
+        cp->point[0] = v_axpy(pa, a->radius, n);
+        cp->point[1] = v_axpy(pb, -b->radius, n);
+        cp->param[0] = r->pairs[i].param[0];
+        cp->param[1] = r->pairs[i].param[1];
+    }
 }
 
 /* The contact of a swept query whose core query answered with status st and result r. */
