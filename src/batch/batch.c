@@ -262,37 +262,39 @@ static void output_prefetch(const cdist__job *job, size_t i)
     for (size_t o = 0; o < job->result_size; o += 64) __builtin_prefetch(p + o, 1, 3);
 }
 
-static void many_done(void *ctx, size_t k, cdist_status st)
+/* Entry k's gradient, status and failure record, once its result (and contact) is made. */
+static void many_finish(const many_block *x, size_t k, cdist_status st)
 {
-    many_block *x = ctx;
     const cdist__job *job = x->job;
     size_t i = x->lo + k;
-    output_prefetch(job, i + OUTPUT_AHEAD);
-    if (job->kind == CDIST_KIND_TORUS_TORUS) {
-        if (st == CDIST_OK && cdist__radius_valid(&x->a[k]) && cdist__radius_valid(&x->b[k])) {
-            x->later |= (uint32_t)1 << k;
-            return;
-        }
-        st = cdist__contact_of_core_query(x->h, &x->a[k], &x->b[k], st, x->r[k], x->c[k]);
-    }
     if (job->out == CD_OUT_GRAD && st == CDIST_OK) cdist__grad_fill(&x->a[k], &x->b[k], x->r[k], &job->grads[i]);
     if (job->statuses) job->statuses[i] = st;
     record(x->slot, x->h, i, st);
 }
 
+static void many_done(void *ctx, size_t k, cdist_status st)
+{
+    many_block *x = ctx;
+    output_prefetch(x->job, x->lo + k + OUTPUT_AHEAD);
+    if (x->job->kind == CDIST_KIND_TORUS_TORUS) {
+        if (st == CDIST_OK && cdist__contact_ready(&x->a[k], &x->b[k])) {
+            x->later |= (uint32_t)1 << k;
+            return;
+        }
+        st = cdist__contact_of_core_query(x->h, &x->a[k], &x->b[k], st, x->r[k], x->c[k]);
+    }
+    many_finish(x, k, st);
+}
+
 /* The contacts of the block's entries whose core query succeeded, made after its searches: one
- * after another, their dependency chains (a division, a square root, a division) overlap. They
- * cannot fail, so nothing is recorded. */
+ * after another, their dependency chains (a division, a square root, a division) overlap. */
 static void many_later(const many_block *x, size_t cnt)
 {
-    const cdist__job *job = x->job;
-    for (size_t k = 0; k < cnt; k++) {
-        if (!(x->later >> k & 1)) continue;
-        size_t i = x->lo + k;
-        cdist__contact_of_core(&x->a[k], &x->b[k], x->r[k], x->c[k]);
-        if (job->out == CD_OUT_GRAD) cdist__grad_fill(&x->a[k], &x->b[k], x->r[k], &job->grads[i]);
-        if (job->statuses) job->statuses[i] = CDIST_OK;
-    }
+    for (size_t k = 0; k < cnt; k++)
+        if (x->later >> k & 1) {
+            cdist__contact_of_core(&x->a[k], &x->b[k], x->r[k], x->c[k]);
+            many_finish(x, k, CDIST_OK);
+        }
 }
 
 static void many_range(cdist_query *h, const cdist__job *job, size_t lo, size_t hi, cdist__slot *slot)

@@ -71,7 +71,12 @@ static inline int cdist__radius_valid(const cdist__core_obj *o)
 {
     return !o->swept || (o->radius >= 0.0 && o->radius <= CD_MAX_ABS);
 }
-/* The contact c of a swept query whose core query answered r with CDIST_OK (radii valid). */
+/* Both objects given with valid radii: the contact follows from the core query's answer. */
+static inline int cdist__contact_ready(const cdist__core_obj *a, const cdist__core_obj *b)
+{
+    return a->obj && b->obj && cdist__radius_valid(a) && cdist__radius_valid(b);
+}
+/* The contact c of a swept query whose core query answered r with CDIST_OK (contact ready). */
 void cdist__contact_of_core(const cdist__core_obj *a, const cdist__core_obj *b, const cdist_result *r, cdist_contact *c);
 /* cdist__swept_query(q, a, b, c, core) for a contact c given, when the core query has already
  * answered (status st, *core): the same contact and status, to the bit. */

@@ -372,7 +372,7 @@ cdist_status cdist__swept_query(cdist_query *q, const cdist__core_obj *a, const 
     /* Valid arguments go straight to the core query (which takes the handle's in-use flag
      * itself). Otherwise the failure is reported under the flag (a busy handle is left
      * untouched); afterwards only c is written: every field, in the error state on failure. */
-    if (!(c && a->obj && b->obj && cdist__radius_valid(a) && cdist__radius_valid(b))) {
+    if (!(c && cdist__contact_ready(a, b))) {
         if (c) cdist__contact_set_error(c);
         if ((st = cdist__enter(q, r))) return st;
         if (!c) st = cdist__fail(q, CDIST_ERR_NULL_ARGUMENT, "contact pointer is NULL");
@@ -388,7 +388,7 @@ cdist_status cdist__swept_query(cdist_query *q, const cdist__core_obj *a, const 
 cdist_status cdist__contact_of_core_query(cdist_query *q, const cdist__core_obj *a, const cdist__core_obj *b,
                                           cdist_status st, cdist_result *core, cdist_contact *c)
 {
-    if (!(a->obj && b->obj && cdist__radius_valid(a) && cdist__radius_valid(b))) /* the query reports it */
+    if (!cdist__contact_ready(a, b)) /* the query reports it */
         return cdist__swept_query(q, a, b, c, core);
     return contact_of_answer(a, b, st, core, c);
 }
