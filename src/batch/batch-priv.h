@@ -78,9 +78,10 @@ uint64_t cdist__cc_distance_kernel(const cdist__job *job, double unit_tol, size_
 
 /* A circle-circle screen for scenes: distances[i] is the exact distance of cdist_batch_distance,
  * or, when the distance is certainly above cutoffs[i], a certified lower bound above
- * cutoffs[i] (rounding included), or -INFINITY when a grid point of the search is within
+ * cutoffs[i] (rounding included), or -INFINITY when a point of the circles is within
  * cutoffs[i] (to the rounding of F there: the caller answers such a pair in full). The kernel
- * decides the last two from its first grid and skips the rest of the search. */
+ * decides the last two from F at the search's hull points (ck_screen) and searches only the
+ * entries they leave. */
 cdist_status cdist__batch_screen(cdist_query *q, size_t n, const cdist_circle *a, const cdist_circle *b,
                                  const double *cutoffs, double *distances);
 

@@ -58,7 +58,7 @@ static const ck_variant ck_v8 = {8, ck_setup_8, ck_search_8, ck_screen_8, ck_sea
 
 static uint64_t ck_run(const ck_variant *v, const cdist__job *job, double unit_tol, size_t lo, size_t count);
 
-/* A screen's block: the verdicts of the first grid where it decides; the entries it leaves are
+/* A screen's block: the verdicts of ck_screen where it decides; the entries it leaves are
  * packed into lanes of their own for the whole search (so that a group's lanes stop together). */
 static uint64_t ck_run_screen(const ck_variant *v, const cdist__job *job, double unit_tol, size_t lo, int n,
                               uint64_t left, ck_block *b)

@@ -201,10 +201,8 @@ CD_INLINE V KN(ck_grid_lb)(const KN(ck_ring) *r, const V *Fg, int j, V R2tan)
  * (a constant): certify exactly what the single query's search (cdist__cc_quick,
  * src/circles/cc_quick_body.h) certifies, which gives up earlier (CK_QUICK_LEVELS, a basin
  * near B's axis, an F below CD_CCK_MIN_F on the way, a near-tie seen before the end, a NaN);
- * where both certify, the angle and its cos and sin are the same. screen (a constant): the
- * first grid only, the verdicts of a screen (cdist__batch_screen) into b->screen, and the mask
- * of the lanes it leaves undecided. */
-CD_INLINE unsigned KN(ck_search_mode)(ck_block *b, int g, int quick, int screen)
+ * where both certify, the angle and its cos and sin are the same. */
+CD_INLINE unsigned KN(ck_search_mode)(ck_block *b, int g, int quick)
 {
     KN(ck_ring) r;
     KN(ck_load)(b, g, &r);
@@ -224,22 +222,6 @@ CD_INLINE unsigned KN(ck_search_mode)(ck_block *b, int g, int quick, int screen)
     V minlb = vset(INFINITY), R2tan = vmul(r.R2, vset(cdist__cc_tab.grid_tan2));
     M nan = mfalse(); /* a NaN bound would drop out of minlb (min keeps the other operand) */
     V c = vset(0.0), s = vset(0.0), Fl = vset(0.0), Fr = vset(0.0), lbb = vset(INFINITY);
-    if (screen) {
-        /* The distance is above the cutoff when the smallest bound of all intervals, less the
-         * margin, is (its square root scaled back and rounded down: a certified lower bound, the
-         * verdict), and at most the cutoff when a grid point is that close (-inf). */
-        V alllb = vset(INFINITY);
-        for (int j = 0; j < CK_GRID; j++) {
-            V lb = KN(ck_grid_lb)(&r, Fg, j, R2tan);
-            alllb = vmin(alllb, lb);
-            nan = mor(nan, vne(lb, lb));
-        }
-        V cut = vld(&b->col[CK_C_CUT][g]), scale = vmul(vld(&b->col[CK_C_UNSC][g]), vld(&b->col[CK_C_UP][g]));
-        V dlb = vmul(vmul(vsqrt(vmax(vsub(alllb, margin), vset(0.0))), scale), vset(1.0 - 4.0 * DBL_EPSILON));
-        M above = mandn(nan, vgt(dlb, cut)), below = vle(vmul(vsqrt(bestF), scale), cut);
-        vst(&b->screen[g], vsel(above, dlb, vset(-INFINITY)));
-        return mbits(mnot(mor(above, below)));
-    }
     for (int j = 0; j < CK_GRID; j++) {
         int jn = (j + 1) % CK_GRID, jp = (j + CK_GRID - 1) % CK_GRID;
         V lb = KN(ck_grid_lb)(&r, Fg, j, R2tan);
@@ -372,9 +354,42 @@ CD_INLINE unsigned KN(ck_search_mode)(ck_block *b, int g, int quick, int screen)
     return mbits(fail);
 }
 
-static unsigned KN(ck_search)(ck_block *b, int g) { return KN(ck_search_mode)(b, g, 0, 0); }
-static unsigned KN(ck_search_quick)(ck_block *b, int g) { return KN(ck_search_mode)(b, g, 1, 0); }
-static unsigned KN(ck_screen)(ck_block *b, int g) { return KN(ck_search_mode)(b, g, 0, 1); }
+static unsigned KN(ck_search)(ck_block *b, int g) { return KN(ck_search_mode)(b, g, 0); }
+static unsigned KN(ck_search_quick)(ck_block *b, int g) { return KN(ck_search_mode)(b, g, 1); }
+/* The screen of the entries of the lane group from g (cdist__batch_screen): the verdicts into
+ * b->screen, and the mask of the lanes it leaves undecided. */
+static unsigned KN(ck_screen)(ck_block *b, int g)
+{
+    KN(ck_ring) r;
+    KN(ck_load)(b, g, &r);
+    V margin = vset(CD_CCK_CERT_MARGIN), R2tan = vmul(r.R2, vset(cdist__cc_tab.grid_tan2));
+    M nan = mfalse();
+    /* The circle lies in the polygon of the hull points H_j, so F >= min_j F(H_j) - R^2 tan^2
+     * on it (the convex bound of ck_grid_lb over the whole polygon): the distance is above the
+     * cutoff when that bound, less the margin, is (its square root scaled back and rounded
+     * down: a certified lower bound, the verdict); it is at most the cutoff when F at one of
+     * the circle's points of the interval of the smallest F(H_j) (its ends and middle) is
+     * (-inf: the caller answers in full). */
+    V hmin = vset(INFINITY), hc = vset(0.0), hs = vset(0.0);
+    for (int j = 0; j < CK_GRID; j++) {
+        V c = vset(cdist__cc_tab.hull_c[j]), s = vset(cdist__cc_tab.hull_s[j]), Fh = KN(ck_f)(&r, c, s);
+        M lt = vlt(Fh, hmin);
+        hmin = vsel(lt, Fh, hmin);
+        hc = vsel(lt, c, hc);
+        hs = vsel(lt, s, hs);
+        nan = mor(nan, vne(Fh, Fh));
+    }
+    V co = vset(cdist__cc_tab.grid_half_c), si = vset(cdist__cc_tab.grid_half_s);
+    V mc = vmul(hc, co), ms = vmul(hs, co), lc, ls, rc, rs;
+    KN(ck_rot)(mc, ms, co, vneg(si), &lc, &ls);
+    KN(ck_rot)(mc, ms, co, si, &rc, &rs);
+    V Fon = vmin(KN(ck_f)(&r, mc, ms), vmin(KN(ck_f)(&r, lc, ls), KN(ck_f)(&r, rc, rs)));
+    V cut = vld(&b->col[CK_C_CUT][g]), scale = vmul(vld(&b->col[CK_C_UNSC][g]), vld(&b->col[CK_C_UP][g]));
+    V dlb = vmul(vmul(vsqrt(vmax(vsub(vsub(hmin, R2tan), margin), vset(0.0))), scale), vset(1.0 - 4.0 * DBL_EPSILON));
+    M above = mandn(nan, vgt(dlb, cut)), below = vle(vmul(vsqrt(Fon), scale), cut);
+    vst(&b->screen[g], vsel(above, dlb, vset(-INFINITY)));
+    return mbits(mnot(mor(above, below)));
+}
 
 /* ---- the distance at the angle found, in lanes ---- */
 

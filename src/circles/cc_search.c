@@ -26,6 +26,8 @@ static void cc_tables_init(void)
         tb->lane_index[j] = j;
     }
     tb->grid_tan2 = tan(0.5 * step) * tan(0.5 * step);
+    tb->grid_half_c = cos(0.5 * step);
+    tb->grid_half_s = sin(0.5 * step);
     double h = step;
     for (int l = 0; l < CK_LEVELS; l++, h *= 0.25) {
         tb->half[l] = h;

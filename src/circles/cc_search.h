@@ -21,6 +21,7 @@ typedef struct cdist__cc_search_tab {
     double grid_c[CK_GRID], grid_s[CK_GRID]; /* cos, sin of 2 pi j / CK_GRID */
     double hull_c[CK_GRID], hull_s[CK_GRID]; /* the hull point of [t_j, t_j+1]: cos, sin of its middle / cos(pi / CK_GRID) */
     double grid_tan2;                        /* tan^2(pi / CK_GRID) */
+    double grid_half_c, grid_half_s;         /* cos, sin of pi / CK_GRID */
     double half[CK_LEVELS];                  /* basin half-width h_l */
     double end_c[CK_LEVELS], end_s[CK_LEVELS]; /* cos, sin of h_l */
     double sub_c[CK_LEVELS][4], sub_s[CK_LEVELS][4]; /* cos, sin of k h_l / 4, k = 1..3 */

@@ -137,7 +137,7 @@ typedef struct broad {
                           * kept when its distance may be <= delta + reach[i] + reach[j] */
     int list;        /* the pair list of a moving scene: every pair whose boxes are within lim */
     int screen;      /* the narrow phase screens pairs of circle cores (cdist__batch_screen), whose
-                      * first grid costs about what the bounds of cdist__scene_excluded cost and
+                      * first stage costs about what the bounds of cdist__scene_excluded cost and
                       * decides far more pairs: those bounds are left out for them */
 } broad;
 
@@ -391,7 +391,7 @@ static double screen_cutoff(double lim, double margin, double radii)
 /* One chunk of keys. Pairs of two circle cores are screened first by the circle-circle kernel
  * (hs, one thread; cdist__batch_screen): its distance is within 2 ulps of the scale of the full
  * query's, far inside the bound margin, so a pair it puts above lim + margin is above lim; its
- * first grid alone often decides (a certified lower bound above the cutoff, or a point within
+ * first stage alone often decides (a certified lower bound above the cutoff, or a point within
  * it). The others get the full query. */
 static void run_chunk(narrow *w, cdist_query *h, cdist_query *hs, size_t c)
 {
