@@ -135,6 +135,9 @@ cdist_status cdist__scene_enter(cdist_query *q, cdist_scene *s);
 cdist_status cdist__scene_leave(cdist_query *q, cdist_scene *s, cdist_status st);
 /* Sort 64-bit keys ascending (tmp: n entries of scratch). */
 void cdist__radix_sort_keys(uint64_t *key, uint64_t *tmp, size_t n);
+/* Sort pair keys (i << 32 | j, every i < ids) ascending: a counting pass by i, then each i's
+ * run by j. tmp: n keys of scratch, cnt: ids + 1 counters of scratch. */
+void cdist__sort_pair_keys(uint64_t *key, uint64_t *tmp, uint32_t *cnt, size_t ids, size_t n);
 
 /* Box gap test: every axis gap <= lim (false for a NaN gap). With SSE2, the same six
  * subtractions and comparisons two axes at a time (axis 1 twice). */

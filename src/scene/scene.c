@@ -433,6 +433,37 @@ static void radix_sort(uint64_t *key, uint32_t *val, uint64_t *key_tmp, uint32_t
 
 void cdist__radix_sort_keys(uint64_t *key, uint64_t *tmp, size_t n) { radix_sort(key, NULL, tmp, NULL, n); }
 
+/* Runs of one i up to this long are sorted by insertion (a scene pair list has a few per i). */
+#define PAIR_RUN_INSERT 32
+
+void cdist__sort_pair_keys(uint64_t *key, uint64_t *tmp, uint32_t *cnt, size_t ids, size_t n)
+{
+    memset(cnt, 0, (ids + 1) * sizeof *cnt);
+    for (size_t k = 0; k < n; k++) cnt[(key[k] >> 32) + 1]++;
+    for (size_t i = 0; i < ids; i++) cnt[i + 1] += cnt[i];
+    for (size_t k = 0; k < n; k++) tmp[cnt[key[k] >> 32]++] = key[k];
+    /* cnt[i] is now the end of run i */
+    size_t lo = 0;
+    for (size_t i = 0; i < ids; i++) {
+        size_t hi = cnt[i], m = hi - lo;
+        if (m > PAIR_RUN_INSERT) {
+            memcpy(key + lo, tmp + lo, m * sizeof *key);
+            radix_sort(key + lo, NULL, tmp + lo, NULL, m);
+        } else {
+            for (size_t k = lo; k < hi; k++) {
+                uint64_t x = tmp[k];
+                size_t at = k;
+                while (at > lo && key[at - 1] > x) {
+                    key[at] = key[at - 1];
+                    at--;
+                }
+                key[at] = x;
+            }
+        }
+        lo = hi;
+    }
+}
+
 /* Node boxes bottom-up from the object boxes; returns the sum of the leaves' box sizes (the
  * tree's quality: it grows as objects move away from the neighbours they were built with). */
 static double refit(cdist_scene *s)

@@ -621,14 +621,22 @@ static cdist_status check_delta(cdist_query *q, double delta, const void *out, s
     return CDIST_OK;
 }
 
-/* Sort the candidate keys (the scratch lives for the sort only: it would double the
- * candidates' share of the scene's memory). */
-static cdist_status sort_keys(cdist_query *q, uint64_t *key, size_t n)
+/* Sort the candidate keys, whose i are ids of s (the scratch lives for the sort only: it would
+ * double the candidates' share of the scene's memory). By i first when the ids are not many
+ * more than the keys, else by the radix sort alone. */
+static cdist_status sort_keys(cdist_query *q, const cdist_scene *s, uint64_t *key, size_t n)
 {
     if (n < 2) return CDIST_OK;
+    int by_id = s->n <= 4 * n;
     uint64_t *tmp = cdist__big_malloc(n * sizeof *tmp);
-    if (!tmp) return cdist__fail(q, CDIST_ERR_NO_MEMORY, "scene: out of memory for sorting %zu candidate pairs", n);
-    cdist__radix_sort_keys(key, tmp, n);
+    uint32_t *cnt = by_id ? malloc((s->n + 1) * sizeof *cnt) : NULL;
+    if (!tmp || (by_id && !cnt)) {
+        free(tmp);
+        return cdist__fail(q, CDIST_ERR_NO_MEMORY, "scene: out of memory for sorting %zu candidate pairs", n);
+    }
+    if (by_id) cdist__sort_pair_keys(key, tmp, cnt, s->n, n);
+    else cdist__radix_sort_keys(key, tmp, n);
+    free(cnt);
     free(tmp);
     return CDIST_OK;
 }
@@ -801,7 +809,7 @@ static cdist_status list_make(cdist_query *q, cdist_scene *s, double delta, pool
     double reach = fmax(delta, 0.0) + skin;
     broad b = {s, s, 1, reach, delta, 0, s->cand, 0, s->cand_cap, 0, 0, NULL, 1, 0};
     cdist_status st = broad_run(q, &b, p, "pairs_within");
-    if (st || (st = sort_keys(q, s->cand, b.n))) return st;
+    if (st || (st = sort_keys(q, s, s->cand, b.n))) return st;
     if (s->list_cap < b.n) {
         float *lo = cdist__big_realloc(s->list_lo, b.n * sizeof *lo);
         if (lo) s->list_lo = lo;
@@ -844,7 +852,7 @@ static cdist_status pairs_run(cdist_query *q, cdist_scene *sa, cdist_scene *sb, 
     if (list) {
         if (reuse || !(st = list_make(q, sa, delta, &p))) b.n = sa->list_n;
     } else if (!(st = broad_run(q, &b, &p, what))) {
-        st = sort_keys(q, sa->cand, b.n);
+        st = sort_keys(q, sa, sa->cand, b.n);
     }
     if (!st) {
         w->sa = sa;
@@ -961,7 +969,7 @@ static cdist_status pair_job_run(cdist_query *q, cdist_scene *s, broad *b, const
     pool p;
     pool_start(&p, call_threads(q, s, handles, &screen));
     if (!screen) st = cdist__fail(q, CDIST_ERR_NO_MEMORY, "scene %s: out of memory for the thread handles", what);
-    else if (!(st = broad_run(q, b, &p, what)) && !(st = sort_keys(q, s->cand, b->n)) && b->n > 0) {
+    else if (!(st = broad_run(q, b, &p, what)) && !(st = sort_keys(q, s, s->cand, b->n)) && b->n > 0) {
         job->res = malloc(b->n * job->res_size);
         job->st = malloc(b->n * sizeof *job->st);
         if (!job->res || !job->st) {
@@ -1488,7 +1496,7 @@ cdist_status cdist_scene_within(cdist_query *q, cdist_scene *s, cdist_scene_kind
         if (b.oom) {
             st = cdist__fail(q, CDIST_ERR_NO_MEMORY, "scene within: out of memory for the candidates");
         } else {
-            if (!(st = sort_keys(q, s->cand, b.n))) {
+            if (!(st = sort_keys(q, s, s->cand, b.n))) {
                 narrow w;
                 memset(&w, 0, sizeof w);
                 w.sa = s;
