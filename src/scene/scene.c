@@ -135,7 +135,7 @@ typedef struct bound {
     double scale;          /* largest |coordinate| plus the radii */
 } bound;
 
-static void bound_of(const cdist__scene_obj *o, int with_normal, bound *x)
+CD_INLINE void bound_of(const cdist__scene_obj *o, int with_normal, bound *x)
 {
     x->type = core_type(o->kind);
     x->r = o->r;
@@ -166,22 +166,24 @@ void cdist__scene_box(const cdist__scene_obj *o, cdist__box *b)
 {
     bound x;
     bound_of(o, 1, &x);
-    double pad = x.r + CD_SCENE_BOUND_REL * x.scale;
+    double pad = x.r + CD_SCENE_BOUND_REL * x.scale, lo[3], hi[3];
     if (!is_planar(&x)) {
         vec3 a = x.p0, c = x.type == CD_CORE_SEGMENT ? x.p1 : x.p0;
-        b->lo[0] = fmin(a.x, c.x) - pad, b->hi[0] = fmax(a.x, c.x) + pad;
-        b->lo[1] = fmin(a.y, c.y) - pad, b->hi[1] = fmax(a.y, c.y) + pad;
-        b->lo[2] = fmin(a.z, c.z) - pad, b->hi[2] = fmax(a.z, c.z) + pad;
-        return;
+        lo[0] = fmin(a.x, c.x) - pad, hi[0] = fmax(a.x, c.x) + pad;
+        lo[1] = fmin(a.y, c.y) - pad, hi[1] = fmax(a.y, c.y) + pad;
+        lo[2] = fmin(a.z, c.z) - pad, hi[2] = fmax(a.z, c.z) + pad;
+    } else {
+        /* A circle's extent along axis k is R sqrt(1 - n_k^2) = R sqrt(n_i^2 + n_j^2) (no
+         * cancellation) for the unit normal n. */
+        vec3 n = x.n, m = x.m;
+        double ex = x.R * sqrt(n.y * n.y + n.z * n.z), ey = x.R * sqrt(n.x * n.x + n.z * n.z);
+        double ez = x.R * sqrt(n.x * n.x + n.y * n.y);
+        lo[0] = m.x - ex - pad, hi[0] = m.x + ex + pad;
+        lo[1] = m.y - ey - pad, hi[1] = m.y + ey + pad;
+        lo[2] = m.z - ez - pad, hi[2] = m.z + ez + pad;
     }
-    /* A circle's extent along axis k is R sqrt(1 - n_k^2) = R sqrt(n_i^2 + n_j^2) (no
-     * cancellation) for the unit normal n. */
-    vec3 n = x.n, m = x.m;
-    double ex = x.R * sqrt(n.y * n.y + n.z * n.z), ey = x.R * sqrt(n.x * n.x + n.z * n.z);
-    double ez = x.R * sqrt(n.x * n.x + n.y * n.y);
-    b->lo[0] = m.x - ex - pad, b->hi[0] = m.x + ex + pad;
-    b->lo[1] = m.y - ey - pad, b->hi[1] = m.y + ey + pad;
-    b->lo[2] = m.z - ez - pad, b->hi[2] = m.z + ez + pad;
+    for (int k = 0; k < 3; k++) b->lo[k] = cdist__float_down(lo[k]), b->hi[k] = cdist__float_up(hi[k]);
+    b->lo[3] = b->hi[3] = 0.0f;
 }
 
 /* Lower bound of the distance from the plane of planar core a to core b: the distance of the
@@ -373,14 +375,20 @@ double cdist__scene_motion(const cdist__scene_obj *oa, const cdist__scene_obj *o
 static void box_empty(cdist__box *b)
 {
     for (int k = 0; k < 3; k++) b->lo[k] = INFINITY, b->hi[k] = -INFINITY;
+    b->lo[3] = b->hi[3] = 0.0f;
 }
 
 static void box_join(cdist__box *b, const cdist__box *x)
 {
+#if defined(__SSE2__)
+    _mm_storeu_ps(b->lo, _mm_min_ps(_mm_loadu_ps(b->lo), _mm_loadu_ps(x->lo)));
+    _mm_storeu_ps(b->hi, _mm_max_ps(_mm_loadu_ps(b->hi), _mm_loadu_ps(x->hi)));
+#else
     for (int k = 0; k < 3; k++) {
         if (x->lo[k] < b->lo[k]) b->lo[k] = x->lo[k];
         if (x->hi[k] > b->hi[k]) b->hi[k] = x->hi[k];
     }
+#endif
 }
 
 static uint64_t spread21(uint64_t x)
@@ -520,8 +528,9 @@ static cdist_status build(cdist_query *q, cdist_scene *s)
         return cdist__fail(q, CDIST_ERR_NO_MEMORY, "scene: out of memory for the tree of %zu objects", m);
     }
     /* The centres of the cores' bounding balls (the centres of their boxes) by id order first
-     * (perm = ids; kept in box[].lo until the boxes are made in tree order), then their Morton
-     * keys. */
+     * (perm = ids; their bytes kept in box[] until the boxes are made in tree order), then their
+     * Morton keys. */
+    _Static_assert(sizeof(cdist__box) >= 3 * sizeof(double), "a box holds a centre");
     double clo[3] = {INFINITY, INFINITY, INFINITY}, chi[3] = {-INFINITY, -INFINITY, -INFINITY};
     size_t k = 0;
     for (size_t i = 0; i < s->n; i++) {
@@ -532,13 +541,12 @@ static cdist_status build(cdist_query *q, cdist_scene *s)
         perm[k] = (uint32_t)i;
         bound x;
         bound_of(&s->obj[i], 0, &x);
-        double *c = box[k].lo;
-        c[0] = x.m.x, c[1] = x.m.y, c[2] = x.m.z;
+        const double c[3] = {x.m.x, x.m.y, x.m.z};
+        memcpy(&box[k++], c, sizeof c);
         for (int a = 0; a < 3; a++) {
             if (c[a] < clo[a]) clo[a] = c[a];
             if (c[a] > chi[a]) chi[a] = c[a];
         }
-        k++;
     }
     /* One scale for the three axes: a flat scene (a sheet) gets few bits across its thin axis,
      * so its order follows the sheet instead of the noise across it. */
@@ -548,8 +556,10 @@ static cdist_status build(cdist_query *q, cdist_scene *s)
     for (int a = 0; a < 3; a++) scale[a] = ext > 0.0 && isfinite(ext) ? 2097151.0 / ext : 0.0;
     for (size_t p = 0; p < m; p++) {
         uint64_t code = 0;
+        double c[3];
+        memcpy(c, &box[p], sizeof c);
         for (int a = 0; a < 3; a++) {
-            double x = (box[p].lo[a] - clo[a]) * scale[a];
+            double x = (c[a] - clo[a]) * scale[a];
             uint64_t qx = x > 0.0 ? (x < 2097151.0 ? (uint64_t)x : 2097151u) : 0u;
             code |= spread21(qx) << a;
         }

@@ -126,7 +126,8 @@ static const char *pair_message(cdist_status st)
 typedef struct broad {
     cdist_scene *sa, *sb;
     int self;        /* one scene: pairs i < j, the skip filter applies */
-    double lim;      /* box test: max(delta, 0) (boxes bound the solids, not the signed distance) */
+    float lim;       /* box test: max(delta, 0) (boxes bound the solids, not the signed distance),
+                      * rounded up (cdist__box_lim) */
     double delta;
     size_t box_pairs;
     uint64_t *key;
@@ -323,25 +324,14 @@ static const cdist__scene_obj *key_pair(const narrow *w, size_t k, size_t *i, si
     return &w->sb->obj[*j];
 }
 
-/* Outward rounding into the list's floats. */
-static float float_down(double x)
-{
-    float f = (float)x;
-    return (double)f > x ? nextafterf(f, -INFINITY) : f;
-}
-static float float_up(double x)
-{
-    float f = (float)x;
-    return (double)f < x ? nextafterf(f, INFINITY) : f;
-}
 
 /* Entry k, whose objects have moved mm together, learns that its distance is >= lo and <= hi
  * now (NaN: nothing learnt). */
 static void list_learn(narrow *w, size_t k, double mm, double lo, double hi)
 {
     double nl = lo + mm, nh = hi - mm;
-    if (nl > (double)w->lo[k]) w->lo[k] = fmaxf(w->lo[k], float_down(nl));
-    if (nh < (double)w->hi[k]) w->hi[k] = fminf(w->hi[k], float_up(nh));
+    if (nl > (double)w->lo[k]) w->lo[k] = fmaxf(w->lo[k], cdist__float_down(nl));
+    if (nh < (double)w->hi[k]) w->hi[k] = fminf(w->hi[k], cdist__float_up(nh));
 }
 
 enum { ACT_SKIP, ACT_ANSWER, ACT_SCREEN };
@@ -807,7 +797,7 @@ static cdist_status list_make(cdist_query *q, cdist_scene *s, double delta, pool
     double mean = s->step_count ? s->step_sum / (double)s->step_count : 0.0;
     double skin = fmin(CD_SCENE_SKIN_STEPS * mean, boxes ? extent / (double)boxes : 0.0);
     double reach = fmax(delta, 0.0) + skin;
-    broad b = {s, s, 1, reach, delta, 0, s->cand, 0, s->cand_cap, 0, 0, NULL, 1, 0};
+    broad b = {s, s, 1, cdist__box_lim(reach), delta, 0, s->cand, 0, s->cand_cap, 0, 0, NULL, 1, 0};
     cdist_status st = broad_run(q, &b, p, "pairs_within");
     if (st || (st = sort_keys(q, s, s->cand, b.n))) return st;
     if (s->list_cap < b.n) {
@@ -848,7 +838,7 @@ static cdist_status pairs_run(cdist_query *q, cdist_scene *sa, cdist_scene *sb, 
     cdist_query *handles[256], **screen;
     pool p;
     pool_start(&p, call_threads(q, sa, handles, &screen));
-    broad b = {sa, sb, sa == sb, fmax(delta, 0.0), delta, 0, sa->cand, 0, sa->cand_cap, 0, 0, NULL, 0, screen != NULL};
+    broad b = {sa, sb, sa == sb, cdist__box_lim(fmax(delta, 0.0)), delta, 0, sa->cand, 0, sa->cand_cap, 0, 0, NULL, 0, screen != NULL};
     if (list) {
         if (reuse || !(st = list_make(q, sa, delta, &p))) b.n = sa->list_n;
     } else if (!(st = broad_run(q, &b, &p, what))) {
@@ -1021,7 +1011,7 @@ static double link_box_reach(const cdist_scene *s)
 
 static cdist_status linked_run(cdist_query *q, cdist_scene *s, cdist_scene_link *out, size_t capacity, size_t *count)
 {
-    broad b = {s, s, 1, link_box_reach(s), 0.0, 0, s->cand, 0, s->cand_cap, 0, 1, NULL, 0, 0};
+    broad b = {s, s, 1, cdist__box_lim(link_box_reach(s)), 0.0, 0, s->cand, 0, s->cand_cap, 0, 1, NULL, 0, 0};
     pair_job job = {.chunk = CD_SCENE_CHUNK, .res_size = sizeof(cdist_link), .one = link_one};
     cdist_status st = pair_job_run(q, s, &b, "linked_pairs", &job);
     cdist_link *res = job.res;
@@ -1160,7 +1150,7 @@ static cdist_status toi_run(cdist_query *q, cdist_scene *s, const cdist_motion *
     double lim = target + tolerance;
     for (size_t i = 0; i < s->n; i++) reach[i] *= 1.0 + CD_SCENE_TOI_REACH_REL;
     most *= 1.0 + CD_SCENE_TOI_REACH_REL;
-    broad b = {s, s, 1, fmax(lim, 0.0) + 2.0 * most, lim, 0, s->cand, 0, s->cand_cap, 0, 0, reach, 0, 0};
+    broad b = {s, s, 1, cdist__box_lim(fmax(lim, 0.0) + 2.0 * most), lim, 0, s->cand, 0, s->cand_cap, 0, 0, reach, 0, 0};
     toi_args args = {motions, stride, target, tolerance, max_iterations};
     pair_job job = {.chunk = CD_SCENE_TOI_CHUNK, .res_size = sizeof(cdist_toi_result), .ctx = &args, .one = toi_one};
     st = pair_job_run(q, s, &b, "toi", &job);
@@ -1482,7 +1472,7 @@ cdist_status cdist_scene_within(cdist_query *q, cdist_scene *s, cdist_scene_kind
     cdist__scene_obj qo;
     if (!(st = check_delta(q, delta, out, capacity)) && !(st = query_object(q, kind, object, &qo)) &&
         !(st = cdist__scene_prepare(q, s))) {
-        broad b = {s, s, 0, fmax(delta, 0.0), delta, 0, s->cand, 0, s->cand_cap, 0, 0, NULL, 0, 0};
+        broad b = {s, s, 0, cdist__box_lim(fmax(delta, 0.0)), delta, 0, s->cand, 0, s->cand_cap, 0, 0, NULL, 0, 0};
         s->list_ok = 0;
         near_q c;
         memset(&c, 0, sizeof c);
