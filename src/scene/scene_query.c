@@ -1234,7 +1234,7 @@ static double box_cut(const closest *c) { return c->best > 0.0 ? c->best : 0.0; 
 
 static void best_pos(closest *c, uint32_t pa, uint32_t pb)
 {
-    if (cdist__box_gap(&c->sa->box[pa], &c->sb->box[pb]) > box_cut(c)) return;
+    if (!cdist__box_near(&c->sa->box[pa], &c->sb->box[pb], cdist__box_lim(box_cut(c)))) return;
     size_t i, j;
     const cdist__scene_obj *oa, *ob;
     if (!pair_at(c->sa, c->sb, c->self, 1, pa, pb, &i, &j, &oa, &ob)) return;
@@ -1259,7 +1259,7 @@ static void best_pos(closest *c, uint32_t pa, uint32_t pb)
 static void best_cross(closest *c, uint32_t x, uint32_t y)
 {
     const cdist__node *nx = &c->sa->node[x], *ny = &c->sb->node[y];
-    if (cdist__box_gap(&nx->box, &ny->box) > box_cut(c)) return;
+    if (!cdist__box_near(&nx->box, &ny->box, cdist__box_lim(box_cut(c)))) return;
     if (nx->count && ny->count) {
         for (uint32_t p = nx->first; p < nx->first + nx->count; p++)
             for (uint32_t q = ny->first; q < ny->first + ny->count; q++) best_pos(c, p, q);
@@ -1271,8 +1271,8 @@ static void best_cross(closest *c, uint32_t x, uint32_t y)
     else
         a0 = a1 = x, b0 = ny->first, b1 = ny->first + 1;
     /* The nearer pair of subtrees first: a small best early prunes the rest. */
-    double g0 = cdist__box_gap(&c->sa->node[a0].box, &c->sb->node[b0].box);
-    double g1 = cdist__box_gap(&c->sa->node[a1].box, &c->sb->node[b1].box);
+    float g0 = cdist__box_gap_f(&c->sa->node[a0].box, &c->sb->node[b0].box);
+    float g1 = cdist__box_gap_f(&c->sa->node[a1].box, &c->sb->node[b1].box);
     if (g1 < g0) {
         best_cross(c, a1, b1);
         best_cross(c, a0, b0);
@@ -1369,7 +1369,7 @@ static double near_cut(const near_q *c) { return c->n < c->k ? INFINITY : c->res
 static void near_obj(near_q *c, uint32_t p)
 {
     double cut = near_cut(c);
-    if (cdist__box_gap(&c->s->box[p], &c->qbox) > (cut > 0.0 ? cut : 0.0)) return;
+    if (!cdist__box_near(&c->s->box[p], &c->qbox, cdist__box_lim(cut > 0.0 ? cut : 0.0))) return;
     size_t i = c->s->perm[p];
     const cdist__scene_obj *o = &c->s->obj[i];
     if (o->state != CD_SCENE_LIVE || cdist__scene_excluded(o, c->qo, cut, 1)) return;
@@ -1396,13 +1396,13 @@ static void near_node(near_q *c, uint32_t x)
 {
     const cdist__node *nx = &c->s->node[x];
     double cut = near_cut(c);
-    if (cdist__box_gap(&nx->box, &c->qbox) > (cut > 0.0 ? cut : 0.0)) return;
+    if (!cdist__box_near(&nx->box, &c->qbox, cdist__box_lim(cut > 0.0 ? cut : 0.0))) return;
     if (nx->count) {
         for (uint32_t p = nx->first; p < nx->first + nx->count; p++) near_obj(c, p);
         return;
     }
     uint32_t a = nx->first, b = nx->first + 1;
-    if (cdist__box_gap(&c->s->node[b].box, &c->qbox) < cdist__box_gap(&c->s->node[a].box, &c->qbox)) a = b, b = nx->first;
+    if (cdist__box_gap_f(&c->s->node[b].box, &c->qbox) < cdist__box_gap_f(&c->s->node[a].box, &c->qbox)) a = b, b = nx->first;
     near_node(c, a);
     near_node(c, b);
 }
