@@ -16,12 +16,12 @@
 #include "internal.h"
 #include "swept/swept-priv.h"
 
-/* One object's geometry: the core (an arc is the largest) plus the ball radius. */
+/* One object's geometry: the core; of an arc its circle, the arc itself kept beside (an arc is
+ * 96 bytes, a circle 56: the objects stay small for the scenes without arcs). */
 typedef union cdist__scene_geom {
     cdist_vec3 point;
     cdist_segment segment;
-    cdist_circle circle; /* circle or disk */
-    cdist_arc arc;
+    cdist_circle circle; /* circle, disk, or an arc's circle */
 } cdist__scene_geom;
 
 enum { CD_SCENE_LIVE = 0, CD_SCENE_INVALID = 1, CD_SCENE_REMOVED = 2 };
@@ -33,6 +33,12 @@ typedef struct cdist__scene_obj {
     uint8_t state;  /* CD_SCENE_LIVE, _INVALID, _REMOVED */
     uint8_t status; /* the validation status of an invalid object */
 } cdist__scene_obj;
+
+/* An object outside a scene (a query object, an update's new pose) with room for its arc. */
+typedef struct cdist__scene_item {
+    cdist__scene_obj o;
+    cdist_arc arc;
+} cdist__scene_item;
 
 /* An axis-aligned box that contains its object's solid (rounding included): single-precision
  * corners rounded outward (half the memory of the traversals' reads); lane 3 is not used. */
@@ -57,6 +63,7 @@ struct cdist_scene {
     atomic_int busy;
     size_t n, cap;           /* ids given out, allocated */
     cdist__scene_obj *obj;   /* by id */
+    cdist_arc *arc;          /* by id, the arcs' arcs (NULL until an arc is added) */
     uint32_t *filter;        /* by id, 2 each: group, chain (NULL until cdist_scene_set_groups) */
     uint32_t *pos;           /* by id: position in the tree, CD_SCENE_NO_POS when not in it */
     /* The tree over the live objects at its last build: positions 0 .. tree_n - 1. */
@@ -106,8 +113,9 @@ struct cdist_scene {
 
 /* Tolerances of the scene's bounds (src/base/tolerances.h has the reasons). */
 
-/* The core descriptor of an object for cdist__swept_query. */
-cdist__core_obj cdist__scene_core(const cdist__scene_obj *o);
+/* The core descriptor of an object for cdist__swept_query (arc: the object's arc when it is
+ * one, else not read). */
+cdist__core_obj cdist__scene_core(const cdist__scene_obj *o, const cdist_arc *arc);
 /* The certified solid box of a valid object. */
 void cdist__scene_box(const cdist__scene_obj *o, cdist__box *b);
 /* 1 when the signed distance of a and b is certified > lim (balls, circle-plane slabs and the
@@ -121,11 +129,16 @@ uint8_t cdist__scene_tcore(const cdist__scene_obj *o);
 /* The bound margin of a pair: CD_SCENE_BOUND_REL times the two objects' coordinate scales. */
 double cdist__scene_margin(const cdist__scene_obj *a, const cdist__scene_obj *b);
 /* A bound of how far any point of a's solid is from b's when the object changes from a to b
- * (the radius change included; INFINITY when the core kind changes or for an arc that changes),
- * rounded up. */
-double cdist__scene_motion(const cdist__scene_obj *a, const cdist__scene_obj *b);
-/* Validate one object of a kind (q's tolerance) into o; returns the status (o->state set). */
-cdist_status cdist__scene_make(cdist_query *q, cdist_scene_kind kind, const void *src, cdist__scene_obj *o);
+ * (the radius change included; INFINITY when the core kind changes or for an arc that changes;
+ * arc_a, arc_b: their arcs when they are arcs), rounded up. */
+double cdist__scene_motion(const cdist__scene_obj *a, const cdist_arc *arc_a, const cdist__scene_obj *b,
+                           const cdist_arc *arc_b);
+/* Validate one object of a kind (q's tolerance) into o, an arc's arc into *arc (not touched
+ * for the other kinds); returns the status (o->state set). */
+cdist_status cdist__scene_make(cdist_query *q, cdist_scene_kind kind, const void *src, cdist__scene_obj *o,
+                              cdist_arc *arc);
+/* Object id's arc (when it is an arc) of scene s. */
+static inline const cdist_arc *cdist__scene_arc(const cdist_scene *s, size_t id) { return s->arc ? &s->arc[id] : NULL; }
 /* Bring the tree up to date (rebuild when dirty or degraded, refit when boxes grew). */
 cdist_status cdist__scene_prepare(cdist_query *q, cdist_scene *s);
 /* Take / release the scene's in-use flag. */

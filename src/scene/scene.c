@@ -39,9 +39,10 @@ static cdist__core_type core_type(int kind)
     }
 }
 
-cdist__core_obj cdist__scene_core(const cdist__scene_obj *o)
+cdist__core_obj cdist__scene_core(const cdist__scene_obj *o, const cdist_arc *arc)
 {
-    cdist__core_obj c = {core_type(o->kind), &o->g, o->r, o->kind >= CDIST_SCENE_SPHERE};
+    cdist__core_type t = core_type(o->kind);
+    cdist__core_obj c = {t, t == CD_CORE_ARC ? (const void *)arc : (const void *)&o->g, o->r, o->kind >= CDIST_SCENE_SPHERE};
     return c;
 }
 
@@ -76,7 +77,8 @@ _Static_assert(offsetof(cdist_capsule, radius) == sizeof(cdist_segment), "capsul
 _Static_assert(offsetof(cdist_torus, tube_radius) == sizeof(cdist_circle), "torus: circle, radius");
 _Static_assert(offsetof(cdist_rounded_disk, radius) == sizeof(cdist_circle), "rounded disk: disk, radius");
 
-cdist_status cdist__scene_make(cdist_query *q, cdist_scene_kind kind, const void *src, cdist__scene_obj *o)
+cdist_status cdist__scene_make(cdist_query *q, cdist_scene_kind kind, const void *src, cdist__scene_obj *o,
+                              cdist_arc *arc)
 {
     static const char *const what[] = {"point", "segment", "circle", "disk", "arc"};
     cdist__circle tmp;
@@ -88,14 +90,19 @@ cdist_status cdist__scene_make(cdist_query *q, cdist_scene_kind kind, const void
         st = cdist__fail(q, CDIST_ERR_BAD_KIND, "%d is not a cdist_scene_kind", (int)kind);
     } else {
         int core = kind >= SWEPT_FIRST ? kind - SWEPT_FIRST : kind;
-        memcpy(&o->g, src, kind_size[core]);
+        if (core == CDIST_SCENE_ARC) {
+            memcpy(arc, src, sizeof *arc);
+            o->g.circle = arc->circle;
+        } else {
+            memcpy(&o->g, src, kind_size[core]);
+        }
         if (kind >= SWEPT_FIRST) memcpy(&o->r, (const char *)src + kind_size[core], sizeof o->r);
         switch (core) {
         case CDIST_SCENE_POINT: st = cdist__check_point(q, &o->g.point, what[core]); break;
         case CDIST_SCENE_SEGMENT: st = check_segment(q, &o->g.segment); break;
         case CDIST_SCENE_CIRCLE:
         case CDIST_SCENE_DISK: st = cdist__check_circle_nobasis(q, &o->g.circle, what[core], &tmp); break;
-        default: st = check_arc(q, &o->g.arc); break;
+        default: st = check_arc(q, arc); break;
         }
         if (!st && kind >= SWEPT_FIRST) st = check_radius(q, o->r);
     }
@@ -340,7 +347,8 @@ int cdist__scene_excluded(const cdist__scene_obj *oa, const cdist__scene_obj *ob
     return cb && (!ca || b.R <= a.R) ? ring_clears(&a, &b, thr) : ring_clears(&b, &a, thr);
 }
 
-double cdist__scene_motion(const cdist__scene_obj *oa, const cdist__scene_obj *ob)
+double cdist__scene_motion(const cdist__scene_obj *oa, const cdist_arc *arc_a, const cdist__scene_obj *ob,
+                           const cdist_arc *arc_b)
 {
     cdist__core_type ta = core_type(oa->kind), tb = core_type(ob->kind);
     if (ta != tb) return INFINITY;
@@ -355,7 +363,7 @@ double cdist__scene_motion(const cdist__scene_obj *oa, const cdist__scene_obj *o
         core = fmin(same, swap);
         break;
     }
-    case CD_CORE_ARC: core = memcmp(&oa->g.arc, &ob->g.arc, sizeof oa->g.arc) == 0 ? 0.0 : INFINITY; break;
+    case CD_CORE_ARC: core = memcmp(arc_a, arc_b, sizeof *arc_a) == 0 ? 0.0 : INFINITY; break;
     default: {
         /* The rotation taking n to n' (or to -n': the same circle or disk) by the least angle
          * moves every vector of length R by at most R |n' - n|; with the centre's move and the
@@ -621,7 +629,7 @@ void cdist_scene_free(cdist_scene *s)
     for (int i = 0; i < s->screen_n; i++) cdist_query_free(s->screen[i]);
     free(s->worker);
     free(s->screen);
-    free(s->obj), free(s->pos), free(s->perm), free(s->box), free(s->node), free(s->tcore);
+    free(s->obj), free(s->arc), free(s->pos), free(s->perm), free(s->box), free(s->node), free(s->tcore);
     free(s->cand), free(s->filter), free(s->chunk_buf);
     free(s->moved), free(s->list_lo), free(s->list_hi);
     free(s);
@@ -676,6 +684,11 @@ static cdist_status reserve(cdist_query *q, cdist_scene *s, size_t need)
         memset(g + 2 * s->cap, 0, 2 * (cap - s->cap) * sizeof *g);
         s->filter = g;
     }
+    if (s->arc) {
+        cdist_arc *a = cdist__big_realloc(s->arc, cap * sizeof *a);
+        if (!a) return cdist__fail(q, CDIST_ERR_NO_MEMORY, "scene: out of memory for %zu objects", need);
+        s->arc = a;
+    }
     if (s->moved) {
         double *m = cdist__big_realloc(s->moved, cap * sizeof *m);
         if (!m) return cdist__fail(q, CDIST_ERR_NO_MEMORY, "scene: out of memory for %zu objects", need);
@@ -683,6 +696,16 @@ static cdist_status reserve(cdist_query *q, cdist_scene *s, size_t need)
         s->moved = m;
     }
     s->cap = cap;
+    return CDIST_OK;
+}
+
+/* The arcs' array, made when the first arc comes (an object's entry is read only when it is an
+ * arc). */
+static cdist_status arcs_ready(cdist_query *q, cdist_scene *s, cdist_scene_kind kind)
+{
+    if (kind != CDIST_SCENE_ARC || s->arc) return CDIST_OK;
+    if (!(s->arc = cdist__big_malloc((s->cap ? s->cap : 1) * sizeof *s->arc)))
+        return cdist__fail(q, CDIST_ERR_NO_MEMORY, "scene: out of memory for the arcs");
     return CDIST_OK;
 }
 
@@ -728,11 +751,11 @@ cdist_status cdist_scene_add(cdist_query *q, cdist_scene *s, cdist_scene_kind ki
     if (st) return st;
     if (first_id) *first_id = s->n;
     if ((st = check_objects(q, kind, n, objects, statuses, "add"))) return leave(q, s, st);
-    if ((st = reserve(q, s, s->n + n))) return leave(q, s, st);
+    if ((st = reserve(q, s, s->n + n)) || (st = arcs_ready(q, s, kind))) return leave(q, s, st);
     first_fail f = {0, CDIST_OK, ""};
     for (size_t k = 0; k < n; k++) {
         cdist__scene_obj *o = &s->obj[s->n];
-        st = cdist__scene_make(q, kind, (const char *)objects + (ptrdiff_t)k * stride, o);
+        st = cdist__scene_make(q, kind, (const char *)objects + (ptrdiff_t)k * stride, o, s->arc ? &s->arc[s->n] : NULL);
         s->pos[s->n] = CD_SCENE_NO_POS;
         if (statuses) statuses[k] = st;
         note_fail(q, &f, k, st);
@@ -749,7 +772,7 @@ static cdist_status bad_id(cdist_query *q, size_t id, size_t n)
 }
 
 /* Accumulate the motion of a live object in the tree (docs/scene.md, moving objects). */
-static cdist_status note_motion(cdist_query *q, cdist_scene *s, size_t id, const cdist__scene_obj *o)
+static cdist_status note_motion(cdist_query *q, cdist_scene *s, size_t id, const cdist__scene_item *o)
 {
     const cdist__scene_obj *t = &s->obj[id];
     if (t->state != CD_SCENE_LIVE || s->pos[id] == CD_SCENE_NO_POS) return CDIST_OK;
@@ -758,7 +781,7 @@ static cdist_status note_motion(cdist_query *q, cdist_scene *s, size_t id, const
             return cdist__fail(q, CDIST_ERR_NO_MEMORY, "scene update: out of memory for the motion bounds");
         s->list_ok = 0;
     }
-    double m = cdist__scene_motion(t, o);
+    double m = cdist__scene_motion(t, cdist__scene_arc(s, id), &o->o, &o->arc);
     s->moved[id] += m;
     if (!(m <= s->step_moved)) s->step_moved = m;
     s->step_sum += m;
@@ -771,19 +794,21 @@ cdist_status cdist_scene_update(cdist_query *q, cdist_scene *s, size_t n, const 
 {
     cdist_status st = enter(q, s);
     if (st) return st;
-    if ((st = check_objects(q, kind, n, objects, statuses, "update"))) return leave(q, s, st);
+    if ((st = check_objects(q, kind, n, objects, statuses, "update")) || (st = arcs_ready(q, s, kind)))
+        return leave(q, s, st);
     first_fail f = {0, CDIST_OK, ""};
     for (size_t k = 0; k < n; k++) {
         size_t id = ids ? ids[k] : k;
         if (id >= s->n || s->obj[id].state == CD_SCENE_REMOVED) {
             st = bad_id(q, id, s->n);
         } else {
-            cdist__scene_obj o;
-            st = cdist__scene_make(q, kind, (const char *)objects + (ptrdiff_t)k * stride, &o);
+            cdist__scene_item o;
+            st = cdist__scene_make(q, kind, (const char *)objects + (ptrdiff_t)k * stride, &o.o, &o.arc);
             if (st == CDIST_OK && !(st = note_motion(q, s, id, &o))) {
                 cdist__scene_obj *t = &s->obj[id];
                 if (t->state != CD_SCENE_LIVE) s->live++;
-                *t = o;
+                *t = o.o;
+                if (kind == CDIST_SCENE_ARC) s->arc[id] = o.arc;
                 uint32_t p = s->pos[id];
                 if (p == CD_SCENE_NO_POS) {
                     s->dirty = 1, s->list_ok = 0;
@@ -872,7 +897,7 @@ cdist_status cdist_scene_get_stats(const cdist_scene *s, cdist_scene_stats *out)
     out->objects = s->n;
     out->live = s->live;
     out->nodes = s->node_n;
-    out->bytes = sizeof *s + s->cap * (sizeof *s->obj + sizeof *s->pos) +
+    out->bytes = sizeof *s + s->cap * (sizeof *s->obj + sizeof *s->pos + (s->arc ? sizeof *s->arc : 0)) +
                  s->tree_n * (sizeof *s->perm + sizeof *s->box + sizeof *s->tcore) + s->node_cap * sizeof *s->node +
                  s->cand_cap * sizeof *s->cand + (s->filter ? 2 * s->cap * sizeof *s->filter : 0) + s->chunk_buf_cap * sizeof *s->chunk_buf +
                  (s->moved ? s->cap * sizeof *s->moved : 0) + 2 * s->list_cap * sizeof *s->list_lo +

@@ -73,11 +73,14 @@ static int pair_record(const cdist_contact *c, cdist_status st, size_t i, size_t
     return 1;
 }
 
-/* The exact answer of the pair (a first), as pair_record reports it. */
-static int answer(cdist_query *h, const cdist__scene_obj *a, const cdist__scene_obj *b, size_t i, size_t j, double lim,
+/* The core of object id of s, of a query object. */
+static cdist__core_obj core_of(const cdist_scene *s, size_t id) { return cdist__scene_core(&s->obj[id], cdist__scene_arc(s, id)); }
+static cdist__core_obj core_of_item(const cdist__scene_item *x) { return cdist__scene_core(&x->o, &x->arc); }
+
+/* The exact answer of the pair of cores (a first), as pair_record reports it. */
+static int answer(cdist_query *h, cdist__core_obj ca, cdist__core_obj cb, size_t i, size_t j, double lim,
                   cdist_scene_pair *p, double *dist)
 {
-    cdist__core_obj ca = cdist__scene_core(a), cb = cdist__scene_core(b);
     if (unsupported(ca.type, cb.type)) return pair_record(NULL, CDIST_ERR_BAD_KIND, i, j, lim, p, dist);
     cdist_contact c;
     cdist_status st = cdist__swept_query(h, &ca, &cb, &c, NULL);
@@ -284,7 +287,7 @@ static void self(broad *b, uint32_t x) { self_walk(b->sa, x, self_leaf, cross_fn
 
 typedef struct narrow {
     cdist_scene *sa, *sb;            /* pair (i of sa, j of sb) */
-    const cdist__scene_obj *qo;      /* or (key of sa, the query object): j = SIZE_MAX */
+    const cdist__scene_item *qo;     /* or (key of sa, the query object): j = SIZE_MAX */
     const uint64_t *key;
     size_t n;
     double lim;
@@ -317,7 +320,7 @@ static const cdist__scene_obj *key_pair(const narrow *w, size_t k, size_t *i, si
     if (w->qo) {
         *i = (size_t)w->key[k];
         *j = SIZE_MAX;
-        return w->qo;
+        return &w->qo->o;
     }
     *i = (size_t)(w->key[k] >> 32);
     *j = (size_t)(w->key[k] & 0xffffffffu);
@@ -444,15 +447,15 @@ static void run_chunk(narrow *w, cdist_query *h, cdist_query *hs, size_t c)
                     size_t si, sj;
                     const cdist__scene_obj *sb = key_pair(w, todo[scan], &si, &sj), *sa = &w->sa->obj[si];
                     if (!cdist__scene_circle_pair(sa, sb)) continue;
-                    ahead.a[ahead.n] = cdist__scene_core(sa);
-                    ahead.b[ahead.n++] = cdist__scene_core(sb);
+                    ahead.a[ahead.n] = cdist__scene_core(sa, NULL); /* circles: no arc */
+                    ahead.b[ahead.n++] = cdist__scene_core(sb, NULL);
                 }
                 circles_answer(&ahead);
             }
             int u = ahead.used++;
             m += pair_record(&ahead.c[u], ahead.st[u], i, j, w->lim, &out[m], &d);
         } else {
-            m += answer(h, a, b, i, j, w->lim, &out[m], &d);
+            m += answer(h, core_of(w->sa, i), w->qo ? core_of_item(w->qo) : core_of(w->sb, j), i, j, w->lim, &out[m], &d);
         }
         if (w->lo) list_learn(w, k, mm[k - lo], d - margin, d + margin);
         full++;
@@ -1075,7 +1078,7 @@ static int scene_shape(const cdist__scene_obj *o, cdist_shape *sh)
 {
     size_t core;
     memset(sh, 0, sizeof *sh);
-    switch (cdist__scene_core(o).type) {
+    switch (cdist__scene_core(o, NULL).type) { /* the type only */
     case CD_CORE_POINT: sh->type = CDIST_SHAPE_SPHERE, core = sizeof(cdist_vec3); break;
     case CD_CORE_SEGMENT: sh->type = CDIST_SHAPE_CAPSULE, core = sizeof(cdist_segment); break;
     case CD_CORE_CIRCLE: sh->type = CDIST_SHAPE_TORUS, core = sizeof(cdist_circle); break;
@@ -1095,7 +1098,7 @@ static double motion_reach(const cdist__scene_obj *o, const cdist_motion *m)
 {
     vec3 c = vec_of(m->center);
     double rho;
-    switch (cdist__scene_core(o).type) {
+    switch (cdist__scene_core(o, NULL).type) { /* the type only */
     case CD_CORE_POINT: rho = v_dist(vec_of(o->g.point), c); break;
     case CD_CORE_SEGMENT: rho = fmax(v_dist(vec_of(o->g.segment.p0), c), v_dist(vec_of(o->g.segment.p1), c)); break;
     default: rho = v_dist(vec_of(o->g.circle.center), c) + o->g.circle.radius; break;
@@ -1242,7 +1245,7 @@ static void best_pos(closest *c, uint32_t pa, uint32_t pb)
     if (cdist__scene_excluded(oa, ob, c->best, 1)) return;
     c->candidates++;
     cdist_scene_pair p;
-    answer(c->h, oa, ob, i, j, INFINITY, &p, NULL);
+    answer(c->h, core_of(c->sa, i), core_of(c->sb, j), i, j, INFINITY, &p, NULL);
     uint64_t key = (uint64_t)i << 32 | j;
     if (p.status != CDIST_OK) {
         if (c->err.status == CDIST_OK) c->err = p;
@@ -1353,7 +1356,7 @@ cdist_status cdist_scene_closest_pair_between(cdist_query *q, cdist_scene *a, cd
 
 typedef struct near_q {
     cdist_scene *s;
-    const cdist__scene_obj *qo;
+    const cdist__scene_item *qo;
     cdist__box qbox;
     cdist_query *h;
     /* nearest: the k best (distance, id) so far, sorted */
@@ -1372,9 +1375,9 @@ static void near_obj(near_q *c, uint32_t p)
     if (!cdist__box_near(&c->s->box[p], &c->qbox, cdist__box_lim(cut > 0.0 ? cut : 0.0))) return;
     size_t i = c->s->perm[p];
     const cdist__scene_obj *o = &c->s->obj[i];
-    if (o->state != CD_SCENE_LIVE || cdist__scene_excluded(o, c->qo, cut, 1)) return;
+    if (o->state != CD_SCENE_LIVE || cdist__scene_excluded(o, &c->qo->o, cut, 1)) return;
     cdist_scene_pair r;
-    answer(c->h, o, c->qo, i, SIZE_MAX, INFINITY, &r, NULL);
+    answer(c->h, core_of(c->s, i), core_of_item(c->qo), i, SIZE_MAX, INFINITY, &r, NULL);
     if (r.status != CDIST_OK) {
         if (c->err.status == CDIST_OK || i < c->err.i) c->err = r;
         return;
@@ -1418,7 +1421,7 @@ static void within_node(near_q *c, uint32_t x)
             const cdist__scene_obj *o = &c->s->obj[i];
             if (o->state != CD_SCENE_LIVE) continue;
             c->b->box_pairs++;
-            if (cdist__scene_excluded(o, c->qo, c->b->delta, 0)) continue;
+            if (cdist__scene_excluded(o, &c->qo->o, c->b->delta, 0)) continue;
             push(c->b, i);
         }
         return;
@@ -1427,10 +1430,10 @@ static void within_node(near_q *c, uint32_t x)
     within_node(c, nx->first + 1);
 }
 
-static cdist_status query_object(cdist_query *q, cdist_scene_kind kind, const void *object, cdist__scene_obj *o)
+static cdist_status query_object(cdist_query *q, cdist_scene_kind kind, const void *object, cdist__scene_item *o)
 {
     if (!object) return cdist__fail(q, CDIST_ERR_NULL_ARGUMENT, "scene: query object pointer is NULL");
-    cdist_status st = cdist__scene_make(q, kind, object, o);
+    cdist_status st = cdist__scene_make(q, kind, object, &o->o, &o->arc);
     if (st) return cdist__fail(q, st, "scene: query object: %.200s", cdist_query_last_error(q));
     return CDIST_OK;
 }
@@ -1441,14 +1444,14 @@ cdist_status cdist_scene_nearest(cdist_query *q, cdist_scene *s, cdist_scene_kin
     if (count) *count = 0;
     cdist_status st = cdist__scene_enter(q, s);
     if (st) return st;
-    cdist__scene_obj qo;
+    cdist__scene_item qo;
     if (!out && k > 0) st = cdist__fail(q, CDIST_ERR_NULL_ARGUMENT, "scene nearest: output array is NULL with k = %zu", k);
     else if (!(st = query_object(q, kind, object, &qo)) && !(st = cdist__scene_prepare(q, s)) && k > 0) {
         near_q c;
         memset(&c, 0, sizeof c);
         c.s = s;
         c.qo = &qo;
-        cdist__scene_box(&qo, &c.qbox);
+        cdist__scene_box(&qo.o, &c.qbox);
         c.h = q;
         c.res = out;
         c.k = k;
@@ -1469,7 +1472,7 @@ cdist_status cdist_scene_within(cdist_query *q, cdist_scene *s, cdist_scene_kind
     if (count) *count = 0;
     cdist_status st = cdist__scene_enter(q, s);
     if (st) return st;
-    cdist__scene_obj qo;
+    cdist__scene_item qo;
     if (!(st = check_delta(q, delta, out, capacity)) && !(st = query_object(q, kind, object, &qo)) &&
         !(st = cdist__scene_prepare(q, s))) {
         broad b = {s, s, 0, cdist__box_lim(fmax(delta, 0.0)), delta, 0, s->cand, 0, s->cand_cap, 0, 0, NULL, 0, 0};
@@ -1478,7 +1481,7 @@ cdist_status cdist_scene_within(cdist_query *q, cdist_scene *s, cdist_scene_kind
         memset(&c, 0, sizeof c);
         c.s = s;
         c.qo = &qo;
-        cdist__scene_box(&qo, &c.qbox);
+        cdist__scene_box(&qo.o, &c.qbox);
         c.b = &b;
         if (s->node_n > 0) within_node(&c, 0);
         s->cand = b.key;

@@ -78,9 +78,10 @@ static cdist_query *Q;
 /* The pair query of objects a (first) and b, as the reference answers it. */
 static int ref_pair(const tobj *a, const tobj *b, tpair *t)
 {
-    cdist__scene_obj oa, ob;
-    if (cdist__scene_make(Q, a->kind, &a->u, &oa) || cdist__scene_make(Q, b->kind, &b->u, &ob)) return -1;
-    cdist__core_obj ca = cdist__scene_core(&oa), cb = cdist__scene_core(&ob);
+    cdist__scene_item oa, ob;
+    if (cdist__scene_make(Q, a->kind, &a->u, &oa.o, &oa.arc) || cdist__scene_make(Q, b->kind, &b->u, &ob.o, &ob.arc))
+        return -1;
+    cdist__core_obj ca = cdist__scene_core(&oa.o, &oa.arc), cb = cdist__scene_core(&ob.o, &ob.arc);
     if ((ca.type == CD_CORE_POINT && cb.type == CD_CORE_ARC) || (ca.type == CD_CORE_ARC && cb.type == CD_CORE_POINT))
         return 1; /* no exact query: the scene reports the pair with CDIST_ERR_BAD_KIND or excludes it */
     cdist_contact c;
@@ -701,6 +702,27 @@ static void boundary(int count)
           extra);
 }
 
+/* Objects that change kind in place, also into and out of arcs (kept beside the objects), in a
+ * scene that had no arc: the pairs still equal the reference. */
+static void kind_changes(size_t n)
+{
+    tobj *o = calloc(n, sizeof *o);
+    gen_random_tori(o, n);
+    cdist_scene *s = build_scene(o, n);
+    for (int round = 0; round < 4; round++) {
+        for (int k = 0; k < 12; k++) {
+            size_t id = next_rand() % n;
+            cdist_scene_kind kind = round % 2 == 0 || k % 3 == 0 ? CDIST_SCENE_ARC : all_kinds[next_rand() % 9];
+            o[id] = make(kind, o[id].u.circle.center, 1.0, rnd_unit_vec());
+            cdist_status st = cdist_scene_update(Q, s, 1, &id, o[id].kind, &o[id].u, 0, NULL);
+            CHECK(st == CDIST_OK, "kind change of %zu: %s", id, cdist_query_last_error(Q));
+        }
+        check_within("kind changes", s, o, n, pick_delta(o, n, 0.05));
+    }
+    cdist_scene_free(s);
+    free(o);
+}
+
 /* The outward rounding of the boxes' corners: below (above) x, within three float ulps, also
  * at zero, the subnormals, the overflow and infinities. */
 static void float_rounding(void)
@@ -850,6 +872,7 @@ int main(int argc, char **argv)
     drifting("scales 1e-6..1e6", 300, gen_scales, 6);
     drifting_boundary(big ? 20000 : 3000);
     others(300);
+    kind_changes(200);
     cdist_query_free(Q);
     return check_summary("scene");
 }
