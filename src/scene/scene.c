@@ -42,7 +42,8 @@ static cdist__core_type core_type(int kind)
 cdist__core_obj cdist__scene_core(const cdist__scene_obj *o, const cdist_arc *arc)
 {
     cdist__core_type t = core_type(o->kind);
-    cdist__core_obj c = {t, t == CD_CORE_ARC ? (const void *)arc : (const void *)&o->g, o->r, o->kind >= CDIST_SCENE_SPHERE};
+    const void *g = t == CD_CORE_ARC ? (const void *)arc : (const void *)&o->g;
+    cdist__core_obj c = {t, g, o->r, o->kind >= CDIST_SCENE_SPHERE};
     return c;
 }
 
@@ -755,7 +756,8 @@ cdist_status cdist_scene_add(cdist_query *q, cdist_scene *s, cdist_scene_kind ki
     first_fail f = {0, CDIST_OK, ""};
     for (size_t k = 0; k < n; k++) {
         cdist__scene_obj *o = &s->obj[s->n];
-        st = cdist__scene_make(q, kind, (const char *)objects + (ptrdiff_t)k * stride, o, s->arc ? &s->arc[s->n] : NULL);
+        const void *src = (const char *)objects + (ptrdiff_t)k * stride;
+        st = cdist__scene_make(q, kind, src, o, s->arc ? &s->arc[s->n] : NULL);
         s->pos[s->n] = CD_SCENE_NO_POS;
         if (statuses) statuses[k] = st;
         note_fail(q, &f, k, st);

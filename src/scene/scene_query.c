@@ -74,7 +74,10 @@ static int pair_record(const cdist_contact *c, cdist_status st, size_t i, size_t
 }
 
 /* The core of object id of s, of a query object. */
-static cdist__core_obj core_of(const cdist_scene *s, size_t id) { return cdist__scene_core(&s->obj[id], cdist__scene_arc(s, id)); }
+static cdist__core_obj core_of(const cdist_scene *s, size_t id)
+{
+    return cdist__scene_core(&s->obj[id], cdist__scene_arc(s, id));
+}
 static cdist__core_obj core_of_item(const cdist__scene_item *x) { return cdist__scene_core(&x->o, &x->arc); }
 
 /* The exact answer of the pair of cores (a first), as pair_record reports it. */
@@ -327,7 +330,6 @@ static const cdist__scene_obj *key_pair(const narrow *w, size_t k, size_t *i, si
     return &w->sb->obj[*j];
 }
 
-
 /* Entry k, whose objects have moved mm together, learns that its distance is >= lo and <= hi
  * now (NaN: nothing learnt). */
 static void list_learn(narrow *w, size_t k, double mm, double lo, double hi)
@@ -455,7 +457,8 @@ static void run_chunk(narrow *w, cdist_query *h, cdist_query *hs, size_t c)
             int u = ahead.used++;
             m += pair_record(&ahead.c[u], ahead.st[u], i, j, w->lim, &out[m], &d);
         } else {
-            m += answer(h, core_of(w->sa, i), w->qo ? core_of_item(w->qo) : core_of(w->sb, j), i, j, w->lim, &out[m], &d);
+            cdist__core_obj cb = w->qo ? core_of_item(w->qo) : core_of(w->sb, j);
+            m += answer(h, core_of(w->sa, i), cb, i, j, w->lim, &out[m], &d);
         }
         if (w->lo) list_learn(w, k, mm[k - lo], d - margin, d + margin);
         full++;
@@ -620,7 +623,7 @@ static cdist_status check_delta(cdist_query *q, double delta, const void *out, s
 static cdist_status sort_keys(cdist_query *q, const cdist_scene *s, uint64_t *key, size_t n)
 {
     if (n < 2) return CDIST_OK;
-    int by_id = s->n <= 4 * n;
+    int by_id = s->n <= 4 * n && n < UINT32_MAX; /* the counters are 32-bit */
     uint64_t *tmp = cdist__big_malloc(n * sizeof *tmp);
     uint32_t *cnt = by_id ? malloc((s->n + 1) * sizeof *cnt) : NULL;
     if (!tmp || (by_id && !cnt)) {
@@ -841,7 +844,8 @@ static cdist_status pairs_run(cdist_query *q, cdist_scene *sa, cdist_scene *sb, 
     cdist_query *handles[256], **screen;
     pool p;
     pool_start(&p, call_threads(q, sa, handles, &screen));
-    broad b = {sa, sb, sa == sb, cdist__box_lim(fmax(delta, 0.0)), delta, 0, sa->cand, 0, sa->cand_cap, 0, 0, NULL, 0, screen != NULL};
+    broad b = {sa, sb, sa == sb, cdist__box_lim(fmax(delta, 0.0)), delta, 0, sa->cand, 0, sa->cand_cap, 0, 0, NULL, 0,
+               screen != NULL};
     if (list) {
         if (reuse || !(st = list_make(q, sa, delta, &p))) b.n = sa->list_n;
     } else if (!(st = broad_run(q, &b, &p, what))) {
@@ -1153,7 +1157,8 @@ static cdist_status toi_run(cdist_query *q, cdist_scene *s, const cdist_motion *
     double lim = target + tolerance;
     for (size_t i = 0; i < s->n; i++) reach[i] *= 1.0 + CD_SCENE_TOI_REACH_REL;
     most *= 1.0 + CD_SCENE_TOI_REACH_REL;
-    broad b = {s, s, 1, cdist__box_lim(fmax(lim, 0.0) + 2.0 * most), lim, 0, s->cand, 0, s->cand_cap, 0, 0, reach, 0, 0};
+    broad b = {s, s, 1, cdist__box_lim(fmax(lim, 0.0) + 2.0 * most), lim, 0, s->cand, 0, s->cand_cap, 0, 0, reach,
+               0, 0};
     toi_args args = {motions, stride, target, tolerance, max_iterations};
     pair_job job = {.chunk = CD_SCENE_TOI_CHUNK, .res_size = sizeof(cdist_toi_result), .ctx = &args, .one = toi_one};
     st = pair_job_run(q, s, &b, "toi", &job);
@@ -1405,7 +1410,8 @@ static void near_node(near_q *c, uint32_t x)
         return;
     }
     uint32_t a = nx->first, b = nx->first + 1;
-    if (cdist__box_gap_f(&c->s->node[b].box, &c->qbox) < cdist__box_gap_f(&c->s->node[a].box, &c->qbox)) a = b, b = nx->first;
+    if (cdist__box_gap_f(&c->s->node[b].box, &c->qbox) < cdist__box_gap_f(&c->s->node[a].box, &c->qbox))
+        a = b, b = nx->first;
     near_node(c, a);
     near_node(c, b);
 }
