@@ -32,6 +32,8 @@ typedef struct cdist__scene_obj {
     uint8_t kind;   /* cdist_scene_kind */
     uint8_t state;  /* CD_SCENE_LIVE, _INVALID, _REMOVED */
     uint8_t status; /* the validation status of an invalid object */
+    float scale;    /* a valid object's coordinate scale (largest |coordinate| plus the radii),
+                     * rounded up: its share of a pair's bound margin (cdist__scene_margin) */
 } cdist__scene_obj;
 
 /* An object outside a scene (a query object, an update's new pose) with room for its arc. */
@@ -126,8 +128,13 @@ int cdist__scene_excluded(const cdist__scene_obj *a, const cdist__scene_obj *b, 
 int cdist__scene_circle_pair(const cdist__scene_obj *a, const cdist__scene_obj *b);
 /* An object's tcore value (CD_SCENE_T_OTHER or _T_CIRCLE). */
 uint8_t cdist__scene_tcore(const cdist__scene_obj *o);
-/* The bound margin of a pair: CD_SCENE_BOUND_REL times the two objects' coordinate scales. */
-double cdist__scene_margin(const cdist__scene_obj *a, const cdist__scene_obj *b);
+/* The bound margin of a pair: CD_SCENE_BOUND_REL times the two objects' coordinate scales (at
+ * least the margin the bounds of cdist__scene_excluded take, which is what the callers need:
+ * a larger margin only decides fewer pairs). */
+static inline double cdist__scene_margin(const cdist__scene_obj *a, const cdist__scene_obj *b)
+{
+    return CD_SCENE_BOUND_REL * ((double)a->scale + (double)b->scale);
+}
 /* A bound of how far any point of a's solid is from b's when the object changes from a to b
  * (the radius change included; INFINITY when the core kind changes or for an arc that changes;
  * arc_a, arc_b: their arcs when they are arcs), rounded up. */

@@ -78,6 +78,8 @@ _Static_assert(offsetof(cdist_capsule, radius) == sizeof(cdist_segment), "capsul
 _Static_assert(offsetof(cdist_torus, tube_radius) == sizeof(cdist_circle), "torus: circle, radius");
 _Static_assert(offsetof(cdist_rounded_disk, radius) == sizeof(cdist_circle), "rounded disk: disk, radius");
 
+static float object_scale(const cdist__scene_obj *o);
+
 cdist_status cdist__scene_make(cdist_query *q, cdist_scene_kind kind, const void *src, cdist__scene_obj *o,
                               cdist_arc *arc)
 {
@@ -108,6 +110,7 @@ cdist_status cdist__scene_make(cdist_query *q, cdist_scene_kind kind, const void
         if (!st && kind >= SWEPT_FIRST) st = check_radius(q, o->r);
     }
     o->state = st ? CD_SCENE_INVALID : CD_SCENE_LIVE;
+    o->scale = st ? 0.0f : object_scale(o);
     o->status = (uint8_t)st;
     return st;
 }
@@ -166,6 +169,13 @@ CD_INLINE void bound_of(const cdist__scene_obj *o, int with_normal, bound *x)
         break;
     }
     x->scale = v_maxabs(x->m) + x->rho + x->r;
+}
+
+static float object_scale(const cdist__scene_obj *o)
+{
+    bound x;
+    bound_of(o, 0, &x);
+    return cdist__float_up(x.scale);
 }
 
 static int is_planar(const bound *x) { return x->type == CD_CORE_CIRCLE || x->type == CD_CORE_DISK; }
@@ -306,14 +316,6 @@ static int ring_clears(const bound *x, const bound *ring, double thr)
     }
 #undef RING_AT
     return 1;
-}
-
-double cdist__scene_margin(const cdist__scene_obj *oa, const cdist__scene_obj *ob)
-{
-    bound a, b;
-    bound_of(oa, 0, &a);
-    bound_of(ob, 0, &b);
-    return CD_SCENE_BOUND_REL * (a.scale + b.scale);
 }
 
 uint8_t cdist__scene_tcore(const cdist__scene_obj *o)
