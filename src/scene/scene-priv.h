@@ -128,9 +128,8 @@ int cdist__scene_excluded(const cdist__scene_obj *a, const cdist__scene_obj *b, 
 int cdist__scene_circle_pair(const cdist__scene_obj *a, const cdist__scene_obj *b);
 /* An object's tcore value (CD_SCENE_T_OTHER or _T_CIRCLE). */
 uint8_t cdist__scene_tcore(const cdist__scene_obj *o);
-/* The bound margin of a pair: CD_SCENE_BOUND_REL times the two objects' coordinate scales (at
- * least the margin the bounds of cdist__scene_excluded take, which is what the callers need:
- * a larger margin only decides fewer pairs). */
+/* The bound margin of a pair: CD_SCENE_BOUND_REL times the two objects' coordinate scales (the
+ * stored ones, rounded up: a larger margin only decides fewer pairs). */
 static inline double cdist__scene_margin(const cdist__scene_obj *a, const cdist__scene_obj *b)
 {
     return CD_SCENE_BOUND_REL * ((double)a->scale + (double)b->scale);
@@ -194,25 +193,6 @@ static inline int cdist__box_near(const cdist__box *a, const cdist__box *b, floa
            (a->lo[1] - b->hi[1] <= lim) & (b->lo[2] - a->hi[2] <= lim) & (a->lo[2] - b->hi[2] <= lim);
 #endif
 }
-/* The largest axis gap of two boxes (0 when they overlap) to the rounding of float: an order of
- * pairs of boxes, not a bound (cdist__box_near with a cdist__box_lim decides). */
-static inline float cdist__box_gap_f(const cdist__box *a, const cdist__box *b)
-{
-#if defined(__SSE2__)
-    __m128 m = _mm_max_ps(_mm_sub_ps(_mm_loadu_ps(b->lo), _mm_loadu_ps(a->hi)),
-                          _mm_sub_ps(_mm_loadu_ps(a->lo), _mm_loadu_ps(b->hi))); /* lane 3: 0 */
-    m = _mm_max_ps(m, _mm_movehl_ps(m, m));
-    return _mm_cvtss_f32(_mm_max_ss(m, _mm_shuffle_ps(m, m, 1)));
-#else
-    float g = 0.0f;
-    for (int k = 0; k < 3; k++) {
-        float x = b->lo[k] - a->hi[k], y = a->lo[k] - b->hi[k];
-        if (x > g) g = x;
-        if (y > g) g = y;
-    }
-    return g;
-#endif
-}
 /* The largest axis gap of two boxes, rounded down (a lower bound of the distance of their
  * contents when > 0): the difference of two floats in double is exact unless their exponents
  * are far apart, and then within an ulp. */
@@ -225,6 +205,19 @@ static inline double cdist__box_gap(const cdist__box *a, const cdist__box *b)
         if (y > g) g = y;
     }
     return g * (1.0 - DBL_EPSILON);
+}
+/* The largest axis gap of two boxes (0 when they overlap) to the rounding of float: an order of
+ * pairs of boxes, not a bound (cdist__box_near with a cdist__box_lim decides). */
+static inline float cdist__box_gap_f(const cdist__box *a, const cdist__box *b)
+{
+#if defined(__SSE2__)
+    __m128 m = _mm_max_ps(_mm_sub_ps(_mm_loadu_ps(b->lo), _mm_loadu_ps(a->hi)),
+                          _mm_sub_ps(_mm_loadu_ps(a->lo), _mm_loadu_ps(b->hi))); /* lane 3: 0 */
+    m = _mm_max_ps(m, _mm_movehl_ps(m, m));
+    return _mm_cvtss_f32(_mm_max_ss(m, _mm_shuffle_ps(m, m, 1)));
+#else
+    return (float)cdist__box_gap(a, b);
+#endif
 }
 
 #endif

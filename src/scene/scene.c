@@ -184,7 +184,7 @@ void cdist__scene_box(const cdist__scene_obj *o, cdist__box *b)
 {
     bound x;
     bound_of(o, 1, &x);
-    double pad = x.r + CD_SCENE_BOUND_REL * x.scale, lo[3], hi[3];
+    double pad = x.r + CD_SCENE_BOUND_REL * (double)o->scale, lo[3], hi[3];
     if (!is_planar(&x)) {
         vec3 a = x.p0, c = x.type == CD_CORE_SEGMENT ? x.p1 : x.p0;
         lo[0] = fmin(a.x, c.x) - pad, hi[0] = fmax(a.x, c.x) + pad;
@@ -333,7 +333,7 @@ int cdist__scene_excluded(const cdist__scene_obj *oa, const cdist__scene_obj *ob
     bound a, b;
     bound_of(oa, 0, &a);
     bound_of(ob, 0, &b);
-    double margin = CD_SCENE_BOUND_REL * (a.scale + b.scale);
+    double margin = cdist__scene_margin(oa, ob);
     /* Certified lower bounds of the core distance against thr, the core distance the pair
      * must not exceed to be within lim. */
     double thr = lim + (a.r + b.r) + margin;

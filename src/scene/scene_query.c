@@ -624,15 +624,11 @@ static cdist_status sort_keys(cdist_query *q, const cdist_scene *s, uint64_t *ke
 {
     if (n < 2) return CDIST_OK;
     int by_id = s->n <= 4 * n && n < UINT32_MAX; /* the counters are 32-bit */
-    uint64_t *tmp = cdist__big_malloc(n * sizeof *tmp);
-    uint32_t *cnt = by_id ? malloc((s->n + 1) * sizeof *cnt) : NULL;
-    if (!tmp || (by_id && !cnt)) {
-        free(tmp);
-        return cdist__fail(q, CDIST_ERR_NO_MEMORY, "scene: out of memory for sorting %zu candidate pairs", n);
-    }
-    if (by_id) cdist__sort_pair_keys(key, tmp, cnt, s->n, n);
+    size_t cnt_words = by_id ? (s->n + 2) / 2 : 0;   /* the ids' counters after the keys' scratch */
+    uint64_t *tmp = cdist__big_malloc((n + cnt_words) * sizeof *tmp);
+    if (!tmp) return cdist__fail(q, CDIST_ERR_NO_MEMORY, "scene: out of memory for sorting %zu candidate pairs", n);
+    if (by_id) cdist__sort_pair_keys(key, tmp, (uint32_t *)(tmp + n), s->n, n);
     else cdist__radix_sort_keys(key, tmp, n);
-    free(cnt);
     free(tmp);
     return CDIST_OK;
 }
