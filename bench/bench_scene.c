@@ -10,7 +10,7 @@
  *     made the scene's pair list).
  * Minimum of --reps runs; pairs are counted by a callback (the output array is the caller's
  * memory, not the scene's).
- *   bench_scene [--rings=N] [--moving=M] [--reps=R] [--steps=K] [--motion=S] [--threads=T] [--wall] */
+ *   bench_scene [--rings=N] [--moving=M] [--reps=R] [--steps=K] [--motion=S] [--threads=T] [--delta=D] [--wall] */
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -77,7 +77,7 @@ int main(int argc, char **argv)
 {
     size_t rings = 1000000, moving = 100000;
     int reps = 3, threads = 1, steps = 8;
-    double motion = 0.01;
+    double motion = 0.01, delta = 0.1 * RADIUS;
     for (int a = 1; a < argc; a++) {
         if (!strncmp(argv[a], "--rings=", 8)) rings = strtoul(argv[a] + 8, NULL, 10);
         else if (!strncmp(argv[a], "--moving=", 9)) moving = strtoul(argv[a] + 9, NULL, 10);
@@ -85,15 +85,15 @@ int main(int argc, char **argv)
         else if (!strncmp(argv[a], "--steps=", 8)) steps = atoi(argv[a] + 8);
         else if (!strncmp(argv[a], "--motion=", 9)) motion = atof(argv[a] + 9);
         else if (!strncmp(argv[a], "--threads=", 10)) threads = atoi(argv[a] + 10);
+        else if (!strncmp(argv[a], "--delta=", 8)) delta = atof(argv[a] + 8) * RADIUS;
         else if (!strcmp(argv[a], "--wall")) use_wall = 1;
         else {
-            fprintf(stderr, "usage: %s [--rings=N] [--moving=M] [--reps=R] [--steps=K] [--motion=S] [--threads=T] [--wall]\n", argv[0]);
+            fprintf(stderr, "usage: %s [--rings=N] [--moving=M] [--reps=R] [--steps=K] [--motion=S] [--threads=T] [--delta=D] [--wall]\n", argv[0]);
             return 2;
         }
     }
     cdist_query *q = cdist_query_new();
     if (cdist_query_set_threads(q, threads)) fail(q, "threads");
-    const double delta = 0.1 * RADIUS;
 
     /* ---- chain mail ---- */
     cdist_torus *t = malloc(rings * sizeof *t);

@@ -400,6 +400,10 @@
  * pair whose computed distance is <= delta always passes: 2^-36 (1.5e-11) is over 100 times
  * either and still far below any geometric gap that matters for pruning. */
 #define CD_SCENE_BOUND_REL 0x1p-36
+/* Scenes' motion bounds: a normal n with |n.n - 1| at most this (one normalised in double) is
+ * taken as unit, the bound widened by |n.n - 1| instead of normalising it; 2^-40 keeps that
+ * slack below the bound margin CD_SCENE_BOUND_REL. */
+#define CD_SCENE_UNIT_SLACK 0x1p-40
 /* Linked pairs of a scene: how far beyond touching (relative to the pair's L = max(r_a, r_b,
  * |C_b - C_a|)) two rings' bounding balls may be apart and still be answered. The linking query
  * reports touching up to CD_LINK_TOUCH_REL * L, and, in the one configuration its extended count

@@ -138,7 +138,7 @@ static inline vec3 unit3(vec3 n)
 typedef struct bound {
     cdist__core_type type; /* POINT, SEGMENT, CIRCLE or DISK */
     vec3 p0, p1;           /* point (p0), segment */
-    vec3 c, n;             /* circle or disk: centre, unit normal */
+    vec3 c, n;             /* circle or disk: centre, unit normal (set where used) */
     double R;
     vec3 m;                /* bounding ball of the core */
     double rho;
@@ -146,7 +146,7 @@ typedef struct bound {
     double scale;          /* largest |coordinate| plus the radii */
 } bound;
 
-CD_INLINE void bound_of(const cdist__scene_obj *o, int with_normal, bound *x)
+CD_INLINE void bound_of(const cdist__scene_obj *o, bound *x)
 {
     x->type = core_type(o->kind);
     x->r = o->r;
@@ -165,7 +165,6 @@ CD_INLINE void bound_of(const cdist__scene_obj *o, int with_normal, bound *x)
         if (x->type == CD_CORE_ARC) x->type = CD_CORE_CIRCLE;
         x->p0 = x->p1 = x->c = x->m = o->g.circle.center; /* an arc's circle is its first member */
         x->R = x->rho = o->g.circle.radius;
-        if (with_normal) x->n = unit3(o->g.circle.normal);
         break;
     }
     x->scale = v_maxabs(x->m) + x->rho + x->r;
@@ -174,7 +173,7 @@ CD_INLINE void bound_of(const cdist__scene_obj *o, int with_normal, bound *x)
 static float object_scale(const cdist__scene_obj *o)
 {
     bound x;
-    bound_of(o, 0, &x);
+    bound_of(o, &x);
     return cdist__float_up(x.scale);
 }
 
@@ -183,7 +182,7 @@ static int is_planar(const bound *x) { return x->type == CD_CORE_CIRCLE || x->ty
 void cdist__scene_box(const cdist__scene_obj *o, cdist__box *b)
 {
     bound x;
-    bound_of(o, 1, &x);
+    bound_of(o, &x);
     double pad = x.r + CD_SCENE_BOUND_REL * (double)o->scale, lo[3], hi[3];
     if (!is_planar(&x)) {
         vec3 a = x.p0, c = x.type == CD_CORE_SEGMENT ? x.p1 : x.p0;
@@ -192,10 +191,13 @@ void cdist__scene_box(const cdist__scene_obj *o, cdist__box *b)
         lo[2] = fmin(a.z, c.z) - pad, hi[2] = fmax(a.z, c.z) + pad;
     } else {
         /* A circle's extent along axis k is R sqrt(1 - n_k^2) = R sqrt(n_i^2 + n_j^2) (no
-         * cancellation) for the unit normal n. */
-        vec3 n = x.n, m = x.m;
-        double ex = x.R * sqrt(n.y * n.y + n.z * n.z), ey = x.R * sqrt(n.x * n.x + n.z * n.z);
-        double ez = x.R * sqrt(n.x * n.x + n.y * n.y);
+         * cancellation) for the unit normal n: R sqrt((n_i^2 + n_j^2) / n.n) for the given one
+         * (normalised first when n.n is far from 1, where it could overflow). */
+        vec3 n = o->g.circle.normal, m = x.m;
+        double q = dot3(n, n);
+        if (!(q > 0.25 && q < 4.0)) n = unit3(n), q = dot3(n, n);
+        double u = 1.0 / q, ex = x.R * sqrt((n.y * n.y + n.z * n.z) * u);
+        double ey = x.R * sqrt((n.x * n.x + n.z * n.z) * u), ez = x.R * sqrt((n.x * n.x + n.y * n.y) * u);
         lo[0] = m.x - ex - pad, hi[0] = m.x + ex + pad;
         lo[1] = m.y - ey - pad, hi[1] = m.y + ey + pad;
         lo[2] = m.z - ez - pad, hi[2] = m.z + ez + pad;
@@ -331,8 +333,8 @@ int cdist__scene_circle_pair(const cdist__scene_obj *a, const cdist__scene_obj *
 int cdist__scene_excluded(const cdist__scene_obj *oa, const cdist__scene_obj *ob, double lim, int ring)
 {
     bound a, b;
-    bound_of(oa, 0, &a);
-    bound_of(ob, 0, &b);
+    bound_of(oa, &a);
+    bound_of(ob, &b);
     double margin = cdist__scene_margin(oa, ob);
     /* Certified lower bounds of the core distance against thr, the core distance the pair
      * must not exceed to be within lim. */
@@ -348,6 +350,21 @@ int cdist__scene_excluded(const cdist__scene_obj *oa, const cdist__scene_obj *ob
     int ca = a.type == CD_CORE_CIRCLE, cb = b.type == CD_CORE_CIRCLE;
     if (!(ca || cb) || (!ring && cdist__scene_circle_pair(oa, ob))) return 0;
     return cb && (!ca || b.R <= a.R) ? ring_clears(&a, &b, thr) : ring_clears(&b, &a, thr);
+}
+
+/* |n' - n| or |n' + n|, the smaller, of the unit normals n, n' along the given ones. Normals unit
+ * to CD_SCENE_UNIT_SLACK need no normalising: |n / |n| - n| = ||n| - 1| <= |n.n - 1|, so the
+ * difference of the given normals plus both |n.n - 1| bounds it (a slack below the bound margin). */
+static double normal_turn(vec3 na, vec3 nb)
+{
+    double qa = fabs(dot3(na, na) - 1.0), qb = fabs(dot3(nb, nb) - 1.0);
+    if (qa <= CD_SCENE_UNIT_SLACK && qb <= CD_SCENE_UNIT_SLACK) {
+        vec3 dm = sub3(nb, na), dp = v_add(nb, na);
+        double m = dot3(dm, dm), p = dot3(dp, dp);
+        return sqrt(m < p ? m : p);
+    }
+    na = unit3(na), nb = unit3(nb);
+    return fmin(norm3(sub3(nb, na)), norm3(v_add(nb, na)));
 }
 
 double cdist__scene_motion(const cdist__scene_obj *oa, const cdist_arc *arc_a, const cdist__scene_obj *ob,
@@ -372,9 +389,8 @@ double cdist__scene_motion(const cdist__scene_obj *oa, const cdist_arc *arc_a, c
          * moves every vector of length R by at most R |n' - n|; with the centre's move and the
          * radius change that bounds the move of every point. */
         const cdist_circle *a = &oa->g.circle, *b = &ob->g.circle;
-        vec3 na = unit3(a->normal), nb = unit3(b->normal);
-        double turn = fmin(norm3(sub3(nb, na)), norm3(v_add(nb, na)));
-        core = norm3(sub3(b->center, a->center)) + fabs(b->radius - a->radius) + a->radius * turn;
+        core = norm3(sub3(b->center, a->center)) + fabs(b->radius - a->radius) +
+               a->radius * normal_turn(a->normal, b->normal);
         break;
     }
     }
@@ -551,7 +567,7 @@ static cdist_status build(cdist_query *q, cdist_scene *s)
         }
         perm[k] = (uint32_t)i;
         bound x;
-        bound_of(&s->obj[i], 0, &x);
+        bound_of(&s->obj[i], &x);
         const double c[3] = {x.m.x, x.m.y, x.m.z};
         memcpy(&box[k++], c, sizeof c);
         for (int a = 0; a < 3; a++) {

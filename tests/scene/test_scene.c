@@ -396,10 +396,15 @@ static double obj_size(const tobj *o)
     }
 }
 
+/* When set, tilted normals get lengths other than 1 (run with the unit tolerance INFINITY):
+ * unit only to float precision, or 0.1 to 10. */
+static int any_length;
+
 static cdist_vec3 tilt(cdist_vec3 n, double e)
 {
     cdist_vec3 m = vadd(n, rvec(e));
     double l = sqrt(m.x * m.x + m.y * m.y + m.z * m.z);
+    if (any_length) l /= next_rand() % 2 ? 1.0 + 1e-7 * rsym() : pow(10.0, rsym());
     return tv(m.x / l, m.y / l, m.z / l);
 }
 
@@ -545,6 +550,39 @@ static void drifting_boundary(int count)
     }
     CHECK(missed == 0 && extra == 0, "drifting boundary: %d pairs missed at delta = distance, %d reported below it",
           missed, extra);
+}
+
+/* A circle with a normal of length 0.1 (unit tolerance INFINITY) turned by 0.2 towards a point
+ * above its rim: the distance falls by 0.198, the motion bound must be the unit normals' turn
+ * (0.19967), not the given normals' (0.02), or the pair list skips the pair. */
+static void turning_short_normal(void)
+{
+    double unit_tol = cdist_query_get_unit_tolerance(Q);
+    cdist_query_set_unit_tolerance(Q, INFINITY);
+    cdist_circle c = {{0, 0, 0}, {0, 0, 0.1}, 1.0};
+    cdist_vec3 p = {1, 0, 0.5};
+    cdist_scene *s = cdist_scene_new();
+    CHECK(cdist_scene_add(Q, s, CDIST_SCENE_CIRCLE, 1, &c, 0, NULL, NULL) == CDIST_OK &&
+              cdist_scene_add(Q, s, CDIST_SCENE_POINT, 1, &p, 0, NULL, NULL) == CDIST_OK,
+          "turning short normal: add: %s", cdist_query_last_error(Q));
+    cdist_scene_pair got[2];
+    size_t ng = 0, id = 0;
+    for (int step = 0; step < 3; step++) { /* small moves, after a first query: the list is made */
+        c.center.x += 0.01 * (step % 2 ? -1 : 1);
+        cdist_scene_update(Q, s, 1, &id, CDIST_SCENE_CIRCLE, &c, 0, NULL);
+        cdist_scene_pairs_within(Q, s, 0.6, got, 2, &ng);
+    }
+    double t = 0.2;
+    c.normal = tv(-0.1 * sin(t), 0, 0.1 * cos(t));
+    cdist_scene_update(Q, s, 1, &id, CDIST_SCENE_CIRCLE, &c, 0, NULL);
+    cdist_result r;
+    cdist_point_circle(Q, &p, &c, &r);
+    cdist_status st = cdist_scene_pairs_within(Q, s, r.distance, got, 2, &ng);
+    CHECK(st == CDIST_OK && ng == 1 && got[0].distance == r.distance && r.distance < 0.31,
+          "turning short normal: %zu pairs within %.17g (status %d)", ng, r.distance, st);
+    CHECK(s->list_reuses > 0, "turning short normal: the pair list was not used (%zu made)", s->list_builds);
+    cdist_scene_free(s);
+    cdist_query_set_unit_tolerance(Q, unit_tol);
 }
 
 /* ---- closest pair, nearest, within, between ---- */
@@ -871,6 +909,15 @@ int main(int argc, char **argv)
     drifting("duplicates", 180, gen_duplicates, 6);
     drifting("scales 1e-6..1e6", 300, gen_scales, 6);
     drifting_boundary(big ? 20000 : 3000);
+    turning_short_normal();
+    /* normals not unit to double precision: the motion bounds normalise them */
+    double unit_tol = cdist_query_get_unit_tolerance(Q);
+    cdist_query_set_unit_tolerance(Q, INFINITY);
+    any_length = 1;
+    drifting("normals of any length", 300, gen_random_mixed, 8);
+    drifting_boundary(big ? 20000 : 3000);
+    any_length = 0;
+    cdist_query_set_unit_tolerance(Q, unit_tol);
     others(300);
     kind_changes(200);
     cdist_query_free(Q);
