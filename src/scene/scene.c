@@ -9,8 +9,8 @@
 
 #include "scene-priv.h"
 
-/* Leaves hold up to this many objects: on the chain-mail sheet (bench_scene) 8 took the same
- * CPU time as 4 with half the nodes (198 against 217 bytes per object); 16 took more. */
+/* Leaves hold up to this many objects (chosen by measurement: docs/scene.md, "Why this
+ * structure"). */
 #define CD_SCENE_LEAF CD_SCENE_LEAF_MAX
 
 /* ---- objects ---- */
@@ -253,9 +253,8 @@ static double point_distance(const bound *x, vec3 p)
     }
 }
 
-/* Initial samples and the finest subdivision of the ring screen (bench_scene: 4 and 6 took
- * the least time, 8 and 5 or 16 and 4 up to 10% more; the finest spacing decides the
- * candidates). */
+/* Initial samples and the finest subdivision of the ring screen (chosen by measurement:
+ * docs/scene.md, "Why this structure"; the finest spacing decides the candidates). */
 #define RING_SAMPLES 4
 #define RING_DEPTH 6
 #define RING_ANGLES (RING_SAMPLES << RING_DEPTH)
