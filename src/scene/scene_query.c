@@ -373,13 +373,21 @@ static int list_action(narrow *w, size_t k, const cdist__scene_obj *a, const cdi
     return ACT_ANSWER;
 }
 
-/* The cutoff of a screened pair: the first core distance c from (lim + margin) + radii upward
- * with (c - radii) - margin > lim in floating point, so that a distance the screen puts above
- * it passes the same test. */
+/* The cutoff of a screened pair: a core distance c with (c - radii) - margin > lim in floating
+ * point, so that a distance the screen puts above it passes the same test: the first one from
+ * (lim + margin) + radii upward, or, when a few ulps of c do not reach it (c far below the
+ * terms that cancelled in it, as for lim = -radii), one a few ulps of the terms above. */
 static double screen_cutoff(double lim, double margin, double radii)
 {
-    double c = (lim + margin) + radii;
-    while (!((c - radii) - margin > lim) && c < INFINITY) c = nextafter(c, INFINITY);
+    double c = (lim + margin) + radii, step = DBL_EPSILON * (fabs(lim) + margin + radii);
+    for (int k = 0; !((c - radii) - margin > lim) && c < INFINITY; k++) {
+        if (k < 4) {
+            c = nextafter(c, INFINITY);
+        } else {
+            c += step;
+            step *= 2.0;
+        }
+    }
     return c;
 }
 

@@ -585,6 +585,27 @@ static void turning_short_normal(void)
     cdist_query_set_unit_tolerance(Q, unit_tol);
 }
 
+/* delta = -(r_a + r_b), "the cores meet", for identical tori: the screen's cutoff is computed
+ * from terms that cancel (it once stepped ulp by ulp up from about 1e-11, for minutes). */
+static void cores_meet(void)
+{
+    static const double tube[] = {0.1, 0.25, 0.3, 0.5, 1e-9, 3e5};
+    for (size_t t = 0; t < sizeof tube / sizeof tube[0]; t++) {
+        cdist_torus tor[2] = {{{{0, 0, 0}, {0, 0, 1}, 1.0}, tube[t]}, {{{0, 0, 0}, {0, 0, 1}, 1.0}, tube[t]}};
+        cdist_scene *s = cdist_scene_new();
+        cdist_scene_add(Q, s, CDIST_SCENE_TORUS, 2, tor, sizeof tor[0], NULL, NULL);
+        cdist_scene_pair got[2];
+        size_t ng = 0;
+        double delta = -(tube[t] + tube[t]);
+        cdist_status st = cdist_scene_pairs_within(Q, s, delta, got, 2, &ng);
+        CHECK(st == CDIST_OK && ng == 1 && got[0].distance == delta, "cores meet, tube %g: status %d, %zu pairs",
+              tube[t], st, ng);
+        st = cdist_scene_pairs_within(Q, s, nextafter(delta, -INFINITY), got, 2, &ng);
+        CHECK(st == CDIST_OK && ng == 0, "cores meet, tube %g, below: status %d, %zu pairs", tube[t], st, ng);
+        cdist_scene_free(s);
+    }
+}
+
 /* ---- closest pair, nearest, within, between ---- */
 
 static void others(size_t n)
@@ -910,6 +931,7 @@ int main(int argc, char **argv)
     drifting("scales 1e-6..1e6", 300, gen_scales, 6);
     drifting_boundary(big ? 20000 : 3000);
     turning_short_normal();
+    cores_meet();
     /* normals not unit to double precision: the motion bounds normalise them */
     double unit_tol = cdist_query_get_unit_tolerance(Q);
     cdist_query_set_unit_tolerance(Q, INFINITY);
