@@ -2,7 +2,8 @@
 /* The linking number of two circles in one floating-point type, with a running error bound:
  * included by link.c once per type, with
  *   LK_REAL  the type, LK_SQRT its square root, LK_U its unit roundoff (as a double),
- *   LK_FN    the function's name.
+ *   LK_FN    the function's name;
+ * undefined again at the end of this file.
  *
  * Geometry (a's centre at the origin, b's at w, unit normals na, nb, radii ra, rb; the caller
  * scales so that L = max(ra, rb, |w|) is in [1, 2)). With n = na x nb, s = |n| > 0, the planes
@@ -97,3 +98,8 @@ static int LK_FN(const double na_in[3], const double nb_in[3], const double w_in
     if (!(e_f < d_low) && !(fabs(fu) > e_f && fabs(fd) > e_f)) return LK_UNDECIDED;
     return (fu < 0.0) - (fd < 0.0);
 }
+
+#undef LK_REAL
+#undef LK_SQRT
+#undef LK_U
+#undef LK_FN
