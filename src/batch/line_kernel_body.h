@@ -1,9 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 /* Body of the line/ray/segment-circle distance kernel (src/batch/line_kernel.c), written once
- * over lanes and included once per instruction set after the lane operations (lanes_def.h,
- * lanes_vec.h), the solver (base/roots_halley.h) and the model's arithmetic
- * (src/lines/line_circle_body.h, which the single query runs in one lane); the includer defines
- * LK_CHAINS. The framing and scaling repeat the scalar path's (run_scaled, run and
+ * over lanes for the lanes the includer chose (CD_LANES, with LK_CHAINS), compiled for their
+ * instruction set, over the solver (base/roots_halley.h) and the model's arithmetic
+ * (src/lines/line_circle_body.h, which the single query runs in one lane). No include guard. The framing and scaling repeat the scalar path's (run_scaled, run and
  * cdist__line_near_centre, src/lines/line_circle.c) lane by lane; validation takes the checks of
  * src/api/validate.c as a mask. The distance of an entry the kernel answers is the single
  * query's, bit for bit. An entry whose inputs would take any other branch of the scalar path (a
@@ -13,6 +12,15 @@
  * model; 2 (the entries where F' is not monotone) the branch brackets; 3 (every bracket) the
  * solver; 4 (all entries) the distance. */
 
+#if CD_LANES == 8
+CD_LANES_TARGET_PUSH("avx512f,fma")
+#elif CD_LANES == 4
+CD_LANES_TARGET_PUSH("avx2,fma")
+#endif
+#include "base/lanes/lanes_def.h"
+#include "base/lanes/lanes_vec.h"
+#include "base/roots_halley.h"
+#include "lines/line_circle_body.h"
 #include "api/circle_fast_lanes.h"
 
 /* offer_end's squared distance at t. */
@@ -312,7 +320,7 @@ static unsigned KN(stage_final)(lk_block *b, int base, double *out)
  * mask of the entries left to the scalar path. The stages after the first take the entries
  * that need them, W at a time, so that the lanes stay busy (a quarter of random lines need
  * stage 2, the iterations of a bracket vary). */
-static uint64_t KN(block)(const cdist__job *job, int shape, double tol, size_t lo, size_t count)
+static uint64_t KN(kernel)(const cdist__job *job, int shape, double tol, size_t lo, size_t count)
 {
     lk_block b;
     double in[13][W];
@@ -400,3 +408,9 @@ static uint64_t KN(block)(const cdist__job *job, int shape, double tol, size_t l
     }
     return left;
 }
+
+#if W > 1
+CD_LANES_TARGET_POP
+#endif
+#include "base/lanes/lanes_undef.h"
+#undef LK_CHAINS
