@@ -131,34 +131,6 @@ static void object_grad(const cdist__core_obj *ob, vec3 X, double t, vec3 w, cdi
     if (ob->swept) o->d_radius_swept = -1.0;
 }
 
-/* Unit tangent of a curve object at its closest point (0 for points and disks). 'interior'
- * says the point is not an end of a segment/ray/arc. */
-static vec3 curve_tangent(const cdist__core_obj *o, vec3 X, double t, int *interior)
-{
-    *interior = 1;
-    switch (o->type) {
-    case CD_CORE_LINE: return v_unit_or_zero(((const cdist_line *)o->obj)->direction);
-    case CD_CORE_RAY:
-        *interior = t > 0.0;
-        return v_unit_or_zero(((const cdist_ray *)o->obj)->direction);
-    case CD_CORE_SEGMENT: {
-        const cdist_segment *sg = o->obj;
-        *interior = t > 0.0 && t < 1.0;
-        return v_unit_or_zero(v_sub(sg->p1, sg->p0));
-    }
-    case CD_CORE_CIRCLE: {
-        const cdist_circle *c = o->obj;
-        return v_unit_or_zero(v_cross(v_unit_or_zero(c->normal), v_sub(X, c->center)));
-    }
-    case CD_CORE_ARC: {
-        const cdist_arc *a = o->obj;
-        *interior = t > a->start && t < a->end;
-        return v_unit_or_zero(v_cross(v_unit_or_zero(a->circle.normal), v_sub(X, a->circle.center)));
-    }
-    default: *interior = 0; return v3(0, 0, 0);
-    }
-}
-
 /* Two disks (unit normals N0, N1) in transversal planes, both containing X: is there a point
  * of their intersection clearly inside both rims? Their intersection is a segment on the
  * planes' common line (the overlap of the two chords); a closest pair reported there can be its
@@ -205,7 +177,7 @@ static int zero_on_neighbourhood(const cdist__core_obj *a, const cdist__core_obj
             }
             if (!disk_interior(dk, N, r->pairs[i].point[k])) continue;
             int interior;
-            vec3 t = curve_tangent(o, X, r->pairs[i].param[1 - k], &interior);
+            vec3 t = cdist__core_tangent(o, X, r->pairs[i].param[1 - k], &interior);
             if (interior && fabs(v_dot(t, N)) > CD_GRAD_TRANSVERSAL_SIN) return 1;
         }
     return 0;

@@ -249,26 +249,35 @@ static vec3 core_reference(const cdist__core_obj *o)
     return v3(0, 0, 0);
 }
 
-/* Unit tangent of a curve core at its core point p (0 when not a curve or undefined). */
-static vec3 core_tangent(const cdist__core_obj *o, vec3 p)
+vec3 cdist__core_tangent(const cdist__core_obj *o, vec3 X, double t, int *interior)
 {
+    const cdist_circle *c = NULL;
+    vec3 d = v3(0, 0, 0);
+    int in = 1;
     switch (o->type) {
+    case CD_CORE_LINE: d = ((const cdist_line *)o->obj)->direction; break;
+    case CD_CORE_RAY:
+        d = ((const cdist_ray *)o->obj)->direction;
+        in = t > 0.0;
+        break;
     case CD_CORE_SEGMENT: {
-        const cdist_segment *s = o->obj;
-        return v_unit_or_zero(v_sub(s->p1, s->p0));
+        const cdist_segment *sg = o->obj;
+        d = v_sub(sg->p1, sg->p0);
+        in = t > 0.0 && t < 1.0;
+        break;
     }
-    case CD_CORE_LINE: return v_unit_or_zero(((const cdist_line *)o->obj)->direction);
-    case CD_CORE_RAY: return v_unit_or_zero(((const cdist_ray *)o->obj)->direction);
-    case CD_CORE_CIRCLE: {
-        const cdist_circle *c = o->obj;
-        return v_unit_or_zero(v_cross(v_unit_or_zero(c->normal), v_sub(p, c->center)));
-    }
+    case CD_CORE_CIRCLE: c = o->obj; break;
     case CD_CORE_ARC: {
-        const cdist_circle *c = &((const cdist_arc *)o->obj)->circle;
-        return v_unit_or_zero(v_cross(v_unit_or_zero(c->normal), v_sub(p, c->center)));
+        const cdist_arc *a = o->obj;
+        c = &a->circle;
+        in = t > a->start && t < a->end;
+        break;
     }
-    default: return v3(0, 0, 0);
+    default: in = 0; break;
     }
+    if (interior) *interior = in;
+    if (c) d = v_cross(v_unit_or_zero(c->normal), v_sub(X, c->center));
+    return v_unit_or_zero(d);
 }
 
 static vec3 core_plane_normal(const cdist__core_obj *o)
@@ -282,7 +291,7 @@ static vec3 core_plane_normal(const cdist__core_obj *o)
 static vec3 core_line_perp(const cdist__core_obj *o, vec3 p)
 {
     if (o->type != CD_CORE_SEGMENT && o->type != CD_CORE_LINE && o->type != CD_CORE_RAY) return v3(0, 0, 0);
-    vec3 t = core_tangent(o, p);
+    vec3 t = cdist__core_tangent(o, p, NAN, NULL);
     if (v_sqr(t) == 0.0) return t;
     vec3 u, v;
     v_basis(t, &u, &v);
@@ -293,7 +302,7 @@ static vec3 core_line_perp(const cdist__core_obj *o, vec3 p)
 static vec3 touch_normal(const cdist__core_obj *a, const cdist__core_obj *b, vec3 pa, vec3 pb)
 {
     vec3 n = v3(0, 0, 0);
-    vec3 ta = core_tangent(a, pa), tb = core_tangent(b, pb);
+    vec3 ta = cdist__core_tangent(a, pa, NAN, NULL), tb = cdist__core_tangent(b, pb, NAN, NULL);
     if (v_sqr(ta) > 0.0 && v_sqr(tb) > 0.0) {
         vec3 x = v_cross(ta, tb);
         if (v_norm(x) > CD_CONTACT_TANGENT_SIN) n = v_unit_or_zero(x);
