@@ -213,13 +213,9 @@ static double arc_lb(const cdist__cs_scan *s, double a, double b)
 
 /* Every minimum of theta -> dist^2(X(theta), circle or disk Y) over X's range, handed to the
  * scan's candidate callback (s->cand, or the default offer). Uses the circle-circle critical
- * angles when available, else samples. *exact says which.
- * Disk: D = h^2 + max(rho - r, 0)^2 is C^1 (see docs/curves.md), so an interior minimum has
- * D' = 0: either rho > r there and it is a critical angle of the distance to the rim circle,
- * or rho <= r and h h' = 0 with h(a) = hc + A cos a + B sin a (closed form: h' = 0 at
- * atan2(B, A) and opposite, h = 0 at atan2(B, A) +- acos(-hc / hypot(A, B))). Every such angle
- * is polished on the true D' and evaluated on the true distance, so the ones that fall in the
- * other region are merely extra candidates. */
+ * angles when available, else samples. *exact says which. For a disk, also the closed-form
+ * angles where the height or its derivative vanishes (why: docs/curves.md, "arc–disk"); an angle
+ * that falls in the other region is merely an extra candidate. */
 static cdist_status arc_minima(cdist__cs_scan *s, const arcx *X, const cdist__circle *Y, int *exact, int *n_const)
 {
     cdist_query *q = s->q;

@@ -330,14 +330,9 @@ CD_INLINE double range_scale(vec3 B, vec3 M, double tmin, double tmax, double r)
 }
 
 /* Runs the core for the points origin + t D, t in [tmin, tmax] (D as the caller passed it, M its
- * unit direction, len its length); pairs' param[0] is that t. The origin is first moved along D,
- * in absolute coordinates, to the point nearest the circle centre (one fma per coordinate with the
- * caller's own D, so the new origin is on the caller's line to within its own rounding; clamped
- * to the ray or segment), and only
- * then translated to the centre: an origin far along the line would otherwise lose
- * eps * |origin - C| in the translation and eps * |t| in the normalisation of D. The move is done
- * on origin - C kept exactly as two doubles, so nothing is rounded to the grid of the absolute
- * coordinates either (objects far from the coordinate origin). */
+ * unit direction, len its length); pairs' param[0] is that t. The origin is first moved along D to
+ * the point nearest the circle centre (clamped to the ray or segment), on origin - C kept exactly
+ * as two doubles, and only then translated (why: docs/lines.md, "Origin moved first"). */
 CD_INLINE vec3 near_centre(vec3 origin, vec3 D, vec3 C, double tmin, double tmax, double *t0)
 {
     vec3 B;

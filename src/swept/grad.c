@@ -86,13 +86,7 @@ static void arc_grad(const cdist_arc *arc, vec3 X, double a, vec3 w, cdist_grad_
     double ca = cos(a), sa = sin(a);
     o->d_radius = v_dot(w, v_add(v_scale(ca, U), v_scale(sa, V)));
     (void)X;
-    /* dX = r (ca dU + sa dV), dV = dN x U + N x dU.
-     * w . dX = r ca w.dU + r sa (w . (dN x U) + w . (N x dU))
-     *        = r ca w.dU + r sa ((U x w) . dN + (w x N) . dU)
-     * so with h = r (ca w + sa (w x N)):  w . dX = h . dU + r sa (U x w) . dN.
-     * dU = (I - U U^T) dPz / pz, dPz = dz - (dz.N) N - (z.N) dN - (z.dN) N:
-     * h . dU = k . dPz with k = (h - (h.U) U) / pz,
-     * k . dPz = (k - (k.N) N) . dz - (z.N) k . dN - (k.N) z . dN. */
+    /* w . dX through dU and dN: the derivation is in docs/swept.md, "An arc's gradient". */
     vec3 h = v_scale(r, v_add(v_scale(ca, w), v_scale(sa, v_cross(w, N))));
     vec3 k = v_scale(1.0 / pz, perp(h, U));
     double kN = v_dot(k, N), zN = v_dot(z, N);

@@ -125,13 +125,8 @@ static cdist_status segment_segment(cdist_query *q, const cdist_segment *a, cons
         if (dd < best) { best = dd; bs = s__; bt = t__; bp = P; bq = Q; }                                          \
     } while (0)
     double A = v_sqr(da), E = v_sqr(db);
-    /* Interior critical point, backward stable for nearly parallel segments (A E - B^2 cancels
-     * completely there): with c = db - lambda da and w' = w - mu da (both nearly orthogonal to
-     * da, formed by fma), n = da x c = da x db and s = mu + ((w' x db) . n) / |n|^2, every
-     * product is of small accurate factors. Scaled by a power of two so that |n|^2 neither
-     * overflows nor underflows. t is the projection of a(s) on b: the candidate pair is
-     * feasible and measured on the true distance, and an s optimal for inputs perturbed by
-     * rounding gives a distance within rounding of the minimum. */
+    /* Interior critical point, backward stable for nearly parallel segments (docs/swept.md,
+     * "Segment to segment"). */
     vec3 w = v_sub(b->p0, a->p0);
     double m = fmax(v_maxabs(w), fmax(v_maxabs(da), v_maxabs(db)));
     double down = m > 0.0 ? cdist__pow2(-cdist__scale_exponent(m)) : 1.0;
