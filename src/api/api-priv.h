@@ -287,7 +287,6 @@ typedef enum cdist__fam {
 typedef struct cdist__family {
     unsigned methods;         /* CD_HAS(m) for every method the family implements */
     cdist_method auto_method; /* what AUTO and an unimplemented method run */
-    unsigned gsl_methods;     /* methods that may call GSL */
 } cdist__family;
 
 extern const cdist__family cdist__family_table[CD_FAM_COUNT];

@@ -14,7 +14,7 @@
  * Split the range where the projection onto the plane enters and leaves the disk:
  *   over the disk: G = |h(t)| with h linear, so its minimum on the piece is at the plane
  *     crossing (distance 0) or at an end of the piece;
- *   outside: G = F, the line-circle distance, by cdist__linear_circle restricted to the piece.
+ *   outside: G = F, the line-circle distance, by cdist__linear_circle_ex restricted to the piece.
  * The lemma at the top makes the split points themselves unnecessary as candidates, but they
  * are offered anyway (cheap, and they protect against a split computed a few ulps off). */
 CD_INLINE void lin_offer(vec3 B, vec3 M, double t, const cdist__circle *d, cdist__best *b)
