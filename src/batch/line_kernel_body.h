@@ -261,12 +261,9 @@ static void KN(stage_solve)(lk_block *b, const int *k, int n)
 
 /* Stage 3b, the long brackets j[0..n-1] (n <= W; the rest of j repeats j[0]) that stage_solve
  * left: their iterations go on together up to CD_ROOT_MAX_ITER in all, where
- * cdist__root_halley_accel returns its last x.
- * The screen: a root that took that long and is not at an end of the range (a ray's start, a
- * segment's end: the bracket bisected down to the end where F' does not vanish, the end
- * candidate decides) is a nearly multiple root of F' (a tangent line), where the solvers stop
- * at different points of a flat bottom: such an entry is left to the scalar path, so that its
- * answer is the single query's whatever solver that uses. */
+ * cdist__root_halley_accel returns its last x. A root that took that long and is not at an end
+ * of the range is a nearly multiple root of F' (a tangent line), where solvers stop at different
+ * points of a flat bottom: left to the scalar path, whatever solver that uses. */
 static void KN(stage_long)(lk_block *b, const int *j, int n)
 {
     int e[W];

@@ -161,13 +161,8 @@ static cdist_status polish_in_range(cdist__cs_scan *s, const arcx *X, double a)
 }
 
 /* Lower bound of the distance from the points X(theta), theta in [a, b], to Y (circle or disk),
- * from X's heights over Y's plane, h = hc + A cos + B sin, and squared distances from Y's axis,
- * rho^2 = |Cp + cos Up + sin Vp|^2 (first and second harmonics of amplitudes m1, m2): each lies
- * above its chord over [a, b] minus its second derivative's bound (hypot(A, B), m1 + 4 m2)
- * times w^2 / 8, and rho^2 below its chord plus as much; widened by their rounding. Second
- * order in the width with the geometry's own amplitudes: exact where the distance is constant
- * (coaxial arcs, an arc parallel to a disk) and tight where it nearly is (nearly coaxial or
- * concentric arcs), where the chord bounds of the certification would need tiny intervals. */
+ * from X's heights over Y's plane and squared distances from Y's axis as trigonometric
+ * polynomials (docs/curves.md, "the curve's own bound"). */
 typedef struct arc_lb_ctx {
     vec3 Cp, Up, Vp;
     double hc, A, B, dh2, drho2, sq, slack, r;
