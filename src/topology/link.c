@@ -49,13 +49,9 @@ size_t cdist_link_size(void) { return sizeof(cdist_link); }
 
 static void link_set_error(void *link)
 {
-    cdist_link *out = link;
-    memset(out, 0, sizeof *out);
-    out->linking = CDIST_LINK_ERROR;
-    out->core_linking = CDIST_LINK_ERROR;
-    out->distance = NAN;
-    out->core_distance = NAN;
-    out->scale = NAN;
+    cdist_link *out = memset(link, 0, sizeof(cdist_link));
+    out->linking = out->core_linking = CDIST_LINK_ERROR;
+    out->distance = out->core_distance = out->scale = NAN;
 }
 
 int cdist__link_count(const cdist__circle *a, const cdist__circle *b, double d, int extended)
