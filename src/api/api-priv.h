@@ -149,6 +149,21 @@ static inline cdist_status cdist__leave(cdist_query *q, cdist_result *r, cdist_s
 /* The same flag for the option setters (no result). */
 cdist_status cdist__enter_setter(cdist_query *q);
 void cdist__leave_setter(cdist_query *q);
+/* An option setter takes the handle's flag and also refuses while a batch runs
+ * (CDIST_ERR_HANDLE_BUSY): a batch copies the options to its worker handles once at its start and
+ * its entries must all see the same options (and the thread count's pool is in use). */
+cdist_status cdist__enter_option_setter(cdist_query *q);
+/* A public option setter: the *_locked body under the handle's flag (cdist__enter_option_setter,
+ * which refuses a NULL handle). */
+#define CD_OPTION_SETTER(name, type, locked)                                                       \
+    cdist_status name(cdist_query *q, type value)                                                  \
+    {                                                                                              \
+        cdist_status st = cdist__enter_option_setter(q);                                           \
+        if (st) return st;                                                                         \
+        st = locked(q, value);                                                                     \
+        cdist__leave_setter(q);                                                                    \
+        return st;                                                                                 \
+    }
 /* The bytes [lo, hi) spanned by n strided items of `size` bytes from p (n > 0). */
 typedef struct cdist__span {
     uintptr_t lo, hi;
@@ -275,8 +290,7 @@ cdist_status cdist__check_segment(cdist_query *q, const cdist_segment *s);
 
 /* ---- the family table (src/api/family.c) ----
  * One row per query family, numbered like its cdist_kind (the registry src/api/kinds.def): the
- * methods it implements, what AUTO (or a method it lacks) runs, and which methods may call GSL
- * (AUTO and ROBUST never do). */
+ * methods it implements and what AUTO (or a method it lacks) runs. */
 typedef enum cdist__fam {
 #define CD_KIND(KIND, number, ...) CD_FAM_##KIND = number,
 #define CD_CURVE_KIND(KIND, number, ...) CD_FAM_##KIND = number,
@@ -287,7 +301,6 @@ typedef enum cdist__fam {
 typedef struct cdist__family {
     unsigned methods;         /* CD_HAS(m) for every method the family implements */
     cdist_method auto_method; /* what AUTO and an unimplemented method run */
-    unsigned gsl_methods;     /* methods that may call GSL */
 } cdist__family;
 
 extern const cdist__family cdist__family_table[CD_FAM_COUNT];

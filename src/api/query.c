@@ -93,9 +93,7 @@ void cdist_query_free(cdist_query *q)
     free(q);
 }
 
-/* An option setter takes the handle's flag and also refuses while a batch runs: a batch copies the
- * options to its worker handles once at its start and its entries must all see the same options. */
-static cdist_status enter_option_setter(cdist_query *q)
+cdist_status cdist__enter_option_setter(cdist_query *q)
 {
     cdist_status st = cdist__enter_setter(q);
     if (st) return st;
@@ -105,18 +103,6 @@ static cdist_status enter_option_setter(cdist_query *q)
     }
     return CDIST_OK;
 }
-
-/* A public option setter: the *_locked body under the handle's flag (enter_option_setter, which
- * refuses a NULL handle). */
-#define OPTION_SETTER(name, type, locked)                                                          \
-    cdist_status name(cdist_query *q, type value)                                                  \
-    {                                                                                              \
-        cdist_status st = enter_option_setter(q);                                                  \
-        if (st) return st;                                                                         \
-        st = locked(q, value);                                                                     \
-        cdist__leave_setter(q);                                                                    \
-        return st;                                                                                 \
-    }
 
 static cdist_status setter_ok(cdist_query *q)
 {
@@ -135,7 +121,7 @@ static cdist_status query_set_method_locked(cdist_query *q, cdist_method method)
     return setter_ok(q);
 }
 
-OPTION_SETTER(cdist_query_set_method, cdist_method, query_set_method_locked)
+CD_OPTION_SETTER(cdist_query_set_method, cdist_method, query_set_method_locked)
 
 cdist_method cdist_query_get_method(const cdist_query *q) { return q ? q->method : CDIST_METHOD_AUTO; }
 
@@ -146,7 +132,7 @@ static cdist_status query_set_unit_tolerance_locked(cdist_query *q, double tol)
     return setter_ok(q);
 }
 
-OPTION_SETTER(cdist_query_set_unit_tolerance, double, query_set_unit_tolerance_locked)
+CD_OPTION_SETTER(cdist_query_set_unit_tolerance, double, query_set_unit_tolerance_locked)
 
 double cdist_query_get_unit_tolerance(const cdist_query *q) { return q ? q->unit_tol : CD_DEFAULT_UNIT_TOL; }
 
@@ -166,7 +152,7 @@ static cdist_status query_set_curve_samples_locked(cdist_query *q, int samples)
     return setter_ok(q);
 }
 
-OPTION_SETTER(cdist_query_set_curve_samples, int, query_set_curve_samples_locked)
+CD_OPTION_SETTER(cdist_query_set_curve_samples, int, query_set_curve_samples_locked)
 
 int cdist_query_get_curve_samples(const cdist_query *q) { return q ? q->curve_samples : CD_DEFAULT_CURVE_SAMPLES; }
 
@@ -178,7 +164,7 @@ static cdist_status query_set_max_iterations_locked(cdist_query *q, int max_iter
     return setter_ok(q);
 }
 
-OPTION_SETTER(cdist_query_set_max_iterations, int, query_set_max_iterations_locked)
+CD_OPTION_SETTER(cdist_query_set_max_iterations, int, query_set_max_iterations_locked)
 
 int cdist_query_get_max_iterations(const cdist_query *q) { return q ? q->max_iterations : CD_DEFAULT_MAX_ITERATIONS; }
 
@@ -203,7 +189,7 @@ static cdist_status query_set_progress_locked(cdist_query *q, cdist_progress_fn 
 
 cdist_status cdist_query_set_progress(cdist_query *q, cdist_progress_fn fn, void *user, size_t every)
 {
-    cdist_status st = enter_option_setter(q);
+    cdist_status st = cdist__enter_option_setter(q);
     if (st) return st;
     st = query_set_progress_locked(q, fn, user, every);
     cdist__leave_setter(q);

@@ -77,18 +77,6 @@ static cdist_status set_threads_locked(cdist_query *q, int threads)
     return CDIST_OK;
 }
 
-/* Under the handle's flag, and refused while a batch runs: the pool it would free is in use. */
-cdist_status cdist_query_set_threads(cdist_query *q, int threads)
-{
-    cdist_status st = cdist__enter_setter(q);
-    if (st) return st;
-    if (atomic_load_explicit(&q->batch_busy, memory_order_acquire)) {
-        cdist__leave_setter(q);
-        return CDIST_ERR_HANDLE_BUSY;
-    }
-    st = set_threads_locked(q, threads);
-    cdist__leave_setter(q);
-    return st;
-}
+CD_OPTION_SETTER(cdist_query_set_threads, int, set_threads_locked)
 
 int cdist_query_get_threads(const cdist_query *q) { return (q && q->workers) ? q->workers->threads : 1; }

@@ -1,19 +1,7 @@
 /* SPDX-License-Identifier: MIT */
-/* Polynomial roots through gsl_poly_complex_solve, guarded so that GSL's error handler (which
- * aborts by default and belongs to the host process) is never reached:
- * - workspaces are built here with our own malloc (GSL's allocator reports out-of-memory
- *   through the handler), sized exactly for each degree;
- * - every documented GSL_EINVAL path (n < 2, zero leading coefficient, workspace size) is
- *   excluded before the call, and non-finite coefficients never reach it.
- * The one remaining GSL error path is QR non-convergence. It has been seen (circle-circle with
- * equal circles concentric to 1e-12: a nearly even polynomial, whose roots come in pairs of
- * equal modulus that the shifted QR fails to separate). For such polynomials we solve for
- * y = x - s, with a small fixed shift s (an irrational-looking fraction of the roots' Fujiwara
- * bound) that breaks the symmetry; the roots are shifted back and polished on the original.
- * In tests (tests/base/test_poly.c) the shift removed every failure and introduced none; it cannot
- * be proved to exclude QR failure, so the ROBUST methods, which AUTO uses, never call GSL.
- * If a host has turned GSL's handler off and GSL still fails, the status is returned and the
- * caller falls back. */
+/* Polynomial roots through gsl_poly_complex_solve, guarded so that GSL's error handler is never
+ * reached, with a shift for nearly even polynomials (why and how: docs/architecture.md,
+ * "Polynomial roots (GSL)"). */
 #include "base/poly.h"
 #include "base/roots.h"
 

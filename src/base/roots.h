@@ -29,33 +29,15 @@ typedef double (*cdist__f_fn)(const void *ctx, double x);
 typedef double (*cdist__fd2f_fn)(const void *ctx, double x, double *df, double *d2f);
 
 /* Root of f in [lo, hi] where f increases through zero (dir = +1: f(lo) <= 0 <= f(hi)) or
- * decreases (dir = -1), the ends' values not needed, for a hot family (line-circle): the bracket
- * and safeguards of rtsafe (a step is taken only when dir * f' > 0, it stays strictly inside the
- * bracket and it shrinks faster than bisection would; otherwise the bracket is bisected) with
- * Halley's steps and accelerations. Converged when a step is below rel * |x| or abs, or the
- * bracket is below abs. Returns lo when lo >= hi, NaN when the callback failed. The callback also writes f'' (f, f' and f'' may all be multiplied by one
- * positive factor, which can vary with x: only signs and the ratios f / f', f f'' / f'^2 are
- * used; where f'^2 leaves [2^-1000, 2^1000] the step is f / f' itself). It differs from
- * rtsafe's answer by less than the tolerance:
- * - it starts at x0 (a caller's estimate; the midpoint when x0 is not inside (lo, hi), e.g. NaN);
- * - the step is Halley's, the Newton step d = f / f' times 1 / (1 - C d), C = f'' / (2 f') (the
- *   error cubed each step instead of squared), when |C d| < 1/2 (the factor in (2/3, 2)), and
- *   Newton's otherwise (far from a root, or f'' not a number): one division either way,
- *   2 f f' / (2 f'^2 - f f'') or f f' / f'^2;
- * - the last step of a fast convergence: with e' = K e^3 after a Halley step, K = (C^2 - C')/3
- *   from C here and at the last point, or e' = K e^2 after two Newton steps, K = |step| /
- *   |prev|^2, when the step after this one would be below the tolerance with a margin of 4, the
- *   point after this step is returned without evaluating there;
- * - a root that may be multiple (a tangency, where f ~ (x - x*)^m and a step only shrinks the
- *   error by (m - 1)/(m + 1), Halley, or (m - 1)/m, Newton): when two successive steps shrank
- *   by a steady ratio q in [1/3, 1), the step is taken 1/(1 - q) times (the sum of the
- *   geometric series of the remaining steps), or, past the bracket's end, 63/64 of the way
- *   there;
- * - a root at an end of the bracket (a step lands on or past it): 1023/1024 of the way there
- *   instead of a bisection, every other time.
- * Every operation commutes with x -> -x for an odd f (f' even, f'' odd) and a mirrored x0, so
- * mirrored brackets give mirrored roots. */
-
+ * decreases (dir = -1), the ends' values not needed, for a hot family (line-circle): rtsafe's
+ * bracket and safeguards with Halley's steps, started at x0 (the midpoint when x0 is not inside
+ * (lo, hi), e.g. NaN), and its accelerations (the last step of a fast convergence not evaluated,
+ * multiple roots extrapolated, a root at a bracket end approached 1023/1024 of the way):
+ * docs/lines.md, "The solver". Converged when a step is below rel * |x| or abs, or the bracket is
+ * below abs; differs from rtsafe's answer by less than that. Returns lo when lo >= hi, NaN when
+ * the callback failed. The callback also writes f''; f, f', f'' may all be multiplied by one
+ * positive factor, which can vary with x (only signs and the ratios f / f', f f'' / f'^2 are
+ * used). Commutes with x -> -x for an odd f and a mirrored x0. */
 double cdist__root_halley_accel(cdist__fd2f_fn fd2f, const void *ctx, double lo, double hi, double x0, int dir, double rel,
                               double abs, int max_iter);
 

@@ -110,7 +110,7 @@ void cdist__circle_circle_many(cdist_query *q, size_t n, const cdist_circle *con
                                cdist_result *const *r, void (*done)(void *ctx, size_t i, cdist_status st), void *ctx);
 
 /* Distance kernels of circle-disk (disk = 0) and disk-disk (1), ROBUST method, for entries
- * [lo, lo + count), count <= 64: the single query's own stages (cdist__cd_stage_start) with the
+ * [lo, lo + count), count <= 64: the single query's own stages (cdist__cd_stage_ring, _finish) with the
  * rim searches of the block in lanes (cdist__cc_quick_lanes), so the distances are
  * bit-identical to the single query's; the mask of the entries left for the scalar path
  * (src/batch/cd_kernel.c). */

@@ -1,12 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 /* Distance kernels of circle-disk and disk-disk for cdist_batch_distance: the single query's
- * steps for many entries at once. The circles are validated and framed in lanes
- * (cdist__circle_pairs_lanes), the rim searches' frames built and the searches run in lanes
- * (cdist__cc_quick_lanes, which certifies what the single query's search certifies, with the
- * same angle to the last bit) and finished one by one (cdist__cd_stage_finish), then the
- * candidates over the disks' faces computed in lanes (src/circles/cd_body.h, which the single
- * query runs in one lane; cd_kernel_body.h). The distances are the single query's bit for bit (candidates
- * that cannot be the smallest may be left out: docs/architecture.md); an entry whose query takes
+ * steps for many entries at once, in lanes where its arithmetic is written over lanes (cd_body.h,
+ * the rim search), one by one elsewhere (cdist__cd_stage_finish); why the distances are the
+ * single query's bit for bit: docs/architecture.md, "One source". An entry whose query takes
  * another path (a failed fast check, a zero radius, parallel planes, the rim search's engine) is
  * left to the scalar path. */
 #include <math.h>

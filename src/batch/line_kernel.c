@@ -51,68 +51,19 @@ typedef struct lk_block {
 
 #define CD_LANES 1
 #define LK_CHAINS 1
-#include "base/lanes/lanes_def.h"
-#include "base/lanes/lanes_vec.h"
-#include "base/roots_halley.h"
-#include "lines/line_circle_body.h"
 #include "line_kernel_body.h"
-#include "base/lanes/lanes_undef.h"
-#undef LK_CHAINS
-
 #ifdef CD_X86_KERNELS
-
-/* ---- 8 lanes ---- */
-
-CD_LANES_TARGET_PUSH("avx512f,fma")
 #define CD_LANES 8
 #define LK_CHAINS LK_WIDE_CHAINS
-#include "base/lanes/lanes_def.h"
-#include "base/lanes/lanes_vec.h"
-#include "base/roots_halley.h"
-#include "lines/line_circle_body.h"
 #include "line_kernel_body.h"
-#include "base/lanes/lanes_undef.h"
-#undef LK_CHAINS
-CD_LANES_TARGET_POP
-
-/* ---- 4 lanes ---- */
-
-CD_LANES_TARGET_PUSH("avx2,fma")
 #define CD_LANES 4
 #define LK_CHAINS LK_WIDE_CHAINS
-#include "base/lanes/lanes_def.h"
-#include "base/lanes/lanes_vec.h"
-#include "base/roots_halley.h"
-#include "lines/line_circle_body.h"
 #include "line_kernel_body.h"
-#include "base/lanes/lanes_undef.h"
-#undef LK_CHAINS
-CD_LANES_TARGET_POP
-
-#endif
-
-/* ---- dispatch ---- */
-
-static uint64_t kernel_scalar(const cdist__job *job, int shape, double tol, size_t lo, size_t count)
-{
-    return block_1(job, shape, tol, lo, count);
-}
-
-#ifdef CD_X86_KERNELS
-static uint64_t kernel_avx512(const cdist__job *job, int shape, double tol, size_t lo, size_t count)
-{
-    return block_8(job, shape, tol, lo, count);
-}
-
-static uint64_t kernel_avx2(const cdist__job *job, int shape, double tol, size_t lo, size_t count)
-{
-    return block_4(job, shape, tol, lo, count);
-}
 #endif
 
 uint64_t cdist__line_distance_kernel(const cdist__job *job, int shape, double unit_tol, size_t lo, size_t count)
 {
     static cdist__kernel_fn chosen;
-    cdist__kernel_fn f = cdist__kernel_choose(&chosen, CD_X86_VARIANTS(kernel_avx512, kernel_avx2), kernel_scalar);
+    cdist__kernel_fn f = cdist__kernel_choose(&chosen, CD_X86_VARIANTS(kernel_8, kernel_4), kernel_1);
     return f(job, shape, unit_tol, lo, count);
 }

@@ -1,9 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 /* Body of the line/ray/segment-circle distance kernel (src/batch/line_kernel.c), written once
- * over lanes and included once per instruction set after the lane operations (lanes_def.h,
- * lanes_vec.h), the solver (base/roots_halley.h) and the model's arithmetic
- * (src/lines/line_circle_body.h, which the single query runs in one lane); the includer defines
- * LK_CHAINS. The framing and scaling repeat the scalar path's (run_scaled, run and
+ * over lanes for the lanes the includer chose (CD_LANES, with LK_CHAINS), compiled for their
+ * instruction set, over the solver (base/roots_halley.h) and the model's arithmetic
+ * (src/lines/line_circle_body.h, which the single query runs in one lane). No include guard. The framing and scaling repeat the scalar path's (run_scaled, run and
  * cdist__line_near_centre, src/lines/line_circle.c) lane by lane; validation takes the checks of
  * src/api/validate.c as a mask. The distance of an entry the kernel answers is the single
  * query's, bit for bit. An entry whose inputs would take any other branch of the scalar path (a
@@ -13,6 +12,15 @@
  * model; 2 (the entries where F' is not monotone) the branch brackets; 3 (every bracket) the
  * solver; 4 (all entries) the distance. */
 
+#if CD_LANES == 8
+CD_LANES_TARGET_PUSH("avx512f,fma")
+#elif CD_LANES == 4
+CD_LANES_TARGET_PUSH("avx2,fma")
+#endif
+#include "base/lanes/lanes_def.h"
+#include "base/lanes/lanes_vec.h"
+#include "base/roots_halley.h"
+#include "lines/line_circle_body.h"
 #include "api/circle_fast_lanes.h"
 
 /* offer_end's squared distance at t. */
@@ -253,12 +261,9 @@ static void KN(stage_solve)(lk_block *b, const int *k, int n)
 
 /* Stage 3b, the long brackets j[0..n-1] (n <= W; the rest of j repeats j[0]) that stage_solve
  * left: their iterations go on together up to CD_ROOT_MAX_ITER in all, where
- * cdist__root_halley_accel returns its last x.
- * The screen: a root that took that long and is not at an end of the range (a ray's start, a
- * segment's end: the bracket bisected down to the end where F' does not vanish, the end
- * candidate decides) is a nearly multiple root of F' (a tangent line), where the solvers stop
- * at different points of a flat bottom: such an entry is left to the scalar path, so that its
- * answer is the single query's whatever solver that uses. */
+ * cdist__root_halley_accel returns its last x. A root that took that long and is not at an end
+ * of the range is a nearly multiple root of F' (a tangent line), where solvers stop at different
+ * points of a flat bottom: left to the scalar path, whatever solver that uses. */
 static void KN(stage_long)(lk_block *b, const int *j, int n)
 {
     int e[W];
@@ -312,7 +317,7 @@ static unsigned KN(stage_final)(lk_block *b, int base, double *out)
  * mask of the entries left to the scalar path. The stages after the first take the entries
  * that need them, W at a time, so that the lanes stay busy (a quarter of random lines need
  * stage 2, the iterations of a bracket vary). */
-static uint64_t KN(block)(const cdist__job *job, int shape, double tol, size_t lo, size_t count)
+static uint64_t KN(kernel)(const cdist__job *job, int shape, double tol, size_t lo, size_t count)
 {
     lk_block b;
     double in[13][W];
@@ -400,3 +405,9 @@ static uint64_t KN(block)(const cdist__job *job, int shape, double tol, size_t l
     }
     return left;
 }
+
+#if W > 1
+CD_LANES_TARGET_POP
+#endif
+#include "base/lanes/lanes_undef.h"
+#undef LK_CHAINS

@@ -60,12 +60,8 @@ static int rho_range(const cdist__cc_frame *f, const cdist__cc_pt *a, const cdis
 }
 
 /* No critical point of F on [a, b]: F' keeps one sign, certified by its values at the ends
- * (less their rounding bounds) and a bound M >= |F''/2| on [a, b] (from each end F' cannot reach
- * 0 within |F'|/M). With rho_lo <= rho <= rho_hi on [a, b] (rho is W1-Lipschitz) and
- * F''/2 = rho'^2 + (rho - s) rho'' + h'^2 + h h'', |rho'| <= |w'| <= W1,
- * |rho''| = |w.w'' + |w'|^2 - rho'^2| / rho <= (rho_hi W1 + 2 W1^2) / rho_lo. Needs rho_lo > 0:
- * it answers where H's certificates cannot, at roots of H's spurious factor rho sigma + s w.w'
- * (H = (rho sigma - s w.w')(rho sigma + s w.w') and F'/2 = sigma - s w.w' / rho). */
+ * (less their rounding bounds) and a bound M >= |F''/2| on [a, b] (the bounds: docs/circles.md,
+ * "The bounds of F's derivatives"). */
 int cdist__cc_monotone(const cdist__cc_frame *f, cdist__cc_pt *a, cdist__cc_pt *b)
 {
     if (!((a->F1 > 0 && b->F1 > 0) || (a->F1 < 0 && b->F1 < 0))) return 0;
@@ -80,10 +76,8 @@ int cdist__cc_monotone(const cdist__cc_frame *f, cdist__cc_pt *a, cdist__cc_pt *
 }
 
 /* At most one critical point of F on [a, b], a minimum: F is convex there, certified by F''/2 at
- * the ends (less rounding) and M3 >= |F'''/2| on [a, b]. With the bounds of cdist__cc_monotone() and
- * F'''/2 = 3 rho' rho'' + (rho - s) rho''' + 3 h' h'' + h h''',
- * rho''' = (3 w'.w'' + w.w''' - 3 rho' rho'') / rho. Answers at a minimum where H has a root
- * cluster (both of its factors vanish nearby) and its certificates fail. */
+ * the ends (less rounding) and M3 >= |F'''/2| on [a, b] (docs/circles.md, as above). Answers at
+ * a minimum where H has a root cluster (both of its factors vanish nearby). */
 int cdist__cc_convex(const cdist__cc_frame *f, cdist__cc_pt *a, cdist__cc_pt *b)
 {
     cc_detail(f, a);
@@ -150,16 +144,9 @@ const double cdist__cc_half_sec[32] = {
     0.5, 0.5, 0.5, 0.5,
 };
 
-/* A lower bound of F on the arc [a, b] of width 2 pi / CC_INIT_INTERVALS / 2^level. In the
- * plane of z = (cos t, sin t), F extends to G(z) = |D|^2 + s^2 - 2 s |w| with |D|^2 replaced by
- * its affine part (R^2 + |C|^2 - 2 R C.(u, v) z): affine minus a norm of an affine map, so G is
- * concave, and on the unit circle G = F. The arc lies in the triangle of its ends and T, the
- * intersection of the tangents there (T = (z_a + z_b) / (2 cos^2(w/2))), so on the arc
- * F >= min(F(a), F(b), G(T)), and G(T) = (rho_T - s)^2 + h_T^2 - R^2 tan^2(w/2) (|D|^2 at T
- * exceeds its affine part by R^2 (|T|^2 - 1)). The gap to min F shrinks as w^2, against w for
- * the Lipschitz bound. Rounding: the absolute errors of rho_T - s and h_T (dw, a few eps of the
- * magnitudes of w's terms) and of T itself (an eps-relative move of T moves G by eps |grad G|).
- * Returns min(F(a), F(b), G(T)) minus that margin (may be negative). */
+/* A lower bound of F on the arc [a, b] of width 2 pi / CC_INIT_INTERVALS / 2^level:
+ * min(F(a), F(b), G(T)) of F's concave extension G at the tangents' intersection T, minus a
+ * margin for rounding (may be negative); why: docs/circles.md, "The hull bound". */
 static double arc_hull_bound(const cdist__cc_frame *f, double ca, double sa, double cb, double sb, double Fmin_ends, double hs)
 {
     double k = 2 * hs * hs; /* 1 / (2 cos^2(w/2)) */

@@ -134,14 +134,10 @@ CD_FMA_CLONES int cdist__circle_circle_critical(cdist_query *q, const cdist__cir
     return n < cap ? n : cap;
 }
 
-/* Parallel planes (distance-to-circles-3d §5.2): when A's height over B's plane varies by at most
- * CD_CC_PARALLEL_ULPS eps L along A, F = (rho - s)^2 + h^2 with h constant to that level and
- * rho^2 = R^2 + e^2 - 2 R e cos(t - t0), where (e, t0) are the polar coordinates of B's centre
- * projected into A's plane. F's critical angles are then rho's extremes t0 and t0 + pi and the
- * angles where rho = s (the projections cross), in closed form. Writes them (up to 4), returns
- * the count, or -1 when the planes are not parallel. The distances at these angles are
- * evaluated on the true F, so the tilt below the threshold moves the answer by at most
- * 2 CD_CC_PARALLEL_ULPS eps L. */
+/* Parallel planes (distance-to-circles-3d §5.2; docs/circles.md, "Parallel planes"): F's
+ * critical angles in closed form. Writes them (up to 4), returns the count, or -1 when the
+ * planes are not parallel (A's height over B's plane varies by more than CD_CC_PARALLEL_ULPS
+ * eps L). */
 int cdist__cc_parallel_critical(const cdist__cc_frame *f, double *t)
 {
     if (!(cdist__norm2(f->rg.ha, f->rg.hb) <= CD_CC_PARALLEL_ULPS * DBL_EPSILON * f->L)) return -1;

@@ -207,14 +207,8 @@ int cdist__cc_closed_form(const cdist__cc *g, cdist__best *b)
                                t.c[i].param[1]);
         return 1;
     }
-    /* Coaxial (Eberly §5.1 (a), §5.2; Li et al. §2.4): every point of either circle is equally
-     * far from the other, distance sqrt((r1 - r0)^2 + h^2). Doubles are rarely exactly coaxial,
-     * so the test is the one cdist__best applies to ties: the distance varies over the circle by less
-     * than CD_TIE_ULPS ulps of the scale. Bound of that variation, for a point of c1 against c0
-     * (s = |n0 x n1|, d0 = |n0 x D| the centre's offset from c0's axis): its height over c0's plane
-     * varies by <= 2 r1 s, its axis distance by <= 2 d0 + r1 s^2, and the point-circle distance is
-     * 1-Lipschitz in both; likewise with the roles exchanged. The representative pair is polished
-     * on the true distance, so the distance is the exact minimum of the doubles given. */
+    /* Coaxial to the tie tolerance: a bound of the distance's variation over either circle
+     * (docs/circles.md, "Coaxial"). */
     double sn = v_norm(v_cross(c0->n, c1->n));
     double d0 = cdist__point_circle(c0->n, g->D, c0->r).rho, d1 = cdist__point_circle(c1->n, g->D, c1->r).rho;
     double var = fmin(2.0 * d0 + c1->r * sn * (2.0 + sn), 2.0 * d1 + c0->r * sn * (2.0 + sn));

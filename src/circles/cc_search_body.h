@@ -103,13 +103,8 @@ CD_INLINE void KN(ck_rot)(V c, V s, V co, V si, V *cr, V *sr)
 }
 
 /* F convex on [t - h, t + h]: F''/2 at both ends less its rounding exceeds M3 h, M3 >= |F'''/2|
- * on the interval. The bounds are the engine's (cdist__cc_convex, cc_certify.c), with |rho''| bounded
- * from its end values instead of globally: with rho_lo <= rho <= rho_hi there (rho is
- * W1-Lipschitz), |w'|, |w''|, |w'''| <= W1 and X = max |rho''| on the interval,
- *     |rho'''| <= B3(X) = (3 W1^2 + rho_hi W1 + 3 W1 X) / rho_lo,
- * and every point is within h of an end, so X <= X0 + h B3(X), X0 the larger |rho''| at the
- * ends: X <= (X0 + h (3 W1^2 + rho_hi W1) / rho_lo) / (1 - 3 W1 h / rho_lo) when the divisor is
- * positive. Then |F'''/2| <= 3 W1 X + (rho_hi + s) B3(X) + Hh (4 Hh + Hc0). */
+ * on the interval: the engine's bounds (cdist__cc_convex) with |rho''| bounded from its end values
+ * (docs/circles.md, "The bounds of F's derivatives"). */
 CD_INLINE M KN(ck_convex)(const KN(ck_ring) *r, V c, V s, int l, M *near_axis)
 {
     V ca, sa, cb, sb, F0, F1, F2a, F2b, ra, rb, xa, xb, ea, eb;

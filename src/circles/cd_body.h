@@ -96,12 +96,8 @@ CD_INLINE V KN(cdk_trig)(const V *a, V cs, V sn) { return vfma(a[1], cs, vfma(a[
 CD_INLINE V KN(cdk_trigd)(const V *a, V cs, V sn) { return vfma(a[2], cs, vneg(vmul(a[1], sn))); }
 
 /* x^2 + y^2 - R^2 at the circle point (cs, sn), with x, y its in-plane coordinates relative to
- * the disk centre. A circle much smaller than the disk (mixed scales: r = 1e-8 beside R = 1e8)
- * sits where x, y are large and their squares carry an absolute rounding of eps R^2, which would
- * turn a gap of 1e-8 into a false contact; expanded around the circle's centre,
- *     x^2 + y^2 - R^2 = E0 + 2 (X0 a + Y0 b) + a^2 + b^2    (a = x - X0, b = y - Y0),
- * the error is eps (R r + r^2) instead. For a circle at least as large as the disk the direct
- * form is the more accurate one (its x, y are small where it matters). */
+ * the disk centre, expanded around the circle's centre for a circle smaller than the disk (why:
+ * docs/disk.md, "Over the face"). */
 CD_INLINE V KN(cdk_rim_excess_near)(const KN(cdk_lanes) *k, V cs, V sn)
 {
     V a = vadd(vmul(k->X[1], cs), vmul(k->X[2], sn)), b = vadd(vmul(k->Y[1], cs), vmul(k->Y[2], sn));

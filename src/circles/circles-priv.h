@@ -266,8 +266,6 @@ typedef struct cdist__cd_stage {
 } cdist__cd_stage;
 void cdist__cd_stage_ring(cdist__cd_stage *st);
 void cdist__cd_stage_finish(cdist__cd_stage *st, double t, double d2);
-#define CD_DISK_METHODS (CD_HAS(CDIST_METHOD_POLYNOMIAL) | CD_HAS(CDIST_METHOD_ROBUST))
-#define CD_DISK_AUTO CDIST_METHOD_ROBUST
 
 /* ---- the engine's parts (cc_frame.c, cc_certify.c, cc_kink.c, cc_scan.c, cc_pair.c) ---- */
 

@@ -31,14 +31,9 @@ static cdist_status dd_query(cdist_query *q, cdist__circle a, cdist__circle e, i
     e1.c = v3(0, 0, 0);
     /* the first answer caps the second search (its minima above it cannot win) */
     double cap0 = b0.n > 0 ? sqrt(b0.c[0].d2) : INFINITY;
-    /* The second half needs no minima of the distance from e's rim to a's rim: they are at least
-     * the rim-to-rim distance, the minimum of the first half's rim function, which is at least
-     * the first answer. A pair of rims at the global minimum d is also a global minimum of the
-     * first half (a's rim point is then d from e's disk, and its closest point there, unique on
-     * a convex set, is that rim point of e), so the first half reports it, ties included, when
-     * its rim minima are certified (rim_certified: not from a region the engine only sampled,
-     * where F' may be noise and nothing polishes on F, nor from the sampling fallback). Only
-     * e's rim over a's face and the parallel closed forms are left. */
+    /* The second half needs no rim-to-rim minima when the first half's are certified
+     * (rim_certified): it found them, ties included (docs/disk.md, "The rim-to-rim minima are
+     * searched once"). */
     if ((st = cdist__circle_disk_core_ex(q, m, &e1, &a1, cap0, !rim_certified, &b1, &used1, NULL))) return st;
     double d0sq = cdist__best_merge(&best, &b0, v3(0, 0, 0), 0);
     double d1sq = cdist__best_merge(&best, &b1, e.c, 1);

@@ -1,18 +1,12 @@
 /* SPDX-License-Identifier: MIT */
-/* The ONE evaluator of the circles family: a point P(t) moving on a circle A, seen from a circle
- * B (radius s, unit normal m, centre C): its squared distance F(t) to B and the derivatives.
+/* The one evaluator of the circles family: a point P(t) moving on a circle A, seen from a circle
+ * B (radius s, unit normal m, centre C): its squared distance F(t) to B and the derivatives
+ * (formulas: docs/circles.md, "The robust method"), from the trigonometric coefficients of
  *     w(t) = m x (P(t) - C) = al cos t + be sin t + ga     (offset from B's axis, |w| = rho)
- *     h(t) = m . (P(t) - C) = ha cos t + hb sin t + hc     (height over B's plane)
- *     F = (rho - s)^2 + h^2,   F'/2 = (rho - s) rho' + h h',   rho' = w.w' / rho,
- *     F''/2 = rho'^2 + (rho - s) rho'' + h'^2 + h h'',   rho'' = ((w.w')' - rho'^2) / rho.
- * On B's axis (rho = 0, a kink of F) rho' and rho'' are taken as 0. Circle-disk searches on
- * F of the disk's rim (the lemma of circle_disk.c); the point-disk distance it reports (h^2 where
- * the point projects into the disk, F elsewhere) is formed in circle_disk.c, which decides
- * "projects into" by an error-free expansion (rim_excess) that this evaluator does not need.
- * Used by the root-isolation engine (docs/circles.md), circle-disk (circle_disk.c, B the rim), and
- * the polynomial and iteration methods (cc_poly.c, which form w, h from 3D points and call
- * cdist__ring_dist directly). Plain arithmetic, no fma(): without -mfma fma() is a libm call, and
- * every caller recomputes its final distances separately. */
+ *     h(t) = m . (P(t) - C) = ha cos t + hb sin t + hc     (height over B's plane).
+ * Circle-disk forms its point-disk distance (h^2 where the point projects into the disk) itself.
+ * Plain arithmetic, no fma(): without -mfma fma() is a libm call, and every caller recomputes
+ * its final distances separately. */
 #ifndef CDIST_RING_EVAL_H
 #define CDIST_RING_EVAL_H
 

@@ -1,37 +1,8 @@
 /* SPDX-License-Identifier: MIT */
-/* Circular arcs: arc-circle, arc-arc, segment-arc, arc-disk.
- *
- * An arc's angle a is measured in its own frame U (zero_direction projected onto the plane),
- * V = N x U, over [start, end]. Everything is translated so that one centre is the origin.
- *
- * Which candidates are complete (D = squared distance between the two objects' points):
- *  - point-arc: on the full circle, the distance from a point has one local minimum (the
- *    closest point) unless the point is on the axis (constant). So the minimum over the arc is
- *    the closest circle point if its angle is inside [start, end], else an endpoint: offer the
- *    closest point when inside plus both endpoints (extra candidates are harmless).
- *  - arc-circle: G(theta) = dist^2(arc(theta), circle) over [start, end]: the endpoints plus the
- *    interior critical angles of G, i.e. the circle-circle critical angles that fall in the range.
- *  - arc-arc: the minimum of D over the rectangle of angles is on its boundary (one angle at an
- *    endpoint: endpoint-to-arc, four times) or interior. At an interior minimum (theta, phi), phi
- *    is a local minimum of D(theta, .) on the full second circle, i.e. its closest point to
- *    arc0(theta), and theta is then a local minimum of G0(theta) = dist^2(arc0(theta), circle 1)
- *    (near theta the closest point stays inside the second range, so the restricted and the full
- *    minimum coincide). So: local minima of G0 in range 0 whose closest point on circle 1 lies
- *    in range 1, the same with the roles exchanged (for symmetry), and the four endpoint-arc
- *    distances.
- *  - segment-arc: the same with the segment: segment endpoints to the arc, arc endpoints to the
- *    segment (closed form), and the local minima of s -> dist^2(seg(s), circle) whose closest
- *    circle point lies in the arc's range (from the lines family's robust core: no GSL). Those minima satisfy (distance-to-circles-3d eq. 6)
- *    Delta.M = r (N x Delta).(N x M)/|N x Delta|, so |Delta(s).M/|M|| <= r: they lie within
- *    r/|M| of the foot of the perpendicular from the centre, and only that window is sampled.
- *  - arc-disk: the endpoints, the critical angles of the distance to the rim circle and the
- *    closed-form angles where the height over the plane or its derivative vanishes (see
- *    arc_minima).
- * The interior critical angles come from cdist__circle_circle_critical (the circle-circle family)
- * when it provides them (it returns 0 when unavailable: a smooth periodic function always has at
- * least two critical angles), each polished on the true derivative; otherwise (a constant
- * function, parallel planes for the disk) from the sampling engine of src/curves/curve_scan.c over the
- * arc's range, which also detects the continuum of closest pairs. */
+/* Circular arcs: arc-circle, arc-arc, segment-arc, arc-disk. An arc's angle is measured in its
+ * own frame (U = zero_direction projected onto the plane, V = N x U) over [start, end]; why the
+ * candidates (endpoints, critical angles in range, the sampling engine as fallback) are
+ * complete: docs/curves.md, "Arcs". */
 #include <math.h>
 #include <stdio.h>
 
@@ -190,13 +161,8 @@ static cdist_status polish_in_range(cdist__cs_scan *s, const arcx *X, double a)
 }
 
 /* Lower bound of the distance from the points X(theta), theta in [a, b], to Y (circle or disk),
- * from X's heights over Y's plane, h = hc + A cos + B sin, and squared distances from Y's axis,
- * rho^2 = |Cp + cos Up + sin Vp|^2 (first and second harmonics of amplitudes m1, m2): each lies
- * above its chord over [a, b] minus its second derivative's bound (hypot(A, B), m1 + 4 m2)
- * times w^2 / 8, and rho^2 below its chord plus as much; widened by their rounding. Second
- * order in the width with the geometry's own amplitudes: exact where the distance is constant
- * (coaxial arcs, an arc parallel to a disk) and tight where it nearly is (nearly coaxial or
- * concentric arcs), where the chord bounds of the certification would need tiny intervals. */
+ * from X's heights over Y's plane and squared distances from Y's axis as trigonometric
+ * polynomials (docs/curves.md, "the curve's own bound"). */
 typedef struct arc_lb_ctx {
     vec3 Cp, Up, Vp;
     double hc, A, B, dh2, drho2, sq, slack, r;
@@ -242,13 +208,9 @@ static double arc_lb(const cdist__cs_scan *s, double a, double b)
 
 /* Every minimum of theta -> dist^2(X(theta), circle or disk Y) over X's range, handed to the
  * scan's candidate callback (s->cand, or the default offer). Uses the circle-circle critical
- * angles when available, else samples. *exact says which.
- * Disk: D = h^2 + max(rho - r, 0)^2 is C^1 (see docs/curves.md), so an interior minimum has
- * D' = 0: either rho > r there and it is a critical angle of the distance to the rim circle,
- * or rho <= r and h h' = 0 with h(a) = hc + A cos a + B sin a (closed form: h' = 0 at
- * atan2(B, A) and opposite, h = 0 at atan2(B, A) +- acos(-hc / hypot(A, B))). Every such angle
- * is polished on the true D' and evaluated on the true distance, so the ones that fall in the
- * other region are merely extra candidates. */
+ * angles when available, else samples. *exact says which. For a disk, also the closed-form
+ * angles where the height or its derivative vanishes (why: docs/curves.md, "arc–disk"); an angle
+ * that falls in the other region is merely an extra candidate. */
 static cdist_status arc_minima(cdist__cs_scan *s, const arcx *X, const cdist__circle *Y, int *exact, int *n_const)
 {
     cdist_query *q = s->q;

@@ -121,14 +121,10 @@ static cdist_status certify(cdist__cs_scan *s, cert_node nd)
     }
 }
 
-/* Certify the sample intervals of a scan (F: d^2, P: positions per sample). Lipschitz screen
- * first (the bound of cert_excluded, for the longest interval of the scan: t_at's widths differ
- * by rounding only, covered by CD_CURVE_CERT_WIDTH_REL), on the squares where an end is below half
- * of it (each low sample opens its two intervals, each interval looked at once); then the chord
- * bound; then, where the curve has its own bound, that bound over the whole range once and over
- * the block of CD_CURVE_CERT_BLOCK intervals holding the interval (a bound that is tight over
- * long ranges, as in coaxial and concentric configurations, settles a block in one call); the
- * component bounds (heights and in-plane coordinates from the positions) only where all fail. */
+/* Certify the sample intervals of a scan (F: d^2, P: positions per sample), the bounds tried
+ * cheapest first (docs/curves.md, "The bounds are tried cheapest first"); the Lipschitz screen
+ * takes the longest interval of the scan (t_at's widths differ by rounding only, covered by
+ * CD_CURVE_CERT_WIDTH_REL). */
 cdist_status cdist__cs_certify_samples(cdist__cs_scan *s, double t0, double t1, int n, const double *F, const vec3 *P)
 {
     double best = sqrt(s->k->b.c[0].d2);

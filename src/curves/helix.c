@@ -107,14 +107,8 @@ static double helix_lb(const cdist__cs_scan *s, double a, double b)
 }
 
 /* The sample count m of the pieces after the first, which cost first_cost evaluations at turn_n
- * samples. Pieces are skipped when their lower bound exceeds the distance found on the axially
- * nearest piece; the pieces whose bound does not exceed it are all the pieces that may be
- * scanned (the best only decreases), counted outwards from it while the budget could pay for
- * them at CD_CURVE_HELIX_MIN_SAMPLES samples each (plus CD_CURVE_HELIX_PIECE_EVALS for their
- * refinement and certification); more: refused at once (CDIST_ERR_COST_LIMIT, a target
- * threading a long tight coil). They are scanned at turn_n samples when that fits the budget
- * (each estimated at the first piece's cost), else at CD_CURVE_HELIX_MIN_SAMPLES: the
- * certification keeps any count exact. */
+ * samples; CDIST_ERR_COST_LIMIT at once when the pieces that may be scanned cannot be paid for
+ * (the rule: docs/curves.md, "Cost bound"). */
 static cdist_status helix_piece_samples(const cdist__cs_scan *s, const helix_x *hx, const helix_bound *hb, double t0,
                                         double plen, long pieces, long mid, int turn_n, long first_cost, int *m)
 {

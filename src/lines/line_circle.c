@@ -1,26 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 /* Lines, rays and segments to circles (Eberly, "Distance to Circles in 3D" §4; "Distance Between
- * Line and Circle or Disk in 3D" §1). Derivation notes: docs/lines.md.
- *
- * Model. The circle is centred at the origin with unit normal N and basis {U, V, N}. The line is
- * B + t M (M unit). We first move B to B0, the line point nearest the centre (t = t0), and scale
- * everything by a power of two so that max(r, |B0|) is in [1, 2) (exact; no overflow or
- * underflow in squares). In-plane 2D coordinates (in the basis U, V) are taken from cross
- * products, which stay accurate for nearly parallel vectors:
- *   in-plane part of M = (N x M) x N  ->  m2d,   in-plane part of B0 = (N x B0) x N  ->  b2d.
- * With m0 = |m2d|, e2 = m2d / m0, e1 = e2 turned by +90 degrees, the line becomes, in a
- * parameter s along M measured from a frame origin O = B0 + uO M,
- *   height     h(s)  = hO + a s,                  a = N . M
- *   in-plane   X(s)  = x1 e1 + x2(s) e2,         x2(s) = c2 + m0 s,  x1 constant
- *   rho(s) = |X(s)| = |N x P(s)|,  F(s) = h^2 + (rho - r)^2 = squared distance to the circle.
- * Preferably O is the point where x2 = 0 (c2 = 0): the paper's canonical form (§4.2.1, with
- * b1 = |x1|, m2 b2 = a hO), where F is exactly even in s whenever the configuration is
- * symmetric (a = 0 or hO = 0), so symmetric minima come out bit-identical.
- *   F'(s)/2 = a h + m0 x2 (rho - r)/rho            (form used for evaluation: small factors
- *           = s + mu - G(s),  G = r m0 x2 / rho,     stay relatively accurate near distance 0)
- *   mu = a hO + m0 c2 = M . O,   G in (-r m0, r m0),   G'(s) = r m0^2 x1^2 / rho^3 <= r m0^2/|x1|.
- * rho - r is computed as ((|x1| - r)(|x1| + r) + x2^2) / (rho + r), free of cancellation.
- */
+ * Line and Circle or Disk in 3D" §1). The model (the line's frame at the point nearest the
+ * centre, scaled by a power of two; F(s) = h^2 + (rho - r)^2 and its cancellation-free
+ * derivative): docs/lines.md, "Reduction" and "Derivative". */
 #include <math.h>
 #include <stdint.h>
 #include <string.h>
@@ -348,14 +330,9 @@ CD_INLINE double range_scale(vec3 B, vec3 M, double tmin, double tmax, double r)
 }
 
 /* Runs the core for the points origin + t D, t in [tmin, tmax] (D as the caller passed it, M its
- * unit direction, len its length); pairs' param[0] is that t. The origin is first moved along D,
- * in absolute coordinates, to the point nearest the circle centre (one fma per coordinate with the
- * caller's own D, so the new origin is on the caller's line to within its own rounding; clamped
- * to the ray or segment), and only
- * then translated to the centre: an origin far along the line would otherwise lose
- * eps * |origin - C| in the translation and eps * |t| in the normalisation of D. The move is done
- * on origin - C kept exactly as two doubles, so nothing is rounded to the grid of the absolute
- * coordinates either (objects far from the coordinate origin). */
+ * unit direction, len its length); pairs' param[0] is that t. The origin is first moved along D to
+ * the point nearest the circle centre (clamped to the ray or segment), on origin - C kept exactly
+ * as two doubles, and only then translated (why: docs/lines.md, "Origin moved first"). */
 CD_INLINE vec3 near_centre(vec3 origin, vec3 D, vec3 C, double tmin, double tmax, double *t0)
 {
     vec3 B;

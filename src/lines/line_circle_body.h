@@ -73,13 +73,8 @@ CD_INLINE V KN(lc_fd2f)(const KN(lc_model) *m, V s, V *df, V *d2f)
     return f;
 }
 
-/* lc_fd2f times P = rho^5 (rho + r) > 0, for the solver, which uses only the sign of f and the
- * ratios f / f', f f'' / f'^2: the same steps to rounding, with one division per step (the step)
- * instead of three (w, 1/rho and the step):
- *   f P = (a h Q + m0 x2 num rho^2) rho^2,   f' P = (k Q - r m0^2 x1^2 (rho + r)) rho^2,
- *   f'' P = 3 r m0^3 x1^2 x2 (rho + r),      Q = P / rho^2 = rho^3 (rho + r).
- * With Q = rho2^2 + (r rho2) rho, each is one multiply-add in rho after the square root (the
- * rest is computed beside it). Only where lc_scaled_range holds (rho^2 in [2^-100, 2^100]; near
+/* lc_fd2f times P = rho^5 (rho + r) > 0, for the solver (docs/lines.md, "ROBUST": one division
+ * per step instead of three). Only where lc_scaled_range holds (rho^2 in [2^-100, 2^100]; near
  * the axis P would underflow, and lc_fd2f is taken). */
 CD_INLINE M KN(lc_scaled_range)(const KN(lc_model) *m, V s)
 {
@@ -259,14 +254,9 @@ CD_INLINE M KN(lc_bracket)(const KN(lc_model) *m, V *lo, V *hi, V *mu, V *R, V *
     return vle(*R, m->ax1);
 }
 
-/* In x2, F'/2 = 0 reads x2 + B = R x2 / rho (F'/2 is |x1|/m0 times y + beta - g y / sqrt(1 + y^2)
- * in y = x2 / |x1|, beta = B / |x1|, g = R / |x1|). Two approximations of x2 / rho give starts
- * within ~1e-4 of the root on most lines, so that Halley's steps end after two evaluations.
- *
- * Far from the centre on the side sigma = +-1 of x2 (a branch of F' when g > 1):
- * x2 / rho = sigma (1 + x1^2 / x2^2)^(-1/2) ~ sigma (1 - x1^2 / (2 x2^2)), with x2 taken at the
- * limit sigma R - B (G = sigma r m0): s = -mu + sigma r m0 (1 - x1^2 / (2 x2^2)). NaN or far
- * outside the bracket where that x2 is 0 (the solver then starts at the midpoint). */
+/* The solver's starts (docs/lines.md, "The starts"): far from the centre on the side
+ * sigma = +-1 of x2, s = -mu + sigma r m0 (1 - x1^2 / (2 x2^2)) with x2 at its limit sigma R - B.
+ * NaN or far outside the bracket where that x2 is 0 (the solver then starts at the midpoint). */
 CD_INLINE V KN(lc_start_far)(const KN(lc_model) *m, V mu, V R, V B, V sigma)
 {
     V x2 = vsub(vmul(sigma, R), B);

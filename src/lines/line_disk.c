@@ -10,13 +10,9 @@
 /* ------------------------------------------------------------------------------------------ */
 /* Lines, rays and segments to a disk                                                           */
 
-/* B + t M, t in [tmin, tmax], M unit, B relative to the disk centre (d->c ignored).
- * Split the range where the projection onto the plane enters and leaves the disk:
- *   over the disk: G = |h(t)| with h linear, so its minimum on the piece is at the plane
- *     crossing (distance 0) or at an end of the piece;
- *   outside: G = F, the line-circle distance, by cdist__linear_circle restricted to the piece.
- * The lemma at the top makes the split points themselves unnecessary as candidates, but they
- * are offered anyway (cheap, and they protect against a split computed a few ulps off). */
+/* B + t M, t in [tmin, tmax], M unit, B relative to the disk centre (d->c ignored), split where
+ * the projection enters and leaves the disk (docs/disk.md, "Lines, rays, segments to a disk");
+ * the split points are offered too (cheap, and they protect against a split a few ulps off). */
 CD_INLINE void lin_offer(vec3 B, vec3 M, double t, const cdist__circle *d, cdist__best *b)
 {
     vec3 p = v_axpy(B, t, M);

@@ -86,13 +86,7 @@ static void arc_grad(const cdist_arc *arc, vec3 X, double a, vec3 w, cdist_grad_
     double ca = cos(a), sa = sin(a);
     o->d_radius = v_dot(w, v_add(v_scale(ca, U), v_scale(sa, V)));
     (void)X;
-    /* dX = r (ca dU + sa dV), dV = dN x U + N x dU.
-     * w . dX = r ca w.dU + r sa (w . (dN x U) + w . (N x dU))
-     *        = r ca w.dU + r sa ((U x w) . dN + (w x N) . dU)
-     * so with h = r (ca w + sa (w x N)):  w . dX = h . dU + r sa (U x w) . dN.
-     * dU = (I - U U^T) dPz / pz, dPz = dz - (dz.N) N - (z.N) dN - (z.dN) N:
-     * h . dU = k . dPz with k = (h - (h.U) U) / pz,
-     * k . dPz = (k - (k.N) N) . dz - (z.N) k . dN - (k.N) z . dN. */
+    /* w . dX through dU and dN: the derivation is in docs/swept.md, "An arc's gradient". */
     vec3 h = v_scale(r, v_add(v_scale(ca, w), v_scale(sa, v_cross(w, N))));
     vec3 k = v_scale(1.0 / pz, perp(h, U));
     double kN = v_dot(k, N), zN = v_dot(z, N);
@@ -129,34 +123,6 @@ static void object_grad(const cdist__core_obj *ob, vec3 X, double t, vec3 w, cdi
     case CD_CORE_ARC: arc_grad(ob->obj, X, t, w, o); break;
     }
     if (ob->swept) o->d_radius_swept = -1.0;
-}
-
-/* Unit tangent of a curve object at its closest point (0 for points and disks). 'interior'
- * says the point is not an end of a segment/ray/arc. */
-static vec3 curve_tangent(const cdist__core_obj *o, vec3 X, double t, int *interior)
-{
-    *interior = 1;
-    switch (o->type) {
-    case CD_CORE_LINE: return v_unit_or_zero(((const cdist_line *)o->obj)->direction);
-    case CD_CORE_RAY:
-        *interior = t > 0.0;
-        return v_unit_or_zero(((const cdist_ray *)o->obj)->direction);
-    case CD_CORE_SEGMENT: {
-        const cdist_segment *sg = o->obj;
-        *interior = t > 0.0 && t < 1.0;
-        return v_unit_or_zero(v_sub(sg->p1, sg->p0));
-    }
-    case CD_CORE_CIRCLE: {
-        const cdist_circle *c = o->obj;
-        return v_unit_or_zero(v_cross(v_unit_or_zero(c->normal), v_sub(X, c->center)));
-    }
-    case CD_CORE_ARC: {
-        const cdist_arc *a = o->obj;
-        *interior = t > a->start && t < a->end;
-        return v_unit_or_zero(v_cross(v_unit_or_zero(a->circle.normal), v_sub(X, a->circle.center)));
-    }
-    default: *interior = 0; return v3(0, 0, 0);
-    }
 }
 
 /* Two disks (unit normals N0, N1) in transversal planes, both containing X: is there a point
@@ -205,7 +171,7 @@ static int zero_on_neighbourhood(const cdist__core_obj *a, const cdist__core_obj
             }
             if (!disk_interior(dk, N, r->pairs[i].point[k])) continue;
             int interior;
-            vec3 t = curve_tangent(o, X, r->pairs[i].param[1 - k], &interior);
+            vec3 t = cdist__core_tangent(o, X, r->pairs[i].param[1 - k], &interior);
             if (interior && fabs(v_dot(t, N)) > CD_GRAD_TRANSVERSAL_SIN) return 1;
         }
     return 0;

@@ -84,6 +84,9 @@ cdist_status cdist__contact_of_core_query(cdist_query *q, const cdist__core_obj 
                                           cdist_status st, cdist_result *core, cdist_contact *c);
 /* A contact in the error state (NaN, no pairs, flags 0). */
 void cdist__contact_set_error(cdist_contact *c);
+/* Unit tangent of a curve core at its point X of parameter t (0 for points and disks, or where
+ * undefined); *interior (when not NULL): X is not an end of a segment, ray or arc. */
+vec3 cdist__core_tangent(const cdist__core_obj *o, vec3 X, double t, int *interior);
 /* Fill g from the core result r (the query succeeded). */
 void cdist__grad_fill(const cdist__core_obj *a, const cdist__core_obj *b, const cdist_result *r, struct cdist_grad *g);
 /* Gradient in the error state (all NaN, flags 0). */

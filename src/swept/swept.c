@@ -125,13 +125,8 @@ static cdist_status segment_segment(cdist_query *q, const cdist_segment *a, cons
         if (dd < best) { best = dd; bs = s__; bt = t__; bp = P; bq = Q; }                                          \
     } while (0)
     double A = v_sqr(da), E = v_sqr(db);
-    /* Interior critical point, backward stable for nearly parallel segments (A E - B^2 cancels
-     * completely there): with c = db - lambda da and w' = w - mu da (both nearly orthogonal to
-     * da, formed by fma), n = da x c = da x db and s = mu + ((w' x db) . n) / |n|^2, every
-     * product is of small accurate factors. Scaled by a power of two so that |n|^2 neither
-     * overflows nor underflows. t is the projection of a(s) on b: the candidate pair is
-     * feasible and measured on the true distance, and an s optimal for inputs perturbed by
-     * rounding gives a distance within rounding of the minimum. */
+    /* Interior critical point, backward stable for nearly parallel segments (docs/swept.md,
+     * "Segment to segment"). */
     vec3 w = v_sub(b->p0, a->p0);
     double m = fmax(v_maxabs(w), fmax(v_maxabs(da), v_maxabs(db)));
     double down = m > 0.0 ? cdist__pow2(-cdist__scale_exponent(m)) : 1.0;
@@ -249,26 +244,35 @@ static vec3 core_reference(const cdist__core_obj *o)
     return v3(0, 0, 0);
 }
 
-/* Unit tangent of a curve core at its core point p (0 when not a curve or undefined). */
-static vec3 core_tangent(const cdist__core_obj *o, vec3 p)
+vec3 cdist__core_tangent(const cdist__core_obj *o, vec3 X, double t, int *interior)
 {
+    const cdist_circle *c = NULL;
+    vec3 d = v3(0, 0, 0);
+    int in = 1;
     switch (o->type) {
+    case CD_CORE_LINE: d = ((const cdist_line *)o->obj)->direction; break;
+    case CD_CORE_RAY:
+        d = ((const cdist_ray *)o->obj)->direction;
+        in = t > 0.0;
+        break;
     case CD_CORE_SEGMENT: {
-        const cdist_segment *s = o->obj;
-        return v_unit_or_zero(v_sub(s->p1, s->p0));
+        const cdist_segment *sg = o->obj;
+        d = v_sub(sg->p1, sg->p0);
+        in = t > 0.0 && t < 1.0;
+        break;
     }
-    case CD_CORE_LINE: return v_unit_or_zero(((const cdist_line *)o->obj)->direction);
-    case CD_CORE_RAY: return v_unit_or_zero(((const cdist_ray *)o->obj)->direction);
-    case CD_CORE_CIRCLE: {
-        const cdist_circle *c = o->obj;
-        return v_unit_or_zero(v_cross(v_unit_or_zero(c->normal), v_sub(p, c->center)));
-    }
+    case CD_CORE_CIRCLE: c = o->obj; break;
     case CD_CORE_ARC: {
-        const cdist_circle *c = &((const cdist_arc *)o->obj)->circle;
-        return v_unit_or_zero(v_cross(v_unit_or_zero(c->normal), v_sub(p, c->center)));
+        const cdist_arc *a = o->obj;
+        c = &a->circle;
+        in = t > a->start && t < a->end;
+        break;
     }
-    default: return v3(0, 0, 0);
+    default: in = 0; break;
     }
+    if (interior) *interior = in;
+    if (c) d = v_cross(v_unit_or_zero(c->normal), v_sub(X, c->center));
+    return v_unit_or_zero(d);
 }
 
 static vec3 core_plane_normal(const cdist__core_obj *o)
@@ -282,7 +286,7 @@ static vec3 core_plane_normal(const cdist__core_obj *o)
 static vec3 core_line_perp(const cdist__core_obj *o, vec3 p)
 {
     if (o->type != CD_CORE_SEGMENT && o->type != CD_CORE_LINE && o->type != CD_CORE_RAY) return v3(0, 0, 0);
-    vec3 t = core_tangent(o, p);
+    vec3 t = cdist__core_tangent(o, p, NAN, NULL);
     if (v_sqr(t) == 0.0) return t;
     vec3 u, v;
     v_basis(t, &u, &v);
@@ -293,7 +297,7 @@ static vec3 core_line_perp(const cdist__core_obj *o, vec3 p)
 static vec3 touch_normal(const cdist__core_obj *a, const cdist__core_obj *b, vec3 pa, vec3 pb)
 {
     vec3 n = v3(0, 0, 0);
-    vec3 ta = core_tangent(a, pa), tb = core_tangent(b, pb);
+    vec3 ta = cdist__core_tangent(a, pa, NAN, NULL), tb = cdist__core_tangent(b, pb, NAN, NULL);
     if (v_sqr(ta) > 0.0 && v_sqr(tb) > 0.0) {
         vec3 x = v_cross(ta, tb);
         if (v_norm(x) > CD_CONTACT_TANGENT_SIN) n = v_unit_or_zero(x);

@@ -20,10 +20,6 @@
 #define LK_U 0x1p-53
 #define LK_FN link_core_double
 #include "link_core.h"
-#undef LK_REAL
-#undef LK_SQRT
-#undef LK_U
-#undef LK_FN
 
 /* The extended type: binary128 where the compiler has it (software arithmetic from libgcc, no
  * libquadmath: its square root is two Newton steps from the double one), else long double. */
@@ -48,21 +44,14 @@ static link_xreal xsqrt(link_xreal x) { return x > 0 ? sqrtl(x) : 0; }
 #define LK_U ((double)LINK_XREAL_U)
 #define LK_FN link_core_extended
 #include "link_core.h"
-#undef LK_REAL
-#undef LK_SQRT
-#undef LK_U
-#undef LK_FN
 
 size_t cdist_link_size(void) { return sizeof(cdist_link); }
 
-static void link_set_error(cdist_link *out)
+static void link_set_error(void *link)
 {
-    memset(out, 0, sizeof *out);
-    out->linking = CDIST_LINK_ERROR;
-    out->core_linking = CDIST_LINK_ERROR;
-    out->distance = NAN;
-    out->core_distance = NAN;
-    out->scale = NAN;
+    cdist_link *out = memset(link, 0, sizeof(cdist_link));
+    out->linking = out->core_linking = CDIST_LINK_ERROR;
+    out->distance = out->core_distance = out->scale = NAN;
 }
 
 int cdist__link_count(const cdist__circle *a, const cdist__circle *b, double d, int extended)
@@ -153,24 +142,8 @@ cdist_status cdist_link_tori(cdist_query *q, const cdist_torus *a, const cdist_t
 
 /* ---- batches: one entry at a time on the calling thread, the lowest failing entry reported ---- */
 
-typedef cdist_status (*link_fn)(cdist_query *, const void *, const void *, cdist_link *);
-typedef struct link_kind {
-    link_fn fn;
-    size_t size; /* bytes of one object */
-} link_kind;
-static cdist_status link_circles_entry(cdist_query *q, const void *a, const void *b, cdist_link *out)
-{
-    return cdist_link_circles(q, a, b, out);
-}
-static cdist_status link_tori_entry(cdist_query *q, const void *a, const void *b, cdist_link *out)
-{
-    return cdist_link_tori(q, a, b, out);
-}
-
-static void link_error_at(void *out) { link_set_error(out); }
-
 typedef struct link_job {
-    link_kind kind;
+    int tori;
     const char *a, *b;
     ptrdiff_t a_stride, b_stride;
     cdist_link *out;
@@ -179,19 +152,21 @@ typedef struct link_job {
 static cdist_status link_entry(cdist_query *q, const void *ctx, size_t i)
 {
     const link_job *j = ctx;
-    return j->kind.fn(q, j->a + (ptrdiff_t)i * j->a_stride, j->b + (ptrdiff_t)i * j->b_stride, &j->out[i]);
+    const void *a = j->a + (ptrdiff_t)i * j->a_stride, *b = j->b + (ptrdiff_t)i * j->b_stride;
+    return j->tori ? cdist_link_tori(q, a, b, &j->out[i]) : cdist_link_circles(q, a, b, &j->out[i]);
 }
 
-static cdist_status link_batch(cdist_query *q, link_kind kind, size_t n, const void *a, ptrdiff_t a_stride,
+static cdist_status link_batch(cdist_query *q, int tori, size_t n, const void *a, ptrdiff_t a_stride,
                                const void *b, ptrdiff_t b_stride, cdist_link *out, cdist_status *statuses)
 {
     if (n == 0) return CDIST_OK;
-    cdist__span in[2] = {cdist__span_of(a, n, a_stride, kind.size, "first object array"),
-                         cdist__span_of(b, n, b_stride, kind.size, "second object array")};
-    cdist_status st = cdist__topology_begin(q, n, q && a && b && out, out, sizeof *out, link_error_at, statuses,
+    size_t size = tori ? sizeof(cdist_torus) : sizeof(cdist_circle);
+    cdist__span in[2] = {cdist__span_of(a, n, a_stride, size, "first object array"),
+                         cdist__span_of(b, n, b_stride, size, "second object array")};
+    cdist_status st = cdist__topology_begin(q, n, q && a && b && out, out, sizeof *out, link_set_error, statuses,
                                             "a handle, object array or output array is NULL", in, 2);
     if (st) return st;
-    link_job job = {kind, a, b, a_stride, b_stride, out};
+    link_job job = {tori, a, b, a_stride, b_stride, out};
     return cdist__topology_run(q, n, link_entry, &job, statuses);
 }
 
@@ -249,11 +224,11 @@ cdist_status cdist__topology_batch_report(cdist_query *q, size_t first, cdist_st
 cdist_status cdist_link_circles_batch(cdist_query *q, size_t n, const void *a, ptrdiff_t a_stride, const void *b,
                                       ptrdiff_t b_stride, cdist_link *out, cdist_status *statuses)
 {
-    return link_batch(q, (link_kind){link_circles_entry, sizeof(cdist_circle)}, n, a, a_stride, b, b_stride, out, statuses);
+    return link_batch(q, 0, n, a, a_stride, b, b_stride, out, statuses);
 }
 
 cdist_status cdist_link_tori_batch(cdist_query *q, size_t n, const void *a, ptrdiff_t a_stride, const void *b,
                                    ptrdiff_t b_stride, cdist_link *out, cdist_status *statuses)
 {
-    return link_batch(q, (link_kind){link_tori_entry, sizeof(cdist_torus)}, n, a, a_stride, b, b_stride, out, statuses);
+    return link_batch(q, 1, n, a, a_stride, b, b_stride, out, statuses);
 }

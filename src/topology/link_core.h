@@ -2,27 +2,14 @@
 /* The linking number of two circles in one floating-point type, with a running error bound:
  * included by link.c once per type, with
  *   LK_REAL  the type, LK_SQRT its square root, LK_U its unit roundoff (as a double),
- *   LK_FN    the function's name.
+ *   LK_FN    the function's name;
+ * undefined again at the end of this file.
  *
- * Geometry (a's centre at the origin, b's at w, unit normals na, nb, radii ra, rb; the caller
- * scales so that L = max(ra, rb, |w|) is in [1, 2)). With n = na x nb, s = |n| > 0, the planes
- * meet in the line P0 + t D, D = n / s, P0 the foot of the origin. Circle a meets it in
- * t = +-ha, ha^2 = ra^2 - (w.nb / s)^2, circle b in t = tb +- hb, tb = w.D,
- * hb^2 = rb^2 - (w.na / s)^2. Every crossing of b through a's plane lies on that line, so b
- * crosses a's open disk at tb + hb (upwards, along na: b's tangent there is s (t - tb) na + ...)
- * and/or at tb - hb (downwards), and
- *     lk = [|tb + hb| < ha] - [|tb - hb| < ha].
- *
- * Certification. d_low is a lower bound of the distance between the two circles. Each
- * comparison || tb +- hb | - ha | is the distance along the line between a point of b and a
- * point of a, hence at least d_low: a computed value off by less than d_low has the true
- * sign. The other decisions are settled the same way:
- *   - nearly parallel planes: b's height above a's plane varies by at most 2 rb s, so a linked
- *     b reaches a's rim cylinder at height <= 2 rb s: linked implies d <= 2 min(ra, rb) s;
- *   - a chord that may or may not exist (|ha^2| within its error e): a linked b would have a
- *     crossing inside a chord of half-length <= sqrt(2 e), so d <= sqrt(2 e).
- * Returns -1, 0, +1 when certified, LK_UNDECIDED otherwise. The error terms are first-order
- * bounds with every constant at least doubled (unit normals renormalised here: |n| = 1 +- 3u).
+ * The caller scales so that L = max(ra, rb, |w|) is in [1, 2) (a's centre at the origin, b's at
+ * w). Returns -1, 0, +1 when certified, LK_UNDECIDED otherwise. The count and why d_low (a lower
+ * bound of the circles' distance) settles every decision: docs/linking.md, "How it is
+ * computed". The error terms are first-order bounds with every constant at least doubled (unit
+ * normals renormalised here: |n| = 1 +- 3u).
  */
 
 static int LK_FN(const double na_in[3], const double nb_in[3], const double w_in[3], double ra_in, double rb_in,
@@ -97,3 +84,8 @@ static int LK_FN(const double na_in[3], const double nb_in[3], const double w_in
     if (!(e_f < d_low) && !(fabs(fu) > e_f && fabs(fd) > e_f)) return LK_UNDECIDED;
     return (fu < 0.0) - (fd < 0.0);
 }
+
+#undef LK_REAL
+#undef LK_SQRT
+#undef LK_U
+#undef LK_FN

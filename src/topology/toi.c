@@ -119,8 +119,9 @@ static double motion_scale(const cdist_shape *s, const cdist_motion *m)
     return v_norm(c) + extra + reach;
 }
 
-static void toi_set_error(cdist_toi_result *out)
+static void toi_set_error(void *toi)
 {
+    cdist_toi_result *out = toi;
     memset(out, 0, sizeof *out);
     out->state = CDIST_TOI_NONE;
     out->t = NAN;
@@ -196,8 +197,6 @@ cdist_status cdist_toi(cdist_query *q, const cdist_shape *a, const cdist_motion 
     }
 }
 
-static void toi_error_at(void *out) { toi_set_error(out); }
-
 typedef struct toi_job {
     const char *a, *ma, *b, *mb;
     ptrdiff_t a_stride, ma_stride, b_stride, mb_stride;
@@ -226,7 +225,7 @@ cdist_status cdist_toi_batch(cdist_query *q, size_t n, const cdist_shape *a, ptr
                          cdist__span_of(ma, n, ma_stride, sizeof *ma, ma ? "first motion array" : NULL),
                          cdist__span_of(b, n, b_stride, sizeof *b, "second shape array"),
                          cdist__span_of(mb, n, mb_stride, sizeof *mb, mb ? "second motion array" : NULL)};
-    cdist_status st = cdist__topology_begin(q, n, q && a && b && out, out, sizeof *out, toi_error_at, statuses,
+    cdist_status st = cdist__topology_begin(q, n, q && a && b && out, out, sizeof *out, toi_set_error, statuses,
                                             "a handle, shape array or output array is NULL", in, 4);
     if (st) return st;
     toi_job job = {(const char *)a, (const char *)ma, (const char *)b, (const char *)mb, a_stride, ma_stride,

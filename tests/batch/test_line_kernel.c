@@ -273,12 +273,12 @@ static void check_strides(cdist_query *q)
     }
     CHECK(bad == 0, "negative stride: %d entries differ", bad);
     /* each kernel variant on its own: user structs walked backwards, the circle broadcast */
-    kfn ks[3] = {kernel_scalar, NULL, NULL};
+    kfn ks[3] = {kernel_1, NULL, NULL};
     const char *kn[3] = {"scalar", "avx2", "avx512"};
 #ifdef CD_X86_KERNELS
     __builtin_cpu_init();
-    if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma")) ks[1] = kernel_avx2;
-    if (__builtin_cpu_supports("avx512f")) ks[2] = kernel_avx512;
+    if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma")) ks[1] = kernel_4;
+    if (__builtin_cpu_supports("avx512f")) ks[2] = kernel_8;
 #endif
     for (int v = 0; v < 3; v++) {
         if (!ks[v]) continue;
@@ -356,17 +356,17 @@ int main(int argc, char **argv)
                 valid_file += ok && i < nf;
             }
             int left_file, lf;
-            int left = check_kernel("scalar", kernel_scalar, q, shape, n, sets[s], &left_file);
+            int left = check_kernel("scalar", kernel_1, q, shape, n, sets[s], &left_file);
             const char *best = "scalar";
 #ifdef CD_X86_KERNELS
             __builtin_cpu_init();
             if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma")) {
-                int l2 = check_kernel("avx2", kernel_avx2, q, shape, n, sets[s], &lf);
+                int l2 = check_kernel("avx2", kernel_4, q, shape, n, sets[s], &lf);
                 CHECK(l2 == left, "avx2 left %d valid entries, scalar %d", l2, left);
                 best = "avx2";
             }
             if (__builtin_cpu_supports("avx512f")) {
-                int l8 = check_kernel("avx512", kernel_avx512, q, shape, n, sets[s], &lf);
+                int l8 = check_kernel("avx512", kernel_8, q, shape, n, sets[s], &lf);
                 CHECK(l8 == left, "avx512 left %d valid entries, scalar %d", l8, left);
                 best = "avx512";
             }
