@@ -40,6 +40,8 @@ with open(sys.argv[1], "w") as f:
 PY
 for f in "$root"/tests/data/*.txt "$out/swept.txt"; do
   name=$(basename "$f" .txt)
+  # a list of reference lines, not queries (its error messages would name the checkout)
+  [ "$name" = revision2_recomputed ] && continue
   for m in auto polynomial robust iteration; do
     "$tool" --format=json --no-header --method=$m "$f" > "$out/$name.$m.json" 2>&1 || true
   done

@@ -2,7 +2,8 @@
 /* Body of the line/ray/segment-circle distance kernel (src/batch/line_kernel.c), written once
  * over lanes for the lanes the includer chose (CD_LANES, with LK_CHAINS), compiled for their
  * instruction set, over the solver (base/roots_halley.h) and the model's arithmetic
- * (src/lines/line_circle_body.h, which the single query runs in one lane). No include guard. The framing and scaling repeat the scalar path's (run_scaled, run and
+ * (src/lines/line_circle_body.h, which the single query runs in one lane); no include guard.
+ * The framing and scaling repeat the scalar path's (run_scaled, run and
  * cdist__line_near_centre, src/lines/line_circle.c) lane by lane; validation takes the checks of
  * src/api/validate.c as a mask. The distance of an entry the kernel answers is the single
  * query's, bit for bit. An entry whose inputs would take any other branch of the scalar path (a
