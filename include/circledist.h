@@ -1102,7 +1102,9 @@ CDIST_API void cdist_scene_free(cdist_scene *s);
  *  invalid one gets its status in statuses[k] (may be NULL), keeps its id and takes part in
  *  no query; the others are added. Returns ::CDIST_OK when all were valid, else the status of
  *  the first invalid one (cdist_query_last_error() names its index). A bad kind:
- *  ::CDIST_ERR_BAD_KIND and nothing is added. */
+ *  ::CDIST_ERR_BAD_KIND and nothing is added. The queries answer pairs with the options of
+ *  their own handle: under a stricter unit tolerance than at add, a pair that the bounds let
+ *  through fails with ::CDIST_ERR_NOT_UNIT (reported as any failing pair). */
 CDIST_API cdist_status cdist_scene_add(cdist_query *q, cdist_scene *s, cdist_scene_kind kind, size_t n,
                                        const void *objects, ptrdiff_t stride, size_t *first_id,
                                        cdist_status *statuses);
@@ -1153,13 +1155,18 @@ CDIST_API cdist_status cdist_scene_pairs_within_fn(cdist_query *q, cdist_scene *
 CDIST_API cdist_status cdist_scene_pairs_between(cdist_query *q, cdist_scene *a, cdist_scene *b, double delta,
                                                  cdist_scene_pair *out, size_t capacity, size_t *count);
 /** The closest pair of the scene (the smallest distance; ties: smallest (i, j)); skipped pairs
- *  do not count. Fewer than two live objects: ::CDIST_ERR_BAD_INTERVAL, out->distance NaN. */
+ *  do not count. Fewer than two live objects: ::CDIST_ERR_BAD_INTERVAL, out->distance NaN. A
+ *  pair without an exact query (point or sphere against an arc) that the bounds cannot put
+ *  farther than the answer: its status (::CDIST_ERR_BAD_KIND) and that pair in out, the one with
+ *  the smallest (i, j) when there are several (the same for every tree order). */
 CDIST_API cdist_status cdist_scene_closest_pair(cdist_query *q, cdist_scene *s, cdist_scene_pair *out);
 /** The closest pair between scenes a and b (i in a, j in b). */
 CDIST_API cdist_status cdist_scene_closest_pair_between(cdist_query *q, cdist_scene *a, cdist_scene *b,
                                                         cdist_scene_pair *out);
 /** The k objects nearest to a query object (kind, object), sorted by distance then id: out[m].i
- *  the id, out[m].j = SIZE_MAX, point[.][1] on the query object. *count = min(k, live objects). */
+ *  the id, out[m].j = SIZE_MAX, point[.][1] on the query object. *count = min(k, live objects)
+ *  answered objects. An object without an exact query against the query object that the bounds
+ *  cannot put beyond the k-th distance: its status, the message naming the smallest such id. */
 CDIST_API cdist_status cdist_scene_nearest(cdist_query *q, cdist_scene *s, cdist_scene_kind kind, const void *object,
                                            size_t k, cdist_scene_pair *out, size_t *count);
 /** Every object within delta of a query object, sorted by id (conventions of

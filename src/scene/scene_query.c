@@ -1226,6 +1226,47 @@ cdist_status cdist_scene_toi(cdist_query *q, cdist_scene *s, const cdist_motion 
     return cdist__scene_leave(q, s, st);
 }
 
+/* ---- closest pair and nearest: pairs that could not be answered ----
+ * A search's threshold falls as it goes, so which unanswerable pairs (a point against an arc)
+ * it meets depends on the traversal order. They are kept, and at the end the first (by key) of
+ * those whose bounds do not exclude them at the final threshold decides the status: every pair
+ * the search passed over was excluded at a threshold at least as large, so the choice depends on
+ * the objects alone. */
+
+typedef struct unanswered {
+    struct {
+        uint64_t key;
+        cdist_status st;
+    } *e;
+    size_t n, cap;
+    int oom;
+} unanswered;
+
+static void unanswered_add(unanswered *u, uint64_t key, cdist_status st)
+{
+    if (u->n == u->cap) {
+        size_t cap = u->cap ? 2 * u->cap : 16;
+        void *e = realloc(u->e, cap * sizeof *u->e);
+        if (!e) {
+            u->oom = 1;
+            return;
+        }
+        u->e = e;
+        u->cap = cap;
+    }
+    u->e[u->n].key = key;
+    u->e[u->n++].st = st;
+}
+
+/* The entry of u with the smallest key for which open(ctx, key) holds (SIZE_MAX: none). */
+static size_t unanswered_first(const unanswered *u, int (*open)(const void *ctx, uint64_t key), const void *ctx)
+{
+    size_t pick = SIZE_MAX;
+    for (size_t k = 0; k < u->n; k++)
+        if ((pick == SIZE_MAX || u->e[k].key < u->e[pick].key) && open(ctx, u->e[k].key)) pick = k;
+    return pick;
+}
+
 /* ---- closest pair: branch and bound over the tree ---- */
 
 typedef struct closest {
@@ -1236,13 +1277,28 @@ typedef struct closest {
     uint64_t best_key;
     cdist_scene_pair rec;
     int have;
-    cdist_scene_pair err;     /* first failing pair */
+    unanswered un;            /* failing pairs */
     size_t box_pairs, candidates;
 } closest;
 
 /* Boxes bound the solids: a box gap g > 0 means a signed distance >= g, and says nothing about
  * overlapping solids; so a box pair is pruned when its gap exceeds max(best, 0). */
 static double box_cut(const closest *c) { return c->best > 0.0 ? c->best : 0.0; }
+
+/* Objects i of sa and j of sb at their tree positions pa, pb: may their distance be at most
+ * best (their boxes and bounds do not exclude it)? */
+static int best_open(const closest *c, uint32_t pa, uint32_t pb, size_t i, size_t j)
+{
+    return cdist__box_near(&c->sa->box[pa], &c->sb->box[pb], cdist__box_lim(box_cut(c))) &&
+           !cdist__scene_excluded(&c->sa->obj[i], &c->sb->obj[j], c->best, 1);
+}
+
+static int best_open_key(const void *ctx, uint64_t key)
+{
+    const closest *c = ctx;
+    size_t i = (size_t)(key >> 32), j = (size_t)(key & 0xffffffffu);
+    return best_open(c, c->sa->pos[i], c->sb->pos[j], i, j);
+}
 
 static void best_pos(closest *c, uint32_t pa, uint32_t pb)
 {
@@ -1257,7 +1313,7 @@ static void best_pos(closest *c, uint32_t pa, uint32_t pb)
     answer(c->h, core_of(c->sa, i), core_of(c->sb, j), i, j, INFINITY, &p, NULL);
     uint64_t key = (uint64_t)i << 32 | j;
     if (p.status != CDIST_OK) {
-        if (c->err.status == CDIST_OK) c->err = p;
+        unanswered_add(&c->un, key, (cdist_status)p.status);
         return;
     }
     if (!c->have || p.distance < c->best || (p.distance == c->best && key < c->best_key)) {
@@ -1324,7 +1380,6 @@ static cdist_status closest_entry(cdist_query *q, cdist_scene *sa, cdist_scene *
         c.self = sa == sb;
         c.h = q;
         c.best = INFINITY;
-        c.err.status = CDIST_OK;
         if (sa->node_n > 0 && sb->node_n > 0) {
             if (c.self) best_self(&c, 0);
             else best_cross(&c, 0, 0);
@@ -1334,16 +1389,20 @@ static cdist_status closest_entry(cdist_query *q, cdist_scene *sa, cdist_scene *
         sa->stats.candidates = c.candidates;
         sa->stats.reported = c.have;
         cdist__begin(q, NULL);
-        if (c.err.status != CDIST_OK) {
-            *out = c.err;
-            st = cdist__fail(q, (cdist_status)c.err.status, "scene %s: pair (%zu, %zu): %s", what, c.err.i, c.err.j,
-                             pair_message((cdist_status)c.err.status));
+        size_t e = unanswered_first(&c.un, best_open_key, &c);
+        if (c.un.oom) {
+            st = cdist__fail(q, CDIST_ERR_NO_MEMORY, "scene %s: out of memory for the failing pairs", what);
+        } else if (e != SIZE_MAX) {
+            size_t i = (size_t)(c.un.e[e].key >> 32), j = (size_t)(c.un.e[e].key & 0xffffffffu);
+            pair_error(out, i, j, c.un.e[e].st);
+            st = cdist__fail(q, c.un.e[e].st, "scene %s: pair (%zu, %zu): %s", what, i, j, pair_message(c.un.e[e].st));
         } else if (!c.have) {
             pair_error(out, SIZE_MAX, SIZE_MAX, CDIST_ERR_BAD_INTERVAL);
             st = cdist__fail(q, CDIST_ERR_BAD_INTERVAL, "scene %s: no pair of live objects", what);
         } else {
             *out = c.rec;
         }
+        free(c.un.e);
     }
     if (st && out && st != CDIST_ERR_BAD_KIND && st != CDIST_ERR_BAD_INTERVAL && out->status == CDIST_OK)
         pair_error(out, SIZE_MAX, SIZE_MAX, st);
@@ -1371,24 +1430,36 @@ typedef struct near_q {
     /* nearest: the k best (distance, id) so far, sorted */
     cdist_scene_pair *res;
     size_t k, n;
-    cdist_scene_pair err;
+    unanswered un;           /* failing objects (their ids) */
     /* within: the keys */
     broad *b;
 } near_q;
 
 static double near_cut(const near_q *c) { return c->n < c->k ? INFINITY : c->res[c->k - 1].distance; }
 
-static void near_obj(near_q *c, uint32_t p)
+/* May live object i, at tree position p, be among the k nearest (its box and bounds do not
+ * exclude it at the cut)? */
+static int near_open(const near_q *c, uint32_t p, size_t i)
 {
     double cut = near_cut(c);
-    if (!cdist__box_near(&c->s->box[p], &c->qbox, cdist__box_lim(cut > 0.0 ? cut : 0.0))) return;
+    return cdist__box_near(&c->s->box[p], &c->qbox, cdist__box_lim(cut > 0.0 ? cut : 0.0)) &&
+           !cdist__scene_excluded(&c->s->obj[i], &c->qo->o, cut, 1);
+}
+
+static int near_open_key(const void *ctx, uint64_t key)
+{
+    const near_q *c = ctx;
+    return near_open(c, c->s->pos[key], (size_t)key);
+}
+
+static void near_obj(near_q *c, uint32_t p)
+{
     size_t i = c->s->perm[p];
-    const cdist__scene_obj *o = &c->s->obj[i];
-    if (o->state != CD_SCENE_LIVE || cdist__scene_excluded(o, &c->qo->o, cut, 1)) return;
+    if (c->s->obj[i].state != CD_SCENE_LIVE || !near_open(c, p, i)) return;
     cdist_scene_pair r;
     answer(c->h, core_of(c->s, i), core_of_item(c->qo), i, SIZE_MAX, INFINITY, &r, NULL);
     if (r.status != CDIST_OK) {
-        if (c->err.status == CDIST_OK || i < c->err.i) c->err = r;
+        unanswered_add(&c->un, i, (cdist_status)r.status);
         return;
     }
     /* insert by (distance, id) */
@@ -1465,13 +1536,16 @@ cdist_status cdist_scene_nearest(cdist_query *q, cdist_scene *s, cdist_scene_kin
         c.h = q;
         c.res = out;
         c.k = k;
-        c.err.status = CDIST_OK;
         if (s->node_n > 0) near_node(&c, 0);
         if (count) *count = c.n;
         cdist__begin(q, NULL);
-        if (c.err.status != CDIST_OK)
-            st = cdist__fail(q, (cdist_status)c.err.status, "scene nearest: object %zu and the query object: %s", c.err.i,
-                             pair_message((cdist_status)c.err.status));
+        size_t e = unanswered_first(&c.un, near_open_key, &c);
+        if (c.un.oom)
+            st = cdist__fail(q, CDIST_ERR_NO_MEMORY, "scene nearest: out of memory for the failing objects");
+        else if (e != SIZE_MAX)
+            st = cdist__fail(q, c.un.e[e].st, "scene nearest: object %zu and the query object: %s",
+                             (size_t)c.un.e[e].key, pair_message(c.un.e[e].st));
+        free(c.un.e);
     }
     return cdist__scene_leave(q, s, st);
 }
