@@ -267,6 +267,11 @@ class Scene:
             raise ValueError("the Scene is closed")
         return self._s
 
+    def _group_error(self, g, groups):
+        """The handle's last message, naming the array of a list (its entries count from 0)."""
+        msg = _lib.query_last_error(self._query._handle()).decode()
+        return "objects[%d]: %s" % (g, msg) if groups > 1 else msg
+
     def _check(self, st, allow=()):
         if st != 0 and st not in allow:
             raise CircleDistError(st, _lib.query_last_error(self._query._handle()).decode())
@@ -293,12 +298,13 @@ class Scene:
         ids = []
         first_bad = None
         with self._query._lock, self._lock:
-            for kind, rows in _groups(objects, "objects"):
+            groups = _groups(objects, "objects")
+            for g, (kind, rows) in enumerate(groups):
                 first = _c.c_size_t()
                 st = _add(self._query._handle(), self._handle(), kind, len(rows), rows.ctypes.data,
                           rows.strides[0], _c.byref(first), None)
                 if st != 0 and first_bad is None:
-                    first_bad = (st, _lib.query_last_error(self._query._handle()).decode())
+                    first_bad = (st, self._group_error(g, len(groups)))
                 ids.append(np.arange(first.value, first.value + len(rows), dtype=np.int64))
         if first_bad is not None:
             raise CircleDistError(*first_bad)
@@ -318,6 +324,8 @@ class Scene:
         ------
         ValueError
             As many objects as ids are needed.
+        CircleDistError
+            Invalid objects or ids (the first one; every valid entry of every array is applied).
         """
         ids = np.ascontiguousarray(np.asarray(ids, dtype=np.int64).reshape(-1)).astype(np.uintp)
         groups = _groups(objects, "objects")
@@ -325,12 +333,17 @@ class Scene:
         if total != len(ids):
             raise ValueError("update: %d ids for %d objects" % (len(ids), total))
         at = 0
+        first_bad = None
         with self._query._lock, self._lock:
-            for kind, rows in groups:
+            for g, (kind, rows) in enumerate(groups):
                 part = np.ascontiguousarray(ids[at:at + len(rows)])
-                self._check(_update(self._query._handle(), self._handle(), len(rows), part.ctypes.data, kind,
-                                    rows.ctypes.data, rows.strides[0], None))
+                st = _update(self._query._handle(), self._handle(), len(rows), part.ctypes.data, kind,
+                             rows.ctypes.data, rows.strides[0], None)
+                if st != 0 and first_bad is None:
+                    first_bad = (st, self._group_error(g, len(groups)))
                 at += len(rows)
+        if first_bad is not None:
+            raise CircleDistError(*first_bad)
 
     def remove(self, ids):
         """Remove objects (their ids are not reused).

@@ -166,6 +166,22 @@ def test_bad_input():
 
 # The interrupt may land in ctypes' own trampoline, which reports it as unraisable.
 @pytest.mark.filterwarnings("ignore::pytest.PytestUnraisableExceptionWarning")
+def test_update_list_with_a_bad_array():
+    """A list of arrays is one update: every valid entry of every array is applied, and the error
+    names the array of the first invalid entry (as cdist_scene_update does for one array)."""
+    def fresh():
+        return cd.Scene([cd.Sphere((0, 0, 0), 1.0), cd.Sphere((10, 0, 0), 1.0), cd.Sphere((20, 0, 0), 1.0)])
+    bad, good = cd.Sphere((math.nan, 0, 0), 1.0), cd.Sphere((1.5, 0, 0), 1.0)
+    for ids, objects, where in (([1, 2], [bad, good], "objects[0]: "), ([2, 1], [good, bad], "objects[1]: ")):
+        s = fresh()
+        with pytest.raises(cd.CircleDistError) as e:
+            s.update(ids, objects)
+        assert where in str(e.value)
+        i, j, d, _ = s.pairs_within(0.0)
+        assert list(zip(i, j)) == [(0, 2)], (ids, list(zip(i, j)))
+        assert d[0] == -0.5
+
+
 def test_interrupt():
     """Ctrl-C (a KeyboardInterrupt raised by a signal handler) stops a long pairs_within: the
     library returns to Python between blocks of answers."""
