@@ -360,7 +360,7 @@ static double normal_turn(vec3 na, vec3 nb)
     if (qa <= CD_SCENE_UNIT_SLACK && qb <= CD_SCENE_UNIT_SLACK) {
         vec3 dm = sub3(nb, na), dp = v_add(nb, na);
         double m = dot3(dm, dm), p = dot3(dp, dp);
-        return sqrt(m < p ? m : p);
+        return sqrt(m < p ? m : p) + qa + qb;
     }
     na = unit3(na), nb = unit3(nb);
     return fmin(norm3(sub3(nb, na)), norm3(v_add(nb, na)));
