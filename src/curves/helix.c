@@ -241,8 +241,10 @@ static cdist_status helix_query(cdist_query *q, const void *obj, const cdist_cir
      * delta of P's, so X(t*) is within 2 delta of the minimum: exact to the circle-circle
      * constancy tolerance when 2 delta is within it. The scan could not end there (a function
      * constant, or nearly so over many turns, certifies nothing). */
-    double Lp = fmax(fmax(cc.r, hx.r), v_norm(hx.c));
-    if (hx.r > 0.0 && 2.0 * (v_norm(v_cross(hx.c, hx.n)) + cc.r) <= CD_CC_EQUI_ULPS * DBL_EPSILON * Lp) {
+    /* (first a necessary condition without square roots: Lp <= sqrt(3) max(hr, |c_i|) or r = 0) */
+    if (hx.r > 0.0 && cc.r <= CD_CC_EQUI_ULPS * DBL_EPSILON * fmax(hx.r, v_maxabs(hx.c)) &&
+        2.0 * (v_norm(v_cross(hx.c, hx.n)) + cc.r) <=
+            CD_CC_EQUI_ULPS * DBL_EPSILON * fmax(fmax(cc.r, hx.r), v_norm(hx.c))) {
         double ts = t0;
         if (hx.rise != 0.0) ts = fmin(fmax(-v_dot(hx.c, hx.n) / hx.rise, t0), t1);
         cdist__cs_offer_point(&k, helix_pos(&hx, ts), ts, &cc, disk, 0);

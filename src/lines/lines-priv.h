@@ -37,7 +37,7 @@ static inline int cdist__lines_scale_exponent(vec3 origin, const vec3 *p1, const
     double L = cdist__fmax(c->r, v_maxabs(v_sub(origin, c->c)));
     if (p1) L = cdist__fmax(L, v_maxabs(v_sub(*p1, c->c)));
     int e = cdist__scale_exponent(L);
-    if (e < 0) {
+    if (e < CD_LINES_OVERFLOW_EXP) {
         double A = cdist__fmax(v_maxabs(origin), v_maxabs(c->c));
         if (p1) A = cdist__fmax(A, v_maxabs(*p1));
         if (!(A * cdist__pow2(-e) <= DBL_MAX)) e = cdist__scale_exponent(A) - CD_LINES_ABS_MAX_EXP;
