@@ -93,6 +93,14 @@
  * F is exactly even in s for a symmetric configuration) when it lies within CD_LC_CANON_MAX of
  * B0 along the line; farther (nearly perpendicular lines) B0 itself, so that t does not cancel. */
 #define CD_LC_CANON_MAX 4.0
+/* Lines family scaling (src/lines/lines-priv.h): when the problem scale L is so far below the
+ * coordinates that 2^-e times them would overflow, the exponent is raised so that the scaled
+ * coordinates stay below 2^CD_LINES_ABS_MAX_EXP (an exponent, dimensionless): headroom of 2^23
+ * for the sums taken on them (origin - centre, centre + offset), none of which is squared. */
+#define CD_LINES_ABS_MAX_EXP 1000
+/* Coordinates are at most CD_MAX_ABS = 1e150 < 2^499, so 2^-e times them cannot overflow for
+ * e >= CD_LINES_OVERFLOW_EXP (an exponent): the check above is needed only below it. */
+#define CD_LINES_OVERFLOW_EXP (-500)
 /* Line kernels (src/batch/line_kernel_body.h), scaled units: a root that needed more than the
  * lanes' iterations counts as at an end of the range when within CD_LK_END_REL_ULPS * eps * |end|
  * + CD_LK_END_ABS of it (the bisection down to the end stops a few ulps short); any other slow

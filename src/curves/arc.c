@@ -206,6 +206,14 @@ static double arc_lb(const cdist__cs_scan *s, double a, double b)
     return sqrt(hg * hg + rg * rg);
 }
 
+/* Y (a disk) lies within CD_CC_EQUI_ULPS eps L / 2 of a point of X's axis (arc_minima). */
+static int disk_point_on_axis(const arcx *X, const cdist__circle *Y)
+{
+    vec3 d = v_sub(Y->c, X->c.c);
+    double L = fmax(fmax(X->c.r, Y->r), v_norm(d));
+    return 2.0 * (v_norm(v_cross(d, X->c.n)) + Y->r) <= CD_CC_EQUI_ULPS * DBL_EPSILON * L;
+}
+
 /* Every minimum of theta -> dist^2(X(theta), circle or disk Y) over X's range, handed to the
  * scan's candidate callback (s->cand, or the default offer). Uses the circle-circle critical
  * angles when available, else samples. *exact says which. For a disk, also the closed-form
@@ -265,10 +273,15 @@ static cdist_status arc_minima(cdist__cs_scan *s, const arcx *X, const cdist__ci
         }
     }
     s->k->flat_ties = 1;
-    if (n_const) *n_const = !s->disk && n == -1;
-    /* Certified unless the distance is known constant (n == -1, circle) or the candidates go
-     * through a callback (whose collector holds another function's minimum). */
-    s->certify = !s->cand && (s->disk || n != -1);
+    /* A disk within delta = e + r of a point of X's axis (e its centre's axis distance) is within
+     * delta of its own rotations about that axis, so its distance varies by at most 2 delta
+     * along X: constant to the circle-circle tolerance when 2 delta is within it, and answered
+     * as the circle's constant case (certifying a constant function cannot end). */
+    int flat = n == -1 && (!s->disk || disk_point_on_axis(X, Y));
+    if (n_const) *n_const = flat;
+    /* Certified unless the distance is known constant or the candidates go through a callback
+     * (whose collector holds another function's minimum). */
+    s->certify = !s->cand && !flat;
     s->speed_max = X->c.r;
     s->accel_max = X->c.r;
     s->accel_normal_max = X->c.r * v_norm(v_cross(Y->n, X->c.n));

@@ -235,6 +235,22 @@ static cdist_status helix_query(cdist_query *q, const void *obj, const cdist_cir
     double plen = len / (double)pieces;
     cdist__cs_coll k;
     cdist__cs_coll_init(&k, fmax(cc.r, v_norm(hx.c)));
+    /* A target within delta = e + r of a point P of the helix's axis (e its centre's axis
+     * distance): |X(t) - P|^2 = hr^2 + (rise t - zP)^2 is least at t* = zP / rise clamped to the
+     * range (anywhere for pitch 0, where it is constant), and the target's distance is within
+     * delta of P's, so X(t*) is within 2 delta of the minimum: exact to the circle-circle
+     * constancy tolerance when 2 delta is within it. The scan could not end there (a function
+     * constant, or nearly so over many turns, certifies nothing). */
+    /* (first a necessary condition without square roots: Lp <= sqrt(3) max(hr, |c_i|) or r = 0) */
+    if (hx.r > 0.0 && cc.r <= CD_CC_EQUI_ULPS * DBL_EPSILON * fmax(hx.r, v_maxabs(hx.c)) &&
+        2.0 * (v_norm(v_cross(hx.c, hx.n)) + cc.r) <=
+            CD_CC_EQUI_ULPS * DBL_EPSILON * fmax(fmax(cc.r, hx.r), v_norm(hx.c))) {
+        double ts = t0;
+        if (hx.rise != 0.0) ts = fmin(fmax(-v_dot(hx.c, hx.n) / hx.rise, t0), t1);
+        cdist__cs_offer_point(&k, helix_pos(&hx, ts), ts, &cc, disk, 0);
+        if (hx.rise == 0.0 && t1 > t0) k.b.equidistant = 1;
+        return cdist__cs_coll_result(&k, cdist__pow2(e), origin, r);
+    }
     cdist__cs_scan s = {.q = q, .ev = helix_eval, .ctx = &hx, .c = &cc, .disk = disk, .k = &k, .update_scale = 1,
                         .pos = helix_pos};
     helix_lb_ctx lbc = {helix_bound_init(&hx, &cc, disk, fabs(hx.rise) * fmax(fabs(t0), fabs(t1))), &hx};

@@ -27,12 +27,22 @@ cdist_status cdist__linear_circle_ex(cdist_query *q, cdist_method method, vec3 B
 vec3 cdist__line_near_centre(vec3 origin, vec3 D, vec3 C, double tmin, double tmax, double *t0);
 
 /* Scale exponent of a linear query (origin, optional segment end p1, circle c): from
- * max(r, |origin - C|, |p1 - C|), see cdist__scale_exponent. */
+ * max(r, |origin - C|, |p1 - C|), see cdist__scale_exponent. The cores take the origin and the
+ * centre scaled as they are (their difference is taken exactly there), so a problem far smaller
+ * than its coordinates (A / L beyond ~2^1023, A the largest |coordinate|) would have them
+ * overflow to infinity: then the exponent is raised until 2^-e A is below 2^CD_LINES_ABS_MAX_EXP.
+ * Only where the plain exponent overflows, so every other query is scaled exactly as before. */
 static inline int cdist__lines_scale_exponent(vec3 origin, const vec3 *p1, const cdist__circle *c)
 {
     double L = cdist__fmax(c->r, v_maxabs(v_sub(origin, c->c)));
     if (p1) L = cdist__fmax(L, v_maxabs(v_sub(*p1, c->c)));
-    return cdist__scale_exponent(L);
+    int e = cdist__scale_exponent(L);
+    if (e < CD_LINES_OVERFLOW_EXP) {
+        double A = cdist__fmax(v_maxabs(origin), v_maxabs(c->c));
+        if (p1) A = cdist__fmax(A, v_maxabs(*p1));
+        if (!(A * cdist__pow2(-e) <= DBL_MAX)) e = cdist__scale_exponent(A) - CD_LINES_ABS_MAX_EXP;
+    }
+    return e;
 }
 
 /* The length of the direction Ds = 2^-e D of a scaled query, given len = |D|: len 2^-e, except

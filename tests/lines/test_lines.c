@@ -447,6 +447,85 @@ static void properties(void)
     cdist_query_set_method(q, CDIST_METHOD_AUTO);
 }
 
+/* A problem far smaller than its coordinates (a circle of radius 1e-300 at x = 1e10; a segment
+ * of length 1e-320 at x = 2^49): scaled to its own size the coordinates overflowed, and every
+ * query ended in CDIST_ERR_INTERNAL. Expected values: the obvious geometry, and for the tilted
+ * lines mpmath (tests/lines/far_tiny_ref.py, dense angle sampling + golden refinement
+ * in coordinates relative to the centre, 60 digits). */
+static void far_tiny(void)
+{
+    const double X = 1e10, r = 1e-300;
+    cdist_circle c = circ(tv(X, 0, 0), tv(1, 0, 0), r);
+    cdist_result res;
+    for (int mi = 0; mi < 2; mi++) {
+        cdist_query_set_method(q, methods[mi]);
+        cdist_line axis = {tv(X, 0, 0), tv(1, 0, 0)}, inplane = {tv(X, 0, 0), tv(0, 1, 0)};
+        cdist_ray raxis = {tv(X, 0, 0), tv(1, 0, 0)};
+        /* the axis: every circle point at distance r; the disk is crossed */
+        CHECK(cdist_line_circle(q, &axis, &c, &res) == CDIST_OK && res.distance == r && res.equidistant,
+              "far tiny: line on the axis (%s): %.17g", mname[mi], res.distance);
+        CHECK(cdist_ray_circle(q, &raxis, &c, &res) == CDIST_OK && res.distance == r && res.equidistant,
+              "far tiny: ray on the axis (%s): %.17g", mname[mi], res.distance);
+        CHECK(cdist_line_disk(q, &axis, &c, &res) == CDIST_OK && res.distance == 0.0, "far tiny: line-disk (%s)",
+              mname[mi]);
+        CHECK(cdist_ray_disk(q, &raxis, &c, &res) == CDIST_OK && res.distance == 0.0, "far tiny: ray-disk (%s)",
+              mname[mi]);
+        /* in the plane through the centre: crosses the circle twice */
+        CHECK(cdist_line_circle(q, &inplane, &c, &res) == CDIST_OK && res.distance == 0.0 && res.num_pairs == 2,
+              "far tiny: line in the plane (%s): %.17g, %d pairs", mname[mi], res.distance, res.num_pairs);
+        /* the smallest radius */
+        cdist_circle sub = circ(tv(X, 0, 0), tv(1, 0, 0), 5e-324);
+        CHECK(cdist_line_circle(q, &axis, &sub, &res) == CDIST_OK && res.distance == 5e-324,
+              "far tiny: radius 5e-324 (%s): %.17g", mname[mi], res.distance);
+        /* a segment of subnormal length at 2^49 (p1 - p0 = (0, 1e-320, 0), exact) */
+        const double Y = 0x1p49;
+        cdist_segment sg = {tv(Y, 0, 0), tv(Y, 1e-320, 0)};
+        cdist_circle cs = circ(tv(Y, 0, 0), tv(1, 0, 0), r);
+        CHECK(cdist_segment_circle(q, &sg, &cs, &res) == CDIST_OK && fabs(res.distance - (r - 1e-320)) <= 4e-16 * r,
+              "far tiny: segment in the plane (%s): %.17g", mname[mi], res.distance);
+        CHECK(cdist_segment_disk(q, &sg, &cs, &res) == CDIST_OK && res.distance == 0.0,
+              "far tiny: segment-disk (%s): %.17g", mname[mi], res.distance);
+        cdist_circle pt = circ(tv(Y, 3e-320, 0), tv(0, 0, 1), 0.0);
+        CHECK(cdist_segment_circle(q, &sg, &pt, &res) == CDIST_OK && res.distance == 3e-320 - 1e-320,
+              "far tiny: segment to a point (%s): %.17g", mname[mi], res.distance);
+        /* tilted lines and rays (mpmath) */
+        static const struct {
+            int ray;
+            double o[3], d[3], c[3], n[3], r, expect;
+        } T[] = {
+            {0, {1e10, 1.6388162525724092e-300, -1.1412072766573532e-300},
+             {-0.41610325208200699, 0.83167139159654491, -0.36766938954262174},
+             {1e10, -1.6562110652433133e-300, -3.2731139451696211e-301},
+             {-0.31355142005619185, -0.92554030675682242, -0.21227493386933971}, 5.5725970024134755e-301,
+             1.1685214789257201251e-300},
+            {0, {1e10, -5.1040982909707508e-301, 1.9097786283823126e-301},
+             {-0.16273172480573278, 0.64032002629907314, 0.75067213193384608},
+             {1e10, -1.7488441001067075e-300, -1.7615953201350695e-300},
+             {0.67600068438250549, 0.29743752434729109, -0.67420619533236181}, 4.9132155435672043e-301,
+             3.9719956800895304218e-303},
+            {1, {1e10, -1.9097482877776457e-300, -1.5321885480093656e-301},
+             {-0.18422307351495118, -0.58560384851458247, 0.78938583201728096},
+             {1e10, -1.3278064843738217e-300, -1.5316168220730725e-300},
+             {-0.081324055447123275, -0.21494806101977632, 0.97323364567274984}, 2.1201339672948977e-301,
+             1.4690062807617788277e-300},
+            {1, {1e10, -3.934229746627835e-301, -8.886434768621974e-301},
+             {0.11426489540623476, -0.99304590971694096, 0.02834351552393069},
+             {1e10, -1.4522954279398968e-300, -2.7791339564369722e-301},
+             {0.92470972976695431, 0.2630574704154528, -0.27515937733057472}, 1.1454171503260734e-300,
+             1.0901748157376875645e-301},
+        };
+        for (size_t i = 0; i < sizeof T / sizeof T[0]; i++) {
+            cdist_vec3 o = tv(T[i].o[0], T[i].o[1], T[i].o[2]), d = tv(T[i].d[0], T[i].d[1], T[i].d[2]);
+            cdist_circle ct = circ(tv(T[i].c[0], T[i].c[1], T[i].c[2]), tv(T[i].n[0], T[i].n[1], T[i].n[2]), T[i].r);
+            double L = fmax(T[i].r, fmax(fabs(T[i].o[1] - T[i].c[1]), fabs(T[i].o[2] - T[i].c[2])));
+            cdist_status st = T[i].ray ? ray_q(mi, o, d, ct, &res) : line_q(mi, o, d, ct, &res);
+            CHECK(st == CDIST_OK && fabs(res.distance - T[i].expect) <= 1e-14 * L,
+                  "far tiny: tilted %zu (%s): %.17g vs %.17g", i, mname[mi], res.distance, T[i].expect);
+        }
+    }
+    cdist_query_set_method(q, CDIST_METHOD_AUTO);
+}
+
 /* ---- extreme magnitudes ---- */
 
 static void extremes(void)
@@ -526,6 +605,7 @@ static void extremes(void)
               "segment on the axis: the circle point (%g %g %g) is on the circle", r.pairs[0].point[1].x,
               r.pairs[0].point[1].y, r.pairs[0].point[1].z);
     }
+    far_tiny();
 }
 
 /* ---- bad input ---- */
