@@ -161,8 +161,53 @@ void cdist__cc_deferred_offer(const cdist__cc_frame *f, cdist__cc_sink *k, const
         if (df->d[i] - f->R * df->hw[i] <= dbest + tie) min_offer(f, k, df->t[i] - df->hw[i], df->t[i] + df->hw[i]);
 }
 
+/* One interval [a, b] of the geometric grid. The grid's spacing only matches the kink's own
+ * features (width ~ the offset from the crossing); F may hold narrower ones farther out (A
+ * crossing B's rim while nearly in B's plane: dips of width ~ |h| / W1 at rho = s), two
+ * critical points between neighbours that one F' sign pair does not see. So wherever rho is
+ * certified clear of the axis (the F certificates need rho_lo > 0), an interval that is neither
+ * certified nor pruned is subdivided like the scan's (same certificates, same leaves, a budget
+ * of evaluations, then sampled). Nearer the axis the grid's pair is all there is (docs). */
+static void kink_cover(const cdist__cc_frame *f, cdist__cc_sink *k, cdist__cc_pt *a0, cdist__cc_pt *b0, double *Fmax, cdist__cc_deferred *df)
+{
+    enum { BUDGET = 48, STACK = 32 }; /* the scan's budget; widths 0.1 down to 2^-30 take 27 levels */
+    cdist__cc_pt *a = a0, *b = b0;
+    cdist__cc_pt pool[BUDGET];
+    cdist__cc_pt *st[STACK];
+    int sp = 0, evals = 0;
+    for (;;) {
+        double w = b->t - a->t;
+        double dth = cdist__fmin(sqrt(k->Fmin), k->dmin) * (1 + 8 * DBL_EPSILON) + CD_TIE_ULPS * DBL_EPSILON * f->L;
+        /* Leaves: too narrow, not clear of the axis, pruned (the scan's Lipschitz and hull
+         * bounds), certified. */
+        int leaf = w <= CD_CC_MIN_WIDTH || 0.5 * (a->rho + b->rho - f->W1 * w) <= 0 || sp + 1 >= STACK ||
+                   (k->prune && 0.5 * (a->d + b->d - f->R * w) > dth) || cdist__cc_certified(f, a, b) || cdist__cc_monotone(f, a, b) ||
+                   cdist__cc_convex(f, a, b) || (k->prune && cdist__cc_arc_bound(f, a, b) > dth * dth);
+        if (leaf) {
+            cdist__cc_emit(k, a, b);
+        } else if (evals >= BUDGET) {
+            cdist__cc_emit_sampled(f, k, a, b, Fmax, df);
+        } else {
+            /* Midpoint from the endpoint cosines/sines: (a + b) / (2 cos(w / 2)). */
+            double sh, ch;
+            cdist__cc_small_sincos(0.5 * w, &sh, &ch);
+            double hc = 0.5 / ch;
+            cdist__cc_pt *mid = &pool[evals++];
+            cdist__cc_eval_lean(f, 0.5 * (a->t + b->t), (a->c + b->c) * hc, (a->s + b->s) * hc, mid);
+            cdist__cc_track(k, mid, Fmax);
+            st[sp++] = b;
+            b = mid;
+            continue;
+        }
+        if (sp == 0) break;
+        a = b;
+        b = st[--sp];
+    }
+}
+
 /* The geometric grid around a near-crossing t: t +- 0.1 * 2^-j down to the angular resolution
- * at t (offsets below 2 ulps of t name no new angle), and t. */
+ * at t (offsets below 2 ulps of t name no new angle), and t, closed by t +- 2 core (the edges of
+ * the window the scan leaves to the grid), each interval covered by kink_cover. */
 void cdist__cc_scan_kink(const cdist__cc_frame *f, cdist__cc_sink *k, double t, double core, double *Fmax, cdist__cc_deferred *df)
 {
     k->sampled = 1;
@@ -177,19 +222,22 @@ void cdist__cc_scan_kink(const cdist__cc_frame *f, cdist__cc_sink *k, double t, 
     while (j0 < NG - 1 && ldexp(0.1, -j0) > 2 * core) j0++;
     double res = 4 * DBL_EPSILON * cdist__fmax(1.0, fabs(t));
     while (j1 > j0 + 1 && ldexp(0.1, -(j1 - 1)) < res) j1--;
+    /* The window's edge, when the widest offset falls short of it (else no point: the scan
+     * only covers intervals reaching beyond 2 core). */
+    int edge = 2 * core > ldexp(0.1, -j0);
     for (int side = -1; side <= 1; side += 2)
-        for (int jj = j0; jj < j1; jj++) {
-            int j = side < 0 ? jj : j1 - 1 - (jj - j0); /* increasing angle */
-            double h = side * ldexp(0.1, -j), ch, sh;
-            if (side > 0 && jj == j0) {
+        for (int jj = j0 - edge; jj < j1; jj++) {
+            int j = side < 0 ? jj : j1 - 1 - (jj - j0) - edge; /* increasing angle */
+            double h = side * (j < j0 ? 2 * core : ldexp(0.1, -j)), ch, sh;
+            if (side > 0 && jj == j0 - edge) {
                 cdist__cc_eval_lean(f, t, ct, st, &cur);
-                cdist__cc_emit(k, &prev, &cur);
+                kink_cover(f, k, &prev, &cur, Fmax, df);
                 prev = cur;
             }
             cdist__cc_small_sincos(h, &sh, &ch);
             cdist__cc_eval_lean(f, t + h, ct * ch - st * sh, st * ch + ct * sh, &cur);
             cdist__cc_track(k, &cur, Fmax);
-            if (!first) cdist__cc_emit(k, &prev, &cur);
+            if (!first) kink_cover(f, k, &prev, &cur, Fmax, df);
             first = 0;
             prev = cur;
         }

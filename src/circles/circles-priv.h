@@ -312,8 +312,10 @@ typedef struct cdist__cc_deferred {
 int cdist__cc_certified(const cdist__cc_frame *f, cdist__cc_pt *a, cdist__cc_pt *b);
 int cdist__cc_monotone(const cdist__cc_frame *f, cdist__cc_pt *a, cdist__cc_pt *b);
 int cdist__cc_convex(const cdist__cc_frame *f, cdist__cc_pt *a, cdist__cc_pt *b);
-/* Lower bounds of F: on an interval of the subdivision at `level`, and on [t - h, t + h]. */
+/* Lower bounds of F: on an interval of the subdivision at `level`, on any arc [a, b] of width
+ * <= 0.2 rad, and on [t - h, t + h]. */
 double cdist__cc_hull_bound(const cdist__cc_frame *f, const cdist__cc_pt *a, const cdist__cc_pt *b, int level);
+double cdist__cc_arc_bound(const cdist__cc_frame *f, const cdist__cc_pt *a, const cdist__cc_pt *b);
 double cdist__cc_window_hull_bound(const cdist__cc_frame *f, double t, double h);
 /* A critical bracket [a, b] of F (a sign change of F'), refined and handed to the sink (cc_scan.c). */
 void cdist__cc_emit(cdist__cc_sink *k, const cdist__cc_pt *a, const cdist__cc_pt *b);
