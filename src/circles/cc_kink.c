@@ -230,14 +230,13 @@ void cdist__cc_kink_recheck(const cdist__cc_frame *f, cdist__cc_sink *k, const c
     }
 }
 
-/* Records the grid interval [t + ha, t + hb] for cdist__cc_kink_recheck when it is wider than
- * CD_CC_MIN_WIDTH and certified clear of the axis (rho is W1-Lipschitz; the F certificates need
- * rho > 0). */
-static void kink_record(const cdist__cc_frame *f, cdist__cc_kink_rec *kr, double t, double ha, double hb, const cdist__cc_pt *a,
-                        const cdist__cc_pt *b)
+/* Records the grid interval [t + ha, t + hb] for cdist__cc_kink_recheck. The caller records
+ * only intervals wider than CD_CC_MIN_WIDTH and certified clear of the axis (rho is
+ * W1-Lipschitz; the F certificates need rho > 0), tested in its loop: most of the grid is
+ * narrower or on the axis. */
+static void kink_record(cdist__cc_kink_rec *kr, double t, double ha, double hb, const cdist__cc_pt *a, const cdist__cc_pt *b)
 {
-    double w = hb - ha;
-    if (w <= CD_CC_MIN_WIDTH || 0.5 * (a->rho + b->rho - f->W1 * w) <= 0 || kr->n >= CC_KINK_REC) return;
+    if (kr->n >= CC_KINK_REC) return; /* cannot happen: 2 windows of at most 2 x 65 intervals */
     kr->tc[kr->n] = t;
     kr->ha[kr->n] = ha;
     kr->hb[kr->n] = hb;
@@ -276,7 +275,7 @@ void cdist__cc_scan_kink(const cdist__cc_frame *f, cdist__cc_sink *k, double t, 
             if (side > 0 && jj == j0 - edge) {
                 cdist__cc_eval_lean(f, t, ct, st, &cur);
                 cdist__cc_emit(k, &prev, &cur);
-                kink_record(f, kr, t, hp, 0.0, &prev, &cur);
+                if (-hp > CD_CC_MIN_WIDTH && prev.rho + cur.rho > f->W1 * -hp) kink_record(kr, t, hp, 0.0, &prev, &cur);
                 prev = cur;
                 hp = 0.0;
             }
@@ -285,7 +284,7 @@ void cdist__cc_scan_kink(const cdist__cc_frame *f, cdist__cc_sink *k, double t, 
             cdist__cc_track(k, &cur, Fmax);
             if (!first) {
                 cdist__cc_emit(k, &prev, &cur);
-                kink_record(f, kr, t, hp, h, &prev, &cur);
+                if (h - hp > CD_CC_MIN_WIDTH && prev.rho + cur.rho > f->W1 * (h - hp)) kink_record(kr, t, hp, h, &prev, &cur);
             }
             first = 0;
             prev = cur;
