@@ -258,8 +258,7 @@ void cdist__cc_scan_kink(const cdist__cc_frame *f, cdist__cc_sink *k, double t, 
     double ct, st;
     sincos(t, &st, &ct);
     int first = 1;
-    /* The grid starts at the first offset within twice the core: beyond the core the
-     * subdivision covers F (overlapping it a little). */
+    /* The geometric offsets start at the first within twice the core. */
     int j0 = 0, j1 = NG;
     while (j0 < NG - 1 && ldexp(0.1, -j0) > 2 * core) j0++;
     double res = 4 * DBL_EPSILON * cdist__fmax(1.0, fabs(t));
