@@ -161,9 +161,96 @@ void cdist__cc_deferred_offer(const cdist__cc_frame *f, cdist__cc_sink *k, const
         if (df->d[i] - f->R * df->hw[i] <= dbest + tie) min_offer(f, k, df->t[i] - df->hw[i], df->t[i] + df->hw[i]);
 }
 
+/* Subdivision of an interval [a, b] of a near-crossing grid that no certificate covers: the
+ * grid's spacing only matches the kink's own features (width ~ the offset from the crossing);
+ * F may hold narrower ones farther out (A crossing B's rim while nearly in B's plane: dips of
+ * width ~ |h| / W1 at rho = s), two critical points between neighbours that one F' sign pair
+ * does not see. Subdivided like the scan's intervals: same certificates and leaves, the scan's
+ * pruning, a budget of evaluations, then sampled. */
+static void kink_cover(const cdist__cc_frame *f, cdist__cc_sink *k, cdist__cc_pt *a, cdist__cc_pt *b, double *Fmax, cdist__cc_deferred *df)
+{
+    enum { BUDGET = 48, STACK = 32 }; /* the scan's budget; widths 0.1 down to 2^-30 take 27 levels */
+    cdist__cc_pt pool[BUDGET];
+    cdist__cc_pt *st[STACK];
+    int sp = 0, evals = 0;
+    for (;;) {
+        double w = b->t - a->t;
+        double dth = cdist__fmin(sqrt(k->Fmin), k->dmin) * (1 + 8 * DBL_EPSILON) + CD_TIE_ULPS * DBL_EPSILON * f->L;
+        int pruned = k->prune && (0.5 * (a->d + b->d - f->R * w) > dth || cdist__cc_arc_bound(f, a, b) > dth * dth);
+        if (!pruned) {
+            int leaf = w <= CD_CC_MIN_WIDTH || 0.5 * (a->rho + b->rho - f->W1 * w) <= 0 || sp + 1 >= STACK ||
+                       cdist__cc_certified(f, a, b) || cdist__cc_monotone(f, a, b) || cdist__cc_convex(f, a, b);
+            if (leaf) {
+                cdist__cc_emit(k, a, b);
+            } else if (evals >= BUDGET) {
+                cdist__cc_emit_sampled(f, k, a, b, Fmax, df);
+            } else {
+                /* Midpoint from the endpoint cosines/sines: (a + b) / (2 cos(w / 2)). */
+                double sh, ch;
+                cdist__cc_small_sincos(0.5 * w, &sh, &ch);
+                double hc = 0.5 / ch;
+                cdist__cc_pt *mid = &pool[evals++];
+                cdist__cc_eval_lean(f, 0.5 * (a->t + b->t), (a->c + b->c) * hc, (a->s + b->s) * hc, mid);
+                cdist__cc_track(k, mid, Fmax);
+                st[sp++] = b;
+                b = mid;
+                continue;
+            }
+        }
+        if (sp == 0) break;
+        a = b;
+        b = st[--sp];
+    }
+}
+
+/* The recorded grid intervals (cdist__cc_kink_rec), after the scan: those the Lipschitz bound
+ * does not prune are evaluated again (the grid's formula, so the same values), and subdivided
+ * unless certified (their own F' sign pair was handed to the sink by the grid already). */
+void cdist__cc_kink_recheck(const cdist__cc_frame *f, cdist__cc_sink *k, const cdist__cc_kink_rec *kr, double *Fmax, cdist__cc_deferred *df)
+{
+    double tc = NAN, ct = 0, st = 0;
+    for (int i = 0; i < kr->n; i++) {
+        double w = kr->hb[i] - kr->ha[i];
+        double dth = cdist__fmin(sqrt(k->Fmin), k->dmin) * (1 + 8 * DBL_EPSILON) + CD_TIE_ULPS * DBL_EPSILON * f->L;
+        if (k->prune && 0.5 * (kr->da[i] + kr->db[i] - f->R * w) > dth) continue;
+        if (kr->tc[i] != tc) {
+            tc = kr->tc[i];
+            sincos(tc, &st, &ct);
+        }
+        cdist__cc_pt a, b;
+        double sh, ch;
+        cdist__cc_small_sincos(kr->ha[i], &sh, &ch);
+        cdist__cc_eval_lean(f, tc + kr->ha[i], ct * ch - st * sh, st * ch + ct * sh, &a);
+        cdist__cc_small_sincos(kr->hb[i], &sh, &ch);
+        cdist__cc_eval_lean(f, tc + kr->hb[i], ct * ch - st * sh, st * ch + ct * sh, &b);
+        if ((k->prune && cdist__cc_arc_bound(f, &a, &b) > dth * dth) || cdist__cc_certified(f, &a, &b) || cdist__cc_monotone(f, &a, &b) ||
+            cdist__cc_convex(f, &a, &b))
+            continue;
+        kink_cover(f, k, &a, &b, Fmax, df);
+    }
+}
+
+/* Records the grid interval [t + ha, t + hb] for cdist__cc_kink_recheck. The caller records
+ * only intervals wider than CD_CC_MIN_WIDTH and certified clear of the axis (rho is
+ * W1-Lipschitz; the F certificates need rho > 0), tested in its loop: most of the grid is
+ * narrower or on the axis. */
+static void kink_record(cdist__cc_kink_rec *kr, double t, double ha, double hb, const cdist__cc_pt *a, const cdist__cc_pt *b)
+{
+    if (kr->n >= CC_KINK_REC) return; /* cannot happen: 2 windows of at most 2 x 65 intervals */
+    kr->tc[kr->n] = t;
+    kr->ha[kr->n] = ha;
+    kr->hb[kr->n] = hb;
+    kr->da[kr->n] = a->d;
+    kr->db[kr->n++] = b->d;
+}
+
 /* The geometric grid around a near-crossing t: t +- 0.1 * 2^-j down to the angular resolution
- * at t (offsets below 2 ulps of t name no new angle), and t. */
-void cdist__cc_scan_kink(const cdist__cc_frame *f, cdist__cc_sink *k, double t, double core, double *Fmax, cdist__cc_deferred *df)
+ * at t (offsets below 2 ulps of t name no new angle), and t, closed by t +- 2 core (the edges of
+ * the window the scan leaves to the grid). Its intervals clear of the axis are recorded for
+ * cdist__cc_kink_recheck; nearer the axis the grid's F' sign pairs and the polish below are all
+ * there is (docs/circles.md). */
+void cdist__cc_scan_kink(const cdist__cc_frame *f, cdist__cc_sink *k, double t, double core, double *Fmax, cdist__cc_deferred *df,
+                         cdist__cc_kink_rec *kr)
 {
     k->sampled = 1;
     enum { NG = 64 }; /* 0.1 * 2^-63 is below any angular resolution */
@@ -171,27 +258,36 @@ void cdist__cc_scan_kink(const cdist__cc_frame *f, cdist__cc_sink *k, double t, 
     double ct, st;
     sincos(t, &st, &ct);
     int first = 1;
-    /* The grid starts at the first offset within twice the core: beyond the core the
-     * subdivision covers F (overlapping it a little). */
+    /* The geometric offsets start at the first within twice the core. */
     int j0 = 0, j1 = NG;
     while (j0 < NG - 1 && ldexp(0.1, -j0) > 2 * core) j0++;
     double res = 4 * DBL_EPSILON * cdist__fmax(1.0, fabs(t));
     while (j1 > j0 + 1 && ldexp(0.1, -(j1 - 1)) < res) j1--;
+    /* The window's edge, when the widest offset falls short of it (else no point: the scan
+     * only covers intervals reaching beyond 2 core). */
+    int edge = 2 * core > ldexp(0.1, -j0);
+    double hp = 0; /* offset of prev */
     for (int side = -1; side <= 1; side += 2)
-        for (int jj = j0; jj < j1; jj++) {
-            int j = side < 0 ? jj : j1 - 1 - (jj - j0); /* increasing angle */
-            double h = side * ldexp(0.1, -j), ch, sh;
-            if (side > 0 && jj == j0) {
+        for (int jj = j0 - edge; jj < j1; jj++) {
+            int j = side < 0 ? jj : j1 - 1 - (jj - j0) - edge; /* increasing angle */
+            double h = side * (j < j0 ? 2 * core : ldexp(0.1, -j)), ch, sh;
+            if (side > 0 && jj == j0 - edge) {
                 cdist__cc_eval_lean(f, t, ct, st, &cur);
                 cdist__cc_emit(k, &prev, &cur);
+                if (-hp > CD_CC_MIN_WIDTH && prev.rho + cur.rho > f->W1 * -hp) kink_record(kr, t, hp, 0.0, &prev, &cur);
                 prev = cur;
+                hp = 0.0;
             }
             cdist__cc_small_sincos(h, &sh, &ch);
             cdist__cc_eval_lean(f, t + h, ct * ch - st * sh, st * ch + ct * sh, &cur);
             cdist__cc_track(k, &cur, Fmax);
-            if (!first) cdist__cc_emit(k, &prev, &cur);
+            if (!first) {
+                cdist__cc_emit(k, &prev, &cur);
+                if (h - hp > CD_CC_MIN_WIDTH && prev.rho + cur.rho > f->W1 * (h - hp)) kink_record(kr, t, hp, h, &prev, &cur);
+            }
             first = 0;
             prev = cur;
+            hp = h;
         }
     /* Within about sqrt(eps) of the crossing, F' = 2 (rho - s) w.w'/rho + ... carries the
      * relative rounding eps L / rho of w.w' / rho and its sign is unreliable; F itself is

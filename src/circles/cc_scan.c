@@ -134,6 +134,8 @@ int cdist__cc_scan(const cdist__cc_frame *f, cdist__cc_sink *k, double *Fmax)
     double tk[2], core[2];
     cdist__cc_deferred deferred;
     deferred.n = 0;
+    cdist__cc_kink_rec krec;
+    krec.n = 0;
     double dbest = INFINITY; /* smallest sampled distance: the minimum is at most this */
     for (int i = 0; i < CC_INIT_INTERVALS; i++) {
         if (init[i].d < dbest) dbest = init[i].d;
@@ -151,7 +153,7 @@ int cdist__cc_scan(const cdist__cc_frame *f, cdist__cc_sink *k, double *Fmax)
          * is far above). */
         double dth = dbest * (1 + 8 * DBL_EPSILON) + CD_TIE_ULPS * DBL_EPSILON * f->L;
         if (k->prune && cdist__cc_window_hull_bound(f, tk[i], 2 * core[i]) > dth * dth) continue;
-        cdist__cc_scan_kink(f, k, tk[i], core[i], Fmax, &deferred);
+        cdist__cc_scan_kink(f, k, tk[i], core[i], Fmax, &deferred, &krec);
     }
     for (int i = 0; i < CC_INIT_INTERVALS; i++) {
         cdist__cc_pt *a = &init[i], *b = &init[i + 1];
@@ -201,6 +203,7 @@ int cdist__cc_scan(const cdist__cc_frame *f, cdist__cc_sink *k, double *Fmax)
             level = st[sp].level;
         }
     }
+    cdist__cc_kink_recheck(f, k, &krec, Fmax, &deferred);
     cdist__cc_deferred_offer(f, k, &deferred);
     return 0;
 }

@@ -307,23 +307,38 @@ typedef struct cdist__cc_deferred {
     double t[CC_DEFER], hw[CC_DEFER], d[CC_DEFER]; /* lowest grid point, half-width, its distance */
 } cdist__cc_deferred;
 
+/* The intervals of the near-crossing grids (cdist__cc_scan_kink) that are clear of B's axis and
+ * wider than CD_CC_MIN_WIDTH, where F may hold features narrower than the grid (rim crossings):
+ * certified, or subdivided, after the whole circle is scanned (cdist__cc_kink_recheck), when the
+ * attained minimum prunes most of them without an evaluation. Per interval: the window's centre,
+ * the ends' offsets from it and their distances. At most 2 windows of 2 x 64 + 4 intervals. */
+#define CC_KINK_REC 264
+typedef struct cdist__cc_kink_rec {
+    int n;
+    double tc[CC_KINK_REC], ha[CC_KINK_REC], hb[CC_KINK_REC], da[CC_KINK_REC], db[CC_KINK_REC];
+} cdist__cc_kink_rec;
+
 /* Certificates on [a, b] (cc_certify.c): at most one root of H; no critical point of F; F
  * convex. Each reads (and completes on demand) the detail of a and b. */
 int cdist__cc_certified(const cdist__cc_frame *f, cdist__cc_pt *a, cdist__cc_pt *b);
 int cdist__cc_monotone(const cdist__cc_frame *f, cdist__cc_pt *a, cdist__cc_pt *b);
 int cdist__cc_convex(const cdist__cc_frame *f, cdist__cc_pt *a, cdist__cc_pt *b);
-/* Lower bounds of F: on an interval of the subdivision at `level`, and on [t - h, t + h]. */
+/* Lower bounds of F: on an interval of the subdivision at `level`, on any arc [a, b] of width
+ * <= 0.2 rad, and on [t - h, t + h]. */
 double cdist__cc_hull_bound(const cdist__cc_frame *f, const cdist__cc_pt *a, const cdist__cc_pt *b, int level);
+double cdist__cc_arc_bound(const cdist__cc_frame *f, const cdist__cc_pt *a, const cdist__cc_pt *b);
 double cdist__cc_window_hull_bound(const cdist__cc_frame *f, double t, double h);
 /* A critical bracket [a, b] of F (a sign change of F'), refined and handed to the sink (cc_scan.c). */
 void cdist__cc_emit(cdist__cc_sink *k, const cdist__cc_pt *a, const cdist__cc_pt *b);
 /* The uncertifiable regions (cc_kink.c): near-crossings of B's axis (angles and core
  * half-widths), their geometric grids, an interval past its budget, the dense fallback, and the
- * deferred minimisations. */
+ * deferred minimisations and re-checks. */
 int cdist__cc_near_kinks(const cdist__cc_frame *f, const cdist__cc_pt *init, double *tk);
 double cdist__cc_kink_core(const cdist__cc_frame *f, double t);
 void cdist__cc_scan_kink(const cdist__cc_frame *f, cdist__cc_sink *k, double t, double core, double *Fmax,
-                         cdist__cc_deferred *df);
+                         cdist__cc_deferred *df, cdist__cc_kink_rec *kr);
+void cdist__cc_kink_recheck(const cdist__cc_frame *f, cdist__cc_sink *k, const cdist__cc_kink_rec *kr, double *Fmax,
+                            cdist__cc_deferred *df);
 void cdist__cc_emit_sampled(const cdist__cc_frame *f, cdist__cc_sink *k, const cdist__cc_pt *a, const cdist__cc_pt *b,
                             double *Fmax, cdist__cc_deferred *df);
 void cdist__cc_scan_dense(const cdist__cc_frame *f, cdist__cc_sink *k, double *Fmax);
