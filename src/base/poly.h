@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: MIT */
-/* The library's only contact with GSL's polynomial solver. GSL types stay inside poly.c. */
+/* Real polynomial roots (companion matrix and the library's own QR, src/base/poly.c). */
 #ifndef CDIST_POLY_H
 #define CDIST_POLY_H
 
@@ -19,7 +19,8 @@ void cdist__poly_ws_free(cdist__poly_ws *ws);
  * polish every root on their true function, so extra candidates are harmless). Each root is
  * polished by Newton on the polynomial.
  * Returns the number of roots, CD_POLY_ZERO when every coefficient is zero, or
- * CD_POLY_FAIL when a coefficient is not finite, degree is out of range, or GSL failed. */
+ * CD_POLY_FAIL when a coefficient is not finite, degree is out of range, or the QR iteration did
+ * not converge (a status, never an abort). */
 #define CD_POLY_ZERO (-1)
 #define CD_POLY_FAIL (-2)
 int cdist__poly_real_roots(cdist__poly_ws *ws, const double *coef, int degree, double imag_tol, double *roots);

@@ -5,8 +5,11 @@
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_poly.h>
 
+#include <string.h>
+
 #include "check.h"
 #include "base/poly.h"
+#include "circledist.h"
 
 static int handler_calls;
 static void counting_handler(const char *reason, const char *file, int line, int err)
@@ -27,10 +30,45 @@ static double rel_residual(const double *a, int n, double x)
     return fabs(p) / s;
 }
 
-int main(void)
+/* Inputs on which gsl_poly_complex_solve failed to converge (its error handler aborted the
+ * process): the octic of a circle-circle query, and the query itself under POLYNOMIAL. */
+static void qr_regressions(cdist__poly_ws *ws)
 {
+    double octic[9] = {-0.00055781227743234379, -8.7986697896803222e-06, 0.0051513604888113766,
+                       6.9469415138111138e-05,  -0.014592585164581878,   -0.00013712299003684793,
+                       0.01164450275251055,     5.748746786380097e-24,   8.7742798601605494e-46};
+    double roots[8];
+    int n = cdist__poly_real_roots(ws, octic, 8, 1e-6, roots);
+    CHECK(n >= 1, "octic of the circle-circle query solved (%d)", n);
+    for (int i = 0; i < n; i++) CHECK(rel_residual(octic, 8, roots[i]) < 1e-12, "octic root residual");
+    cdist_circle c0 = {{0, 0, 0}, {0, 0, 1}, 1};
+    cdist_circle c1 = {{1.1169167390820272, -1.9176268644667807, -7.9374918668142605e-11},
+                       {-2.5585250546652929e-11, 2.3743154905492666e-11, 1},
+                       2.4234011543210277};
+    cdist_query *q = cdist_query_new();
+    cdist_result rp, rr;
+    CHECK(q && cdist_query_set_method(q, CDIST_METHOD_POLYNOMIAL) == CDIST_OK, "polynomial method");
+    cdist_status sp = cdist_circle_circle(q, &c0, &c1, &rp);
+    CHECK(q && cdist_query_set_method(q, CDIST_METHOD_ROBUST) == CDIST_OK, "robust method");
+    cdist_status sr = cdist_circle_circle(q, &c0, &c1, &rr);
+    CHECK(sp == CDIST_OK && rp.method == CDIST_METHOD_POLYNOMIAL, "answered by POLYNOMIAL (%d, %d)", (int)sp, rp.method);
+    CHECK(sr == CDIST_OK && fabs(rp.distance - rr.distance) <= 1e-15, "distance %.17g vs robust %.17g", rp.distance, rr.distance);
+    cdist_query_free(q);
+}
+
+int main(int argc, char **argv)
+{
+    /* With "default-handler" GSL's handler stays the default (abort): a call to it crashes the
+     * test, whatever the checks. */
+    if (argc > 1 && strcmp(argv[1], "default-handler") == 0) {
+        cdist__poly_ws *ws = cdist__poly_ws_new();
+        qr_regressions(ws);
+        cdist__poly_ws_free(ws);
+        return check_summary("test_poly default-handler");
+    }
     gsl_set_error_handler(counting_handler);
     cdist__poly_ws *ws = cdist__poly_ws_new();
+    qr_regressions(ws);
     double roots[8];
     /* (x-1)(x-2)(x-3)(x+4) = x^4 - 2x^3 - 13x^2 + 38x - 24 */
     double q4[5] = {-24, 38, -13, -2, 1};
