@@ -177,7 +177,7 @@ typedef enum cdist_status {
  */
 typedef enum cdist_method {
     CDIST_METHOD_AUTO = 0,       /**< the most exact and fastest for each query (default) */
-    CDIST_METHOD_POLYNOMIAL = 1, /**< polynomial roots (GSL), polished on the true distance */
+    CDIST_METHOD_POLYNOMIAL = 1, /**< polynomial roots (companion-matrix QR), polished on the true distance */
     CDIST_METHOD_ROBUST = 2,     /**< root bounding and bisection on the true derivative */
     CDIST_METHOD_ITERATION = 3   /**< geometric iteration (circle-circle) */
 } cdist_method;
