@@ -95,8 +95,8 @@
 #define CD_LC_CANON_MAX 4.0
 /* Lines family scaling (src/lines/lines-priv.h): when the problem scale L is so far below the
  * coordinates that 2^-e times them would overflow, the exponent is raised so that the scaled
- * coordinates stay below 2^CD_LINES_ABS_MAX_EXP (an exponent, dimensionless): headroom of 2^23
- * for the sums taken on them (origin - centre, centre + offset), none of which is squared. */
+ * coordinates stay below 2^(CD_LINES_ABS_MAX_EXP + 1) (an exponent, dimensionless): headroom of
+ * 2^23 for the sums taken on them (origin - centre, centre + offset), none of which is squared. */
 #define CD_LINES_ABS_MAX_EXP 1000
 /* Coordinates are at most CD_MAX_ABS = 1e150 < 2^499, so 2^-e times them cannot overflow for
  * e >= CD_LINES_OVERFLOW_EXP (an exponent): the check above is needed only below it. */

@@ -167,7 +167,8 @@ void cdist__cc_deferred_offer(const cdist__cc_frame *f, cdist__cc_sink *k, const
  * width ~ |h| / W1 at rho = s), two critical points between neighbours that one F' sign pair
  * does not see. Subdivided like the scan's intervals: same certificates and leaves, the scan's
  * pruning, a budget of evaluations, then sampled. */
-static void kink_cover(const cdist__cc_frame *f, cdist__cc_sink *k, cdist__cc_pt *a, cdist__cc_pt *b, double *Fmax, cdist__cc_deferred *df)
+static void kink_cover(const cdist__cc_frame *f, cdist__cc_sink *k, cdist__cc_pt *a, cdist__cc_pt *b, double *Fmax,
+                       cdist__cc_deferred *df)
 {
     enum { BUDGET = 48, STACK = 32 }; /* the scan's budget; widths 0.1 down to 2^-30 take 27 levels */
     cdist__cc_pt pool[BUDGET];
@@ -206,7 +207,8 @@ static void kink_cover(const cdist__cc_frame *f, cdist__cc_sink *k, cdist__cc_pt
 /* The recorded grid intervals (cdist__cc_kink_rec), after the scan: those the Lipschitz bound
  * does not prune are evaluated again (the grid's formula, so the same values), and subdivided
  * unless certified (their own F' sign pair was handed to the sink by the grid already). */
-void cdist__cc_kink_recheck(const cdist__cc_frame *f, cdist__cc_sink *k, const cdist__cc_kink_rec *kr, double *Fmax, cdist__cc_deferred *df)
+void cdist__cc_kink_recheck(const cdist__cc_frame *f, cdist__cc_sink *k, const cdist__cc_kink_rec *kr, double *Fmax,
+                            cdist__cc_deferred *df)
 {
     double tc = NAN, ct = 0, st = 0;
     for (int i = 0; i < kr->n; i++) {
@@ -223,7 +225,8 @@ void cdist__cc_kink_recheck(const cdist__cc_frame *f, cdist__cc_sink *k, const c
         cdist__cc_eval_lean(f, tc + kr->ha[i], ct * ch - st * sh, st * ch + ct * sh, &a);
         cdist__cc_small_sincos(kr->hb[i], &sh, &ch);
         cdist__cc_eval_lean(f, tc + kr->hb[i], ct * ch - st * sh, st * ch + ct * sh, &b);
-        if ((k->prune && cdist__cc_arc_bound(f, &a, &b) > dth * dth) || cdist__cc_certified(f, &a, &b) || cdist__cc_monotone(f, &a, &b) ||
+        if ((k->prune && cdist__cc_arc_bound(f, &a, &b) > dth * dth) || cdist__cc_certified(f, &a, &b) ||
+            cdist__cc_monotone(f, &a, &b) ||
             cdist__cc_convex(f, &a, &b))
             continue;
         kink_cover(f, k, &a, &b, Fmax, df);
@@ -234,9 +237,10 @@ void cdist__cc_kink_recheck(const cdist__cc_frame *f, cdist__cc_sink *k, const c
  * only intervals wider than CD_CC_MIN_WIDTH and certified clear of the axis (rho is
  * W1-Lipschitz; the F certificates need rho > 0), tested in its loop: most of the grid is
  * narrower or on the axis. */
-static void kink_record(cdist__cc_kink_rec *kr, double t, double ha, double hb, const cdist__cc_pt *a, const cdist__cc_pt *b)
+static void kink_record(cdist__cc_kink_rec *kr, double t, double ha, double hb, const cdist__cc_pt *a,
+                        const cdist__cc_pt *b)
 {
-    if (kr->n >= CC_KINK_REC) return; /* cannot happen: 2 windows of at most 2 x 65 intervals */
+    if (kr->n >= CC_KINK_REC) return; /* cannot happen: at most 2 windows of 2 x 65 intervals */
     kr->tc[kr->n] = t;
     kr->ha[kr->n] = ha;
     kr->hb[kr->n] = hb;
@@ -249,8 +253,8 @@ static void kink_record(cdist__cc_kink_rec *kr, double t, double ha, double hb, 
  * the window the scan leaves to the grid). Its intervals clear of the axis are recorded for
  * cdist__cc_kink_recheck; nearer the axis the grid's F' sign pairs and the polish below are all
  * there is (docs/circles.md). */
-void cdist__cc_scan_kink(const cdist__cc_frame *f, cdist__cc_sink *k, double t, double core, double *Fmax, cdist__cc_deferred *df,
-                         cdist__cc_kink_rec *kr)
+void cdist__cc_scan_kink(const cdist__cc_frame *f, cdist__cc_sink *k, double t, double core, double *Fmax,
+                         cdist__cc_deferred *df, cdist__cc_kink_rec *kr)
 {
     k->sampled = 1;
     enum { NG = 64 }; /* 0.1 * 2^-63 is below any angular resolution */
@@ -283,7 +287,8 @@ void cdist__cc_scan_kink(const cdist__cc_frame *f, cdist__cc_sink *k, double t, 
             cdist__cc_track(k, &cur, Fmax);
             if (!first) {
                 cdist__cc_emit(k, &prev, &cur);
-                if (h - hp > CD_CC_MIN_WIDTH && prev.rho + cur.rho > f->W1 * (h - hp)) kink_record(kr, t, hp, h, &prev, &cur);
+                if (h - hp > CD_CC_MIN_WIDTH && prev.rho + cur.rho > f->W1 * (h - hp))
+                    kink_record(kr, t, hp, h, &prev, &cur);
             }
             first = 0;
             prev = cur;

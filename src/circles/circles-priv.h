@@ -311,7 +311,7 @@ typedef struct cdist__cc_deferred {
  * wider than CD_CC_MIN_WIDTH, where F may hold features narrower than the grid (rim crossings):
  * certified, or subdivided, after the whole circle is scanned (cdist__cc_kink_recheck), when the
  * attained minimum prunes most of them without an evaluation. Per interval: the window's centre,
- * the ends' offsets from it and their distances. At most 2 windows of 2 x 64 + 4 intervals. */
+ * the ends' offsets from it and their distances. At most 2 windows of 2 x 65 intervals (260). */
 #define CC_KINK_REC 264
 typedef struct cdist__cc_kink_rec {
     int n;

@@ -30,7 +30,7 @@ vec3 cdist__line_near_centre(vec3 origin, vec3 D, vec3 C, double tmin, double tm
  * max(r, |origin - C|, |p1 - C|), see cdist__scale_exponent. The cores take the origin and the
  * centre scaled as they are (their difference is taken exactly there), so a problem far smaller
  * than its coordinates (A / L beyond ~2^1023, A the largest |coordinate|) would have them
- * overflow to infinity: then the exponent is raised until 2^-e A is below 2^CD_LINES_ABS_MAX_EXP.
+ * overflow to infinity: then the exponent is raised so that 2^-e A is below 2^(CD_LINES_ABS_MAX_EXP + 1).
  * Only where the plain exponent overflows, so every other query is scaled exactly as before. */
 static inline int cdist__lines_scale_exponent(vec3 origin, const vec3 *p1, const cdist__circle *c)
 {

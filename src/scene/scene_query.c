@@ -1391,6 +1391,7 @@ static cdist_status closest_entry(cdist_query *q, cdist_scene *sa, cdist_scene *
         cdist__begin(q, NULL);
         size_t e = unanswered_first(&c.un, best_open_key, &c);
         if (c.un.oom) {
+            pair_error(out, SIZE_MAX, SIZE_MAX, CDIST_ERR_NO_MEMORY);
             st = cdist__fail(q, CDIST_ERR_NO_MEMORY, "scene %s: out of memory for the failing pairs", what);
         } else if (e != SIZE_MAX) {
             size_t i = (size_t)(c.un.e[e].key >> 32), j = (size_t)(c.un.e[e].key & 0xffffffffu);

@@ -164,8 +164,6 @@ def test_bad_input():
         cd.Scene([cd.Line((0, 0, 0), (1, 0, 0))])
 
 
-# The interrupt may land in ctypes' own trampoline, which reports it as unraisable.
-@pytest.mark.filterwarnings("ignore::pytest.PytestUnraisableExceptionWarning")
 def test_update_list_with_a_bad_array():
     """A list of arrays is one update: every valid entry of every array is applied, and the error
     names the array of the first invalid entry (as cdist_scene_update does for one array)."""
@@ -182,6 +180,8 @@ def test_update_list_with_a_bad_array():
         assert d[0] == -0.5
 
 
+# The interrupt may land in ctypes' own trampoline, which reports it as unraisable.
+@pytest.mark.filterwarnings("ignore::pytest.PytestUnraisableExceptionWarning")
 def test_interrupt():
     """Ctrl-C (a KeyboardInterrupt raised by a signal handler) stops a long pairs_within: the
     library returns to Python between blocks of answers."""

@@ -586,7 +586,7 @@ static void turning_short_normal(void)
 }
 
 /* delta = -(r_a + r_b), "the cores meet", for identical tori: the screen's cutoff is computed
- * from terms that cancel (it once stepped ulp by ulp up from about 1e-11, for minutes). */
+ * from terms that cancel, far below their ulp (stepping ulp by ulp from there does not end). */
 static void cores_meet(void)
 {
     static const double tube[] = {0.1, 0.25, 0.3, 0.5, 1e-9, 3e5};
