@@ -3,7 +3,6 @@
  * GSL error handler is never reached nor changed. The test is the host here, so it installs a
  * counting handler of its own: any call to it is a failure. */
 #include <gsl/gsl_errno.h>
-#include <gsl/gsl_poly.h>
 
 #include <string.h>
 

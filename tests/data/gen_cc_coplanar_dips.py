@@ -19,9 +19,12 @@ import sys
 
 from mpmath import mp, mpf, cos, sin, sqrt, pi
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "circles", "disk"))
+from disk_exact import golden  # noqa: E402  (the mpmath references' golden-section search)
+
 mp.dps = 60
 N = 4096          # samples per parameterisation
-GOLDEN_STEPS = 200  # 0.618^200 of the 2-sample bracket: far below the answer's resolution
+GOLDEN_SHRINK = mpf("0.618") ** 200  # of the 2-sample bracket: far below the answer's resolution
 
 
 def unit(a):
@@ -53,22 +56,9 @@ def min_over(Cp, Np, rp, Cf, Nf, rf):
     step = 2 * pi / N
     vals = [d(k * step) for k in range(N)]
     best = min(vals)
-    g = (sqrt(5) - 1) / 2
     for k in range(N):
         if vals[k] <= vals[k - 1] and vals[k] <= vals[(k + 1) % N]:
-            lo, hi = (k - 1) * step, (k + 1) * step
-            m1, m2 = hi - g * (hi - lo), lo + g * (hi - lo)
-            f1, f2 = d(m1), d(m2)
-            for _ in range(GOLDEN_STEPS):
-                if f1 < f2:
-                    hi, m2, f2 = m2, m1, f1
-                    m1 = hi - g * (hi - lo)
-                    f1 = d(m1)
-                else:
-                    lo, m1, f1 = m1, m2, f2
-                    m2 = lo + g * (hi - lo)
-                    f2 = d(m2)
-            best = min(best, f1, f2)
+            best = min(best, golden(d, (k - 1) * step, (k + 1) * step, GOLDEN_SHRINK * 2 * step))
     return best
 
 
