@@ -10,7 +10,7 @@
  *     made the scene's pair list).
  * Minimum of --reps runs; pairs are counted by a callback (the output array is the caller's
  * memory, not the scene's).
- *   bench_scene [--rings=N] [--moving=M] [--reps=R] [--steps=K] [--motion=S] [--threads=T] [--delta=D] [--wall] */
+ *   bench_scene [--rings=N] [--moving=M] [--reps=R] [--steps=K] [--motion=S] [--threads=T] [--delta=D] [--wall] [--trace] */
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -37,6 +37,7 @@ static double gauss(double s)
 /* Times are CPU seconds of the process (all threads): on a machine shared with other jobs the
  * wall clock measures the load, not the code. --wall switches to the wall clock. */
 static int use_wall;
+static int trace; /* --trace: the scene's counters after each moving step of the first repeat */
 static double now(void)
 {
     struct timespec t;
@@ -87,8 +88,9 @@ int main(int argc, char **argv)
         else if (!strncmp(argv[a], "--threads=", 10)) threads = atoi(argv[a] + 10);
         else if (!strncmp(argv[a], "--delta=", 8)) delta = atof(argv[a] + 8) * RADIUS;
         else if (!strcmp(argv[a], "--wall")) use_wall = 1;
+        else if (!strcmp(argv[a], "--trace")) trace = 1;
         else {
-            fprintf(stderr, "usage: %s [--rings=N] [--moving=M] [--reps=R] [--steps=K] [--motion=S] [--threads=T] [--delta=D] [--wall]\n", argv[0]);
+            fprintf(stderr, "usage: %s [--rings=N] [--moving=M] [--reps=R] [--steps=K] [--motion=S] [--threads=T] [--delta=D] [--wall] [--trace]\n", argv[0]);
             return 2;
         }
     }
@@ -153,6 +155,13 @@ int main(int argc, char **argv)
                 double a1[2] = {0, 0}, a2[2] = {0, 0};
                 if (cdist_scene_pairs_within_fn(q, s, delta, count_pairs, a1, NULL)) fail(q, "query after update");
                 double t2 = now();
+                if (trace && r == 0) {
+                    cdist_scene_stats ts;
+                    cdist_scene_get_stats(s, &ts);
+                    printf("  step %d: box pairs %zu, past the bounds %zu, exact queries %zu, reported %zu, "
+                           "update + query %.4f s\n", step + 1, ts.box_pairs, ts.screened, ts.candidates, ts.reported,
+                           t2 - t0);
+                }
                 cdist_scene *s2 = cdist_scene_new();
                 cdist_scene_add(q, s2, CDIST_SCENE_TORUS, moving, m2, sizeof *m2, NULL, NULL);
                 if (cdist_scene_rebuild(q, s2)) fail(q, "rebuild");

@@ -95,8 +95,7 @@ struct cdist_scene {
     double *moved;           /* by id: how far any point of the solid may have moved since the
                               * list's poses (NULL until the first update) */
     double step_moved;       /* the largest motion of an object since the last query */
-    double step_sum;         /* the sum of the motions since the last query ... */
-    size_t step_count;       /* ... and their number */
+    size_t step_count;       /* objects moved since the last query */
     int list_ok;             /* cand holds the pair list: every pair whose boxes were within
                               * list_reach at its poses, sorted */
     double list_reach;
@@ -108,10 +107,10 @@ struct cdist_scene {
     size_t moved_queries;    /* pairs_within queries that followed updates */
 };
 
-/* The pair list's skin: the list made after an update reaches this many times the mean
- * motion of an object in that update beyond delta (at most the mean box extent of an object),
- * so that several more similar updates keep it valid (docs/scene.md). */
-#define CD_SCENE_SKIN_STEPS 16.0
+/* The pair list's skin: the list made after an update reaches this many times twice the
+ * largest motion of an object in that update beyond delta (at most the mean box extent of an
+ * object), so that as many more similar updates keep it valid (docs/scene.md). */
+#define CD_SCENE_SKIN_STEPS 6.0
 
 /* Tolerances of the scene's bounds (src/base/tolerances.h has the reasons). */
 

@@ -803,7 +803,6 @@ static cdist_status note_motion(cdist_query *q, cdist_scene *s, size_t id, const
     double m = cdist__scene_motion(t, cdist__scene_arc(s, id), &o->o, &o->arc);
     s->moved[id] += m;
     if (!(m <= s->step_moved)) s->step_moved = m;
-    s->step_sum += m;
     s->step_count++;
     return CDIST_OK;
 }

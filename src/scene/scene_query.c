@@ -790,10 +790,30 @@ static int list_usable(const cdist_scene *s, double delta)
     return fmax(delta, 0.0) + (m1 + m2) <= s->list_reach;
 }
 
+/* The bounds of the n sorted keys from the list being replaced (old keys ok[0..on), bounds
+ * olo, ohi, known with the objects' motions moved[]) as they stand now, into lo, hi: a pair
+ * distance moves at most by its objects' motions; keys new to the list know nothing. */
+static void list_carry(const cdist_scene *s, const uint64_t *ok, size_t on, const float *olo, const float *ohi,
+                       const uint64_t *key, size_t n, float *lo, float *hi)
+{
+    size_t o = 0;
+    for (size_t k = 0; k < n; k++) {
+        while (o < on && ok[o] < key[k]) o++;
+        lo[k] = -INFINITY, hi[k] = INFINITY;
+        if (o == on || ok[o] != key[k]) continue;
+        double mm = s->moved[key[k] >> 32] + s->moved[key[k] & 0xffffffffu];
+        double l = (double)olo[o] - mm, h = (double)ohi[o] + mm;
+        if (l == l) lo[k] = cdist__float_down(l); /* a NaN would clamp to the largest float */
+        if (h == h) hi[k] = cdist__float_up(h);
+    }
+}
+
 /* Make the pair list at the current poses: every pair whose boxes are within the reach of
- * delta plus a skin for the coming motions (CD_SCENE_SKIN_STEPS times the mean motion of an
- * object since the last query, at most the mean box extent, so that a few far moves do not
- * make the list quadratic), sorted, with no bounds known yet; moved[] restarts at 0. */
+ * delta plus a skin for the coming motions (CD_SCENE_SKIN_STEPS times twice the largest motion
+ * of an object since the last query, so that as many updates like it keep the list valid; at
+ * most the mean box extent, so that a few far moves do not make the list quadratic), sorted;
+ * the entries of the list it replaces keep their bounds (list_carry), the others know none;
+ * moved[] restarts at 0. */
 static cdist_status list_make(cdist_query *q, cdist_scene *s, double delta, pool *p)
 {
     double extent = 0.0;
@@ -804,21 +824,26 @@ static cdist_status list_make(cdist_query *q, cdist_scene *s, double delta, pool
         extent += ((x->hi[0] - x->lo[0]) + (x->hi[1] - x->lo[1]) + (x->hi[2] - x->lo[2])) / 3.0;
         boxes++;
     }
-    double mean = s->step_count ? s->step_sum / (double)s->step_count : 0.0;
-    double skin = fmin(CD_SCENE_SKIN_STEPS * mean, boxes ? extent / (double)boxes : 0.0);
+    double skin = fmin(CD_SCENE_SKIN_STEPS * 2.0 * s->step_moved, boxes ? extent / (double)boxes : 0.0);
     double reach = fmax(delta, 0.0) + skin;
-    broad b = {s, s, 1, cdist__box_lim(reach), delta, 0, s->cand, 0, s->cand_cap, 0, 0, NULL, 1, 0};
+    int carry = s->list_ok && !s->dirty; /* cand holds the old list's keys */
+    uint64_t *old_key = s->cand;
+    size_t old_n = carry ? s->list_n : 0;
+    s->cand = NULL, s->cand_cap = 0;
+    broad b = {s, s, 1, cdist__box_lim(reach), delta, 0, NULL, 0, 0, 0, 0, NULL, 1, 0};
     cdist_status st = broad_run(q, &b, p, "pairs_within");
-    if (st || (st = sort_keys(q, s, s->cand, b.n))) return st;
-    if (s->list_cap < b.n) {
-        float *lo = cdist__big_realloc(s->list_lo, b.n * sizeof *lo);
-        if (lo) s->list_lo = lo;
-        float *hi = lo ? cdist__big_realloc(s->list_hi, b.n * sizeof *hi) : NULL;
-        if (hi) s->list_hi = hi;
-        if (!lo || !hi) return cdist__fail(q, CDIST_ERR_NO_MEMORY, "scene pairs_within: out of memory for the pair list");
-        s->list_cap = b.n;
+    if (!st) st = sort_keys(q, s, s->cand, b.n);
+    size_t cap = b.n > 0 ? b.n : 1;
+    float *lo = st ? NULL : cdist__big_malloc(cap * sizeof *lo), *hi = lo ? cdist__big_malloc(cap * sizeof *hi) : NULL;
+    if (!st && !hi) st = cdist__fail(q, CDIST_ERR_NO_MEMORY, "scene pairs_within: out of memory for the pair list");
+    if (!st) list_carry(s, old_key, old_n, s->list_lo, s->list_hi, s->cand, b.n, lo, hi);
+    free(old_key);
+    if (st) {
+        free(lo);
+        return st;
     }
-    for (size_t k = 0; k < b.n; k++) s->list_lo[k] = -INFINITY, s->list_hi[k] = INFINITY;
+    free(s->list_lo), free(s->list_hi);
+    s->list_lo = lo, s->list_hi = hi, s->list_cap = b.n;
     memset(s->moved, 0, s->n * sizeof *s->moved);
     s->list_n = b.n;
     s->list_reach = reach;
@@ -867,7 +892,7 @@ static cdist_status pairs_run(cdist_query *q, cdist_scene *sa, cdist_scene *sb, 
         st = run_narrow(q, sa, w, &p);
     }
     pool_stop(&p);
-    sa->step_moved = sa->step_sum = 0.0;
+    sa->step_moved = 0.0;
     sa->step_count = 0;
     if (st) {
         sa->list_ok = 0;
