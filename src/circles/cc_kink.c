@@ -211,9 +211,10 @@ static void kink_cover(const cdist__cc_frame *f, cdist__cc_sink *k, cdist__cc_pt
  * is an entry of the answer (critical and minima modes), the sink skips the one bracket of the
  * grid's direction that holds the grid's refined root: every root is listed once, the roots the
  * grid could not see still are, and the grid's refinement stays the one listed. The robust mode's
- * collector keeps the closer of two offers of one minimum, so there the second refinement only
- * adds accuracy (in a rim-crossing dip, narrower than the features refine() sizes its stopping
- * rule for, the two can differ in the last bits). */
+ * collector merges two offers of one minimum (it keeps the closer), so there a skip would save a
+ * refinement but move answers in their last bits: in a rim-crossing dip, narrower than the
+ * features refine() sizes its stopping rule for, the two refinements land ulps apart and either
+ * may be the closer. Not skipped there. */
 void cdist__cc_kink_recheck(const cdist__cc_frame *f, cdist__cc_sink *k, const cdist__cc_kink_rec *kr, double *Fmax,
                             cdist__cc_deferred *df)
 {
