@@ -206,7 +206,15 @@ static void kink_cover(const cdist__cc_frame *f, cdist__cc_sink *k, cdist__cc_pt
 
 /* The recorded grid intervals (cdist__cc_kink_rec), after the scan: those the Lipschitz bound
  * does not prune are evaluated again (the grid's formula, so the same values), and subdivided
- * unless certified (their own F' sign pair was handed to the sink by the grid already). */
+ * unless certified. Their own F' sign pair was handed to the sink by the grid already, and the
+ * subdivision's leaves, which chain from a to b, bracket that root again. Where each emitted root
+ * is an entry of the answer (critical and minima modes), the sink skips the one bracket of the
+ * grid's direction that holds the grid's refined root: every root is listed once, the roots the
+ * grid could not see still are, and the grid's refinement stays the one listed. The robust mode's
+ * collector merges two offers of one minimum (it keeps the closer), so there a skip would save a
+ * refinement but move answers in their last bits: in a rim-crossing dip, narrower than the
+ * features refine() sizes its stopping rule for, the two refinements land ulps apart and either
+ * may be the closer. Not skipped there. */
 void cdist__cc_kink_recheck(const cdist__cc_frame *f, cdist__cc_sink *k, const cdist__cc_kink_rec *kr, double *Fmax,
                             cdist__cc_deferred *df)
 {
@@ -229,23 +237,29 @@ void cdist__cc_kink_recheck(const cdist__cc_frame *f, cdist__cc_sink *k, const c
             cdist__cc_monotone(f, &a, &b) ||
             cdist__cc_convex(f, &a, &b))
             continue;
+        k->skip_dir = k->best ? 0 : kr->dir[i];
+        k->skip_t = kr->root[i];
         kink_cover(f, k, &a, &b, Fmax, df);
+        k->skip_dir = 0;
     }
 }
 
-/* Records the grid interval [t + ha, t + hb] for cdist__cc_kink_recheck. The caller records
- * only intervals wider than CD_CC_MIN_WIDTH and certified clear of the axis (rho is
- * W1-Lipschitz; the F certificates need rho > 0), tested in its loop: most of the grid is
- * narrower or on the axis. */
-static void kink_record(cdist__cc_kink_rec *kr, double t, double ha, double hb, const cdist__cc_pt *a,
-                        const cdist__cc_pt *b)
+/* The grid interval [a, b] = [t + ha, t + hb]: its F' sign pair emitted, and the interval recorded
+ * for cdist__cc_kink_recheck when wider than CD_CC_MIN_WIDTH and certified clear of the axis (rho
+ * is W1-Lipschitz; the F certificates need rho > 0): most of the grid is narrower or on the axis. */
+static void kink_interval(cdist__cc_sink *k, cdist__cc_kink_rec *kr, double t, double ha, double hb,
+                          const cdist__cc_pt *a, const cdist__cc_pt *b)
 {
+    double root = cdist__cc_emit(k, a, b);
+    if (!(hb - ha > CD_CC_MIN_WIDTH && a->rho + b->rho > k->f->W1 * (hb - ha))) return;
     if (kr->n >= CC_KINK_REC) return; /* cannot happen: at most 2 windows of 2 x 65 intervals */
     kr->tc[kr->n] = t;
     kr->ha[kr->n] = ha;
     kr->hb[kr->n] = hb;
     kr->da[kr->n] = a->d;
-    kr->db[kr->n++] = b->d;
+    kr->db[kr->n] = b->d;
+    kr->root[kr->n] = root;
+    kr->dir[kr->n++] = root == root ? (a->F1 < 0 ? 1 : -1) : 0;
 }
 
 /* The geometric grid around a near-crossing t: t +- 0.1 * 2^-j down to the angular resolution
@@ -277,19 +291,14 @@ void cdist__cc_scan_kink(const cdist__cc_frame *f, cdist__cc_sink *k, double t, 
             double h = side * (j < j0 ? 2 * core : ldexp(0.1, -j)), ch, sh;
             if (side > 0 && jj == j0 - edge) {
                 cdist__cc_eval_lean(f, t, ct, st, &cur);
-                cdist__cc_emit(k, &prev, &cur);
-                if (-hp > CD_CC_MIN_WIDTH && prev.rho + cur.rho > f->W1 * -hp) kink_record(kr, t, hp, 0.0, &prev, &cur);
+                kink_interval(k, kr, t, hp, 0.0, &prev, &cur);
                 prev = cur;
                 hp = 0.0;
             }
             cdist__cc_small_sincos(h, &sh, &ch);
             cdist__cc_eval_lean(f, t + h, ct * ch - st * sh, st * ch + ct * sh, &cur);
             cdist__cc_track(k, &cur, Fmax);
-            if (!first) {
-                cdist__cc_emit(k, &prev, &cur);
-                if (h - hp > CD_CC_MIN_WIDTH && prev.rho + cur.rho > f->W1 * (h - hp))
-                    kink_record(kr, t, hp, h, &prev, &cur);
-            }
+            if (!first) kink_interval(k, kr, t, hp, h, &prev, &cur);
             first = 0;
             prev = cur;
             hp = h;

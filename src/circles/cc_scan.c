@@ -61,12 +61,16 @@ static double refine(const cdist__cc_frame *f, const cdist__cc_pt *a, const cdis
     return x;
 }
 
-void cdist__cc_emit(cdist__cc_sink *k, const cdist__cc_pt *a, const cdist__cc_pt *b)
+double cdist__cc_emit(cdist__cc_sink *k, const cdist__cc_pt *a, const cdist__cc_pt *b)
 {
     int dir = 0;
     if (a->F1 < 0 && b->F1 >= 0) dir = 1;
     else if (k->want_max && a->F1 > 0 && b->F1 <= 0) dir = -1;
-    if (!dir) return;
+    if (!dir) return NAN;
+    if (dir == k->skip_dir && a->t <= k->skip_t && k->skip_t <= b->t) {
+        k->skip_dir = 0;
+        return NAN;
+    }
     double t = refine(k->f, a, b, dir);
     if (!k->best) {
         double ta = cdist__cc_param(t);
@@ -81,6 +85,7 @@ void cdist__cc_emit(cdist__cc_sink *k, const cdist__cc_pt *a, const cdist__cc_pt
     } else {
         cdist__cc_pair_at(k->f, t, k);
     }
+    return t;
 }
 
 /* Walks [-pi, pi) (see the header comment) and hands every critical bracket to the sink.

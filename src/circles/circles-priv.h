@@ -55,6 +55,8 @@ typedef struct cdist__cc_sink {
     double dmin;  /* smallest refined distance */
     double rho_min; /* axis distance of the point giving dmin */
     int sampled;    /* some region was only sampled (emit_sampled, scan_kink, scan_dense) */
+    int skip_dir;   /* 1 or -1: the next bracket of this direction holding skip_t is not emitted (0: none) */
+    double skip_t;  /* (cdist__cc_kink_recheck: the root the grid already emitted) */
 } cdist__cc_sink;
 
 static inline double cdist__cc_dot3(vec3 a, vec3 b) { return cdist__ring_dot(a, b); }
@@ -311,11 +313,13 @@ typedef struct cdist__cc_deferred {
  * wider than CD_CC_MIN_WIDTH, where F may hold features narrower than the grid (rim crossings):
  * certified, or subdivided, after the whole circle is scanned (cdist__cc_kink_recheck), when the
  * attained minimum prunes most of them without an evaluation. Per interval: the window's centre,
- * the ends' offsets from it and their distances. At most 2 windows of 2 x 65 intervals (260). */
+ * the ends' offsets from it and their distances, and the root the grid emitted for its own F' sign
+ * pair (direction dir, 0: none). At most 2 windows of 2 x 65 intervals (260). */
 #define CC_KINK_REC 264
 typedef struct cdist__cc_kink_rec {
     int n;
-    double tc[CC_KINK_REC], ha[CC_KINK_REC], hb[CC_KINK_REC], da[CC_KINK_REC], db[CC_KINK_REC];
+    double tc[CC_KINK_REC], ha[CC_KINK_REC], hb[CC_KINK_REC], da[CC_KINK_REC], db[CC_KINK_REC], root[CC_KINK_REC];
+    signed char dir[CC_KINK_REC];
 } cdist__cc_kink_rec;
 
 /* Certificates on [a, b] (cc_certify.c): at most one root of H; no critical point of F; F
@@ -328,8 +332,9 @@ int cdist__cc_convex(const cdist__cc_frame *f, cdist__cc_pt *a, cdist__cc_pt *b)
 double cdist__cc_hull_bound(const cdist__cc_frame *f, const cdist__cc_pt *a, const cdist__cc_pt *b, int level);
 double cdist__cc_arc_bound(const cdist__cc_frame *f, const cdist__cc_pt *a, const cdist__cc_pt *b);
 double cdist__cc_window_hull_bound(const cdist__cc_frame *f, double t, double h);
-/* A critical bracket [a, b] of F (a sign change of F'), refined and handed to the sink (cc_scan.c). */
-void cdist__cc_emit(cdist__cc_sink *k, const cdist__cc_pt *a, const cdist__cc_pt *b);
+/* A critical bracket [a, b] of F (a sign change of F'), refined and handed to the sink (cc_scan.c).
+ * Returns the refined angle, NAN when [a, b] is no bracket or the sink skips it (skip_dir). */
+double cdist__cc_emit(cdist__cc_sink *k, const cdist__cc_pt *a, const cdist__cc_pt *b);
 /* The uncertifiable regions (cc_kink.c): near-crossings of B's axis (angles and core
  * half-widths), their geometric grids, an interval past its budget, the dense fallback, and the
  * deferred minimisations and re-checks. */
