@@ -692,7 +692,10 @@ CDIST_API cdist_status cdist_sphere_disk(cdist_query *q, const cdist_sphere *a, 
  * subdifferential). At a distance above 0 the flag is set for two closest pairs (the gradient
  * is that of pairs[0], the one-sided derivative along directions that keep it closest), an
  * equidistant result (the gradient of the representative pair: along any direction it lies
- * between the two one-sided derivatives) and an arc of radius 0 (a derivative from the right). At a disk's interior closest point the direction w is taken as +-N exactly (the
+ * between the two one-sided derivatives), an arc of radius 0 (a derivative from the right) and
+ * a segment or capsule core of length 0 (p0 == p1 exactly: the gradient of the pair's s, one
+ * of the one-sided derivatives; moving p0 or p1 alone along w does not change the distance).
+ * At a disk's interior closest point the direction w is taken as +-N exactly (the
  * optimality condition) rather than from the rounded points. A circle or disk of radius 0 is
  * differentiated from the right (r -> 0+). Accuracy: the gradient is that of the computed
  * closest pair; at relative distance delta from a non-differentiable configuration (e.g. a
