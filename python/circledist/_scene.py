@@ -1,6 +1,7 @@
 # SPDX-License-Identifier: MIT
 """Scenes: many objects at once (cdist_scene; internal module, see circledist.Scene)."""
 import ctypes
+import signal
 import threading
 
 import numpy as np
@@ -444,8 +445,18 @@ class Scene:
         """
         chunks = []
         state = {"error": None}
+        # Ctrl-C during the C call: a temporary SIGINT handler only records it, and take() then
+        # stops the query. (Python runs a signal handler when the callback is entered, before
+        # its try: the default handler's KeyboardInterrupt would escape into ctypes, which
+        # prints it as unraisable.)
+        on_main = threading.current_thread() is threading.main_thread()
+        old_handler = signal.getsignal(signal.SIGINT) if on_main else None
+        catch = callable(old_handler)
+        interrupted = []
 
         def take(user, pairs, n):
+            if interrupted:
+                return 1
             try:
                 a = np.empty(n, SCENE_PAIR_DTYPE)
                 _c.memmove(a.ctypes.data, pairs, n * SCENE_PAIR_DTYPE.itemsize)
@@ -457,7 +468,17 @@ class Scene:
 
         fn = PAIR_FN(take)
         with self._query._lock, self._lock:
-            st = _within_fn(self._query._handle(), self._handle(), float(delta), fn, None, None)
+            if catch:
+                signal.signal(signal.SIGINT, lambda signum, frame: interrupted.append(signum))
+            try:
+                st = _within_fn(self._query._handle(), self._handle(), float(delta), fn, None, None)
+            finally:
+                if catch:
+                    signal.signal(signal.SIGINT, old_handler)
+            if interrupted:
+                if old_handler is signal.default_int_handler:
+                    raise KeyboardInterrupt
+                old_handler(signal.SIGINT, None)
             if state["error"] is not None:
                 raise state["error"]
             if st == _CALLBACK_FAILED:  # an interrupt arrived where take() could not catch it
