@@ -202,7 +202,8 @@ class Scene:
     Ids are the objects' positions in the order given (later add() calls continue the
     numbering). Distances are the signed distances of the swept queries (core distance minus
     the radii), bit for bit those of the pair queries. Long queries return to Python between
-    blocks of answers, so Ctrl-C interrupts them (KeyboardInterrupt).
+    blocks of answers, so Ctrl-C interrupts them (KeyboardInterrupt); not during the broad
+    phase before the first block, which lists every candidate pair (docs/scene.md).
 
     Parameters
     ----------
