@@ -1212,7 +1212,9 @@ CDIST_API cdist_status cdist_batch_grad(cdist_query *q, cdist_kind kind, size_t 
  *  non-zero to stop. */
 typedef int (*cdist_progress_fn)(void *user, size_t done, size_t total);
 
-/** Asks batch calls on this handle to report progress: fn(user, done, total) is called after about
+/** Asks batch calls on this handle (cdist_batch(), cdist_batch_distance(), cdist_batch_contact(),
+ *  cdist_batch_grad(); not the link and time-of-impact batches nor the scene queries, which
+ *  neither report nor stop) to report progress: fn(user, done, total) is called after about
  *  every `every` answered entries (never more often than once per `every` entries, rounded up to a
  *  multiple of 64; `done` counts the entries of every thread, and increases from call to call) and,
  *  unless stopped, once at the end (done == total). It is called from the thread that called the
