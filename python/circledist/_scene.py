@@ -201,9 +201,10 @@ class Scene:
 
     Ids are the objects' positions in the order given (later add() calls continue the
     numbering). Distances are the signed distances of the swept queries (core distance minus
-    the radii), bit for bit those of the pair queries. Long queries return to Python between
-    blocks of answers, so Ctrl-C interrupts them (KeyboardInterrupt); not during the broad
-    phase before the first block, which lists every candidate pair (docs/scene.md).
+    the radii), bit for bit those of the pair queries. pairs_within returns to Python between
+    blocks of answers, so Ctrl-C interrupts it (KeyboardInterrupt), though not during the broad
+    phase before the first block, which lists every candidate pair (docs/scene.md); the other
+    queries (pairs_between, within, linked_pairs, time_of_impact, ...) run to their end.
 
     Parameters
     ----------
