@@ -915,7 +915,8 @@ CDIST_API cdist_status cdist_link_tori_batch(cdist_query *q, size_t n, const voi
  * Guarantee: on ::CDIST_TOI_HIT, d(s) > target for every s in [0, t) and
  * d(t) <= target + tolerance. On ::CDIST_TOI_NONE, d(s) > target on all of [0, 1]. On
  * ::CDIST_TOI_ITERATION_LIMIT, d(s) > target on [0, t] and the search stopped. slack covers
- * the rounding of poses and distances: 64 eps times the largest coordinate of the motion. The
+ * the rounding of poses and distances: 64 eps times the largest coordinate of the motion, or
+ * times r_a + r_b + |target| (the swept radii) when that is larger. The
  * tolerance used is max(tolerance, 2 slack). The distance tolerance does not bound the time: a
  * grazing approach (d' near 0) can sit within the tolerance for a long time. Each step costs one
  * contact query. The count is about log(gap / tolerance) / (|d'| / V) near a transversal contact,
