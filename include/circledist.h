@@ -692,7 +692,10 @@ CDIST_API cdist_status cdist_sphere_disk(cdist_query *q, const cdist_sphere *a, 
  * subdifferential). At a distance above 0 the flag is set for two closest pairs (the gradient
  * is that of pairs[0], the one-sided derivative along directions that keep it closest), an
  * equidistant result (the gradient of the representative pair: along any direction it lies
- * between the two one-sided derivatives) and an arc of radius 0 (a derivative from the right). At a disk's interior closest point the direction w is taken as +-N exactly (the
+ * between the two one-sided derivatives), an arc of radius 0 (a derivative from the right) and
+ * a segment or capsule core of length 0 (p0 == p1 exactly: the gradient of the pair's s, one
+ * of the one-sided derivatives; moving p0 or p1 alone along w does not change the distance).
+ * At a disk's interior closest point the direction w is taken as +-N exactly (the
  * optimality condition) rather than from the rounded points. A circle or disk of radius 0 is
  * differentiated from the right (r -> 0+). Accuracy: the gradient is that of the computed
  * closest pair; at relative distance delta from a non-differentiable configuration (e.g. a
@@ -912,7 +915,8 @@ CDIST_API cdist_status cdist_link_tori_batch(cdist_query *q, size_t n, const voi
  * Guarantee: on ::CDIST_TOI_HIT, d(s) > target for every s in [0, t) and
  * d(t) <= target + tolerance. On ::CDIST_TOI_NONE, d(s) > target on all of [0, 1]. On
  * ::CDIST_TOI_ITERATION_LIMIT, d(s) > target on [0, t] and the search stopped. slack covers
- * the rounding of poses and distances: 64 eps times the largest coordinate of the motion. The
+ * the rounding of poses and distances: 64 eps times the largest coordinate of the motion, or
+ * times r_a + r_b + |target| (the swept radii) when that is larger. The
  * tolerance used is max(tolerance, 2 slack). The distance tolerance does not bound the time: a
  * grazing approach (d' near 0) can sit within the tolerance for a long time. Each step costs one
  * contact query. The count is about log(gap / tolerance) / (|d'| / V) near a transversal contact,
@@ -1209,7 +1213,9 @@ CDIST_API cdist_status cdist_batch_grad(cdist_query *q, cdist_kind kind, size_t 
  *  non-zero to stop. */
 typedef int (*cdist_progress_fn)(void *user, size_t done, size_t total);
 
-/** Asks batch calls on this handle to report progress: fn(user, done, total) is called after about
+/** Asks batch calls on this handle (cdist_batch(), cdist_batch_distance(), cdist_batch_contact(),
+ *  cdist_batch_grad(); not the link and time-of-impact batches nor the scene queries, which
+ *  neither report nor stop) to report progress: fn(user, done, total) is called after about
  *  every `every` answered entries (never more often than once per `every` entries, rounded up to a
  *  multiple of 64; `done` counts the entries of every thread, and increases from call to call) and,
  *  unless stopped, once at the end (done == total). It is called from the thread that called the

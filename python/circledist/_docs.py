@@ -52,7 +52,8 @@ _PROGRESS = """
 progress : bool or callable, optional
     True for a progress bar (tqdm if installed, else a line on stderr), or a callable
     progress(done, total) returning True to stop: the entries not answered get status
-    CDIST_ERR_CANCELLED. Long batches honour Ctrl-C (KeyboardInterrupt well within 0.2 s)."""
+    CDIST_ERR_CANCELLED. Long batches honour Ctrl-C (KeyboardInterrupt well within 0.2 s,
+    plus the time to write the error state of the entries not answered)."""
 _QUERY = """
 query : Query, optional
     The handle to use (default: this thread's default_query())."""

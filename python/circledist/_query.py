@@ -582,7 +582,8 @@ class Grad:
         Bits of cdist_grad_flag.
     differentiable : bool
         False when CDIST_GRAD_NOT_DIFFERENTIABLE is set: at a (core) distance above 0, two
-        closest pairs or an equidistant result (the gradient of pairs[0] is given); at (core)
+        closest pairs, an equidistant result, an arc of radius 0 or a segment (capsule core)
+        of length 0 (the gradient of pairs[0] is given); at (core)
         distance 0 (the gradient is 0 there, swept radii -1) unless the distance stays 0 nearby
         (a stable crossing of a disk). The rules are in circledist.h ("gradients").
 

@@ -1,6 +1,7 @@
 # SPDX-License-Identifier: MIT
 """Scenes: many objects at once (cdist_scene; internal module, see circledist.Scene)."""
 import ctypes
+import signal
 import threading
 
 import numpy as np
@@ -200,8 +201,10 @@ class Scene:
 
     Ids are the objects' positions in the order given (later add() calls continue the
     numbering). Distances are the signed distances of the swept queries (core distance minus
-    the radii), bit for bit those of the pair queries. Long queries return to Python between
-    blocks of answers, so Ctrl-C interrupts them (KeyboardInterrupt).
+    the radii), bit for bit those of the pair queries. pairs_within returns to Python between
+    blocks of answers, so Ctrl-C interrupts it (KeyboardInterrupt), though not during the broad
+    phase before the first block, which lists every candidate pair (docs/scene.md); the other
+    queries (pairs_between, within, linked_pairs, time_of_impact, ...) run to their end.
 
     Parameters
     ----------
@@ -444,8 +447,18 @@ class Scene:
         """
         chunks = []
         state = {"error": None}
+        # Ctrl-C during the C call: a temporary SIGINT handler only records it, and take() then
+        # stops the query. (Python runs a signal handler when the callback is entered, before
+        # its try: the default handler's KeyboardInterrupt would escape into ctypes, which
+        # prints it as unraisable.)
+        on_main = threading.current_thread() is threading.main_thread()
+        old_handler = signal.getsignal(signal.SIGINT) if on_main else None
+        catch = callable(old_handler)
+        interrupted = []
 
         def take(user, pairs, n):
+            if interrupted:
+                return 1
             try:
                 a = np.empty(n, SCENE_PAIR_DTYPE)
                 _c.memmove(a.ctypes.data, pairs, n * SCENE_PAIR_DTYPE.itemsize)
@@ -457,7 +470,17 @@ class Scene:
 
         fn = PAIR_FN(take)
         with self._query._lock, self._lock:
-            st = _within_fn(self._query._handle(), self._handle(), float(delta), fn, None, None)
+            if catch:
+                signal.signal(signal.SIGINT, lambda signum, frame: interrupted.append(signum))
+            try:
+                st = _within_fn(self._query._handle(), self._handle(), float(delta), fn, None, None)
+            finally:
+                if catch:
+                    signal.signal(signal.SIGINT, old_handler)
+            if interrupted:
+                if old_handler is signal.default_int_handler:
+                    raise KeyboardInterrupt
+                old_handler(signal.SIGINT, None)
             if state["error"] is not None:
                 raise state["error"]
             if st == _CALLBACK_FAILED:  # an interrupt arrived where take() could not catch it

@@ -393,8 +393,10 @@
 #define CD_LINK_DIST_REL 0x1p-43
 
 /* Time of impact: slack for the rounding of a pose and of the distance at a pose, in eps times
- * the scale of the posed coordinates (the Rodrigues rotation and the translation add a few
- * ulps to each coordinate; the swept queries' distance is exact to CD_TIE_ULPS). A conservative
+ * the scale of the posed coordinates, or of the swept radii plus |target| when larger (the
+ * Rodrigues rotation and the translation add a few ulps to each coordinate; the swept queries'
+ * distance is exact to CD_TIE_ULPS, and core - (r_a + r_b) - target rounds at the radii's and
+ * the target's scale). A conservative
  * step advances by (distance - target - slack) / bound. */
 #define CD_TOI_POSE_ULPS 64.0
 /* Time of impact: the bound on the shrinking speed (a sum of products of norms) is rounded up by

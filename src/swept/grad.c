@@ -180,15 +180,21 @@ static int zero_on_neighbourhood(const cdist__core_obj *a, const cdist__core_obj
 /* The one decision of the flag CDIST_GRAD_NOT_DIFFERENTIABLE (the rules of circledist.h): at
  * zero distance the distance is differentiable exactly where it stays 0 nearby, whatever the
  * number of pairs or the equidistant flag (a stable crossing is both); elsewhere it is not
- * differentiable with two closest pairs, an equidistant set, or an arc of radius 0 (a
- * derivative from the right). */
+ * differentiable with two closest pairs, an equidistant set, an arc of radius 0 (a
+ * derivative from the right), or a segment of length 0: moving one end point along w leaves
+ * the other where the closest point was (derivative 0), against w it moves that point (-1). */
 static int not_differentiable(const cdist__core_obj *a, const cdist__core_obj *b, const cdist_result *r)
 {
     if (cdist__cores_touch(r, 0)) return !zero_on_neighbourhood(a, b, r);
     if (r->num_pairs == 2 || r->equidistant) return 1;
     const cdist__core_obj *ob[2] = {a, b};
-    for (int k = 0; k < 2; k++)
+    for (int k = 0; k < 2; k++) {
         if (ob[k]->type == CD_CORE_ARC && ((const cdist_arc *)ob[k]->obj)->circle.radius == 0.0) return 1;
+        if (ob[k]->type == CD_CORE_SEGMENT) {
+            const cdist_segment *s = ob[k]->obj;
+            if (s->p0.x == s->p1.x && s->p0.y == s->p1.y && s->p0.z == s->p1.z) return 1;
+        }
+    }
     return 0;
 }
 

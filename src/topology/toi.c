@@ -154,12 +154,16 @@ cdist_status cdist_toi(cdist_query *q, const cdist_shape *a, const cdist_motion 
     cdist__leave_setter(q);
 
     /* The bound on the shrinking speed, rounded up, and the slack for rounding of poses and
-     * distances; the tolerance is at least twice the slack so that every step advances. */
+     * distances; the tolerance is at least twice the slack so that every step advances. The
+     * signed distance core - (r_a + r_b) and its difference with the target round at the scale
+     * of the swept radii and the target, which may exceed the motion's coordinates. */
     vec3 ta = ma ? ma->translation : v3(0, 0, 0), tb = mb ? mb->translation : v3(0, 0, 0);
     double wa = ma ? v_norm(ma->rotation) : 0.0, wb = mb ? v_norm(mb->rotation) : 0.0;
     double rho_a = core_reach(a, ma ? ma->center : v3(0, 0, 0)), rho_b = core_reach(b, mb ? mb->center : v3(0, 0, 0));
     double speed = (v_norm(v_sub(ta, tb)) + wa * rho_a + wb * rho_b) * (1.0 + CD_TOI_SPEED_ULPS * DBL_EPSILON);
-    double slack = CD_TOI_POSE_ULPS * DBL_EPSILON * fmax(motion_scale(a, ma), motion_scale(b, mb));
+    double radii = shape_core(a).radius + shape_core(b).radius;
+    double slack = CD_TOI_POSE_ULPS * DBL_EPSILON *
+                   fmax(fmax(motion_scale(a, ma), motion_scale(b, mb)), radii + fabs(target));
     double tol = fmax(tolerance, 2.0 * slack);
 
     double t = 0.0;

@@ -202,3 +202,28 @@ def test_interrupt():
         signal.setitimer(signal.ITIMER_REAL, 0)
         signal.signal(signal.SIGALRM, old)
     assert len(scene.pairs_within(0.0)) >= 0  # the scene is still usable
+
+
+def test_ctrl_c_not_unraisable():
+    """SIGINT (Ctrl-C) during a long pairs_within: KeyboardInterrupt after the C call, never an
+    exception raised inside the ctypes callback (which ctypes prints to stderr as unraisable),
+    and the SIGINT handler is restored."""
+    import os
+    import signal
+    import sys
+    import threading
+    scene = cd.Scene(random_scene(4 * 60000, seed=13, box=60.0))
+    scene.rebuild()
+    seen = []
+    old_hook = sys.unraisablehook
+    sys.unraisablehook = seen.append
+    timer = threading.Timer(0.005, os.kill, (os.getpid(), signal.SIGINT))
+    try:
+        with pytest.raises(KeyboardInterrupt):
+            timer.start()
+            scene.pairs_within(1.0)
+    finally:
+        timer.cancel()
+        sys.unraisablehook = old_hook
+    assert not seen, [str(u.exc_value) for u in seen]
+    assert signal.getsignal(signal.SIGINT) is signal.default_int_handler

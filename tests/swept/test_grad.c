@@ -579,6 +579,15 @@ static void check_clauses(void)
     double pc_axis[] = {0, 0, 0.5, 0, 0, 0, 0, 0, 1, 1};
     CHECK(g_pc(q, pc_axis, &r, &g) == CDIST_OK && r.equidistant, "point on the axis: equidistant");
     check_one_sided("equidistant", find_kind("pc"), pc_axis, 10, 0);
+    /* a segment of length 0 (p0 == p1): moving p0 alone along w leaves p1 at the closest point
+     * (derivative 0), against w the closest point moves with it (-1): flagged, and the gradient
+     * (of the pair's s) lies between the one-sided derivatives */
+    double sc_pt[] = {0.3, 0.2, 0.5, 0.3, 0.2, 0.5, 0, 0, 0, 0, 0, 1, 1};
+    check_one_sided("segment of length 0", find_kind("sc"), sc_pt, 13, 0);
+    double ks_pt[] = {1, 1, 1, 1, 1, 1, 0.1, 0, 0, 0, 0.2};
+    check_one_sided("capsule of length 0", find_kind("KS"), ks_pt, 11, 0);
+    double kk_pt[] = {3, 0.2, 0.5, 3, 0.2, 0.5, 0.1, 0, 0, 0, 0, 0, 1, 0.1};
+    check_one_sided("capsule of length 0 and a capsule", find_kind("KK"), kk_pt, 14, 0);
     /* distance 0 without a neighbourhood: flagged, gradient 0 */
     double pd0[] = {0.2, 0.1, 0, 0, 0, 0, 0, 0, 1, 1};
     check_zero("point on a disk", find_kind("pd"), pd0, 10, 0, apply_add, 0, ez);

@@ -363,6 +363,37 @@ static void check_pose_and_errors(cdist_query *q)
     CHECK(fabs(out2[0].t - 0.8) < 1e-6, "batch impact time %g (a point meets the ring at y = 1)", out2[0].t);
 }
 
+/* Large swept radii: the signed distance core - 2R rounds at R's scale, above a slack taken from
+ * the motion's coordinates alone. Sphere b (radius R) comes at a (radius R) along x; target
+ * 1 - 2R is reached when the centres are 1 apart, at the exact time t* = (1 - x0) / T (long
+ * double). A hit must come at or before t*. */
+static void check_large_radii(cdist_query *q)
+{
+    int n = 0, late = 0;
+    double worst = 0.0;
+    for (int k = 0; k < 600; k++) {
+        double R = pow(10.0, 1 + k % 7), x0 = 3 + 0.001 * k, T = -2.5 - 0.0007 * k;
+        cdist_shape a, b;
+        memset(&a, 0, sizeof a);
+        a.type = CDIST_SHAPE_SPHERE;
+        a.u.sphere.radius = R;
+        b = a;
+        b.u.sphere.center = tv(x0, 0, 0);
+        cdist_motion m = {tv(x0, 0, 0), tv(T, 0, 0), tv(0, 0, 0)};
+        cdist_toi_result r;
+        CHECK(cdist_toi(q, &a, NULL, &b, &m, 1 - 2 * R, 1e-15, 100000, &r) == CDIST_OK, "large radii %d", k);
+        long double t_exact = (1.0L - x0) / (long double)T;
+        if (r.state != CDIST_TOI_HIT) continue;
+        n++;
+        if (r.t > t_exact) {
+            late++;
+            worst = fmax(worst, (double)(r.t - t_exact));
+        }
+    }
+    CHECK(n > 100, "large radii: %d hits", n);
+    CHECK(late == 0, "large radii: %d of %d impacts after the exact contact time (by up to %.3g)", late, n, worst);
+}
+
 int main(int argc, char **argv)
 {
     int n = argc > 1 ? atoi(argv[1]) : 200;
@@ -370,6 +401,7 @@ int main(int argc, char **argv)
     cdist_query *q = cdist_query_new();
     check_pose_and_errors(q);
     check_threading(q);
+    check_large_radii(q);
     check_random(q, n, steps);
     cdist_query_free(q);
     return check_summary("toi");
