@@ -38,11 +38,6 @@ CD_INLINE void KN(ck_basis)(const V *n, V *u, V *v)
 }
 
 
-/* The single query's validation, framing (cdist__circles_frame), problem (cdist__cc_prepare)
- * and ring (cdist__ring_init) of the entries [lo + base, lo + base + n), n <= W, operation by
- * operation, into the block's columns from base; returns the lanes left to the scalar path
- * (also the lanes >= n, and where the radii are equal: the tie rule of cdist__cc_prepare is not
- * repeated here). */
 /* The two circles of the entries [lo + base, lo + base + n), n <= W (the lanes from n repeat
  * the first entry), as 7 columns each: centre, normal, radius. */
 CD_INLINE void KN(ck_load_pairs)(const cdist__job *job, size_t lo, int base, int n, V *ca, V *cb)
@@ -134,6 +129,11 @@ static unsigned KN(ck_circles)(const cdist__job *job, double unit_tol, size_t lo
     return mbits(mnot(ok)) & ((1u << n) - 1u);
 }
 
+/* The single query's validation, framing (cdist__circles_frame) and problem (cdist__cc_prepare)
+ * of the entries [lo + base, lo + base + n), n <= W, operation by operation, and its ring
+ * (ring_lanes.h, the frame's own body), into the block's columns from base; returns the lanes
+ * left to the scalar path (also the lanes >= n, and where the radii are equal: the tie rule of
+ * cdist__cc_prepare is not repeated here). */
 static unsigned KN(ck_setup)(const cdist__job *job, double unit_tol, size_t lo, int base, int n, ck_block *b)
 {
     V ca[8], cb[8];
@@ -167,21 +167,17 @@ static unsigned KN(ck_setup)(const cdist__job *job, double unit_tol, size_t lo, 
         m[k] = vsel(sw, na[k], nb[k]);
     }
     KN(ck_basis)(nA, u, v);
-    /* cdist__ring_init */
-    V al[3], be[3], ga[3], ha, hb, hc;
+    KN(cc_ring) o;
     const V CB[3] = {CBx, CBy, CBz};
-    KN(ring_init)(R, u, v, CB, m, al, be, ga, &ha, &hb, &hc);
-    V W1 = vadd(vsqrt(KN(dot)(al[0], al[1], al[2], al[0], al[1], al[2])),
-                vsqrt(KN(dot)(be[0], be[1], be[2], be[0], be[1], be[2])));
-    V Lw = vadd(vmul(vset(2.0), R), vsqrt(KN(dot)(CBx, CBy, CBz, CBx, CBy, CBz)));
+    KN(cc_ring_init)(R, s, u, v, CB, m, &o);
     V cut = vset(NAN);
     if (job->cutoffs) {
         double cv[W];
         for (int l = 0; l < W; l++) cv[l] = job->cutoffs[lo + (size_t)base + (size_t)(l < n ? l : 0)];
         cut = vld(cv);
     }
-    const V cols[CK_NC] = {al[0], al[1], al[2], be[0], be[1], be[2], ga[0], ga[1], ga[2], ha, hb, hc, s,
-                           vmul(R, R), W1, vadd(vabs(ha), vabs(hb)), vabs(hc), Lw, unsc, up, cut};
+    const V cols[CK_NC] = {o.al[0], o.al[1], o.al[2], o.be[0], o.be[1], o.be[2], o.ga[0], o.ga[1], o.ga[2], o.ha, o.hb,
+                           o.hc,    s,       vmul(R, R), o.W1, o.Hh, o.Hc0, o.Lw, unsc, up, cut};
     V zero = vset(0.0);
     for (int c = 0; c < CK_NC; c++) vst(&b->col[c][base], vsel(ok, cols[c], zero));
     unsigned left = mbits(mnot(ok)) & ((1u << W) - 1u);
