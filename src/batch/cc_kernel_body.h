@@ -21,23 +21,6 @@ CD_INLINE void KN(ck_load)(const ck_block *b, int g, KN(ck_ring) *r)
 
 /* ---- per-entry set-up in lanes ---- */
 
-/* v_basis (src/base/vec.h) of unit normals n: u, v. */
-CD_INLINE void KN(ck_basis)(const V *n, V *u, V *v)
-{
-    V ax = vabs(n[0]), ay = vabs(n[1]), az = vabs(n[2]);
-    M ex = mand(vle(ax, ay), vle(ax, az)), ey = mandn(ex, vle(ay, az)), ez = mnot(mor(ex, ey));
-    V one = vset(1.0), zero = vset(0.0);
-    V e0 = vsel(ex, one, zero), e1 = vsel(ey, one, zero), e2 = vsel(ez, one, zero);
-    V k = vneg(KN(dot)(e0, e1, e2, n[0], n[1], n[2]));
-    V wx = vfma(k, n[0], e0), wy = vfma(k, n[1], e1), wz = vfma(k, n[2], e2);
-    V iw = vdiv(one, vsqrt(KN(dot)(wx, wy, wz, wx, wy, wz)));
-    u[0] = vmul(iw, wx);
-    u[1] = vmul(iw, wy);
-    u[2] = vmul(iw, wz);
-    KN(cross)(n[0], n[1], n[2], u[0], u[1], u[2], &v[0], &v[1], &v[2]);
-}
-
-
 /* The two circles of the entries [lo + base, lo + base + n), n <= W (the lanes from n repeat
  * the first entry), as 7 columns each: centre, normal, radius. */
 CD_INLINE void KN(ck_load_pairs)(const cdist__job *job, size_t lo, int base, int n, V *ca, V *cb)
@@ -77,7 +60,7 @@ static unsigned KN(ck_circles)(const cdist__job *job, double unit_tol, size_t lo
     KN(ck_load_pairs)(job, lo, base, n, c[0], c[1]);
     M ok = mand(KN(circle_fast)(c[0], c[0] + 3, c[0][6], unit_tol, nn[0]),
                 KN(circle_fast)(c[1], c[1] + 3, c[1][6], unit_tol, nn[1]));
-    for (int o = 0; o < 2; o++) KN(ck_basis)(nn[o], u[o], v[o]);
+    for (int o = 0; o < 2; o++) KN(basis)(nn[o], u[o], v[o]);
     V *comp[2][13];
     for (int o = 0; o < 2; o++) {
         V *p[13] = {&c[o][0], &c[o][1], &c[o][2], &nn[o][0], &nn[o][1], &nn[o][2], &u[o][0],
@@ -166,7 +149,7 @@ static unsigned KN(ck_setup)(const cdist__job *job, double unit_tol, size_t lo, 
         nA[k] = vsel(sw, nb[k], na[k]);
         m[k] = vsel(sw, na[k], nb[k]);
     }
-    KN(ck_basis)(nA, u, v);
+    KN(basis)(nA, u, v);
     KN(cc_ring) o;
     const V CB[3] = {CBx, CBy, CBz};
     KN(cc_ring_init)(R, s, u, v, CB, m, &o);

@@ -1,11 +1,14 @@
 /* SPDX-License-Identifier: MIT */
-/* Vector helpers of the batch kernels in lanes, each the operation of the scalar code
- * (src/base/vec.h, numeric.h) lane by lane with the same roundings. Included after lanes_def.h
- * by each kernel body (line_kernel_body.h, cc_kernel_body.h); no include guard. */
+/* Vector helpers in lanes, each the operation of the scalar code (src/base/vec.h, numeric.h) lane
+ * by lane with the same roundings; v_basis (vec.h) is the one-lane instance of KN(basis).
+ * Included after lanes_def.h by each lane body; no include guard. */
 
-/* each width's instance once per translation unit (a unit may hold several bodies of a width) */
-#if (W == 1 && !defined(CD_LANES_VEC_1)) || (W == 4 && !defined(CD_LANES_VEC_4)) || (W == 8 && !defined(CD_LANES_VEC_8))
-#if W == 1
+/* each width's instance once per translation unit (a unit may hold several bodies of a width);
+ * vec.h's one-lane instance for scalar code (CD_LANES_LANE1) apart */
+#if defined(CD_LANES_LANE1) || (W == 1 && !defined(CD_LANES_VEC_1)) || (W == 4 && !defined(CD_LANES_VEC_4)) || \
+    (W == 8 && !defined(CD_LANES_VEC_8))
+#if defined(CD_LANES_LANE1)
+#elif W == 1
 #define CD_LANES_VEC_1
 #elif W == 4
 #define CD_LANES_VEC_4
@@ -37,6 +40,23 @@ CD_INLINE void KN(cross)(V ax, V ay, V az, V bx, V by, V bz, V *x, V *y, V *z)
     *x = vsub(vmul(ay, bz), vmul(az, by));
     *y = vsub(vmul(az, bx), vmul(ax, bz));
     *z = vsub(vmul(ax, by), vmul(ay, bx));
+}
+
+/* v_basis (vec.h), whose one-lane instance this is: e the axis of the smallest |n_k| (first on
+ * ties), u = normalise(e - (e.n) n), v = n x u, of a unit normal n. */
+CD_INLINE void KN(basis)(const V *n, V *u, V *v)
+{
+    V ax = vabs(n[0]), ay = vabs(n[1]), az = vabs(n[2]);
+    M ex = mand(vle(ax, ay), vle(ax, az)), ey = mandn(ex, vle(ay, az)), ez = mnot(mor(ex, ey));
+    V one = vset(1.0), zero = vset(0.0);
+    V e0 = vsel(ex, one, zero), e1 = vsel(ey, one, zero), e2 = vsel(ez, one, zero);
+    V k = vneg(KN(dot)(e0, e1, e2, n[0], n[1], n[2]));
+    V wx = vfma(k, n[0], e0), wy = vfma(k, n[1], e1), wz = vfma(k, n[2], e2);
+    V iw = vdiv(one, vsqrt(KN(dot)(wx, wy, wz, wx, wy, wz)));
+    u[0] = vmul(iw, wx);
+    u[1] = vmul(iw, wy);
+    u[2] = vmul(iw, wz);
+    KN(cross)(n[0], n[1], n[2], u[0], u[1], u[2], &v[0], &v[1], &v[2]);
 }
 
 /* cdist__fmax / cdist__fmin: a > b ? a : (b == b ? b : a) */
