@@ -96,9 +96,9 @@ uint64_t cdist__cc_quick_lanes(const struct cdist__cc_frame *const *f, int count
                                double *s, double *d2);
 /* The single query's fast validation and basis (cdist__circle_fast_basis) of both circles of
  * the entries [lo, lo + count), count <= 64, in lanes (lanes as above): a[k], b[k] where
- * accepted, exchanged where bit k of swap is set; with up not NULL also framed as
- * cdist__circles_frame frames them (a at the origin, both scaled by 1 / up[k], the collector's
- * scale bscale[k]); returns the mask of the entries it does not accept. */
+ * accepted, exchanged where bit k of swap is set, framed as cdist__circles_frame frames them (a
+ * at the origin, both scaled by 1 / up[k], the collector's scale bscale[k]); returns the mask of
+ * the entries it does not accept. */
 uint64_t cdist__circle_pairs_lanes(const cdist__job *job, double unit_tol, size_t lo, int count, int lanes,
                                    uint64_t swap, cdist__circle *a, cdist__circle *b, double *up, double *bscale);
 

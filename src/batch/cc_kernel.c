@@ -231,9 +231,7 @@ uint64_t cdist__circle_pairs_lanes(const cdist__job *job, double unit_tol, size_
     for (int g = 0; g < count; g += v->lanes) {
         int n = count - g < v->lanes ? count - g : v->lanes;
         unsigned sw = (unsigned)(swap >> g) & ((1u << v->lanes) - 1u);
-        bad |= (uint64_t)v->circles(job, unit_tol, lo, g, n, sw, a + g, b + g, up ? up + g : NULL,
-                                    bscale ? bscale + g : NULL)
-               << g;
+        bad |= (uint64_t)v->circles(job, unit_tol, lo, g, n, sw, a + g, b + g, up + g, bscale + g) << g;
     }
     return bad;
 }
