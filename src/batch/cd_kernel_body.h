@@ -94,7 +94,7 @@ static unsigned KN(cd_face)(const cdist__circle *const *c, const cdist__circle *
 }
 
 /* The rim search's frame of the pairs (c[l], d[l]), l < n <= W, as cdist__cc_quick_frame
- * builds it (scaled_pair and the parallel and worth tests operation by operation, the ring by
+ * builds it (scaled_pair operation by operation, the ring and the tests by
  * cdist__cc_frame_ring's body): the fields the search reads into *f[l] (the ring, R, s, W1,
  * Hh, Hc0, Lw) and the scaling into sc[l]; returns the lanes whose search is not to run (the
  * query takes the engine). */
@@ -124,12 +124,7 @@ static unsigned KN(cd_rim_frame)(const cdist__circle *const *c, const cdist__cir
     for (int j = 0; j < 3; j++) C[j] = vmul(down, C[j]);
     KN(cc_ring) o;
     KN(cc_ring_init)(R, s, u, v, C, m, &o);
-    /* cdist__cc_parallel_critical's test and cdist__cc_quick_worth */
-    bad = mor(bad, vle(vsqrt(vadd(vmul(o.ha, o.ha), vmul(o.hb, o.hb))), vmul(vset(CD_CC_PARALLEL_ULPS * DBL_EPSILON), o.L)));
-    V e2 = vadd(vmul(o.Cu, o.Cu), vmul(o.Cv, o.Cv)), dr = vsub(vsqrt(e2), R), lim = vmul(vset(CD_CC_QUICK_CENTRE_REL), s);
-    bad = mor(bad, vle(vadd(vmul(dr, dr), vsub(KN(ring_dot)(C[0], C[1], C[2], C[0], C[1], C[2]), e2)), vmul(lim, lim)));
-    V axis = vmul(vset(CD_CC_QUICK_AXIS_REL), o.L);
-    bad = mor(bad, mnot(mand(vgt(e2, vmul(axis, axis)), vgt(o.nga, axis))));
+    bad = mor(bad, mnot(o.quick));
     double x[19][W];
     const V *src[19] = {&o.al[0], &o.al[1], &o.al[2], &o.be[0], &o.be[1], &o.be[2], &o.ga[0], &o.ga[1], &o.ga[2], &o.ha,
                         &o.hb,    &o.hc,    &R,       &s,       &o.W1,    &o.Hh,    &o.Hc0,   &o.Lw,    &down};

@@ -101,7 +101,8 @@ static void KN(stage_frame)(double in[13][W], int shape, double tol, lk_block *b
     V B0x, B0y, B0z;
     V t0 = KN(lc_nearest)(Bx, By, Bz, Mx, My, Mz, &B0x, &B0y, &B0z);
     KN(lc_frame) fr;
-    fr.nx = nx, fr.ny = ny, fr.nz = nz, fr.ux = u[0], fr.uy = u[1], fr.uz = u[2], fr.vx = v[0], fr.vy = v[1], fr.vz = v[2];
+    fr.nx = nx, fr.ny = ny, fr.nz = nz, fr.ux = u[0], fr.uy = u[1], fr.uz = u[2];
+    fr.vx = v[0], fr.vy = v[1], fr.vz = v[2];
     KN(lc_frame_line)(&fr, r, B0x, B0y, B0z, Mx, My, Mz);
     V umin = vmul(vsub(lo, t0), fr.sg), umax = vmul(vsub(hi, t0), fr.sg);
     ok = mand(ok, vgt(fr.m0, vset(CD_LC_PERP_ULPS * DBL_EPSILON))); /* perpendicular to the plane: scalar */

@@ -65,7 +65,7 @@ CD_FMA_CLONES void cdist__cc_frame_ring(cdist__cc_frame *f, const cdist__circle 
                            .rg = {v3(o.al[0], o.al[1], o.al[2]), v3(o.be[0], o.be[1], o.be[2]),
                                   v3(o.ga[0], o.ga[1], o.ga[2]), o.ha, o.hb, o.hc},
                            .Cu = o.Cu, .Cv = o.Cv, .epsL = o.epsL, .L = o.L, .Lw = o.Lw, .W1 = o.W1, .nga = o.nga,
-                           .Hh = o.Hh, .Hc0 = o.Hc0};
+                           .Hh = o.Hh, .Hc0 = o.Hc0, .parallel = o.parallel, .quick = o.quick};
 }
 
 void cdist__cc_frame_bounds(cdist__cc_frame *f)

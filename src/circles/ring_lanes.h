@@ -8,6 +8,7 @@
 typedef struct KN(cc_ring) {
     V al[3], be[3], ga[3], ha, hb, hc;       /* w and h of ring_eval.h */
     V Cu, Cv, L, Lw, W1, nga, Hh, Hc0, epsL; /* cdist__cc_frame's fields of these names */
+    M parallel, quick;                       /* and these */
 } KN(cc_ring);
 
 CD_INLINE void KN(cc_ring_init)(V R, V s, const V *u, const V *v, const V *C, const V *m, KN(cc_ring) *o)
@@ -36,4 +37,15 @@ CD_INLINE void KN(cc_ring_init)(V R, V s, const V *u, const V *v, const V *C, co
     o->nga = vsqrt(gg);
     o->Hh = vadd(vabs(o->ha), vabs(o->hb));
     o->Hc0 = vabs(o->hc);
+    /* A's height over B's plane varies by at most CD_CC_PARALLEL_ULPS eps L. The search is not
+     * tried there, nor where B's centre lies within CD_CC_QUICK_CENTRE_REL s of A (with
+     * e = |C| in A's plane the squared distance from C to A is (e - R)^2 + (|C|^2 - e^2)), nor
+     * where a centre lies on the other circle's axis (e or |ga| = |m x C| within
+     * CD_CC_QUICK_AXIS_REL L): it cannot certify there. */
+    V hn = vsqrt(vadd(vmul(o->ha, o->ha), vmul(o->hb, o->hb)));
+    o->parallel = vle(hn, vmul(vset(CD_CC_PARALLEL_ULPS * DBL_EPSILON), o->L));
+    V e2 = vadd(vmul(o->Cu, o->Cu), vmul(o->Cv, o->Cv)), dr = vsub(vsqrt(e2), R);
+    V lim = vmul(vset(CD_CC_QUICK_CENTRE_REL), s), axis = vmul(vset(CD_CC_QUICK_AXIS_REL), o->L);
+    M centre = vle(vadd(vmul(dr, dr), vsub(KN(ring_dot)(C[0], C[1], C[2], C[0], C[1], C[2]), e2)), vmul(lim, lim));
+    o->quick = mandn(mor(o->parallel, centre), mand(vgt(e2, vmul(axis, axis)), vgt(o->nga, axis)));
 }
