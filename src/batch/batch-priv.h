@@ -58,9 +58,9 @@ cdist__kernel_fn cdist__kernel_choose(cdist__kernel_fn *chosen, cdist__kernel_fn
 /* Distance kernels of point-circle (disk = 0) and point-disk (disk = 1) for entries
  * [lo, lo + count), count <= 64: writes distances[i] of every entry whose inputs pass the fast
  * validation and returns a mask (bit k: entry lo + k) of the entries left for the scalar path
- * (which then produces their status and message). The checks and arithmetic are those of the
- * single query's fast path operation by operation, so the distances are bit-identical to the
- * single query's. */
+ * (which then produces their status and message). The checks and arithmetic are the single
+ * query's fast path (src/point/point_body.h, in lanes), so the distances are bit-identical to
+ * the single query's. */
 uint64_t cdist__point_distance_kernel(const cdist__job *job, int disk, double unit_tol, size_t lo, size_t count);
 
 /* Distance kernel of line-circle (shape 0), ray-circle (1) and segment-circle (2) for entries
