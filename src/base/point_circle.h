@@ -11,11 +11,15 @@
 #include "base/tolerances.h"
 #include "base/vec.h"
 
-/* The one-lane instance under the scalar names of vec.h (CD_LANE1_KN), on its lane helpers. */
+/* The one-lane instance under its own names (CD_LANE1_KN), apart from any kernel's one-lane
+ * instance in the same translation unit; a scalar body built on it is instantiated with
+ * KN = CD_LANE1_KN after lanes_def.h (src/point/point.c). */
+#define CD_LANE1_KN(name) cdist__##name##_lane1
 #define CD_LANES 1
 #include "base/lanes/lanes_def.h"
 #undef KN
 #define KN(name) CD_LANE1_KN(name)
+#include "base/lanes/lanes_vec.h"
 #include "base/point_circle_lanes.h"
 #include "base/lanes/lanes_undef.h"
 

@@ -4,12 +4,9 @@
 #define CDIST_VEC_H
 
 #include <math.h>
-#include <stdint.h>
-#include <string.h>
 
 #include "circledist.h"
 #include "base/numeric.h"
-#include "base/tolerances.h"
 
 typedef cdist_vec3 vec3;
 
@@ -51,28 +48,20 @@ CD_INLINE vec3 v_unit_or_zero(vec3 a)
 }
 CD_INLINE int v_isfinite(vec3 a) { return isfinite(a.x) && isfinite(a.y) && isfinite(a.z); }
 
-/* The lane helpers (lanes_vec.h) in one lane for scalar code, named apart from a kernel's
- * one-lane instance in the same unit (scalar bodies on them: point_circle.h, point.c). */
-#define CD_LANE1_KN(name) cdist__##name##_lane1
-#define CD_LANES 1
-#define CD_LANES_LANE1
-#include "base/lanes/lanes_def.h"
-#undef KN
-#define KN(name) CD_LANE1_KN(name)
-#include "base/lanes/lanes_vec.h"
-#include "base/lanes/lanes_undef.h"
-
 /* The documented basis rule of cdist_circle_basis(): k = index of the smallest |n_k| (first on
  * ties), u = normalise(e_k - n_k n), v = n x u. n must be unit. Choosing the smallest component
- * keeps e_k far from parallel to n, so u is well conditioned. The batch kernels run the same
- * body (KN(basis), lanes_vec.h) in wider lanes. */
+ * keeps e_k far from parallel to n, so u is well conditioned. */
 CD_INLINE void v_basis(vec3 n, vec3 *u, vec3 *v)
 {
-    const double m[3] = {n.x, n.y, n.z};
-    double a[3], b[3];
-    cdist__basis_lane1(m, a, b);
-    *u = v3(a[0], a[1], a[2]);
-    *v = v3(b[0], b[1], b[2]);
+    double ax = fabs(n.x), ay = fabs(n.y), az = fabs(n.z);
+    vec3 e;
+    if (ax <= ay && ax <= az) e = v3(1, 0, 0);
+    else if (ay <= az) e = v3(0, 1, 0);
+    else e = v3(0, 0, 1);
+    vec3 w = v_axpy(e, -v_dot(e, n), n);
+    vec3 uu = v_scale(1.0 / v_norm(w), w);
+    *u = uu;
+    *v = v_cross(n, uu);
 }
 
 /* A validated circle: unit normal n, basis u, v (cdist_circle_basis rule), radius r. */

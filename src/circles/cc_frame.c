@@ -61,11 +61,11 @@ CD_FMA_CLONES void cdist__cc_frame_ring(cdist__cc_frame *f, const cdist__circle 
                  m[3] = {B->n.x, B->n.y, B->n.z};
     cc_ring_1 o;
     cc_ring_init_1(A->r, B->r, u, v, c, m, &o);
-    *f = (cdist__cc_frame){.R = A->r, .s = B->r, .u = A->u, .v = A->v, .C = C, .m = B->n,
-                           .rg = {v3(o.al[0], o.al[1], o.al[2]), v3(o.be[0], o.be[1], o.be[2]),
-                                  v3(o.ga[0], o.ga[1], o.ga[2]), o.ha, o.hb, o.hc},
-                           .Cu = o.Cu, .Cv = o.Cv, .epsL = o.epsL, .L = o.L, .Lw = o.Lw, .W1 = o.W1, .nga = o.nga,
-                           .Hh = o.Hh, .Hc0 = o.Hc0, .parallel = o.parallel, .quick = o.quick};
+    f->R = A->r, f->s = B->r, f->u = A->u, f->v = A->v, f->C = C, f->m = B->n;
+    f->rg = (cdist__ring){v3(o.al[0], o.al[1], o.al[2]), v3(o.be[0], o.be[1], o.be[2]), v3(o.ga[0], o.ga[1], o.ga[2]),
+                          o.ha, o.hb, o.hc};
+    f->Cu = o.Cu, f->Cv = o.Cv, f->epsL = o.epsL, f->L = o.L, f->Lw = o.Lw, f->W1 = o.W1, f->nga = o.nga;
+    f->Hh = o.Hh, f->Hc0 = o.Hc0, f->parallel = o.parallel, f->quick = o.quick;
 }
 
 void cdist__cc_frame_bounds(cdist__cc_frame *f)

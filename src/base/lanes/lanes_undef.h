@@ -2,7 +2,6 @@
 /* Undefines the lane macros of lanes_def.h (every name any variant defines: #undef of a name
  * a variant left undefined is harmless). No include guard: included after each variant. */
 #undef CD_LANES
-#undef CD_LANES_LANE1
 #undef W
 #undef V
 #undef M

@@ -1,14 +1,11 @@
 /* SPDX-License-Identifier: MIT */
-/* Vector helpers in lanes, each the operation of the scalar code (src/base/vec.h, numeric.h) lane
- * by lane with the same roundings; v_basis (vec.h) is the one-lane instance of KN(basis).
- * Included after lanes_def.h by each lane body; no include guard. */
+/* Vector helpers of the batch kernels in lanes, each the operation of the scalar code
+ * (src/base/vec.h, numeric.h) lane by lane with the same roundings. Included after lanes_def.h
+ * by each kernel body (line_kernel_body.h, cc_kernel_body.h); no include guard. */
 
-/* each width's instance once per translation unit (a unit may hold several bodies of a width);
- * vec.h's one-lane instance for scalar code (CD_LANES_LANE1) apart */
-#if defined(CD_LANES_LANE1) || (W == 1 && !defined(CD_LANES_VEC_1)) || (W == 4 && !defined(CD_LANES_VEC_4)) || \
-    (W == 8 && !defined(CD_LANES_VEC_8))
-#if defined(CD_LANES_LANE1)
-#elif W == 1
+/* each width's instance once per translation unit (a unit may hold several bodies of a width) */
+#if (W == 1 && !defined(CD_LANES_VEC_1)) || (W == 4 && !defined(CD_LANES_VEC_4)) || (W == 8 && !defined(CD_LANES_VEC_8))
+#if W == 1
 #define CD_LANES_VEC_1
 #elif W == 4
 #define CD_LANES_VEC_4
@@ -42,7 +39,7 @@ CD_INLINE void KN(cross)(V ax, V ay, V az, V bx, V by, V bz, V *x, V *y, V *z)
     *z = vsub(vmul(ax, by), vmul(ay, bx));
 }
 
-/* v_basis (vec.h), whose one-lane instance this is: e the axis of the smallest |n_k| (first on
+/* v_basis (vec.h) in lanes, for the kernels: e the axis of the smallest |n_k| (first on
  * ties), u = normalise(e - (e.n) n), v = n x u, of a unit normal n. */
 CD_INLINE void KN(basis)(const V *n, V *u, V *v)
 {
