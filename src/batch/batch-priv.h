@@ -58,9 +58,9 @@ cdist__kernel_fn cdist__kernel_choose(cdist__kernel_fn *chosen, cdist__kernel_fn
 /* Distance kernels of point-circle (disk = 0) and point-disk (disk = 1) for entries
  * [lo, lo + count), count <= 64: writes distances[i] of every entry whose inputs pass the fast
  * validation and returns a mask (bit k: entry lo + k) of the entries left for the scalar path
- * (which then produces their status and message). The checks and arithmetic are those of the
- * single query's fast path operation by operation, so the distances are bit-identical to the
- * single query's. */
+ * (which then produces their status and message). The checks and arithmetic are the single
+ * query's fast path (src/point/point_body.h, in lanes), so the distances are bit-identical to
+ * the single query's. */
 uint64_t cdist__point_distance_kernel(const cdist__job *job, int disk, double unit_tol, size_t lo, size_t count);
 
 /* Distance kernel of line-circle (shape 0), ray-circle (1) and segment-circle (2) for entries
@@ -96,9 +96,9 @@ uint64_t cdist__cc_quick_lanes(const struct cdist__cc_frame *const *f, int count
                                double *s, double *d2);
 /* The single query's fast validation and basis (cdist__circle_fast_basis) of both circles of
  * the entries [lo, lo + count), count <= 64, in lanes (lanes as above): a[k], b[k] where
- * accepted, exchanged where bit k of swap is set; with up not NULL also framed as
- * cdist__circles_frame frames them (a at the origin, both scaled by 1 / up[k], the collector's
- * scale bscale[k]); returns the mask of the entries it does not accept. */
+ * accepted, exchanged where bit k of swap is set, framed as cdist__circles_frame frames them (a
+ * at the origin, both scaled by 1 / up[k], the collector's scale bscale[k]); returns the mask of
+ * the entries it does not accept. */
 uint64_t cdist__circle_pairs_lanes(const cdist__job *job, double unit_tol, size_t lo, int count, int lanes,
                                    uint64_t swap, cdist__circle *a, cdist__circle *b, double *up, double *bscale);
 

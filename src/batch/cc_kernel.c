@@ -1,10 +1,11 @@
 /* SPDX-License-Identifier: MIT */
 /* Distance kernel of circle-circle for cdist_batch_distance: the certified search of the single
  * query (src/circles/cc_search_body.h) in 8 lanes (AVX-512), 4 lanes (AVX2) or 1, one entry per
- * lane, after the single query's validation, framing, problem and ring set up in lanes operation
- * by operation (so that F is the single query's F to the last bit), and the distance at the angle
- * found by the single query's formula (cdist__cc_point_d2). Whatever the search does not certify
- * goes to the scalar path. The method and why the two agree: docs/circles.md. */
+ * lane, after the single query's validation, framing and problem set up in lanes operation by
+ * operation and its ring (ring_lanes.h, so that F is the single query's F to the last bit), and
+ * the distance at the angle found by the single query's formula (cdist__cc_point_d2). Whatever
+ * the search does not certify goes to the scalar path. The method and why the two agree:
+ * docs/circles.md. */
 #include <float.h>
 #include <math.h>
 #include <stddef.h>
@@ -230,9 +231,7 @@ uint64_t cdist__circle_pairs_lanes(const cdist__job *job, double unit_tol, size_
     for (int g = 0; g < count; g += v->lanes) {
         int n = count - g < v->lanes ? count - g : v->lanes;
         unsigned sw = (unsigned)(swap >> g) & ((1u << v->lanes) - 1u);
-        bad |= (uint64_t)v->circles(job, unit_tol, lo, g, n, sw, a + g, b + g, up ? up + g : NULL,
-                                    bscale ? bscale + g : NULL)
-               << g;
+        bad |= (uint64_t)v->circles(job, unit_tol, lo, g, n, sw, a + g, b + g, up + g, bscale + g) << g;
     }
     return bad;
 }

@@ -21,28 +21,6 @@ CD_INLINE void KN(ck_load)(const ck_block *b, int g, KN(ck_ring) *r)
 
 /* ---- per-entry set-up in lanes ---- */
 
-/* v_basis (src/base/vec.h) of unit normals n: u, v. */
-CD_INLINE void KN(ck_basis)(const V *n, V *u, V *v)
-{
-    V ax = vabs(n[0]), ay = vabs(n[1]), az = vabs(n[2]);
-    M ex = mand(vle(ax, ay), vle(ax, az)), ey = mandn(ex, vle(ay, az)), ez = mnot(mor(ex, ey));
-    V one = vset(1.0), zero = vset(0.0);
-    V e0 = vsel(ex, one, zero), e1 = vsel(ey, one, zero), e2 = vsel(ez, one, zero);
-    V k = vneg(KN(dot)(e0, e1, e2, n[0], n[1], n[2]));
-    V wx = vfma(k, n[0], e0), wy = vfma(k, n[1], e1), wz = vfma(k, n[2], e2);
-    V iw = vdiv(one, vsqrt(KN(dot)(wx, wy, wz, wx, wy, wz)));
-    u[0] = vmul(iw, wx);
-    u[1] = vmul(iw, wy);
-    u[2] = vmul(iw, wz);
-    KN(cross)(n[0], n[1], n[2], u[0], u[1], u[2], &v[0], &v[1], &v[2]);
-}
-
-
-/* The single query's validation, framing (cdist__circles_frame), problem (cdist__cc_prepare)
- * and ring (cdist__ring_init) of the entries [lo + base, lo + base + n), n <= W, operation by
- * operation, into the block's columns from base; returns the lanes left to the scalar path
- * (also the lanes >= n, and where the radii are equal: the tie rule of cdist__cc_prepare is not
- * repeated here). */
 /* The two circles of the entries [lo + base, lo + base + n), n <= W (the lanes from n repeat
  * the first entry), as 7 columns each: centre, normal, radius. */
 CD_INLINE void KN(ck_load_pairs)(const cdist__job *job, size_t lo, int base, int n, V *ca, V *cb)
@@ -70,61 +48,62 @@ CD_INLINE void KN(ck_load_pairs)(const cdist__job *job, size_t lo, int base, int
     }
 }
 
-/* The single query's fast validation and basis (cdist__circle_fast_basis, operation by
- * operation) of both circles of the entries [lo + base, lo + base + n), n <= W, into a[k], b[k]
- * (k < n), exchanged in the lanes of swap; with up (not NULL) also framed as
- * cdist__circles_frame frames them (a's centre the origin, both scaled by 1 / up[k]; bscale[k]
- * the collector's scale); returns the lanes it does not take (a full check must decide). */
-static unsigned KN(ck_circles)(const cdist__job *job, double unit_tol, size_t lo, int base, int n, unsigned swap,
-                               cdist__circle *a, cdist__circle *b, double *up, double *bscale)
+/* The two circles of the entries [lo + base, lo + base + n), n <= W, exchanged in the lanes of
+ * swap, as the single query takes them, operation by operation: its fast check
+ * (cdist__circle_fast_body) and cdist__circles_frame; c[o] the centre (a's the origin) and
+ * radius (c[o][6]), scaled by 1 / *up, nn[o] the unit normal; returns the mask of the lanes it
+ * takes (a full check or the scalar path decides the others). */
+CD_INLINE M KN(ck_pair)(const cdist__job *job, double unit_tol, size_t lo, int base, int n, unsigned swap,
+                        V c[2][8], V nn[2][3], V *up)
 {
-    V c[2][8], nn[2][3], u[2][3], v[2][3];
     KN(ck_load_pairs)(job, lo, base, n, c[0], c[1]);
     M ok = mand(KN(circle_fast)(c[0], c[0] + 3, c[0][6], unit_tol, nn[0]),
                 KN(circle_fast)(c[1], c[1] + 3, c[1][6], unit_tol, nn[1]));
-    for (int o = 0; o < 2; o++) KN(ck_basis)(nn[o], u[o], v[o]);
-    V *comp[2][13];
-    for (int o = 0; o < 2; o++) {
-        V *p[13] = {&c[o][0], &c[o][1], &c[o][2], &nn[o][0], &nn[o][1], &nn[o][2], &u[o][0],
-                    &u[o][1], &u[o][2], &v[o][0], &v[o][1], &v[o][2], &c[o][6]};
-        memcpy(comp[o], p, sizeof p);
-    }
     if (swap) {
         double sw[W];
         for (int l = 0; l < W; l++) sw[l] = swap >> l & 1 ? 1.0 : 0.0;
         M m = veq(vld(sw), vset(1.0));
-        for (int j = 0; j < 13; j++) {
-            V x = *comp[0][j], y = *comp[1][j];
-            *comp[0][j] = vsel(m, y, x);
-            *comp[1][j] = vsel(m, x, y);
+        V *x[7] = {&c[0][0], &c[0][1], &c[0][2], &c[0][6], &nn[0][0], &nn[0][1], &nn[0][2]};
+        V *y[7] = {&c[1][0], &c[1][1], &c[1][2], &c[1][6], &nn[1][0], &nn[1][1], &nn[1][2]};
+        for (int j = 0; j < 7; j++) {
+            V t = *x[j];
+            *x[j] = vsel(m, *y[j], t);
+            *y[j] = vsel(m, t, *y[j]);
         }
     }
-    if (up) {
-        /* cdist__circles_frame: b's centre relative to a's, both scaled by 2^-e */
-        V zero = vset(0.0), bc[3];
-        for (int j = 0; j < 3; j++) bc[j] = vsub(c[1][j], c[0][j]);
-        V L = KN(fmax)(KN(fmax)(c[0][6], c[1][6]), KN(max3)(bc[0], bc[1], bc[2]));
-        ok = mand(ok, vge(L, vset(0x1p-1022))); /* a subnormal or zero scale: the scalar path */
-        V p = KN(pow2_of)(L), down = vrecip2(p);
-        c[0][6] = vmul(c[0][6], down);
-        c[1][6] = vmul(c[1][6], down);
-        for (int j = 0; j < 3; j++) {
-            c[0][j] = zero;
-            c[1][j] = vmul(down, bc[j]);
-        }
-        V sc = KN(fmax)(KN(fmax)(c[0][6], c[1][6]), vsqrt(KN(dot)(c[1][0], c[1][1], c[1][2], c[1][0], c[1][1], c[1][2])));
-        sc = vsel(mand(vgt(sc, zero), vle(sc, vset(DBL_MAX))), sc, vset(1.0)); /* cdist__best_init */
-        double pu[W], ps[W];
-        vst(pu, p);
-        vst(ps, sc);
-        for (int k = 0; k < n; k++) {
-            up[k] = pu[k];
-            bscale[k] = ps[k];
-        }
+    for (int j = 0; j < 3; j++) c[1][j] = vsub(c[1][j], c[0][j]), c[0][j] = vset(0.0);
+    V L = KN(fmax)(KN(fmax)(c[0][6], c[1][6]), KN(max3)(c[1][0], c[1][1], c[1][2]));
+    ok = mand(ok, vge(L, vset(0x1p-1022))); /* a subnormal or zero scale: the scalar path */
+    *up = KN(pow2_of)(L);
+    V down = vrecip2(*up);
+    for (int o = 0; o < 2; o++) c[o][6] = vmul(c[o][6], down);
+    for (int j = 0; j < 3; j++) c[1][j] = vmul(down, c[1][j]);
+    return ok;
+}
+
+/* The circles of ck_pair with their bases (cdist__circle_fast_basis) into a[k], b[k] (k < n),
+ * up[k] the scale and bscale[k] the collector's (cdist__circles_frame); returns the lanes it
+ * does not take. */
+static unsigned KN(ck_circles)(const cdist__job *job, double unit_tol, size_t lo, int base, int n, unsigned swap,
+                               cdist__circle *a, cdist__circle *b, double *up, double *bscale)
+{
+    V c[2][8], nn[2][3], u[2][3], v[2][3], p;
+    M ok = KN(ck_pair)(job, unit_tol, lo, base, n, swap, c, nn, &p);
+    for (int o = 0; o < 2; o++) KN(basis)(nn[o], u[o], v[o]);
+    V sc = KN(fmax)(KN(fmax)(c[0][6], c[1][6]), vsqrt(KN(dot)(c[1][0], c[1][1], c[1][2], c[1][0], c[1][1], c[1][2])));
+    sc = vsel(mand(vgt(sc, vset(0.0)), vle(sc, vset(DBL_MAX))), sc, vset(1.0)); /* cdist__best_init */
+    double pu[W], ps[W];
+    vst(pu, p);
+    vst(ps, sc);
+    for (int k = 0; k < n; k++) {
+        up[k] = pu[k];
+        bscale[k] = ps[k];
     }
     for (int o = 0; o < 2; o++) {
         double col[13][W];
-        for (int j = 0; j < 13; j++) vst(col[j], *comp[o][j]);
+        const V *comp[13] = {&c[o][0], &c[o][1], &c[o][2], &nn[o][0], &nn[o][1], &nn[o][2], &u[o][0],
+                             &u[o][1], &u[o][2], &v[o][0], &v[o][1], &v[o][2], &c[o][6]};
+        for (int j = 0; j < 13; j++) vst(col[j], *comp[j]);
         cdist__circle *out = o ? b : a;
         for (int k = 0; k < n; k++)
             out[k] = (cdist__circle){v3(col[0][k], col[1][k], col[2][k]), v3(col[3][k], col[4][k], col[5][k]),
@@ -134,24 +113,16 @@ static unsigned KN(ck_circles)(const cdist__job *job, double unit_tol, size_t lo
     return mbits(mnot(ok)) & ((1u << n) - 1u);
 }
 
+/* The single query's validation, framing (ck_pair) and problem (cdist__cc_prepare, operation by
+ * operation) of the entries [lo + base, lo + base + n), n <= W, and its ring (ring_lanes.h, the
+ * frame's own body), into the block's columns from base; returns the lanes left to the scalar
+ * path (also the lanes >= n, and where the radii are equal: the tie rule of cdist__cc_prepare is
+ * not repeated here). */
 static unsigned KN(ck_setup)(const cdist__job *job, double unit_tol, size_t lo, int base, int n, ck_block *b)
 {
-    V ca[8], cb[8];
-    KN(ck_load_pairs)(job, lo, base, n, ca, cb);
-    V na[3], nb[3];
-    M ok = mand(KN(circle_fast)(ca, ca + 3, ca[6], unit_tol, na), KN(circle_fast)(cb, cb + 3, cb[6], unit_tol, nb));
-    /* cdist__circles_frame: B's centre relative to A's, scaled by 2^-e */
-    V Cx = vsub(cb[0], ca[0]), Cy = vsub(cb[1], ca[1]), Cz = vsub(cb[2], ca[2]);
-    V mc = vabs(Cx);
-    mc = vsel(vgt(vabs(Cy), mc), vabs(Cy), mc);
-    mc = vsel(vgt(vabs(Cz), mc), vabs(Cz), mc);
-    V L = KN(fmax)(KN(fmax)(ca[6], cb[6]), mc);
-    ok = mand(ok, vge(L, vset(0x1p-1022))); /* a subnormal or zero scale: the scalar path */
-    V up = KN(pow2_of)(L), down = vrecip2(up);
-    V r0 = vmul(ca[6], down), r1 = vmul(cb[6], down);
-    Cx = vmul(down, Cx);
-    Cy = vmul(down, Cy);
-    Cz = vmul(down, Cz);
+    V c[2][8], nn[2][3], up;
+    M ok = KN(ck_pair)(job, unit_tol, lo, base, n, 0, c, nn, &up);
+    V r0 = c[0][6], r1 = c[1][6], Cx = c[1][0], Cy = c[1][1], Cz = c[1][2];
     /* cdist__cc_prepare: A the larger circle (equal radii left), both scaled so that L is in
      * [0.5, 1) */
     M sw = vgt(r1, r0);
@@ -163,25 +134,21 @@ static unsigned KN(ck_setup)(const cdist__job *job, double unit_tol, size_t lo, 
       CBz = vmul(sc, vsel(sw, vneg(Cz), Cz));
     V nA[3], m[3], u[3], v[3];
     for (int k = 0; k < 3; k++) {
-        nA[k] = vsel(sw, nb[k], na[k]);
-        m[k] = vsel(sw, na[k], nb[k]);
+        nA[k] = vsel(sw, nn[1][k], nn[0][k]);
+        m[k] = vsel(sw, nn[0][k], nn[1][k]);
     }
-    KN(ck_basis)(nA, u, v);
-    /* cdist__ring_init */
-    V al[3], be[3], ga[3], ha, hb, hc;
+    KN(basis)(nA, u, v);
+    KN(cc_ring) o;
     const V CB[3] = {CBx, CBy, CBz};
-    KN(ring_init)(R, u, v, CB, m, al, be, ga, &ha, &hb, &hc);
-    V W1 = vadd(vsqrt(KN(dot)(al[0], al[1], al[2], al[0], al[1], al[2])),
-                vsqrt(KN(dot)(be[0], be[1], be[2], be[0], be[1], be[2])));
-    V Lw = vadd(vmul(vset(2.0), R), vsqrt(KN(dot)(CBx, CBy, CBz, CBx, CBy, CBz)));
+    KN(cc_ring_init)(R, s, u, v, CB, m, &o);
     V cut = vset(NAN);
     if (job->cutoffs) {
         double cv[W];
         for (int l = 0; l < W; l++) cv[l] = job->cutoffs[lo + (size_t)base + (size_t)(l < n ? l : 0)];
         cut = vld(cv);
     }
-    const V cols[CK_NC] = {al[0], al[1], al[2], be[0], be[1], be[2], ga[0], ga[1], ga[2], ha, hb, hc, s,
-                           vmul(R, R), W1, vadd(vabs(ha), vabs(hb)), vabs(hc), Lw, unsc, up, cut};
+    const V cols[CK_NC] = {o.al[0], o.al[1], o.al[2], o.be[0], o.be[1], o.be[2], o.ga[0], o.ga[1], o.ga[2], o.ha, o.hb,
+                           o.hc,    s,       vmul(R, R), o.W1, o.Hh, o.Hc0, o.Lw, unsc, up, cut};
     V zero = vset(0.0);
     for (int c = 0; c < CK_NC; c++) vst(&b->col[c][base], vsel(ok, cols[c], zero));
     unsigned left = mbits(mnot(ok)) & ((1u << W) - 1u);

@@ -94,10 +94,10 @@ static unsigned KN(cd_face)(const cdist__circle *const *c, const cdist__circle *
 }
 
 /* The rim search's frame of the pairs (c[l], d[l]), l < n <= W, as cdist__cc_quick_frame
- * builds it (scaled_pair, cdist__cc_frame_ring, the parallel and worth tests) operation by
- * operation: the fields the search reads into *f[l] (the ring, R, s, W1, Hh, Hc0, Lw) and the
- * scaling into sc[l]; returns the lanes whose search is not to run (the query takes the
- * engine). */
+ * builds it (scaled_pair operation by operation, the ring and the tests by
+ * cdist__cc_frame_ring's body): the fields the search reads into *f[l] (the ring, R, s, W1,
+ * Hh, Hc0, Lw) and the scaling into sc[l]; returns the lanes whose search is not to run (the
+ * query takes the engine). */
 static unsigned KN(cd_rim_frame)(const cdist__circle *const *c, const cdist__circle *const *d, int n,
                                  cdist__cc_frame *const *f, double *sc)
 {
@@ -122,35 +122,24 @@ static unsigned KN(cd_rim_frame)(const cdist__circle *const *c, const cdist__cir
     V down = vmul(vrecip2(KN(pow2_of)(L0)), vset(0.5));
     V R = vmul(r0, down), s = vmul(r1, down);
     for (int j = 0; j < 3; j++) C[j] = vmul(down, C[j]);
-    V al[3], be[3], ga[3], ha, hb, hc;
-    KN(ring_init)(R, u, v, C, m, al, be, ga, &ha, &hb, &hc);
-    /* cdist__cc_frame_ring's bounds */
-    V Cu = KN(ring_dot)(C[0], C[1], C[2], u[0], u[1], u[2]), Cv = KN(ring_dot)(C[0], C[1], C[2], v[0], v[1], v[2]);
-    V aa = KN(ring_dot)(al[0], al[1], al[2], al[0], al[1], al[2]), bb = KN(ring_dot)(be[0], be[1], be[2], be[0], be[1], be[2]);
-    V gg = KN(ring_dot)(ga[0], ga[1], ga[2], ga[0], ga[1], ga[2]), Lc = vsqrt(KN(dot)(C[0], C[1], C[2], C[0], C[1], C[2]));
-    V L = KN(fmax)(KN(fmax)(R, s), Lc), Lw = vadd(vmul(vset(2.0), R), Lc);
-    V W1 = vadd(vsqrt(aa), vsqrt(bb)), nga = vsqrt(gg), Hh = vadd(vabs(ha), vabs(hb)), Hc0 = vabs(hc);
-    /* cdist__cc_parallel_critical's test and cdist__cc_quick_worth */
-    bad = mor(bad, vle(vsqrt(vadd(vmul(ha, ha), vmul(hb, hb))), vmul(vset(CD_CC_PARALLEL_ULPS * DBL_EPSILON), L)));
-    V e2 = vadd(vmul(Cu, Cu), vmul(Cv, Cv)), dr = vsub(vsqrt(e2), R), lim = vmul(vset(CD_CC_QUICK_CENTRE_REL), s);
-    bad = mor(bad, vle(vadd(vmul(dr, dr), vsub(KN(ring_dot)(C[0], C[1], C[2], C[0], C[1], C[2]), e2)), vmul(lim, lim)));
-    V axis = vmul(vset(CD_CC_QUICK_AXIS_REL), L);
-    bad = mor(bad, mnot(mand(vgt(e2, vmul(axis, axis)), vgt(nga, axis))));
-    double o[19][W];
-    const V *src[19] = {&al[0], &al[1], &al[2], &be[0], &be[1], &be[2], &ga[0], &ga[1], &ga[2], &ha,
-                        &hb,    &hc,    &R,     &s,     &W1,    &Hh,    &Hc0,   &Lw,    &down};
-    for (int j = 0; j < 19; j++) vst(o[j], *src[j]);
+    KN(cc_ring) o;
+    KN(cc_ring_init)(R, s, u, v, C, m, &o);
+    bad = mor(bad, mnot(o.quick));
+    double x[19][W];
+    const V *src[19] = {&o.al[0], &o.al[1], &o.al[2], &o.be[0], &o.be[1], &o.be[2], &o.ga[0], &o.ga[1], &o.ga[2], &o.ha,
+                        &o.hb,    &o.hc,    &R,       &s,       &o.W1,    &o.Hh,    &o.Hc0,   &o.Lw,    &down};
+    for (int j = 0; j < 19; j++) vst(x[j], *src[j]);
     for (int l = 0; l < n; l++) {
-        cdist__cc_frame *x = f[l];
-        x->rg = (cdist__ring){v3(o[0][l], o[1][l], o[2][l]), v3(o[3][l], o[4][l], o[5][l]),
-                              v3(o[6][l], o[7][l], o[8][l]), o[9][l], o[10][l], o[11][l]};
-        x->R = o[12][l];
-        x->s = o[13][l];
-        x->W1 = o[14][l];
-        x->Hh = o[15][l];
-        x->Hc0 = o[16][l];
-        x->Lw = o[17][l];
-        sc[l] = o[18][l];
+        cdist__cc_frame *y = f[l];
+        y->rg = (cdist__ring){v3(x[0][l], x[1][l], x[2][l]), v3(x[3][l], x[4][l], x[5][l]),
+                              v3(x[6][l], x[7][l], x[8][l]), x[9][l], x[10][l], x[11][l]};
+        y->R = x[12][l];
+        y->s = x[13][l];
+        y->W1 = x[14][l];
+        y->Hh = x[15][l];
+        y->Hc0 = x[16][l];
+        y->Lw = x[17][l];
+        sc[l] = x[18][l];
     }
     return mbits(bad) & ((1u << n) - 1u);
 }

@@ -46,19 +46,8 @@ static void KN(stage_frame)(double in[13][W], int shape, double tol, lk_block *b
     const V cc[3] = {cx, cy, cz}, nd[3] = {ndx, ndy, ndz};
     V un[3];
     M ok = mand(mand(KN(in_range)(ax, ay, az), KN(in_range)(bx, by, bz)), KN(circle_fast)(cc, nd, r, tol, un));
-    V nx = un[0], ny = un[1], nz = un[2];
-    /* v_basis: e = the axis of the smallest |n_k| (first on ties), u = normalise(e - (e.n) n), v = n x u */
-    V anx = vabs(nx), any = vabs(ny), anz = vabs(nz);
-    M kx = mand(vle(anx, any), vle(anx, anz));
-    M ky = mandn(kx, vle(any, anz));
-    M kz = mandn(mor(kx, ky), mtrue());
-    V ex = vsel(kx, one, zero), ey = vsel(ky, one, zero), ez = vsel(kz, one, zero);
-    V edn = vneg(KN(dot)(ex, ey, ez, nx, ny, nz));
-    V wx = vfma(edn, nx, ex), wy = vfma(edn, ny, ey), wz = vfma(edn, nz, ez);
-    V iw = vdiv(one, vsqrt(KN(dot)(wx, wy, wz, wx, wy, wz)));
-    V ux = vmul(iw, wx), uy = vmul(iw, wy), uz = vmul(iw, wz);
-    V vx, vy, vz;
-    KN(cross)(nx, ny, nz, ux, uy, uz, &vx, &vy, &vz);
+    V nx = un[0], ny = un[1], nz = un[2], u[3], v[3];
+    KN(basis)(un, u, v);
 
     /* ---- the first object: origin O, direction D (as the caller's, then scaled), unit M ---- */
     V Ox = ax, Oy = ay, Oz = az, Dx, Dy, Dz;
@@ -112,7 +101,8 @@ static void KN(stage_frame)(double in[13][W], int shape, double tol, lk_block *b
     V B0x, B0y, B0z;
     V t0 = KN(lc_nearest)(Bx, By, Bz, Mx, My, Mz, &B0x, &B0y, &B0z);
     KN(lc_frame) fr;
-    fr.nx = nx, fr.ny = ny, fr.nz = nz, fr.ux = ux, fr.uy = uy, fr.uz = uz, fr.vx = vx, fr.vy = vy, fr.vz = vz;
+    fr.nx = nx, fr.ny = ny, fr.nz = nz, fr.ux = u[0], fr.uy = u[1], fr.uz = u[2];
+    fr.vx = v[0], fr.vy = v[1], fr.vz = v[2];
     KN(lc_frame_line)(&fr, r, B0x, B0y, B0z, Mx, My, Mz);
     V umin = vmul(vsub(lo, t0), fr.sg), umax = vmul(vsub(hi, t0), fr.sg);
     ok = mand(ok, vgt(fr.m0, vset(CD_LC_PERP_ULPS * DBL_EPSILON))); /* perpendicular to the plane: scalar */

@@ -65,10 +65,9 @@ CD_FMA_CLONES int cdist__cc_quick_frame(const cdist__circle *c0, const cdist__ci
 {
     if (c0->r == 0.0 || c1->r == 0.0) return 0;
     cdist__circle a, b;
-    double tp[4];
     *sc = scaled_pair(c0, c1, &a, &b);
     cdist__cc_frame_ring(f, &a, b.c, &b);
-    return cdist__cc_parallel_critical(f, tp) < 0 && cdist__cc_quick_worth(f);
+    return f->quick;
 }
 
 CD_FMA_CLONES double cdist__cc_quick_distance(const cdist__cc_frame *f, double sc, double c, double s)
@@ -140,7 +139,7 @@ CD_FMA_CLONES int cdist__circle_circle_critical(cdist_query *q, const cdist__cir
  * eps L). */
 int cdist__cc_parallel_critical(const cdist__cc_frame *f, double *t)
 {
-    if (!(cdist__norm2(f->rg.ha, f->rg.hb) <= CD_CC_PARALLEL_ULPS * DBL_EPSILON * f->L)) return -1;
+    if (!f->parallel) return -1;
     double e = cdist__norm2(f->Cu, f->Cv), R = f->R, s = f->s;
     double t0 = e > 0 ? atan2(f->Cv, f->Cu) : 0.0;
     int n = 0;

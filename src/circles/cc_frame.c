@@ -47,27 +47,25 @@ static void tp_mul(const tpoly *x, int dx, const tpoly *y, int dy, tpoly *z)
     *z = r;
 }
 
+/* The ring and its magnitudes: the one-lane instance of ring_lanes.h, which the batch kernels
+ * run in wider lanes. */
+#define CD_LANES 1
+#include "base/lanes/lanes_def.h"
+#include "base/lanes/lanes_vec.h"
+#include "circles/ring_lanes.h"
+#include "base/lanes/lanes_undef.h"
+
 CD_FMA_CLONES void cdist__cc_frame_ring(cdist__cc_frame *f, const cdist__circle *A, vec3 C, const cdist__circle *B)
 {
-    f->R = A->r;
-    f->s = B->r;
-    f->u = A->u;
-    f->v = A->v;
-    f->C = C;
-    f->m = B->n;
-    vec3 m = B->n;
-    cdist__ring_init(&f->rg, f->R, A->u, A->v, C, m);
-    f->Cu = cdist__cc_dot3(C, A->u);
-    f->Cv = cdist__cc_dot3(C, A->v);
-    double aa = cdist__cc_dot3(f->rg.al, f->rg.al), bb = cdist__cc_dot3(f->rg.be, f->rg.be);
-    double gg = cdist__cc_dot3(f->rg.ga, f->rg.ga), Lc = v_norm(C);
-    f->epsL = DBL_EPSILON * (f->R + Lc);
-    f->L = cdist__fmax(cdist__fmax(f->R, f->s), Lc);
-    f->Lw = 2 * f->R + Lc;
-    f->W1 = sqrt(aa) + sqrt(bb);
-    f->nga = sqrt(gg);
-    f->Hh = fabs(f->rg.ha) + fabs(f->rg.hb);
-    f->Hc0 = fabs(f->rg.hc);
+    const double u[3] = {A->u.x, A->u.y, A->u.z}, v[3] = {A->v.x, A->v.y, A->v.z}, c[3] = {C.x, C.y, C.z},
+                 m[3] = {B->n.x, B->n.y, B->n.z};
+    cc_ring_1 o;
+    cc_ring_init_1(A->r, B->r, u, v, c, m, &o);
+    f->R = A->r, f->s = B->r, f->u = A->u, f->v = A->v, f->C = C, f->m = B->n;
+    f->rg = (cdist__ring){v3(o.al[0], o.al[1], o.al[2]), v3(o.be[0], o.be[1], o.be[2]), v3(o.ga[0], o.ga[1], o.ga[2]),
+                          o.ha, o.hb, o.hc};
+    f->Cu = o.Cu, f->Cv = o.Cv, f->epsL = o.epsL, f->L = o.L, f->Lw = o.Lw, f->W1 = o.W1, f->nga = o.nga;
+    f->Hh = o.Hh, f->Hc0 = o.Hc0, f->parallel = o.parallel, f->quick = o.quick;
 }
 
 void cdist__cc_frame_bounds(cdist__cc_frame *f)

@@ -5,7 +5,7 @@
  * answers when the closest point is certified unique and not
  * on or near the other's axis (97% of random pairs); else the root-isolation engine of
  * docs/circles.md, which also answers every tie, equidistant set and touching pair. The search is
- * not tried where it cannot certify (cdist__cc_quick_worth). */
+ * not tried where it cannot certify (the frame's quick, ring_lanes.h). */
 #include <math.h>
 
 #include "circles/circles-priv.h"
@@ -77,7 +77,7 @@ int cdist__cc_robust_start(const cdist__circle *c0, const cdist__circle *c1, cdi
     s->k = (cdist__cc_sink){.f = &s->f, .best = b, .prune = 1, .unscale = pb->unscale, .swapped = pb->swapped,
                             .A = &pb->A, .B = &pb->B, .Fmin = INFINITY, .dmin = INFINITY, .rho_min = INFINITY};
     s->np = cdist__cc_parallel_critical(&s->f, s->tp);
-    return s->np < 0 && cdist__cc_quick_worth(&s->f) ? CDIST__CC_SEARCH : CDIST__CC_ENGINE;
+    return s->f.quick ? CDIST__CC_SEARCH : CDIST__CC_ENGINE;
 }
 
 /* The robust method after its search (or without it): the closed forms of parallel planes, else

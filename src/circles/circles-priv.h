@@ -24,6 +24,8 @@ typedef struct cdist__cc_frame {
     double L;          /* problem scale max(R, s, |C|) */
     double Lw, W1, nga; /* magnitudes of the terms of w, of |w'|, |ga| (rounding bounds) */
     double Hh, Hc0;    /* |ha| + |hb| (bounds |h'|, |h''|) and |hc| */
+    int parallel;      /* parallel planes (cdist__cc_parallel_critical answers) */
+    int quick;         /* the certified search (cdist__cc_quick) is worth trying (ring_lanes.h) */
 } cdist__cc_frame;
 
 /* Values at one angle. */
@@ -128,17 +130,6 @@ void cdist__cc_frame_bounds(cdist__cc_frame *f);
  * of A at least CD_CCK_CERT_MARGIN farther in F) and the distance is not tiny
  * (>= sqrt(CD_CCK_MIN_F)); else 0 (then cdist__cc_scan decides). */
 int cdist__cc_quick(const cdist__cc_frame *f, double *t, double *c, double *s);
-/* Whether the certified search (cdist__cc_quick) is worth trying (tolerances.h): not when B's
- * centre lies within CD_CC_QUICK_CENTRE_REL * s of A (with e = |C| in A's plane the squared
- * distance from C to A is (e - R)^2 + (|C|^2 - e^2)), nor when a centre lies on the other
- * circle's axis (e = |C x n_A| or |ga| = |m x C| within CD_CC_QUICK_AXIS_REL * L). */
-static inline int cdist__cc_quick_worth(const cdist__cc_frame *f)
-{
-    double e2 = f->Cu * f->Cu + f->Cv * f->Cv, dr = sqrt(e2) - f->R, lim = CD_CC_QUICK_CENTRE_REL * f->s;
-    double axis = CD_CC_QUICK_AXIS_REL * f->L;
-    if (dr * dr + (cdist__cc_dot3(f->C, f->C) - e2) <= lim * lim) return 0;
-    return e2 > axis * axis && f->nga > axis;
-}
 
 /* The public entry of circle-disk and disk-disk: the handle taken, both objects validated
  * (named what0, what1), then query(q, a, b, swap, r, &used) with used the family's method and
@@ -151,8 +142,7 @@ cdist_status cdist__circles_entry(cdist_query *q, const cdist_circle *c0, const 
 /* The same search for circles c0 (parameterised) and c1 as given (no choice of the larger, any
  * centres), for circle-disk, whose rim needs only F's global minimum: cdist__cc_quick_frame
  * sets the frame *f of the pair scaled by *sc and returns whether the search is to run on it
- * (not when a radius is 0, the planes are parallel or the search cannot certify,
- * cdist__cc_quick_worth); cdist__cc_quick_distance is the distance at the point (c, s) =
+ * (not when a radius is 0, nor where the frame's quick is 0); cdist__cc_quick_distance is the distance at the point (c, s) =
  * (cos t, sin t) of c0 it finds, in c0's units. */
 int cdist__cc_quick_frame(const cdist__circle *c0, const cdist__circle *c1, cdist__cc_frame *f, double *sc);
 double cdist__cc_quick_distance(const cdist__cc_frame *f, double sc, double c, double s);

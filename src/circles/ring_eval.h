@@ -47,18 +47,6 @@ static inline void cdist__ring_dist(cdist__ring_val *v, double s, int order)
 
 static inline double cdist__ring_dot(vec3 a, vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
 
-/* The ring of A (radius R, basis u, v, centre at the origin) seen from B (centre C, unit
- * normal m). */
-static inline void cdist__ring_init(cdist__ring *rg, double R, vec3 u, vec3 v, vec3 C, vec3 m)
-{
-    rg->al = v_scale(R, v_cross(m, u));
-    rg->be = v_scale(R, v_cross(m, v));
-    rg->ga = v_neg(v_cross(m, C));
-    rg->ha = R * cdist__ring_dot(m, u);
-    rg->hb = R * cdist__ring_dot(m, v);
-    rg->hc = -cdist__ring_dot(m, C);
-}
-
 /* Everything up to `order` at angle t given (c, sn) = (cos t, sin t). */
 static inline void cdist__ring_eval(const cdist__ring *r, double s, double c, double sn, int order, cdist__ring_val *v)
 {

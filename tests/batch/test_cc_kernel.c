@@ -277,7 +277,7 @@ typedef unsigned (*sfn)(const cdist__job *, double, size_t, int, int, ck_block *
 typedef void (*ffn)(ck_block *, int);
 
 /* The set-up in lanes against the scalar functions it repeats (cdist__circle_fast,
- * cdist__circles_frame, cdist__cc_prepare, cdist__check_circle's basis, cdist__ring_init): the same
+ * cdist__circles_frame, cdist__cc_prepare, cdist__check_circle's basis, cdist__cc_frame_ring): the same
  * acceptance (apart from equal radii, left by design) and bit-identical ring columns; and the
  * final distance in lanes at random angles against cdist__cc_point_d2, bit for bit. */
 static void check_setup(const char *name, sfn setup, ffn final, int lanes, cdist_query *q, size_t n)
@@ -320,12 +320,15 @@ static void check_setup(const char *name, sfn setup, ffn final, int lanes, cdist
                     accept_bad++;
                     continue;
                 }
-                cdist__ring rg;
-                cdist__ring_init(&rg, p.A.r, p.A.u, p.A.v, p.CB, p.B.n);
-                const double want[] = {rg.al.x, rg.al.y, rg.al.z, rg.be.x, rg.be.y, rg.be.z, rg.ga.x, rg.ga.y,
-                                       rg.ga.z, rg.ha, rg.hb, rg.hc, p.B.r, p.unscale, ldexp(1.0, e)};
-                const int at[] = {CK_C_ALX, CK_C_ALY, CK_C_ALZ, CK_C_BEX, CK_C_BEY, CK_C_BEZ, CK_C_GAX, CK_C_GAY,
-                                  CK_C_GAZ, CK_C_HA, CK_C_HB, CK_C_HC, CK_C_S, CK_C_UNSC, CK_C_UP};
+                cdist__cc_frame f;
+                cdist__cc_frame_ring(&f, &p.A, p.CB, &p.B);
+                const cdist__ring rg = f.rg;
+                const double want[] = {rg.al.x, rg.al.y, rg.al.z, rg.be.x, rg.be.y, rg.be.z, rg.ga.x,
+                                       rg.ga.y, rg.ga.z, rg.ha,   rg.hb,   rg.hc,   p.B.r,   f.R * f.R,
+                                       f.W1,    f.Hh,    f.Hc0,   f.Lw,    p.unscale, ldexp(1.0, e)};
+                const int at[] = {CK_C_ALX, CK_C_ALY, CK_C_ALZ, CK_C_BEX, CK_C_BEY, CK_C_BEZ, CK_C_GAX,
+                                  CK_C_GAY, CK_C_GAZ, CK_C_HA,  CK_C_HB,  CK_C_HC,  CK_C_S,   CK_C_R2,
+                                  CK_C_W1,  CK_C_HH,  CK_C_HC0, CK_C_LW,  CK_C_UNSC, CK_C_UP};
                 checked++;
                 double c, sn;
                 sincos(blk.t[k], &sn, &c);

@@ -169,28 +169,23 @@ static void check_widths(int disk, size_t n, const char *what)
         }
         for (int w = 0; w < 3; w++) {
             if (!quick[w]) continue;
-            /* the validation in lanes: the single query's (the scalar check) bit for bit */
+            /* the validation and framing in lanes: the single query's (the scalar check,
+             * cdist__circles_frame) bit for bit; left: a rejected circle, a zero or subnormal
+             * scale */
             cdist__circle aw[CD_SUB], ew[CD_SUB];
-            uint64_t badw = cdist__circle_pairs_lanes(&job, 1e-6, lo, cnt, widths[w], 0, aw, ew, NULL, NULL);
-            int vbad = 0;
-            for (int k = 0; k < cnt; k++) {
-                cdist__circle as, es;
-                int ok = cdist__circle_fast_basis(1e-6, &A[lo + (size_t)k], &as) &&
-                         cdist__circle_fast_basis(1e-6, &B[lo + (size_t)k], &es);
-                vbad |= ok == (int)(badw >> k & 1);
-                if (ok) vbad |= memcmp(&as, &aw[k], sizeof as) || memcmp(&es, &ew[k], sizeof es);
-            }
-            /* the framing in lanes: cdist__circles_frame's */
             double upw[CD_SUB], bsw[CD_SUB];
             uint64_t swap = (uint64_t)next_rand();
             uint64_t badf = cdist__circle_pairs_lanes(&job, 1e-6, lo, cnt, widths[w], swap, aw, ew, upw, bsw);
+            int vbad = 0;
             for (int k = 0; k < cnt; k++) {
                 cdist__circle as, es;
-                if (badf >> k & 1) continue; /* the scalar path (a zero or subnormal scale among them) */
                 const cdist_circle *in[2] = {&A[lo + (size_t)k], &B[lo + (size_t)k]};
                 int sw = (int)(swap >> k & 1); /* exchanged */
-                if (!(cdist__circle_fast_basis(1e-6, in[sw], &as) && cdist__circle_fast_basis(1e-6, in[1 - sw], &es)))
-                    continue;
+                int ok = cdist__circle_fast_basis(1e-6, in[sw], &as) && cdist__circle_fast_basis(1e-6, in[1 - sw], &es);
+                vec3 C = v_sub(es.c, as.c);
+                ok = ok && fmax(fmax(as.r, es.r), fmax(fmax(fabs(C.x), fabs(C.y)), fabs(C.z))) >= 0x1p-1022;
+                vbad |= ok == (int)(badf >> k & 1);
+                if (!ok) continue;
                 vec3 off;
                 cdist__best best;
                 int ex = cdist__circles_frame(&as, &es, &off, &best);

@@ -39,6 +39,23 @@ CD_INLINE void KN(cross)(V ax, V ay, V az, V bx, V by, V bz, V *x, V *y, V *z)
     *z = vsub(vmul(ax, by), vmul(ay, bx));
 }
 
+/* v_basis (vec.h) in lanes, for the kernels: e the axis of the smallest |n_k| (first on
+ * ties), u = normalise(e - (e.n) n), v = n x u, of a unit normal n. */
+CD_INLINE void KN(basis)(const V *n, V *u, V *v)
+{
+    V ax = vabs(n[0]), ay = vabs(n[1]), az = vabs(n[2]);
+    M ex = mand(vle(ax, ay), vle(ax, az)), ey = mandn(ex, vle(ay, az)), ez = mnot(mor(ex, ey));
+    V one = vset(1.0), zero = vset(0.0);
+    V e0 = vsel(ex, one, zero), e1 = vsel(ey, one, zero), e2 = vsel(ez, one, zero);
+    V k = vneg(KN(dot)(e0, e1, e2, n[0], n[1], n[2]));
+    V wx = vfma(k, n[0], e0), wy = vfma(k, n[1], e1), wz = vfma(k, n[2], e2);
+    V iw = vdiv(one, vsqrt(KN(dot)(wx, wy, wz, wx, wy, wz)));
+    u[0] = vmul(iw, wx);
+    u[1] = vmul(iw, wy);
+    u[2] = vmul(iw, wz);
+    KN(cross)(n[0], n[1], n[2], u[0], u[1], u[2], &v[0], &v[1], &v[2]);
+}
+
 /* cdist__fmax / cdist__fmin: a > b ? a : (b == b ? b : a) */
 CD_INLINE V KN(fmax)(V a, V b) { return vsel(vgt(a, b), a, vsel(veq(b, b), b, a)); }
 CD_INLINE V KN(fmin)(V a, V b) { return vsel(vlt(a, b), a, vsel(veq(b, b), b, a)); }
