@@ -37,8 +37,7 @@ BatchGrad) from one C call, e.g.
 Long batches report progress (progress=True: a tqdm bar if tqdm is installed, or
 progress=callable(done, total) -> stop) and honour Ctrl-C (KeyboardInterrupt well
 within 0.2 s, plus the time to write the error state of every entry not answered: with
-fresh output arrays of millions of entries a second or more, e.g. 1.3 s for 3e6
-circle-circle gradients; with out= the entries
+fresh output arrays of millions of entries a second or more; with out= the entries
 answered before it are kept, the others have status CDIST_ERR_CANCELLED).
 
 Types: objects built from Python numbers and tuples are Circle[One] etc., those built from

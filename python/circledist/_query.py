@@ -6,7 +6,6 @@ import enum
 import functools
 import inspect
 import math
-import signal
 import struct
 import sys
 import threading
@@ -14,6 +13,7 @@ import threading
 import numpy as np
 
 from . import _docs, _lib
+from ._interrupt import SigintRecorder
 from ._objects import (Arc, Bezier3, Capsule, Circle, Disk, Helix, Line, Point, Ray,
                        RoundedDisk, Segment, Sphere, Torus, _plain, as_float_array, coerce)
 
@@ -1072,12 +1072,9 @@ class Query:
         this thread between chunks of entries, returns non-zero when it is set, so the batch
         stops within a chunk and KeyboardInterrupt is raised after the call (the entries
         answered are in the outputs, e.g. an out= buffer; the others have CDIST_ERR_CANCELLED)."""
-        on_main = threading.current_thread() is threading.main_thread()
-        old_handler = signal.getsignal(signal.SIGINT) if on_main else None
-        catch = callable(old_handler)     # not SIG_IGN / SIG_DFL / a handler set outside Python
-        if _lib.query_set_progress is None or not (progress or (catch and n >= _PROGRESS_MIN)):
+        sigint = SigintRecorder()
+        if _lib.query_set_progress is None or not (progress or (sigint.catching and n >= _PROGRESS_MIN)):
             return c_call()
-        interrupted = []
         bar = _progress_bar(n) if progress is True else None
         user_fn = progress if callable(progress) else None
         seen, errors = [0], []
@@ -1091,26 +1088,20 @@ class Query:
             except BaseException as e:  # noqa: B036 - re-raised after the C call returns
                 errors.append(e)
                 return 1
-            return 1 if stop or interrupted else 0
+            return 1 if stop or sigint.hits else 0
 
         c_report = _lib.PROGRESS_FN(report)
         self._check(_lib.query_set_progress(self._q, c_report, None, _PROGRESS_EVERY))
-        if catch:
-            signal.signal(signal.SIGINT, lambda signum, frame: interrupted.append(signum))
         try:
-            st = c_call()
+            with sigint:
+                st = c_call()
         finally:
-            if catch:
-                signal.signal(signal.SIGINT, old_handler)
             _lib.query_set_progress(self._q, _lib.PROGRESS_FN(), None, 0)
             if bar is not None:
                 bar.close()
         if errors:
             raise errors[0]
-        if interrupted:
-            if old_handler is signal.default_int_handler:
-                raise KeyboardInterrupt
-            old_handler(signal.SIGINT, None)
+        sigint.deliver()
         return st
 
     # ---- swept objects and gradients -------------------------------------------------------

@@ -1,7 +1,6 @@
 # SPDX-License-Identifier: MIT
 """Scenes: many objects at once (cdist_scene; internal module, see circledist.Scene)."""
 import ctypes
-import signal
 import threading
 
 import numpy as np
@@ -9,6 +8,7 @@ import numpy as np
 from . import _lib
 from ._objects import (Arc, Capsule, Circle, Disk, GeometricObject, Point, RoundedDisk, Segment,
                        Sphere, Torus, coerce)
+from ._interrupt import SigintRecorder
 from ._query import CircleDistError, Query
 from ._topology import LINK_DTYPE, TOI_DTYPE, _motions
 
@@ -447,17 +447,10 @@ class Scene:
         """
         chunks = []
         state = {"error": None}
-        # Ctrl-C during the C call: a temporary SIGINT handler only records it, and take() then
-        # stops the query. (Python runs a signal handler when the callback is entered, before
-        # its try: the default handler's KeyboardInterrupt would escape into ctypes, which
-        # prints it as unraisable.)
-        on_main = threading.current_thread() is threading.main_thread()
-        old_handler = signal.getsignal(signal.SIGINT) if on_main else None
-        catch = callable(old_handler)
-        interrupted = []
+        sigint = SigintRecorder()  # Ctrl-C during the C call: take() stops the query
 
         def take(user, pairs, n):
-            if interrupted:
+            if sigint.hits:
                 return 1
             try:
                 a = np.empty(n, SCENE_PAIR_DTYPE)
@@ -470,20 +463,13 @@ class Scene:
 
         fn = PAIR_FN(take)
         with self._query._lock, self._lock:
-            if catch:
-                signal.signal(signal.SIGINT, lambda signum, frame: interrupted.append(signum))
-            try:
+            with sigint:
                 st = _within_fn(self._query._handle(), self._handle(), float(delta), fn, None, None)
-            finally:
-                if catch:
-                    signal.signal(signal.SIGINT, old_handler)
-            if interrupted:
-                if old_handler is signal.default_int_handler:
-                    raise KeyboardInterrupt
-                old_handler(signal.SIGINT, None)
+            # a handler of the caller's that returns leaves the stopped query's status to raise
+            interrupted = sigint.deliver()
             if state["error"] is not None:
                 raise state["error"]
-            if st == _CALLBACK_FAILED:  # an interrupt arrived where take() could not catch it
+            if st == _CALLBACK_FAILED and not interrupted:  # an interrupt take() could not catch
                 raise KeyboardInterrupt
             self._check(st, allow=(_BAD_KIND,))
         # joined as bytes: concatenating the structured arrays would promote their dtype per chunk

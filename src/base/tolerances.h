@@ -241,6 +241,12 @@
  * not do: beside a tiny B (radius 4.7e-9 of A's) the minimum sits at rho ~ s, where dx <= 1e-9
  * leaves it 5e-12 rad off. */
 #define CD_CC_REFINE_QUAD 1e-18
+/* Circle-circle engine (cc_kink.c re-check, critical and minima modes): a root refined again
+ * from a subdivision of a grid interval is the grid's own when the two refinements agree to
+ * CD_CC_SAME_ROOT_ULPS ulps of the angle (rad; seen: 1 ulp apart). Critical points that close
+ * are below the engine's resolution anyway (a min/max pair within CD_CC_MIN_WIDTH is only
+ * sign-checked). */
+#define CD_CC_SAME_ROOT_ULPS 64.0
 
 /* Circle-circle, the single query: the certified search of the kernel (cdist__cc_quick) runs
  * first unless B's centre lies within CD_CC_QUICK_CENTRE_REL * s of A. There A crosses B's

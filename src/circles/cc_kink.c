@@ -208,13 +208,13 @@ static void kink_cover(const cdist__cc_frame *f, cdist__cc_sink *k, cdist__cc_pt
  * does not prune are evaluated again (the grid's formula, so the same values), and subdivided
  * unless certified. Their own F' sign pair was handed to the sink by the grid already, and the
  * subdivision's leaves, which chain from a to b, bracket that root again. Where each emitted root
- * is an entry of the answer (critical and minima modes), the sink skips the one bracket of the
- * grid's direction that holds the grid's refined root: every root is listed once, the roots the
- * grid could not see still are, and the grid's refinement stays the one listed. The robust mode's
- * collector merges two offers of one minimum (it keeps the closer), so there a skip would save a
- * refinement but move answers in their last bits: in a rim-crossing dip, narrower than the
- * features refine() sizes its stopping rule for, the two refinements land ulps apart and either
- * may be the closer. Not skipped there. */
+ * is an entry of the answer (critical and minima modes), the sink drops the one root of the
+ * grid's direction that refines to the grid's root again: every root is listed once, the roots
+ * the grid could not see still are (also in a leaf that holds more than one), and the grid's
+ * refinement stays the one listed. The robust mode's collector merges two offers of one minimum
+ * (it keeps the closer): in a rim-crossing dip, narrower than the features refine() sizes its
+ * stopping rule for, the two refinements land ulps apart and either may be the closer, so
+ * dropping one there would move answers in their last bits. Not dropped there. */
 void cdist__cc_kink_recheck(const cdist__cc_frame *f, cdist__cc_sink *k, const cdist__cc_kink_rec *kr, double *Fmax,
                             cdist__cc_deferred *df)
 {

@@ -67,11 +67,11 @@ double cdist__cc_emit(cdist__cc_sink *k, const cdist__cc_pt *a, const cdist__cc_
     if (a->F1 < 0 && b->F1 >= 0) dir = 1;
     else if (k->want_max && a->F1 > 0 && b->F1 <= 0) dir = -1;
     if (!dir) return NAN;
-    if (dir == k->skip_dir && a->t <= k->skip_t && k->skip_t <= b->t) {
+    double t = refine(k->f, a, b, dir);
+    if (dir == k->skip_dir && fabs(t - k->skip_t) <= CD_CC_SAME_ROOT_ULPS * DBL_EPSILON * cdist__fmax(1.0, fabs(t))) {
         k->skip_dir = 0;
         return NAN;
     }
-    double t = refine(k->f, a, b, dir);
     if (!k->best) {
         double ta = cdist__cc_param(t);
         if (k->count < k->cap) k->out[k->count] = ta;

@@ -57,7 +57,8 @@ typedef struct cdist__cc_sink {
     double dmin;  /* smallest refined distance */
     double rho_min; /* axis distance of the point giving dmin */
     int sampled;    /* some region was only sampled (emit_sampled, scan_kink, scan_dense) */
-    int skip_dir;   /* 1 or -1: the next bracket of this direction holding skip_t is not emitted (0: none) */
+    int skip_dir;   /* 1 or -1: the next root of this direction refined to skip_t (CD_CC_SAME_ROOT_ULPS)
+                     * is not emitted (0: none) */
     double skip_t;  /* (cdist__cc_kink_recheck: the root the grid already emitted) */
 } cdist__cc_sink;
 
@@ -323,7 +324,7 @@ double cdist__cc_hull_bound(const cdist__cc_frame *f, const cdist__cc_pt *a, con
 double cdist__cc_arc_bound(const cdist__cc_frame *f, const cdist__cc_pt *a, const cdist__cc_pt *b);
 double cdist__cc_window_hull_bound(const cdist__cc_frame *f, double t, double h);
 /* A critical bracket [a, b] of F (a sign change of F'), refined and handed to the sink (cc_scan.c).
- * Returns the refined angle, NAN when [a, b] is no bracket or the sink skips it (skip_dir). */
+ * Returns the refined angle, NAN when [a, b] is no bracket or the sink drops its root (skip_dir). */
 double cdist__cc_emit(cdist__cc_sink *k, const cdist__cc_pt *a, const cdist__cc_pt *b);
 /* The uncertifiable regions (cc_kink.c): near-crossings of B's axis (angles and core
  * half-widths), their geometric grids, an interval past its budget, the dense fallback, and the

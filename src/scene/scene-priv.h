@@ -83,7 +83,7 @@ struct cdist_scene {
     size_t live;
     /* Workspaces, kept between queries. */
     uint64_t *cand;
-    size_t cand_n, cand_cap;
+    size_t cand_cap;
     cdist_query **worker;    /* handles of the extra threads */
     int worker_n;
     cdist_query **screen;    /* one per thread: the batch distance screen (1 thread each) */

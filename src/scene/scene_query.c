@@ -826,11 +826,18 @@ static cdist_status list_make(cdist_query *q, cdist_scene *s, double delta, pool
     }
     double skin = fmin(CD_SCENE_SKIN_STEPS * 2.0 * s->step_moved, boxes ? extent / (double)boxes : 0.0);
     double reach = fmax(delta, 0.0) + skin;
-    int carry = s->list_ok && !s->dirty; /* cand holds the old list's keys */
-    uint64_t *old_key = s->cand;
+    /* The old list's keys (cand, when it holds the list) and bounds stay until its bounds are
+     * carried over; otherwise cand is the broad phase's buffer again. */
+    int carry = s->list_ok;
+    uint64_t *old_key = carry ? s->cand : NULL;
     size_t old_n = carry ? s->list_n : 0;
-    s->cand = NULL, s->cand_cap = 0;
-    broad b = {s, s, 1, cdist__box_lim(reach), delta, 0, NULL, 0, 0, 0, 0, NULL, 1, 0};
+    if (carry) {
+        s->cand = NULL, s->cand_cap = 0;
+    } else {
+        free(s->list_lo), free(s->list_hi);
+        s->list_lo = s->list_hi = NULL, s->list_cap = 0;
+    }
+    broad b = {s, s, 1, cdist__box_lim(reach), delta, 0, s->cand, 0, s->cand_cap, 0, 0, NULL, 1, 0};
     cdist_status st = broad_run(q, &b, p, "pairs_within");
     if (!st) st = sort_keys(q, s, s->cand, b.n);
     size_t cap = b.n > 0 ? b.n : 1;
@@ -843,7 +850,7 @@ static cdist_status list_make(cdist_query *q, cdist_scene *s, double delta, pool
         return st;
     }
     free(s->list_lo), free(s->list_hi);
-    s->list_lo = lo, s->list_hi = hi, s->list_cap = b.n;
+    s->list_lo = lo, s->list_hi = hi, s->list_cap = cap;
     memset(s->moved, 0, s->n * sizeof *s->moved);
     s->list_n = b.n;
     s->list_reach = reach;

@@ -227,3 +227,31 @@ def test_ctrl_c_not_unraisable():
         sys.unraisablehook = old_hook
     assert not seen, [str(u.exc_value) for u in seen]
     assert signal.getsignal(signal.SIGINT) is signal.default_int_handler
+
+
+def test_ctrl_c_handler_that_returns():
+    """A SIGINT handler of the caller's that returns (does not raise) during a long pairs_within:
+    it is run once after the C call, which it stopped, and the stopped query is an error (no
+    partial list of pairs), not a KeyboardInterrupt; the handler is restored."""
+    import os
+    import signal
+    import threading
+    scene = cd.Scene(random_scene(4 * 60000, seed=13, box=60.0))
+    scene.rebuild()
+    calls = []
+
+    def handler(signum, frame):
+        calls.append(signum)
+
+    old = signal.signal(signal.SIGINT, handler)
+    timer = threading.Timer(0.005, os.kill, (os.getpid(), signal.SIGINT))
+    try:
+        with pytest.raises(cd.CircleDistError) as e:
+            timer.start()
+            scene.pairs_within(1.0)
+        assert e.value.status == 9  # CDIST_ERR_CALLBACK_FAILED
+        assert calls == [signal.SIGINT]
+        assert signal.getsignal(signal.SIGINT) is handler
+    finally:
+        timer.cancel()
+        signal.signal(signal.SIGINT, old)
