@@ -453,12 +453,13 @@ static int grad_numbers(const gkind *k, const cdist_grad *g, double *out)
  * coordinate direction e of a centre / origin / end point and every radius, g . e lies between
  * the right derivative along e and the left one (one-sided differences of the distance), and
  * with two isolated pairs (two_pairs) it equals one of them. */
-static void check_one_sided(const char *what, const gkind *k, const double *v, int n, int two_pairs)
+/* Returns the largest gap between a number's one-sided derivatives (a kink shows one). */
+static double check_one_sided(const char *what, const gkind *k, const double *v, int n, int two_pairs)
 {
     cdist_result r;
     cdist_grad g;
     CHECK(k->fn(q, v, &r, &g) == CDIST_OK && (g.flags & CDIST_GRAD_NOT_DIFFERENTIABLE), "%s: flagged", what);
-    double f0 = dist_at(k, v), w[CDQ_MAX_VALUES];
+    double f0 = dist_at(k, v), w[CDQ_MAX_VALUES], gap = 0.0;
     const double h = 1e-7;
     for (const field *f = k->f; f->type != F_END; f++) {
         if (f->type == F_NORMAL || f->type == F_DIR || f->type == F_ZERO || f->type == F_START || f->type == F_ENDANG)
@@ -478,8 +479,10 @@ static void check_one_sided(const char *what, const gkind *k, const double *v, i
                                : gi >= right - 1e-5 && gi <= left + 1e-5;
             CHECK(ok, "%s: number %d: gradient %.9g against the one-sided derivatives (left %.9g, right %.9g)", what,
                   f->offset + i, gi, left, right);
+            gap = fmax(gap, fabs(left - right));
         }
     }
+    return gap;
 }
 
 /* Distance 0: the gradient is exactly 0; flagged unless the distance is 0 on a neighbourhood,
@@ -583,11 +586,12 @@ static void check_clauses(void)
      * (derivative 0), against w the closest point moves with it (-1): flagged, and the gradient
      * (of the pair's s) lies between the one-sided derivatives */
     double sc_pt[] = {0.3, 0.2, 0.5, 0.3, 0.2, 0.5, 0, 0, 0, 0, 0, 1, 1};
-    check_one_sided("segment of length 0", find_kind("sc"), sc_pt, 13, 0);
+    CHECK(check_one_sided("segment of length 0", find_kind("sc"), sc_pt, 13, 0) > 0.5, "segment of length 0: a kink");
     double ks_pt[] = {1, 1, 1, 1, 1, 1, 0.1, 0, 0, 0, 0.2};
-    check_one_sided("capsule of length 0", find_kind("KS"), ks_pt, 11, 0);
+    CHECK(check_one_sided("capsule of length 0", find_kind("KS"), ks_pt, 11, 0) > 0.5, "capsule of length 0: a kink");
     double kk_pt[] = {3, 0.2, 0.5, 3, 0.2, 0.5, 0.1, 0, 0, 0, 0, 0, 1, 0.1};
-    check_one_sided("capsule of length 0 and a capsule", find_kind("KK"), kk_pt, 14, 0);
+    CHECK(check_one_sided("capsule of length 0 and a capsule", find_kind("KK"), kk_pt, 14, 0) > 0.5,
+          "capsule of length 0 and a capsule: a kink");
     /* distance 0 without a neighbourhood: flagged, gradient 0 */
     double pd0[] = {0.2, 0.1, 0, 0, 0, 0, 0, 0, 1, 1};
     check_zero("point on a disk", find_kind("pd"), pd0, 10, 0, apply_add, 0, ez);
