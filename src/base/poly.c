@@ -11,10 +11,6 @@
 #include <math.h>
 #include <stdlib.h>
 
-/* Relative size of the symmetry-breaking shift (see nearly_even_or_odd). */
-#define CD_POLY_SHIFT 0.0377438833
-/* QR sweeps allowed per root (or pair) found; clustered roots can need many, as in GSL. */
-#define CD_POLY_QR_ITS 120
 
 struct cdist__poly_ws {
     double h[CD_POLY_MAX_DEGREE * CD_POLY_MAX_DEGREE]; /* the companion matrix, row-major */

@@ -93,6 +93,13 @@
  * F is exactly even in s for a symmetric configuration) when it lies within CD_LC_CANON_MAX of
  * B0 along the line; farther (nearly perpendicular lines) B0 itself, so that t does not cancel. */
 #define CD_LC_CANON_MAX 4.0
+/* Polynomial roots (src/base/poly.c): a nearly even (or odd) polynomial, whose roots pair up
+ * as +-x of equal modulus (the hard case for shifted QR), is shifted by CD_POLY_SHIFT times its
+ * root bound (dimensionless; an irrational-looking factor, so the shift does not land on another
+ * symmetry); the QR iteration gets CD_POLY_QR_ITS sweeps per root or root pair found (a count:
+ * clustered roots can need many) before it reports failure. */
+#define CD_POLY_SHIFT 0.0377438833
+#define CD_POLY_QR_ITS 120
 /* Lines family scaling (src/lines/lines-priv.h): when the problem scale L is so far below the
  * coordinates that 2^-e times them would overflow, the exponent is raised so that the scaled
  * coordinates stay below 2^(CD_LINES_ABS_MAX_EXP + 1) (an exponent, dimensionless): headroom of

@@ -144,11 +144,7 @@ int cdist__cc_scan(const cdist__cc_frame *f, cdist__cc_sink *k, double *Fmax)
     double dbest = INFINITY; /* smallest sampled distance: the minimum is at most this */
     for (int i = 0; i < CC_INIT_INTERVALS; i++) {
         if (init[i].d < dbest) dbest = init[i].d;
-        if (init[i].F > *Fmax) *Fmax = init[i].F;
-        if (init[i].F < k->Fmin) {
-            k->Fmin = init[i].F;
-            k->tmin = init[i].t;
-        }
+        cdist__cc_track(k, &init[i], Fmax);
     }
     int nk = cdist__cc_near_kinks(f, init, tk);
     for (int i = 0; i < nk; i++) {
@@ -190,11 +186,7 @@ int cdist__cc_scan(const cdist__cc_frame *f, cdist__cc_sink *k, double *Fmax)
                     double hc = cdist__cc_half_sec[cdist__cc_hs_index(level)];
                     cdist__cc_pt *mid = &pool[evals++];
                     cdist__cc_eval_lean(f, 0.5 * (a->t + b->t), (a->c + b->c) * hc, (a->s + b->s) * hc, mid);
-                    if (mid->F > *Fmax) *Fmax = mid->F;
-                    if (mid->F < k->Fmin) {
-                        k->Fmin = mid->F;
-                        k->tmin = mid->t;
-                    }
+                    cdist__cc_track(k, mid, Fmax);
                     level++;
                     st[sp].b = b;
                     st[sp++].level = level;
