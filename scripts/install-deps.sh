@@ -3,6 +3,7 @@
 # Installs the build and test dependencies on Debian 12 (run as root). Idempotent: packages
 # already present are not fetched again.
 set -eu
+# libgsl-dev: the tests' reference for the polynomial solver (the library does not link GSL)
 pkgs="meson ninja-build pkg-config gcc g++ libgsl-dev binutils python3 python3-numpy python3-mpmath python3-pytest abigail-tools cmake"
 # libFuzzer with ASan/UBSan (scripts/fuzz.sh): clang and its runtime libraries
 pkgs="$pkgs clang-14 libclang-rt-14-dev"

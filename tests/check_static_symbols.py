@@ -3,7 +3,8 @@
 """The static archive defines no global name outside the library's namespace: every defined
 global symbol is exported by the version script (circledist.map) or starts with the reserved
 internal prefix cdist__ (a static link has no version script to hide internal names, so they
-must not collide with the application's).
+must not collide with the application's). Nor does it reference GSL: the library depends on libc
+and libm only (GSL is the tests' reference for the polynomial solver).
 
 usage: check_static_symbols.py ARCHIVE VERSION_SCRIPT
 """
@@ -31,4 +32,8 @@ check(exported <= defined, "in the map but not defined in the archive: %s" % sor
 stray = sorted(s for s in defined if s not in exported and not s.startswith("cdist__")
                and not s.startswith(("__odr_asan", "___asan_gen_", "__asan_", "__ubsan_")))
 check(not stray, "%d global names neither exported nor cdist__-prefixed: %s" % (len(stray), " ".join(stray)))
+undefined = subprocess.run(["nm", "-g", "--undefined-only", archive], capture_output=True, text=True,
+                           check=True).stdout.split()
+gsl = sorted(set(u for u in undefined if u.startswith("gsl_")))
+check(not gsl, "the archive references GSL: %s" % " ".join(gsl))
 finish("check_static_symbols")

@@ -5,7 +5,8 @@
 usage: check_symbols.py LIBRARY VERSION_SCRIPT HEADER
 - every function declared CDIST_API in the header is in the version script and vice versa;
 - the library exports exactly those, each with a version node from the script;
-- the soname is libcircledist.so.<major>.
+- the soname is libcircledist.so.<major>;
+- it needs no GSL (no NEEDED entry, no undefined gsl_ symbol): libc and libm only.
 """
 import os
 import re
@@ -45,4 +46,10 @@ check(set(exported) == set(nodes), "exports vs map: only exported %s, only map %
 for sym, ver in exported.items():
     check(ver.strip("()") == nodes.get(sym), "%s has version %s, map says %s" % (sym, ver, nodes.get(sym)))
 check(soname is not None and soname.group(1) == "libcircledist.so.1", "soname %s" % (soname and soname.group(1)))
+needed = re.findall(r"NEEDED\s+(\S+)", dyn)
+check(not [n for n in needed if "gsl" in n], "the library needs %s" % needed)
+undefined = [line.split()[-1] for line in out.splitlines() if "*UND*" in line]
+check(len(undefined) > 0, "undefined symbols listed (libc's)")
+check(not [u for u in undefined if u.startswith("gsl_")], "the library calls GSL: %s"
+      % sorted(u for u in undefined if u.startswith("gsl_")))
 finish("check_symbols")

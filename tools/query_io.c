@@ -140,7 +140,7 @@ static cdist_status contact_to_result(cdist_status st, const cdist_contact *c, c
       CDQ_UNIT(CDQ_TYPE_##TA) ? CDQ_UNIT_B(TA, TB) : 0},                                           \
      CDQ_COLS(CDQ_TYPE_##TA) "  " CDQ_COLS(CDQ_TYPE_##TB), help},
 const cdq_kind cdq_kinds[] = {
-#define CD_KIND(KIND, number, name, letters, TA, TB, grad, methods, auto_method, gsl_methods, kernel, help)        \
+#define CD_KIND(KIND, number, name, letters, TA, TB, grad, methods, auto_method, kernel, help)        \
     CDQ_ROW(letters, name, TA, TB, objects_##name, number, help)
 #ifndef CDQ_NO_SWEPT
 #define CD_CONTACT_KIND(KIND, number, name, letters, TA, TB, A, B, core, swap, help)                             \

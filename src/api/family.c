@@ -10,9 +10,9 @@
 #define A CD_HAS(CDIST_METHOD_AUTO)
 
 const cdist__family cdist__family_table[CD_FAM_COUNT] = {
-#define CD_KIND(KIND, number, name, letters, TA, TB, grad, methods, auto_method, gsl_methods, ...)                    \
+#define CD_KIND(KIND, number, name, letters, TA, TB, grad, methods, auto_method, ...)                    \
     [CD_FAM_##KIND] = {methods, CDIST_METHOD_##auto_method},
-#define CD_CURVE_KIND(KIND, number, name, TB, methods, auto_method, gsl_methods)                                      \
+#define CD_CURVE_KIND(KIND, number, name, TB, methods, auto_method)                                      \
     [CD_FAM_##KIND] = {methods, CDIST_METHOD_##auto_method},
 #include "api/kinds.def"
 };

@@ -88,7 +88,7 @@ typedef struct kind_row {
 #define GRAD_FN_GRAD(name) g_##name
 #define GRAD_FN_NO_GRAD(name) NULL
 static const kind_row kinds[] = {
-#define CD_KIND(KIND, number, name, letters, TA, TB, grad, methods, auto_method, gsl_methods, kernel, help)          \
+#define CD_KIND(KIND, number, name, letters, TA, TB, grad, methods, auto_method, kernel, help)          \
     [CDIST_KIND_##KIND] = {#name, sizeof(TA), sizeof(TB), k_##name, GRAD_FN_##grad(name), kernel, 0, 0, PLAIN, PLAIN},
 #define CD_CURVE_KIND(KIND, number, name, TB, ...)                                                                   \
     [CDIST_KIND_##KIND] = {#name, sizeof(cdist_curve), sizeof(TB), k_##name, NULL, NO_KERNEL, 0, 0, PLAIN, PLAIN},

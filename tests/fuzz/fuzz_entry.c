@@ -15,10 +15,7 @@
  * layout (cc, dd, aa, TT, KK, SS, RR) succeed or fail together and give the same distance, pair count and
  * equidistant flag in both argument orders; a scene of tori from the same doubles reports
  * exactly the pairs within delta that the single queries report, to the bit, before and after
- * updates (check_scene); errors leave NaN, no pairs and a message; GSL's
- * error handler is never reached (an aborting one is installed) and GSL's solver is never
- * called under AUTO or ROBUST (interposed here). */
-#include <dlfcn.h>
+ * updates (check_scene); errors leave NaN, no pairs and a message. */
 #include <float.h>
 #include <math.h>
 #include <stdint.h>
@@ -36,37 +33,6 @@ static int cur_n;
  * families, listed in main); NULL under libFuzzer (everything aborts). */
 static const char *known_open;
 static long open_violations;
-
-/* GSL, reached through the library's own dependency (this program does not link GSL itself). */
-static void gsl_abort_handler(const char *reason, const char *file, int line, int gsl_errno)
-{
-    fprintf(stderr, "fuzz: GSL error handler reached: %s (%s:%d, %d)\n", reason, file, line, gsl_errno);
-    abort();
-}
-
-static void install_gsl_handler(void)
-{
-    typedef void (*handler_fn)(const char *, const char *, int, int);
-    typedef handler_fn (*set_fn)(handler_fn);
-    set_fn set = (set_fn)(uintptr_t)dlsym(RTLD_DEFAULT, "gsl_set_error_handler");
-    if (set) set(gsl_abort_handler);
-}
-
-/* Interposes the library's call of GSL's solver: only POLYNOMIAL (and ITERATION's fallbacks)
- * may reach it. */
-int gsl_poly_complex_solve(const double *a, size_t n, void *w, double *z);
-int gsl_poly_complex_solve(const double *a, size_t n, void *w, double *z)
-{
-    typedef int (*solve_fn)(const double *, size_t, void *, double *);
-    static solve_fn real;
-    cdist_method m = cdist_query_get_method(q);
-    if (m == CDIST_METHOD_AUTO || m == CDIST_METHOD_ROBUST) {
-        fprintf(stderr, "fuzz: GSL's solver called under method %d\n", (int)m);
-        abort();
-    }
-    if (!real) real = (solve_fn)(uintptr_t)dlsym(RTLD_NEXT, "gsl_poly_complex_solve");
-    return real ? real(a, n, w, z) : 1;
-}
 
 static int is_known_open(const char *kind)
 {
@@ -462,7 +428,6 @@ static void fuzz_input(const uint8_t *data, size_t size, int only)
 {
     if (!q) {
         q = cdist_query_new();
-        install_gsl_handler();
     }
     if (size < 1) return;
     /* Options from the first byte: method (bits 0-1), unit tolerance INFINITY (bit 2), curve
