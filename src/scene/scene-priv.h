@@ -305,8 +305,7 @@ cdist_status cdist__scene_broad_run(cdist_query *q, cdist__scene_broad *b, cdist
  * more than the keys, else by the radix sort alone. */
 cdist_status cdist__scene_sort_keys(cdist_query *q, const cdist_scene *s, uint64_t *key, size_t n);
 
-/* Exact answers and the narrow phase. */
-/* A failed pair's record (NaN distance and points). */
+/* Exact answers and the narrow phase. A failed pair's record (NaN distance and points): */
 void cdist__scene_pair_error(cdist_scene_pair *p, size_t i, size_t j, cdist_status st);
 /* The exact answer of the pair of cores (a first) into *p: 1 when it is to be reported
  * (distance <= lim, or a failure, reported always); *dist (when not NULL) its distance, NaN on
@@ -317,6 +316,7 @@ int cdist__scene_answer(cdist_query *h, cdist__core_obj ca, cdist__core_obj cb, 
 const char *cdist__scene_pair_message(cdist_status st);
 /* delta and the output array of a query that reports pairs. */
 cdist_status cdist__scene_check_delta(cdist_query *q, double delta, const void *out, size_t capacity);
+/* One narrow phase: its keys, its sink, its threads' handles and the chunks of its round. */
 typedef struct cdist__scene_narrow {
     cdist_scene *sa, *sb;            /* pair (i of sa, j of sb) */
     const cdist__scene_item *qo;     /* or (key of sa, the query object): j = SIZE_MAX */
