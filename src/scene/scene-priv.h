@@ -13,6 +13,7 @@
 #endif
 
 #include "base/mem.h"
+#include "base/pool.h"
 #include "internal.h"
 #include "swept/swept-priv.h"
 
@@ -205,6 +206,11 @@ static inline double cdist__box_gap(const cdist__box *a, const cdist__box *b)
     }
     return g * (1.0 - DBL_EPSILON);
 }
+/* The sum of a box's extents: which of two subtrees the walks split first. */
+static inline double cdist__box_size(const cdist__box *x)
+{
+    return (x->hi[0] - x->lo[0]) + (x->hi[1] - x->lo[1]) + (x->hi[2] - x->lo[2]);
+}
 /* The largest axis gap of two boxes (0 when they overlap) to the rounding of float: an order of
  * pairs of boxes, not a bound (cdist__box_near with a cdist__box_lim decides). */
 static inline float cdist__box_gap_f(const cdist__box *a, const cdist__box *b)
@@ -218,5 +224,130 @@ static inline float cdist__box_gap_f(const cdist__box *a, const cdist__box *b)
     return (float)cdist__box_gap(a, b);
 #endif
 }
+
+/* ---- The queries: the broad phase (scene_broad.c), the exact answers and the narrow phase
+ * (scene_pairs.c) and the threads of a call (scene_threads.c), which the per-pair queries
+ * (scene_jobs.c) and the searches (scene_search.c) use too. ---- */
+
+/* Keys answered by one thread at a time (narrow phase, linked pairs). */
+#define CD_SCENE_CHUNK 256
+
+/* Pair (i, j), i < j, left out by the filter of cdist_scene_set_groups: one group, or
+ * neighbours in one chain. */
+static inline int cdist__scene_skipped(const cdist_scene *s, size_t i, size_t j)
+{
+    if (!s->filter) return 0;
+    uint32_t ga = s->filter[2 * i], gb = s->filter[2 * j], ca = s->filter[2 * i + 1], cb = s->filter[2 * j + 1];
+    if (ga != 0 && ga == gb) return 1;
+    return j == i + 1 && ca != 0 && ca == cb;
+}
+
+/* The core of object id of s, of a query object. */
+static inline cdist__core_obj cdist__scene_core_of(const cdist_scene *s, size_t id)
+{
+    return cdist__scene_core(&s->obj[id], cdist__scene_arc(s, id));
+}
+static inline cdist__core_obj cdist__scene_item_core(const cdist__scene_item *x)
+{
+    return cdist__scene_core(&x->o, &x->arc);
+}
+
+/* The threads of one call: for the handle's thread count T, a pool of T - 1 threads
+ * (src/base/pool.h) started for the call, each running fn(ctx, t) once per
+ * cdist__scene_pool_run with its thread number t (the caller is t = 0). When the threads cannot
+ * be started the caller runs alone, with the same answers. */
+typedef struct cdist__scene_pool {
+    int threads; /* including the caller */
+    cdist__pool *workers;
+} cdist__scene_pool;
+
+void cdist__scene_pool_start(cdist__scene_pool *p, int threads);
+void cdist__scene_pool_run(cdist__scene_pool *p, void (*fn)(void *ctx, int t), void *ctx);
+void cdist__scene_pool_stop(cdist__scene_pool *p);
+/* The threads of a call: the handle's count (1 when their handles cannot be made ready), their
+ * handles, and one screening handle per thread (*screen NULL when those cannot be made). */
+int cdist__scene_call_threads(cdist_query *q, cdist_scene *s, cdist_query **handles, cdist_query ***screen);
+
+/* Broad phase: pairs within delta. */
+typedef struct cdist__scene_broad {
+    cdist_scene *sa, *sb;
+    int self;        /* one scene: pairs i < j, the skip filter applies */
+    float lim;       /* box test: max(delta, 0) (boxes bound the solids, not the signed distance),
+                      * rounded up (cdist__box_lim) */
+    double delta;
+    size_t box_pairs;
+    uint64_t *key;
+    size_t n, cap;
+    int oom;
+    int link;        /* linked pairs: rings only, the ball screen of link_excluded, no skip filter */
+    const double *reach; /* time of impact: by id, how far the object's solid moves; a pair is
+                          * kept when its distance may be <= delta + reach[i] + reach[j] */
+    int list;        /* the pair list of a moving scene: every pair whose boxes are within lim */
+    int screen;      /* the narrow phase screens pairs of circle cores (cdist__batch_screen), whose
+                      * first stage costs about what the bounds of cdist__scene_excluded cost and
+                      * decides far more pairs: those bounds are left out for them */
+} cdist__scene_broad;
+/* Append a key to b->key (b->oom set when memory runs out). */
+void cdist__scene_push(cdist__scene_broad *b, uint64_t key);
+/* The objects at tree positions pa of sa and pb of sb, ordered i < j within one scene (self):
+ * 0 when either is removed (the objects in a tree are live otherwise) or the pair is skipped.
+ * The objects themselves are not read. */
+int cdist__scene_pair_at(const cdist_scene *sa, const cdist_scene *sb, int self, int filter, uint32_t pa, uint32_t pb,
+                         size_t *pi, size_t *pj, const cdist__scene_obj **poa, const cdist__scene_obj **pob);
+/* The tree of s against itself from node x: each leaf (its positions first .. first + count - 1)
+ * to leaf(ctx, first, count), and each pair of sibling subtrees to cross(ctx, x, y). */
+void cdist__scene_self_walk(const cdist_scene *s, uint32_t x, void (*leaf)(void *, uint32_t, uint32_t),
+                            void (*cross)(void *, uint32_t, uint32_t), void *ctx);
+/* The candidate keys of sa x sb into sa->cand (unsorted), on the pool's threads. */
+cdist_status cdist__scene_broad_run(cdist_query *q, cdist__scene_broad *b, cdist__scene_pool *p, const char *what);
+/* Sort the candidate keys, whose i are ids of s (the scratch lives for the sort only: it would
+ * double the candidates' share of the scene's memory). By i first when the ids are not many
+ * more than the keys, else by the radix sort alone. */
+cdist_status cdist__scene_sort_keys(cdist_query *q, const cdist_scene *s, uint64_t *key, size_t n);
+
+/* Exact answers and the narrow phase. A failed pair's record (NaN distance and points): */
+void cdist__scene_pair_error(cdist_scene_pair *p, size_t i, size_t j, cdist_status st);
+/* The exact answer of the pair of cores (a first) into *p: 1 when it is to be reported
+ * (distance <= lim, or a failure, reported always); *dist (when not NULL) its distance, NaN on
+ * failure. */
+int cdist__scene_answer(cdist_query *h, cdist__core_obj ca, cdist__core_obj cb, size_t i, size_t j, double lim,
+                        cdist_scene_pair *p, double *dist);
+/* The message of a failed pair's status. */
+const char *cdist__scene_pair_message(cdist_status st);
+/* delta and the output array of a query that reports pairs. */
+cdist_status cdist__scene_check_delta(cdist_query *q, double delta, const void *out, size_t capacity);
+/* One narrow phase: its keys, its sink, its threads' handles and the chunks of its round. */
+typedef struct cdist__scene_narrow {
+    cdist_scene *sa, *sb;            /* pair (i of sa, j of sb) */
+    const cdist__scene_item *qo;     /* or (key of sa, the query object): j = SIZE_MAX */
+    const uint64_t *key;
+    size_t n;
+    double lim;
+    cdist_scene_pair *out;           /* sink: the caller's array ... */
+    size_t capacity;
+    cdist_scene_pair_fn fn;          /* ... or its callback */
+    void *user;
+    size_t count;                    /* pairs reported */
+    int stopped;                     /* the callback asked to stop */
+    cdist_status fail;               /* first failing pair (in key order) */
+    size_t fail_i, fail_j;
+    cdist_query **h;                 /* handle of thread t */
+    cdist_query **hs;                /* its screening handle (NULL: no screen) */
+    size_t round_lo, round_hi;       /* chunks of the current round */
+    atomic_size_t next;
+    cdist_scene_pair *buf;           /* CD_SCENE_CHUNK answers per chunk of the round */
+    size_t *buf_n;                   /* answers kept per chunk */
+    size_t *buf_full;                /* full queries per chunk */
+    size_t full;                     /* full queries in all */
+    /* The pair list of a moving scene (keys: its entries): each entry is decided here, from its
+     * bounds and the objects' motions first, and its bounds are renewed from what is learnt. */
+    float *lo, *hi;
+    size_t *buf_box, *buf_past;      /* per chunk: pairs whose boxes are near, past the bounds */
+    size_t box_pairs, past;
+} cdist__scene_narrow;
+/* Answer w->n keys with the pool's threads; reports go to the sink in key order. */
+cdist_status cdist__scene_run_narrow(cdist_query *q, cdist_scene *s, cdist__scene_narrow *w, cdist__scene_pool *p);
+/* The status of a finished narrow phase, with the message of its first failing pair. */
+cdist_status cdist__scene_narrow_status(cdist_query *q, const cdist__scene_narrow *w, const char *what);
 
 #endif

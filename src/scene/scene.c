@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 /* Scenes: object storage and validation, certified bounds, the tree (build, refit) and the
- * editing calls. The queries are in scene_query.c. */
+ * editing calls. The queries are in scene_broad.c, scene_pairs.c, scene_jobs.c and scene_search.c. */
 #include <math.h>
 #include <stddef.h>
 #include <pthread.h>
