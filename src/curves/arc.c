@@ -462,8 +462,7 @@ static cdist_status seg_eval(cdist_query *q, const void *ctx, double t, vec3 *p,
 static cdist_status segment_arc(cdist_query *q, const cdist_segment *sg, const cdist_arc *a, cdist_result *r)
 {
     cdist_status st;
-    if (!sg) return cdist__fail(q, CDIST_ERR_NULL_ARGUMENT, "segment pointer is NULL");
-    if ((st = cdist__check_point(q, &sg->p0, "segment p0")) || (st = cdist__check_point(q, &sg->p1, "segment p1"))) return st;
+    if ((st = cdist__check_segment(q, sg))) return st;
     arcx A;
     if ((st = check_arc(q, a, "arc", &A))) return st;
     vec3 origin = A.c.c;

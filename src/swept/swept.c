@@ -55,19 +55,11 @@ static cdist_status point_point(cdist_query *q, const cdist_vec3 *a, const cdist
     return cdist__leave(q, r, st, CDIST_METHOD_AUTO);
 }
 
-static cdist_status check_segment(cdist_query *q, const cdist_segment *s)
-{
-    cdist_status st = cdist__check_ptr(q, s, "segment");
-    if (st || (st = cdist__check_point(q, &s->p0, "segment p0")) || (st = cdist__check_point(q, &s->p1, "segment p1")))
-        return st;
-    return CDIST_OK;
-}
-
 static cdist_status point_segment(cdist_query *q, const cdist_vec3 *p, const cdist_segment *s, cdist_result *r)
 {
     cdist_status st = cdist__enter(q, r);
     if (st) return st;
-    if ((st = cdist__check_point(q, p, "point")) || (st = check_segment(q, s)))
+    if ((st = cdist__check_point(q, p, "point")) || (st = cdist__check_segment(q, s)))
         return cdist__leave(q, r, st, CDIST_METHOD_AUTO);
     vec3 d = v_sub(s->p1, s->p0);
     double t = segment_clamp(s->p0, d, *p);
@@ -111,7 +103,7 @@ static cdist_status segment_segment(cdist_query *q, const cdist_segment *a, cons
 {
     cdist_status st = cdist__enter(q, r);
     if (st) return st;
-    if ((st = check_segment(q, a)) || (st = check_segment(q, b)))
+    if ((st = cdist__check_segment(q, a)) || (st = cdist__check_segment(q, b)))
         return cdist__leave(q, r, st, CDIST_METHOD_AUTO);
     vec3 da = v_sub(a->p1, a->p0), db = v_sub(b->p1, b->p0);
     double best = INFINITY, bs = 0, bt = 0;
