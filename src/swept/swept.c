@@ -306,11 +306,7 @@ static vec3 touch_normal(const cdist__core_obj *a, const cdist__core_obj *b, vec
 
 static cdist_status check_radius(cdist_query *q, const cdist__core_obj *o, const char *what)
 {
-    if (!o->swept) return CDIST_OK;
-    cdist_status st = cdist__check_scalar(q, o->radius, what);
-    if (st) return st;
-    if (o->radius < 0.0) return cdist__fail(q, CDIST_ERR_NEGATIVE_RADIUS, "%s is negative (%g)", what, o->radius);
-    return CDIST_OK;
+    return o->swept ? cdist__check_radius(q, o->radius, what) : CDIST_OK;
 }
 
 /* The contact of a swept query from its core result r (the core query succeeded). FMA clone:
