@@ -75,20 +75,21 @@ double cdist__best_merge(cdist__best *dst, const cdist__best *src, vec3 shift, i
     return src->n ? src->c[0].d2 : INFINITY;
 }
 
-int cdist__best_ties(const cdist__best *b, double d2a, double d2b)
+/* Two squared distances tie when their distances agree within the tie tolerance of b. */
+static int best_ties(const cdist__best *b, double d2a, double d2b)
 {
     return fabs(sqrt(d2a) - sqrt(d2b)) <= CD_TIE_ULPS * DBL_EPSILON * b->scale;
 }
 
 void cdist__best_settle_equidistant(cdist__best *b, double eq_d2)
 {
-    if (isfinite(eq_d2) && b->n > 0 && (eq_d2 <= b->c[0].d2 || cdist__best_ties(b, eq_d2, b->c[0].d2)))
+    if (isfinite(eq_d2) && b->n > 0 && (eq_d2 <= b->c[0].d2 || best_ties(b, eq_d2, b->c[0].d2)))
         b->equidistant = 1;
 }
 
 void cdist__best_convex_contact(cdist__best *b)
 {
-    if (b->n >= 2 && cdist__best_ties(b, b->c[0].d2, b->c[1].d2) &&
+    if (b->n >= 2 && best_ties(b, b->c[0].d2, b->c[1].d2) &&
         sqrt(b->c[1].d2) <= CD_TIE_ULPS * DBL_EPSILON * b->scale)
         b->equidistant = 1;
 }

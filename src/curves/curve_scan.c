@@ -27,7 +27,7 @@ void cdist__cs_coll_offer(cdist__cs_coll *k, double d2, vec3 p0, vec3 p1, double
 
 static double tie_tol(const cdist__cs_coll *k) { return CD_TIE_ULPS * DBL_EPSILON * k->b.scale; }
 
-void cdist__cs_coll_finish(cdist__cs_coll *k)
+static void coll_finish(cdist__cs_coll *k)
 {
     cdist__best *b = &k->b;
     if (b->n == 0) return;
@@ -42,7 +42,7 @@ void cdist__cs_coll_finish(cdist__cs_coll *k)
 
 cdist_status cdist__cs_coll_result(cdist__cs_coll *k, double up, vec3 origin, cdist_result *r)
 {
-    cdist__cs_coll_finish(k);
+    coll_finish(k);
     if (k->b.n == 0) {
         r->distance = NAN; /* no candidate: cdist__leave reports an internal failure */
         return CDIST_OK;
