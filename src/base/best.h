@@ -38,6 +38,8 @@ CD_INLINE void cdist__best_init(cdist__best *b, double scale)
     b->n = 0;
     b->equidistant = 0;
 }
+/* The tie tolerance of b: two distances closer than this are a tie. */
+CD_INLINE double cdist__best_tie_tol(const cdist__best *b) { return CD_TIE_ULPS * DBL_EPSILON * b->scale; }
 /* Whether the result would be flagged equidistant (the whole configuration, or the best
  * candidate stands for infinitely many pairs). */
 static inline int cdist__best_is_equidistant(const cdist__best *b)

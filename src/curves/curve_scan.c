@@ -25,19 +25,17 @@ void cdist__cs_coll_offer(cdist__cs_coll *k, double d2, vec3 p0, vec3 p1, double
     if (eq && d2 < k->eq_d2) k->eq_d2 = d2;
 }
 
-static double tie_tol(const cdist__cs_coll *k) { return CD_TIE_ULPS * DBL_EPSILON * k->b.scale; }
-
 static void coll_finish(cdist__cs_coll *k)
 {
     cdist__best *b = &k->b;
     if (b->n == 0) return;
     double d0 = sqrt(b->c[0].d2);
     /* A candidate with infinitely many closest pairs (a point on the circle's axis, ...). */
-    if (k->eq_d2 < INFINITY && sqrt(k->eq_d2) - d0 <= tie_tol(k)) b->equidistant = 1;
+    if (k->eq_d2 < INFINITY && sqrt(k->eq_d2) - d0 <= cdist__best_tie_tol(&k->b)) b->equidistant = 1;
     /* On a scan of a constant function (coaxial or concentric arcs...), three distinct pairs at
      * the same distance mean the continuum. (Not in general: a curve may cross a circle at
      * three isolated points.) */
-    if (k->flat_ties && b->n >= 3 && sqrt(b->c[2].d2) - d0 <= tie_tol(k)) b->equidistant = 1;
+    if (k->flat_ties && b->n >= 3 && sqrt(b->c[2].d2) - d0 <= cdist__best_tie_tol(&k->b)) b->equidistant = 1;
 }
 
 cdist_status cdist__cs_coll_result(cdist__cs_coll *k, double up, vec3 origin, cdist_result *r)
@@ -375,7 +373,7 @@ cdist_status cdist__cs_flat_check(cdist__cs_scan *s, double t0, double t1, doubl
         sample x;
         cdist_status st = eval(s, u, &x);
         if (st) return st;
-        if (sqrt(x.f) - d0 <= tie_tol(k)) {
+        if (sqrt(x.f) - d0 <= cdist__best_tie_tol(&k->b)) {
             k->b.equidistant = 1;
             break;
         }
