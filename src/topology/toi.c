@@ -83,16 +83,12 @@ cdist_status cdist_shape_at(const cdist_shape *s, const cdist_motion *m, double 
 
 static cdist__core_obj shape_core(const cdist_shape *s)
 {
-    cdist__core_obj o = {CD_CORE_POINT, &s->u.sphere.center, s->u.sphere.radius, 1};
     switch (s->type) {
-    case CDIST_SHAPE_CAPSULE: o.type = CD_CORE_SEGMENT; o.obj = &s->u.capsule.segment; o.radius = s->u.capsule.radius; break;
-    case CDIST_SHAPE_TORUS: o.type = CD_CORE_CIRCLE; o.obj = &s->u.torus.circle; o.radius = s->u.torus.tube_radius; break;
-    case CDIST_SHAPE_ROUNDED_DISK:
-        o.type = CD_CORE_DISK; o.obj = &s->u.rounded_disk.disk; o.radius = s->u.rounded_disk.radius;
-        break;
-    default: break;
+    case CDIST_SHAPE_CAPSULE: return CD_SWEPT_CAPSULE(&s->u.capsule);
+    case CDIST_SHAPE_TORUS: return CD_SWEPT_TORUS(&s->u.torus);
+    case CDIST_SHAPE_ROUNDED_DISK: return CD_SWEPT_RDISK(&s->u.rounded_disk);
+    default: return CD_SWEPT_SPHERE(&s->u.sphere);
     }
-    return o;
 }
 
 /* The largest distance of the shape's core from point c (a disk's: its rim's). */
