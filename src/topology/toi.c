@@ -55,14 +55,12 @@ static void shape_move(const cdist_shape *s, const pose *p, cdist_shape *out)
         out->u.capsule.segment.p0 = move_point(p, s->u.capsule.segment.p0);
         out->u.capsule.segment.p1 = move_point(p, s->u.capsule.segment.p1);
         break;
-    case CDIST_SHAPE_TORUS:
-        out->u.torus.circle.center = move_point(p, s->u.torus.circle.center);
-        out->u.torus.circle.normal = move_dir(p, s->u.torus.circle.normal);
+    default: { /* the torus's circle, the rounded disk's disk */
+        cdist_circle *k = s->type == CDIST_SHAPE_TORUS ? &out->u.torus.circle : &out->u.rounded_disk.disk;
+        k->center = move_point(p, k->center);
+        k->normal = move_dir(p, k->normal);
         break;
-    default:
-        out->u.rounded_disk.disk.center = move_point(p, s->u.rounded_disk.disk.center);
-        out->u.rounded_disk.disk.normal = move_dir(p, s->u.rounded_disk.disk.normal);
-        break;
+    }
     }
 }
 
