@@ -107,6 +107,8 @@ static inline cdist_status cdist__check_point(cdist_query *q, const cdist_vec3 *
     return cdist__check_point_slow(q, p, what);
 }
 cdist_status cdist__check_scalar(cdist_query *q, double x, const char *what);
+/* A radius: a scalar as above and not negative. */
+cdist_status cdist__check_radius(cdist_query *q, double r, const char *what);
 /* A direction or normal: finite, non-zero, unit within the handle's tolerance (or any length
  * when unit_required is 0). Writes the unit vector and the original length. */
 cdist_status cdist__check_direction(cdist_query *q, const cdist_vec3 *d, const char *what, int unit_required,

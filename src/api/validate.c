@@ -17,6 +17,14 @@ cdist_status cdist__check_scalar(cdist_query *q, double x, const char *what)
     return CDIST_OK;
 }
 
+cdist_status cdist__check_radius(cdist_query *q, double r, const char *what)
+{
+    cdist_status st = cdist__check_scalar(q, r, what);
+    if (st) return st;
+    if (r < 0.0) return cdist__fail(q, CDIST_ERR_NEGATIVE_RADIUS, "%s is negative (%g)", what, r);
+    return CDIST_OK;
+}
+
 /* Why a point (not NULL) is refused: not finite, or out of range; CDIST_OK when neither. */
 static cdist_status point_problem(cdist_query *q, const cdist_vec3 *p, const char *what)
 {
@@ -88,9 +96,8 @@ static cdist_status circle_slow(cdist_query *q, const cdist_circle *c, const cha
     cdist_status st = direction_length(q, &c->normal, buf, 1, &out->n, NULL);
     if (st) return st;
     snprintf(buf, sizeof buf, "%s radius", what);
-    st = cdist__check_scalar(q, c->radius, buf);
+    st = cdist__check_radius(q, c->radius, buf);
     if (st) return st;
-    if (c->radius < 0.0) return cdist__fail(q, CDIST_ERR_NEGATIVE_RADIUS, "%s radius is negative (%g)", what, c->radius);
     out->c = c->center;
     out->r = c->radius;
     return CDIST_OK;

@@ -52,7 +52,7 @@ void cdist__best_to_result(const cdist__best *b, vec3 offset, int swap, cdist_re
     int np = 1;
     if (b->n > 1 && !r->equidistant) {
         double d1 = sqrt(b->c[1].d2);
-        if (d1 - d0 <= CD_TIE_ULPS * DBL_EPSILON * b->scale) np = 2;
+        if (d1 - d0 <= cdist__best_tie_tol(b)) np = 2;
     }
     r->num_pairs = np;
     for (int i = 0; i < np; i++) {
@@ -75,20 +75,21 @@ double cdist__best_merge(cdist__best *dst, const cdist__best *src, vec3 shift, i
     return src->n ? src->c[0].d2 : INFINITY;
 }
 
-int cdist__best_ties(const cdist__best *b, double d2a, double d2b)
+/* Two squared distances tie when their distances agree within the tie tolerance of b. */
+static int best_ties(const cdist__best *b, double d2a, double d2b)
 {
-    return fabs(sqrt(d2a) - sqrt(d2b)) <= CD_TIE_ULPS * DBL_EPSILON * b->scale;
+    return fabs(sqrt(d2a) - sqrt(d2b)) <= cdist__best_tie_tol(b);
 }
 
 void cdist__best_settle_equidistant(cdist__best *b, double eq_d2)
 {
-    if (isfinite(eq_d2) && b->n > 0 && (eq_d2 <= b->c[0].d2 || cdist__best_ties(b, eq_d2, b->c[0].d2)))
+    if (isfinite(eq_d2) && b->n > 0 && (eq_d2 <= b->c[0].d2 || best_ties(b, eq_d2, b->c[0].d2)))
         b->equidistant = 1;
 }
 
 void cdist__best_convex_contact(cdist__best *b)
 {
-    if (b->n >= 2 && cdist__best_ties(b, b->c[0].d2, b->c[1].d2) &&
-        sqrt(b->c[1].d2) <= CD_TIE_ULPS * DBL_EPSILON * b->scale)
+    if (b->n >= 2 && best_ties(b, b->c[0].d2, b->c[1].d2) &&
+        sqrt(b->c[1].d2) <= cdist__best_tie_tol(b))
         b->equidistant = 1;
 }

@@ -38,6 +38,8 @@ CD_INLINE void cdist__best_init(cdist__best *b, double scale)
     b->n = 0;
     b->equidistant = 0;
 }
+/* The tie tolerance of b: two distances closer than this are a tie. */
+CD_INLINE double cdist__best_tie_tol(const cdist__best *b) { return CD_TIE_ULPS * DBL_EPSILON * b->scale; }
 /* Whether the result would be flagged equidistant (the whole configuration, or the best
  * candidate stands for infinitely many pairs). */
 static inline int cdist__best_is_equidistant(const cdist__best *b)
@@ -79,8 +81,6 @@ void cdist__best_to_result(const cdist__best *b, vec3 offset, int swap, cdist_re
 /* Copy the candidates of src into dst; points shifted by `shift`; swap exchanges the roles of
  * the two objects. Returns the squared distance of src's best (INFINITY when empty). */
 double cdist__best_merge(cdist__best *dst, const cdist__best *src, vec3 shift, int swap);
-/* Two squared distances tie when their distances agree within the tie tolerance of b. */
-int cdist__best_ties(const cdist__best *b, double d2a, double d2b);
 /* An equidistant sub-result (squared distance eq_d2) makes the whole result equidistant only
  * when it attains the global minimum. */
 void cdist__best_settle_equidistant(cdist__best *b, double eq_d2);

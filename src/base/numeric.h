@@ -63,14 +63,6 @@ static inline double cdist__two_sum(double a, double b, double *lo)
 /* a - b = s + *lo exactly. */
 static inline double cdist__two_diff(double a, double b, double *lo) { return cdist__two_sum(a, -b, lo); }
 
-/* a * b = p + *lo exactly (needs a correctly rounded fma). */
-static inline double cdist__two_prod(double a, double b, double *lo)
-{
-    double p = a * b;
-    *lo = fma(a, b, -p);
-    return p;
-}
-
 /* ---- angles ---- */
 
 #define CD_TWO_PI 6.283185307179586476925286766559

@@ -20,17 +20,6 @@ cdist__poly_ws *cdist__poly_ws_new(void) { return calloc(1, sizeof(cdist__poly_w
 
 void cdist__poly_ws_free(cdist__poly_ws *ws) { free(ws); }
 
-double cdist__poly_eval(const double *coef, int degree, double x, double *deriv)
-{
-    double p = coef[degree], dp = 0.0;
-    for (int i = degree - 1; i >= 0; i--) {
-        dp = fma(dp, x, p);
-        p = fma(p, x, coef[i]);
-    }
-    if (deriv) *deriv = dp;
-    return p;
-}
-
 static void sort_ascending(double *x, int n)
 {
     for (int i = 1; i < n; i++) {
@@ -49,10 +38,17 @@ typedef struct poly_ref {
     int deg;
 } poly_ref;
 
+/* Horner evaluation of the polynomial and its derivative (*df): the polishing's callback. */
 static double poly_fdf(const void *ctx, double x, double *df)
 {
     const poly_ref *p = ctx;
-    return cdist__poly_eval(p->a, p->deg, x, df);
+    double v = p->a[p->deg], dv = 0.0;
+    for (int i = p->deg - 1; i >= 0; i--) {
+        dv = fma(dv, x, v);
+        v = fma(v, x, p->a[i]);
+    }
+    *df = dv;
+    return v;
 }
 
 /* A few Newton steps on the polynomial; a step is kept only while it reduces |p|. */

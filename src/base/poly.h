@@ -35,7 +35,5 @@ static inline void cdist__poly_mul(const double *a, int da, const double *b, int
         for (int j = 0; j <= db; j++) out[i + j] = fused ? fma(a[i], b[j], out[i + j]) : out[i + j] + a[i] * b[j];
 }
 
-/* Horner evaluation of the polynomial and its derivative. */
-double cdist__poly_eval(const double *coef, int degree, double x, double *deriv);
 
 #endif

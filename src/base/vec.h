@@ -46,6 +46,14 @@ CD_INLINE vec3 v_unit_or_zero(vec3 a)
     a = v_scale(1.0 / m, a);
     return v_scale(1.0 / v_norm(a), a);
 }
+/* |a| from a scaled to its largest component's power of two (exact: the same value wherever the
+ * squares are normal doubles), so that the squares of a tiny or huge a neither underflow nor
+ * overflow; 0 for a = 0. */
+CD_INLINE double v_norm_scaled(vec3 a)
+{
+    int e = cdist__scale_exponent(v_maxabs(a));
+    return v_norm(v_scale(cdist__pow2(-e), a)) * cdist__pow2(e);
+}
 CD_INLINE int v_isfinite(vec3 a) { return isfinite(a.x) && isfinite(a.y) && isfinite(a.z); }
 
 /* The documented basis rule of cdist_circle_basis(): k = index of the smallest |n_k| (first on

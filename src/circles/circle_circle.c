@@ -72,7 +72,7 @@ static int arcs_rise(const cdist__circle *c, const cdist__circle *other, double 
  * represents it. */
 static void cc_same_basin_filter(const cdist__circle *c0, const cdist__circle *c1, cdist__best *b)
 {
-    double tie = CD_TIE_ULPS * DBL_EPSILON * b->scale;
+    double tie = cdist__best_tie_tol(b);
     while (b->n >= 2 && !cdist__best_is_equidistant(b)) {
         double dbest = sqrt(b->c[0].d2);
         if (sqrt(b->c[1].d2) - dbest > tie) return;

@@ -294,9 +294,21 @@ static cdist_status arc_minima(cdist__cs_scan *s, const arcx *X, const cdist__ci
     return st;
 }
 
-static double arc_scale(const arcx *a, const cdist__circle *c)
+/* The frame of arc A and circle C (A's circle, or another arc's): A's centre moves to the
+ * origin (*origin, its old place) and both are scaled by 2^-e (exact), e from the problem scale;
+ * the collector k starts at their scale. Returns e. */
+static int arc_frame(arcx *A, cdist__circle *C, vec3 *origin, cdist__cs_coll *k)
 {
-    return fmax(fmax(a->c.r, c->r), v_dist(a->c.c, c->c));
+    *origin = A->c.c;
+    A->c.c = v3(0, 0, 0);
+    C->c = v_sub(C->c, *origin);
+    int e = cdist__scale_exponent(fmax(fmax(A->c.r, C->r), v_maxabs(C->c)));
+    double down = cdist__pow2(-e);
+    A->c.r *= down;
+    C->r *= down;
+    C->c = v_scale(down, C->c);
+    cdist__cs_coll_init(k, fmax(fmax(A->c.r, C->r), v_dist(A->c.c, C->c)));
+    return e;
 }
 
 /* ---- arc to circle / disk ---- */
@@ -320,16 +332,9 @@ static cdist_status arc_target(cdist_query *q, const void *obj, const cdist_circ
     arcx A;
     cdist__circle C;
     if ((st = check_arc(q, a, "arc", &A)) || (st = cdist__check_circle(q, c, disk ? "disk" : "circle", &C))) return st;
-    vec3 origin = A.c.c;
-    A.c.c = v3(0, 0, 0);
-    C.c = v_sub(C.c, origin);
-    int e = cdist__scale_exponent(fmax(fmax(A.c.r, C.r), v_maxabs(C.c)));
-    double down = cdist__pow2(-e);
-    A.c.r *= down;
-    C.r *= down;
-    C.c = v_scale(down, C.c);
+    vec3 origin;
     cdist__cs_coll k;
-    cdist__cs_coll_init(&k, arc_scale(&A, &C));
+    int e = arc_frame(&A, &C, &origin, &k);
     if (A.c.r == 0.0) {
         cdist__cs_offer_point(&k, A.c.c, NAN, &C, disk, 0);
     } else {
@@ -403,16 +408,9 @@ static cdist_status arc_arc(cdist_query *q, const cdist_arc *a0, const cdist_arc
     cdist_status st;
     arcx A, B;
     if ((st = check_arc(q, a0, "first arc", &A)) || (st = check_arc(q, a1, "second arc", &B))) return st;
-    vec3 origin = A.c.c;
-    A.c.c = v3(0, 0, 0);
-    B.c.c = v_sub(B.c.c, origin);
-    int e = cdist__scale_exponent(fmax(fmax(A.c.r, B.c.r), v_maxabs(B.c.c)));
-    double down = cdist__pow2(-e);
-    A.c.r *= down;
-    B.c.r *= down;
-    B.c.c = v_scale(down, B.c.c);
+    vec3 origin;
     cdist__cs_coll k;
-    cdist__cs_coll_init(&k, arc_scale(&A, &B.c));
+    int e = arc_frame(&A, &B.c, &origin, &k);
     /* The four endpoint-to-arc distances (a radius-0 arc is its centre). */
     if (A.c.r == 0.0) offer_point_arc(&k, A.c.c, NAN, &B, 1, 1);
     else {
@@ -462,8 +460,7 @@ static cdist_status seg_eval(cdist_query *q, const void *ctx, double t, vec3 *p,
 static cdist_status segment_arc(cdist_query *q, const cdist_segment *sg, const cdist_arc *a, cdist_result *r)
 {
     cdist_status st;
-    if (!sg) return cdist__fail(q, CDIST_ERR_NULL_ARGUMENT, "segment pointer is NULL");
-    if ((st = cdist__check_point(q, &sg->p0, "segment p0")) || (st = cdist__check_point(q, &sg->p1, "segment p1"))) return st;
+    if ((st = cdist__check_segment(q, sg))) return st;
     arcx A;
     if ((st = check_arc(q, a, "arc", &A))) return st;
     vec3 origin = A.c.c;

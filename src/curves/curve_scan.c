@@ -25,24 +25,22 @@ void cdist__cs_coll_offer(cdist__cs_coll *k, double d2, vec3 p0, vec3 p1, double
     if (eq && d2 < k->eq_d2) k->eq_d2 = d2;
 }
 
-static double tie_tol(const cdist__cs_coll *k) { return CD_TIE_ULPS * DBL_EPSILON * k->b.scale; }
-
-void cdist__cs_coll_finish(cdist__cs_coll *k)
+static void coll_finish(cdist__cs_coll *k)
 {
     cdist__best *b = &k->b;
     if (b->n == 0) return;
     double d0 = sqrt(b->c[0].d2);
     /* A candidate with infinitely many closest pairs (a point on the circle's axis, ...). */
-    if (k->eq_d2 < INFINITY && sqrt(k->eq_d2) - d0 <= tie_tol(k)) b->equidistant = 1;
+    if (k->eq_d2 < INFINITY && sqrt(k->eq_d2) - d0 <= cdist__best_tie_tol(&k->b)) b->equidistant = 1;
     /* On a scan of a constant function (coaxial or concentric arcs...), three distinct pairs at
      * the same distance mean the continuum. (Not in general: a curve may cross a circle at
      * three isolated points.) */
-    if (k->flat_ties && b->n >= 3 && sqrt(b->c[2].d2) - d0 <= tie_tol(k)) b->equidistant = 1;
+    if (k->flat_ties && b->n >= 3 && sqrt(b->c[2].d2) - d0 <= cdist__best_tie_tol(&k->b)) b->equidistant = 1;
 }
 
 cdist_status cdist__cs_coll_result(cdist__cs_coll *k, double up, vec3 origin, cdist_result *r)
 {
-    cdist__cs_coll_finish(k);
+    coll_finish(k);
     if (k->b.n == 0) {
         r->distance = NAN; /* no candidate: cdist__leave reports an internal failure */
         return CDIST_OK;
@@ -54,13 +52,7 @@ cdist_status cdist__cs_coll_result(cdist__cs_coll *k, double up, vec3 origin, cd
     r->distance *= up;
     r->sqr_distance = (r->sqr_distance * up) * up;
     for (int i = 0; i < r->num_pairs; i++)
-        for (int j = 0; j < 2; j++) {
-            cdist_vec3 *P = &r->pairs[i].point[j];
-            vec3 w = v_axpy(origin, up, v3(P->x, P->y, P->z));
-            P->x = w.x;
-            P->y = w.y;
-            P->z = w.z;
-        }
+        for (int j = 0; j < 2; j++) r->pairs[i].point[j] = v_axpy(origin, up, r->pairs[i].point[j]);
     return CDIST_OK;
 }
 
@@ -266,21 +258,6 @@ static cdist_status dip_search(const cdist__cs_scan *s, double a, double b, doub
     return e.st ? e.st : refine_offer(s, a, ga, tm, sg * vm);
 }
 
-/* The curve crosses the disk's plane between a and b (ha, hb of opposite signs): locate the
- * crossing on h itself and offer it. Where the crossing is inside the disk the distance is 0, a
- * minimum that g = h h' shows only at the rounding level of g when the curve lies nearly flat
- * (h' tiny), so the g brackets cannot be trusted to see it. */
-static cdist_status crossing_offer(const cdist__cs_scan *s, double a, double ha, double b, double hb)
-{
-    return root_offer(s, CS_F_H, a, ha, b, hb);
-}
-
-/* Locate the sign change of rho - r between a and b and offer the partition point. */
-static cdist_status partition_offer(const cdist__cs_scan *s, double a, double da, double b, double db)
-{
-    return root_offer(s, CS_F_RIM, a, da, b, db);
-}
-
 /* The curve's closest approach to the circle's axis in [a, b] (golden section on rho), offered:
  * where the curve crosses the axis F has a kink, and in a flat configuration the kink rounded by
  * a near miss is a dip as narrow as the miss distance, invisible to the samples. */
@@ -308,11 +285,14 @@ cdist_status cdist__cs_scan_run(cdist__cs_scan *s, double t0, double t1, int n)
     for (int i = 0; i <= n; i++) {
         sample x;
         if ((st = eval_uncharged(s, cdist__cs_t_at(t0, t1, i, n), &x))) return st;
-        /* Disk: every plane crossing, wherever it is (including the end intervals). */
+        /* Disk: every plane crossing, wherever it is (including the end intervals), located on
+         * h itself. Where the crossing is inside the disk the distance is 0, a minimum that
+         * g = h h' shows only at the rounding level of g when the curve lies nearly flat (h'
+         * tiny), so the g brackets cannot be trusted to see it. */
         if (s->disk) {
             if (x.h == 0.0) offer_sample(s, cdist__cs_t_at(t0, t1, i, n), &x);
             else if (i > 0 && (x.h > 0.0) != (h_prev > 0.0) && h_prev != 0.0 &&
-                     (st = crossing_offer(s, cdist__cs_t_at(t0, t1, i - 1, n), h_prev, cdist__cs_t_at(t0, t1, i, n), x.h)))
+                     (st = root_offer(s, CS_F_H, cdist__cs_t_at(t0, t1, i - 1, n), h_prev, cdist__cs_t_at(t0, t1, i, n), x.h)))
                 return st;
             h_prev = x.h;
         }
@@ -343,8 +323,9 @@ cdist_status cdist__cs_scan_run(cdist__cs_scan *s, double t0, double t1, int n)
             if (G[i] < 0 && G[i + 1] > 0 && (!(zero && zr) || varies)) {
                 if ((st = refine_offer(s, t, G[i], cdist__cs_t_at(t0, t1, i + 1, n), G[i + 1]))) return st;
             }
+            /* the rim's partition point: the sign change of rho - r */
             if (s->disk && ((R[i] > 0) != (R[i + 1] > 0))) {
-                if ((st = partition_offer(s, t, R[i], cdist__cs_t_at(t0, t1, i + 1, n), R[i + 1]))) return st;
+                if ((st = root_offer(s, CS_F_RIM, t, R[i], cdist__cs_t_at(t0, t1, i + 1, n), R[i + 1]))) return st;
             }
         }
         if (zero) continue;
@@ -392,7 +373,7 @@ cdist_status cdist__cs_flat_check(cdist__cs_scan *s, double t0, double t1, doubl
         sample x;
         cdist_status st = eval(s, u, &x);
         if (st) return st;
-        if (sqrt(x.f) - d0 <= tie_tol(k)) {
+        if (sqrt(x.f) - d0 <= cdist__best_tie_tol(&k->b)) {
             k->b.equidistant = 1;
             break;
         }

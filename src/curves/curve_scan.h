@@ -19,12 +19,11 @@ typedef struct cdist__cs_coll {
 
 void cdist__cs_coll_init(cdist__cs_coll *k, double scale);
 void cdist__cs_coll_offer(cdist__cs_coll *k, double d2, vec3 p0, vec3 p1, double a0, double a1, int eq);
-/* Sets b.equidistant from the equidistant candidates and (flat_ties) from three-way ties. */
-void cdist__cs_coll_finish(cdist__cs_coll *k);
 /* The families work on a copy of the problem scaled by down = 2^-e (cdist__scale_exponent of its
  * scale: exact, and squared distances neither underflow nor overflow). Unscale the collector by
- * up = 2^e, finish it (cdist__cs_coll_finish) and write the result, points moved by origin;
- * returns CDIST_OK (the query's status from here on). */
+ * up = 2^e, finish it (b.equidistant from the equidistant candidates and, with flat_ties, from
+ * three-way ties) and write the result, points moved by origin; returns CDIST_OK (the query's
+ * status from here on). */
 cdist_status cdist__cs_coll_result(cdist__cs_coll *k, double up, vec3 origin, cdist_result *r);
 /* Offer point p (any frame) with parameter t against circle/disk c (c->c in the same frame);
  * swap puts p second. */

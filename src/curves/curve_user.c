@@ -31,15 +31,17 @@ static cdist_status user_eval(cdist_query *q, const void *ctx, double t, vec3 *p
     return CDIST_OK;
 }
 
-static cdist_status curve_query(cdist_query *q, cdist_curve_fn f, void *user, double t0, double t1,
-                                const cdist_circle *c, cdist_result *r, int disk)
+static cdist_status curve_query(cdist_query *q, const void *obj, const cdist_circle *c, cdist_result *r, int disk)
 {
+    const cdist_curve *cv = obj;
+    cdist_curve_fn f = cv->fn;
+    double t0 = cv->t0, t1 = cv->t1;
     cdist_status st;
     if (!f) return cdist__fail(q, CDIST_ERR_NULL_ARGUMENT, "curve callback is NULL");
     cdist__circle cc;
     if ((st = cdist__check_circle(q, c, disk ? "disk" : "circle", &cc))) return st;
     if ((st = cdist__cs_check_interval(q, t0, t1, "curve"))) return st;
-    user_curve u = {f, user, cc.c, 1.0};
+    user_curve u = {f, cv->user, cc.c, 1.0};
     vec3 origin = cc.c;
     cc.c = v3(0, 0, 0);
     /* The scale of the frame from a few positions (the callback's positions are only known as
@@ -63,15 +65,13 @@ static cdist_status curve_query(cdist_query *q, cdist_curve_fn f, void *user, do
 cdist_status cdist_curve_circle(cdist_query *q, cdist_curve_fn f, void *user, double t0, double t1,
                                 const cdist_circle *c, cdist_result *r)
 {
-    cdist_status st = cdist__enter(q, r);
-    if (st) return st;
-    return cdist__leave(q, r, curve_query(q, f, user, t0, t1, c, r, 0), CDIST_METHOD_ROBUST);
+    const cdist_curve cv = {f, user, t0, t1};
+    return cdist__cs_entry(q, curve_query, &cv, c, r, 0);
 }
 
 cdist_status cdist_curve_disk(cdist_query *q, cdist_curve_fn f, void *user, double t0, double t1,
                               const cdist_circle *d, cdist_result *r)
 {
-    cdist_status st = cdist__enter(q, r);
-    if (st) return st;
-    return cdist__leave(q, r, curve_query(q, f, user, t0, t1, d, r, 1), CDIST_METHOD_ROBUST);
+    const cdist_curve cv = {f, user, t0, t1};
+    return cdist__cs_entry(q, curve_query, &cv, d, r, 1);
 }

@@ -301,7 +301,7 @@ CD_INLINE cdist_status linear_circle(cdist_query *q, cdist_method method, vec3 B
     for (int i = 0; i < nr; i++) offer_model(&x, &m, roots[i]);
     if (isfinite(tmin)) offer_end(&x, tmin);
     if (isfinite(tmax)) offer_end(&x, tmax);
-    merge_basins(&x, &m, CD_TIE_ULPS * EPS * b->scale);
+    merge_basins(&x, &m, cdist__best_tie_tol(b));
 
 done:;
     /* Offer everything; an on-axis candidate makes the result equidistant only if it ends up

@@ -51,10 +51,8 @@ static inline int cdist__lines_scale_exponent(vec3 origin, const vec3 *p1, const
  * its largest component (its squares may be subnormal too). */
 static inline double cdist__lines_scaled_length(double len, vec3 Ds, double down)
 {
-    double m = v_maxabs(Ds);
-    if (len >= 0x1p-1022 || !(m > 0.0)) return len * down;
-    int k = cdist__scale_exponent(m);
-    return v_norm(v_scale(cdist__pow2(-k), Ds)) * cdist__pow2(k);
+    if (len >= 0x1p-1022 || !(v_maxabs(Ds) > 0.0)) return len * down;
+    return v_norm_scaled(Ds);
 }
 
 /* The core of a line or ray query: origin + t Ds, t in [tmin, tmax] (origin, Ds and c scaled

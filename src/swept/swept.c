@@ -35,15 +35,6 @@ static double segment_clamp(vec3 p0, vec3 d, vec3 p)
     return s < 0.0 ? 0.0 : (s > 1.0 ? 1.0 : s);
 }
 
-/* |a - b| in units of the difference's largest component (a power of two: exact, the same
- * value wherever the squares are normal doubles), so that tiny distances do not underflow. */
-static double scaled_dist(vec3 a, vec3 b)
-{
-    vec3 d = v_sub(a, b);
-    int e = cdist__scale_exponent(v_maxabs(d));
-    return v_norm(v_scale(cdist__pow2(-e), d)) * cdist__pow2(e);
-}
-
 static vec3 segment_at(vec3 p0, vec3 d, double s) { return v_axpy(p0, s, d); }
 
 static cdist_status point_point(cdist_query *q, const cdist_vec3 *a, const cdist_vec3 *b, cdist_result *r)
@@ -51,28 +42,20 @@ static cdist_status point_point(cdist_query *q, const cdist_vec3 *a, const cdist
     cdist_status st = cdist__enter(q, r);
     if (st) return st;
     if (!(st = cdist__check_point(q, a, "point")) && !(st = cdist__check_point(q, b, "point")))
-        result_fill(r, scaled_dist(*a, *b), 0, *a, *b, NAN, NAN);
+        result_fill(r, v_norm_scaled(v_sub(*a, *b)), 0, *a, *b, NAN, NAN);
     return cdist__leave(q, r, st, CDIST_METHOD_AUTO);
-}
-
-static cdist_status check_segment(cdist_query *q, const cdist_segment *s)
-{
-    cdist_status st = cdist__check_ptr(q, s, "segment");
-    if (st || (st = cdist__check_point(q, &s->p0, "segment p0")) || (st = cdist__check_point(q, &s->p1, "segment p1")))
-        return st;
-    return CDIST_OK;
 }
 
 static cdist_status point_segment(cdist_query *q, const cdist_vec3 *p, const cdist_segment *s, cdist_result *r)
 {
     cdist_status st = cdist__enter(q, r);
     if (st) return st;
-    if ((st = cdist__check_point(q, p, "point")) || (st = check_segment(q, s)))
+    if ((st = cdist__check_point(q, p, "point")) || (st = cdist__check_segment(q, s)))
         return cdist__leave(q, r, st, CDIST_METHOD_AUTO);
     vec3 d = v_sub(s->p1, s->p0);
     double t = segment_clamp(s->p0, d, *p);
     vec3 x = t == 1.0 ? s->p1 : segment_at(s->p0, d, t);
-    result_fill(r, scaled_dist(*p, x), 0, *p, x, NAN, t);
+    result_fill(r, v_norm_scaled(v_sub(*p, x)), 0, *p, x, NAN, t);
     return cdist__leave(q, r, CDIST_OK, CDIST_METHOD_AUTO);
 }
 
@@ -111,7 +94,7 @@ static cdist_status segment_segment(cdist_query *q, const cdist_segment *a, cons
 {
     cdist_status st = cdist__enter(q, r);
     if (st) return st;
-    if ((st = check_segment(q, a)) || (st = check_segment(q, b)))
+    if ((st = cdist__check_segment(q, a)) || (st = cdist__check_segment(q, b)))
         return cdist__leave(q, r, st, CDIST_METHOD_AUTO);
     vec3 da = v_sub(a->p1, a->p0), db = v_sub(b->p1, b->p0);
     double best = INFINITY, bs = 0, bt = 0;
@@ -121,7 +104,7 @@ static cdist_status segment_segment(cdist_query *q, const cdist_segment *a, cons
         double s__ = (s_), t__ = (t_);                                                                             \
         vec3 P = s__ == 1.0 ? a->p1 : segment_at(a->p0, da, s__);                                                  \
         vec3 Q = t__ == 1.0 ? b->p1 : segment_at(b->p0, db, t__);                                                  \
-        double dd = scaled_dist(P, Q);                                                                             \
+        double dd = v_norm_scaled(v_sub(P, Q));                                                                    \
         if (dd < best) { best = dd; bs = s__; bt = t__; bp = P; bq = Q; }                                          \
     } while (0)
     double A = v_sqr(da), E = v_sqr(db);
@@ -314,11 +297,7 @@ static vec3 touch_normal(const cdist__core_obj *a, const cdist__core_obj *b, vec
 
 static cdist_status check_radius(cdist_query *q, const cdist__core_obj *o, const char *what)
 {
-    if (!o->swept) return CDIST_OK;
-    cdist_status st = cdist__check_scalar(q, o->radius, what);
-    if (st) return st;
-    if (o->radius < 0.0) return cdist__fail(q, CDIST_ERR_NEGATIVE_RADIUS, "%s is negative (%g)", what, o->radius);
-    return CDIST_OK;
+    return o->swept ? cdist__check_radius(q, o->radius, what) : CDIST_OK;
 }
 
 /* The contact of a swept query from its core result r (the core query succeeded). FMA clone:

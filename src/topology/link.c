@@ -101,11 +101,8 @@ static cdist_status link_circles(cdist_query *q, const cdist_circle *a, const cd
         st = cdist__check_circle(q, b, tori ? "second torus's circle" : "second circle", &cb);
     if (!st && tori) {
         const double rs[2] = {ra_swept, rb_swept};
-        for (int k = 0; k < 2 && !st; k++) {
-            const char *what = k ? "second torus's tube radius" : "first torus's tube radius";
-            if (!(st = cdist__check_scalar(q, rs[k], what)) && rs[k] < 0.0)
-                st = cdist__fail(q, CDIST_ERR_NEGATIVE_RADIUS, "%s is negative (%g)", what, rs[k]);
-        }
+        for (int k = 0; k < 2 && !st; k++)
+            st = cdist__check_radius(q, rs[k], k ? "second torus's tube radius" : "first torus's tube radius");
     }
     if (st) return cdist__leave(q, &r, st, CDIST_METHOD_AUTO);
     /* The certificate rests on the distance: AUTO, the library's certified choice, whatever

@@ -55,14 +55,12 @@ static void shape_move(const cdist_shape *s, const pose *p, cdist_shape *out)
         out->u.capsule.segment.p0 = move_point(p, s->u.capsule.segment.p0);
         out->u.capsule.segment.p1 = move_point(p, s->u.capsule.segment.p1);
         break;
-    case CDIST_SHAPE_TORUS:
-        out->u.torus.circle.center = move_point(p, s->u.torus.circle.center);
-        out->u.torus.circle.normal = move_dir(p, s->u.torus.circle.normal);
+    default: { /* the torus's circle, the rounded disk's disk */
+        cdist_circle *k = s->type == CDIST_SHAPE_TORUS ? &out->u.torus.circle : &out->u.rounded_disk.disk;
+        k->center = move_point(p, k->center);
+        k->normal = move_dir(p, k->normal);
         break;
-    default:
-        out->u.rounded_disk.disk.center = move_point(p, s->u.rounded_disk.disk.center);
-        out->u.rounded_disk.disk.normal = move_dir(p, s->u.rounded_disk.disk.normal);
-        break;
+    }
     }
 }
 
@@ -83,16 +81,12 @@ cdist_status cdist_shape_at(const cdist_shape *s, const cdist_motion *m, double 
 
 static cdist__core_obj shape_core(const cdist_shape *s)
 {
-    cdist__core_obj o = {CD_CORE_POINT, &s->u.sphere.center, s->u.sphere.radius, 1};
     switch (s->type) {
-    case CDIST_SHAPE_CAPSULE: o.type = CD_CORE_SEGMENT; o.obj = &s->u.capsule.segment; o.radius = s->u.capsule.radius; break;
-    case CDIST_SHAPE_TORUS: o.type = CD_CORE_CIRCLE; o.obj = &s->u.torus.circle; o.radius = s->u.torus.tube_radius; break;
-    case CDIST_SHAPE_ROUNDED_DISK:
-        o.type = CD_CORE_DISK; o.obj = &s->u.rounded_disk.disk; o.radius = s->u.rounded_disk.radius;
-        break;
-    default: break;
+    case CDIST_SHAPE_CAPSULE: return CD_SWEPT_CAPSULE(&s->u.capsule);
+    case CDIST_SHAPE_TORUS: return CD_SWEPT_TORUS(&s->u.torus);
+    case CDIST_SHAPE_ROUNDED_DISK: return CD_SWEPT_RDISK(&s->u.rounded_disk);
+    default: return CD_SWEPT_SPHERE(&s->u.sphere);
     }
-    return o;
 }
 
 /* The largest distance of the shape's core from point c (a disk's: its rim's). */
