@@ -196,7 +196,7 @@ void cdist__cc_kink_recheck(const cdist__cc_frame *f, cdist__cc_sink *k, const c
             continue;
         k->skip_dir = k->best ? 0 : kr->dir[i];
         k->skip_t = kr->root[i];
-        cdist__cc_subdivide(f, k, &a, &b, Fmax, df, NULL);
+        cdist__cc_subdivide_grid(f, k, &a, &b, Fmax, df);
         k->skip_dir = 0;
     }
 }

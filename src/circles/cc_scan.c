@@ -89,12 +89,26 @@ double cdist__cc_emit(cdist__cc_sink *k, const cdist__cc_pt *a, const cdist__cc_
     return t;
 }
 
-/* Depth-first, left to right, so consecutive leaves share their endpoints (one value per point:
- * a sign read at rounding level still brackets every transition exactly once): the current
- * interval is refined in place, right halves wait on the stack. Points are referred to, never
- * copied: the midpoints in pool[] (at most the evaluation budget of them). */
-void cdist__cc_subdivide(const cdist__cc_frame *f, cdist__cc_sink *k, cdist__cc_pt *a, cdist__cc_pt *b, double *Fmax,
-                         cdist__cc_deferred *df, const cdist__cc_scan_state *sc)
+/* The scan's own state that the subdivision of its initial intervals reads: the smallest sampled
+ * distance (at the initial points) and the near-crossing windows (centres, core half-widths) it
+ * leaves to their grids. */
+typedef struct scan_state {
+    double dbest;
+    int nk;
+    double tk[2], core[2];
+} scan_state;
+
+/* Subdivision of [a, b] until each piece is pruned, certified or a leaf (its F' sign pair
+ * emitted), sampled past the budget of evaluations. Depth-first, left to right, so consecutive
+ * leaves share their endpoints (one value per point: a sign read at rounding level still
+ * brackets every transition exactly once): the current interval is refined in place, right
+ * halves wait on the stack. Points are referred to, never copied: the midpoints in pool[]. With
+ * sc, [a, b] is an initial interval of the scan: dyadic pieces (half secants from
+ * cdist__cc_half_sec by level), pruned against the initial samples, skipped inside the windows.
+ * Without, an interval of a near-crossing grid: any width, pruned against every sample so far.
+ * Inlined into the scan, where sc is known. */
+CD_INLINE void subdivide(const cdist__cc_frame *f, cdist__cc_sink *k, cdist__cc_pt *a, cdist__cc_pt *b, double *Fmax,
+                         cdist__cc_deferred *df, const scan_state *sc)
 {
     struct {
         cdist__cc_pt *b;
@@ -156,6 +170,12 @@ void cdist__cc_subdivide(const cdist__cc_frame *f, cdist__cc_sink *k, cdist__cc_
     }
 }
 
+void cdist__cc_subdivide_grid(const cdist__cc_frame *f, cdist__cc_sink *k, cdist__cc_pt *a, cdist__cc_pt *b,
+                              double *Fmax, cdist__cc_deferred *df)
+{
+    subdivide(f, k, a, b, Fmax, df, NULL);
+}
+
 /* Walks [-pi, pi) (see the header comment) and hands every critical bracket to the sink.
  * Fmax: largest F at the partition points. Returns 1 when the certification gave up and the
  * sink does not allow the dense scan (nothing was emitted then), else 0. */
@@ -194,7 +214,7 @@ int cdist__cc_scan(const cdist__cc_frame *f, cdist__cc_sink *k, double *Fmax)
         return 0;
     }
 
-    cdist__cc_scan_state sc;
+    scan_state sc;
     cdist__cc_deferred deferred;
     deferred.n = 0;
     cdist__cc_kink_rec krec;
@@ -215,7 +235,7 @@ int cdist__cc_scan(const cdist__cc_frame *f, cdist__cc_sink *k, double *Fmax)
         cdist__cc_scan_kink(f, k, sc.tk[i], sc.core[i], Fmax, &deferred, &krec);
     }
     /* a cluster of roots exhausts the budget of its own interval only */
-    for (int i = 0; i < CC_INIT_INTERVALS; i++) cdist__cc_subdivide(f, k, &init[i], &init[i + 1], Fmax, &deferred, &sc);
+    for (int i = 0; i < CC_INIT_INTERVALS; i++) subdivide(f, k, &init[i], &init[i + 1], Fmax, &deferred, &sc);
     cdist__cc_kink_recheck(f, k, &krec, Fmax, &deferred);
     cdist__cc_deferred_offer(f, k, &deferred);
     return 0;

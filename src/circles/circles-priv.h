@@ -313,22 +313,10 @@ typedef struct cdist__cc_kink_rec {
     signed char dir[CC_KINK_REC];
 } cdist__cc_kink_rec;
 
-/* The scan's own state the subdivision of its initial intervals reads: the smallest sampled
- * distance (at the initial points) and the near-crossing windows (centres, core half-widths) it
- * leaves to their grids. */
-typedef struct cdist__cc_scan_state {
-    double dbest;
-    int nk;
-    double tk[2], core[2];
-} cdist__cc_scan_state;
-
-/* Subdivision of [a, b] (cc_scan.c) until each piece is pruned, certified or a leaf (its F' sign
- * pair emitted), sampled past a budget of evaluations. With sc, [a, b] is an initial interval of
- * the scan: dyadic pieces (half secants from cdist__cc_half_sec by level), pruned against the
- * initial samples and skipped inside the windows. Without, an interval of a near-crossing grid
- * (cdist__cc_kink_recheck): any width up to 0.2 rad, pruned against every sample so far. */
-void cdist__cc_subdivide(const cdist__cc_frame *f, cdist__cc_sink *k, cdist__cc_pt *a, cdist__cc_pt *b, double *Fmax,
-                         cdist__cc_deferred *df, const cdist__cc_scan_state *sc);
+/* An interval [a, b] of a near-crossing grid (cdist__cc_kink_recheck), of any width up to 0.2
+ * rad, subdivided as the scan's initial intervals are (cc_scan.c). */
+void cdist__cc_subdivide_grid(const cdist__cc_frame *f, cdist__cc_sink *k, cdist__cc_pt *a, cdist__cc_pt *b,
+                              double *Fmax, cdist__cc_deferred *df);
 
 /* Certificates on [a, b] (cc_certify.c): at most one root of H; no critical point of F; F
  * convex. Each reads (and completes on demand) the detail of a and b. */
