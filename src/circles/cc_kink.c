@@ -190,9 +190,8 @@ void cdist__cc_kink_recheck(const cdist__cc_frame *f, cdist__cc_sink *k, const c
         cdist__cc_eval_lean(f, tc + kr->ha[i], ct * ch - st * sh, st * ch + ct * sh, &a);
         cdist__cc_small_sincos(kr->hb[i], &sh, &ch);
         cdist__cc_eval_lean(f, tc + kr->hb[i], ct * ch - st * sh, st * ch + ct * sh, &b);
-        if ((k->prune && cdist__cc_arc_bound(f, &a, &b) > dth * dth) || cdist__cc_certified(f, &a, &b) ||
-            cdist__cc_monotone(f, &a, &b) ||
-            cdist__cc_convex(f, &a, &b))
+        if ((k->prune && cdist__cc_hull_bound(f, &a, &b, cdist__cc_half_secant(b.t - a.t)) > dth * dth) ||
+            cdist__cc_certified(f, &a, &b) || cdist__cc_monotone(f, &a, &b) || cdist__cc_convex(f, &a, &b))
             continue;
         k->skip_dir = k->best ? 0 : kr->dir[i];
         k->skip_t = kr->root[i];

@@ -98,6 +98,12 @@ typedef struct scan_state {
     double tk[2], core[2];
 } scan_state;
 
+/* 1 / (2 cos(w / 2)) of a piece of width w at `level` (below). */
+CD_INLINE double half_secant(const scan_state *sc, int level, double w)
+{
+    return sc ? cdist__cc_half_sec[cdist__cc_hs_index(level)] : cdist__cc_half_secant(w);
+}
+
 /* Subdivision of [a, b] until each piece is pruned, certified or a leaf (its F' sign pair
  * emitted), sampled past the budget of evaluations. Depth-first, left to right, so consecutive
  * leaves share their endpoints (one value per point: a sign read at rounding level still
@@ -124,8 +130,7 @@ CD_INLINE void subdivide(const cdist__cc_frame *f, cdist__cc_sink *k, cdist__cc_
          * the interval holds no closest pair, not even a tied one. */
         double dth = cdist__fmin(sc ? sc->dbest : sqrt(k->Fmin), k->dmin) * (1 + 8 * DBL_EPSILON) + CD_TIE_ULPS * DBL_EPSILON * f->L;
         int done = k->prune && (0.5 * (a->d + b->d - f->R * w) > dth ||
-                                (sc ? level < CC_MAX_LEVEL && cdist__cc_hull_bound(f, a, b, level) > dth * dth
-                                    : cdist__cc_arc_bound(f, a, b) > dth * dth));
+                                ((!sc || level < CC_MAX_LEVEL) && cdist__cc_hull_bound(f, a, b, half_secant(sc, level, w)) > dth * dth));
         for (int j = 0; sc && j < sc->nk && !done; j++) {
             /* within twice a near-crossing's core: the geometric grid covers it */
             double lo = remainder(a->t - sc->tk[j], 2 * M_PI), hi = lo + w;
@@ -146,15 +151,9 @@ CD_INLINE void subdivide(const cdist__cc_frame *f, cdist__cc_sink *k, cdist__cc_
                 cdist__cc_emit_sampled(f, k, a, b, Fmax, df);
             } else {
                 /* Midpoint from the endpoint cosines/sines: (a + b) / (2 cos(w / 2)). */
-                double hc, sh, ch;
-                if (sc) {
-                    hc = cdist__cc_half_sec[cdist__cc_hs_index(level)];
-                } else {
-                    cdist__cc_small_sincos(0.5 * w, &sh, &ch);
-                    hc = 0.5 / ch;
-                }
+                double hs = half_secant(sc, level, w);
                 cdist__cc_pt *mid = &pool[evals++];
-                cdist__cc_eval_lean(f, 0.5 * (a->t + b->t), (a->c + b->c) * hc, (a->s + b->s) * hc, mid);
+                cdist__cc_eval_lean(f, 0.5 * (a->t + b->t), (a->c + b->c) * hs, (a->s + b->s) * hs, mid);
                 cdist__cc_track(k, mid, Fmax);
                 level++;
                 st[sp].b = b;
