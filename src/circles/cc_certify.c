@@ -160,18 +160,10 @@ static double arc_hull_bound(const cdist__cc_frame *f, double ca, double sa, dou
     return cdist__fmin(Fmin_ends, GT) - err;
 }
 
-/* The bound on an interval of the subdivision at `level`. */
-double cdist__cc_hull_bound(const cdist__cc_frame *f, const cdist__cc_pt *a, const cdist__cc_pt *b, int level)
+/* The bound on an arc [a, b] with half secant hs = 1 / (2 cos((b - a) / 2)). */
+double cdist__cc_hull_bound(const cdist__cc_frame *f, const cdist__cc_pt *a, const cdist__cc_pt *b, double hs)
 {
-    return arc_hull_bound(f, a->c, a->s, b->c, b->s, cdist__fmin(a->F, b->F), cdist__cc_half_sec[cdist__cc_hs_index(level)]);
-}
-
-/* The bound on an arc [a, b] of any width up to 0.2 rad (the kink grid's intervals). */
-double cdist__cc_arc_bound(const cdist__cc_frame *f, const cdist__cc_pt *a, const cdist__cc_pt *b)
-{
-    double sh, ch;
-    cdist__cc_small_sincos(0.5 * (b->t - a->t), &sh, &ch);
-    return arc_hull_bound(f, a->c, a->s, b->c, b->s, cdist__fmin(a->F, b->F), 0.5 / ch);
+    return arc_hull_bound(f, a->c, a->s, b->c, b->s, cdist__fmin(a->F, b->F), hs);
 }
 
 /* The bound on the window [t - h, t + h] (h <= 0.1) around a near-crossing. */

@@ -161,49 +161,6 @@ void cdist__cc_deferred_offer(const cdist__cc_frame *f, cdist__cc_sink *k, const
         if (df->d[i] - f->R * df->hw[i] <= dbest + tie) min_offer(f, k, df->t[i] - df->hw[i], df->t[i] + df->hw[i]);
 }
 
-/* Subdivision of an interval [a, b] of a near-crossing grid that no certificate covers: the
- * grid's spacing only matches the kink's own features (width ~ the offset from the crossing);
- * F may hold narrower ones farther out (A crossing B's rim while nearly in B's plane: dips of
- * width ~ |h| / W1 at rho = s), two critical points between neighbours that one F' sign pair
- * does not see. Subdivided like the scan's intervals: same certificates and leaves, the scan's
- * pruning, a budget of evaluations, then sampled. */
-static void kink_cover(const cdist__cc_frame *f, cdist__cc_sink *k, cdist__cc_pt *a, cdist__cc_pt *b, double *Fmax,
-                       cdist__cc_deferred *df)
-{
-    enum { BUDGET = 48, STACK = 32 }; /* the scan's budget; widths 0.1 down to 2^-30 take 27 levels */
-    cdist__cc_pt pool[BUDGET];
-    cdist__cc_pt *st[STACK];
-    int sp = 0, evals = 0;
-    for (;;) {
-        double w = b->t - a->t;
-        double dth = cdist__fmin(sqrt(k->Fmin), k->dmin) * (1 + 8 * DBL_EPSILON) + CD_TIE_ULPS * DBL_EPSILON * f->L;
-        int pruned = k->prune && (0.5 * (a->d + b->d - f->R * w) > dth || cdist__cc_arc_bound(f, a, b) > dth * dth);
-        if (!pruned) {
-            int leaf = w <= CD_CC_MIN_WIDTH || 0.5 * (a->rho + b->rho - f->W1 * w) <= 0 || sp + 1 >= STACK ||
-                       cdist__cc_certified(f, a, b) || cdist__cc_monotone(f, a, b) || cdist__cc_convex(f, a, b);
-            if (leaf) {
-                cdist__cc_emit(k, a, b);
-            } else if (evals >= BUDGET) {
-                cdist__cc_emit_sampled(f, k, a, b, Fmax, df);
-            } else {
-                /* Midpoint from the endpoint cosines/sines: (a + b) / (2 cos(w / 2)). */
-                double sh, ch;
-                cdist__cc_small_sincos(0.5 * w, &sh, &ch);
-                double hc = 0.5 / ch;
-                cdist__cc_pt *mid = &pool[evals++];
-                cdist__cc_eval_lean(f, 0.5 * (a->t + b->t), (a->c + b->c) * hc, (a->s + b->s) * hc, mid);
-                cdist__cc_track(k, mid, Fmax);
-                st[sp++] = b;
-                b = mid;
-                continue;
-            }
-        }
-        if (sp == 0) break;
-        a = b;
-        b = st[--sp];
-    }
-}
-
 /* The recorded grid intervals (cdist__cc_kink_rec), after the scan: those the Lipschitz bound
  * does not prune are evaluated again (the grid's formula, so the same values), and subdivided
  * unless certified. Their own F' sign pair was handed to the sink by the grid already, and the
@@ -233,13 +190,12 @@ void cdist__cc_kink_recheck(const cdist__cc_frame *f, cdist__cc_sink *k, const c
         cdist__cc_eval_lean(f, tc + kr->ha[i], ct * ch - st * sh, st * ch + ct * sh, &a);
         cdist__cc_small_sincos(kr->hb[i], &sh, &ch);
         cdist__cc_eval_lean(f, tc + kr->hb[i], ct * ch - st * sh, st * ch + ct * sh, &b);
-        if ((k->prune && cdist__cc_arc_bound(f, &a, &b) > dth * dth) || cdist__cc_certified(f, &a, &b) ||
-            cdist__cc_monotone(f, &a, &b) ||
-            cdist__cc_convex(f, &a, &b))
+        if ((k->prune && cdist__cc_hull_bound(f, &a, &b, cdist__cc_half_secant(b.t - a.t)) > dth * dth) ||
+            cdist__cc_certified(f, &a, &b) || cdist__cc_monotone(f, &a, &b) || cdist__cc_convex(f, &a, &b))
             continue;
         k->skip_dir = k->best ? 0 : kr->dir[i];
         k->skip_t = kr->root[i];
-        kink_cover(f, k, &a, &b, Fmax, df);
+        cdist__cc_subdivide_grid(f, k, &a, &b, Fmax, df);
         k->skip_dir = 0;
     }
 }

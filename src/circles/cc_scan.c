@@ -6,8 +6,9 @@
 
 #include "circles/circles-priv.h"
 
-#define CC_EVAL_BUDGET 48 /* per initial interval */
-#define CC_STACK 40 /* > the deepest level (31) */
+#define CC_EVAL_BUDGET 48 /* per subdivided interval */
+#define CC_MAX_LEVEL 31 /* the scan's deepest level (cdist__cc_half_sec) */
+#define CC_STACK 32 /* > the deepest level; grid intervals: widths 0.1 down to 2^-30 take 27 levels */
 
 /* F'/2, F''/2 and rho only (for the refinement). */
 static void cc_deriv(const cdist__cc_frame *f, double c, double s, double *F1, double *F2, double *rho)
@@ -88,6 +89,92 @@ double cdist__cc_emit(cdist__cc_sink *k, const cdist__cc_pt *a, const cdist__cc_
     return t;
 }
 
+/* The scan's own state that the subdivision of its initial intervals reads: the smallest sampled
+ * distance (at the initial points) and the near-crossing windows (centres, core half-widths) it
+ * leaves to their grids. */
+typedef struct scan_state {
+    double dbest;
+    int nk;
+    double tk[2], core[2];
+} scan_state;
+
+/* 1 / (2 cos(w / 2)) of a piece of width w at `level` (below). */
+CD_INLINE double half_secant(const scan_state *sc, int level, double w)
+{
+    return sc ? cdist__cc_half_sec[cdist__cc_hs_index(level)] : cdist__cc_half_secant(w);
+}
+
+/* Subdivision of [a, b] until each piece is pruned, certified or a leaf (its F' sign pair
+ * emitted), sampled past the budget of evaluations. Depth-first, left to right, so consecutive
+ * leaves share their endpoints (one value per point: a sign read at rounding level still
+ * brackets every transition exactly once): the current interval is refined in place, right
+ * halves wait on the stack. Points are referred to, never copied: the midpoints in pool[]. With
+ * sc, [a, b] is an initial interval of the scan: dyadic pieces (half secants from
+ * cdist__cc_half_sec by level), pruned against the initial samples, skipped inside the windows.
+ * Without, an interval of a near-crossing grid: any width, pruned against every sample so far.
+ * Inlined into the scan, where sc is known. */
+CD_INLINE void subdivide(const cdist__cc_frame *f, cdist__cc_sink *k, cdist__cc_pt *a, cdist__cc_pt *b, double *Fmax,
+                         cdist__cc_deferred *df, const scan_state *sc)
+{
+    struct {
+        cdist__cc_pt *b;
+        int level;
+    } st[CC_STACK];
+    cdist__cc_pt pool[CC_EVAL_BUDGET];
+    int level = 0, sp = 0, evals = 0;
+    for (;;) {
+        double w = b->t - a->t;
+        /* Pruning (robust and minima modes): the distance is R-Lipschitz in the angle, so on
+         * [a, b] it is at least (d(a) + d(b) - R w) / 2, and F is at least the hull bound;
+         * above the attained distance (a sample or a refined minimum) by more than a tie,
+         * the interval holds no closest pair, not even a tied one. */
+        double dth = cdist__fmin(sc ? sc->dbest : sqrt(k->Fmin), k->dmin) * (1 + 8 * DBL_EPSILON) + CD_TIE_ULPS * DBL_EPSILON * f->L;
+        int done = k->prune && (0.5 * (a->d + b->d - f->R * w) > dth ||
+                                ((!sc || level < CC_MAX_LEVEL) && cdist__cc_hull_bound(f, a, b, half_secant(sc, level, w)) > dth * dth));
+        for (int j = 0; sc && j < sc->nk && !done; j++) {
+            /* within twice a near-crossing's core: the geometric grid covers it */
+            double lo = remainder(a->t - sc->tk[j], 2 * M_PI), hi = lo + w;
+            done = lo >= -2 * sc->core[j] && hi <= 2 * sc->core[j];
+        }
+        if (!done) {
+            /* A grid interval reaching B's axis (to rounding: the grid records those clear of
+             * it) is a leaf: the F certificates need rho > 0. */
+            int leaf = w <= CD_CC_MIN_WIDTH || sp + 1 >= CC_STACK ||
+                       (sc ? level >= CC_MAX_LEVEL : 0.5 * (a->rho + b->rho - f->W1 * w) <= 0) ||
+                       cdist__cc_certified(f, a, b) || cdist__cc_monotone(f, a, b) || cdist__cc_convex(f, a, b);
+            if (leaf) {
+                cdist__cc_emit(k, a, b);
+            } else if (evals >= CC_EVAL_BUDGET) {
+                /* Past the budget (multiple roots of H at rounding level: tangencies, A passing
+                 * within rounding of B's axis) the rest is sampled, keeping the resolution
+                 * already reached around the trouble spot. */
+                cdist__cc_emit_sampled(f, k, a, b, Fmax, df);
+            } else {
+                /* Midpoint from the endpoint cosines/sines: (a + b) / (2 cos(w / 2)). */
+                double hs = half_secant(sc, level, w);
+                cdist__cc_pt *mid = &pool[evals++];
+                cdist__cc_eval_lean(f, 0.5 * (a->t + b->t), (a->c + b->c) * hs, (a->s + b->s) * hs, mid);
+                cdist__cc_track(k, mid, Fmax);
+                level++;
+                st[sp].b = b;
+                st[sp++].level = level;
+                b = mid;
+                continue;
+            }
+        }
+        if (sp == 0) break;
+        a = b;
+        b = st[--sp].b;
+        level = st[sp].level;
+    }
+}
+
+void cdist__cc_subdivide_grid(const cdist__cc_frame *f, cdist__cc_sink *k, cdist__cc_pt *a, cdist__cc_pt *b,
+                              double *Fmax, cdist__cc_deferred *df)
+{
+    subdivide(f, k, a, b, Fmax, df, NULL);
+}
+
 /* Walks [-pi, pi) (see the header comment) and hands every critical bracket to the sink.
  * Fmax: largest F at the partition points. Returns 1 when the certification gave up and the
  * sink does not allow the dense scan (nothing was emitted then), else 0. */
@@ -126,80 +213,28 @@ int cdist__cc_scan(const cdist__cc_frame *f, cdist__cc_sink *k, double *Fmax)
         return 0;
     }
 
-    /* Depth-first, left to right, so consecutive leaves share their endpoints (one value per
-     * point: a sign read at rounding level still brackets every transition exactly once): the
-     * current interval is refined in place, right halves wait on the stack. Points are referred
-     * to, never copied: the initial ones in init[], the midpoints of the current initial
-     * interval in pool[] (at most the evaluation budget of them). */
-    struct {
-        cdist__cc_pt *b;
-        int level;
-    } st[CC_STACK];
-    cdist__cc_pt pool[CC_EVAL_BUDGET + 1];
-    double tk[2], core[2];
+    scan_state sc;
     cdist__cc_deferred deferred;
     deferred.n = 0;
     cdist__cc_kink_rec krec;
     krec.n = 0;
-    double dbest = INFINITY; /* smallest sampled distance: the minimum is at most this */
+    sc.dbest = INFINITY;
     for (int i = 0; i < CC_INIT_INTERVALS; i++) {
-        if (init[i].d < dbest) dbest = init[i].d;
+        if (init[i].d < sc.dbest) sc.dbest = init[i].d;
         cdist__cc_track(k, &init[i], Fmax);
     }
-    int nk = cdist__cc_near_kinks(f, init, tk);
-    for (int i = 0; i < nk; i++) {
-        core[i] = cdist__cc_kink_core(f, tk[i]);
+    sc.nk = cdist__cc_near_kinks(f, init, sc.tk);
+    for (int i = 0; i < sc.nk; i++) {
+        sc.core[i] = cdist__cc_kink_core(f, sc.tk[i]);
         /* Pruning (robust and minima modes): a window (covering the grid) whose hull bound lies
          * above the attained distance needs no grid (near-touching linked circles: the crossing
          * is far above). */
-        double dth = dbest * (1 + 8 * DBL_EPSILON) + CD_TIE_ULPS * DBL_EPSILON * f->L;
-        if (k->prune && cdist__cc_window_hull_bound(f, tk[i], 2 * core[i]) > dth * dth) continue;
-        cdist__cc_scan_kink(f, k, tk[i], core[i], Fmax, &deferred, &krec);
+        double dth = sc.dbest * (1 + 8 * DBL_EPSILON) + CD_TIE_ULPS * DBL_EPSILON * f->L;
+        if (k->prune && cdist__cc_window_hull_bound(f, sc.tk[i], 2 * sc.core[i]) > dth * dth) continue;
+        cdist__cc_scan_kink(f, k, sc.tk[i], sc.core[i], Fmax, &deferred, &krec);
     }
-    for (int i = 0; i < CC_INIT_INTERVALS; i++) {
-        cdist__cc_pt *a = &init[i], *b = &init[i + 1];
-        int level = 0, sp = 0, evals = 0; /* a cluster of roots exhausts the budget of its own interval only */
-        for (;;) {
-            double w = b->t - a->t;
-            /* Pruning (robust and minima modes): the distance is R-Lipschitz in the angle, so on
-             * [a, b] it is at least (d(a) + d(b) - R w) / 2, and F is at least the hull bound;
-             * above the attained distance (a sample or a refined minimum) by more than a tie,
-             * the interval holds no closest pair, not even a tied one. */
-            double dth = cdist__fmin(dbest, k->dmin) * (1 + 8 * DBL_EPSILON) + CD_TIE_ULPS * DBL_EPSILON * f->L;
-            int done = k->prune && (0.5 * (a->d + b->d - f->R * w) > dth || (level < 31 && cdist__cc_hull_bound(f, a, b, level) > dth * dth));
-            for (int j = 0; j < nk && !done; j++) {
-                /* within twice a near-crossing's core: the geometric grid covers it */
-                double lo = remainder(a->t - tk[j], 2 * M_PI), hi = lo + w;
-                done = lo >= -2 * core[j] && hi <= 2 * core[j];
-            }
-            if (!done) {
-                int leaf = cdist__cc_certified(f, a, b) || cdist__cc_monotone(f, a, b) || cdist__cc_convex(f, a, b) || w <= CD_CC_MIN_WIDTH || sp + 1 >= CC_STACK ||
-                           level >= 31;
-                if (leaf || evals >= CC_EVAL_BUDGET) {
-                    /* Past the budget (multiple roots of H at rounding level: tangencies, A
-                     * passing within rounding of B's axis) the rest is sampled, keeping the
-                     * resolution already reached around the trouble spot. */
-                    if (leaf) cdist__cc_emit(k, a, b);
-                    else cdist__cc_emit_sampled(f, k, a, b, Fmax, &deferred);
-                } else {
-                    /* Midpoint from the endpoint cosines/sines (no transcendental call). */
-                    double hc = cdist__cc_half_sec[cdist__cc_hs_index(level)];
-                    cdist__cc_pt *mid = &pool[evals++];
-                    cdist__cc_eval_lean(f, 0.5 * (a->t + b->t), (a->c + b->c) * hc, (a->s + b->s) * hc, mid);
-                    cdist__cc_track(k, mid, Fmax);
-                    level++;
-                    st[sp].b = b;
-                    st[sp++].level = level;
-                    b = mid;
-                    continue;
-                }
-            }
-            if (sp == 0) break;
-            a = b;
-            b = st[--sp].b;
-            level = st[sp].level;
-        }
-    }
+    /* a cluster of roots exhausts the budget of its own interval only */
+    for (int i = 0; i < CC_INIT_INTERVALS; i++) subdivide(f, k, &init[i], &init[i + 1], Fmax, &deferred, &sc);
     cdist__cc_kink_recheck(f, k, &krec, Fmax, &deferred);
     cdist__cc_deferred_offer(f, k, &deferred);
     return 0;

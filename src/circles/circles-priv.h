@@ -285,8 +285,16 @@ CD_INLINE void cdist__cc_small_sincos(double h, double *sn, double *cs)
     *cs = 1 - x / 2 * (1 - x / 12 * (1 - x / 30 * (1 - x / 56 * (1 - x / 90 * (1 - x / 132 * (1 - x / 182))))));
 }
 
-/* 1 / (2 cos(w/2)) for the interval width w = 2 pi / 8 / 2^i (cc_certify.c), and the index i
- * of a subdivision level (clamped: the entries are 0.5 from 26 on). */
+/* 1 / (2 cos(w/2)) for a width w <= 0.2 rad. */
+CD_INLINE double cdist__cc_half_secant(double w)
+{
+    double sh, ch;
+    cdist__cc_small_sincos(0.5 * w, &sh, &ch);
+    return 0.5 / ch;
+}
+
+/* The same for the interval width w = 2 pi / 8 / 2^i (cc_certify.c), and the index i of a
+ * subdivision level (clamped: the entries are 0.5 from 26 on). */
 extern const double cdist__cc_half_sec[32];
 CD_INLINE int cdist__cc_hs_index(int level) { return level + CC_LEVEL0 < 31 ? level + CC_LEVEL0 : 31; }
 
@@ -313,15 +321,19 @@ typedef struct cdist__cc_kink_rec {
     signed char dir[CC_KINK_REC];
 } cdist__cc_kink_rec;
 
+/* An interval [a, b] of a near-crossing grid (cdist__cc_kink_recheck), of any width up to 0.2
+ * rad, subdivided as the scan's initial intervals are (cc_scan.c). */
+void cdist__cc_subdivide_grid(const cdist__cc_frame *f, cdist__cc_sink *k, cdist__cc_pt *a, cdist__cc_pt *b,
+                              double *Fmax, cdist__cc_deferred *df);
+
 /* Certificates on [a, b] (cc_certify.c): at most one root of H; no critical point of F; F
  * convex. Each reads (and completes on demand) the detail of a and b. */
 int cdist__cc_certified(const cdist__cc_frame *f, cdist__cc_pt *a, cdist__cc_pt *b);
 int cdist__cc_monotone(const cdist__cc_frame *f, cdist__cc_pt *a, cdist__cc_pt *b);
 int cdist__cc_convex(const cdist__cc_frame *f, cdist__cc_pt *a, cdist__cc_pt *b);
-/* Lower bounds of F: on an interval of the subdivision at `level`, on any arc [a, b] of width
- * <= 0.2 rad, and on [t - h, t + h]. */
-double cdist__cc_hull_bound(const cdist__cc_frame *f, const cdist__cc_pt *a, const cdist__cc_pt *b, int level);
-double cdist__cc_arc_bound(const cdist__cc_frame *f, const cdist__cc_pt *a, const cdist__cc_pt *b);
+/* Lower bounds of F: on an arc [a, b] with half secant hs (cdist__cc_half_sec, cdist__cc_half_secant),
+ * and on [t - h, t + h]. */
+double cdist__cc_hull_bound(const cdist__cc_frame *f, const cdist__cc_pt *a, const cdist__cc_pt *b, double hs);
 double cdist__cc_window_hull_bound(const cdist__cc_frame *f, double t, double h);
 /* A critical bracket [a, b] of F (a sign change of F'), refined and handed to the sink (cc_scan.c).
  * Returns the refined angle, NAN when [a, b] is no bracket or the sink drops its root (skip_dir). */
