@@ -942,6 +942,458 @@ static void bad_input(void)
     cdist_scene_free(v);
 }
 
+/* ---- any sequence of operations ---- */
+
+static tobj translate(tobj x, cdist_vec3 d)
+{
+    switch (x.kind) {
+    case CDIST_SCENE_POINT: x.u.point = vadd(x.u.point, d); break;
+    case CDIST_SCENE_SEGMENT: x.u.segment.p0 = vadd(x.u.segment.p0, d); x.u.segment.p1 = vadd(x.u.segment.p1, d); break;
+    case CDIST_SCENE_SPHERE: x.u.sphere.center = vadd(x.u.sphere.center, d); break;
+    case CDIST_SCENE_CAPSULE:
+        x.u.capsule.segment.p0 = vadd(x.u.capsule.segment.p0, d);
+        x.u.capsule.segment.p1 = vadd(x.u.capsule.segment.p1, d);
+        break;
+    case CDIST_SCENE_ARC: x.u.arc.circle.center = vadd(x.u.arc.circle.center, d); break;
+    default: x.u.circle.center = vadd(x.u.circle.center, d); break;
+    }
+    return x;
+}
+
+static cdist_vec3 center_of(const tobj *o)
+{
+    switch (o->kind) {
+    case CDIST_SCENE_POINT: return o->u.point;
+    case CDIST_SCENE_SEGMENT: return o->u.segment.p0;
+    case CDIST_SCENE_SPHERE: return o->u.sphere.center;
+    case CDIST_SCENE_CAPSULE: return o->u.capsule.segment.p0;
+    case CDIST_SCENE_ARC: return o->u.arc.circle.center;
+    default: return o->u.circle.center;
+    }
+}
+
+/* Another kind in the same place (any kind to any kind: the motion bound is then infinite). */
+static tobj rekind(const tobj *o, cdist_scene_kind k)
+{
+    tobj x = make(k, center_of(o), obj_size(o) + 1e-3, rnd_unit_vec());
+    x.group = o->group, x.chain = o->chain, x.live = o->live;
+    return x;
+}
+
+/* An invalid pose of the object's kind (NaN, infinite, negative radius, zero normal). */
+static tobj invalid_of(const tobj *o)
+{
+    tobj x = *o;
+    int w = (int)(next_rand() % 3);
+    double bad = w == 0 ? NAN : (w == 1 ? INFINITY : -INFINITY);
+    switch (x.kind) {
+    case CDIST_SCENE_POINT: x.u.point.y = bad; break;
+    case CDIST_SCENE_SEGMENT: x.u.segment.p1.z = bad; break;
+    case CDIST_SCENE_SPHERE: x.u.sphere.radius = w == 2 ? -1.0 : bad; break;
+    case CDIST_SCENE_CAPSULE: x.u.capsule.radius = w == 2 ? -1.0 : bad; break;
+    case CDIST_SCENE_ARC: x.u.arc.circle.normal = tv(0, 0, 0); break;
+    default:
+        if (w == 2) x.u.circle.normal = tv(0, 0, 0);
+        else x.u.circle.center.x = bad;
+        break;
+    }
+    return x;
+}
+
+/* Deltas a caller may pass: 0, negative, hugely negative, beyond any list's reach, infinite,
+ * tiny, or one pair's distance. */
+static double churn_delta(const tobj *o, size_t n)
+{
+    int r = (int)(next_rand() % 12);
+    switch (r) {
+    case 0: return 0.0;
+    case 1: return -0.01 * (1 + rnd01());
+    case 2: return -1e300;
+    case 3: return 1e3 * (1 + rnd01());
+    case 4: return INFINITY;
+    case 5: return 1e-12;
+    default: return pick_delta(o, n, r == 6 ? 0.3 : 0.03);
+    }
+}
+
+/* pairs_within against the loop, with 1 or 2 threads, through the callback, or with a capacity
+ * below the count (which must be the full count, the pairs given a prefix of the full answer). */
+typedef struct churn_acc {
+    cdist_scene_pair *p;
+    size_t n, cap;
+} churn_acc;
+static int churn_cb(void *u, const cdist_scene_pair *p, size_t n)
+{
+    churn_acc *a = u;
+    for (size_t k = 0; k < n; k++, a->n++)
+        if (a->n < a->cap) a->p[a->n] = p[k];
+    return 0;
+}
+
+static void churn_within(const char *what, cdist_scene *s, const tobj *o, size_t n, double delta)
+{
+    size_t cap = n * (n - 1) / 2 + 1;
+    tpair *want = malloc(cap * sizeof *want);
+    size_t nw = ref_within(o, n, delta, want);
+    cdist_scene_pair *got = malloc(cap * sizeof *got);
+    int threads = 1 + (int)(next_rand() % 2);
+    cdist_query_set_threads(Q, threads);
+    size_t ng = 0;
+    int mode = (int)(next_rand() % 4);
+    cdist_status st;
+    if (mode == 0) {
+        churn_acc a = {got, 0, cap};
+        st = cdist_scene_pairs_within_fn(Q, s, delta, churn_cb, &a, &ng);
+        CHECK(ng == a.n, "%s: callback count %zu vs delivered %zu", what, ng, a.n);
+    } else if (mode == 1 && nw > 1) {
+        size_t c = next_rand() % nw;
+        st = cdist_scene_pairs_within(Q, s, delta, got, c, &ng);
+        size_t c2 = 0;
+        CHECK(ng >= c, "%s: capacity %zu count %zu", what, c, ng);
+        cdist_scene_pair *g2 = malloc(cap * sizeof *g2);
+        cdist_status st2 = cdist_scene_pairs_within(Q, s, delta, g2, cap, &c2);
+        CHECK(c2 == ng && st2 == st, "%s: capped count %zu/%d, full %zu/%d", what, ng, st, c2, st2);
+        for (size_t k = 0; k < c && k < c2; k++)
+            if (memcmp(&got[k], &g2[k], sizeof *got)) {
+                CHECK(0, "%s: capped prefix differs at %zu", what, k);
+                break;
+            }
+        memcpy(got, g2, cap * sizeof *got);
+        ng = c2;
+        free(g2);
+    } else {
+        st = cdist_scene_pairs_within(Q, s, delta, got, cap, &ng);
+    }
+    CHECK(st == CDIST_OK || st == CDIST_ERR_BAD_KIND, "%s: status %d (%s)", what, st, cdist_query_last_error(Q));
+    CHECK(ng < cap, "%s: %zu pairs of %zu objects", what, ng, n);
+    for (size_t k = 0; k < ng && k < cap; k++)
+        if (got[k].i >= got[k].j || (k > 0 && (got[k].i < got[k - 1].i || (got[k].i == got[k - 1].i && got[k].j <= got[k - 1].j)))) {
+            CHECK(0, "%s: pair %zu (%zu,%zu) after (%zu,%zu)", what, k, got[k].i, got[k].j, k ? got[k - 1].i : 0, k ? got[k - 1].j : 0);
+            break;
+        }
+    char label[200];
+    snprintf(label, sizeof label, "%s, %d thr, delta %.3g", what, threads, delta);
+    compare(label, got, ng, want, nw, o, o);
+    free(want);
+    free(got);
+}
+
+/* closest_pair against the loop (ties: smallest (i, j)). */
+static void churn_closest(const char *what, cdist_scene *s, const tobj *o, size_t n)
+{
+    cdist_scene_pair got;
+    cdist_query_set_threads(Q, 1 + (int)(next_rand() % 2));
+    cdist_status st = cdist_scene_closest_pair(Q, s, &got);
+    if (st == CDIST_ERR_BAD_KIND) return;
+    tpair best;
+    int have = 0;
+    for (size_t i = 0; i < n; i++) {
+        if (!o[i].live) continue;
+        for (size_t j = i + 1; j < n; j++) {
+            if (!o[j].live || skip_ref(o, i, j)) continue;
+            tpair t;
+            if (ref_pair(&o[i], &o[j], &t) != 0) continue;
+            if (!have || t.d < best.d) best = t, best.i = i, best.j = j, have = 1;
+        }
+    }
+    if (!have) {
+        CHECK(st == CDIST_ERR_BAD_INTERVAL, "%s closest: status %d without pairs", what, st);
+        return;
+    }
+    if (st || !pair_equal(&got, &best))
+        CHECK(0, "%s closest: got (%zu,%zu) %.17g st %d, want (%zu,%zu) %.17g", what, got.i, got.j, got.distance, st,
+              best.i,
+           best.j, best.d);
+}
+
+/* within and nearest k of a query object against the loop. */
+static void churn_query_object(const char *what, cdist_scene *s, const tobj *o, size_t n, const tobj *qo, double delta)
+{
+    cdist_scene_pair *got = malloc((n + 1) * sizeof *got);
+    tpair *want = malloc((n + 1) * sizeof *want);
+    size_t nw = 0, ng = 0;
+    for (size_t i = 0; i < n; i++) {
+        if (!o[i].live) continue;
+        tpair t;
+        if (ref_pair(&o[i], qo, &t) == 0 && t.d <= delta) t.i = i, t.j = SIZE_MAX, want[nw++] = t;
+    }
+    cdist_query_set_threads(Q, 1 + (int)(next_rand() % 2));
+    cdist_status st = cdist_scene_within(Q, s, qo->kind, &qo->u, delta, got, n + 1, &ng);
+    CHECK(st == CDIST_OK || st == CDIST_ERR_BAD_KIND, "%s within: status %d", what, st);
+    char label[200];
+    snprintf(label, sizeof label, "%s within obj delta %.3g", what, delta);
+    compare(label, got, ng, want, nw, o, qo);
+    size_t k = 1 + next_rand() % 5, nn = 0;
+    st = cdist_scene_nearest(Q, s, qo->kind, &qo->u, k, got, &nn);
+    if (st == CDIST_OK) {
+        /* every live object's distance, sorted by (distance, id) */
+        size_t m = 0;
+        for (size_t i = 0; i < n; i++) {
+            if (!o[i].live) continue;
+            tpair t;
+            if (ref_pair(&o[i], qo, &t) != 0) continue;
+            t.i = i, t.j = SIZE_MAX;
+            want[m++] = t;
+        }
+        for (size_t a = 1; a < m; a++)
+            for (size_t b = a; b > 0 && (want[b].d < want[b - 1].d ||
+                                         (want[b].d == want[b - 1].d && want[b].i < want[b - 1].i));
+                 b--) {
+                tpair t = want[b];
+                want[b] = want[b - 1];
+                want[b - 1] = t;
+            }
+        size_t live = 0;
+        for (size_t i = 0; i < n; i++) live += o[i].live;
+        size_t expect = k < live ? k : live;
+        CHECK(nn == expect, "%s nearest: count %zu want %zu", what, nn, expect);
+        for (size_t a = 0; a < nn && a < m; a++)
+            if (!pair_equal(&got[a], &want[a])) {
+                CHECK(0, "%s nearest[%zu]: got %zu %.17g want %zu %.17g", what, a, got[a].i, got[a].distance,
+                      want[a].i, want[a].d);
+                break;
+            }
+    }
+    free(got);
+    free(want);
+}
+
+/* Rings linked in rows (linked_pairs has answers), and one object repeated. */
+static void gen_chain(tobj *o, size_t n)
+{
+    for (size_t i = 0; i < n; i++) {
+        cdist_vec3 nrm = i % 2 ? tv(0, 1, 0) : tv(0, 0, 1);
+        cdist_vec3 c = tv(1.5 * (double)(i % 20), 3.0 * (double)(i / 20), 0);
+        o[i] = make(i % 5 == 4 ? CDIST_SCENE_CIRCLE : CDIST_SCENE_TORUS, c, 1.0, nrm);
+        o[i].u.torus.circle.radius = 1.0;
+        if (o[i].kind == CDIST_SCENE_TORUS) o[i].u.torus.tube_radius = 0.1 + 0.05 * rnd01();
+    }
+}
+static void gen_identical(tobj *o, size_t n)
+{
+    o[0] = make(all_kinds[next_rand() % 9], rvec(1), 1.0, rnd_unit_vec());
+    for (size_t i = 1; i < n; i++) o[i] = o[0];
+}
+/* When set, far moves go up to 1e303 (boxes past the float range) instead of 1e8. */
+static int churn_huge;
+/* pairs_between against the loop; a == b is the one-scene query. */
+static void churn_between(const char *what, cdist_scene *a, const tobj *oa, size_t na, cdist_scene *b, const tobj *ob,
+                          size_t nb, double delta)
+{
+    size_t cap = na * nb + 1, nw = 0, ng = 0;
+    tpair *want = malloc(cap * sizeof *want);
+    cdist_scene_pair *got = malloc(cap * sizeof *got);
+    if (a == b) {
+        nw = ref_within(oa, na, delta, want);
+    } else {
+        for (size_t i = 0; i < na; i++) {
+            if (oa[i].live != 1) continue;
+            for (size_t j = 0; j < nb; j++) {
+                if (ob[j].live != 1) continue;
+                tpair t;
+                if (ref_pair(&oa[i], &ob[j], &t) == 0 && t.d <= delta) t.i = i, t.j = j, want[nw++] = t;
+            }
+        }
+    }
+    cdist_query_set_threads(Q, 1 + (int)(next_rand() % 2));
+    cdist_status st = cdist_scene_pairs_between(Q, a, b, delta, got, cap, &ng);
+    CHECK(st == CDIST_OK || st == CDIST_ERR_BAD_KIND, "%s: between status %d", what, st);
+    compare(what, got, ng, want, nw, oa, ob);
+    free(want);
+    free(got);
+}
+
+/* linked_pairs against cdist_link_tori() over every pair of rings. */
+static void churn_linked(const char *what, cdist_scene *s, const tobj *o, size_t n)
+{
+    size_t cap = n * n + 1, nw = 0, ng = 0;
+    cdist_scene_link *got = malloc(cap * sizeof *got);
+    size_t *wi = malloc(cap * sizeof *wi), *wj = malloc(cap * sizeof *wj);
+    cdist_link *wl = malloc(cap * sizeof *wl);
+    for (size_t i = 0; i < n; i++) {
+        if (o[i].live != 1 || (o[i].kind != CDIST_SCENE_TORUS && o[i].kind != CDIST_SCENE_CIRCLE)) continue;
+        for (size_t j = i + 1; j < n; j++) {
+            if (o[j].live != 1 || (o[j].kind != CDIST_SCENE_TORUS && o[j].kind != CDIST_SCENE_CIRCLE)) continue;
+            cdist_torus a = o[i].kind == CDIST_SCENE_TORUS ? o[i].u.torus : (cdist_torus){o[i].u.circle, 0.0};
+            cdist_torus b = o[j].kind == CDIST_SCENE_TORUS ? o[j].u.torus : (cdist_torus){o[j].u.circle, 0.0};
+            cdist_link l;
+            if (cdist_link_tori(Q, &a, &b, &l)) continue;
+            if (l.linking != 0 || l.core_linking != 0) wi[nw] = i, wj[nw] = j, wl[nw] = l, nw++;
+        }
+    }
+    cdist_query_set_threads(Q, 1 + (int)(next_rand() % 2));
+    cdist_status st = cdist_scene_linked_pairs(Q, s, got, cap, &ng);
+    CHECK(st == CDIST_OK, "%s linked: status %d", what, st);
+    CHECK(ng == nw, "%s linked: %zu pairs, want %zu", what, ng, nw);
+    for (size_t k = 0; k < ng && k < nw; k++)
+        if (got[k].i != wi[k] || got[k].j != wj[k] || memcmp(&got[k].link, &wl[k], sizeof wl[k])) {
+            CHECK(0, "%s linked[%zu]: (%zu,%zu) want (%zu,%zu)", what, k, got[k].i, got[k].j, wi[k], wj[k]);
+            break;
+        }
+    free(got), free(wi), free(wj), free(wl);
+}
+
+/* A random sequence of operations on one scene, each followed by a check of the object
+ * statuses and zero to two pairs_within queries: batched updates mixing small, tiny, far
+ * (then back home) and invalid poses and kind changes (the invalid ones get their status at
+ * their index, the others are applied), updates of removed ids, removals, additions (valid,
+ * invalid and revived later), group changes, rebuilds, and the other queries (which take the
+ * pair list's buffer) in between. */
+static void churn_run(uint64_t seed, size_t n0, int steps)
+{
+    test_rng = seed;
+    size_t cap = n0 + (size_t)steps * 3 + 4;
+    tobj *o = calloc(cap, sizeof *o);
+    int fam = (int)(next_rand() % 8);
+    void (*gens[])(tobj *, size_t) = {gen_random_mixed, gen_coplanar, gen_concentric, gen_coaxial,
+                                      gen_duplicates,   gen_scales,   gen_chain,      gen_identical};
+    size_t n = n0;
+    if (n >= 3) gens[fam](o, n);
+    else gen_random_mixed(o, n);
+    for (size_t i = 0; i < n; i++) o[i].group = (unsigned)(next_rand() % 4 == 0), o[i].chain = (unsigned)(i % 3 == 0);
+    tobj *home = calloc(cap, sizeof *home);
+    cdist_scene *s = build_scene(o, n);
+    memcpy(home, o, n * sizeof *o);
+    char label[96];
+    for (int step = 0; step < steps; step++) {
+        int r = (int)(next_rand() % 24), op = r < 12 ? 0 : r - 6; /* half the steps update */
+        if (n == 0) op = 9;
+        size_t m = 1 + next_rand() % (n ? n : 1);
+        size_t *ids = malloc(m * sizeof *ids);
+        tobj *no = malloc(m * sizeof *no);
+        cdist_status *sts = malloc(m * sizeof *sts);
+        if (op <= 5) {
+            /* one update call per run of objects of the same new kind */
+            size_t k = 0;
+            int wild = next_rand() % 5 < 2; /* else only small motions: the pair list lives on */
+            for (size_t t = 0; t < m && n; t++) {
+                size_t id = next_rand() % n;
+                if (o[id].live != 1 && next_rand() % 2) continue;
+                tobj x = o[id].live ? o[id] : home[id];
+                x.live = 1;
+                int w = (int)(next_rand() % 10);
+                if (!wild && w >= 4 && w != 8) w = w % 2 ? 9 : 1;
+                if (w < 4) nudge(&x, w == 0 ? 1e-12 : 1e-3);
+                else if (w == 4) x = translate(x, rvec(pow(10.0, 3 + (churn_huge ? 300 * rnd01() : 5) * rnd01())));
+                else if (w == 5) x = home[id], x.group = o[id].group, x.chain = o[id].chain, x.live = 1;
+                else if (w == 6) x = rekind(&x, all_kinds[next_rand() % 9]);
+                else if (w == 7) x = invalid_of(&x);
+                else if (w == 8) x = translate(x, rvec(1e-300)); /* below rounding, or a subnormal move */
+                /* w == 9: unchanged */
+                ids[k] = id, no[k] = x, k++;
+            }
+            for (size_t t = 0; t < k; t++) {
+                size_t run_n = 1;
+                while (t + run_n < k && no[t + run_n].kind == no[t].kind) run_n++;
+                char *raw = malloc(run_n * sizeof no[0].u);
+                for (size_t u = 0; u < run_n; u++) memcpy(raw + u * sizeof no[0].u, &no[t + u].u, sizeof no[0].u);
+                cdist_status st = cdist_scene_update(Q, s, run_n, &ids[t], no[t].kind, raw, sizeof no[0].u, sts);
+                cdist_status first = CDIST_OK;
+                for (size_t u = 0; u < run_n; u++) {
+                    size_t id = ids[t + u];
+                    tobj x = no[t + u];
+                    cdist__scene_item it;
+                    cdist_status v = home[id].live == -1 ? CDIST_ERR_OUT_OF_RANGE
+                                                         : cdist__scene_make(Q, x.kind, &x.u, &it.o, &it.arc);
+                    CHECK(sts[u] == v, "update status at %zu: %d want %d", u, sts[u], v);
+                    if (!first && v) first = v;
+                    if (v == CDIST_OK) {
+                        x.group = o[id].group, x.chain = o[id].chain, x.live = 1;
+                        o[id] = x;
+                    }
+                }
+                CHECK(st == first, "update returned %d, first failing %d", st, first);
+                free(raw);
+                t += run_n - 1;
+            }
+        } else if (op == 6) {
+            size_t id = next_rand() % n;
+            cdist_scene_remove(Q, s, 1, &id);
+            if (o[id].live) o[id].live = 0;
+            home[id].live = -1;
+        } else if (op == 7 && n < cap) {
+            o[n] = make(all_kinds[next_rand() % 9], n ? center_of(&o[next_rand() % n]) : rvec(2), 1.0, rnd_unit_vec());
+            size_t id;
+            cdist_status st = cdist_scene_add(Q, s, o[n].kind, 1, &o[n].u, 0, &id, NULL);
+            CHECK(st == CDIST_OK && id == n, "add %zu: %d", id, st);
+            home[n] = o[n];
+            n++;
+        } else if (op == 8 && n) {
+            /* new groups and chains for several objects: pairs the list skipped may now count */
+            unsigned g[8], c[8];
+            size_t gi[8], gm = 1 + next_rand() % 8;
+            for (size_t t = 0; t < gm; t++) {
+                gi[t] = next_rand() % n, g[t] = (unsigned)(next_rand() % 3), c[t] = (unsigned)(next_rand() % 2);
+                o[gi[t]].group = g[t], o[gi[t]].chain = c[t];
+            }
+            cdist_scene_set_groups(Q, s, gm, gi, g, c);
+        } else if (op == 9 && n < cap) {
+            /* an invalid object (revived by an update later) */
+            tobj x = make(CDIST_SCENE_TORUS, rvec(2), 1.0, tv(0, 0, 0));
+            size_t id;
+            cdist_status st2;
+            cdist_scene_add(Q, s, x.kind, 1, &x.u, 0, &id, &st2);
+            CHECK(st2 != CDIST_OK, "invalid add accepted");
+            o[n] = x, o[n].live = 0;
+            home[n] = make(CDIST_SCENE_TORUS, rvec(2), 1.0, rnd_unit_vec());
+            n++;
+        } else if (op == 10) {
+            snprintf(label, sizeof label, "seed %llu step %d", (unsigned long long)seed, step);
+            churn_closest(label, s, o, n);
+        } else if (op == 11 && n) {
+            tobj qo = make(all_kinds[next_rand() % 9], center_of(&o[next_rand() % n]), 1.0, rnd_unit_vec());
+            snprintf(label, sizeof label, "seed %llu step %d", (unsigned long long)seed, step);
+            churn_query_object(label, s, o, n, &qo, n > 1 ? pick_delta(o, n, 0.1) : 1.0);
+        } else if (op == 12) {
+            cdist_scene_rebuild(Q, s);
+        } else if (op == 14) {
+            snprintf(label, sizeof label, "seed %llu step %d", (unsigned long long)seed, step);
+            churn_linked(label, s, o, n);
+        } else if (op == 13 && n > 1) {
+            /* pairs_between the scene and itself, and with a static copy of its home poses */
+            snprintf(label, sizeof label, "seed %llu step %d between", (unsigned long long)seed, step);
+            churn_between(label, s, o, n, s, o, n, churn_delta(o, n));
+            cdist_scene *h = build_scene(home, n);
+            tobj *hh = malloc(n * sizeof *hh);
+            for (size_t i = 0; i < n; i++) {
+                hh[i] = home[i];
+                cdist__scene_item it;
+                hh[i].live = cdist__scene_make(Q, hh[i].kind, &hh[i].u, &it.o, &it.arc) == CDIST_OK;
+            }
+            if (next_rand() % 2) churn_between(label, s, o, n, h, hh, n, churn_delta(o, n));
+            else churn_between(label, h, hh, n, s, o, n, churn_delta(o, n));
+            cdist_scene_free(h);
+            free(hh);
+        }
+        free(ids);
+        free(no);
+        free(sts);
+        /* live exactly when the loop's copy is */
+        for (size_t i = 0; i < n; i++) {
+            cdist_status os = cdist_scene_object_status(s, i);
+            CHECK((os == CDIST_OK) == (o[i].live == 1), "object %zu status %d live %d", i, os, o[i].live);
+        }
+        int nq = 1 + (int)(next_rand() % 2);
+        for (int qq = 0; qq < nq; qq++) {
+            snprintf(label, sizeof label, "seed %llu step %d q%d", (unsigned long long)seed, step, qq);
+            if (n >= 1) churn_within(label, s, o, n, n > 1 ? churn_delta(o, n) : 0.0);
+        }
+    }
+    cdist_scene_free(s);
+    free(o);
+    free(home);
+}
+
+static void churn(int runs)
+{
+    for (int k = 0; k < runs; k++) {
+        churn_huge = k % 2;
+        churn_run((uint64_t)k * 7919 + 13, k % 4 == 3 ? (size_t)(k % 3) : 40, 40);
+    }
+    churn_huge = 0;
+    cdist_query_set_threads(Q, 1);
+}
+
 int main(int argc, char **argv)
 {
     int big = argc > 1 && strcmp(argv[1], "--big") == 0;
@@ -979,6 +1431,7 @@ int main(int argc, char **argv)
     cdist_query_set_unit_tolerance(Q, unit_tol);
     others(300);
     kind_changes(200);
+    churn(big ? 40 : 4);
     cdist_query_free(Q);
     return check_summary("scene");
 }
