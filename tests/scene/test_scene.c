@@ -1394,6 +1394,40 @@ static void churn(int runs)
     cdist_query_set_threads(Q, 1);
 }
 
+/* Groups changed under a live pair list: the list is made while two spheres share a group (their
+ * pair skipped), so it lacks that pair; when they leave the group the list must be dropped, or
+ * the pair within delta is missed. */
+static void groups_under_list(void)
+{
+    tobj o[3];
+    for (int i = 0; i < 3; i++) {
+        memset(&o[i], 0, sizeof o[i]);
+        o[i].kind = CDIST_SCENE_SPHERE;
+        o[i].live = 1;
+        o[i].u.sphere = (cdist_sphere){tv(1.0 * i, 0, 0), 0.25};
+    }
+    o[0].group = o[1].group = 5;
+    cdist_scene *s = build_scene(o, 3);
+    for (int step = 0; step < 8; step++) {
+        if (step == 4) {
+            size_t ids[2] = {0, 1};
+            unsigned none[2] = {0, 0};
+            CHECK(cdist_scene_set_groups(Q, s, 2, ids, none, none) == CDIST_OK, "groups: %s", cdist_query_last_error(Q));
+            o[0].group = o[1].group = 0;
+        }
+        for (size_t i = 0; i < 3; i++) {
+            o[i].u.sphere.center.y += 1e-3 * (double)(i + 1);
+            CHECK(cdist_scene_update(Q, s, 1, &i, o[i].kind, &o[i].u, 0, NULL) == CDIST_OK, "update: %s",
+                  cdist_query_last_error(Q));
+        }
+        char label[64];
+        snprintf(label, sizeof label, "groups under a pair list, step %d", step);
+        check_within(label, s, o, 3, 2.0);
+        if (step == 3) CHECK(s->list_reuses > 0, "groups under a pair list: no list reused before the change");
+    }
+    cdist_scene_free(s);
+}
+
 int main(int argc, char **argv)
 {
     int big = argc > 1 && strcmp(argv[1], "--big") == 0;
@@ -1431,6 +1465,7 @@ int main(int argc, char **argv)
     cdist_query_set_unit_tolerance(Q, unit_tol);
     others(300);
     kind_changes(200);
+    groups_under_list();
     churn(big ? 40 : 4);
     cdist_query_free(Q);
     return check_summary("scene");
