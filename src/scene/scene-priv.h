@@ -342,6 +342,7 @@ typedef struct cdist__scene_narrow {
     /* The pair list of a moving scene (keys: its entries): each entry is decided here, from its
      * bounds and the objects' motions first, and its bounds are renewed from what is learnt. */
     float *lo, *hi;
+    int certified;                   /* the exact answers are certified minima (AUTO, ROBUST) */
     size_t *buf_box, *buf_past;      /* per chunk: pairs whose boxes are near, past the bounds */
     size_t box_pairs, past;
 } cdist__scene_narrow;

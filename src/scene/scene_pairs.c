@@ -259,7 +259,9 @@ static void run_chunk(cdist__scene_narrow *w, cdist_query *h, cdist_query *hs, s
             cdist__core_obj cb = w->qo ? cdist__scene_item_core(w->qo) : cdist__scene_core_of(w->sb, j);
             m += cdist__scene_answer(h, cdist__scene_core_of(w->sa, i), cb, i, j, w->lim, &out[m], &d);
         }
-        if (w->lo) list_learn(w, k, mm[k - lo], d - margin, d + margin);
+        /* A method without a certificate (POLYNOMIAL, ITERATION) may answer a local minimum:
+         * an upper bound, never a lower one. */
+        if (w->lo) list_learn(w, k, mm[k - lo], w->certified ? d - margin : NAN, d + margin);
         full++;
     }
     w->buf_n[slot] = m;
@@ -473,6 +475,7 @@ static cdist_status pairs_run(cdist_query *q, cdist_scene *sa, cdist_scene *sb, 
         w->h = handles;
         w->hs = screen;
         if (list) w->lo = sa->list_lo, w->hi = sa->list_hi;
+        w->certified = q->method == CDIST_METHOD_AUTO || q->method == CDIST_METHOD_ROBUST;
         st = cdist__scene_run_narrow(q, sa, w, &p);
     }
     cdist__scene_pool_stop(&p);
