@@ -311,6 +311,23 @@ static void gen_random_tori(tobj *o, size_t n) { gen_random(o, n, 25.0, 1.0, 0);
 
 /* ---- updates, removals, additions ---- */
 
+/* x moved by d. */
+static tobj translate(tobj x, cdist_vec3 d)
+{
+    switch (x.kind) {
+    case CDIST_SCENE_POINT: x.u.point = vadd(x.u.point, d); break;
+    case CDIST_SCENE_SEGMENT: x.u.segment.p0 = vadd(x.u.segment.p0, d); x.u.segment.p1 = vadd(x.u.segment.p1, d); break;
+    case CDIST_SCENE_SPHERE: x.u.sphere.center = vadd(x.u.sphere.center, d); break;
+    case CDIST_SCENE_CAPSULE:
+        x.u.capsule.segment.p0 = vadd(x.u.capsule.segment.p0, d);
+        x.u.capsule.segment.p1 = vadd(x.u.capsule.segment.p1, d);
+        break;
+    case CDIST_SCENE_ARC: x.u.arc.circle.center = vadd(x.u.arc.circle.center, d); break;
+    default: x.u.circle.center = vadd(x.u.circle.center, d); break;
+    }
+    return x;
+}
+
 static void moving(size_t n, int steps)
 {
     size_t cap = n + (size_t)steps * 20;
@@ -331,18 +348,10 @@ static void moving(size_t n, int steps)
         for (size_t t = 0; t < m; t++) {
             size_t id = next_rand() % n;
             if (!o[id].live) continue;
-            tobj x = o[id];
-            cdist_vec3 d = rvec(step % 3 == 0 ? 3.0 : 0.05);
-            switch (x.kind) {
-            case CDIST_SCENE_POINT: x.u.point = vadd(x.u.point, d); break;
-            case CDIST_SCENE_SEGMENT: x.u.segment.p0 = vadd(x.u.segment.p0, d); x.u.segment.p1 = vadd(x.u.segment.p1, d); break;
-            case CDIST_SCENE_SPHERE: x.u.sphere.center = vadd(x.u.sphere.center, d); break;
-            case CDIST_SCENE_CAPSULE:
-                x.u.capsule.segment.p0 = vadd(x.u.capsule.segment.p0, d);
-                x.u.capsule.segment.p1 = vadd(x.u.capsule.segment.p1, d);
-                break;
-            default: x.u.circle.center = vadd(x.u.circle.center, d); x.u.circle.normal = rnd_unit_vec(); break;
-            }
+            tobj x = translate(o[id], rvec(step % 3 == 0 ? 3.0 : 0.05));
+            if (x.kind != CDIST_SCENE_POINT && x.kind != CDIST_SCENE_SEGMENT && x.kind != CDIST_SCENE_SPHERE &&
+                x.kind != CDIST_SCENE_CAPSULE)
+                x.u.circle.normal = rnd_unit_vec(); /* an arc's circle is its first member */
             ids[k] = id;
             no[k] = x;
             k++;
@@ -943,22 +952,6 @@ static void bad_input(void)
 }
 
 /* ---- any sequence of operations ---- */
-
-static tobj translate(tobj x, cdist_vec3 d)
-{
-    switch (x.kind) {
-    case CDIST_SCENE_POINT: x.u.point = vadd(x.u.point, d); break;
-    case CDIST_SCENE_SEGMENT: x.u.segment.p0 = vadd(x.u.segment.p0, d); x.u.segment.p1 = vadd(x.u.segment.p1, d); break;
-    case CDIST_SCENE_SPHERE: x.u.sphere.center = vadd(x.u.sphere.center, d); break;
-    case CDIST_SCENE_CAPSULE:
-        x.u.capsule.segment.p0 = vadd(x.u.capsule.segment.p0, d);
-        x.u.capsule.segment.p1 = vadd(x.u.capsule.segment.p1, d);
-        break;
-    case CDIST_SCENE_ARC: x.u.arc.circle.center = vadd(x.u.arc.circle.center, d); break;
-    default: x.u.circle.center = vadd(x.u.circle.center, d); break;
-    }
-    return x;
-}
 
 static cdist_vec3 center_of(const tobj *o)
 {
