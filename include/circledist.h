@@ -24,7 +24,7 @@
  *   ::CDIST_ERR_HANDLE_BUSY at once, without touching the handle (its result, when given,
  *   is set to NaN with no pairs): an atomic flag per handle, taken on entry and released on
  *   exit, detects the misuse cheaply (it is a diagnostic, not a lock: the rule stands).
- * - The library never aborts, exits or prints. It never changes GSL's error handler.
+ * - The library never aborts, exits or prints.
  */
 #ifndef CIRCLEDIST_H
 #define CIRCLEDIST_H

@@ -177,9 +177,10 @@ static int job_kernel(const cdist_query *h, const cdist__job *job)
     if (kernel >= LINE_CIRCLE_KERNEL && kernel <= SEGMENT_CIRCLE_KERNEL &&
         cdist__family_method(h, CD_FAM_LINE_CIRCLE) == CDIST_METHOD_POLYNOMIAL)
         return NO_KERNEL;
+    int circles = kernel == CIRCLE_CIRCLE_KERNEL || kernel == CIRCLE_DISK_KERNEL || kernel == DISK_DISK_KERNEL;
     cdist__fam fam = kernel == CIRCLE_CIRCLE_KERNEL ? CD_FAM_CIRCLE_CIRCLE
                      : kernel == CIRCLE_DISK_KERNEL ? CD_FAM_CIRCLE_DISK : CD_FAM_DISK_DISK;
-    if (kernel >= CIRCLE_CIRCLE_KERNEL && cdist__family_method(h, fam) != CDIST_METHOD_ROBUST) return NO_KERNEL;
+    if (circles && cdist__family_method(h, fam) != CDIST_METHOD_ROBUST) return NO_KERNEL;
     return kernel;
 }
 

@@ -107,7 +107,7 @@ int cdist__cc_near_kinks(const cdist__cc_frame *f, const cdist__cc_pt *init, dou
         for (int it = 0; it < 52; it++) {
             /* 1 / (2 cos(width / 2)); width = 2 pi / N * 2^(1 - it) */
             int hi_ = it + CC_LEVEL0 - 1; /* width / 2 = pi / 8 / 2^hi_ */
-            double hc = hi_ < 0 ? 0.70710678118654752 /* 0.5 / cos(pi / 4) */ : cdist__cc_half_sec[hi_ < 31 ? hi_ : 31];
+            double hc = hi_ < 0 ? 0.70710678118654752 /* 0.5 / cos(pi / 4) */ : cdist__cc_half_sec[cdist__cc_hs_index(it - 1)];
             double cm = (cl + ch) * hc, sm = (sl + sh) * hc;
             cdist__ring_val v;
             cdist__ring_eval(&f->rg, f->s, cm, sm, 1, &v);

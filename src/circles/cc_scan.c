@@ -8,7 +8,7 @@
 
 #define CC_EVAL_BUDGET 48 /* per subdivided interval */
 #define CC_MAX_LEVEL 31 /* the scan's deepest level (cdist__cc_half_sec) */
-#define CC_STACK 32 /* > the deepest level; grid intervals: widths 0.1 down to 2^-30 take 27 levels */
+#define CC_STACK 32 /* > the deepest level; grid intervals: widths 0.2 down to 2^-30 take 28 levels */
 
 /* F'/2, F''/2 and rho only (for the refinement). */
 static void cc_deriv(const cdist__cc_frame *f, double c, double s, double *F1, double *F2, double *rho)

@@ -348,7 +348,7 @@ static int cdk_robust_critical(const cdk *k, double *ts, int cap, double scale)
 }
 
 /* The polynomial candidates, each walked downhill to a true minimum of F; the best ones are
- * scanned for hidden neighbours (a root cluster that GSL resolves only to ~eps^(1/3)). */
+ * scanned for hidden neighbours (a root cluster that the QR resolves only to ~eps^(1/3)). */
 static int cdk_poly_minima(cdist_query *q, const cdk *k, double *ts, int cap, double scale)
 {
     double roots[16];

@@ -47,20 +47,6 @@ cdist__core_obj cdist__scene_core(const cdist__scene_obj *o, const cdist_arc *ar
     return c;
 }
 
-static cdist_status check_radius(cdist_query *q, double r)
-{
-    cdist_status st = cdist__check_scalar(q, r, "radius");
-    if (st) return st;
-    if (r < 0.0) return cdist__fail(q, CDIST_ERR_NEGATIVE_RADIUS, "radius is negative (%g)", r);
-    return CDIST_OK;
-}
-
-static cdist_status check_segment(cdist_query *q, const cdist_segment *s)
-{
-    cdist_status st = cdist__check_point(q, &s->p0, "segment p0");
-    return st ? st : cdist__check_point(q, &s->p1, "segment p1");
-}
-
 /* An arc is checked by the arc query itself (against a unit circle), so a scene accepts
  * exactly the arcs the arc queries accept. */
 static cdist_status check_arc(cdist_query *q, const cdist_arc *a)
@@ -102,12 +88,12 @@ cdist_status cdist__scene_make(cdist_query *q, cdist_scene_kind kind, const void
         if (kind >= SWEPT_FIRST) memcpy(&o->r, (const char *)src + kind_size[core], sizeof o->r);
         switch (core) {
         case CDIST_SCENE_POINT: st = cdist__check_point(q, &o->g.point, what[core]); break;
-        case CDIST_SCENE_SEGMENT: st = check_segment(q, &o->g.segment); break;
+        case CDIST_SCENE_SEGMENT: st = cdist__check_segment(q, &o->g.segment); break;
         case CDIST_SCENE_CIRCLE:
         case CDIST_SCENE_DISK: st = cdist__check_circle_nobasis(q, &o->g.circle, what[core], &tmp); break;
         default: st = check_arc(q, arc); break;
         }
-        if (!st && kind >= SWEPT_FIRST) st = check_radius(q, o->r);
+        if (!st && kind >= SWEPT_FIRST) st = cdist__check_radius(q, o->r, "radius");
     }
     o->state = st ? CD_SCENE_INVALID : CD_SCENE_LIVE;
     o->scale = st ? 0.0f : object_scale(o);

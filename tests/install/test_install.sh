@@ -49,7 +49,7 @@ if [ "$default_library" = static ]; then
 else
   if [ -L "$lib/libcircledist.so.1" ]; then ok; else fail "no soname link libcircledist.so.1"; fi
 fi
-# The library depends on libc and libm only (GSL is the tests' reference, never linked).
+# The library depends on libc, libm and threads only (GSL is the tests' reference, never linked).
 grep -q '^Requires' "$lib/pkgconfig/circledist.pc" && fail "the .pc has Requires: $(grep '^Requires' "$lib/pkgconfig/circledist.pc")" || ok
 grep -qi 'gsl' "$lib/pkgconfig/circledist.pc" "$lib/cmake/circledist/circledistConfig.cmake" && fail "GSL named in the .pc or the CMake package" || ok
 if [ "$default_library" != static ]; then
