@@ -493,6 +493,14 @@ static void span_rule(void)
     cdist_circle c = {tv(3, 0, 0), tv(0, 0, 1), 1};
     const double two_pi_up = nextafter(2 * M_PI, INFINITY);
     double starts[] = {0.0, -M_PI, 1.0, 100.5, -3e3, 1e6 + 0.3, -7.7e12, 1e17, -1e17, 0x1p60};
+    /* The bound is found by rounding upward; where rounding modes are ignored (valgrind) only
+     * the plain 2 pi span is checked. */
+    volatile double one = 1.0, tiny = 0x1p-60, probe;
+    fesetround(FE_UPWARD);
+    probe = one + tiny;
+    fesetround(FE_TONEAREST);
+    int rounding = probe > 1.0;
+    if (!rounding) printf("rounding modes are ignored here (valgrind?): the span's rounded-up bound is not checked\n");
     srand(77);
     for (int i = 0; i < 2000; i++) {
         double st = i < (int)(sizeof starts / sizeof starts[0])
@@ -505,6 +513,7 @@ static void span_rule(void)
         double up = sum;
         cdist_arc a = {{tv(0, 0, 0), tv(0, 0, 1), 1}, tv(1, 0, 0), st, st + 2 * M_PI};
         CHECK(cdist_arc_circle(q, &a, &c, &r) == CDIST_OK, "start %.17g, end = start + 2 pi in double accepted", st);
+        if (!rounding) continue;
         a.end = up;
         CHECK(cdist_arc_circle(q, &a, &c, &r) == CDIST_OK, "start %.17g, end at the rounded-up bound accepted", st);
         a.end = nextafter(up, INFINITY);
