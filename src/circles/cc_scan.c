@@ -123,14 +123,14 @@ CD_INLINE void subdivide(const cdist__cc_frame *f, cdist__cc_sink *k, cdist__cc_
     cdist__cc_pt pool[CC_EVAL_BUDGET];
     int level = 0, sp = 0, evals = 0;
     for (;;) {
-        double w = b->t - a->t;
+        double w = b->t - a->t, hs = half_secant(sc, level, w);
         /* Pruning (robust and minima modes): the distance is R-Lipschitz in the angle, so on
          * [a, b] it is at least (d(a) + d(b) - R w) / 2, and F is at least the hull bound;
          * above the attained distance (a sample or a refined minimum) by more than a tie,
          * the interval holds no closest pair, not even a tied one. */
         double dth = cdist__fmin(sc ? sc->dbest : sqrt(k->Fmin), k->dmin) * (1 + 8 * DBL_EPSILON) + CD_TIE_ULPS * DBL_EPSILON * f->L;
         int done = k->prune && (0.5 * (a->d + b->d - f->R * w) > dth ||
-                                ((!sc || level < CC_MAX_LEVEL) && cdist__cc_hull_bound(f, a, b, half_secant(sc, level, w)) > dth * dth));
+                                ((!sc || level < CC_MAX_LEVEL) && cdist__cc_hull_bound(f, a, b, hs) > dth * dth));
         for (int j = 0; sc && j < sc->nk && !done; j++) {
             /* within twice a near-crossing's core: the geometric grid covers it */
             double lo = remainder(a->t - sc->tk[j], 2 * M_PI), hi = lo + w;
@@ -151,7 +151,6 @@ CD_INLINE void subdivide(const cdist__cc_frame *f, cdist__cc_sink *k, cdist__cc_
                 cdist__cc_emit_sampled(f, k, a, b, Fmax, df);
             } else {
                 /* Midpoint from the endpoint cosines/sines: (a + b) / (2 cos(w / 2)). */
-                double hs = half_secant(sc, level, w);
                 cdist__cc_pt *mid = &pool[evals++];
                 cdist__cc_eval_lean(f, 0.5 * (a->t + b->t), (a->c + b->c) * hs, (a->s + b->s) * hs, mid);
                 cdist__cc_track(k, mid, Fmax);
